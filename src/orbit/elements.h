@@ -1,0 +1,93 @@
+// Element sets: the mean orbital elements of one satellite at one epoch, and the two file formats
+// they travel in (NASA two/three-line, AMSAT verbose). Parsing never throws for bad input: it
+// returns the good sets and a list of problems, each naming file, line, column/field, what was
+// found and what was expected. The caller decides what to do with them.
+#pragma once
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "orbit/time.h"
+
+namespace tb::orbit {
+
+enum class ElementFormat { nasa, amsat };
+
+struct Elements {
+  std::string name;                   // name line (3LE) or AMSAT "Satellite:"; may be empty
+  int catalog_number = 0;             // NORAD number, Alpha-5 decoded (A0000 = 100000)
+  char classification = 'U';
+  std::string international_designator;  // columns 10-17, trimmed ("98067A")
+  int epoch_year = 2000;              // four digits
+  double epoch_day = 1.0;             // day of year with fraction; 1.0 = Jan 1 00:00:00 UTC
+  double ndot_over_2 = 0.0;           // rev/day^2  (first derivative of mean motion / 2)
+  double nddot_over_6 = 0.0;          // rev/day^3  (second derivative / 6)
+  double bstar = 0.0;                 // 1/earth radii; 0 for AMSAT-format sets
+  int ephemeris_type = 0;
+  int element_set_number = 0;
+  double inclination_deg = 0.0;
+  double raan_deg = 0.0;
+  double eccentricity = 0.0;
+  double arg_perigee_deg = 0.0;
+  double mean_anomaly_deg = 0.0;
+  double mean_motion_rev_per_day = 0.0;
+  long revolution_number = 0;         // at epoch
+  ElementFormat source = ElementFormat::nasa;
+
+  UtcTime epoch() const { return from_year_day(epoch_year, epoch_day); }
+  // Epoch as a split Julian date, computed from year and day the way SGP4's twoline2rv does.
+  JulianDate epoch_jd() const;
+  // Name if present, otherwise the catalog number.
+  std::string label() const;
+};
+
+struct ParseProblem {
+  std::string file;       // as given by the caller ("<upload>" for an upload)
+  int line = 0;           // 1-based line number in the text
+  int column = 0;         // 1-based column, 0 when the problem is a whole line or block
+  std::string field;      // "checksum", "eccentricity", "Mean motion", ...
+  std::string found;      // what the text had
+  std::string expected;   // what would have been accepted
+  bool warning = false;   // true: the set was still accepted (e.g. AMSAT checksum when not strict)
+  // "FILE:LINE:COL: FIELD: found 'X', expected Y" -- one line, for people.
+  std::string message() const;
+};
+
+struct ParseResult {
+  std::vector<Elements> sets;
+  std::vector<ParseProblem> problems;
+  bool ok() const;  // no problem that rejected a set (warnings allowed)
+};
+
+struct ParseOptions {
+  bool verify_checksums = true;       // NASA: a wrong checksum rejects the set
+  bool strict_amsat_checksum = false; // AMSAT: a wrong checksum rejects the block (else a warning)
+};
+
+// NASA two-line and three-line text. Blank lines and lines starting with '#' are skipped;
+// CRLF and trailing blanks are accepted; extra text after column 69 is ignored.
+ParseResult parse_nasa(std::string_view text, std::string_view file_name = "<text>",
+                       const ParseOptions& options = {});
+// AMSAT verbose blocks, with any free text around them (bulletin headers, "/EX").
+ParseResult parse_amsat(std::string_view text, std::string_view file_name = "<text>",
+                        const ParseOptions& options = {});
+// Looks for "Satellite:" blocks, else NASA lines.
+ParseResult parse_elements(std::string_view text, std::string_view file_name = "<text>",
+                           const ParseOptions& options = {});
+// Reads a file and parses it; an unreadable file is one problem with line 0.
+ParseResult load_elements_file(const std::string& path, const ParseOptions& options = {});
+
+// Writers. format_nasa emits the name line first when with_name and the name is non-empty,
+// lines end in "\n", checksums are computed. Parsing the output gives back the same values.
+std::string format_nasa(const Elements& e, bool with_name = true);
+std::string format_amsat(const Elements& e);
+
+// Checksums as the formats define them.
+int nasa_checksum(std::string_view line);          // digits of columns 1-68, '-' counts 1, mod 10
+int amsat_checksum(const std::vector<std::string_view>& lines);  // see docs/element-formats.md
+
+// Alpha-5 catalog numbers: "25544" -> 25544, "A0000" -> 100000. -1 when invalid.
+int decode_catalog_number(std::string_view five_chars);
+std::string encode_catalog_number(int number);  // 5 characters; Alpha-5 above 99999
+
+}  // namespace tb::orbit

@@ -1,0 +1,34 @@
+// Pass search: AOS, TCA (time of maximum elevation), LOS.
+#pragma once
+#include <optional>
+#include <vector>
+
+#include "orbit/observe.h"
+
+namespace tb::orbit {
+
+struct PassOptions {
+  double horizon_deg = kAosThresholdDeg;  // AOS/LOS are crossings of this elevation
+  double min_max_elevation_deg = -90.0;   // drop passes whose maximum stays below this
+  double precision_s = 0.1;               // AOS/LOS/TCA to this precision
+};
+
+struct Pass {
+  UtcTime aos{}, tca{}, los{};
+  double max_el_deg = 0.0;
+  double aos_az_deg = 0.0, los_az_deg = 0.0, tca_az_deg = 0.0;
+  bool up_at_start = false;   // already above the horizon at the window start (aos = start)
+  bool up_at_end = false;     // still above at the window end (los = stop)
+};
+
+// All passes overlapping [start, stop). A satellite always above the horizon (geostationary, in
+// view) gives one pass with both flags set; one never above gives none. A propagation failure ends
+// the search at the failure time (a decayed satellite has no more passes).
+std::vector<Pass> find_passes(const Sgp4& sat, const Observer& o, UtcTime start, UtcTime stop,
+                              const PassOptions& options = {}, const EarthOrientation& eo = {});
+
+// The next pass whose maximum reaches options.min_max_elevation_deg, searching up to max_days.
+std::optional<Pass> next_pass(const Sgp4& sat, const Observer& o, UtcTime from, double max_days = 10.0,
+                              const PassOptions& options = {}, const EarthOrientation& eo = {});
+
+}  // namespace tb::orbit

@@ -1,0 +1,68 @@
+// SGP4/SDP4 (Vallado, Crawford, Hujsak, Kelso, "Revisiting Spacetrack Report #3", AIAA 2006-6753),
+// WGS-72 constants, improved mode. Written for this project from the published algorithm.
+// Results are in the TEME frame, km and km/s. A failure is a value, never an exception.
+#pragma once
+#include <array>
+#include <memory>
+
+#include "orbit/elements.h"
+
+namespace tb::orbit {
+
+// Vallado's error codes.
+enum class Sgp4Error : int {
+  none = 0,
+  mean_eccentricity = 1,       // mean eccentricity out of range [0, 1) (or < -0.001)
+  mean_motion = 2,             // mean motion < 0
+  perturbed_eccentricity = 3,  // perturbed eccentricity out of range
+  semi_latus_rectum = 4,       // semi-latus rectum < 0
+  decayed = 6,                 // orbit has decayed (radius < 1 earth radius)
+};
+const char* describe(Sgp4Error e);
+
+using Vec3 = std::array<double, 3>;
+
+struct StateVector {
+  Vec3 r_km{};      // TEME position
+  Vec3 v_km_s{};    // TEME velocity
+};
+
+struct Propagation {
+  Sgp4Error error = Sgp4Error::none;
+  StateVector state;           // valid only when error == none
+  bool ok() const { return error == Sgp4Error::none; }
+};
+
+class Sgp4 {
+ public:
+  explicit Sgp4(const Elements& elements);
+
+  // Error found while initialising (then every propagation returns it too).
+  Sgp4Error init_error() const { return init_error_; }
+  bool deep_space() const { return deep_space_; }
+  const Elements& elements() const { return elements_; }
+  JulianDate epoch_jd() const { return epoch_jd_; }
+  UtcTime epoch() const { return epoch_; }
+
+  // tsince in minutes from epoch. Thread-safe: const, no hidden cache.
+  Propagation propagate_minutes(double tsince) const;
+  Propagation propagate(UtcTime t) const { return propagate_minutes(minutes_between(epoch_, t)); }
+
+  // Un-Kozai'd mean motion (rad/min) and semi-major axis (earth radii) from initialisation.
+  double mean_motion_rad_per_min() const;
+  double semi_major_axis_er() const;
+  double period_minutes() const;
+  double perigee_km() const;   // above the WGS-72 equatorial radius
+  double apogee_km() const;
+
+ private:
+  struct Model;  // every coefficient Vallado's satrec holds; immutable after construction
+  Elements elements_;
+  JulianDate epoch_jd_{};
+  UtcTime epoch_{};
+  Sgp4Error init_error_ = Sgp4Error::none;
+  bool deep_space_ = false;
+  std::shared_ptr<const Model> model_;  // shared by copies; never mutated
+};
+
+}  // namespace tb::orbit
