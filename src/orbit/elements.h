@@ -35,8 +35,6 @@ struct Elements {
   ElementFormat source = ElementFormat::nasa;
 
   UtcTime epoch() const { return from_year_day(epoch_year, epoch_day); }
-  // Epoch as a split Julian date, computed from year and day the way SGP4's twoline2rv does.
-  JulianDate epoch_jd() const;
   // Name if present, otherwise the catalog number.
   std::string label() const;
 };
@@ -85,6 +83,11 @@ std::string format_amsat(const Elements& e);
 // Checksums as the formats define them.
 int nasa_checksum(std::string_view line);          // digits of columns 1-68, '-' counts 1, mod 10
 int amsat_checksum(const std::vector<std::string_view>& lines);  // see docs/element-formats.md
+
+// gpredict's satellite files (INI-like: [NNNNN], NAME=, TLE1=, TLE2=), e.g. Debian gpredict's
+// /usr/share/gpredict/data/satdata/satellites.dat (979 sets): NAME becomes the set's name.
+ParseResult parse_gpredict_satdata(std::string_view text, std::string_view file_name = "<text>",
+                                   const ParseOptions& options = {});
 
 // Alpha-5 catalog numbers: "25544" -> 25544, "A0000" -> 100000. -1 when invalid.
 int decode_catalog_number(std::string_view five_chars);
