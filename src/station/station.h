@@ -1,0 +1,27 @@
+// Station elements (menu 4): who and where the station is, and how its azimuth rotator is built.
+#pragma once
+#include <string>
+
+#include "orbit/observe.h"
+
+namespace tb::station {
+
+// "Rotor start" is where the azimuth rotator's end stop is: North (0..360 degrees of travel from
+// north through east) or South (180 through 360 to 180, the stop in the south).
+enum class RotorStart { north, south };
+
+struct StationConfig {
+  // The manual's menu-4 example shows these factory values.
+  std::string callsign = "NOCALL";
+  double lat_deg = 27.391;     // + north
+  double lon_deg = 128.657;    // + east
+  double height_m = 50.0;      // above sea level (taken as above the WGS-84 ellipsoid)
+  RotorStart rotor_start = RotorStart::south;
+  int com_baud = 9600;         // 1200, 2400, 4800, 9600 (the manual), up to 19200 here
+
+  orbit::Observer observer() const { return {lat_deg, lon_deg, height_m}; }
+};
+
+const char* to_string(RotorStart r);  // "North" / "South"
+
+}  // namespace tb::station
