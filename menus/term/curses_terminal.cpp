@@ -1,0 +1,307 @@
+#include "menus/term/curses_terminal.h"
+
+#include <algorithm>
+#include <clocale>
+#include <cmath>
+#include <curses.h>
+#include <numbers>
+#include <unistd.h>
+
+namespace tb::term {
+namespace {
+
+constexpr const char* kWorldMask[] = {
+#include "menus/term/world_mask.inc"
+};
+constexpr int kMaskCols = 120;
+constexpr int kMaskRows = 60;
+
+bool land_at(double lat, double lon) {
+  int row = static_cast<int>((90.0 - lat) / 3.0);
+  int col = static_cast<int>((lon + 180.0) / 3.0);
+  row = std::clamp(row, 0, kMaskRows - 1);
+  col = ((col % kMaskCols) + kMaskCols) % kMaskCols;
+  return kWorldMask[row][col] == '#';
+}
+
+void put(std::vector<std::string>& grid, int x, int y, char c) {
+  if (y < 0 || y >= static_cast<int>(grid.size())) return;
+  if (x < 0 || x >= static_cast<int>(grid[static_cast<std::size_t>(y)].size())) return;
+  grid[static_cast<std::size_t>(y)][static_cast<std::size_t>(x)] = c;
+}
+
+}  // namespace
+
+std::vector<std::string> draw_sky_plot(const Graphics& g, int width, int height) {
+  std::vector<std::string> grid(static_cast<std::size_t>(std::max(height, 0)),
+                                std::string(static_cast<std::size_t>(std::max(width, 0)), ' '));
+  if (width < 11 || height < 7) return grid;
+  const double cx = (width - 1) / 2.0, cy = (height - 1) / 2.0;
+  const double rx = cx, ry = cy;
+  constexpr double deg = std::numbers::pi / 180.0;
+  auto to_xy = [&](double az, double el) {
+    const double r = std::clamp((90.0 - el) / 90.0, 0.0, 1.0);
+    return std::pair{static_cast<int>(std::lround(cx + r * rx * std::sin(az * deg))),
+                     static_cast<int>(std::lround(cy - r * ry * std::cos(az * deg)))};
+  };
+  // Horizon and the 30/60 degree rings.
+  for (int a = 0; a < 360; a += 3) {
+    for (double el : {0.0, 30.0, 60.0}) {
+      auto [x, y] = to_xy(a, el);
+      put(grid, x, y, el == 0.0 ? '.' : (a % 9 == 0 ? '.' : ' '));
+    }
+  }
+  put(grid, static_cast<int>(cx), 0, 'N');
+  put(grid, static_cast<int>(cx), height - 1, 'S');
+  put(grid, 0, static_cast<int>(cy), 'W');
+  put(grid, width - 1, static_cast<int>(cy), 'E');
+  put(grid, static_cast<int>(cx), static_cast<int>(cy), '+');
+  for (const auto& p : g.pass_track) {
+    if (p.el_deg < 0.0) continue;
+    auto [x, y] = to_xy(p.az_deg, p.el_deg);
+    put(grid, x, y, 'o');
+  }
+  if (!g.pass_track.empty()) {
+    const auto& a = g.pass_track.front();
+    auto [x, y] = to_xy(a.az_deg, std::max(a.el_deg, 0.0));
+    put(grid, x, y, 'A');  // AOS
+  }
+  if (g.antenna) {
+    auto [x, y] = to_xy(g.antenna->az_deg, std::max(g.antenna->el_deg, 0.0));
+    put(grid, x, y, 'X');
+  }
+  if (g.satellite && g.satellite->el_deg >= -2.0) {
+    auto [x, y] = to_xy(g.satellite->az_deg, std::max(g.satellite->el_deg, 0.0));
+    put(grid, x, y, '@');
+  }
+  return grid;
+}
+
+std::vector<std::string> draw_world_map(const Graphics& g, int width, int height) {
+  std::vector<std::string> grid(static_cast<std::size_t>(std::max(height, 0)),
+                                std::string(static_cast<std::size_t>(std::max(width, 0)), ' '));
+  if (width < 8 || height < 4) return grid;
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const double lat = 90.0 - (y + 0.5) * 180.0 / height;
+      const double lon = -180.0 + (x + 0.5) * 360.0 / width;
+      if (land_at(lat, lon)) put(grid, x, y, '#');
+    }
+  }
+  auto to_xy = [&](double lat, double lon) {
+    double l = std::fmod(lon + 180.0, 360.0);
+    if (l < 0) l += 360.0;
+    return std::pair{std::min(width - 1, static_cast<int>(l * width / 360.0)),
+                     std::clamp(static_cast<int>((90.0 - lat) * height / 180.0), 0, height - 1)};
+  };
+  for (const auto& [lat, lon] : g.ground_track) {
+    auto [x, y] = to_xy(lat, lon);
+    put(grid, x, y, '.');
+  }
+  if (g.station) {
+    auto [x, y] = to_xy(g.station->first, g.station->second);
+    put(grid, x, y, 'Q');
+  }
+  if (g.sub_point) {
+    auto [x, y] = to_xy(g.sub_point->first, g.sub_point->second);
+    put(grid, x, y, '@');
+  }
+  return grid;
+}
+
+struct CursesTerminal::Impl {
+  WaitReadable wait;
+  WINDOW* text = nullptr;
+  WINDOW* status = nullptr;
+  int live_y = -1;
+  int live_lines = 0;
+  std::string status_text;
+  bool colors = false;
+
+  void layout() {
+    if (text) delwin(text);
+    if (status) delwin(status);
+    text = newwin(LINES - 1, COLS, 0, 0);
+    status = newwin(1, COLS, LINES - 1, 0);
+    scrollok(text, TRUE);
+    keypad(text, TRUE);
+    nodelay(text, TRUE);
+    live_y = -1;
+  }
+  void draw_status() {
+    werase(status);
+    wattron(status, A_REVERSE);
+    mvwhline(status, 0, 0, ' ', COLS);
+    mvwaddnstr(status, 0, 0, status_text.c_str(), COLS);
+    wattroff(status, A_REVERSE);
+    wnoutrefresh(status);
+  }
+};
+
+CursesTerminal::CursesTerminal(WaitReadable wait) : impl_(std::make_unique<Impl>()) {
+  impl_->wait = std::move(wait);
+  std::setlocale(LC_ALL, "");
+  initscr();
+  raw();  // Ctrl-Z ends uploads here, it must not suspend the program
+  noecho();
+  nonl();
+  curs_set(1);
+  if (has_colors()) {
+    start_color();
+    use_default_colors();
+    init_pair(1, COLOR_GREEN, -1);   // land
+    init_pair(2, COLOR_YELLOW, -1);  // satellite, track
+    init_pair(3, COLOR_CYAN, -1);    // antenna, station
+    impl_->colors = true;
+  }
+  impl_->layout();
+  impl_->draw_status();
+  doupdate();
+}
+
+CursesTerminal::~CursesTerminal() {
+  if (impl_->text) delwin(impl_->text);
+  if (impl_->status) delwin(impl_->status);
+  endwin();
+}
+
+int CursesTerminal::columns() const { return COLS; }
+int CursesTerminal::rows() const { return LINES - 1; }
+
+void CursesTerminal::write(std::string_view text) {
+  for (char c : text) {
+    if (c == '\a') {
+      beep();
+      continue;
+    }
+    waddch(impl_->text, static_cast<chtype>(static_cast<unsigned char>(c)));
+  }
+}
+
+void CursesTerminal::bell() { beep(); }
+
+void CursesTerminal::clear() {
+  werase(impl_->text);
+  wmove(impl_->text, 0, 0);
+  impl_->live_y = -1;
+  impl_->live_lines = 0;
+}
+
+void CursesTerminal::flush() {
+  wnoutrefresh(impl_->text);
+  impl_->draw_status();
+  wnoutrefresh(impl_->text);  // leave the cursor in the text window
+  doupdate();
+}
+
+void CursesTerminal::live(const std::vector<std::string>& lines) {
+  WINDOW* w = impl_->text;
+  const int h = getmaxy(w);
+  if (impl_->live_y < 0) {
+    int y = getcury(w);
+    if (getcurx(w) != 0) ++y;
+    impl_->live_y = y;
+  }
+  const int n = static_cast<int>(lines.size());
+  if (impl_->live_y + n > h) {
+    const int up = impl_->live_y + n - h;
+    wscrl(w, up);
+    impl_->live_y = std::max(0, impl_->live_y - up);
+  }
+  for (int i = 0; i < n && impl_->live_y + i < h; ++i) {
+    wmove(w, impl_->live_y + i, 0);
+    wclrtoeol(w);
+    waddnstr(w, lines[static_cast<std::size_t>(i)].c_str(), COLS - 1);
+  }
+  impl_->live_lines = n;
+  wmove(w, std::min(h - 1, impl_->live_y + n), 0);
+  flush();
+}
+
+void CursesTerminal::end_live() {
+  if (impl_->live_y >= 0) {
+    wmove(impl_->text, std::min(getmaxy(impl_->text) - 1, impl_->live_y + impl_->live_lines), 0);
+  }
+  impl_->live_y = -1;
+  impl_->live_lines = 0;
+  flush();
+}
+
+void CursesTerminal::status(std::string_view text) {
+  impl_->status_text.assign(text);
+  impl_->draw_status();
+  wnoutrefresh(impl_->text);
+  doupdate();
+}
+
+void CursesTerminal::graphics(const Graphics& g) {
+  WINDOW* w = impl_->text;
+  const int top = (impl_->live_y >= 0 ? impl_->live_y + impl_->live_lines : getcury(w)) + 1;
+  const int height = getmaxy(w) - top;
+  if (height < 7) return;
+  const int sky_h = height;
+  const int sky_w = std::min(2 * sky_h + 1, COLS / 3);
+  const int map_w = std::min(COLS - sky_w - 3, 2 * (height - 1) * 2);
+  const auto sky = draw_sky_plot(g, sky_w, sky_h);
+  const auto map = draw_world_map(g, map_w, height - 1);
+  const int cy = getcury(w), cx = getcurx(w);
+  for (int y = 0; y < height; ++y) {
+    wmove(w, top + y, 0);
+    wclrtoeol(w);
+    for (int x = 0; x < sky_w; ++x) {
+      const char c = sky[static_cast<std::size_t>(y)][static_cast<std::size_t>(x)];
+      int attr = 0;
+      if (impl_->colors && (c == '@' || c == 'o' || c == 'A')) attr = COLOR_PAIR(2) | A_BOLD;
+      if (impl_->colors && c == 'X') attr = COLOR_PAIR(3) | A_BOLD;
+      mvwaddch(w, top + y, x, static_cast<chtype>(c) | static_cast<chtype>(attr));
+    }
+    if (y == 0 && !g.title.empty()) mvwaddnstr(w, top, sky_w + 3, g.title.c_str(), map_w);
+    if (y >= 1 && map_w >= 8) {
+      const auto& row = map[static_cast<std::size_t>(y - 1)];
+      for (int x = 0; x < map_w; ++x) {
+        const char c = row[static_cast<std::size_t>(x)];
+        int attr = 0;
+        if (impl_->colors && c == '#') attr = COLOR_PAIR(1) | A_DIM;
+        if (impl_->colors && (c == '@' || c == '.')) attr = COLOR_PAIR(2) | A_BOLD;
+        if (impl_->colors && c == 'Q') attr = COLOR_PAIR(3) | A_BOLD;
+        mvwaddch(w, top + y, sky_w + 3 + x, static_cast<chtype>(c) | static_cast<chtype>(attr));
+      }
+    }
+  }
+  wmove(w, cy, cx);
+  flush();
+}
+
+int CursesTerminal::next_key(std::optional<Duration> timeout) {
+  flush();
+  const auto deadline = timeout ? std::optional(std::chrono::steady_clock::now() + *timeout) : std::nullopt;
+  for (;;) {
+    const int ch = wgetch(impl_->text);
+    if (ch != ERR) {
+      switch (ch) {
+        case KEY_RESIZE:
+          impl_->layout();
+          clearok(curscr, TRUE);
+          flush();
+          continue;
+        case KEY_BACKSPACE:
+        case KEY_DC: return kBackspace;
+        case KEY_ENTER:
+        case '\n': return kEnter;
+        case 3: return kEndOfInput;  // Ctrl-C leaves trakbox (raw mode delivers it as a key)
+        default:
+          if (ch >= 0 && ch < 256) return ch;
+          continue;  // function keys the menus do not use
+      }
+    }
+    std::optional<Duration> left;
+    if (deadline) {
+      const auto now = std::chrono::steady_clock::now();
+      if (now >= *deadline) return kTimeout;
+      left = *deadline - now;
+    }
+    if (impl_->wait) impl_->wait(STDIN_FILENO, left);
+  }
+}
+
+}  // namespace tb::term

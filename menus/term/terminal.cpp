@@ -1,0 +1,94 @@
+#include "menus/term/terminal.h"
+
+#include <cctype>
+
+namespace tb::term {
+
+int Terminal::read_key(std::optional<Duration> timeout) {
+  if (!pending_.empty()) {
+    const int k = pending_.front();
+    pending_.erase(pending_.begin());
+    return k;
+  }
+  return next_key(timeout);
+}
+
+std::optional<std::string> Terminal::read_line(std::size_t max_length) {
+  std::string text;
+  for (;;) {
+    const int k = read_key();
+    if (k == kEndOfInput) return std::nullopt;
+    if (k == '\r' || k == '\n') {
+      // A CRLF pair ends one line: swallow the LF that may follow a CR.
+      if (k == '\r') {
+        const int next = read_key(std::chrono::milliseconds(30));
+        if (next != '\n' && next != kTimeout && next != kEndOfInput) pending_.push_back(next);
+      }
+      write("\n");
+      flush();
+      return text;
+    }
+    if (k == kCtrlZ && text.empty()) {
+      write("\n");
+      return std::string(1, '\x1a');
+    }
+    if (k == kBackspace || k == 127) {
+      if (!text.empty()) {
+        text.pop_back();
+        write("\b \b");
+        flush();
+      }
+      continue;
+    }
+    if (k < 32 || k > 126 || text.size() >= max_length) continue;  // ignore controls, overlong input
+    text.push_back(static_cast<char>(k));
+    write(std::string_view(&text.back(), 1));
+    flush();
+  }
+}
+
+std::optional<char> Terminal::read_choice() {
+  for (;;) {
+    const int k = read_key();
+    if (k == kEndOfInput) return std::nullopt;
+    if (k == '\n') continue;  // the tail of a CRLF from the previous answer
+    if (k == '\r') {
+      write("\n");
+      flush();
+      return '\r';
+    }
+    if (k < 32 || k > 126) continue;
+    const char c = static_cast<char>(std::toupper(k));
+    write(std::string_view(&c, 1));
+    write("\n");
+    flush();
+    return c;
+  }
+}
+
+bool Terminal::read_upload(const std::function<void(std::string_view line)>& on_line, std::size_t max_line) {
+  std::string text;
+  bool last_cr = false;
+  for (;;) {
+    const int k = read_key();
+    if (k == kEndOfInput) return false;
+    if (k == kCtrlZ) {
+      if (!text.empty()) on_line(text);
+      return true;
+    }
+    if (k == '\n' && last_cr) {
+      last_cr = false;
+      continue;
+    }
+    last_cr = (k == '\r');
+    if (k == '\r' || k == '\n') {
+      on_line(text);
+      text.clear();
+      continue;
+    }
+    if (k < 0) continue;
+    if (text.size() < max_line) text.push_back(static_cast<char>(k));
+  }
+}
+
+}  // namespace tb::term

@@ -1,0 +1,51 @@
+// The persistent state document: trakbox's "battery-backed RAM".
+// One JSON file in the state directory, guarded by a CRC-32 over its data. Saves are atomic
+// (write a temporary file, flush it to disk, rename it over the old one, flush the directory):
+// a crash at any point leaves the old or the new state, never a mix. A file that fails its
+// checksum or does not parse is renamed aside (never overwritten) and reported.
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include <nlohmann/json.hpp>
+
+namespace tb::store {
+
+std::uint32_t crc32(std::string_view bytes);
+
+struct LoadOutcome {
+  enum class Kind {
+    fresh,    // no state file yet: defaults, nothing lost
+    loaded,   // the document is in data
+    corrupt,  // checksum or syntax failed: the file was kept aside, defaults apply
+  };
+  Kind kind = Kind::fresh;
+  nlohmann::json data;              // the saved data when loaded
+  std::filesystem::path kept_aside; // where a corrupt file was moved
+  std::string reason;               // why it was judged corrupt (one line)
+};
+
+class StateFile {
+ public:
+  static constexpr const char* kFileName = "trakbox-state.json";
+  static constexpr int kVersion = 1;
+
+  explicit StateFile(std::filesystem::path directory);
+
+  const std::filesystem::path& directory() const { return dir_; }
+  std::filesystem::path path() const { return dir_ / kFileName; }
+
+  LoadOutcome load() const;
+  // Returns false with a one-line reason on failure (the old file is then untouched).
+  bool save(const nlohmann::json& data, std::string& error) const;
+
+ private:
+  std::filesystem::path dir_;
+};
+
+// $XDG_STATE_HOME/trakbox, else $HOME/.local/state/trakbox, else ./trakbox-state.
+std::filesystem::path default_state_directory();
+
+}  // namespace tb::store
