@@ -1,0 +1,185 @@
+#include "menus/common.h"
+
+#include <cctype>
+#include <charconv>
+#include <cstdio>
+#include <cstdlib>
+
+namespace tb::menus {
+
+std::string read_line(term::Terminal& t, std::size_t max_length) {
+  auto l = t.read_line(max_length);
+  if (!l) throw InputClosed{};
+  return *l;
+}
+
+bool ask_yes_no(term::Terminal& t, std::string_view prompt) {
+  t.write(prompt);
+  t.flush();
+  const auto c = t.read_choice();
+  if (!c) throw InputClosed{};
+  return *c == 'Y';
+}
+
+char ask_key(term::Terminal& t, std::string_view prompt, std::string_view keys, bool allow_enter) {
+  for (;;) {
+    t.write(prompt);
+    t.flush();
+    const auto c = t.read_choice();
+    if (!c) throw InputClosed{};
+    if (*c == '\r' && allow_enter) return '\r';
+    if (*c != '\r' && keys.find(*c) != std::string_view::npos) return *c;
+  }
+}
+
+namespace {
+std::string trim(std::string s) {
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.pop_back();
+  std::size_t i = 0;
+  while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) ++i;
+  return s.substr(i);
+}
+}  // namespace
+
+std::optional<double> parse_number(std::string_view text) {
+  std::string s = trim(std::string(text));
+  if (s.empty()) return std::nullopt;
+  if (s[0] == '+') s.erase(0, 1);
+  double v = 0.0;
+  const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc() || p != s.data() + s.size()) return std::nullopt;
+  return v;
+}
+
+std::optional<long> parse_integer(std::string_view text) {
+  std::string s = trim(std::string(text));
+  if (s.empty()) return std::nullopt;
+  if (s[0] == '+') s.erase(0, 1);
+  long v = 0;
+  const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc() || p != s.data() + s.size()) return std::nullopt;
+  return v;
+}
+
+std::string edit_text(term::Terminal& t, std::string_view label, std::string_view current,
+                      const std::function<std::optional<std::string>(const std::string&)>& validate) {
+  for (;;) {
+    t.write(label);
+    t.write(" : ");
+    t.write(current);
+    t.write("  ");
+    t.flush();
+    std::string answer = trim(read_line(t));
+    if (answer.empty()) return std::string(current);
+    if (validate) {
+      if (auto err = validate(answer)) {
+        t.line("  " + *err);
+        continue;
+      }
+    }
+    return answer;
+  }
+}
+
+double edit_number(term::Terminal& t, std::string_view label, double current, std::string_view shown, double lo,
+                   double hi) {
+  double result = current;
+  edit_text(t, label, shown, [&](const std::string& s) -> std::optional<std::string> {
+    const auto v = parse_number(s);
+    if (!v) return "'" + s + "' is not a number";
+    if (*v < lo || *v > hi) {
+      char buf[96];
+      std::snprintf(buf, sizeof buf, "%s is out of range: expected %g to %g", s.c_str(), lo, hi);
+      return std::string(buf);
+    }
+    result = *v;
+    return std::nullopt;
+  });
+  return result;
+}
+
+int edit_int(term::Terminal& t, std::string_view label, int current, int lo, int hi) {
+  int result = current;
+  edit_text(t, label, std::to_string(current), [&](const std::string& s) -> std::optional<std::string> {
+    const auto v = parse_integer(s);
+    if (!v) return "'" + s + "' is not a whole number";
+    if (*v < lo || *v > hi) return s + " is out of range: expected " + std::to_string(lo) + " to " + std::to_string(hi);
+    result = static_cast<int>(*v);
+    return std::nullopt;
+  });
+  return result;
+}
+
+std::vector<std::string> format_satellite_list(const std::vector<std::string>& names, int marked_index,
+                                               char marker) {
+  std::vector<std::string> rows;
+  std::string row;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    char cell[40];
+    std::snprintf(cell, sizeof cell, "%2zu.%c%-9s", i + 1, static_cast<int>(i) == marked_index ? marker : ' ',
+                  names[i].substr(0, 9).c_str());
+    row += cell;
+    row += "  ";
+    if (i % 4 == 3) {
+      while (!row.empty() && row.back() == ' ') row.pop_back();
+      rows.push_back(row);
+      row.clear();
+    }
+  }
+  while (!row.empty() && row.back() == ' ') row.pop_back();
+  if (!row.empty()) rows.push_back(row);
+  return rows;
+}
+
+std::optional<int> choose_satellite(term::Terminal& t, std::string_view title, const std::vector<std::string>& names,
+                                    int marked_index, char marker) {
+  if (names.empty()) {
+    t.line("No satellite selected: load elements with menu 3-3 and select with 3-2.");
+    return std::nullopt;
+  }
+  t.line(title);
+  for (const auto& r : format_satellite_list(names, marked_index, marker)) t.line(r);
+  for (;;) {
+    t.write("     Select :");
+    t.flush();
+    const std::string a = trim(read_line(t));
+    if (a.empty()) {
+      if (marked_index >= 0 && marked_index < static_cast<int>(names.size())) return marked_index;
+      continue;
+    }
+    if (a == "Q" || a == "q") return std::nullopt;
+    const auto n = parse_integer(a);
+    if (n && *n >= 1 && *n <= static_cast<long>(names.size())) return static_cast<int>(*n - 1);
+    t.line("  Enter 1 to " + std::to_string(names.size()) + ", Enter for the marked one, or Q");
+  }
+}
+
+std::string format_date(orbit::UtcTime t) {
+  const auto c = orbit::to_civil(t);
+  char buf[16];
+  std::snprintf(buf, sizeof buf, "%04d/%02d/%02d", c.year, c.month, c.day);
+  return buf;
+}
+
+std::string format_time(orbit::UtcTime t) {
+  const auto c = orbit::to_civil(t);
+  char buf[16];
+  std::snprintf(buf, sizeof buf, "%02d:%02d:%02d", c.hour, c.minute, static_cast<int>(c.second));
+  return buf;
+}
+
+std::optional<orbit::UtcTime> parse_yymmdd_hhmmss(std::string_view text) {
+  int yy, mo, dd, hh, mi, ss;
+  char tail;
+  const std::string s(text);
+  if (std::sscanf(s.c_str(), "%d/%d/%d %d:%d:%d %c", &yy, &mo, &dd, &hh, &mi, &ss, &tail) != 6) return std::nullopt;
+  if (yy < 0 || yy > 99 || mo < 1 || mo > 12 || dd < 1 || dd > 31 || hh < 0 || hh > 23 || mi < 0 || mi > 59 ||
+      ss < 0 || ss > 59)
+    return std::nullopt;
+  char iso[32];
+  std::snprintf(iso, sizeof iso, "%04d-%02d-%02dT%02d:%02d:%02dZ", orbit::expand_two_digit_year(yy), mo, dd, hh, mi,
+                ss);
+  return orbit::parse_iso8601(iso);  // rejects 31 April and the like
+}
+
+}  // namespace tb::menus

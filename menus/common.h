@@ -1,0 +1,52 @@
+// What every menu of the manual shares: the satellite lists with their markers, prompts that show
+// the current value (Enter keeps it), Y/N questions, and the formats of the manual's displays.
+#pragma once
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "menus/term/terminal.h"
+#include "orbit/time.h"
+
+namespace tb::menus {
+
+// Thrown out of any prompt when the input has closed for good (the program then saves and exits).
+struct InputClosed {};
+
+// Reads a line, throwing InputClosed when input ends.
+std::string read_line(term::Terminal& t, std::size_t max_length = 80);
+// A [Y/N] question: prints the prompt, returns true for Y. Any other key is No.
+bool ask_yes_no(term::Terminal& t, std::string_view prompt);
+// A single-key choice among `keys` (upper-cased); Enter returns '\r' when allow_enter.
+char ask_key(term::Terminal& t, std::string_view prompt, std::string_view keys, bool allow_enter = false);
+
+// "Label : current " then the answer; Enter keeps the current value. validate returns an error
+// message for a bad answer (the prompt is repeated), or nullopt when fine.
+std::string edit_text(term::Terminal& t, std::string_view label, std::string_view current,
+                      const std::function<std::optional<std::string>(const std::string&)>& validate = {});
+// The same for numbers within [lo, hi]; `shown` is how the current value is printed.
+double edit_number(term::Terminal& t, std::string_view label, double current, std::string_view shown, double lo,
+                   double hi);
+int edit_int(term::Terminal& t, std::string_view label, int current, int lo, int hi);
+
+// Strict number parsing: the whole text must be a number.
+std::optional<double> parse_number(std::string_view text);
+std::optional<long> parse_integer(std::string_view text);
+
+// The manual's satellite list: four to a row, "n. NAME" with '*' (or another marker) before the
+// marked one. names[i] is entry i+1.
+std::vector<std::string> format_satellite_list(const std::vector<std::string>& names, int marked_index,
+                                               char marker = '*');
+// Shows the list and asks "Select :"; Enter picks the marked entry. Returns the 0-based index, or
+// nullopt for Q (or an empty list).
+std::optional<int> choose_satellite(term::Terminal& t, std::string_view title, const std::vector<std::string>& names,
+                                    int marked_index, char marker = '*');
+
+// "1993/07/17" and "04:06:58".
+std::string format_date(orbit::UtcTime t);
+std::string format_time(orbit::UtcTime t);
+// "[YY/MM/DD HH:MM:SS]" input (two-digit year, 57 pivot) -> time; nullopt when malformed.
+std::optional<orbit::UtcTime> parse_yymmdd_hhmmss(std::string_view text);
+
+}  // namespace tb::menus

@@ -1,0 +1,94 @@
+#include <doctest/doctest.h>
+
+#include "menus/common.h"
+#include "menus/term/curses_terminal.h"
+#include "menus/term/script_terminal.h"
+
+using namespace tb;
+using namespace tb::menus;
+
+TEST_CASE("Line input: echo, backspace, CR LF counted once") {
+  term::ScriptTerminal t("AB\bC\r\nX\n");
+  CHECK(read_line(t) == "AC");
+  CHECK(t.output() == "AB\b \bC\n");
+  CHECK(read_line(t) == "X");
+  CHECK_THROWS_AS(read_line(t), InputClosed);
+}
+
+TEST_CASE("Prompts keep the current value on Enter and repeat on bad input") {
+  term::ScriptTerminal t("\rabc\r95\r-45.5\r");
+  CHECK(edit_text(t, "Callsign", "NOCALL") == "NOCALL");
+  CHECK(t.output() == "Callsign : NOCALL  \n");
+  t.clear_output();
+  CHECK(edit_number(t, "Latitude", 27.391, "+27.391", -90, 90) == -45.5);
+  CHECK(t.output().find("'abc' is not a number") != std::string::npos);
+  CHECK(t.output().find("95 is out of range: expected -90 to 90") != std::string::npos);
+}
+
+TEST_CASE("Y/N questions take one key") {
+  term::ScriptTerminal t("yN");
+  CHECK(ask_yes_no(t, "Are you sure ? [Y/N] ? "));
+  CHECK(!ask_yes_no(t, "Again ? [Y/N] ? "));
+  CHECK(t.output() == "Are you sure ? [Y/N] ? Y\nAgain ? [Y/N] ? N\n");
+}
+
+TEST_CASE("The manual's satellite list with the marker") {
+  const std::vector<std::string> names = {"AO-10", "A-13S", "U-11",  "A-16",  "L-19",    "F-20",    "A-21", "W-18",
+                                          "U-22A", "U-22B", "K-23A", "K-23B", "R-10/11", "R-12/13", "U-14"};
+  const auto rows = format_satellite_list(names, 6);
+  REQUIRE(rows.size() == 4);
+  CHECK(rows[0] == " 1. AO-10       2. A-13S       3. U-11        4. A-16");
+  CHECK(rows[1] == " 5. L-19        6. F-20        7.*A-21        8. W-18");
+  CHECK(rows[3] == "13. R-10/11    14. R-12/13    15. U-14");
+}
+
+TEST_CASE("Choosing from the list: Enter takes the marked one, Q leaves") {
+  const std::vector<std::string> names = {"AO-10", "A-13S", "U-11"};
+  term::ScriptTerminal t("\r" "3\r" "9\r2\r" "q\r");
+  CHECK(choose_satellite(t, "*** Tracking object satellite ***", names, 1) == 1);
+  CHECK(choose_satellite(t, "x", names, 1) == 2);
+  CHECK(choose_satellite(t, "x", names, 1) == 1);
+  CHECK(t.output().find("Enter 1 to 3") != std::string::npos);
+  CHECK(choose_satellite(t, "x", names, 1) == std::nullopt);
+}
+
+TEST_CASE("Clock input in the manual's [YY/MM/DD HH:MM:SS] form") {
+  CHECK(parse_yymmdd_hhmmss("93/07/17 03:03:15") == orbit::from_civil(1993, 7, 17, 3, 3, 15));
+  CHECK(parse_yymmdd_hhmmss("26/11/21 15:00:00") == orbit::from_civil(2026, 11, 21, 15));
+  CHECK(parse_yymmdd_hhmmss("93/04/31 00:00:00") == std::nullopt);
+  CHECK(parse_yymmdd_hhmmss("93/07/17") == std::nullopt);
+  CHECK(parse_yymmdd_hhmmss("93/07/17 03:03:15 x") == std::nullopt);
+  CHECK(format_date(orbit::from_civil(1993, 7, 17, 4, 6, 58)) == "1993/07/17");
+  CHECK(format_time(orbit::from_civil(1993, 7, 17, 4, 6, 58)) == "04:06:58");
+}
+
+TEST_CASE("Uploads end at Ctrl-Z and keep line numbers") {
+  term::ScriptTerminal t("line one\r\nline two\rline three\x1a");
+  std::vector<std::string> lines;
+  CHECK(t.read_upload([&](std::string_view l) { lines.emplace_back(l); }));
+  CHECK(lines == std::vector<std::string>{"line one", "line two", "line three"});
+  term::ScriptTerminal cut("no end\r");
+  CHECK_FALSE(cut.read_upload([](std::string_view) {}));
+}
+
+TEST_CASE("Sky plot and world map drawings") {
+  term::Graphics g;
+  g.pass_track = {{90, 0}, {135, 45}, {180, 0}};
+  g.satellite = term::SkyPoint{135, 45};
+  g.antenna = term::SkyPoint{0, 90};
+  const auto sky = term::draw_sky_plot(g, 21, 11);
+  REQUIRE(sky.size() == 11);
+  CHECK(sky[0][10] == 'N');
+  CHECK(sky[5][10] == 'X');   // antenna at the zenith, the centre
+  CHECK(sky[5][20] == 'A');   // AOS at east on the horizon
+  g.station = std::pair{32.26, -110.78};
+  g.sub_point = std::pair{0.0, 0.0};
+  const auto map = term::draw_world_map(g, 72, 18);
+  REQUIRE(map.size() == 18);
+  CHECK(map[9][36] == '@');   // 0N 0E: the middle of the map
+  CHECK(map[5][13] == 'Q');   // Tucson
+  int land = 0;
+  for (const auto& r : map) for (char c : r) land += c == '#';
+  CHECK(land > 72 * 18 / 5);  // about a quarter of the Earth's surface shows as land
+  CHECK(land < 72 * 18 / 2);
+}
