@@ -8,6 +8,11 @@ namespace tb::orbit {
 
 inline constexpr double kAosThresholdDeg = -2.0;          // the manual's AOS rule
 inline constexpr double kSpeedOfLightKmS = 299792.458;
+inline constexpr double kWgs84A_km = 6378.137;                 // WGS-84 equatorial radius
+inline constexpr double kWgs84Flattening = 1.0 / 298.257223563;
+inline constexpr double kEarthRotationRadS = 7.292115146706979e-5;  // as Vallado's teme2ecef
+inline constexpr double kAstronomicalUnitKm = 149597870.7;
+inline constexpr double kVisibleSunMaxElevationDeg = -12.0;   // nautical twilight
 
 // A station on the WGS-84 ellipsoid. Height in metres (the manual's "above sea level"; the
 // ellipsoid stands in for sea level, see docs/orbit.md).
