@@ -1,0 +1,101 @@
+// Radio configuration: what each satellite's radio entry holds (menu 3-1 F1/F2 fields, the 3-3
+// freq/mode file) and how the station's radios are wired (menu 6-7 radio CAT port, menu 6-8 mic
+// click). Values only; nothing here talks to hardware. Frequencies are integer Hz everywhere.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace tb::radio {
+
+using Hz = std::int64_t;
+
+// Radio modes (not satellite modes). The manual offers FM, LSB, USB and None; CW is there for
+// Hamlib radios and host-mode commands (the CAT encoders map it too).
+enum class Mode { none, fm, lsb, usb, cw };
+
+const char* to_string(Mode m);                      // "FM", "LSB", "USB", "CW", "None"
+// Case-insensitive: "fm", "FM", "usb", "none", "cw" ...
+std::optional<Mode> parse_mode(std::string_view text);
+
+// How Doppler reaches the radio for one satellite (menu 3-1 "Doppler correct.").
+enum class DopplerControl { cat, mic_click };
+const char* to_string(DopplerControl d);            // "CAT", "Mic-click"
+
+// The per-satellite radio entry (menu 3-1: F1, F1OFFSET, F2, F2OFFSET, modes, Doppler, LCD MA).
+// A frequency of 0 means "not configured": no Doppler is computed and nothing is sent for that link
+// (the manual: "If F1 and F2 are not configured, no doppler correction will be calculated").
+// The offset is added to the RF frequency to give the frequency the radio is tuned to
+// (a converter: 2400.730 MHz with offset -2256.000 MHz -> 144.730 MHz at the radio).
+struct SatelliteRadio {
+  Hz downlink_hz = 0;          // F1: RF downlink frequency at the satellite
+  Hz downlink_offset_hz = 0;   // F1OFFSET
+  Hz uplink_hz = 0;            // F2: RF uplink frequency at the satellite
+  Hz uplink_offset_hz = 0;     // F2OFFSET
+  Mode downlink_mode = Mode::none;
+  Mode uplink_mode = Mode::none;
+  DopplerControl doppler = DopplerControl::cat;
+  bool lcd_ma_display = false;
+
+  bool has_downlink() const { return downlink_hz > 0; }
+  bool has_uplink() const { return uplink_hz > 0; }
+  bool operator==(const SatelliteRadio&) const = default;
+};
+
+// Menu 6-7.
+enum class Rig { none, kenwood, yaesu, icom };
+const char* to_string(Rig r);                       // "NONE", "KENWOOD", "YAESU", "ICOM"
+
+// Downlink correction Y / N / R. Reverse is for a down-converter with a high-side local
+// oscillator: the Doppler correction is applied in the opposite direction at the radio.
+enum class DownlinkCorrection { off, on, reverse };
+// CAT commands for the Full orbit, or only while the satellite is at AOS (elevation >= -2.0 deg).
+enum class CatPolicy { full_orbit, aos_only };
+enum class PulsePolarity { normal, reverse };
+
+// How an Icom single dual-band radio (IC-820H/821H/910) is addressed when the RX and TX addresses
+// are the same: with main_tx_sub_rx each frequency is preceded by a band select (07 D0 main for
+// the uplink, 07 D1 sub for the downlink), as these radios do in satellite mode.
+enum class IcomBandSelect { none, main_tx_sub_rx };
+
+// Menu 6-8. Factory values: the manual's 6-8 example shows the stored values before the operator
+// types new ones (centre 550, reference 560) and 6-0 shows "Frequency step 100 Hz"; the three
+// Y/N/N questions take the answers of the 6-8 example.
+struct MicClickConfig {
+  int centre_adc = 550;        // "Modem locked center ADC value" (ADC3, 0..1023)
+  int reference_adc = 560;     // "Reference ADC value": |reference - centre| is the dead span
+  Hz step_hz = 100;            // "Step Frequency": what one UP/DOWN pulse moves the radio
+  bool cat_at_aos = true;      // "Frequency set CAT command at AOS"
+  bool auto_up_at_aos = true;  // "Automatic up pulse generation at AOS"
+  PulsePolarity polarity = PulsePolarity::normal;
+
+  int span() const { return reference_adc > centre_adc ? reference_adc - centre_adc
+                                                       : centre_adc - reference_adc; }
+  bool operator==(const MicClickConfig&) const = default;
+};
+
+// Menu 6-7 and 6-8 together. Factory values: no CAT rig (trakbox's simulated radio answers),
+// Icom addresses 00 (the manual: "The TrakBox default address is 00 which is a broadcast
+// address"), uplink and downlink correction on and AOS-only CAT (the 6-7 example's answers, and
+// 6-0 shows "CAT Rig KENWOOD AOS"), FT-736 standard FM filter.
+struct RadioConfig {
+  Rig rig = Rig::none;
+  std::uint8_t icom_rx_address = 0x00;   // downlink radio
+  std::uint8_t icom_tx_address = 0x00;   // uplink radio
+  IcomBandSelect icom_band_select = IcomBandSelect::none;
+  bool icom_four_byte_frequency = false; // IC-820H/821H: 4 BCD bytes, no 100 MHz / 1 GHz digits
+  bool uplink_correction = true;
+  DownlinkCorrection downlink_correction = DownlinkCorrection::on;
+  CatPolicy cat_policy = CatPolicy::aos_only;
+  bool ft736_wide_fm = false;            // FM filter changed for a wider one (UO-22)
+  MicClickConfig mic_click;
+
+  bool operator==(const RadioConfig&) const = default;
+};
+
+// The radio's tuning resolution: every frequency sent is rounded to this (10 Hz for the
+// Icom, Kenwood and Yaesu radios TrakBox drives; host-mode FU/FD are "to 10 Hz" as well).
+inline constexpr Hz kTuningStepHz = 10;
+
+}  // namespace tb::radio

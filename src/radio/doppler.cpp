@@ -1,0 +1,132 @@
+#include "radio/doppler.h"
+
+#include <cmath>
+
+namespace tb::radio {
+
+double downlink_heard_hz(Hz sent_hz, double rr) {
+  return static_cast<double>(sent_hz) * (1.0 - rr / kSpeedOfLightKmS);
+}
+
+double uplink_send_hz(Hz wanted_hz, double rr) {
+  return static_cast<double>(wanted_hz) / (1.0 - rr / kSpeedOfLightKmS);
+}
+
+Hz quantise(double hz, Hz step) {
+  const double s = static_cast<double>(step);
+  return static_cast<Hz>(std::round(hz / s)) * step;
+}
+
+Hz downlink_doppler_hz(Hz downlink_hz, double rr) {
+  return static_cast<Hz>(std::llround(downlink_heard_hz(downlink_hz, rr) -
+                                      static_cast<double>(downlink_hz)));
+}
+
+Hz LinearTransponder::uplink_for(Hz down) const {
+  return inverting ? uplink_high_hz - (down - downlink_low_hz) : uplink_low_hz + (down - downlink_low_hz);
+}
+
+Hz LinearTransponder::downlink_for(Hz up) const {
+  return inverting ? downlink_low_hz + (uplink_high_hz - up) : downlink_low_hz + (up - uplink_low_hz);
+}
+
+Tuning compute_tuning(const SatelliteRadio& sat, const Corrections& corr, double rr, Hz rit_hz) {
+  Tuning t;
+  if (sat.has_downlink()) {
+    t.downlink_doppler_hz = downlink_heard_hz(sat.downlink_hz, rr) - static_cast<double>(sat.downlink_hz);
+    double sign = 0.0;
+    if (corr.downlink == DownlinkCorrection::on) sign = 1.0;
+    if (corr.downlink == DownlinkCorrection::reverse) sign = -1.0;
+    const double radio = static_cast<double>(sat.downlink_hz + sat.downlink_offset_hz + rit_hz) +
+                         sign * t.downlink_doppler_hz;
+    t.downlink_radio_hz = quantise(radio);
+  }
+  if (sat.has_uplink()) {
+    t.uplink_doppler_hz = uplink_send_hz(sat.uplink_hz, rr) - static_cast<double>(sat.uplink_hz);
+    const double radio = static_cast<double>(sat.uplink_hz + sat.uplink_offset_hz) +
+                         (corr.uplink ? t.uplink_doppler_hz : 0.0);
+    t.uplink_radio_hz = quantise(radio);
+  }
+  return t;
+}
+
+Tuner::Tuner(const RadioConfig& config) : config_(config) {}
+
+void Tuner::set_config(const RadioConfig& config) {
+  config_ = config;
+  resend();
+}
+
+void Tuner::select(const SatelliteRadio& sat) {
+  sat_ = sat;
+  rit_hz_ = 0;
+  was_aos_.reset();
+  resend();
+  tuning_ = {};
+}
+
+void Tuner::resend() {
+  sent_down_.reset();
+  sent_up_.reset();
+  sent_down_mode_.reset();
+  sent_up_mode_.reset();
+}
+
+TuneCommands Tuner::update(double elevation_deg, double rr) {
+  const Corrections corr = Corrections::from(config_);
+  tuning_ = compute_tuning(sat_, corr, rr, rit_hz_);
+
+  TuneCommands cmd;
+  const bool aos_now = at_aos(elevation_deg);
+  const bool edge = aos_now && !was_aos_.value_or(false);
+  was_aos_ = aos_now;
+  cmd.aos = edge;
+  if (edge) resend();
+
+  const bool send_down = tuning_.downlink_radio_hz && corr.downlink != DownlinkCorrection::off;
+  const bool send_up = tuning_.uplink_radio_hz && corr.uplink;
+
+  auto emit = [&](std::optional<Hz> hz, std::optional<Hz>& sent, Mode mode,
+                  std::optional<Mode>& sent_mode, std::optional<Hz>& out_hz,
+                  std::optional<Mode>& out_mode) {
+    if (!hz || (sent && *sent == *hz)) return;
+    if (mode != Mode::none && sent_mode != mode) {
+      out_mode = mode;
+      sent_mode = mode;
+    }
+    out_hz = *hz;
+    sent = *hz;
+  };
+
+  if (sat_.doppler == DopplerControl::cat) {
+    const bool allowed = config_.cat_policy == CatPolicy::full_orbit || aos_now;
+    if (!allowed) return cmd;
+    if (send_down)
+      emit(tuning_.downlink_radio_hz, sent_down_, sat_.downlink_mode, sent_down_mode_,
+           cmd.downlink_hz, cmd.downlink_mode);
+    if (send_up)
+      emit(tuning_.uplink_radio_hz, sent_up_, sat_.uplink_mode, sent_up_mode_, cmd.uplink_hz,
+           cmd.uplink_mode);
+    return cmd;
+  }
+
+  // Mic-click: one CAT command at AOS, then the pulses do the work.
+  if (!edge) return cmd;
+  const MicClickConfig& mc = config_.mic_click;
+  std::optional<Hz> down = tuning_.downlink_radio_hz;
+  if (mc.auto_up_at_aos && send_down) {
+    const Tuning nominal = compute_tuning(sat_, Corrections{corr.uplink, DownlinkCorrection::off}, rr, rit_hz_);
+    cmd.aos_pulse_correction_hz = *tuning_.downlink_radio_hz - *nominal.downlink_radio_hz;
+    down = nominal.downlink_radio_hz;
+  }
+  if (mc.cat_at_aos) {
+    if (send_down)
+      emit(down, sent_down_, sat_.downlink_mode, sent_down_mode_, cmd.downlink_hz, cmd.downlink_mode);
+    if (send_up)
+      emit(tuning_.uplink_radio_hz, sent_up_, sat_.uplink_mode, sent_up_mode_, cmd.uplink_hz,
+           cmd.uplink_mode);
+  }
+  return cmd;
+}
+
+}  // namespace tb::radio

@@ -1,0 +1,129 @@
+// Doppler: from the satellite's range rate to the frequencies the radios are tuned to.
+// Pure: values in, values out; no clock, no I/O.
+//
+// The rules (docs/radio.md has the derivation):
+//  - The frequency at the satellite is held constant on both links (the "one true rule"): the
+//    satellite transmits F1 and must receive F2, whatever the geometry.
+//  - Doppler is computed on the RF frequency, never on the converter IF.
+//      downlink heard   f_rx = F1 * (1 - rr/c)
+//      uplink sent      f_tx = F2 / (1 - rr/c)        rr in km/s, + receding, c = 299792.458
+//  - The radio is tuned to RF + Doppler + offset; downlink Reverse (high-side LO) applies the
+//    Doppler with the opposite sign: F1 - (f_rx - F1) + offset.
+//  - The operator's RIT (+/-100 Hz steps, realtime + / - / 0) is added to the downlink at the
+//    radio and carried through the pass until 0 or a new satellite.
+//  - Uplink and downlink correction are enabled separately; a link that is off is not sent.
+//  - CAT for the full orbit, or only at AOS (elevation >= -2.0 deg).
+//  - What is sent is quantised to 10 Hz and sent only when the quantised value changes.
+#pragma once
+#include <optional>
+
+#include "radio/config.h"
+
+namespace tb::radio {
+
+inline constexpr double kSpeedOfLightKmS = 299792.458;
+inline constexpr double kAosElevationDeg = -2.0;   // the manual's AOS rule
+inline constexpr Hz kRitStepHz = 100;              // realtime '+' / '-'
+
+inline bool at_aos(double elevation_deg) { return elevation_deg >= kAosElevationDeg; }
+
+// Exact first principles, in Hz (double: 53 bits hold 10 GHz to well below 1 mHz).
+double downlink_heard_hz(Hz sent_hz, double range_rate_km_s);    // F1 (1 - rr/c)
+double uplink_send_hz(Hz wanted_at_sat_hz, double range_rate_km_s);  // F2 / (1 - rr/c)
+// Round to the nearest multiple of step (halves away from zero). step > 0.
+Hz quantise(double hz, Hz step = kTuningStepHz);
+
+// The Doppler shown on the realtime display: heard - sent on the RF downlink, rounded to 1 Hz.
+// Positive while the satellite approaches.
+Hz downlink_doppler_hz(Hz downlink_hz, double range_rate_km_s);
+
+// A linear transponder's passbands, for mapping uplink and downlink in the satellite's frame
+// before Doppler (normal: up = up_low + (down - down_low); inverting: up = up_high - (...)).
+struct LinearTransponder {
+  Hz downlink_low_hz = 0, downlink_high_hz = 0;
+  Hz uplink_low_hz = 0, uplink_high_hz = 0;
+  bool inverting = true;
+  Hz uplink_for(Hz downlink_hz) const;
+  Hz downlink_for(Hz uplink_hz) const;
+};
+
+struct Corrections {
+  bool uplink = true;
+  DownlinkCorrection downlink = DownlinkCorrection::on;
+  static Corrections from(const RadioConfig& c) { return {c.uplink_correction, c.downlink_correction}; }
+};
+
+// One evaluation of the rules. The radio frequencies are quantised to 10 Hz; a link whose RF
+// frequency is not configured (0) has no value. A link whose correction is off still gets its
+// nominal radio frequency here (RF + offset, + RIT for the downlink) for displays; whether it is
+// sent is the Tuner's business.
+struct Tuning {
+  std::optional<Hz> downlink_radio_hz;
+  std::optional<Hz> uplink_radio_hz;
+  double downlink_doppler_hz = 0.0;   // RF: heard - F1 (0 without a downlink)
+  double uplink_doppler_hz = 0.0;     // RF: sent - F2 (0 without an uplink)
+};
+Tuning compute_tuning(const SatelliteRadio& sat, const Corrections& corr, double range_rate_km_s,
+                      Hz rit_hz = 0);
+
+// What to tell the radio on one tracking tick. Empty when nothing changed.
+struct TuneCommands {
+  std::optional<Hz> downlink_hz;
+  std::optional<Hz> uplink_hz;
+  std::optional<Mode> downlink_mode;   // sent before the frequency of the same link
+  std::optional<Mode> uplink_mode;
+  bool aos = false;                    // this tick is the AOS edge (or the first tick at AOS)
+  // Mic-click satellites with "automatic up pulse generation at AOS": the correction the pulses
+  // must make at the radio (the radio was set to the nominal frequency by CAT, if at all).
+  std::optional<Hz> aos_pulse_correction_hz;
+  bool empty() const {
+    return !downlink_hz && !uplink_hz && !downlink_mode && !uplink_mode &&
+           !aos_pulse_correction_hz;
+  }
+};
+
+// The stateful part: remembers the selected satellite, the operator's RIT and what was last sent,
+// and decides what goes to the radio each tick.
+//  - CAT satellites: every tick the policy allows, each enabled link is sent when its quantised
+//    value differs from the last one sent. The mode goes out with a link's first frequency (and
+//    again after each AOS edge). At each AOS edge what was sent is forgotten so the first command
+//    at AOS is always sent (the operator may have turned the dial meanwhile).
+//  - Mic-click satellites: frequencies by CAT once at the AOS edge if "frequency set CAT at AOS"
+//    is on; with "automatic up pulses" on, the downlink is set to its nominal frequency and the
+//    Doppler at AOS is left to the pulses (aos_pulse_correction_hz).
+class Tuner {
+ public:
+  explicit Tuner(const RadioConfig& config = {});
+
+  void set_config(const RadioConfig& config);
+  const RadioConfig& config() const { return config_; }
+
+  // A new satellite: forgets what was sent and the RIT.
+  void select(const SatelliteRadio& sat);
+  const SatelliteRadio& satellite() const { return sat_; }
+
+  void rit_up() { rit_hz_ += kRitStepHz; }
+  void rit_down() { rit_hz_ -= kRitStepHz; }
+  void rit_zero() { rit_hz_ = 0; }
+  Hz rit_hz() const { return rit_hz_; }
+
+  TuneCommands update(double elevation_deg, double range_rate_km_s);
+
+  // Forget what was sent, e.g. after the radio link reconnected: the next update sends again.
+  void resend();
+
+  const Tuning& last_tuning() const { return tuning_; }
+  std::optional<Hz> last_sent_downlink_hz() const { return sent_down_; }
+  std::optional<Hz> last_sent_uplink_hz() const { return sent_up_; }
+
+ private:
+  RadioConfig config_;
+  SatelliteRadio sat_;
+  Hz rit_hz_ = 0;
+  Tuning tuning_;
+  std::optional<bool> was_aos_;
+  std::optional<Hz> sent_down_, sent_up_;
+  std::optional<Mode> sent_down_mode_, sent_up_mode_;
+};
+
+}  // namespace tb::radio

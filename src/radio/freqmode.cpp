@@ -1,0 +1,222 @@
+#include "radio/freqmode.h"
+
+#include <cstdlib>
+#include <map>
+
+namespace tb::radio {
+
+namespace {
+
+constexpr int kFields = 7;
+
+bool is_space(char c) { return c == ' ' || c == '\t'; }
+
+std::vector<std::string_view> split_fields(std::string_view line) {
+  std::vector<std::string_view> out;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && is_space(line[i])) ++i;
+    if (i >= line.size()) break;
+    std::size_t j = i;
+    while (j < line.size() && !is_space(line[j])) ++j;
+    out.push_back(line.substr(i, j - i));
+    i = j;
+  }
+  return out;
+}
+
+std::string lower(std::string_view s) {
+  std::string out;
+  for (char c : s) out.push_back(c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c);
+  return out;
+}
+
+constexpr const char* kExpectFrequency =
+    "a frequency in MHz such as 435.120, optionally with a converter offset as in "
+    "2400.730/-2256.000";
+
+}  // namespace
+
+const char* freqmode_field_name(int field) {
+  switch (field) {
+    case 1: return "satellite name";
+    case 2: return "downlink frequency";
+    case 3: return "uplink frequency";
+    case 4: return "downlink mode";
+    case 5: return "uplink mode";
+    case 6: return "Doppler mode";
+    case 7: return "phase display";
+    default: return "line";
+  }
+}
+
+std::string FreqModeProblem::message() const {
+  std::string m = "line " + std::to_string(line);
+  if (field > 0) m += ", field " + std::to_string(field) + " (" + freqmode_field_name(field) + ")";
+  m += ": found \"" + found + "\", expected " + expected;
+  return m;
+}
+
+std::optional<Hz> parse_mhz(std::string_view t) {
+  if (t.empty()) return std::nullopt;
+  bool negative = false;
+  if (t.front() == '+' || t.front() == '-') {
+    negative = t.front() == '-';
+    t.remove_prefix(1);
+  }
+  const std::size_t dot = t.find('.');
+  std::string_view whole = t.substr(0, dot);
+  std::string_view frac = dot == std::string_view::npos ? std::string_view{} : t.substr(dot + 1);
+  if (whole.empty() && frac.empty()) return std::nullopt;
+  if (whole.size() > 7) return std::nullopt;  // 10 THz is no radio frequency; keeps int64 safe
+  Hz mhz = 0;
+  for (char c : whole) {
+    if (c < '0' || c > '9') return std::nullopt;
+    mhz = mhz * 10 + (c - '0');
+  }
+  Hz hz = 0;
+  Hz scale = 100000;  // first decimal is 100 kHz
+  for (std::size_t i = 0; i < frac.size(); ++i) {
+    const char c = frac[i];
+    if (c < '0' || c > '9') return std::nullopt;
+    if (i < 6) {
+      hz += (c - '0') * scale;
+      scale /= 10;
+    } else if (c != '0') {
+      return std::nullopt;  // finer than 1 Hz
+    }
+  }
+  const Hz total = mhz * 1000000 + hz;
+  return negative ? -total : total;
+}
+
+std::optional<FrequencyField> parse_frequency_field(std::string_view t) {
+  const std::size_t slash = t.find('/');
+  FrequencyField f;
+  std::string_view rf = t.substr(0, slash);
+  if (rf.empty() || rf.front() == '-') return std::nullopt;
+  auto v = parse_mhz(rf);
+  if (!v) return std::nullopt;
+  f.rf_hz = *v;
+  if (slash != std::string_view::npos) {
+    auto o = parse_mhz(t.substr(slash + 1));
+    if (!o) return std::nullopt;
+    f.offset_hz = *o;
+  }
+  return f;
+}
+
+std::string format_mhz(Hz hz) {
+  const bool negative = hz < 0;
+  const Hz a = negative ? -hz : hz;
+  std::string frac = std::to_string(a % 1000000);
+  frac.insert(0, 6 - frac.size(), '0');
+  while (frac.size() > 3 && frac.back() == '0') frac.pop_back();
+  return (negative ? "-" : "") + std::to_string(a / 1000000) + "." + frac;
+}
+
+std::string format_frequency_field(Hz rf_hz, Hz offset_hz) {
+  std::string s = format_mhz(rf_hz);
+  if (offset_hz != 0) s += "/" + format_mhz(offset_hz);
+  return s;
+}
+
+std::string format_freqmode_line(const FreqModeRecord& r) {
+  const SatelliteRadio& s = r.radio;
+  std::string line = r.name;
+  line += " " + format_frequency_field(s.downlink_hz, s.downlink_offset_hz);
+  line += " " + format_frequency_field(s.uplink_hz, s.uplink_offset_hz);
+  line += " " + lower(to_string(s.downlink_mode));
+  line += " " + lower(to_string(s.uplink_mode));
+  line += s.doppler == DopplerControl::mic_click ? " mic" : " cat";
+  line += s.lcd_ma_display ? " ma" : " no";
+  return line;
+}
+
+std::string write_freqmode(const std::vector<FreqModeRecord>& records) {
+  std::string out;
+  for (const auto& r : records) out += format_freqmode_line(r) + "\n";
+  return out;
+}
+
+FreqModeParse parse_freqmode(std::string_view text) {
+  FreqModeParse result;
+  const std::size_t eof = text.find('\x1a');
+  if (eof != std::string_view::npos) text = text.substr(0, eof);
+
+  std::map<std::string, int, std::less<>> seen;  // name -> line
+  int line_no = 0;
+  std::size_t pos = 0;
+  while (pos < text.size()) {
+    std::size_t end = text.find_first_of("\r\n", pos);
+    if (end == std::string_view::npos) end = text.size();
+    std::string_view line = text.substr(pos, end - pos);
+    // CR LF is one line end; CR or LF alone is one too.
+    pos = end;
+    if (pos < text.size() && text[pos] == '\r') {
+      if (++pos < text.size() && text[pos] == '\n') ++pos;
+    } else if (pos < text.size()) {
+      ++pos;  // '\n'
+    }
+    ++line_no;
+
+    auto fields = split_fields(line);
+    if (fields.empty()) continue;
+    auto problem = [&](int field, std::string_view found, std::string expected) {
+      result.problems.push_back({line_no, field, std::string(found), std::move(expected)});
+    };
+    if (fields.size() != kFields) {
+      std::string expected = "7 fields (name, downlink MHz, uplink MHz, downlink mode, uplink mode, "
+                             "cat/mic, ma/no)";
+      if (fields.size() > kFields && fields.size() % kFields == 0)
+        expected += "; this line looks like " + std::to_string(fields.size() / kFields) +
+                    " records: put each on its own line";
+      problem(0, std::to_string(fields.size()) + " fields", expected);
+      continue;
+    }
+
+    FreqModeRecord rec;
+    rec.line = line_no;
+    rec.name = std::string(fields[0]);
+    const std::size_t before = result.problems.size();
+    if (auto it = seen.find(rec.name); it != seen.end())
+      problem(1, fields[0], "a satellite name not already given (it is on line " +
+                                std::to_string(it->second) + ")");
+    else
+      seen.emplace(rec.name, line_no);
+
+    if (auto f = parse_frequency_field(fields[1])) {
+      rec.radio.downlink_hz = f->rf_hz;
+      rec.radio.downlink_offset_hz = f->offset_hz;
+    } else {
+      problem(2, fields[1], kExpectFrequency);
+    }
+    if (auto f = parse_frequency_field(fields[2])) {
+      rec.radio.uplink_hz = f->rf_hz;
+      rec.radio.uplink_offset_hz = f->offset_hz;
+    } else {
+      problem(3, fields[2], kExpectFrequency);
+    }
+    for (int k : {3, 4}) {
+      auto m = parse_mode(fields[k]);
+      if (!m || *m == Mode::cw) {  // the file knows the manual's four modes only
+        problem(k + 1, fields[k], "usb, lsb, fm or none");
+        continue;
+      }
+      (k == 3 ? rec.radio.downlink_mode : rec.radio.uplink_mode) = *m;
+    }
+    const std::string doppler = lower(fields[5]);
+    if (doppler == "cat") rec.radio.doppler = DopplerControl::cat;
+    else if (doppler == "mic") rec.radio.doppler = DopplerControl::mic_click;
+    else problem(6, fields[5], "cat or mic");
+    const std::string phase = lower(fields[6]);
+    if (phase == "ma") rec.radio.lcd_ma_display = true;
+    else if (phase == "no") rec.radio.lcd_ma_display = false;
+    else problem(7, fields[6], "ma or no");
+
+    if (result.problems.size() == before) result.records.push_back(std::move(rec));
+  }
+  return result;
+}
+
+}  // namespace tb::radio

@@ -1,0 +1,73 @@
+// The freq/mode file of menu 3-3: after a kepele upload TrakBox asks for one line per satellite,
+//
+//   NAME DOWN_MHZ UP_MHZ DOWN_MODE UP_MODE DOPPLER PHASE
+//   AO-13S 2400.730/-2256.000 435.620 usb lsb mic ma
+//
+// seven fields separated by spaces (tabs accepted), the name case-sensitive, a frequency with an
+// optional converter offset after '/', modes usb/lsb/fm/none, Doppler cat/mic, phase ma/no.
+// Frequencies are converted from the decimal text exactly (no floating point).
+//
+// The parser reads the whole text and returns every record and every problem; it applies
+// nothing. The caller commits the records only when there are no problems (or chooses to).
+// One record per line: the manual's printed sample was flattened onto one line by OCR, which this
+// parser reports as a line of 112 fields rather than guessing where records end.
+#pragma once
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "radio/config.h"
+
+namespace tb::radio {
+
+struct FreqModeRecord {
+  int line = 0;            // 1-based line of the upload it came from (0 when built by hand)
+  std::string name;        // exactly as in the kepele data (case-sensitive)
+  SatelliteRadio radio;
+  bool operator==(const FreqModeRecord&) const = default;
+};
+
+struct FreqModeProblem {
+  int line = 0;            // 1-based
+  int field = 0;           // 1..7, 0 for the line as a whole
+  std::string found;
+  std::string expected;
+  // "line 3, field 2 (downlink frequency): found "43x.1", expected ..."
+  std::string message() const;
+};
+
+struct FreqModeParse {
+  std::vector<FreqModeRecord> records;
+  std::vector<FreqModeProblem> problems;
+  bool ok() const { return problems.empty(); }
+};
+
+// Reads up to the end of the text or the first Ctrl-Z (0x1A), whichever comes first. Lines end in
+// CR, LF or CR LF; blank lines are skipped. A name given twice is a problem on the later line.
+FreqModeParse parse_freqmode(std::string_view text);
+
+// The field names used in problems: 1 "satellite name", 2 "downlink frequency", ...
+const char* freqmode_field_name(int field);
+
+// Decimal MHz text to Hz, exactly: "435.12", "2400.730", "-2256.000", "+1.5", "145". At most six
+// decimals carry value (1 Hz); further decimals must be zeros. nullopt when not a number.
+std::optional<Hz> parse_mhz(std::string_view text);
+struct FrequencyField {
+  Hz rf_hz = 0;
+  Hz offset_hz = 0;
+};
+// "2400.730/-2256.000" or "435.620". The RF part must not be negative; the offset may be.
+std::optional<FrequencyField> parse_frequency_field(std::string_view text);
+
+// Hz to MHz text with at least three decimals and as many more as needed (up to six):
+// 435120000 -> "435.120", 435123450 -> "435.12345", -2256000000 -> "-2256.000".
+std::string format_mhz(Hz hz);
+// "2400.730/-2256.000", or just "435.620" when the offset is zero.
+std::string format_frequency_field(Hz rf_hz, Hz offset_hz);
+
+// One line (without a line end) and a whole file ("\n" after each line, no Ctrl-Z).
+std::string format_freqmode_line(const FreqModeRecord& r);
+std::string write_freqmode(const std::vector<FreqModeRecord>& records);
+
+}  // namespace tb::radio
