@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <optional>
@@ -124,6 +125,11 @@ struct LoadedElements {
 
 LoadedElements load_elements(const std::string& path) {
   LoadedElements r;
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    r.error = ArgError{"ELEMENTS", "'" + path + "' is a folder; expected " + kElementsHelp};
+    return r;
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     r.error = ArgError{"ELEMENTS", "cannot read '" + path + "': " + std::strerror(errno) + "; expected " + kElementsHelp};
