@@ -8,8 +8,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <iterator>
+#include <memory>
 #include <optional>
 #include <system_error>
 
@@ -91,7 +91,7 @@ std::optional<double> parse_fixed(std::string_view s) {
 }
 
 // A free-form number: optional sign, digits with at most one point, optional exponent.
-[[maybe_unused]] std::optional<double> parse_general(std::string_view s) {
+std::optional<double> parse_general(std::string_view s) {
   bool negative = false;
   if (!s.empty() && (s.front() == '+' || s.front() == '-')) {
     negative = s.front() == '-';
@@ -500,6 +500,363 @@ ParseResult parse_nasa(std::string_view text, std::string_view file_name, const 
     }
   }
   return result;
+}
+
+// ---------------------------------------------------------------------------------------------
+// AMSAT verbose format
+
+int amsat_checksum(const std::vector<std::string_view>& lines) {
+  int sum = 0;
+  for (const std::string_view line : lines) {
+    for (const char c : line) {
+      if (is_digit(c)) sum += c - '0';
+      else if (c == '-') sum += 1;
+      else if (c == '+') sum += 2;
+    }
+  }
+  return sum;
+}
+
+namespace {
+
+enum AmsatField {
+  kSatellite, kCatalog, kEpochTime, kElementSet, kInclination, kRaan, kEccentricity, kArgPerigee,
+  kMeanAnomaly, kMeanMotion, kDecayRate, kEpochRev, kChecksum, kAmsatFieldCount
+};
+
+// Labels as the format writes them; matched without regard to case or runs of blanks.
+constexpr const char* kAmsatLabels[kAmsatFieldCount] = {
+    "Satellite",      "Catalog number", "Epoch time",  "Element set", "Inclination", "RA of node", "Eccentricity",
+    "Arg of perigee", "Mean anomaly",   "Mean motion", "Decay rate",  "Epoch rev",   "Checksum",
+};
+
+// "Label: value" -> the label folded to lower case with single blanks, and where the value starts.
+struct LabelledLine {
+  std::string label;                         // empty when the line has no colon
+  std::size_t value_begin = 0;               // index of the first character after the blanks
+};
+
+LabelledLine split_label(std::string_view line) {
+  LabelledLine out;
+  const auto colon = line.find(':');
+  if (colon == std::string_view::npos) return out;
+  for (const char c : trim(line.substr(0, colon))) {
+    if (is_space(c)) {
+      if (!out.label.empty() && out.label.back() != ' ') out.label += ' ';
+    } else {
+      out.label += static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+    }
+  }
+  std::size_t v = colon + 1;
+  while (v < line.size() && is_space(line[v])) ++v;
+  out.value_begin = v;
+  if (out.label.empty()) out.label = " ";  // a colon without a label: still a labelled line
+  return out;
+}
+
+int amsat_field_of(const std::string& label) {
+  for (int f = 0; f < kAmsatFieldCount; ++f) {
+    std::string folded;
+    for (const char* c = kAmsatLabels[f]; *c; ++c) folded += static_cast<char>(*c >= 'A' && *c <= 'Z' ? *c - 'A' + 'a' : *c);
+    if (folded == label) return f;
+  }
+  return -1;
+}
+
+struct AmsatValue {
+  bool present = false;
+  std::size_t index = 0;   // into the line list
+  int line = 0;
+  int column = 0;          // 1-based column of the value
+  std::string_view token;  // the value up to the first blank (units follow)
+  std::string_view rest;   // everything after the colon, trimmed (names have blanks)
+};
+
+class AmsatBlock {
+ public:
+  AmsatBlock(const std::vector<TextLine>& lines, std::size_t start, std::string_view file, const ParseOptions& options)
+      : lines_(lines), start_(start), file_(file), options_(options) {}
+
+  // Records a labelled line of the block; false when it is the second line with that label.
+  void add(int field, std::size_t index, const LabelledLine& l) {
+    AmsatValue& v = values_[field];
+    const std::string_view text = lines_[index].text;
+    std::string_view value = l.value_begin < text.size() ? text.substr(l.value_begin) : std::string_view{};
+    const auto blank = value.find_first_of(" \t");
+    AmsatValue nv{true, index, lines_[index].number, static_cast<int>(l.value_begin) + 1,
+                  value.substr(0, blank), trim(value)};
+    if (v.present) {
+      if (!duplicate_) {
+        duplicate_ = make_problem(file_, nv.line, nv.column, kAmsatLabels[field], std::string(nv.token),
+                                  std::string("one '") + kAmsatLabels[field] + ":' line in the block");
+      }
+      return;
+    }
+    v = nv;
+  }
+
+  // Appends the set or the problems to the result.
+  void finish(ParseResult& result) {
+    Elements e;
+    if (auto p = decode(e)) {
+      result.problems.push_back(std::move(*p));
+      return;
+    }
+    // The checksum: digits of the lines from "Satellite:" to "Epoch rev:", '-' 1, '+' 2.
+    std::vector<std::string_view> summed;
+    for (std::size_t i = start_; i <= values_[kEpochRev].index; ++i) summed.push_back(lines_[i].text);
+    const int sum = amsat_checksum(summed);
+    const AmsatValue& c = values_[kChecksum];
+    std::optional<ParseProblem> checksum_problem;
+    if (!c.present) {
+      checksum_problem = make_problem(file_, lines_[start_].number, 0, kAmsatLabels[kChecksum], "",
+                                      "a 'Checksum:' line (" + std::to_string(sum) + " for this block)");
+    } else if (const auto given = parse_unsigned(c.token); !given || *given != sum) {
+      checksum_problem = make_problem(file_, c.line, c.column, kAmsatLabels[kChecksum], std::string(c.token),
+                                      "checksum " + std::to_string(sum));
+    }
+    if (checksum_problem) {
+      checksum_problem->warning = !options_.strict_amsat_checksum;
+      result.problems.push_back(std::move(*checksum_problem));
+      if (options_.strict_amsat_checksum) return;
+    }
+    result.sets.push_back(std::move(e));
+  }
+
+ private:
+  ParseProblem problem(int field, std::string expected) const {
+    const AmsatValue& v = values_[field];
+    return make_problem(file_, v.line, v.column, kAmsatLabels[field], std::string(v.token), std::move(expected));
+  }
+
+  std::optional<ParseProblem> number(int field, double low, double high, bool high_inclusive, double& out) const {
+    const auto v = parse_general(values_[field].token);
+    if (!v) return problem(field, "decimal number");
+    if (*v < low || *v > high || (!high_inclusive && *v == high)) {
+      char range[64];
+      std::snprintf(range, sizeof range, "number in [%g, %g%c", low, high, high_inclusive ? ']' : ')');
+      return problem(field, range);
+    }
+    out = *v;
+    return std::nullopt;
+  }
+
+  std::optional<ParseProblem> count(int field, long& out) const {
+    const auto v = parse_unsigned(values_[field].token);
+    if (!v) return problem(field, "digits 0-9");
+    out = *v;
+    return std::nullopt;
+  }
+
+  std::optional<ParseProblem> decode(Elements& e) const {
+    for (int f = kCatalog; f <= kEpochRev; ++f) {
+      if (!values_[f].present) {
+        return make_problem(file_, lines_[start_].number, 0, kAmsatLabels[f], "",
+                            std::string("a '") + kAmsatLabels[f] + ":' line in the block");
+      }
+    }
+    if (duplicate_) return duplicate_;
+
+    e.source = ElementFormat::amsat;
+    e.name = std::string(values_[kSatellite].rest);
+
+    const std::string_view catalog = values_[kCatalog].token;
+    if (const auto digits = parse_unsigned(catalog)) e.catalog_number = static_cast<int>(*digits);
+    else e.catalog_number = decode_catalog_number(catalog);
+    if (e.catalog_number < 0) return problem(kCatalog, "digits or Alpha-5 (letter A-Z without I and O, 4 digits)");
+
+    // YYDDD.DDDDDDDD; leading zeros of the year may have been dropped by a generator.
+    const std::string_view epoch = values_[kEpochTime].token;
+    const auto point = epoch.find('.');
+    const std::string_view whole = epoch.substr(0, point);
+    const std::string_view fraction = point == std::string_view::npos ? std::string_view{} : epoch.substr(point + 1);
+    if (!all_digits(whole) || whole.size() > 5 || (point != std::string_view::npos && !all_digits(fraction)))
+      return problem(kEpochTime, "YYDDD.DDDDDDDD");
+    const long yyddd = *parse_unsigned(whole);
+    e.epoch_year = expand_two_digit_year(static_cast<int>(yyddd / 1000));
+    const std::string day_text = std::to_string(yyddd % 1000) + "." + (fraction.empty() ? "0" : std::string(fraction));
+    e.epoch_day = *whole_double(day_text, std::chars_format::fixed);
+    const double day_limit = is_leap_year(e.epoch_year) ? 367.0 : 366.0;
+    if (e.epoch_day < 1.0 || e.epoch_day >= day_limit)
+      return problem(kEpochTime, "day of year in [1, " + std::to_string(int(day_limit)) + ")");
+
+    long element_set = 0;
+    if (auto p = count(kElementSet, element_set)) return p;
+    e.element_set_number = static_cast<int>(element_set);
+    if (auto p = number(kInclination, 0.0, 180.0, true, e.inclination_deg)) return p;
+    if (auto p = number(kRaan, 0.0, 360.0, false, e.raan_deg)) return p;
+    if (auto p = number(kEccentricity, 0.0, 1.0, false, e.eccentricity)) return p;
+    if (auto p = number(kArgPerigee, 0.0, 360.0, false, e.arg_perigee_deg)) return p;
+    if (auto p = number(kMeanAnomaly, 0.0, 360.0, false, e.mean_anomaly_deg)) return p;
+    const auto n = parse_general(values_[kMeanMotion].token);
+    if (!n) return problem(kMeanMotion, "decimal number");
+    if (!(*n > 0.0)) return problem(kMeanMotion, "number > 0");
+    e.mean_motion_rev_per_day = *n;
+    const auto decay = parse_general(values_[kDecayRate].token);
+    if (!decay) return problem(kDecayRate, "decimal number such as -4.5e-07");
+    e.ndot_over_2 = *decay;
+    if (auto p = count(kEpochRev, e.revolution_number)) return p;
+    return std::nullopt;
+  }
+
+  const std::vector<TextLine>& lines_;
+  std::size_t start_;
+  std::string_view file_;
+  const ParseOptions& options_;
+  AmsatValue values_[kAmsatFieldCount];
+  std::optional<ParseProblem> duplicate_;
+};
+
+}  // namespace
+
+ParseResult parse_amsat(std::string_view text, std::string_view file_name, const ParseOptions& options) {
+  ParseResult result;
+  const std::vector<TextLine> lines = split_lines(text);
+  std::unique_ptr<AmsatBlock> block;  // the block being read
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const std::string_view line = lines[i].text;
+    const LabelledLine l = is_blank(line) ? LabelledLine{} : split_label(line);
+    const int field = l.label.empty() ? -1 : amsat_field_of(l.label);
+    if (block) {
+      // A block ends at a blank line, a line without a colon (free text, "/EX"), the next
+      // "Satellite:" or after its "Checksum:". Other labelled lines ("Beacon:") are ignored.
+      if (l.label.empty() || field == kSatellite) {
+        block->finish(result);
+        block.reset();
+      } else {
+        if (field >= 0) block->add(field, i, l);
+        if (field == kChecksum) {
+          block->finish(result);
+          block.reset();
+        }
+        continue;
+      }
+    }
+    if (field == kSatellite) {
+      block = std::make_unique<AmsatBlock>(lines, i, file_name, options);
+      block->add(kSatellite, i, l);
+    }
+  }
+  if (block) block->finish(result);
+  return result;
+}
+
+// ---------------------------------------------------------------------------------------------
+// gpredict satdata
+
+namespace {
+
+struct GpredictSection {
+  int header_line = 0;  // 0: keys before any [section]
+  std::string title;
+  std::string name;
+  std::optional<ElementLine> tle[2];
+};
+
+void finish_section(const GpredictSection& s, std::string_view file, const ParseOptions& options, ParseResult& result) {
+  static constexpr const char* kKeys[2] = {"TLE1", "TLE2"};
+  for (int k = 0; k < 2; ++k) {
+    if (!s.tle[k]) {
+      result.problems.push_back(make_problem(file, s.header_line, 0, kKeys[k], "",
+                                             std::string("a ") + kKeys[k] + "= line in section [" + s.title + "]"));
+      return;
+    }
+  }
+  Elements e;
+  e.source = ElementFormat::nasa;
+  e.name = s.name;
+  std::optional<ParseProblem> problem = parse_line1(*s.tle[0], options, e);
+  if (!problem) problem = parse_line2(*s.tle[1], options, e);
+  if (problem) result.problems.push_back(std::move(*problem));
+  else result.sets.push_back(std::move(e));
+}
+
+}  // namespace
+
+ParseResult parse_gpredict_satdata(std::string_view text, std::string_view file_name, const ParseOptions& options) {
+  ParseResult result;
+  std::optional<GpredictSection> section;
+  for (const TextLine& line : split_lines(text)) {
+    const std::string_view t = trim(line.text);
+    if (t.empty() || t.front() == '#' || t.front() == ';') continue;
+    if (t.front() == '[') {
+      if (section) finish_section(*section, file_name, options, result);
+      section.emplace();
+      section->header_line = line.number;
+      section->title = std::string(trim(t.substr(1, t.size() - (t.back() == ']' ? 2 : 1))));
+      continue;
+    }
+    const auto equals = line.text.find('=');
+    if (equals == std::string_view::npos) {
+      result.problems.push_back(make_problem(file_name, line.number, 1, "line", std::string(t),
+                                             "[section], KEY=value, comment or blank line", true));
+      continue;
+    }
+    if (!section) section.emplace();  // keys before any section: read them as one
+    const std::string_view key = trim(line.text.substr(0, equals));
+    std::size_t value_begin = equals + 1;
+    while (value_begin < line.text.size() && is_space(line.text[value_begin])) ++value_begin;
+    const std::string_view value = line.text.substr(value_begin);
+    if (key == "NAME") {
+      section->name = std::string(trim(value));
+    } else if (key == "TLE1" || key == "TLE2") {
+      section->tle[key == "TLE1" ? 0 : 1] =
+          ElementLine{value, line.number, static_cast<int>(value_begin), file_name};
+    }
+  }
+  if (section) finish_section(*section, file_name, options, result);
+  return result;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Detection and files
+
+namespace {
+enum class Detected { nasa, amsat, gpredict };
+
+Detected detect(std::string_view text) {
+  for (const TextLine& l : split_lines(text)) {
+    const std::string_view t = trim_left(l.text);
+    if (t.empty() || t.front() == '#') continue;
+    if (t.starts_with("TLE1=") || t.starts_with("TLE1 =")) return Detected::gpredict;
+    const LabelledLine label = split_label(t);
+    if (!label.label.empty() && amsat_field_of(label.label) == kSatellite) return Detected::amsat;
+  }
+  return Detected::nasa;
+}
+}  // namespace
+
+ParseResult parse_elements(std::string_view text, std::string_view file_name, const ParseOptions& options) {
+  switch (detect(text)) {
+    case Detected::amsat:
+      return parse_amsat(text, file_name, options);
+    case Detected::gpredict:
+      return parse_gpredict_satdata(text, file_name, options);
+    case Detected::nasa:
+      break;
+  }
+  return parse_nasa(text, file_name, options);
+}
+
+ParseResult load_elements_file(const std::string& path, const ParseOptions& options) {
+  std::string text;
+  int error = 0;
+  errno = 0;
+  if (std::FILE* f = std::fopen(path.c_str(), "rb")) {
+    char buf[65536];
+    std::size_t got = 0;
+    while ((got = std::fread(buf, 1, sizeof buf, f)) > 0) text.append(buf, got);
+    if (std::ferror(f)) error = errno ? errno : EIO;  // e.g. EISDIR for a folder
+    std::fclose(f);
+  } else {
+    error = errno ? errno : ENOENT;
+  }
+  if (error) {
+    ParseResult r;
+    r.problems.push_back(make_problem(path, 0, 0, "file", std::strerror(error), "a readable file of element sets"));
+    return r;
+  }
+  return parse_elements(text, path, options);
 }
 
 }  // namespace tb::orbit

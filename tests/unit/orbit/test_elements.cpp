@@ -397,3 +397,307 @@ TEST_CASE("NASA problems: ranges and separators") {
   l2 = "2 25544  51.6416  247.4627 0006703 130.5360 325.0288 15.72125391563537";
   check_problem(line2_problem(l2), 2, 26, "separator", "7", "blank");
 }
+
+// ---------------------------------------------------------------------------------------------
+// AMSAT format
+
+namespace {
+
+// The block of docs/element-formats.md (reference/element-formats.md), checksum 288.
+constexpr const char* kAo07Block = "Satellite: AO-07\n"
+                                   "Catalog number: 07530\n"
+                                   "Epoch time:      14365.96416624\n"
+                                   "Element set:     157\n"
+                                   "Inclination:      101.4991 deg\n"
+                                   "RA of node:       341.4640 deg\n"
+                                   "Eccentricity:    0.0011635\n"
+                                   "Arg of perigee:   269.4368 deg\n"
+                                   "Mean anomaly:     124.4812 deg\n"
+                                   "Mean motion:   12.53610824 rev/day\n"
+                                   "Decay rate:       -4.5e-07 rev/day^2\n"
+                                   "Epoch rev:           83630\n"
+                                   "Checksum:              288\n";
+
+// AO-07 on 2012-09-12 in both formats, as posted to AMSAT-BB (i8CVS, 2012-09-19) to show how the
+// AMSAT block is derived from the two lines; the AMSAT generator's checksum is 262.
+constexpr const char* kAo07Nasa = "AO-07\n"
+                                  "1 07530U 74089B   12256.61218065 -.00000027  00000-0  10000-3 0  4795\n"
+                                  "2 07530 101.4099 250.4681 0012001 109.6272 250.6089 12.53591141731001\n";
+constexpr const char* kAo07Amsat = "Satellite: AO-07\n"
+                                   "Catalog number: 07530\n"
+                                   "Epoch time:      12256.61218065\n"
+                                   "Element set:     479\n"
+                                   "Inclination:      101.4099 deg\n"
+                                   "RA of node:       250.4681 deg\n"
+                                   "Eccentricity:    0.0012001\n"
+                                   "Arg of perigee:   109.6272 deg\n"
+                                   "Mean anomaly:     250.6089 deg\n"
+                                   "Mean motion:   12.53591141 rev/day\n"
+                                   "Decay rate:       -2.7e-07 rev/day^2\n"
+                                   "Epoch rev:           73100\n"
+                                   "Checksum:              262\n";
+
+std::vector<std::string_view> split(std::string_view text) {
+  std::vector<std::string_view> out;
+  while (!text.empty()) {
+    const auto nl = text.find('\n');
+    out.push_back(text.substr(0, nl));
+    text = nl == std::string_view::npos ? std::string_view{} : text.substr(nl + 1);
+  }
+  return out;
+}
+
+std::string replace_line(std::string text, std::string_view from, std::string_view to) {
+  const auto at = text.find(from);
+  REQUIRE(at != std::string::npos);
+  text.replace(at, from.size(), to);
+  return text;
+}
+
+}  // namespace
+
+TEST_CASE("AMSAT checksum: the reference block gives 288, the AMSAT-BB block 262") {
+  auto block = split(kAo07Block);
+  REQUIRE(block.size() == 13);
+  block.pop_back();  // "Checksum:" itself is not summed
+  CHECK(amsat_checksum(block) == 288);
+  auto other = split(kAo07Amsat);
+  other.pop_back();
+  CHECK(amsat_checksum(other) == 262);
+  CHECK(amsat_checksum({"+", "-", "x9"}) == 12);
+}
+
+TEST_CASE("AMSAT: the reference block") {
+  const ParseResult r = parse_amsat(kAo07Block, "ao07.txt");
+  CHECK(r.problems.empty());
+  REQUIRE(r.sets.size() == 1);
+  const Elements& e = r.sets[0];
+  CHECK(e.source == ElementFormat::amsat);
+  CHECK(e.name == "AO-07");
+  CHECK(e.catalog_number == 7530);
+  CHECK(e.epoch_year == 2014);
+  CHECK(e.epoch_day == 365.96416624);
+  CHECK(e.element_set_number == 157);
+  CHECK(e.inclination_deg == 101.4991);
+  CHECK(e.raan_deg == 341.4640);
+  CHECK(e.eccentricity == 0.0011635);
+  CHECK(e.arg_perigee_deg == 269.4368);
+  CHECK(e.mean_anomaly_deg == 124.4812);
+  CHECK(e.mean_motion_rev_per_day == 12.53610824);
+  CHECK(e.ndot_over_2 == -4.5e-07);  // "Decay rate" is ndot/2
+  CHECK(e.nddot_over_6 == 0.0);
+  CHECK(e.bstar == 0.0);  // AMSAT sets carry no BSTAR
+  CHECK(e.revolution_number == 83630);
+  CHECK(e.epoch() == from_civil(2014, 12, 31, 23, 8, 23.963136));
+}
+
+TEST_CASE("AMSAT: the same satellite and epoch in both formats gives the same values") {
+  const ParseResult nasa = parse_nasa(kAo07Nasa);
+  const ParseResult amsat = parse_amsat(kAo07Amsat);
+  REQUIRE(nasa.sets.size() == 1);
+  REQUIRE(amsat.sets.size() == 1);
+  CHECK(amsat.problems.empty());
+  const Elements& n = nasa.sets[0];
+  const Elements& a = amsat.sets[0];
+  CHECK(a.name == n.name);
+  CHECK(a.catalog_number == n.catalog_number);
+  CHECK(a.epoch_year == n.epoch_year);
+  CHECK(a.epoch_day == n.epoch_day);
+  CHECK(a.element_set_number == n.element_set_number);
+  CHECK(a.inclination_deg == n.inclination_deg);
+  CHECK(a.raan_deg == n.raan_deg);
+  CHECK(a.eccentricity == n.eccentricity);
+  CHECK(a.arg_perigee_deg == n.arg_perigee_deg);
+  CHECK(a.mean_anomaly_deg == n.mean_anomaly_deg);
+  CHECK(a.mean_motion_rev_per_day == n.mean_motion_rev_per_day);
+  CHECK(a.ndot_over_2 == n.ndot_over_2);
+  CHECK(a.revolution_number == n.revolution_number);
+}
+
+TEST_CASE("AMSAT: a bulletin with text around two blocks, CRLF, varying whitespace") {
+  std::string bulletin = "HR AMSAT ORBITAL ELEMENTS FOR AMATEUR SATELLITES IN AMSAT FORMAT\n"
+                         "FROM WA5QGD FORT WORTH,TX    January 8, 2015\n"
+                         "TO ALL RADIO AMATEURS BT\n"
+                         "\n";
+  bulletin += kAo07Block;
+  bulletin += "\n";
+  // The second block: tabs and other spacing, a beacon line, upper case labels, no units.
+  bulletin += "Satellite:\tAO-07\n"
+              "Catalog number:07530\n"
+              "EPOCH TIME: 12256.61218065\n"
+              "Element set:  479\n"
+              "Inclination:\t101.4099\n"
+              "RA of node:  250.4681   deg\n"
+              "Eccentricity: .0012001\n"
+              "Arg  of  perigee: 109.6272 deg\n"
+              "Mean anomaly: 250.6089 deg\n"
+              "Mean motion: 12.53591141 rev/day\n"
+              "Decay rate: -2.7E-07 rev/day^2\n"
+              "Epoch rev: 73100\n"
+              "Beacon: 145.9775 MHz\n"
+              "Checksum: 262\n"
+              "/EX\n";
+  std::string crlf;
+  for (char c : bulletin) {
+    if (c == '\n') crlf += '\r';
+    crlf += c;
+  }
+  for (const std::string& text : {bulletin, crlf}) {
+    const ParseResult r = parse_amsat(text, "bulletin.txt");
+    for (const auto& p : r.problems) MESSAGE(p.message());
+    CHECK(r.problems.empty());
+    REQUIRE(r.sets.size() == 2);
+    CHECK(r.sets[0].revolution_number == 83630);
+    CHECK(r.sets[1].name == "AO-07");
+    CHECK(r.sets[1].epoch_year == 2012);
+    CHECK(r.sets[1].eccentricity == 0.0012001);
+    CHECK(r.sets[1].arg_perigee_deg == 109.6272);
+    CHECK(r.sets[1].ndot_over_2 == -2.7e-07);
+    CHECK(r.sets[1].revolution_number == 73100);
+    // auto-detection finds the blocks
+    CHECK(parse_elements(text).sets.size() == 2);
+  }
+}
+
+TEST_CASE("AMSAT problems: checksum mismatch is a warning unless strict") {
+  const std::string text = replace_line(kAo07Block, "Checksum:              288", "Checksum:              287");
+  ParseResult r = parse_amsat(text, "ao07.txt");
+  REQUIRE(r.problems.size() == 1);
+  const ParseProblem& p = r.problems[0];
+  CHECK(p.line == 13);
+  CHECK(p.column == 24);
+  CHECK(p.field == "Checksum");
+  CHECK(p.found == "287");
+  CHECK(p.expected == "checksum 288");
+  CHECK(p.warning);
+  CHECK(p.message() == "ao07.txt:13:24: Checksum: found '287', expected checksum 288 (warning: set accepted)");
+  CHECK(r.sets.size() == 1);
+  CHECK(r.ok());
+
+  ParseOptions strict;
+  strict.strict_amsat_checksum = true;
+  r = parse_amsat(text, "ao07.txt", strict);
+  REQUIRE(r.problems.size() == 1);
+  CHECK_FALSE(r.problems[0].warning);
+  CHECK(r.sets.empty());
+  CHECK_FALSE(r.ok());
+
+  // No checksum line at all.
+  r = parse_amsat(replace_line(kAo07Block, "Checksum:              288\n", ""), "ao07.txt");
+  REQUIRE(r.problems.size() == 1);
+  CHECK(r.problems[0].line == 1);
+  CHECK(r.problems[0].column == 0);
+  CHECK(r.problems[0].field == "Checksum");
+  CHECK(r.problems[0].found.empty());
+  CHECK(r.problems[0].expected == "a 'Checksum:' line (288 for this block)");
+  CHECK(r.problems[0].warning);
+  CHECK(r.sets.size() == 1);
+}
+
+TEST_CASE("AMSAT problems: bad values and missing lines") {
+  const std::string two = std::string("Keps\n\n") + kAo07Block + "\n" + kAo07Amsat;  // blocks at lines 3 and 17
+
+  ParseResult r = parse_amsat(replace_line(two, "0.0011635", "1.0011635"), "b.txt");
+  REQUIRE(r.problems.size() == 1);
+  check_problem(r.problems[0], 9, 18, "Eccentricity", "1.0011635", "number in [0, 1)");
+  REQUIRE(r.sets.size() == 1);  // the other block is still read
+  CHECK(r.sets[0].epoch_year == 2012);
+
+  r = parse_amsat(replace_line(two, "101.4991 deg", "101.49x1 deg"), "b.txt");
+  REQUIRE(r.problems.size() == 1);
+  check_problem(r.problems[0], 7, 19, "Inclination", "101.49x1", "decimal number");
+
+  r = parse_amsat(replace_line(two, "Mean motion:   12.53610824 rev/day\n", ""), "b.txt");
+  REQUIRE(r.problems.size() == 1);
+  check_problem(r.problems[0], 3, 0, "Mean motion", "", "a 'Mean motion:' line in the block");
+  CHECK(r.problems[0].message() == "b.txt:3:0: Mean motion: found nothing, expected a 'Mean motion:' line in the block");
+  CHECK(r.sets.size() == 1);
+
+  r = parse_amsat(replace_line(two, "Epoch time:      12256.61218065", "Epoch time:      12367.61218065"), "b.txt");
+  REQUIRE(r.problems.size() == 1);
+  check_problem(r.problems[0], 19, 18, "Epoch time", "12367.61218065", "day of year in [1, 367)");
+
+  r = parse_amsat(replace_line(two, "Element set:     479", "Element set:     4x9"), "b.txt");
+  REQUIRE(r.problems.size() == 1);
+  check_problem(r.problems[0], 20, 18, "Element set", "4x9", "digits 0-9");
+
+  r = parse_amsat(replace_line(two, "Mean motion:   12.53591141", "Mean motion:   -12.5359114"), "b.txt");
+  REQUIRE(r.problems.size() == 1);
+  check_problem(r.problems[0], 26, 16, "Mean motion", "-12.5359114", "number > 0");
+
+  r = parse_amsat(replace_line(two, "Epoch rev:           73100\n", "Epoch rev:           73100\nEpoch rev: 1\n"), "b.txt");
+  REQUIRE(r.problems.size() == 1);
+  check_problem(r.problems[0], 29, 12, "Epoch rev", "1", "one 'Epoch rev:' line in the block");
+}
+
+TEST_CASE("Files: auto-detection and unreadable files") {
+  const ParseResult vallado = load_elements_file(kSgp4Ver);
+  CHECK(vallado.sets.size() == 30);
+  CHECK(vallado.problems.size() == 3);
+  CHECK(vallado.problems[0].file == kSgp4Ver);
+
+  for (const std::string& path : {std::string("/nonexistent/keps.txt"), std::string("/")}) {
+    const ParseResult r = load_elements_file(path);
+    CHECK(r.sets.empty());
+    REQUIRE(r.problems.size() == 1);
+    CHECK(r.problems[0].file == path);
+    CHECK(r.problems[0].line == 0);
+    CHECK(r.problems[0].column == 0);
+    CHECK(r.problems[0].field == "file");
+    CHECK(r.problems[0].expected == "a readable file of element sets");
+    CHECK_FALSE(r.problems[0].found.empty());  // the system's reason
+  }
+
+  CHECK(parse_elements(kAo07Block).sets[0].source == ElementFormat::amsat);
+  CHECK(parse_elements(kAo07Nasa).sets[0].source == ElementFormat::nasa);
+}
+
+// ---------------------------------------------------------------------------------------------
+// gpredict
+
+TEST_CASE("gpredict: all 979 sets of satellites.dat load without a problem") {
+  const std::string text = read_text(TRAKBOX_GPREDICT_SATDATA);
+  const ParseResult r = parse_gpredict_satdata(text, "satellites.dat");
+  for (const auto& p : r.problems) MESSAGE(p.message());
+  CHECK(r.problems.empty());
+  REQUIRE(r.sets.size() == 979);
+  const Elements* iss = find(r, 25544);
+  REQUIRE(iss != nullptr);
+  CHECK(iss->name == "ISS (ZARYA)");
+  CHECK(iss->international_designator == "98067A");
+  const Elements* noaa = find(r, 28654);
+  REQUIRE(noaa != nullptr);
+  CHECK(noaa->name == "NOAA 18");
+  CHECK(noaa->epoch_day == 20.89662949);
+  CHECK(noaa->bstar == 0.12332e-4);
+  CHECK(noaa->mean_motion_rev_per_day == 14.12364350);
+  CHECK(noaa->revolution_number == 65289);
+  // The loader recognises the format by itself.
+  CHECK(load_elements_file(TRAKBOX_GPREDICT_SATDATA).sets.size() == 979);
+}
+
+TEST_CASE("gpredict problems carry the file's line and column") {
+  const std::string text = "[25544]\n"                                  // 1
+                           "VERSION=1.1\n"                              // 2
+                           "NAME=ISS (ZARYA)\n"                         // 3
+                           "NICKNAME=ISS\n"                             // 4
+                           "TLE1=" + std::string(kIss1) + "\n" +        // 5
+                           "TLE2=" + std::string(kIss2).substr(0, 68) + "8\n" +  // 6: bad checksum
+                           "\n"                                         // 7
+                           "[7530]\n"                                   // 8
+                           "NAME=AO-07\n"                               // 9
+                           "TLE1=1 07530U 74089B   12256.61218065 -.00000027  00000-0  10000-3 0  4795\n"
+                           "\n"
+                           "[28654]\n"                                  // 12
+                           "NAME=NOAA 18\n"
+                           "TLE1 = 1 28654U 05018A   18020.89662949 -.00000024  00000-0  12332-4 0  9995\n"
+                           "TLE2 = 2 28654  99.1634  53.2197 0014486 177.6703 182.4537 14.12364350652899\n";
+  const ParseResult r = parse_gpredict_satdata(text, "sat.dat");
+  REQUIRE(r.problems.size() == 2);
+  check_problem(r.problems[0], 6, 74, "checksum", "8", "checksum 7");
+  check_problem(r.problems[1], 8, 0, "TLE2", "", "a TLE2= line in section [7530]");
+  REQUIRE(r.sets.size() == 1);
+  CHECK(r.sets[0].name == "NOAA 18");
+  CHECK(r.sets[0].catalog_number == 28654);
+  CHECK(parse_elements(text).sets.size() == 1);
+}
