@@ -158,10 +158,14 @@ MotorState motor_advance(MotorState s, double v_cmd, double tau_s, double dt_s) 
 }
 
 AxisCommand decide(const AxisLoopInput& in) {
-  const double e = in.target - in.reading - in.velocity * in.coast_s;
+  const double e_now = in.target - in.reading;
+  const double e = e_now - in.velocity * in.coast_s;
   Drive d;
   if (in.driving == Drive::stop) {
-    if (std::abs(e) <= in.dead_band) return {};
+    // Inside the dead band now, or coasting into it: leave it. (A reading inside the band is never
+    // driven on the strength of a predicted coast: a motor that coasts further than modelled would
+    // otherwise hunt around the band.)
+    if (std::abs(e_now) <= in.dead_band || std::abs(e) <= in.dead_band) return {};
     d = e > 0.0 ? Drive::increase : Drive::decrease;
   } else {
     d = in.driving;

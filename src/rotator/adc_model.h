@@ -150,8 +150,8 @@ struct AxisCommand {
 
 // The drive decision for one axis.
 //  * e = target - reading - velocity*coast_s (the error left once the axis has coasted to rest).
-//  * A stopped axis stays stopped while |e| <= dead band (an error exactly at the dead band is
-//    inside it); otherwise it is driven towards the target.
+//  * A stopped axis stays stopped while the error now or e is within the dead band (an error
+//    exactly at the dead band is inside it); otherwise it is driven towards where e says.
 //  * A driven axis keeps going towards the centre of the dead band (hysteresis: no stop at the
 //    band's near edge, so a new small error does not restart it at once), for run_for_s =
 //    e / rate seconds, after which it switches off and coasts onto the target.
