@@ -191,7 +191,6 @@ void closed_loops(unsigned seed, int count, std::chrono::milliseconds step, doub
     CHECK(sim.motion().az == Drive::stop);
   }
   if (max_reversals == 0) CHECK(total_reversals == 0);
-  MESSAGE("reversals in " << runs << " runs: " << total_reversals);
 }
 }  // namespace
 
