@@ -23,7 +23,7 @@ void quiet_hamlib_once() {
 }
 
 std::string error_text(int rc) {
-  std::string s = rigerror(rc);
+  std::string s = rigerror2(rc);
   if (auto nl = s.find('\n'); nl != std::string::npos) s.resize(nl);
   while (!s.empty() && (s.back() == ' ' || s.back() == '\r')) s.pop_back();
   return s;

@@ -20,7 +20,6 @@
 #include <cstdlib>
 #include <functional>
 #include <optional>
-#include <regex>
 #include <string>
 #include <thread>
 #include <vector>
@@ -195,29 +194,45 @@ class PtyEnd {
   int fd_ = -1;
 };
 
-// socat -d -d pty,raw,echo=0 pty,raw,echo=0: two linked ptys, announced on stderr.
+// socat -d -d pty,raw,echo=0 pty,raw,echo=0: two linked ptys, announced on stderr. Each is also
+// given a symlink in a private folder, which socat removes when it ends: a pty number the kernel
+// hands to someone else afterwards can never be mistaken for our cable.
 class PtyPair {
  public:
   PtyPair() {
     auto socat = which("socat");
     if (!socat) return;
-    child_.emplace(std::vector<std::string>{*socat, "-d", "-d", "pty,raw,echo=0", "pty,raw,echo=0"}, true);
+    char tmpl[] = "/tmp/tb_radio_pty.XXXXXX";
+    if (!::mkdtemp(tmpl)) return;
+    dir_ = tmpl;
+    const std::string a = dir_ + "/radio", b = dir_ + "/peer";
+    child_.emplace(std::vector<std::string>{*socat, "-d", "-d", "pty,raw,echo=0,link=" + a,
+                                            "pty,raw,echo=0,link=" + b},
+                   true);
     if (!child_->started()) return;
-    const std::regex re("PTY is (/dev/[^\\s]+)");
-    child_->read_stderr_until(
+    const bool ready = child_->read_stderr_until(
         [&](const std::string& text) {
-          paths_.clear();
-          for (auto it = std::sregex_iterator(text.begin(), text.end(), re); it != std::sregex_iterator(); ++it)
-            paths_.push_back((*it)[1]);
-          return paths_.size() >= 2 && text.find("starting data transfer loop") != std::string::npos;
+          return text.find("starting data transfer loop") != std::string::npos;
         },
         5000ms);
+    if (ready && ::access(a.c_str(), F_OK) == 0 && ::access(b.c_str(), F_OK) == 0) paths_ = {a, b};
   }
+  ~PtyPair() {
+    child_.reset();
+    if (!dir_.empty()) {
+      ::unlink((dir_ + "/radio").c_str());
+      ::unlink((dir_ + "/peer").c_str());
+      ::rmdir(dir_.c_str());
+    }
+  }
+  PtyPair(const PtyPair&) = delete;
+  PtyPair& operator=(const PtyPair&) = delete;
   bool ok() const { return paths_.size() >= 2; }
   const std::string& radio_side() const { return paths_.at(0); }   // the driver opens this
   const std::string& test_side() const { return paths_.at(1); }    // the "radio" reads here
 
  private:
+  std::string dir_;
   std::optional<Child> child_;
   std::vector<std::string> paths_;
 };
