@@ -645,9 +645,59 @@ TEST_CASE("Files: auto-detection and unreadable files") {
     CHECK(r.problems[0].column == 0);
     CHECK(r.problems[0].field == "file");
     CHECK(r.problems[0].expected == "a readable file of element sets");
-    MESSAGE(r.problems[0].message());
+    CHECK_FALSE(r.problems[0].found.empty());  // the system's reason
   }
 
   CHECK(parse_elements(kAo07Block).sets[0].source == ElementFormat::amsat);
   CHECK(parse_elements(kAo07Nasa).sets[0].source == ElementFormat::nasa);
+}
+
+// ---------------------------------------------------------------------------------------------
+// gpredict
+
+TEST_CASE("gpredict: all 979 sets of satellites.dat load without a problem") {
+  const std::string text = read_text(TRAKBOX_GPREDICT_SATDATA);
+  const ParseResult r = parse_gpredict_satdata(text, "satellites.dat");
+  for (const auto& p : r.problems) MESSAGE(p.message());
+  CHECK(r.problems.empty());
+  REQUIRE(r.sets.size() == 979);
+  const Elements* iss = find(r, 25544);
+  REQUIRE(iss != nullptr);
+  CHECK(iss->name == "ISS (ZARYA)");
+  CHECK(iss->international_designator == "98067A");
+  const Elements* noaa = find(r, 28654);
+  REQUIRE(noaa != nullptr);
+  CHECK(noaa->name == "NOAA 18");
+  CHECK(noaa->epoch_day == 20.89662949);
+  CHECK(noaa->bstar == 0.12332e-4);
+  CHECK(noaa->mean_motion_rev_per_day == 14.12364350);
+  CHECK(noaa->revolution_number == 65289);
+  // The loader recognises the format by itself.
+  CHECK(load_elements_file(TRAKBOX_GPREDICT_SATDATA).sets.size() == 979);
+}
+
+TEST_CASE("gpredict problems carry the file's line and column") {
+  const std::string text = "[25544]\n"                                  // 1
+                           "VERSION=1.1\n"                              // 2
+                           "NAME=ISS (ZARYA)\n"                         // 3
+                           "NICKNAME=ISS\n"                             // 4
+                           "TLE1=" + std::string(kIss1) + "\n" +        // 5
+                           "TLE2=" + std::string(kIss2).substr(0, 68) + "8\n" +  // 6: bad checksum
+                           "\n"                                         // 7
+                           "[7530]\n"                                   // 8
+                           "NAME=AO-07\n"                               // 9
+                           "TLE1=1 07530U 74089B   12256.61218065 -.00000027  00000-0  10000-3 0  4795\n"
+                           "\n"
+                           "[28654]\n"                                  // 12
+                           "NAME=NOAA 18\n"
+                           "TLE1 = 1 28654U 05018A   18020.89662949 -.00000024  00000-0  12332-4 0  9995\n"
+                           "TLE2 = 2 28654  99.1634  53.2197 0014486 177.6703 182.4537 14.12364350652899\n";
+  const ParseResult r = parse_gpredict_satdata(text, "sat.dat");
+  REQUIRE(r.problems.size() == 2);
+  check_problem(r.problems[0], 6, 74, "checksum", "8", "checksum 7");
+  check_problem(r.problems[1], 8, 0, "TLE2", "", "a TLE2= line in section [7530]");
+  REQUIRE(r.sets.size() == 1);
+  CHECK(r.sets[0].name == "NOAA 18");
+  CHECK(r.sets[0].catalog_number == 28654);
+  CHECK(parse_elements(text).sets.size() == 1);
 }
