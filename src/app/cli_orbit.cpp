@@ -140,9 +140,8 @@ LoadedElements load_elements(const std::string& path) {
     r.error = ArgError{"ELEMENTS", "cannot read '" + path + "'"};
     return r;
   }
-  // gpredict's INI-like files carry TLE1=/TLE2= keys; everything else is NASA or AMSAT text.
-  const bool gpredict = text.find("TLE1=") != std::string::npos && text.find("TLE2=") != std::string::npos;
-  orbit::ParseResult parsed = gpredict ? orbit::parse_gpredict_satdata(text, path) : orbit::parse_elements(text, path);
+  // parse_elements recognises the format: AMSAT "Satellite:" blocks, gpredict keys, NASA lines.
+  orbit::ParseResult parsed = orbit::parse_elements(text, path);
   for (const orbit::ParseProblem& p : parsed.problems)
     std::fprintf(stderr, "trakbox: warning: %s\n", p.message().c_str());
   if (parsed.sets.empty()) {

@@ -57,8 +57,9 @@ constexpr double kEarthRotationRadPerMin = 4.37526908801129966e-3;  // rptim
 constexpr double kResonanceStep = 720.0;
 constexpr double kResonanceStepSquaredHalf = 259200.0;
 
-// Fraction part as C's fmod (keeps the sign of x), which the reference uses throughout.
-inline double wrap_two_pi(double x) { return std::fmod(x, kTwoPi); }
+// Remainder of x / 2pi with the sign of x, as C's fmod, which the reference uses throughout.
+// fmod is exact, so it returns x itself when |x| < 2pi: skipping the call there changes nothing.
+inline double wrap_two_pi(double x) { return std::fabs(x) < kTwoPi ? x : std::fmod(x, kTwoPi); }
 
 struct SinCos {
   double s, c;
@@ -578,7 +579,7 @@ void lunar_solar_periodics(const LunarSolarPeriodics& p, double t, PerturbedElem
     const double dbet = -ph * node.s + pinc * x.cosip * node.c;
     alfdp = alfdp + dalf;
     betdp = betdp + dbet;
-    x.nodep = std::fmod(x.nodep, kTwoPi);
+    x.nodep = wrap_two_pi(x.nodep);
     double xls = x.mp + x.argpp + x.cosip * x.nodep;
     const double dls = pl + pgh - pinc * x.nodep * x.sinip;
     xls = xls + dls;

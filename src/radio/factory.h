@@ -1,0 +1,55 @@
+// --radio SPEC: which driver, where.
+//   sim | simulated | (empty)          the simulated radio (default)
+//   icom:DEVICE                        Icom CI-V, 1200 8N2, addresses from menu 6-7
+//   kenwood:DEVICE                     Kenwood TS-790/711/811, 4800 8N2
+//   yaesu:DEVICE                       Yaesu FT-736, 4800 8N2
+//   cat:DEVICE                         the rig chosen in menu 6-7 (Icom/Kenwood/Yaesu)
+//   hamlib:MODEL:DEVICE[:BAUD][:split|:mainsub]   any Hamlib backend
+//   rigctld[:HOST[:PORT]][:split|:mainsub]        a rigctld daemon (Hamlib NET rigctl, model 2);
+//                                                 HOST defaults to 127.0.0.1, PORT to 4532
+// Parsing is separate from opening so a bad spec is reported before anything starts; opening
+// never blocks (the drivers connect on their worker thread).
+#pragma once
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "radio/config.h"
+#include "radio/driver.h"
+#include "radio/hamlib_radio.h"
+#include "radio/worker.h"
+
+namespace tb::radio {
+
+struct RadioSpec {
+  enum class Kind { simulated, icom, kenwood, yaesu, cat, hamlib, rigctld };
+  Kind kind = Kind::simulated;
+  std::string device;          // icom/kenwood/yaesu/cat/hamlib
+  int model = 0;               // hamlib
+  int baud = 0;                // hamlib (0: backend default)
+  std::string host;            // rigctld
+  int port = 0;                // rigctld
+  HamlibVfoScheme scheme = HamlibVfoScheme::automatic;
+};
+
+struct RadioSpecParse {
+  std::optional<RadioSpec> spec;
+  std::string error;           // set when spec is empty
+};
+RadioSpecParse parse_radio_spec(std::string_view text);
+
+struct DriverTiming {
+  WorkerTiming worker;
+  std::chrono::milliseconds yaesu_byte_gap{50};
+};
+
+struct MakeRadio {
+  std::unique_ptr<RadioDriver> driver;
+  std::string error;
+};
+// Builds the driver for a parsed spec with the station's menu 6-7 configuration.
+MakeRadio make_radio(const RadioSpec& spec, const RadioConfig& config, const DriverTiming& timing = {});
+MakeRadio make_radio(std::string_view spec, const RadioConfig& config, const DriverTiming& timing = {});
+
+}  // namespace tb::radio

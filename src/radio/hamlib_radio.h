@@ -1,0 +1,61 @@
+// Hamlib radios: any of Hamlib's backends on a serial device (--radio hamlib:MODEL:DEVICE[:BAUD]),
+// or a rigctld daemon through Hamlib's NET rigctl backend, model 2 (--radio rigctld:HOST:PORT).
+// Hamlib calls block, so the link runs on a WorkerRadio's thread: faults are reported in status()
+// and the link reconnects with backoff.
+//
+// Which VFO carries which link on a dual-band radio:
+//   split    downlink on the current (RX) VFO with set_freq / set_mode, uplink on VFO B as the split
+//            TX VFO (set_split_vfo ON VFOB, set_split_freq / set_split_mode). Every backend that
+//            can transmit split has this, rigctld included; it is what Gpredict's F / I commands do.
+//   main_sub downlink on the Sub band, uplink on Main (set_freq on RIG_VFO_SUB / RIG_VFO_MAIN), as
+//            the IC-820H/821H/910H and TS-2000 run in satellite mode.
+//   automatic: main_sub when the opened backend lists both Main and Sub VFOs, split otherwise;
+//            always split through rigctld (the NET backend addresses VFOs only when rigctld runs
+//            with --vfo, so a Main/Sub choice would land both links on the current VFO).
+#pragma once
+#include <memory>
+#include <string>
+
+#include "radio/worker.h"
+
+namespace tb::radio {
+
+enum class HamlibVfoScheme { automatic, split, main_sub };
+
+struct HamlibOptions {
+  int model = 1;                 // Hamlib rig model number (1 dummy, 2 NET rigctl, 3073 IC-910 ...)
+  std::string path;              // serial device, or HOST:PORT for model 2
+  int baud = 0;                  // 0: the backend's default
+  HamlibVfoScheme scheme = HamlibVfoScheme::automatic;
+};
+
+class HamlibLink final : public RadioLink {
+ public:
+  explicit HamlibLink(HamlibOptions options);
+  ~HamlibLink() override;
+  std::string describe() const override;
+  void open() override;
+  void close() noexcept override;
+  void set_frequency(Link link, Hz hz) override;
+  void set_mode(Link link, Mode mode) override;
+  void send_raw(const std::string& bytes) override;
+
+  // The scheme in use once open (automatic resolved).
+  HamlibVfoScheme scheme() const { return scheme_; }
+
+ private:
+  void check(int rc, const std::string& what);
+  void ensure_split();
+  struct Impl;
+  HamlibOptions opt_;
+  HamlibVfoScheme scheme_ = HamlibVfoScheme::split;
+  bool split_on_ = false;
+  std::unique_ptr<Impl> impl_;
+};
+
+std::unique_ptr<RadioDriver> make_hamlib_radio(const HamlibOptions& options, WorkerTiming timing = {});
+
+// Hamlib's name for a model ("Hamlib Dummy", "NET rigctl", ...); empty when unknown.
+std::string hamlib_model_name(int model);
+
+}  // namespace tb::radio

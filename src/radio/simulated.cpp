@@ -1,0 +1,96 @@
+#include "radio/simulated.h"
+
+namespace tb::radio {
+
+const char* to_string(Link l) { return l == Link::downlink ? "downlink" : "uplink"; }
+
+void apply(RadioDriver& radio, const TuneCommands& c) {
+  if (c.downlink_mode) radio.set_mode(Link::downlink, *c.downlink_mode);
+  if (c.downlink_hz) radio.set_frequency(Link::downlink, *c.downlink_hz);
+  if (c.uplink_mode) radio.set_mode(Link::uplink, *c.uplink_mode);
+  if (c.uplink_hz) radio.set_frequency(Link::uplink, *c.uplink_hz);
+}
+
+SimulatedRadio::SimulatedRadio() {
+  status_.connected = true;
+  status_.connects = 1;
+}
+
+void SimulatedRadio::set_frequency(Link link, Hz hz) {
+  std::lock_guard lock(mu_);
+  if (status_.fault) {
+    ++status_.failures;
+    return;
+  }
+  (link == Link::downlink ? status_.downlink_hz : status_.uplink_hz) = hz;
+  ++status_.delivered;
+  history_.push_back({RadioEvent::Kind::frequency, link, hz, Mode::none, {}});
+}
+
+void SimulatedRadio::set_mode(Link link, Mode mode) {
+  if (mode == Mode::none) return;
+  std::lock_guard lock(mu_);
+  if (status_.fault) {
+    ++status_.failures;
+    return;
+  }
+  (link == Link::downlink ? status_.downlink_mode : status_.uplink_mode) = mode;
+  ++status_.delivered;
+  history_.push_back({RadioEvent::Kind::mode, link, 0, mode, {}});
+}
+
+void SimulatedRadio::send_raw(std::string bytes) {
+  std::lock_guard lock(mu_);
+  if (status_.fault) {
+    ++status_.failures;
+    return;
+  }
+  ++status_.delivered;
+  history_.push_back({RadioEvent::Kind::raw, Link::downlink, 0, Mode::none, std::move(bytes)});
+}
+
+void SimulatedRadio::step(Link link, Hz delta) {
+  std::lock_guard lock(mu_);
+  auto& f = link == Link::downlink ? status_.downlink_hz : status_.uplink_hz;
+  f = f.value_or(0) + delta;
+  history_.push_back({RadioEvent::Kind::step, link, delta, Mode::none, {}});
+}
+
+RadioStatus SimulatedRadio::status() const {
+  std::lock_guard lock(mu_);
+  return status_;
+}
+
+std::vector<RadioEvent> SimulatedRadio::history() const {
+  std::lock_guard lock(mu_);
+  return history_;
+}
+
+void SimulatedRadio::clear_history() {
+  std::lock_guard lock(mu_);
+  history_.clear();
+}
+
+std::optional<Hz> SimulatedRadio::frequency(Link link) const {
+  std::lock_guard lock(mu_);
+  return link == Link::downlink ? status_.downlink_hz : status_.uplink_hz;
+}
+
+std::optional<Mode> SimulatedRadio::mode(Link link) const {
+  std::lock_guard lock(mu_);
+  return link == Link::downlink ? status_.downlink_mode : status_.uplink_mode;
+}
+
+void SimulatedRadio::simulate_fault(std::string message) {
+  std::lock_guard lock(mu_);
+  status_.fault = true;
+  status_.message = std::move(message);
+}
+
+void SimulatedRadio::clear_fault() {
+  std::lock_guard lock(mu_);
+  status_.fault = false;
+  status_.message.clear();
+}
+
+}  // namespace tb::radio

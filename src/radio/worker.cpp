@@ -1,0 +1,211 @@
+#include "radio/worker.h"
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+
+namespace tb::radio {
+
+namespace {
+int index(Link l) { return l == Link::downlink ? 0 : 1; }
+}  // namespace
+
+WorkerRadio::WorkerRadio(std::unique_ptr<RadioLink> link, WorkerTiming timing)
+    : link_(std::move(link)), description_(link_->describe()), timing_(timing) {
+  thread_ = std::thread([this] { run(); });
+}
+
+WorkerRadio::~WorkerRadio() {
+  {
+    std::lock_guard lock(mu_);
+    stop_ = true;
+  }
+  cv_.notify_all();
+  if (thread_.joinable()) thread_.join();
+}
+
+void WorkerRadio::enqueue_locked(Job job) {
+  if (job.kind != Job::Kind::raw) {
+    auto same = std::find_if(queue_.begin(), queue_.end(), [&](const Job& j) {
+      return j.kind == job.kind && j.link == job.link;
+    });
+    if (same != queue_.end()) {  // keep its place in the queue, take the newer value
+      *same = std::move(job);
+      return;
+    }
+  }
+  queue_.push_back(std::move(job));
+}
+
+void WorkerRadio::set_frequency(Link link, Hz hz) {
+  {
+    std::lock_guard lock(mu_);
+    want_hz_[index(link)] = hz;
+    enqueue_locked({Job::Kind::frequency, link, hz, Mode::none, {}});
+  }
+  cv_.notify_all();
+}
+
+void WorkerRadio::set_mode(Link link, Mode mode) {
+  if (mode == Mode::none) return;
+  {
+    std::lock_guard lock(mu_);
+    want_mode_[index(link)] = mode;
+    enqueue_locked({Job::Kind::mode, link, 0, mode, {}});
+  }
+  cv_.notify_all();
+}
+
+void WorkerRadio::send_raw(std::string bytes) {
+  {
+    std::lock_guard lock(mu_);
+    enqueue_locked({Job::Kind::raw, Link::downlink, 0, Mode::none, std::move(bytes)});
+  }
+  cv_.notify_all();
+}
+
+RadioStatus WorkerRadio::status() const {
+  std::lock_guard lock(mu_);
+  RadioStatus s = status_;
+  s.pending = queue_.size() + (busy_ ? 1 : 0);
+  return s;
+}
+
+bool WorkerRadio::wait_idle(std::chrono::milliseconds timeout) {
+  std::unique_lock lock(mu_);
+  return idle_cv_.wait_for(lock, timeout, [&] { return queue_.empty() && !busy_; });
+}
+
+void WorkerRadio::execute(const Job& job) {
+  switch (job.kind) {
+    case Job::Kind::frequency: link_->set_frequency(job.link, job.hz); break;
+    case Job::Kind::mode: link_->set_mode(job.link, job.mode); break;
+    case Job::Kind::raw: link_->send_raw(job.raw); break;
+  }
+}
+
+void WorkerRadio::run() {
+  using Clock = std::chrono::steady_clock;
+  bool open = false;
+  auto backoff = timing_.backoff_first;
+  Clock::time_point retry_at{};
+  auto fail = [&](const std::string& message) {  // with mu_ held
+    ++status_.failures;
+    if (!status_.fault || status_.message != message)
+      spdlog::warn("radio {}: {}", description_, message);
+    status_.fault = true;
+    status_.message = message;
+    retry_at = Clock::now() + backoff;
+    backoff = std::min(backoff * 2, timing_.backoff_max);
+  };
+
+  std::unique_lock lock(mu_);
+  while (true) {
+    if (queue_.empty() && !busy_) idle_cv_.notify_all();
+    cv_.wait(lock, [&] { return stop_ || !queue_.empty(); });
+    if (stop_) break;
+    if (Clock::now() < retry_at) {
+      cv_.wait_until(lock, retry_at, [&] { return stop_; });
+      if (stop_) break;
+    }
+
+    if (!open) {
+      busy_ = true;
+      lock.unlock();
+      std::optional<LinkError> error;
+      try {
+        link_->open();
+      } catch (const LinkError& e) {
+        error = e;
+      }
+      lock.lock();
+      busy_ = false;
+      if (error) {
+        fail(error->what());
+        continue;
+      }
+      open = true;
+      status_.connected = true;
+      ++status_.connects;
+      if (status_.connects > 1) spdlog::info("radio {}: reconnected", description_);
+      // Whatever the radio was told before, tell it again.
+      for (Link l : {Link::downlink, Link::uplink}) {
+        if (want_mode_[index(l)]) enqueue_locked({Job::Kind::mode, l, 0, *want_mode_[index(l)], {}});
+        if (want_hz_[index(l)]) enqueue_locked({Job::Kind::frequency, l, *want_hz_[index(l)], Mode::none, {}});
+      }
+    }
+
+    Job job = std::move(queue_.front());
+    queue_.pop_front();
+    busy_ = true;
+    lock.unlock();
+    std::optional<LinkError> error;
+    std::string other;
+    try {
+      execute(job);
+    } catch (const LinkError& e) {
+      error = e;
+    } catch (const std::exception& e) {  // an encoder refused the value
+      other = e.what();
+    }
+    lock.lock();
+    busy_ = false;
+
+    if (!error && other.empty()) {
+      ++status_.delivered;
+      if (status_.fault) spdlog::info("radio {}: working again", description_);
+      status_.fault = false;
+      status_.message.clear();
+      backoff = timing_.backoff_first;
+      if (job.kind == Job::Kind::frequency)
+        (job.link == Link::downlink ? status_.downlink_hz : status_.uplink_hz) = job.hz;
+      if (job.kind == Job::Kind::mode)
+        (job.link == Link::downlink ? status_.downlink_mode : status_.uplink_mode) = job.mode;
+      continue;
+    }
+    if (!other.empty()) {  // not retried: the same value would fail again
+      fail(other);
+      retry_at = {};
+      continue;
+    }
+    fail(error->what());
+    if (error->action == LinkError::Action::drop) {
+      retry_at = {};
+      continue;
+    }
+    if (error->action == LinkError::Action::reconnect) {
+      lock.unlock();
+      link_->close();
+      lock.lock();
+      open = false;
+      status_.connected = false;
+    }
+    // Retry it, unless a newer value for the same thing arrived meanwhile.
+    const bool superseded = job.kind != Job::Kind::raw &&
+        std::any_of(queue_.begin(), queue_.end(),
+                    [&](const Job& j) { return j.kind == job.kind && j.link == job.link; });
+    if (!superseded) queue_.push_front(std::move(job));
+  }
+
+  // Stopping: one attempt at what is still queued, then leave the radio tidy.
+  if (open) {
+    while (!queue_.empty()) {
+      Job job = std::move(queue_.front());
+      queue_.pop_front();
+      lock.unlock();
+      try {
+        execute(job);
+      } catch (const std::exception&) {
+      }
+      lock.lock();
+    }
+    lock.unlock();
+    link_->close();
+    lock.lock();
+  }
+  queue_.clear();
+  status_.connected = false;
+  idle_cv_.notify_all();
+}
+
+}  // namespace tb::radio

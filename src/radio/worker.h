@@ -1,0 +1,88 @@
+// A radio behind a worker thread: the caller's calls queue and return at once; the worker talks to
+// the hardware (which may block: serial timeouts, Icom echo waits, Yaesu byte spacing, Hamlib),
+// reports faults, retries with backoff and reconnects.
+//
+// The device-specific part is a RadioLink, used only on the worker thread.
+#pragma once
+#include <chrono>
+#include <condition_variable>
+#include <deque>
+#include <memory>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+
+#include "radio/driver.h"
+
+namespace tb::radio {
+
+// What a link throws when something went wrong.
+struct LinkError : std::runtime_error {
+  enum class Action {
+    reconnect,  // the port or connection is broken: close, reopen with backoff, retry
+    retry,      // the link is up but this attempt failed (no echo, collision, timeout): retry
+    drop,       // the radio refused this command (NG, unsupported): don't retry it
+  };
+  Action action;
+  LinkError(Action a, const std::string& what) : std::runtime_error(what), action(a) {}
+};
+
+class RadioLink {
+ public:
+  virtual ~RadioLink() = default;
+  virtual std::string describe() const = 0;
+  virtual void open() = 0;                 // throws LinkError
+  virtual void close() noexcept = 0;       // leave the radio tidy (Yaesu: CAT off), close the port
+  virtual void set_frequency(Link link, Hz hz) = 0;
+  virtual void set_mode(Link link, Mode mode) = 0;
+  virtual void send_raw(const std::string& bytes) = 0;
+};
+
+struct WorkerTiming {
+  std::chrono::milliseconds backoff_first{200};    // wait after the first failure
+  std::chrono::milliseconds backoff_max{5000};     // doubling up to this
+};
+
+class WorkerRadio final : public RadioDriver {
+ public:
+  explicit WorkerRadio(std::unique_ptr<RadioLink> link, WorkerTiming timing = {});
+  ~WorkerRadio() override;   // delivers what is queued (one attempt), closes the link, joins
+  WorkerRadio(const WorkerRadio&) = delete;
+  WorkerRadio& operator=(const WorkerRadio&) = delete;
+
+  std::string describe() const override { return description_; }
+  void set_frequency(Link link, Hz radio_hz) override;
+  void set_mode(Link link, Mode mode) override;
+  void send_raw(std::string bytes) override;
+  RadioStatus status() const override;
+  bool wait_idle(std::chrono::milliseconds timeout) override;
+
+ private:
+  struct Job {
+    enum class Kind { frequency, mode, raw } kind;
+    Link link = Link::downlink;
+    Hz hz = 0;
+    Mode mode = Mode::none;
+    std::string raw;
+  };
+  void enqueue_locked(Job job);
+  void run();
+  void execute(const Job& job);
+
+  std::unique_ptr<RadioLink> link_;
+  const std::string description_;
+  const WorkerTiming timing_;
+
+  mutable std::mutex mu_;
+  std::condition_variable cv_;       // work arrived / stop
+  std::condition_variable idle_cv_;  // queue drained
+  std::deque<Job> queue_;
+  bool busy_ = false;
+  bool stop_ = false;
+  std::optional<Hz> want_hz_[2];     // last requested per link (re-sent after a reconnect)
+  std::optional<Mode> want_mode_[2];
+  RadioStatus status_;
+  std::thread thread_;
+};
+
+}  // namespace tb::radio

@@ -1,0 +1,88 @@
+#include "rotator/config.h"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "rotator/adc_model.h"
+
+namespace tb::rotator {
+
+namespace {
+constexpr int kMinSpanWidth = 10;
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+void check_span(std::vector<std::string>& out, const char* axis, const AxisSpan& s) {
+  std::string name = std::string(axis) + " ADC span";
+  if (s.min < 0 || s.min > kAdcMaxCount || s.max < 0 || s.max > kAdcMaxCount)
+    out.push_back(name + " " + std::to_string(s.min) + "-" + std::to_string(s.max) +
+                  ": counts must lie in 0..1023 (10-bit ADC)");
+  else if (s.max - s.min < kMinSpanWidth)
+    out.push_back(name + " " + std::to_string(s.min) + "-" + std::to_string(s.max) +
+                  ": maximum must exceed minimum by at least " + std::to_string(kMinSpanWidth) +
+                  " counts (if the reading falls as the rotator turns CW/UP, swap the potentiometer ends)");
+}
+}  // namespace
+
+std::vector<std::string> validate(const RotatorConfig& c) {
+  std::vector<std::string> out;
+  check_span(out, "azimuth", c.az_span);
+  check_span(out, "elevation", c.el_span);
+  if (!(c.az_travel_deg >= 360.0 && c.az_travel_deg <= 720.0))
+    out.push_back("azimuth travel " + num(c.az_travel_deg) + " deg: expected 360 to 720");
+  if (c.az_dead_band < 0 || c.az_dead_band > 100)
+    out.push_back("azimuth dead band " + std::to_string(c.az_dead_band) + ": expected 0..100 counts");
+  if (c.el_dead_band < 0 || c.el_dead_band > 100)
+    out.push_back("elevation dead band " + std::to_string(c.el_dead_band) + ": expected 0..100 counts");
+  if (std::abs(c.az_skew) > 512)
+    out.push_back("azimuth skew " + std::to_string(c.az_skew) + ": expected -512..512 counts");
+  if (std::abs(c.el_skew) > 512)
+    out.push_back("elevation skew " + std::to_string(c.el_skew) + ": expected -512..512 counts");
+  const double el_top = c.el_flip_allowed ? 180.0 : 90.0;
+  auto az_ok = [](double a) { return std::isfinite(a) && a >= 0.0 && a <= 360.0; };
+  auto el_ok = [&](double e) { return std::isfinite(e) && e >= 0.0 && e <= el_top; };
+  const std::string el_expect = c.el_flip_allowed ? "0..180" : "0..90";
+  if (!az_ok(c.parking.az)) out.push_back("azimuth parking value " + num(c.parking.az) + ": expected 0..360");
+  if (!el_ok(c.parking.el))
+    out.push_back("elevation parking value " + num(c.parking.el) + ": expected " + el_expect);
+  if (!az_ok(c.az_limit_min)) out.push_back("azimuth minimum value " + num(c.az_limit_min) + ": expected 0..360");
+  if (!az_ok(c.az_limit_max)) out.push_back("azimuth maximum value " + num(c.az_limit_max) + ": expected 0..360");
+  if (az_ok(c.az_limit_min) && az_ok(c.az_limit_max) && c.az_limit_max - c.az_limit_min < 360.0 &&
+      wrap360(c.az_limit_max - c.az_limit_min) == 0.0)
+    out.push_back("azimuth limits " + num(c.az_limit_min) + " and " + num(c.az_limit_max) +
+                  ": the same azimuth leaves no room to turn (use 0 and 360 for no limit)");
+  if (!el_ok(c.el_limit_min)) out.push_back("elevation minimum value " + num(c.el_limit_min) + ": expected " + el_expect);
+  if (!el_ok(c.el_limit_max)) out.push_back("elevation maximum value " + num(c.el_limit_max) + ": expected " + el_expect);
+  if (el_ok(c.el_limit_min) && el_ok(c.el_limit_max) && c.el_limit_max < c.el_limit_min)
+    out.push_back("elevation limits " + num(c.el_limit_min) + ".." + num(c.el_limit_max) +
+                  ": maximum must not be below minimum");
+  for (std::size_t i = 0; i < c.presets.size(); ++i) {
+    const AzEl& p = c.presets[i];
+    if (!az_ok(p.az) || !el_ok(p.el))
+      out.push_back("preset " + std::to_string(i + 1) + " " + num(p.az) + "/" + num(p.el) +
+                    ": expected azimuth 0..360 and elevation " + el_expect);
+  }
+  if (c.el_flip_allowed && c.el_span.min + 2 * c.el_span.width() > kAdcMaxCount)
+    out.push_back("elevation flip allowed but the span " + std::to_string(c.el_span.min) + "-" +
+                  std::to_string(c.el_span.max) + " puts 180 deg at count " +
+                  std::to_string(c.el_span.min + 2 * c.el_span.width()) +
+                  ", beyond the ADC (1023): set the pot so 90 deg reads at most " +
+                  std::to_string((kAdcMaxCount + c.el_span.min) / 2));
+  if (!(c.az_rate_deg_s > 0.0) || !(c.el_rate_deg_s > 0.0))
+    out.push_back("motor rates must be positive (deg/s)");
+  if (!(c.coast_s >= 0.0 && c.coast_s <= 5.0)) out.push_back("coast time " + num(c.coast_s) + " s: expected 0..5");
+  if (!(c.stall_s > 0.0)) out.push_back("stall time " + num(c.stall_s) + " s: expected > 0");
+  if (out.empty()) {
+    AdcModel m(c, station::RotorStart::north);
+    if (m.az_travel_range().empty() || m.el_range().empty())
+      out.push_back("limits, span and skew together leave no position the antenna may be moved to");
+  }
+  return out;
+}
+
+}  // namespace tb::rotator

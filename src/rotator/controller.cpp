@@ -1,0 +1,441 @@
+#include "rotator/controller.h"
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace tb::rotator {
+
+namespace {
+constexpr Axis kAxes[] = {Axis::az, Axis::el};
+
+double seconds(orbit::UtcTime from, orbit::UtcTime to) { return std::chrono::duration<double>(to - from).count(); }
+
+std::chrono::microseconds micros(double s) {
+  return std::chrono::microseconds(static_cast<std::int64_t>(std::llround(s * 1e6)));
+}
+
+const char* axis_name(Axis a) { return a == Axis::az ? "azimuth" : "elevation"; }
+}  // namespace
+
+const char* to_string(ControlMode m) {
+  switch (m) {
+    case ControlMode::idle: return "idle";
+    case ControlMode::target: return "target";
+    case ControlMode::manual: return "manual";
+  }
+  return "idle";
+}
+
+std::string format_monitor_line(int az_counts, double az_deg, int el_counts, double el_deg) {
+  // One decimal, as the manual shows; an azimuth that rounds to 360.0 is shown as 0.0.
+  double az = std::round(az_deg * 10.0) / 10.0;
+  if (az >= 360.0) az -= 360.0;
+  double el = std::round(el_deg * 10.0) / 10.0;
+  if (el == 0.0) el = 0.0;  // no "-0.0"
+  if (az == 0.0) az = 0.0;
+  char buf[80];
+  std::snprintf(buf, sizeof buf, "AZ=%4d / %.1fdeg EL=%4d / %.1fdeg.", az_counts, az, el_counts, el);
+  return buf;
+}
+
+std::string format_monitor_line(const Status& s) {
+  if (!s.has_position) return "AZ=---- / ---.-deg EL=---- / --.-deg.";
+  return format_monitor_line(s.az.counts, s.az.deg, s.el.counts, s.el.deg);
+}
+
+Controller::Controller(const RotatorConfig& config, station::RotorStart start, std::unique_ptr<RotatorDriver> driver,
+                       ControllerOptions options)
+    : model_(config, start), driver_(std::move(driver)), opt_(options) {}
+
+Controller::~Controller() {
+  if (driver_) driver_->stop();
+}
+
+void Controller::set_config(const RotatorConfig& config, station::RotorStart start) {
+  model_ = AdcModel(config, start);
+  if (status_.target) status_.target = model_.clamp(*status_.target);
+  sent_.reset();
+}
+
+double Controller::rate_cps(Axis a) const {
+  const RotatorConfig& c = model_.config();
+  return (a == Axis::az ? c.az_rate_deg_s : c.el_rate_deg_s) * model_.counts_per_deg(a);
+}
+
+void Controller::note(std::string message, bool warn) {
+  if (warn)
+    spdlog::warn("rotator: {}", message);
+  else
+    spdlog::info("rotator: {}", message);
+  status_.message = std::move(message);
+}
+
+RotatorPosition Controller::set_target(AzEl compass) {
+  double current = status_.has_position ? status_.az.travel : (status_.target ? status_.target->az_travel : 0.0);
+  return set_target(model_.target_for(compass, current));
+}
+
+RotatorPosition Controller::set_target(RotatorPosition p) {
+  p = model_.clamp(p);
+  if (status_.mode != ControlMode::target || !status_.target || !(*status_.target == p)) {
+    for (Axis a : kAxes) loop(a).stalled = false;
+  }
+  status_.target = p;
+  status_.mode = ControlMode::target;
+  az_.manual_goal.reset();
+  el_.manual_goal.reset();
+  return p;
+}
+
+bool Controller::park() {
+  if (!model_.config().parking_enabled) return false;
+  set_target(model_.config().parking);
+  return true;
+}
+
+bool Controller::preset(int n) {
+  if (n < 1 || n > static_cast<int>(model_.config().presets.size())) return false;
+  set_target(model_.config().presets[static_cast<std::size_t>(n - 1)]);
+  return true;
+}
+
+void Controller::lines_off() {
+  driver_->stop();
+  for (Axis a : kAxes) loop(a).cmd = Drive::stop;
+  sent_.reset();
+}
+
+void Controller::stop() {
+  lines_off();
+  status_.mode = ControlMode::idle;
+  status_.target.reset();
+  status_.on_target = false;
+  for (Axis a : kAxes) {
+    loop(a).manual_goal.reset();
+    loop(a).stalled = false;
+    axis_status(a).goal_counts.reset();
+    axis_status(a).motion = Drive::stop;
+  }
+}
+
+void Controller::manual(Axis a, Drive d) {
+  AxisLoop& l = loop(a);
+  if (status_.mode != ControlMode::manual) {
+    // Leaving target mode: nothing else keeps moving.
+    status_.target.reset();
+    az_.manual_goal.reset();
+    el_.manual_goal.reset();
+    status_.mode = ControlMode::manual;
+  }
+  l.stalled = false;
+  if (d == Drive::stop) {
+    l.manual_goal.reset();
+    if (AdcRotator* adc = driver_->as_adc()) {
+      adc->drive(a, Drive::stop, {});
+      l.cmd = Drive::stop;
+    } else {
+      lines_off();  // a degree rotator stops both axes; the other is sent again on the next tick
+    }
+    if (!az_.manual_goal && !el_.manual_goal) status_.mode = ControlMode::idle;
+    return;
+  }
+  // The goal is the end of travel that way; tick() recomputes it from the range each time.
+  l.manual_goal = static_cast<double>(sign(d));
+}
+
+bool Controller::manual_key(char key) {
+  switch (static_cast<ManualKey>(key)) {
+    case ManualKey::left: manual(Axis::az, Drive::decrease); return true;
+    case ManualKey::right: manual(Axis::az, Drive::increase); return true;
+    case ManualKey::up: manual(Axis::el, Drive::increase); return true;
+    case ManualKey::down: manual(Axis::el, Drive::decrease); return true;
+    case ManualKey::stop: stop(); return true;
+  }
+  return false;
+}
+
+void Controller::set_control_enabled(bool on) {
+  status_.control_enabled = on;
+  if (!on) lines_off();
+}
+
+std::optional<double> Controller::goal_counts(Axis a) const {
+  const AxisLoop& l = a == Axis::az ? az_ : el_;
+  if (status_.mode == ControlMode::target && status_.target) return model_.target_counts(a, *status_.target);
+  if (status_.mode == ControlMode::manual && l.manual_goal) {
+    Range r = model_.counts_range(a);
+    if (r.empty()) return std::nullopt;
+    return *l.manual_goal > 0 ? std::floor(r.hi) : std::ceil(r.lo);
+  }
+  return std::nullopt;
+}
+
+void Controller::advance_model(orbit::UtcTime now) {
+  const double tau = model_.config().coast_s;
+  for (Axis a : kAxes) {
+    AxisLoop& l = loop(a);
+    const double v_cmd = sign(l.cmd) * rate_cps(a);
+    double from_s = 0.0;
+    const double total = seconds(*last_tick_, now);
+    if (l.cmd != Drive::stop && l.cmd_until <= now) {
+      double on = std::clamp(seconds(*last_tick_, l.cmd_until), 0.0, total);
+      l.velocity = motor_advance({0.0, l.velocity}, v_cmd, tau, on).v;
+      from_s = on;
+      l.cmd = Drive::stop;
+    }
+    l.velocity = motor_advance({0.0, l.velocity}, sign(l.cmd) * rate_cps(a), tau, total - from_s).v;
+  }
+}
+
+void Controller::update_limits(Axis a, double corrected, const LimitFlags& reported) {
+  AxisStatus& s = axis_status(a);
+  Range r = model_.counts_range(a);
+  // At a limit: within the dead band of it (where an axis sent to the limit settles).
+  const double band = model_.dead_band(a) + 0.5;
+  s.at_low_limit = reported[a].low || (!r.empty() && corrected <= r.lo + band);
+  s.at_high_limit = reported[a].high || (!r.empty() && corrected >= r.hi - band);
+}
+
+void Controller::tick(orbit::UtcTime now) {
+  double dt = 0.0;
+  bool driven_full[2] = {false, false};
+  if (last_tick_) {
+    if (now < *last_tick_) {
+      // The clock stepped back (menu 5): no time passed; keep the drive deadlines relative.
+      auto back = *last_tick_ - now;
+      for (Axis a : kAxes) loop(a).cmd_until -= back;
+      last_tick_ = now;
+    }
+    dt = seconds(*last_tick_, now);
+    for (Axis a : kAxes) driven_full[a == Axis::az ? 0 : 1] = loop(a).cmd != Drive::stop && loop(a).cmd_until >= now;
+    advance_model(now);
+  }
+  last_tick_ = now;
+
+  Health h = driver_->health();
+  status_.link = h;
+  if (h.state != last_link_) {
+    if (h.state == LinkState::fault)
+      note("rotator fault: " + h.message + " (motors stopped)", true);
+    else if (h.state == LinkState::ok)
+      note("rotator link restored (" + driver_->description() + ")", false);
+    last_link_ = h.state;
+  }
+  if (!h.ok()) {
+    lines_off();
+    status_.has_position = false;
+    status_.on_target = false;
+    for (Axis a : kAxes) axis_status(a).motion = Drive::stop;
+    return;
+  }
+  if (AdcRotator* adc = driver_->as_adc()) {
+    for (Axis a : kAxes) {
+      AxisLoop& l = loop(a);
+      if (!driven_full[a == Axis::az ? 0 : 1]) l.driven_still_s = 0.0;
+    }
+    tick_adc(*adc, now, dt);
+  } else if (DegreeRotator* dr = driver_->as_degrees()) {
+    tick_degrees(*dr, now);
+  }
+  // On target: pointing, both axes inside the dead band and still.
+  status_.on_target = status_.mode == ControlMode::target && status_.has_position;
+  for (Axis a : kAxes) {
+    const AxisStatus& s = axis_status(a);
+    const double corr = loop(a).last_reading;
+    if (!s.goal_counts || std::abs(*s.goal_counts - corr) > model_.dead_band(a) || s.motion != Drive::stop)
+      status_.on_target = false;
+  }
+}
+
+void Controller::tick_adc(AdcRotator& adc, orbit::UtcTime now, double dt) {
+  std::optional<Counts> r = adc.read();
+  if (!r) {
+    lines_off();
+    status_.has_position = false;
+    if (status_.message != "ADC not answering") note("ADC not answering", true);
+    return;
+  }
+  raw_ = *r;
+  status_.has_position = true;
+  const LimitFlags reported = adc.limits();
+  const RotatorConfig& c = model_.config();
+  for (Axis a : kAxes) {
+    AxisLoop& l = loop(a);
+    AxisStatus& s = axis_status(a);
+    const int raw = a == Axis::az ? r->az : r->el;
+    const double corr = model_.corrected(a, raw);
+    s.counts = raw;
+    s.travel = a == Axis::az ? model_.az_travel_from_counts(corr) : model_.el_from_counts(corr);
+    s.deg = a == Axis::az ? model_.compass_from_travel(s.travel) : s.travel;
+    update_limits(a, corr, reported);
+
+    // Stall watch: driven for the whole interval and the reading did not change.
+    if (std::abs(corr - l.last_reading) >= 1.0)
+      l.driven_still_s = 0.0;
+    else if (l.cmd != Drive::stop)
+      l.driven_still_s += dt;
+    l.last_reading = corr;
+
+    s.goal_counts.reset();
+    if (auto g = goal_counts(a)) s.goal_counts = static_cast<int>(std::lround(*g));
+    if (!status_.control_enabled) continue;
+
+    AxisCommand cmd;
+    if (s.goal_counts && !l.stalled) {
+      AxisLoopInput in;
+      in.reading = corr;
+      in.target = *s.goal_counts;
+      in.dead_band = model_.dead_band(a);
+      in.range = model_.counts_range(a);
+      in.driving = l.cmd;
+      in.velocity = l.velocity;
+      in.rate = rate_cps(a);
+      in.coast_s = c.coast_s;
+      cmd = decide(in);
+    }
+    if (cmd.drive != Drive::stop && l.cmd != Drive::stop && l.driven_still_s >= c.stall_s &&
+        rate_cps(a) * c.stall_s >= 3.0) {
+      l.stalled = true;
+      cmd = {};
+      note(std::string(axis_name(a)) + " stalled at " + std::to_string(raw) + " counts: driven " +
+               std::to_string(static_cast<int>(c.stall_s)) + " s without moving, drive stopped",
+           true);
+    }
+    if (cmd.drive == Drive::stop) {
+      if (l.cmd != Drive::stop) adc.drive(a, Drive::stop, {});
+      l.cmd = Drive::stop;
+    } else {
+      const double max_s = std::chrono::duration<double>(opt_.watchdog).count();
+      const double run = std::clamp(cmd.run_for_s, 1e-6, max_s);
+      adc.drive(a, cmd.drive, micros(run));
+      l.cmd = cmd.drive;
+      l.cmd_until = now + micros(run);
+    }
+  }
+  for (Axis a : kAxes) {
+    axis_status(a).motion = loop(a).cmd;
+    axis_status(a).stalled = loop(a).stalled;
+  }
+  if (!status_.control_enabled) lines_off();
+}
+
+void Controller::tick_degrees(DegreeRotator& dr, orbit::UtcTime now) {
+  std::optional<AzEl> p = dr.read();
+  if (!p) {
+    status_.has_position = false;
+    return;
+  }
+  const RotatorConfig& c = model_.config();
+  // The rotator's azimuth as travel from the stop (its own, skew not applied), unwrapped into
+  // 0..az_travel_deg nearest the last reading.
+  const double base = p->az - model_.start_deg();
+  const double last = travel_raw_;
+  double travel_raw = base;
+  bool found = false;
+  for (int n = -3; n <= 3; ++n) {
+    double t = base + 360.0 * n;
+    if (t < -0.5 || t > c.az_travel_deg + 0.5) continue;
+    if (!found || std::abs(t - last) < std::abs(travel_raw - last)) travel_raw = t;
+    found = true;
+  }
+  travel_raw_ = travel_raw;
+  const double raw_c[2] = {model_.counts_from_az_travel(travel_raw), model_.counts_from_el(p->el)};
+  double corr[2];
+  const AxisMotion motion = dr.motion();
+  const LimitFlags reported = dr.limits();
+  status_.has_position = true;
+  for (Axis a : kAxes) {
+    const int i = a == Axis::az ? 0 : 1;
+    AxisStatus& s = axis_status(a);
+    corr[i] = model_.corrected(a, raw_c[i]);
+    loop(a).last_reading = corr[i];
+    s.counts = static_cast<int>(std::lround(raw_c[i]));
+    s.travel = a == Axis::az ? model_.az_travel_from_counts(corr[i]) : model_.el_from_counts(corr[i]);
+    s.deg = a == Axis::az ? model_.compass_from_travel(s.travel) : s.travel;
+    s.motion = motion[a];
+    s.stalled = false;
+    update_limits(a, corr[i], reported);
+    s.goal_counts.reset();
+    if (auto g = goal_counts(a)) s.goal_counts = static_cast<int>(std::lround(*g));
+  }
+  if (!status_.control_enabled || (!status_.az.goal_counts && !status_.el.goal_counts)) return;
+
+  // Each axis outside its dead band goes to its goal; one inside holds where it is.
+  bool outside = false;
+  double want_raw[2];
+  for (Axis a : kAxes) {
+    const int i = a == Axis::az ? 0 : 1;
+    const AxisStatus& s = axis_status(a);
+    want_raw[i] = raw_c[i];
+    if (s.goal_counts && std::abs(*s.goal_counts - corr[i]) > model_.dead_band(a)) {
+      want_raw[i] = model_.raw(a, *s.goal_counts);
+      outside = true;
+    }
+  }
+  if (!outside) return;
+  const double want_travel = model_.az_travel_from_counts(want_raw[0]);
+  AzEl cmd{model_.start_deg() + want_travel, model_.el_from_counts(want_raw[1])};
+  // Into the rotator's own azimuth convention (e.g. -180..180 or 0..450).
+  Range ar = dr.az_range();
+  if (!ar.empty() && !ar.contains(cmd.az)) {
+    double best = cmd.az;
+    bool ok = false;
+    for (int n = -3; n <= 3; ++n) {
+      double v = cmd.az + 360.0 * n;
+      if (!ar.contains(v)) continue;
+      if (!ok || std::abs(v - cmd.az) < std::abs(best - cmd.az)) best = v;
+      ok = true;
+    }
+    cmd.az = ok ? best : ar.clamp(cmd.az);
+  }
+  const double half_az = 0.5 * model_.deg_per_count(Axis::az), half_el = 0.5 * model_.deg_per_count(Axis::el);
+  const bool changed = !sent_ || std::abs(cmd.az - sent_->az) > half_az || std::abs(cmd.el - sent_->el) > half_el;
+  const bool idle = motion.az == Drive::stop && motion.el == Drive::stop;
+  if (changed || (idle && now - sent_at_ >= opt_.resend)) {
+    dr.set_position(cmd);
+    sent_ = cmd;
+    sent_at_ = now;
+  }
+}
+
+std::chrono::milliseconds Controller::next_tick_in() const {
+  bool busy = status_.az.motion != Drive::stop || status_.el.motion != Drive::stop ||
+              (status_.mode == ControlMode::target && !status_.on_target) || status_.mode == ControlMode::manual;
+  return busy ? std::chrono::milliseconds(100) : std::chrono::milliseconds(1000);
+}
+
+SpanCalibration::Result SpanCalibration::result() const {
+  Result r;
+  if (!min_ || !max_) {
+    r.error = !min_ ? "the CCW/minimum position has not been recorded" : "the CW/maximum position has not been recorded";
+    return r;
+  }
+  AxisSpan az{min_->az, max_->az}, el{min_->el, max_->el};
+  RotatorConfig probe;
+  probe.az_span = az;
+  probe.el_span = el;
+  std::string err;
+  for (const std::string& e : validate(probe))
+    if (e.find("ADC span") != std::string::npos) err += (err.empty() ? "" : "; ") + e;
+  if (!err.empty()) {
+    r.error = err;
+    return r;
+  }
+  r.az = az;
+  r.el = el;
+  return r;
+}
+
+RotatorConfig SpanCalibration::apply(RotatorConfig c) const {
+  Result r = result();
+  if (r.ok()) {
+    c.az_span = *r.az;
+    c.el_span = *r.el;
+  }
+  return c;
+}
+
+}  // namespace tb::rotator

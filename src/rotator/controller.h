@@ -1,0 +1,174 @@
+// The rotator controller: owns the ADC model and a driver, and makes the per-tick control decision.
+// The tracker, the menus and host mode call it; nothing else moves the antenna.
+//
+//   Controller rot(config, station.rotor_start, make_rotator(spec, clock));
+//   rot.set_target({az, el});        // every second while tracking
+//   rot.tick(clock.now());           // from the event loop, once a second or faster
+//   menu 6-5: format_monitor_line(rot.status())  ->  "AZ= 519 / 32.8deg EL= 462 / 90.0deg."
+//
+// Nothing here blocks: drivers that talk to slow devices do that on their own threads.
+// Everything moves only in tick(); stop() and disabling control switch the motors off at once.
+#pragma once
+#include <chrono>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "orbit/time.h"
+#include "rotator/adc_model.h"
+#include "rotator/config.h"
+#include "rotator/driver.h"
+#include "station/station.h"
+
+namespace tb::rotator {
+
+enum class ControlMode {
+  idle,    // holding still
+  target,  // pointing at a target (tracking, park, preset, 6-6-2)
+  manual,  // keyboard control (6-6-1)
+};
+const char* to_string(ControlMode m);
+
+struct AxisStatus {
+  int counts = 0;        // raw ADC counts (degree rotators: their position through the span)
+  double deg = 0.0;      // skew applied; azimuth as a compass bearing [0, 360), elevation degrees
+  double travel = 0.0;   // azimuth: degrees from the rotor stop; elevation: same as deg
+  Drive motion = Drive::stop;
+  bool at_low_limit = false;   // at the CCW / DOWN end of where it may go (limits, span, switches)
+  bool at_high_limit = false;  // at the CW / UP end
+  bool stalled = false;        // driven without moving for stall_s: stopped, waits for a new command
+  std::optional<int> goal_counts;  // corrected counts the axis is being brought to
+};
+
+struct Status {
+  bool has_position = false;  // the axis fields below are valid
+  AxisStatus az, el;
+  Health link;                // the driver's connection/fault state
+  bool control_enabled = true;
+  ControlMode mode = ControlMode::idle;
+  std::optional<RotatorPosition> target;  // clamped target, rotator coordinates
+  bool on_target = false;     // mode target, both axes inside the dead band and not moving
+  std::string message;        // the latest thing the operator should know ("" when nothing)
+};
+
+// The monitor line of menus 6-5 and 6-6: "AZ= 519 / 32.8deg EL= 462 / 90.0deg."
+std::string format_monitor_line(int az_counts, double az_deg, int el_counts, double el_deg);
+// The same from a status; "AZ=---- / ---.-deg EL=---- / --.-deg." when there is no position.
+std::string format_monitor_line(const Status& s);
+
+// Keys of menu 6-6-1: Left(4), Right(6), Up(8), Dwn(2), Stop(5).
+enum class ManualKey : char { left = '4', right = '6', up = '8', down = '2', stop = '5' };
+
+struct ControllerOptions {
+  // Longest a drive line stays on without a tick renewing it (a watchdog: if the event loop stalls
+  // the motors stop). Must exceed the tick interval.
+  std::chrono::milliseconds watchdog{2500};
+  // Degree rotators: an unchanged target is sent again this often while the rotator sits idle
+  // outside the dead band (a command lost on the way).
+  std::chrono::milliseconds resend{2000};
+};
+
+class Controller {
+ public:
+  Controller(const RotatorConfig& config, station::RotorStart start, std::unique_ptr<RotatorDriver> driver,
+             ControllerOptions options = {});
+  ~Controller();
+  Controller(const Controller&) = delete;
+  Controller& operator=(const Controller&) = delete;
+
+  // Menus 4, 6-1..6-4 and 6-9 change these; the current target is kept and clamped again.
+  void set_config(const RotatorConfig& config, station::RotorStart start);
+  const RotatorConfig& config() const { return model_.config(); }
+  const AdcModel& model() const { return model_; }
+  RotatorDriver& driver() { return *driver_; }
+
+  // Point at a compass az/el (degrees), clamped to the limits. Where the azimuth can be reached two
+  // ways, the way nearest the antenna. Returns the target as it will be commanded.
+  RotatorPosition set_target(AzEl compass);
+  // Point at a position in rotator coordinates (what a PassPlan maps targets to), clamped.
+  RotatorPosition set_target(RotatorPosition p);
+  // To the parking position; false (and nothing changes) when parking is disabled.
+  bool park();
+  // To preset 1..5 (menu 6-6-3); false for another number.
+  bool preset(int n);
+  // Abort: motors off now, target and manual motion dropped.
+  void stop();
+  // Keyboard control (6-6-1): drive an axis towards its end of travel until stopped; Drive::stop
+  // stops that axis.
+  void manual(Axis axis, Drive d);
+  // 4/6/8/2/5 as in the manual; false for any other key.
+  bool manual_key(char key);
+
+  // The E key: when off nothing moves (tracking, park, presets and keyboard control alike); the
+  // target is kept and resumed when control is switched on again.
+  void set_control_enabled(bool on);
+  bool control_enabled() const { return status_.control_enabled; }
+  void toggle_control() { set_control_enabled(!control_enabled()); }
+
+  // The control step. Call from the event loop once a second or faster; `now` only moves forward
+  // (a step back counts as no time passed).
+  void tick(orbit::UtcTime now);
+  // How soon the next tick would help: 100 ms while anything moves or is off target, else 1 s.
+  std::chrono::milliseconds next_tick_in() const;
+
+  const Status& status() const { return status_; }
+  // The latest raw counts (menu 6-1 calibration records these), nothing before the first reading.
+  std::optional<Counts> raw_counts() const { return raw_; }
+
+ private:
+  struct AxisLoop {
+    std::optional<double> manual_goal;  // counts: the range end the axis is being driven to
+    Drive cmd = Drive::stop;            // the drive in force (ADC rotators)
+    orbit::UtcTime cmd_until{};
+    double velocity = 0.0;              // modelled, counts/s
+    double last_reading = 0.0;
+    double driven_still_s = 0.0;        // driven without the reading changing
+    bool stalled = false;
+  };
+  AxisLoop& loop(Axis a) { return a == Axis::az ? az_ : el_; }
+  AxisStatus& axis_status(Axis a) { return a == Axis::az ? status_.az : status_.el; }
+  double rate_cps(Axis a) const;
+  void advance_model(orbit::UtcTime now);
+  void lines_off();
+  void note(std::string message, bool warn);
+  std::optional<double> goal_counts(Axis a) const;
+  void tick_adc(AdcRotator& adc, orbit::UtcTime now, double dt);
+  void tick_degrees(DegreeRotator& dr, orbit::UtcTime now);
+  void update_limits(Axis a, double corrected, const LimitFlags& reported);
+
+  AdcModel model_;
+  std::unique_ptr<RotatorDriver> driver_;
+  ControllerOptions opt_;
+  Status status_;
+  AxisLoop az_, el_;
+  std::optional<Counts> raw_;
+  std::optional<orbit::UtcTime> last_tick_;
+  LinkState last_link_ = LinkState::ok;
+  // Degree rotators: what was last sent, and when.
+  std::optional<AzEl> sent_;
+  double travel_raw_ = 0.0;  // the rotator's last azimuth as travel from the stop, skew not applied
+  orbit::UtcTime sent_at_{};
+};
+
+// Menu 6-1: record the raw counts with the antenna fully CCW at the horizon, then fully CW and
+// straight up; the result is the new ADC span.
+class SpanCalibration {
+ public:
+  void record_min(Counts raw) { min_ = raw; }
+  void record_max(Counts raw) { max_ = raw; }
+  bool complete() const { return min_ && max_; }
+  // The spans, or an error saying what is wrong (a point missing, the readings not rising).
+  struct Result {
+    std::optional<AxisSpan> az, el;
+    std::string error;
+    bool ok() const { return error.empty(); }
+  };
+  Result result() const;
+  // c with the measured spans, when result() is ok; c unchanged otherwise.
+  RotatorConfig apply(RotatorConfig c) const;
+
+ private:
+  std::optional<Counts> min_, max_;
+};
+
+}  // namespace tb::rotator

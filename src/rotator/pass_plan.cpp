@@ -1,0 +1,153 @@
+#include "rotator/pass_plan.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+namespace tb::rotator {
+
+namespace {
+constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr double kTie = 1e-6;
+
+// Signed step from a to b, (-180, 180].
+double step(double a, double b) {
+  double d = wrap360(b - a);
+  return d > 180.0 ? d - 360.0 : d;
+}
+
+// Where a rotator position points, as compass az/el.
+AzEl pointing(const PassGeometry& g, const RotatorPosition& p) {
+  double az = p.az_travel + rotor_start_deg(g.start);
+  double el = p.el;
+  if (el > 90.0) {  // over the top
+    el = 180.0 - el;
+    az += 180.0;
+  }
+  return {wrap360(az), el};
+}
+
+struct Candidate {
+  PassPlan plan;
+  double cost = 0.0;
+  double margin = 0.0;
+};
+}  // namespace
+
+PassGeometry PassGeometry::from(const AdcModel& m) {
+  PassGeometry g;
+  g.start = m.rotor_start();
+  g.az_travel = m.az_travel_range();
+  g.el = m.el_range();
+  g.flip_allowed = m.config().el_flip_allowed && g.el.hi > 90.0;
+  return g;
+}
+
+double pointing_error_deg(double az1, double el1, double az2, double el2) {
+  // atan2(|a x b|, a . b): accurate for small angles too.
+  auto unit = [](double az, double el) {
+    return std::array<double, 3>{std::cos(el * kDeg) * std::sin(az * kDeg), std::cos(el * kDeg) * std::cos(az * kDeg),
+                                 std::sin(el * kDeg)};
+  };
+  const auto a = unit(az1, el1), b = unit(az2, el2);
+  const double cx = a[1] * b[2] - a[2] * b[1], cy = a[2] * b[0] - a[0] * b[2], cz = a[0] * b[1] - a[1] * b[0];
+  const double dot = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  return std::atan2(std::sqrt(cx * cx + cy * cy + cz * cz), dot) / kDeg;
+}
+
+RotatorPosition PassPlan::map(double az_deg, double el_deg) const {
+  double az = flip ? az_deg + 180.0 : az_deg;
+  double el = flip ? 180.0 - el_deg : el_deg;
+  double t = wrap360(az - rotor_start_deg(geometry.start));
+  // Into the window [center - 180, center + 180).
+  t += 360.0 * std::floor((window_center + 180.0 - t) / 360.0);
+  if (t >= window_center + 180.0) t -= 360.0;
+  RotatorPosition p{t, el};
+  if (!geometry.az_travel.empty()) p.az_travel = geometry.az_travel.clamp(p.az_travel);
+  if (!geometry.el.empty()) p.el = geometry.el.clamp(p.el);
+  return p;
+}
+
+PassPlan plan_pass(std::span<const TrackPoint> track, const PassGeometry& g, std::optional<double> current_travel) {
+  PassPlan plain;
+  plain.geometry = g;
+  plain.window_center = g.az_travel.empty() ? 180.0 : 0.5 * (g.az_travel.lo + g.az_travel.hi);
+  if (track.empty()) {
+    plain.aos = plain.map(0.0, 0.0);
+    return plain;
+  }
+
+  std::optional<Candidate> best;
+  for (bool flip : {false, true}) {
+    if (flip && !g.flip_allowed) continue;
+    // The pass as one continuous azimuth path in travel degrees.
+    std::vector<double> u(track.size());
+    const double start = rotor_start_deg(g.start);
+    double prev_az = flip ? track[0].az_deg + 180.0 : track[0].az_deg;
+    u[0] = wrap360(prev_az - start);
+    for (std::size_t i = 1; i < track.size(); ++i) {
+      double az = flip ? track[i].az_deg + 180.0 : track[i].az_deg;
+      u[i] = u[i - 1] + step(prev_az, az);
+      prev_az = az;
+    }
+    const auto [lo_it, hi_it] = std::minmax_element(u.begin(), u.end());
+    const double mid = 0.5 * (*lo_it + *hi_it);
+    // Every whole-turn shift of the path that overlaps the travel (and one either side).
+    const int k0 = static_cast<int>(std::floor((g.az_travel.lo - *hi_it) / 360.0)) - 1;
+    const int k1 = static_cast<int>(std::ceil((g.az_travel.hi - *lo_it) / 360.0)) + 1;
+    for (int k = k0; k <= k1; ++k) {
+      Candidate c;
+      c.plan = plain;
+      c.plan.flip = flip;
+      c.plan.window_center = mid + 360.0 * k;
+      double sum = 0.0, worst = 0.0;
+      bool held = false;
+      double pmin = 1e300, pmax = -1e300;
+      for (std::size_t i = 0; i < track.size(); ++i) {
+        RotatorPosition p = c.plan.map(track[i].az_deg, track[i].el_deg);
+        const double lifted = u[i] + 360.0 * k;
+        if (std::abs(p.az_travel - lifted) > 1e-9) held = true;
+        pmin = std::min(pmin, p.az_travel);
+        pmax = std::max(pmax, p.az_travel);
+        AzEl at = pointing(g, p);
+        double err = pointing_error_deg(track[i].az_deg, std::max(track[i].el_deg, 0.0), at.az, at.el);
+        sum += err;
+        worst = std::max(worst, err);
+      }
+      c.plan.held_at_stop = held;
+      c.plan.max_error_deg = worst;
+      c.plan.mean_error_deg = sum / static_cast<double>(track.size());
+      c.plan.aos = c.plan.map(track[0].az_deg, track[0].el_deg);
+      c.cost = c.plan.mean_error_deg;
+      c.margin = std::min(pmin - g.az_travel.lo, g.az_travel.hi - pmax);
+      if (!best) {
+        best = c;
+        continue;
+      }
+      const double d = c.cost - best->cost;
+      bool better = d < -kTie;
+      if (std::abs(d) <= kTie) {
+        if (c.plan.flip != best->plan.flip) {
+          better = !c.plan.flip;  // flip only when it helps
+        } else if (current_travel) {
+          better = std::abs(c.plan.aos.az_travel - *current_travel) <
+                   std::abs(best->plan.aos.az_travel - *current_travel) - kTie;
+        } else {
+          better = c.margin > best->margin + kTie;
+        }
+      }
+      if (better) best = c;
+    }
+  }
+  return best->plan;
+}
+
+double slew_seconds(const RotatorPosition& from, const RotatorPosition& to, const RotatorConfig& c) {
+  const double az = std::abs(to.az_travel - from.az_travel) / c.az_rate_deg_s;
+  const double el = std::abs(to.el - from.el) / c.el_rate_deg_s;
+  return std::max(az, el) + c.coast_s;
+}
+
+}  // namespace tb::rotator

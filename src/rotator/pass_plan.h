@@ -1,0 +1,65 @@
+// Pass planning against the rotor stop. Before AOS the tracker hands over the whole pass as sampled
+// az/el; the planner chooses how the rotator follows it so the antenna never swings through the
+// stop mid-pass:
+//   * which way round: the azimuth travel (0..360 from the stop, or 0..450 on an overlap rotator)
+//     the whole pass is followed in;
+//   * the elevation flip (el' = 180 - el, az' = az + 180, over the top) when the pass would
+//     otherwise cross the stop and the rotator may flip;
+//   * failing both, the antenna waits at the end of travel for the part of the pass beyond it
+//     (held_at_stop) rather than swinging round through 360 degrees while the satellite is up.
+// Pure: values in, values out.
+//
+//   PassPlan plan = plan_pass(track, PassGeometry::from(rot.model()), rot.status().az.travel);
+//   rot.set_target(plan.aos);                       // ahead of AOS
+//   rot.set_target(plan.map(look.az_deg, look.el_deg));  // every target during the pass
+#pragma once
+#include <optional>
+#include <span>
+
+#include "orbit/time.h"
+#include "rotator/adc_model.h"
+
+namespace tb::rotator {
+
+struct TrackPoint {
+  orbit::UtcTime time{};
+  double az_deg = 0.0;  // compass
+  double el_deg = 0.0;
+};
+
+// What the planner needs to know of the rotator.
+struct PassGeometry {
+  station::RotorStart start = station::RotorStart::north;
+  Range az_travel{0.0, 360.0};  // where the azimuth may go, degrees of travel from the stop
+  Range el{0.0, 90.0};          // where the elevation may go (to 180 on a flip rotator)
+  bool flip_allowed = false;
+  // The rotator as the controller's model sees it: limits, span, skew, flip.
+  static PassGeometry from(const AdcModel& m);
+};
+
+struct PassPlan {
+  PassGeometry geometry;
+  bool flip = false;            // follow the pass over the top
+  double window_center = 0.0;   // travel: each azimuth is taken within +-180 of this
+  RotatorPosition aos;          // where to be at AOS
+  bool held_at_stop = false;    // part of the pass lies beyond the travel: the antenna waits there
+  double max_error_deg = 0.0;   // largest pointing error over the samples (0 when it all fits)
+  double mean_error_deg = 0.0;
+
+  // A target during the pass, in rotator coordinates for Controller::set_target.
+  RotatorPosition map(double az_deg, double el_deg) const;
+};
+
+// Plans a pass sampled at even steps (AOS first). current_travel, when given, breaks ties between
+// equally good ways round (the one with the shorter slew to AOS wins); otherwise the way that keeps
+// furthest from the ends of travel does. An empty track gives the plain mapping.
+PassPlan plan_pass(std::span<const TrackPoint> track, const PassGeometry& g,
+                   std::optional<double> current_travel = std::nullopt);
+
+// Seconds to slew between two rotator positions at the configured motor rates (axes move together).
+double slew_seconds(const RotatorPosition& from, const RotatorPosition& to, const RotatorConfig& c);
+
+// Angle between two pointing directions (compass az, el), degrees.
+double pointing_error_deg(double az1, double el1, double az2, double el2);
+
+}  // namespace tb::rotator

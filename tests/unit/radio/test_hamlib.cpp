@@ -1,0 +1,140 @@
+// HamlibRadio against real Hamlib peers: rigctld -m 1 (the dummy rig) on a free loopback port,
+// driven through the NET rigctl backend; read back with rigctl -m 2 and rigctld's own protocol.
+// Killing and restarting the daemon exercises the fault report and the reconnect.
+#include <doctest/doctest.h>
+
+#include "radio/factory.h"
+#include "radio/hamlib_radio.h"
+#include "support.h"
+
+using namespace tb::radio;
+using namespace std::chrono_literals;
+using tbtest::eventually;
+
+namespace {
+
+bool have_hamlib_utils() {
+  if (tbtest::which("rigctld") && tbtest::which("rigctl")) return true;
+  MESSAGE("rigctld/rigctl not installed (libhamlib-utils): Hamlib peer tests skipped");
+  return false;
+}
+
+std::unique_ptr<tbtest::Child> start_rigctld(int port) {
+  auto child = std::make_unique<tbtest::Child>(
+      std::vector<std::string>{*tbtest::which("rigctld"), "-m", "1", "-T", "127.0.0.1", "-t",
+                               std::to_string(port)},
+      false);
+  if (!child->started() || !eventually([&] { return tbtest::tcp_connectable(port); }, 5000ms))
+    return nullptr;
+  return child;
+}
+
+std::string trim(std::string s) {
+  while (!s.empty() && (s.back() == '\n' || s.back() == '\r' || s.back() == ' ')) s.pop_back();
+  return s;
+}
+
+// The main (RX) VFO as Hamlib's own client reads it.
+std::string rigctl_f(int port) {
+  return trim(tbtest::run_capture("timeout 10 rigctl -m 2 -r 127.0.0.1:" + std::to_string(port) +
+                                  " f 2>/dev/null"));
+}
+
+// The split TX frequency and the mode, straight from rigctld's protocol ("i", "m").
+std::string rigctld_query(int port, const std::string& cmd, int lines) {
+  return trim(tbtest::tcp_exchange(port, cmd + "\n", lines));
+}
+
+}  // namespace
+
+TEST_CASE("Hamlib: tune a rigctld dummy, read back, survive a daemon restart") {
+  if (!have_hamlib_utils()) return;
+  const int port = tbtest::free_tcp_port();
+  REQUIRE(port > 0);
+  auto daemon = start_rigctld(port);
+  REQUIRE(daemon);
+
+  RadioConfig cfg;
+  DriverTiming timing;
+  timing.worker = {50ms, 200ms};
+  auto made = make_radio("rigctld:127.0.0.1:" + std::to_string(port), cfg, timing);
+  REQUIRE(made.driver);
+  auto& radio = *made.driver;
+
+  radio.set_downlink_mode(Mode::usb);
+  radio.set_downlink_frequency(435'123'450);
+  radio.set_uplink_mode(Mode::lsb);
+  radio.set_uplink_frequency(145'950'000);
+  REQUIRE(radio.wait_idle(10'000ms));
+  auto st = radio.status();
+  CHECK_FALSE(st.fault);
+  CHECK(st.message == "");
+  CHECK(st.connected);
+  CHECK(st.downlink_hz == 435'123'450);
+  CHECK(st.uplink_hz == 145'950'000);
+
+  CHECK(rigctl_f(port) == "435123450");
+  CHECK(rigctld_query(port, "i", 1) == "145950000");   // split TX on VFO B
+  CHECK(rigctld_query(port, "s", 2) == "1\nVFOB");
+  CHECK(rigctld_query(port, "m", 2).rfind("USB\n", 0) == 0);
+
+  // A sequence, as the tracker sends it.
+  for (Hz hz : {435'123'440, 435'123'430, 435'123'420}) {
+    radio.set_downlink_frequency(hz);
+    REQUIRE(radio.wait_idle(10'000ms));
+    CHECK(rigctl_f(port) == std::to_string(hz));
+  }
+
+  // The daemon dies: the next command fails, the fault is reported.
+  daemon->stop();
+  radio.set_downlink_frequency(435'200'000);
+  REQUIRE(eventually([&] { return radio.status().fault; }, 10'000ms));
+  st = radio.status();
+  CHECK_FALSE(st.message.empty());
+  CHECK(st.message.find("set frequency failed") != std::string::npos);
+  CHECK(st.pending >= 1);
+  CHECK(st.downlink_hz == 435'123'420);   // the last one the radio took
+
+  // It comes back (a fresh dummy, on its defaults): reconnect, then the pending downlink and the
+  // remembered uplink and modes are sent again.
+  daemon = start_rigctld(port);
+  REQUIRE(daemon);
+  REQUIRE(eventually([&] { return !radio.status().fault && radio.status().pending == 0; }, 15'000ms));
+  st = radio.status();
+  CHECK(st.connects >= 2);
+  CHECK(st.downlink_hz == 435'200'000);
+  CHECK(rigctl_f(port) == "435200000");
+  CHECK(rigctld_query(port, "i", 1) == "145950000");
+  made.driver.reset();
+}
+
+TEST_CASE("Hamlib: the dummy backend directly, Main/Sub chosen automatically") {
+  HamlibLink link({1, "", 0, HamlibVfoScheme::automatic});
+  link.open();
+  CHECK(link.scheme() == HamlibVfoScheme::main_sub);
+  link.set_frequency(Link::downlink, 435'000'000);
+  link.set_frequency(Link::uplink, 145'900'000);
+  link.set_mode(Link::downlink, Mode::fm);
+  link.close();
+  HamlibLink split({1, "", 0, HamlibVfoScheme::split});
+  split.open();
+  CHECK(split.scheme() == HamlibVfoScheme::split);
+  split.set_frequency(Link::uplink, 145'900'000);
+  split.set_mode(Link::uplink, Mode::usb);
+  split.close();
+  CHECK(hamlib_model_name(1).find("Dummy") != std::string::npos);
+}
+
+TEST_CASE("Hamlib: nothing listening is a fault with Hamlib's reason, retried with backoff") {
+  const int port = tbtest::free_tcp_port();
+  DriverTiming timing;
+  timing.worker = {50ms, 100ms};
+  auto made = make_radio("rigctld:127.0.0.1:" + std::to_string(port), {}, timing);
+  REQUIRE(made.driver);
+  made.driver->set_downlink_frequency(435'000'000);
+  REQUIRE(eventually([&] { return made.driver->status().failures >= 2; }, 10'000ms));
+  const auto st = made.driver->status();
+  CHECK(st.fault);
+  CHECK(st.message.find("cannot open") != std::string::npos);
+  CHECK_FALSE(st.connected);
+}

@@ -1,0 +1,225 @@
+// Pass planning against the rotor stop: which way round, the elevation flip, holding at the stop.
+#include <doctest/doctest.h>
+#include <spdlog/spdlog.h>
+
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <vector>
+
+#include "rotator/controller.h"
+#include "rotator/pass_plan.h"
+#include "rotator/simulated.h"
+
+using namespace tb::rotator;
+using namespace std::chrono_literals;
+using tb::orbit::from_civil;
+using tb::station::ManualClock;
+using tb::station::RotorStart;
+
+namespace {
+
+// A synthetic pass: azimuth sweeps from az0 by `sweep` degrees (+ clockwise), fastest at the middle
+// as for a high pass; elevation rises from -2 to max_el and back. n samples, one a second.
+std::vector<TrackPoint> synthetic_pass(double az0, double sweep, double max_el, int n = 600) {
+  std::vector<TrackPoint> t;
+  const auto aos = from_civil(2026, 5, 1, 10);
+  for (int i = 0; i < n; ++i) {
+    const double s = static_cast<double>(i) / (n - 1);  // 0..1
+    const double shape = 0.5 + std::atan(6.0 * (s - 0.5)) / (2.0 * std::atan(3.0));
+    TrackPoint p;
+    p.time = aos + std::chrono::seconds(i);
+    p.az_deg = wrap360(az0 + sweep * shape);
+    p.el_deg = -2.0 + (max_el + 2.0) * std::sin(std::numbers::pi * s);
+    t.push_back(p);
+  }
+  return t;
+}
+
+PassGeometry geometry(RotorStart start, bool flip, double travel = 360.0) {
+  RotatorConfig c;
+  c.az_travel_deg = travel;
+  c.el_flip_allowed = flip;
+  return PassGeometry::from(AdcModel(c, start));
+}
+
+// The planned track never crosses the stop: inside the travel, and no step between samples larger
+// than a satellite moves in a second (a swing through the stop would be ~360 degrees).
+void check_no_swing(const PassPlan& plan, const std::vector<TrackPoint>& track) {
+  RotatorPosition prev = plan.map(track[0].az_deg, track[0].el_deg);
+  CHECK(prev == plan.aos);
+  for (const TrackPoint& p : track) {
+    RotatorPosition r = plan.map(p.az_deg, p.el_deg);
+    CHECK(plan.geometry.az_travel.contains(r.az_travel));
+    CHECK(plan.geometry.el.contains(r.el));
+    CHECK(std::abs(r.az_travel - prev.az_travel) < 5.0);
+    CHECK(std::abs(r.el - prev.el) < 5.0);
+    prev = r;
+  }
+}
+
+}  // namespace
+
+TEST_CASE("A pass crossing north, North-start rotator, no flip: the antenna waits at the stop") {
+  auto track = synthetic_pass(300.0, 120.0, 40.0);  // 300 -> 0 -> 60
+  PassPlan plan = plan_pass(track, geometry(RotorStart::north, false));
+  CHECK_FALSE(plan.flip);
+  CHECK(plan.held_at_stop);
+  check_no_swing(plan, track);
+  CHECK(plan.max_error_deg > 30.0);  // it cannot follow it all
+}
+
+TEST_CASE("A pass crossing north, North-start rotator, flip allowed: over the top") {
+  auto track = synthetic_pass(300.0, 120.0, 40.0);
+  PassPlan plan = plan_pass(track, geometry(RotorStart::north, true));
+  CHECK(plan.flip);
+  CHECK_FALSE(plan.held_at_stop);
+  CHECK(plan.max_error_deg < 1e-6);
+  check_no_swing(plan, track);
+  // AOS at compass 300, el -2 -> flipped az 120, el 182 -> clamped to 180.
+  CHECK(plan.aos.az_travel == doctest::Approx(120.0));
+  CHECK(plan.aos.el == doctest::Approx(180.0));
+  // At the top of the pass (compass 0, el 40): az 180, el 140.
+  RotatorPosition top = plan.map(0.0, 40.0);
+  CHECK(top.az_travel == doctest::Approx(180.0));
+  CHECK(top.el == doctest::Approx(140.0));
+}
+
+TEST_CASE("A pass crossing south, South-start rotator: held without flip, flipped with it") {
+  auto track = synthetic_pass(120.0, 120.0, 55.0);  // 120 -> 180 -> 240
+  PassPlan held = plan_pass(track, geometry(RotorStart::south, false));
+  CHECK_FALSE(held.flip);
+  CHECK(held.held_at_stop);
+  check_no_swing(held, track);
+
+  PassPlan flipped = plan_pass(track, geometry(RotorStart::south, true));
+  CHECK(flipped.flip);
+  CHECK_FALSE(flipped.held_at_stop);
+  CHECK(flipped.max_error_deg < 1e-6);
+  check_no_swing(flipped, track);
+  // Flipped azimuths 300 -> 0 -> 60 are travel 120 -> 180 -> 240 for a South start.
+  CHECK(flipped.aos.az_travel == doctest::Approx(120.0));
+  CHECK(flipped.map(180.0, 55.0).az_travel == doctest::Approx(180.0));
+}
+
+TEST_CASE("No flip when the pass does not need it") {
+  // Crossing north is no problem for a South-start rotator.
+  auto north = synthetic_pass(300.0, 120.0, 70.0);
+  PassPlan a = plan_pass(north, geometry(RotorStart::south, true));
+  CHECK_FALSE(a.flip);
+  CHECK_FALSE(a.held_at_stop);
+  CHECK(a.max_error_deg < 1e-6);
+  CHECK(a.aos.az_travel == doctest::Approx(120.0));
+  check_no_swing(a, north);
+  // Nor crossing south for a North-start one, also going counter-clockwise.
+  auto south = synthetic_pass(250.0, -140.0, 30.0);
+  PassPlan b = plan_pass(south, geometry(RotorStart::north, true));
+  CHECK_FALSE(b.flip);
+  CHECK_FALSE(b.held_at_stop);
+  CHECK(b.aos.az_travel == doctest::Approx(250.0));
+  check_no_swing(b, south);
+}
+
+TEST_CASE("A 450-degree rotator follows a pass across north through its overlap") {
+  auto track = synthetic_pass(300.0, 120.0, 40.0);
+  PassPlan plan = plan_pass(track, geometry(RotorStart::north, true, 450.0));
+  CHECK_FALSE(plan.flip);
+  CHECK_FALSE(plan.held_at_stop);
+  CHECK(plan.aos.az_travel == doctest::Approx(300.0));
+  CHECK(plan.map(60.0, -2.0).az_travel == doctest::Approx(420.0));
+  check_no_swing(plan, track);
+  // Counter-clockwise from 80 to 320 through north needs the overlap the other way: 440 -> 320.
+  auto ccw = synthetic_pass(80.0, -120.0, 40.0);
+  PassPlan p2 = plan_pass(ccw, geometry(RotorStart::north, false, 450.0));
+  CHECK_FALSE(p2.held_at_stop);
+  CHECK(p2.aos.az_travel == doctest::Approx(440.0));
+  check_no_swing(p2, ccw);
+}
+
+TEST_CASE("Two ways round that both fit: the shorter slew from where the antenna is") {
+  auto track = synthetic_pass(10.0, 70.0, 20.0);  // 10 -> 80, fits at 10..80 and 370..440
+  PassGeometry g = geometry(RotorStart::north, false, 450.0);
+  CHECK(plan_pass(track, g, 400.0).aos.az_travel == doctest::Approx(370.0));
+  CHECK(plan_pass(track, g, 50.0).aos.az_travel == doctest::Approx(10.0));
+}
+
+TEST_CASE("A pass that crosses the stop just after AOS waits a moment at the stop, then follows") {
+  auto track = synthetic_pass(2.0, -62.0, 25.0);  // 2 -> 0 -> 300
+  PassPlan plan = plan_pass(track, geometry(RotorStart::north, false));
+  CHECK_FALSE(plan.flip);
+  CHECK(plan.held_at_stop);
+  CHECK(plan.aos.az_travel == doctest::Approx(360.0));
+  CHECK(plan.max_error_deg < 2.5);
+  check_no_swing(plan, track);
+}
+
+TEST_CASE("Pass plans respect the rotation limits") {
+  RotatorConfig c;
+  c.el_flip_allowed = true;
+  c.limits_enabled = true;
+  c.az_limit_min = 20;
+  c.az_limit_max = 340;
+  c.el_limit_min = 5;
+  c.el_limit_max = 170;
+  PassGeometry g = PassGeometry::from(AdcModel(c, RotorStart::north));
+  CHECK(g.az_travel.lo == doctest::Approx(20.0));
+  CHECK(g.el.hi == doctest::Approx(170.0));
+  auto track = synthetic_pass(300.0, 120.0, 60.0);
+  PassPlan plan = plan_pass(track, g);
+  CHECK(plan.flip);
+  check_no_swing(plan, track);
+}
+
+TEST_CASE("slew_seconds and an empty track") {
+  RotatorConfig c;
+  CHECK(slew_seconds({0, 0}, {120, 30}, c) == doctest::Approx(20.0 + 0.15));
+  CHECK(slew_seconds({0, 0}, {12, 90}, c) == doctest::Approx(30.0 + 0.15));
+  PassPlan p = plan_pass({}, geometry(RotorStart::north, false));
+  CHECK_FALSE(p.flip);
+  CHECK(p.map(90.0, 10.0) == RotatorPosition{90.0, 10.0});
+  CHECK(pointing_error_deg(10, 0, 350, 0) == doctest::Approx(20.0));
+  CHECK(pointing_error_deg(0, 90, 180, 90) == doctest::Approx(0.0).epsilon(1e-6));
+}
+
+TEST_CASE("Controller and simulated rotator follow a flipped pass without swinging through the stop") {
+  spdlog::set_level(spdlog::level::off);
+  RotatorConfig c;
+  c.el_flip_allowed = true;  // factory span 0..511 puts 180 deg at count 1022
+  auto track = synthetic_pass(300.0, 120.0, 60.0, 480);
+  PassPlan plan = plan_pass(track, PassGeometry::from(AdcModel(c, RotorStart::north)), 0.0);
+  REQUIRE(plan.flip);
+
+  ManualClock clock(track.front().time - std::chrono::minutes(2));
+  auto owned = std::make_unique<SimulatedRotator>(clock, SimulatedRotatorParams::matching(c));
+  SimulatedRotator& sim = *owned;
+  Controller ctl(c, RotorStart::north, std::move(owned));
+  // Ahead of AOS: to the AOS position (120 deg of azimuth, 60 s; elevation to 180, 60 s).
+  CHECK(slew_seconds({0, 0}, plan.aos, c) < 120.0);
+  ctl.set_target(plan.aos);
+  while (clock.now() < track.front().time) {
+    clock.advance(100ms);
+    ctl.tick(clock.now());
+  }
+  CHECK(ctl.status().on_target);
+  double prev = sim.true_position().az_travel, worst = 0.0;
+  bool jump = false;
+  for (const TrackPoint& p : track) {
+    ctl.set_target(plan.map(p.az_deg, p.el_deg));
+    for (int i = 0; i < 10; ++i) {
+      clock.advance(100ms);
+      ctl.tick(clock.now());
+      double now = sim.true_position().az_travel;
+      if (std::abs(now - prev) > 1.0) jump = true;
+      prev = now;
+    }
+    RotatorPosition at = sim.true_position();
+    double az = at.az_travel, el = at.el;
+    if (el > 90.0) {
+      az += 180.0;
+      el = 180.0 - el;
+    }
+    if (p.el_deg > 0.0) worst = std::max(worst, pointing_error_deg(p.az_deg, p.el_deg, wrap360(az), el));
+  }
+  CHECK_FALSE(jump);
+  CHECK(worst < 3.0);  // within a few dead bands of the satellite all pass long
+}
