@@ -6,13 +6,17 @@
 
 #include "app/cli_orbit.h"
 #include "app/options.h"
+#include "app/tracker_app.h"
 
 namespace tb::app {
 namespace {
 
 std::string usage() {
-  return "usage: trakbox COMMAND [ARGS...]\n"
-         "       trakbox --help\n"
+  return "usage: trakbox [options]              the TrakBox menus on the simulated station\n"
+         "       trakbox COMMAND [ARGS...]      a non-interactive command\n"
+         "\n"
+         "options:\n" +
+         describe_options(tracker_option_specs()) +
          "\n"
          "commands:\n" +
          orbit_commands_summary() +
@@ -25,18 +29,21 @@ std::string usage() {
 
 int main(int argc, char** argv) {
   std::vector<std::string> args(argv + (argc > 0 ? 1 : 0), argv + argc);
-  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+  if (!args.empty() && (args[0] == "--help" || args[0] == "-h" || args[0] == "help")) {
     std::fputs(usage().c_str(), stdout);
     return kExitOk;
   }
-  const std::string command = args[0];
-  args.erase(args.begin());
-  if (command == "propagate") return run_propagate(std::move(args));
-  if (command == "schedule") return run_schedule(std::move(args));
-  if (command == "passes") return run_passes(std::move(args));
-  std::fprintf(stderr, "trakbox: %s: unknown %s; expected propagate, schedule or passes (see trakbox --help)\n",
-               command.c_str(), command.rfind('-', 0) == 0 ? "option" : "command");
-  return kExitUsage;
+  if (!args.empty() && args[0].rfind('-', 0) != 0) {
+    const std::string command = args[0];
+    std::vector<std::string> rest(args.begin() + 1, args.end());
+    if (command == "propagate") return run_propagate(std::move(rest));
+    if (command == "schedule") return run_schedule(std::move(rest));
+    if (command == "passes") return run_passes(std::move(rest));
+    std::fprintf(stderr, "trakbox: %s: unknown command; expected propagate, schedule or passes (see trakbox --help)\n",
+                 command.c_str());
+    return kExitUsage;
+  }
+  return run_tracker(args);
 }
 
 }  // namespace tb::app

@@ -37,6 +37,8 @@ std::string hex32(std::uint32_t v) {
   return buf;
 }
 
+}  // namespace
+
 // Moves a bad file aside as NAME.corrupt-YYYYMMDDTHHMMSSZ[-N]; never overwrites anything.
 fs::path keep_aside(const fs::path& file) {
   char stamp[32];
@@ -58,6 +60,8 @@ fs::path keep_aside(const fs::path& file) {
   }
   return {};
 }
+
+namespace {
 
 bool write_all(int fd, std::string_view bytes) {
   while (!bytes.empty()) {
@@ -91,7 +95,7 @@ LoadOutcome StateFile::load() const {
   auto corrupt = [&](std::string reason) {
     out.kind = LoadOutcome::Kind::corrupt;
     out.reason = std::move(reason);
-    out.kept_aside = keep_aside(file);
+    out.kept_aside = store::keep_aside(file);
     out.data = nlohmann::json();
     return out;
   };
@@ -149,6 +153,12 @@ bool StateFile::save(const nlohmann::json& data, std::string& error) const {
     ::close(dfd);
   }
   return true;
+}
+
+fs::path StateFile::keep_aside() const {
+  std::error_code ec;
+  if (!fs::exists(path(), ec)) return {};
+  return store::keep_aside(path());
 }
 
 fs::path default_state_directory() {

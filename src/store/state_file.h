@@ -40,10 +40,17 @@ class StateFile {
   LoadOutcome load() const;
   // Returns false with a one-line reason on failure (the old file is then untouched).
   bool save(const nlohmann::json& data, std::string& error) const;
+  // Moves the current file aside as NAME.corrupt-TIMESTAMP (never overwriting anything) and returns
+  // the new path; empty when there was nothing to move. For a file that passed its checksum but
+  // whose content the program refused.
+  std::filesystem::path keep_aside() const;
 
  private:
   std::filesystem::path dir_;
 };
+
+// Moves `file` aside as FILE.corrupt-YYYYMMDDTHHMMSSZ[-N]; never overwrites anything.
+std::filesystem::path keep_aside(const std::filesystem::path& file);
 
 // $XDG_STATE_HOME/trakbox, else $HOME/.local/state/trakbox, else ./trakbox-state.
 std::filesystem::path default_state_directory();

@@ -1,0 +1,34 @@
+// Menu 1: Realtime Tracking. Choose from the tracking list (Enter: the one marked '*'), then the live
+// display. Rotor control stays as it was (E toggles it); tracking goes on after Q.
+#include "menus/realtime_display.h"
+#include "store/model.h"
+#include "tracker/station_loop.h"
+
+namespace tb::menus {
+
+namespace {
+std::optional<int> choose_and_track(term::Terminal& t, Services& s) {
+  const auto pick = choose_satellite(t, "     *** Tracking object satellite ***", tracking_list_names(s), s.model.db.marked);
+  if (!pick) return std::nullopt;
+  s.model.db.marked = *pick;
+  const int db_index = s.model.db.selected[static_cast<std::size_t>(*pick)];
+  s.tracker.track_single(db_index);
+  save_or_report(t, s);
+  return db_index;
+}
+}  // namespace
+
+void menu_1_realtime_tracking(term::Terminal& t, Services& s) {
+  if (!choose_and_track(t, s)) return;
+  run_realtime_display(t, s, '*');
+}
+
+// S: Single Tracking Mode — the same choice, with rotor control switched on: the antenna follows.
+void menu_s_single_tracking(term::Terminal& t, Services& s) {
+  if (!choose_and_track(t, s)) return;
+  s.station.set_rotor_control(true);
+  save_or_report(t, s);
+  run_realtime_display(t, s, '*');
+}
+
+}  // namespace tb::menus

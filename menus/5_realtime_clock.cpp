@@ -1,0 +1,59 @@
+// Menu 5: Update Realtime Clock. Y zeroes the seconds, Q leaves, Enter sets the clock.
+// The clock is system time plus an offset: setting it changes the stored offset only.
+#include "menus/menus.h"
+#include "station/clock.h"
+#include "store/model.h"
+
+namespace tb::menus {
+
+void menu_5_realtime_clock(term::Terminal& t, Services& s) {
+  t.line("Enter 'Y' for zero sec. adjustment");
+  t.line("Enter 'Q' for exit");
+  t.line("Enter 'Ret' for Real Time Clock set");
+  for (;;) {
+    const auto now = s.clock.now();
+    t.live({"Present Time:UTC " + format_date(now) + " " + format_time(now)});
+    const int k = t.read_key(std::chrono::seconds(1));
+    if (k == term::kTimeout || k == '\n') continue;
+    t.end_live();
+    if (k == term::kEndOfInput) throw InputClosed{};
+    if (k == 'y' || k == 'Y') {
+      s.clock.zero_seconds();
+      s.model.clock_offset = s.clock.offset();
+      save_or_report(t, s);
+      t.line("Present Time:UTC " + format_date(s.clock.now()) + " " + format_time(s.clock.now()));
+      return;
+    }
+    if (k == 'q' || k == 'Q') return;
+    if (k == '\r') break;
+  }
+  t.line("Set realtime Clock.");
+  t.line("Present Time: UTC " + format_date(s.clock.now()) + " " + format_time(s.clock.now()));
+  t.line("Enter with format [YY/MM/DD HH:MM:SS]");
+  orbit::UtcTime target;
+  for (;;) {
+    t.write("Set time: ");
+    t.flush();
+    const std::string a = read_line(t);
+    if (a.empty()) return;  // nothing entered: the clock is left alone
+    if (const auto v = parse_yymmdd_hhmmss(a)) {
+      target = *v;
+      break;
+    }
+    t.line("  '" + a + "' is not a time: expected YY/MM/DD HH:MM:SS, e.g. 93/07/17 03:03:15");
+  }
+  t.write("ENTER when ready. ");
+  t.flush();
+  for (;;) {
+    const int k = t.read_key();
+    if (k == term::kEndOfInput) throw InputClosed{};
+    if (k == '\r' || k == '\n') break;
+  }
+  s.clock.set(target);  // the moment Enter was pressed
+  s.model.clock_offset = s.clock.offset();
+  t.line();
+  t.line("Present Time:UTC " + format_date(s.clock.now()) + " " + format_time(s.clock.now()));
+  save_or_report(t, s);
+}
+
+}  // namespace tb::menus

@@ -1,0 +1,68 @@
+// The sign-on banner and the MAIN MENU: Select [1-8,S,M].
+#include <cctype>
+
+#include "menus/menus.h"
+
+namespace tb::menus {
+
+void sign_on(term::Terminal& t, Services& s) {
+  t.clear();
+  t.line("*******************************************");
+  t.line("*  TrakBox 8052 v3.10a menus              *");
+  t.line("*  trakbox " + s.version + std::string(31 > s.version.size() ? 31 - s.version.size() : 0, ' ') + "*");
+  t.line("*  (C) JAMSAT/JA6FTL Jan.10 1994          *");
+  t.line("*******************************************");
+}
+
+void save_or_report(term::Terminal& t, Services& s) {
+  if (auto err = s.save()) {
+    t.bell();
+    t.line("State not saved: " + *err);
+  }
+}
+
+namespace {
+void show_main_menu(term::Terminal& t) {
+  t.line("----- MAIN MENU -----");
+  t.line("     1. Realtime Tracking.");
+  t.line("     2. Display Schedule.");
+  t.line("     3. Update Satellite Elements.");
+  t.line("     4. Update Station Elements.");
+  t.line("     5. Update Realtime Clock.");
+  t.line("     6. Configuration.");
+  t.line("     7. Host mode.");
+  t.line("     8. Direct Antenna control.");
+}
+}  // namespace
+
+void main_menu(term::Terminal& t, Services& s) {
+  bool show = true;
+  for (;;) {
+    if (show) show_main_menu(t);
+    show = true;
+    t.write("     Select [1-8,S,M]:");
+    t.flush();
+    std::string a = read_line(t);
+    while (!a.empty() && a.back() == ' ') a.pop_back();
+    while (!a.empty() && a.front() == ' ') a.erase(0, 1);
+    if (a.size() != 1) {
+      show = false;
+      continue;
+    }
+    switch (std::toupper(static_cast<unsigned char>(a[0]))) {
+      case '1': menu_1_realtime_tracking(t, s); break;
+      case '2': menu_2_display_schedule(t, s); break;
+      case '3': menu_3_update_elements(t, s); break;
+      case '4': menu_4_station_elements(t, s); break;
+      case '5': menu_5_realtime_clock(t, s); break;
+      case '6': menu_6_configuration(t, s); break;
+      case '7': menu_7_host_mode(t, s); break;
+      case '8': menu_8_direct_antenna(t, s); break;
+      case 'S': menu_s_single_tracking(t, s); break;
+      case 'M': menu_m_multiple_tracking(t, s); break;
+      default: show = false; break;
+    }
+  }
+}
+
+}  // namespace tb::menus

@@ -1,0 +1,50 @@
+// The menus of the TrakBox manual, one function each, one file each (named by number and words).
+// Every menu runs against a Terminal and the Services; it returns when the operator presses Q (or
+// finishes), and throws InputClosed when the input ends.
+#pragma once
+#include <functional>
+#include <string>
+
+#include "menus/common.h"
+#include "menus/term/terminal.h"
+
+namespace tb::station { class RealTimeClock; }
+namespace tb::store { struct Model; }
+namespace tb::tracker { class Tracker; class StationLoop; }
+
+namespace tb::menus {
+
+struct Services {
+  store::Model& model;
+  station::RealTimeClock& clock;
+  tracker::Tracker& tracker;
+  tracker::StationLoop& station;  // the rotator, the radio, rotor control
+  // Persists the model now; on failure returns the reason (the menus show it).
+  std::function<std::optional<std::string>()> save;
+  // Program version for the banner.
+  std::string version;
+};
+
+// The sign-on banner and the main menu loop (returns when input closes).
+void main_menu(term::Terminal& t, Services& s);
+void sign_on(term::Terminal& t, Services& s);
+
+void menu_1_realtime_tracking(term::Terminal& t, Services& s);
+void menu_2_display_schedule(term::Terminal& t, Services& s);
+void menu_3_update_elements(term::Terminal& t, Services& s);
+void menu_3_1_edit(term::Terminal& t, Services& s);
+void menu_3_2_select(term::Terminal& t, Services& s);
+void menu_3_3_upload(term::Terminal& t, Services& s);
+void menu_3_4_multi_track(term::Terminal& t, Services& s);
+void menu_4_station_elements(term::Terminal& t, Services& s);
+void menu_5_realtime_clock(term::Terminal& t, Services& s);
+void menu_6_configuration(term::Terminal& t, Services& s);
+void menu_7_host_mode(term::Terminal& t, Services& s);
+void menu_8_direct_antenna(term::Terminal& t, Services& s);
+void menu_s_single_tracking(term::Terminal& t, Services& s);
+void menu_m_multiple_tracking(term::Terminal& t, Services& s);
+
+// Saves and reports a failure on the terminal (a failed save never loses the edit in memory).
+void save_or_report(term::Terminal& t, Services& s);
+
+}  // namespace tb::menus

@@ -1,0 +1,159 @@
+#include "menus/realtime_display.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "station/clock.h"
+#include "store/model.h"
+#include "tracker/station_loop.h"
+
+namespace tb::menus {
+
+std::vector<std::string> tracking_list_names(const Services& s) {
+  std::vector<std::string> names;
+  for (int i : s.model.db.selected) names.push_back(s.model.db.satellites[static_cast<std::size_t>(i)].name());
+  return names;
+}
+
+std::string format_realtime_row(const tracker::SatNow& n) {
+  char buf[160];
+  const std::string hms = format_time(n.obs.time);
+  if (!n.obs.ok()) {
+    std::snprintf(buf, sizeof buf, "%s  no position: %s (SGP4 error %d)", hms.c_str(), orbit::describe(n.obs.error),
+                  static_cast<int>(n.obs.error));
+    return buf;
+  }
+  // Doppler on the downlink F1 (0 when the satellite has no downlink frequency).
+  std::snprintf(buf, sizeof buf, "%s%8.2f%8.2f%9.1f%9.1f%7.1f%7.1f%7.1f%+9ld", hms.c_str(), n.obs.look.az_deg,
+                n.obs.look.el_deg, n.obs.look.range_km, n.obs.sub_point.alt_km, n.obs.sub_point.lat_deg,
+                n.obs.sub_point.lon_deg, std::floor(n.obs.phase256), std::lround(n.downlink_doppler_hz));
+  return buf;
+}
+
+std::string aos_indicator(bool in_range, bool rotor_control, orbit::UtcTime now) {
+  if (!in_range) return "   ";
+  if (rotor_control) return "AOS";
+  const auto s = std::chrono::duration_cast<std::chrono::seconds>(now.time_since_epoch()).count();
+  return (s % 2 == 0) ? "AOS" : "   ";
+}
+
+namespace {
+
+const char* kHeader1 = "  UTC      Azim.   Elev.    Range     Alt.   Lat.  Long.  Phase  Doppler";
+const char* kHeader2 = "HH:MM:SS     deg     deg       Km       Km    deg    deg  <256>       Hz";
+
+// The pictures for the full-screen front end: the pass in the sky and the ground track.
+term::Graphics make_graphics(Services& s, const tracker::SatNow& n) {
+  term::Graphics g;
+  g.title = n.name + (n.pass ? "  pass " + format_time(n.pass->aos) + "-" + format_time(n.pass->los) : "");
+  if (n.pass) {
+    const double minutes = orbit::minutes_between(n.pass->aos, n.pass->los);
+    const int steps = std::clamp(static_cast<int>(minutes * 2), 2, 240);
+    for (int k = 0; k <= steps; ++k) {
+      const auto t = orbit::add_minutes(n.pass->aos, minutes * k / steps);
+      if (const auto p = s.tracker.observe(n.db_index, t); p && p->obs.ok())
+        g.pass_track.push_back({p->obs.look.az_deg, p->obs.look.el_deg});
+    }
+  }
+  if (n.obs.ok()) {
+    g.satellite = term::SkyPoint{n.obs.look.az_deg, n.obs.look.el_deg};
+    g.sub_point = std::pair{n.obs.sub_point.lat_deg, n.obs.sub_point.lon_deg};
+    const orbit::Sgp4* sgp4 = s.tracker.propagator(n.db_index);
+    const double period = sgp4 ? sgp4->period_minutes() : 100.0;
+    for (int k = 0; k <= 120; ++k) {
+      const auto t = orbit::add_minutes(n.obs.time, period * k / 120.0);
+      if (const auto p = s.tracker.observe(n.db_index, t); p && p->obs.ok())
+        g.ground_track.emplace_back(p->obs.sub_point.lat_deg, p->obs.sub_point.lon_deg);
+    }
+  }
+  if (const auto a = s.station.antenna()) g.antenna = term::SkyPoint{a->az, a->el};
+  g.station = std::pair{s.model.station.lat_deg, s.model.station.lon_deg};
+  return g;
+}
+
+std::string control_line(Services& s) {
+  char buf[240];
+  char antenna[32] = "---.-/--.-";
+  if (const auto ant = s.station.antenna()) std::snprintf(antenna, sizeof antenna, "%.1f/%.1f", ant->az, ant->el);
+  const auto& rs = s.station.rotator().status();
+  std::string motion;
+  if (!rs.link.ok()) motion = " FAULT: " + rs.link.message;
+  else if (rs.az.motion != rotator::Drive::stop || rs.el.motion != rotator::Drive::stop) motion = " moving";
+  const radio::RadioStatus rad = s.station.radio().status();
+  auto mhz = [](std::optional<radio::Hz> hz) { return hz ? static_cast<double>(*hz) / 1e6 : 0.0; };
+  std::snprintf(buf, sizeof buf, "Rotor control %s  antenna %s%s | RIT %+ld Hz | RX %.5f TX %.5f MHz",
+                s.model.rotor_control ? "ON " : "OFF", antenna, motion.c_str(),
+                static_cast<long>(s.station.tuner().rit_hz()), mhz(rad.downlink_hz), mhz(rad.uplink_hz));
+  return buf;
+}
+
+}  // namespace
+
+RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, bool exit_on_change) {
+  const orbit::UtcTime start = s.clock.now();
+  t.clear();
+  t.line("============ Realtime Tracking [" + format_date(start) + "] ============");
+  t.line("'E' Toggle rotor control  'Y' RTC zero adjust  'Q' Return to main menu");
+  t.line("'+/-/0' Doppler compensation");
+  std::optional<int> shown;
+  orbit::UtcTime graphics_pass{};  // AOS of the pass last drawn (epoch: none)
+  for (;;) {
+    s.station.tick();  // fresh numbers at once, not a second late
+    const tracker::SatNow* f = s.tracker.followed();
+    if (!f && !s.tracker.candidates().empty()) f = &s.tracker.candidates().front();
+    if (exit_on_change && shown && (!f || f->db_index != *shown)) {
+      t.end_live();
+      return RealtimeExit::followed_changed;
+    }
+    if (f && (!shown || *shown != f->db_index)) {
+      t.end_live();
+      t.line(std::string("[Satellite:") + marker + f->name + "]");
+      t.line(kHeader1);
+      t.line(kHeader2);
+      shown = f->db_index;
+      graphics_pass = orbit::UtcTime{};
+    }
+    if (f) {
+      const std::string row = format_realtime_row(*f) + "  " + aos_indicator(f->in_range, s.model.rotor_control, f->obs.time);
+      if (t.full_screen()) {
+        t.live({row, "", control_line(s)});
+        // Redraw the pictures every few seconds and when the pass changes.
+        const auto secs = std::chrono::duration_cast<std::chrono::seconds>(f->obs.time.time_since_epoch()).count();
+        const orbit::UtcTime pass_aos = f->pass ? f->pass->aos : orbit::UtcTime{};
+        if (secs % 5 == 0 || pass_aos != graphics_pass) {
+          t.graphics(make_graphics(s, *f));
+          graphics_pass = pass_aos;
+        }
+      } else {
+        t.live({row});
+      }
+    }
+    // Wait for a key until the next whole second of the (possibly accelerated) clock.
+    const int k = t.read_key(std::chrono::milliseconds(1000));
+    switch (k) {
+      case term::kTimeout: break;
+      case term::kEndOfInput: throw InputClosed{};
+      case 'q':
+      case 'Q':
+        t.end_live();
+        return RealtimeExit::quit;
+      case 'e':
+      case 'E':
+        s.station.set_rotor_control(!s.model.rotor_control);
+        save_or_report(t, s);
+        break;
+      case 'y':
+      case 'Y':
+        s.clock.zero_seconds();
+        s.model.clock_offset = s.clock.offset();
+        save_or_report(t, s);
+        break;
+      case '+': s.station.tuner().rit_up(); break;
+      case '-': s.station.tuner().rit_down(); break;
+      case '0': s.station.tuner().rit_zero(); break;
+      default: break;
+    }
+  }
+}
+
+}  // namespace tb::menus

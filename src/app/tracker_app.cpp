@@ -1,0 +1,300 @@
+#include "app/tracker_app.h"
+
+#include <poll.h>
+#include <unistd.h>
+
+#include <boost/asio/executor_work_guard.hpp>
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/signal_set.hpp>
+#include <boost/asio/steady_timer.hpp>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include <spdlog/sinks/basic_file_sink.h>
+#include <spdlog/spdlog.h>
+
+#include "app/build_info.h"
+#include "menus/menus.h"
+#include "menus/standalone.h"
+#include "menus/term/curses_terminal.h"
+#include "menus/term/line_terminal.h"
+#include "radio/simulated.h"
+#include "rotator/simulated.h"
+#include "store/state_file.h"
+#include "tracker/station_loop.h"
+
+namespace tb::app {
+namespace asio = boost::asio;
+
+std::vector<OptionSpec> tracker_option_specs() {
+  return {
+      {"help", "", "this list"},
+      {"version", "", "the program version"},
+      {"state", "DIR", "state directory (default $XDG_STATE_HOME/trakbox)"},
+      {"data", "DIR", "shipped data for a fresh start (default: the data/ folder of the source tree)"},
+      {"tty", "DEVICE", "run the menus as plain lines on this serial port (e.g. /dev/ttyS0)"},
+      {"baud", "N", "serial port speed with --tty: 1200, 2400, 4800, 9600 (default) or 19200, 8N1"},
+      {"line", "", "plain lines on stdin/stdout even when they are a terminal"},
+      {"standalone", "N", "track selector position N (1-15) with no menus: LCD and AOS LED"},
+      {"clock", "ISO8601", "start the real-time clock at this UTC time (e.g. 2026-05-21T12:00:00Z)"},
+      {"clock-rate", "R", "run the clock R times faster than real time (with or without --clock)"},
+      {"rotator", "SPEC", "simulated (default), hamlib:MODEL:DEVICE[:BAUD], rotctld:HOST:PORT"},
+      {"radio", "SPEC", "simulated (default), icom:DEV, kenwood:DEV, yaesu:DEV, hamlib:MODEL:DEV[:BAUD], rigctld:HOST:PORT"},
+      {"tick-ms", "MS", "tracking interval in milliseconds, 100 to 1000 (default 1000)"},
+  };
+}
+
+std::string default_data_directory() {
+  if (const char* d = std::getenv("TRAKBOX_DATA"); d && *d) return d;
+  return TRAKBOX_DATA_DIR;
+}
+
+namespace {
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return {};
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// Factory defaults plus the shipped database (what a fresh TrakBox with a loaded database is).
+store::Model defaults_with_data(const std::string& data_dir, std::vector<std::string>& notes) {
+  store::Model m = store::factory_defaults();
+  const auto sets = orbit::load_elements_file(data_dir + "/amateur.tle");
+  for (const auto& p : sets.problems) notes.push_back(p.message());
+  const auto fm = radio::parse_freqmode(read_text(data_dir + "/freqmode.txt"));
+  for (const auto& p : fm.problems) notes.push_back(data_dir + "/freqmode.txt: " + p.message());
+  m.db = store::make_database(sets.sets, fm.records);
+  return m;
+}
+
+struct Shutdown {};
+
+class App {
+ public:
+  App(store::Model model, store::StateFile file, std::shared_ptr<spdlog::logger> log)
+      : model_(std::move(model)), file_(std::move(file)), log_(std::move(log)), tracker_(model_, clock_) {
+    clock_.set_offset(model_.clock_offset);
+  }
+
+  station::RealTimeClock& clock() { return clock_; }
+  store::Model& model() { return model_; }
+
+  void build_station(std::unique_ptr<rotator::RotatorDriver> rot, std::unique_ptr<radio::RadioDriver> rad) {
+    auto controller = std::make_unique<rotator::Controller>(model_.rotator, model_.station.rotor_start, std::move(rot));
+    station_ = std::make_unique<tracker::StationLoop>(model_, clock_, tracker_, std::move(controller), std::move(rad));
+  }
+  tracker::StationLoop& station() { return *station_; }
+
+  void start(std::chrono::milliseconds tick) {
+    tick_ = tick;
+    signals_.async_wait([this](const boost::system::error_code& ec, int sig) {
+      if (ec) return;
+      log_->info("signal {}: saving and leaving", sig);
+      throw Shutdown{};
+    });
+    schedule_tick();
+  }
+
+  // The terminal's way of waiting: run the event loop until fd is readable or the timeout passes.
+  bool wait_readable(int fd, std::optional<term::Duration> timeout) {
+    const auto deadline = timeout ? std::optional(std::chrono::steady_clock::now() + *timeout) : std::nullopt;
+    for (;;) {
+      if (io_.stopped()) io_.restart();
+      io_.poll();
+      int ms = 20;
+      if (deadline) {
+        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(*deadline - std::chrono::steady_clock::now());
+        ms = static_cast<int>(std::clamp<long long>(left.count(), 0, 20));
+      }
+      if (fd >= 0) {
+        pollfd p{fd, POLLIN, 0};
+        if (::poll(&p, 1, ms) > 0) return true;
+      } else if (ms > 0) {
+        ::usleep(static_cast<useconds_t>(ms) * 1000);
+      }
+      if (deadline && std::chrono::steady_clock::now() >= *deadline) return false;
+    }
+  }
+
+  void run_forever() {
+    for (;;) {
+      if (io_.stopped()) io_.restart();
+      io_.run_one();
+    }
+  }
+
+  void set_terminal(term::Terminal* t) { terminal_ = t; }
+
+  std::optional<std::string> save() {
+    model_.clock_offset = clock_.offset();
+    std::string err;
+    if (!file_.save(store::to_json(model_), err)) {
+      log_->error("state not saved: {}", err);
+      return err;
+    }
+    return std::nullopt;
+  }
+
+  tracker::Tracker& tracker() { return tracker_; }
+
+ private:
+  void schedule_tick() {
+    timer_.expires_after(std::min(station_->next_tick_in(), tick_));
+    timer_.async_wait([this](const boost::system::error_code& ec) {
+      if (ec) return;
+      station_->tick();
+      if (terminal_) terminal_->status(station_->status_line());
+      schedule_tick();
+    });
+  }
+
+  asio::io_context io_;
+  asio::executor_work_guard<asio::io_context::executor_type> work_ = asio::make_work_guard(io_);
+  asio::signal_set signals_{io_, SIGTERM, SIGHUP, SIGINT};
+  asio::steady_timer timer_{io_};
+  std::chrono::milliseconds tick_{1000};
+  store::Model model_;
+  store::StateFile file_;
+  std::shared_ptr<spdlog::logger> log_;
+  station::RealTimeClock clock_;
+  tracker::Tracker tracker_;
+  std::unique_ptr<tracker::StationLoop> station_;
+  term::Terminal* terminal_ = nullptr;
+};
+
+int usage_error(const std::string& text) {
+  std::fprintf(stderr, "trakbox: %s (see trakbox --help)\n", text.c_str());
+  return kExitUsage;
+}
+
+}  // namespace
+
+int run_tracker(const std::vector<std::string>& args) {
+  const auto specs = tracker_option_specs();
+  const ParseOutcome parsed = parse_options(args, specs);
+  if (parsed.error) return usage_error(parsed.error->text());
+  const ParsedOptions& o = parsed.options;
+  if (o.has("help")) {
+    std::printf("usage: trakbox [options]                 the TrakBox menus on the simulated station\n"
+                "       trakbox propagate|schedule|passes ...   non-interactive orbit commands (--help each)\n\n%s",
+                describe_options(specs).c_str());
+    return kExitOk;
+  }
+  if (o.has("version")) {
+    std::printf("trakbox %s\n", kVersion);
+    return kExitOk;
+  }
+  if (!o.positional().empty()) return usage_error("unexpected argument '" + o.positional().front() + "'");
+
+  OptionReader r(o);
+  const auto baud = r.integer("baud", false, "1200, 2400, 4800, 9600 or 19200");
+  if (baud && !term::valid_terminal_baud(static_cast<int>(*baud)))
+    r.fail("--baud", "expected 1200, 2400, 4800, 9600 or 19200; found '" + *o.value("baud") + "'");
+  const auto standalone = r.integer("standalone", false, "a selector position 1 to 15", Range{1, 15});
+  const auto rate = r.number("clock-rate", false, "a rate > 0 (1 is real time)", Range{0.0, 10000.0, true});
+  const auto tick_ms = r.integer("tick-ms", false, "milliseconds, 100 to 1000", Range{100, 1000});
+  std::optional<orbit::UtcTime> clock_start;
+  if (const auto c = o.value("clock")) {
+    clock_start = orbit::parse_iso8601(*c);
+    if (!clock_start) r.fail("--clock", "expected an ISO 8601 UTC time like 2026-05-21T12:00:00Z; found '" + *c + "'");
+  }
+  for (const char* dev : {"rotator", "radio"}) {
+    if (const auto v = o.value(dev); v && *v != "simulated")
+      r.fail(std::string("--") + dev, "'" + *v + "': only the simulated " + dev + " is wired into this build yet");
+  }
+  if (o.has("tty") && o.has("line")) r.fail("--line", "not with --tty (a serial port is always plain lines)");
+  if (!r.ok()) return usage_error(r.error()->text());
+
+  const std::filesystem::path state_dir = o.value("state") ? std::filesystem::path(*o.value("state"))
+                                                           : store::default_state_directory();
+  std::error_code ec;
+  std::filesystem::create_directories(state_dir, ec);
+  if (ec) return usage_error("--state " + state_dir.string() + ": cannot create: " + ec.message());
+
+  auto log = std::make_shared<spdlog::logger>(
+      "trakbox", std::make_shared<spdlog::sinks::basic_file_sink_mt>((state_dir / "trakbox.log").string()));
+  log->flush_on(spdlog::level::info);
+
+  // Battery-backed RAM test.
+  store::StateFile file(state_dir);
+  std::vector<std::string> startup_notes;
+  const std::string data_dir = o.value("data").value_or(default_data_directory());
+  store::Model model;
+  bool ram_lost = false;
+  std::string kept;
+  const store::LoadOutcome loaded = file.load();
+  if (loaded.kind == store::LoadOutcome::Kind::loaded) {
+    try {
+      model = store::model_from_json(loaded.data);
+    } catch (const std::exception& e) {
+      ram_lost = true;
+      kept = file.keep_aside().string();
+      log->error("state {}: {}", file.path().string(), e.what());
+      startup_notes.push_back(std::string("(") + e.what() + ")");
+    }
+  } else if (loaded.kind == store::LoadOutcome::Kind::corrupt) {
+    ram_lost = true;
+    kept = loaded.kept_aside.string();
+    log->error("{}", loaded.reason);
+    startup_notes.push_back("(" + loaded.reason + ")");
+  }
+  if (loaded.kind != store::LoadOutcome::Kind::loaded || ram_lost) model = defaults_with_data(data_dir, startup_notes);
+
+  App app(std::move(model), file, log);
+  if (clock_start) app.clock().start_at(*clock_start, rate.value_or(1.0));
+  else if (rate) app.clock().start_at(station::system_now(), *rate);
+  app.build_station(std::make_unique<rotator::SimulatedRotator>(app.clock(),
+                                                                rotator::SimulatedRotatorParams::matching(app.model().rotator)),
+                    std::make_unique<radio::SimulatedRadio>());
+  app.start(std::chrono::milliseconds(tick_ms.value_or(1000)));
+  if (ram_lost || loaded.kind == store::LoadOutcome::Kind::fresh) app.save();
+  log->info("trakbox {} started, state {}", kVersion, file.path().string());
+
+  auto wait = [&app](int fd, std::optional<term::Duration> t) { return app.wait_readable(fd, t); };
+  std::unique_ptr<term::Terminal> terminal;
+  if (const auto dev = o.value("tty")) {
+    std::string err;
+    terminal = term::LineTerminal::open_serial(*dev, static_cast<int>(baud.value_or(9600)), wait, err);
+    if (!terminal) return usage_error(err);
+  } else if (!o.has("line") && ::isatty(STDIN_FILENO) && ::isatty(STDOUT_FILENO) && std::getenv("TERM")) {
+    terminal = std::make_unique<term::CursesTerminal>(wait);
+  } else {
+    terminal = std::make_unique<term::LineTerminal>(STDIN_FILENO, STDOUT_FILENO, wait, false);
+  }
+  app.set_terminal(terminal.get());
+
+  menus::Services services{app.model(), app.clock(), app.tracker(), app.station(), [&app] { return app.save(); },
+                           kVersion};
+  int code = kExitOk;
+  try {
+    if (ram_lost) {
+      terminal->line("Data in RAM was lost !! Set default parameter !");
+      terminal->line("(the damaged state was kept as " + kept + ")");
+    }
+    for (const auto& n : startup_notes) terminal->line(n);
+    if (standalone) {
+      menus::standalone(*terminal, services, static_cast<int>(*standalone));
+    } else {
+      menus::sign_on(*terminal, services);
+      menus::main_menu(*terminal, services);
+    }
+  } catch (const menus::InputClosed&) {
+  } catch (const Shutdown&) {
+  }
+  app.set_terminal(nullptr);
+  terminal.reset();
+  if (auto err = app.save()) {
+    std::fprintf(stderr, "trakbox: state not saved: %s\n", err->c_str());
+    code = kExitFailure;
+  }
+  log->info("trakbox stopped");
+  return code;
+}
+
+}  // namespace tb::app

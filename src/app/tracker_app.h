@@ -1,0 +1,18 @@
+// The interactive program: `trakbox [options]` — loads the state, builds the station (simulated
+// unless hardware is named), and runs the TrakBox menus on a terminal, a serial line or stdio, or
+// standalone tracking, on one event loop.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "app/options.h"
+
+namespace tb::app {
+
+std::vector<OptionSpec> tracker_option_specs();
+int run_tracker(const std::vector<std::string>& args);
+
+// Where the shipped data lives: --data, else $TRAKBOX_DATA, else the source tree's data/.
+std::string default_data_directory();
+
+}  // namespace tb::app

@@ -1,0 +1,336 @@
+#include "store/model.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace tb::store {
+using nlohmann::json;
+
+namespace {
+
+[[noreturn]] void bad(const std::string& where, const std::string& what) {
+  throw std::runtime_error(where + ": " + what);
+}
+
+std::string path(const std::string& where, const char* key) { return where.empty() ? key : where + "." + key; }
+
+const json& field(const json& j, const std::string& where, const char* key) {
+  if (!j.is_object()) bad(where.empty() ? "state" : where, "expected an object");
+  const auto it = j.find(key);
+  if (it == j.end()) bad(path(where, key), "missing");
+  return *it;
+}
+
+double num(const json& j, const std::string& where, const char* key, double lo, double hi) {
+  const json& v = field(j, where, key);
+  if (!v.is_number()) bad(where + "." + key, "expected a number");
+  const double d = v.get<double>();
+  if (!std::isfinite(d) || d < lo || d > hi)
+    bad(where + "." + key, "value " + v.dump() + " outside " + json(lo).dump() + " .. " + json(hi).dump());
+  return d;
+}
+
+long long integer(const json& j, const std::string& where, const char* key, long long lo, long long hi) {
+  const json& v = field(j, where, key);
+  if (!v.is_number_integer()) bad(where + "." + key, "expected a whole number");
+  const long long n = v.get<long long>();
+  if (n < lo || n > hi) bad(where + "." + key, "value " + v.dump() + " outside " + std::to_string(lo) + " .. " + std::to_string(hi));
+  return n;
+}
+
+bool boolean(const json& j, const std::string& where, const char* key) {
+  const json& v = field(j, where, key);
+  if (!v.is_boolean()) bad(where + "." + key, "expected true or false");
+  return v.get<bool>();
+}
+
+std::string text(const json& j, const std::string& where, const char* key, std::size_t max_len) {
+  const json& v = field(j, where, key);
+  if (!v.is_string()) bad(where + "." + key, "expected a string");
+  std::string s = v.get<std::string>();
+  if (s.size() > max_len) bad(where + "." + key, "longer than " + std::to_string(max_len) + " characters");
+  return s;
+}
+
+// An enum stored by name.
+template <typename E, std::size_t N>
+E named(const json& j, const std::string& where, const char* key, const std::pair<E, const char*> (&names)[N]) {
+  const std::string s = text(j, where, key, 32);
+  for (const auto& [e, n] : names)
+    if (s == n) return e;
+  std::string choices;
+  for (const auto& [e, n] : names) choices += (choices.empty() ? "" : ", ") + std::string(n);
+  bad(where + "." + key, "'" + s + "' is not one of " + choices);
+}
+template <typename E, std::size_t N>
+const char* name_of(E e, const std::pair<E, const char*> (&names)[N]) {
+  for (const auto& [v, n] : names)
+    if (v == e) return n;
+  return names[0].second;
+}
+
+constexpr std::pair<station::RotorStart, const char*> kRotorStart[] = {{station::RotorStart::north, "north"},
+                                                                      {station::RotorStart::south, "south"}};
+constexpr std::pair<radio::Rig, const char*> kRig[] = {{radio::Rig::none, "none"},
+                                                       {radio::Rig::kenwood, "kenwood"},
+                                                       {radio::Rig::yaesu, "yaesu"},
+                                                       {radio::Rig::icom, "icom"}};
+constexpr std::pair<radio::DownlinkCorrection, const char*> kDown[] = {{radio::DownlinkCorrection::off, "off"},
+                                                                       {radio::DownlinkCorrection::on, "on"},
+                                                                       {radio::DownlinkCorrection::reverse, "reverse"}};
+constexpr std::pair<radio::CatPolicy, const char*> kPolicy[] = {{radio::CatPolicy::full_orbit, "full_orbit"},
+                                                                {radio::CatPolicy::aos_only, "aos_only"}};
+constexpr std::pair<radio::PulsePolarity, const char*> kPolarity[] = {{radio::PulsePolarity::normal, "normal"},
+                                                                      {radio::PulsePolarity::reverse, "reverse"}};
+constexpr std::pair<radio::IcomBandSelect, const char*> kBand[] = {
+    {radio::IcomBandSelect::none, "none"}, {radio::IcomBandSelect::main_tx_sub_rx, "main_tx_sub_rx"}};
+constexpr std::pair<radio::Mode, const char*> kMode[] = {{radio::Mode::none, "none"}, {radio::Mode::fm, "fm"},
+                                                         {radio::Mode::lsb, "lsb"},   {radio::Mode::usb, "usb"},
+                                                         {radio::Mode::cw, "cw"}};
+constexpr std::pair<radio::DopplerControl, const char*> kDoppler[] = {{radio::DopplerControl::cat, "cat"},
+                                                                      {radio::DopplerControl::mic_click, "mic"}};
+constexpr std::pair<orbit::ElementFormat, const char*> kFormat[] = {{orbit::ElementFormat::nasa, "nasa"},
+                                                                    {orbit::ElementFormat::amsat, "amsat"}};
+
+constexpr long long kMaxHz = 1'000'000'000'000LL;  // 1 THz: beyond any radio
+
+json azel(const rotator::AzEl& p) { return json::array({p.az, p.el}); }
+rotator::AzEl azel_from(const json& j, const std::string& where) {
+  if (!j.is_array() || j.size() != 2 || !j[0].is_number() || !j[1].is_number()) bad(where, "expected [az, el]");
+  const double az = j[0].get<double>(), el = j[1].get<double>();
+  if (!(az >= 0.0 && az <= 360.0) || !(el >= -90.0 && el <= 180.0)) bad(where, "position " + j.dump() + " out of range");
+  return {az, el};
+}
+
+json elements_json(const orbit::Elements& e) {
+  return {{"name", e.name},
+          {"catalog", e.catalog_number},
+          {"classification", std::string(1, e.classification)},
+          {"designator", e.international_designator},
+          {"epoch_year", e.epoch_year},
+          {"epoch_day", e.epoch_day},
+          {"ndot_over_2", e.ndot_over_2},
+          {"nddot_over_6", e.nddot_over_6},
+          {"bstar", e.bstar},
+          {"ephemeris_type", e.ephemeris_type},
+          {"element_set", e.element_set_number},
+          {"inclination_deg", e.inclination_deg},
+          {"raan_deg", e.raan_deg},
+          {"eccentricity", e.eccentricity},
+          {"arg_perigee_deg", e.arg_perigee_deg},
+          {"mean_anomaly_deg", e.mean_anomaly_deg},
+          {"mean_motion_rev_per_day", e.mean_motion_rev_per_day},
+          {"revolution", e.revolution_number},
+          {"source", name_of(e.source, kFormat)}};
+}
+
+orbit::Elements elements_from(const json& j, const std::string& w) {
+  orbit::Elements e;
+  e.name = text(j, w, "name", 64);
+  e.catalog_number = static_cast<int>(integer(j, w, "catalog", 0, 339999));
+  const std::string cls = text(j, w, "classification", 1);
+  e.classification = cls.empty() ? 'U' : cls[0];
+  e.international_designator = text(j, w, "designator", 16);
+  e.epoch_year = static_cast<int>(integer(j, w, "epoch_year", 1957, 2100));
+  e.epoch_day = num(j, w, "epoch_day", 1.0, 367.0);
+  e.ndot_over_2 = num(j, w, "ndot_over_2", -1.0, 1.0);
+  e.nddot_over_6 = num(j, w, "nddot_over_6", -1.0, 1.0);
+  e.bstar = num(j, w, "bstar", -1.0, 1.0);
+  e.ephemeris_type = static_cast<int>(integer(j, w, "ephemeris_type", 0, 9));
+  e.element_set_number = static_cast<int>(integer(j, w, "element_set", 0, 9999));
+  e.inclination_deg = num(j, w, "inclination_deg", 0.0, 180.0);
+  e.raan_deg = num(j, w, "raan_deg", 0.0, 360.0);
+  e.eccentricity = num(j, w, "eccentricity", 0.0, 0.9999999);
+  e.arg_perigee_deg = num(j, w, "arg_perigee_deg", 0.0, 360.0);
+  e.mean_anomaly_deg = num(j, w, "mean_anomaly_deg", 0.0, 360.0);
+  e.mean_motion_rev_per_day = num(j, w, "mean_motion_rev_per_day", 1e-6, 20.0);
+  e.revolution_number = static_cast<long>(integer(j, w, "revolution", 0, 9999999));
+  e.source = named(j, w, "source", kFormat);
+  return e;
+}
+
+json radio_entry_json(const radio::SatelliteRadio& r) {
+  return {{"downlink_hz", r.downlink_hz},     {"downlink_offset_hz", r.downlink_offset_hz},
+          {"uplink_hz", r.uplink_hz},         {"uplink_offset_hz", r.uplink_offset_hz},
+          {"downlink_mode", name_of(r.downlink_mode, kMode)}, {"uplink_mode", name_of(r.uplink_mode, kMode)},
+          {"doppler", name_of(r.doppler, kDoppler)},          {"lcd_ma_display", r.lcd_ma_display}};
+}
+
+radio::SatelliteRadio radio_entry_from(const json& j, const std::string& w) {
+  radio::SatelliteRadio r;
+  r.downlink_hz = integer(j, w, "downlink_hz", 0, kMaxHz);
+  r.downlink_offset_hz = integer(j, w, "downlink_offset_hz", -kMaxHz, kMaxHz);
+  r.uplink_hz = integer(j, w, "uplink_hz", 0, kMaxHz);
+  r.uplink_offset_hz = integer(j, w, "uplink_offset_hz", -kMaxHz, kMaxHz);
+  r.downlink_mode = named(j, w, "downlink_mode", kMode);
+  r.uplink_mode = named(j, w, "uplink_mode", kMode);
+  r.doppler = named(j, w, "doppler", kDoppler);
+  r.lcd_ma_display = boolean(j, w, "lcd_ma_display");
+  return r;
+}
+
+}  // namespace
+
+Model factory_defaults() { return Model{}; }
+
+json to_json(const Model& m) {
+  json j;
+  const auto& st = m.station;
+  j["station"] = {{"callsign", st.callsign},
+                  {"lat_deg", st.lat_deg},
+                  {"lon_deg", st.lon_deg},
+                  {"height_m", st.height_m},
+                  {"rotor_start", name_of(st.rotor_start, kRotorStart)},
+                  {"com_baud", st.com_baud}};
+  const auto& r = m.rotator;
+  json presets = json::array();
+  for (const auto& p : r.presets) presets.push_back(azel(p));
+  j["rotator"] = {{"az_span", {r.az_span.min, r.az_span.max}},
+                  {"el_span", {r.el_span.min, r.el_span.max}},
+                  {"az_travel_deg", r.az_travel_deg},
+                  {"az_dead_band", r.az_dead_band},
+                  {"el_dead_band", r.el_dead_band},
+                  {"az_skew", r.az_skew},
+                  {"el_skew", r.el_skew},
+                  {"parking_enabled", r.parking_enabled},
+                  {"parking", azel(r.parking)},
+                  {"limits_enabled", r.limits_enabled},
+                  {"az_limit_min", r.az_limit_min},
+                  {"az_limit_max", r.az_limit_max},
+                  {"el_limit_min", r.el_limit_min},
+                  {"el_limit_max", r.el_limit_max},
+                  {"presets", presets},
+                  {"el_flip_allowed", r.el_flip_allowed},
+                  {"az_rate_deg_s", r.az_rate_deg_s},
+                  {"el_rate_deg_s", r.el_rate_deg_s},
+                  {"coast_s", r.coast_s},
+                  {"stall_s", r.stall_s}};
+  const auto& rc = m.radio;
+  j["radio"] = {{"rig", name_of(rc.rig, kRig)},
+                {"icom_rx_address", rc.icom_rx_address},
+                {"icom_tx_address", rc.icom_tx_address},
+                {"icom_band_select", name_of(rc.icom_band_select, kBand)},
+                {"icom_four_byte_frequency", rc.icom_four_byte_frequency},
+                {"uplink_correction", rc.uplink_correction},
+                {"downlink_correction", name_of(rc.downlink_correction, kDown)},
+                {"cat_policy", name_of(rc.cat_policy, kPolicy)},
+                {"ft736_wide_fm", rc.ft736_wide_fm},
+                {"mic_click",
+                 {{"centre_adc", rc.mic_click.centre_adc},
+                  {"reference_adc", rc.mic_click.reference_adc},
+                  {"step_hz", rc.mic_click.step_hz},
+                  {"cat_at_aos", rc.mic_click.cat_at_aos},
+                  {"auto_up_at_aos", rc.mic_click.auto_up_at_aos},
+                  {"polarity", name_of(rc.mic_click.polarity, kPolarity)}}}};
+  json sats = json::array();
+  for (const auto& s : m.db.satellites)
+    sats.push_back({{"elements", elements_json(s.elements)}, {"radio", radio_entry_json(s.radio)}});
+  j["db"] = {{"satellites", sats}, {"selected", m.db.selected}, {"marked", m.db.marked},
+             {"multi_count", m.db.multi_count}};
+  j["clock_offset_us"] = m.clock_offset.count();
+  j["rotor_control"] = m.rotor_control;
+  j["priority_mode"] = m.priority_mode;
+  return j;
+}
+
+Model model_from_json(const json& j) {
+  Model m;
+  {
+    const std::string w = "station";
+    const json& s = field(j, "", "station");
+    m.station.callsign = text(s, w, "callsign", 10);
+    m.station.lat_deg = num(s, w, "lat_deg", -90, 90);
+    m.station.lon_deg = num(s, w, "lon_deg", -180, 180);
+    m.station.height_m = num(s, w, "height_m", -500, 9000);
+    m.station.rotor_start = named(s, w, "rotor_start", kRotorStart);
+    m.station.com_baud = static_cast<int>(integer(s, w, "com_baud", 1200, 19200));
+  }
+  {
+    const std::string w = "rotator";
+    const json& r = field(j, "", "rotator");
+    auto span = [&](const char* key) {
+      const json& v = field(r, w, key);
+      if (!v.is_array() || v.size() != 2 || !v[0].is_number_integer() || !v[1].is_number_integer())
+        bad(w + "." + key, "expected [min, max] counts");
+      return rotator::AxisSpan{v[0].get<int>(), v[1].get<int>()};
+    };
+    auto& c = m.rotator;
+    c.az_span = span("az_span");
+    c.el_span = span("el_span");
+    c.az_travel_deg = num(r, w, "az_travel_deg", 90, 720);
+    c.az_dead_band = static_cast<int>(integer(r, w, "az_dead_band", 0, 1023));
+    c.el_dead_band = static_cast<int>(integer(r, w, "el_dead_band", 0, 1023));
+    c.az_skew = static_cast<int>(integer(r, w, "az_skew", -1023, 1023));
+    c.el_skew = static_cast<int>(integer(r, w, "el_skew", -1023, 1023));
+    c.parking_enabled = boolean(r, w, "parking_enabled");
+    c.parking = azel_from(field(r, w, "parking"), w + ".parking");
+    c.limits_enabled = boolean(r, w, "limits_enabled");
+    c.az_limit_min = num(r, w, "az_limit_min", -360, 720);
+    c.az_limit_max = num(r, w, "az_limit_max", -360, 720);
+    c.el_limit_min = num(r, w, "el_limit_min", -90, 180);
+    c.el_limit_max = num(r, w, "el_limit_max", -90, 180);
+    const json& p = field(r, w, "presets");
+    if (!p.is_array() || p.size() != c.presets.size()) bad(w + ".presets", "expected 5 positions");
+    for (std::size_t i = 0; i < c.presets.size(); ++i)
+      c.presets[i] = azel_from(p[i], w + ".presets[" + std::to_string(i) + "]");
+    c.el_flip_allowed = boolean(r, w, "el_flip_allowed");
+    c.az_rate_deg_s = num(r, w, "az_rate_deg_s", 0.01, 100);
+    c.el_rate_deg_s = num(r, w, "el_rate_deg_s", 0.01, 100);
+    c.coast_s = num(r, w, "coast_s", 0, 10);
+    c.stall_s = num(r, w, "stall_s", 0.1, 600);
+    if (const auto problems = rotator::validate(c); !problems.empty()) bad(w, problems.front());
+  }
+  {
+    const std::string w = "radio";
+    const json& r = field(j, "", "radio");
+    auto& c = m.radio;
+    c.rig = named(r, w, "rig", kRig);
+    c.icom_rx_address = static_cast<std::uint8_t>(integer(r, w, "icom_rx_address", 0, 255));
+    c.icom_tx_address = static_cast<std::uint8_t>(integer(r, w, "icom_tx_address", 0, 255));
+    c.icom_band_select = named(r, w, "icom_band_select", kBand);
+    c.icom_four_byte_frequency = boolean(r, w, "icom_four_byte_frequency");
+    c.uplink_correction = boolean(r, w, "uplink_correction");
+    c.downlink_correction = named(r, w, "downlink_correction", kDown);
+    c.cat_policy = named(r, w, "cat_policy", kPolicy);
+    c.ft736_wide_fm = boolean(r, w, "ft736_wide_fm");
+    const std::string wm = w + ".mic_click";
+    const json& mc = field(r, w, "mic_click");
+    c.mic_click.centre_adc = static_cast<int>(integer(mc, wm, "centre_adc", 0, 1023));
+    c.mic_click.reference_adc = static_cast<int>(integer(mc, wm, "reference_adc", 0, 1023));
+    c.mic_click.step_hz = integer(mc, wm, "step_hz", 1, 100000);
+    c.mic_click.cat_at_aos = boolean(mc, wm, "cat_at_aos");
+    c.mic_click.auto_up_at_aos = boolean(mc, wm, "auto_up_at_aos");
+    c.mic_click.polarity = named(mc, wm, "polarity", kPolarity);
+  }
+  {
+    const json& d = field(j, "", "db");
+    const json& sats = field(d, "db", "satellites");
+    if (!sats.is_array()) bad("db.satellites", "expected a list");
+    if (sats.size() > static_cast<std::size_t>(kMaxDatabase)) bad("db.satellites", "more than 32 satellites");
+    for (std::size_t i = 0; i < sats.size(); ++i) {
+      const std::string w = "db.satellites[" + std::to_string(i) + "]";
+      Satellite s;
+      s.elements = elements_from(field(sats[i], w, "elements"), w + ".elements");
+      s.radio = radio_entry_from(field(sats[i], w, "radio"), w + ".radio");
+      m.db.satellites.push_back(std::move(s));
+    }
+    const json& sel = field(d, "db", "selected");
+    if (!sel.is_array() || sel.size() > static_cast<std::size_t>(kMaxSelected)) bad("db.selected", "expected up to 15 numbers");
+    for (std::size_t i = 0; i < sel.size(); ++i) {
+      if (!sel[i].is_number_integer()) bad("db.selected", "expected whole numbers");
+      const int v = sel[i].get<int>();
+      if (v < 0 || v >= static_cast<int>(m.db.satellites.size())) bad("db.selected", "entry " + std::to_string(v) + " is not in the database");
+      m.db.selected.push_back(v);
+    }
+    m.db.marked = static_cast<int>(integer(d, "db", "marked", -1, kMaxSelected - 1));
+    m.db.multi_count = static_cast<int>(integer(d, "db", "multi_count", kMinMultiTrack, kMaxMultiTrack));
+    m.db.normalise();
+  }
+  m.clock_offset = std::chrono::microseconds(integer(j, "", "clock_offset_us", -(100LL * 365 * 86400 * 1000000),
+                                                     100LL * 365 * 86400 * 1000000));
+  m.rotor_control = boolean(j, "", "rotor_control");
+  m.priority_mode = boolean(j, "", "priority_mode");
+  return m;
+}
+
+}  // namespace tb::store

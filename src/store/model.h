@@ -1,0 +1,35 @@
+// Everything the operator sets, in one value: what TrakBox kept in battery-backed RAM.
+// Saved as one document (state_file.h); to_json/from_json validate every field, so a document that
+// passes its checksum but holds nonsense is still refused as a whole.
+#pragma once
+#include <array>
+#include <chrono>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "radio/config.h"
+#include "rotator/config.h"
+#include "station/station.h"
+#include "store/database.h"
+
+namespace tb::store {
+
+struct Model {
+  station::StationConfig station;
+  rotator::RotatorConfig rotator;
+  radio::RadioConfig radio;
+  Database db;
+  std::chrono::microseconds clock_offset{0};  // menu 5: RTC = system time + offset
+  bool rotor_control = false;                 // the E key
+  bool priority_mode = false;                 // M: priority sub-mode
+};
+
+// The factory defaults (menu 6-9 without a station file), with the shipped database when given.
+Model factory_defaults();
+
+nlohmann::json to_json(const Model& m);
+// Throws std::runtime_error naming the field ("db.satellites[3].elements.eccentricity: ...").
+Model model_from_json(const nlohmann::json& j);
+
+}  // namespace tb::store

@@ -1,0 +1,110 @@
+#include "tracker/station_loop.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace tb::tracker {
+
+StationLoop::StationLoop(store::Model& model, const station::Clock& clock, Tracker& tracker,
+                         std::unique_ptr<rotator::Controller> rotator, std::unique_ptr<radio::RadioDriver> radio)
+    : model_(model),
+      clock_(clock),
+      tracker_(tracker),
+      rotator_(std::move(rotator)),
+      radio_(std::move(radio)),
+      tuner_(model.radio) {
+  rotator_->set_control_enabled(model_.rotor_control);
+}
+
+void StationLoop::set_rotor_control(bool on) {
+  model_.rotor_control = on;
+  rotator_->set_control_enabled(on);
+}
+
+void StationLoop::reconfigure() {
+  rotator_->set_config(model_.rotator, model_.station.rotor_start);
+  rotator_->set_control_enabled(model_.rotor_control);
+  tuner_.set_config(model_.radio);
+  tuned_.reset();  // frequencies may have changed: select the satellite again
+}
+
+rotator::AzEl StationLoop::point(rotator::AzEl compass) {
+  tracker_.stop();
+  const rotator::RotatorPosition p = rotator_->set_target(compass);
+  return rotator::AzEl{rotator_->model().compass_from_travel(p.az_travel), p.el};
+}
+
+void StationLoop::stop_antenna() {
+  tracker_.stop();
+  rotator_->stop();
+}
+
+void StationLoop::tick() {
+  const orbit::UtcTime now = clock_.now();
+  if (tracker_.mode() != Mode::off) {
+    const Decision d = tracker_.tick();
+    switch (d.antenna) {
+      case Decision::Antenna::point:
+      case Decision::Antenna::preposition:
+        rotator_->set_target(rotator::AzEl{d.az_deg, std::max(0.0, d.el_deg)});
+        break;
+      case Decision::Antenna::park:
+        rotator_->park();  // does nothing when parking is off: the antenna stays where it is
+        break;
+      case Decision::Antenna::hold:
+        break;
+    }
+    // The radio follows the satellite being followed.
+    const SatNow* f = tracker_.followed();
+    if (f && (!tuned_ || *tuned_ != f->db_index)) {
+      tuner_.select(model_.db.satellites[static_cast<std::size_t>(f->db_index)].radio);
+      tuned_ = f->db_index;
+    }
+    if (f && f->obs.ok()) radio::apply(*radio_, tuner_.update(f->obs.look.el_deg, f->obs.look.range_rate_km_s));
+  }
+  rotator_->tick(now);
+}
+
+std::chrono::milliseconds StationLoop::next_tick_in() const { return std::min(rotator_->next_tick_in(), std::chrono::milliseconds(1000)); }
+
+std::optional<rotator::AzEl> StationLoop::antenna() const {
+  const auto& s = rotator_->status();
+  if (!s.has_position) return std::nullopt;
+  return rotator::AzEl{s.az.deg, s.el.deg};
+}
+
+std::string StationLoop::status_line() const {
+  const orbit::UtcTime now = clock_.now();
+  const auto c = orbit::to_civil(now);
+  char buf[256];
+  std::string sat = "-";
+  if (const SatNow* f = tracker_.followed(); f && tracker_.mode() != Mode::off) {
+    char s[64];
+    std::snprintf(s, sizeof s, "%s%s", f->name.c_str(), f->in_range ? " AOS" : "");
+    sat = s;
+  }
+  const auto& rs = rotator_->status();
+  std::string rot;
+  if (!rs.link.ok()) {
+    rot = std::string("FAULT ") + rs.link.message;
+  } else if (rs.has_position) {
+    char r[64];
+    std::snprintf(r, sizeof r, "%5.1f/%4.1f%s", rs.az.deg, rs.el.deg,
+                  (rs.az.motion != rotator::Drive::stop || rs.el.motion != rotator::Drive::stop) ? " moving" : "");
+    rot = r;
+  }
+  const radio::RadioStatus radio = radio_->status();
+  std::string rig = radio.fault ? "FAULT " + radio.message : "";
+  if (!radio.fault) {
+    char r[64];
+    auto mhz = [](std::optional<radio::Hz> hz) { return hz ? static_cast<double>(*hz) / 1e6 : 0.0; };
+    std::snprintf(r, sizeof r, "D %.5f U %.5f", mhz(radio.downlink_hz), mhz(radio.uplink_hz));
+    rig = r;
+  }
+  std::snprintf(buf, sizeof buf, " %04d/%02d/%02d %02d:%02d:%02d UTC | %s | Rotor %s %s | Radio %s", c.year, c.month,
+                c.day, c.hour, c.minute, static_cast<int>(c.second), sat.c_str(),
+                model_.rotor_control ? "ON " : "OFF", rot.c_str(), rig.c_str());
+  return buf;
+}
+
+}  // namespace tb::tracker

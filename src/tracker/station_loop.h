@@ -1,0 +1,60 @@
+// The station: the one place that moves the antenna and tunes the radio. Each tick it asks the
+// Tracker what to do and applies it through the rotator Controller and the radio Tuner/driver.
+// Menus, host mode and the servers act through it too, so every path obeys the same limits,
+// dead band, parking rules and rotor-control switch.
+#pragma once
+#include <chrono>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "radio/doppler.h"
+#include "radio/driver.h"
+#include "rotator/controller.h"
+#include "tracker/tracker.h"
+
+namespace tb::tracker {
+
+class StationLoop {
+ public:
+  StationLoop(store::Model& model, const station::Clock& clock, Tracker& tracker,
+              std::unique_ptr<rotator::Controller> rotator, std::unique_ptr<radio::RadioDriver> radio);
+
+  // Tracker tick, then antenna and radio. Call once a second or faster (next_tick_in says).
+  void tick();
+  std::chrono::milliseconds next_tick_in() const;
+
+  // The E key: rotor control on/off (persisted in the model).
+  void set_rotor_control(bool on);
+  bool rotor_control() const { return model_.rotor_control; }
+
+  // Direct antenna control (menus 6-6 and 8, host AZ/EL, Satrak GOTO): tracking stops, the antenna
+  // goes where it is told (still inside the limits). Returns the commanded compass position.
+  rotator::AzEl point(rotator::AzEl compass);
+  void stop_antenna();
+
+  // After the operator changed station, rotator or radio settings in the model.
+  void reconfigure();
+
+  rotator::Controller& rotator() { return *rotator_; }
+  const rotator::Controller& rotator() const { return *rotator_; }
+  radio::RadioDriver& radio() { return *radio_; }
+  radio::Tuner& tuner() { return tuner_; }
+  Tracker& tracker() { return tracker_; }
+
+  // Compass azimuth/elevation the antenna points at now, if known.
+  std::optional<rotator::AzEl> antenna() const;
+  // One line for the full-screen status bar: time, satellite, rotator and radio state.
+  std::string status_line() const;
+
+ private:
+  store::Model& model_;
+  const station::Clock& clock_;
+  Tracker& tracker_;
+  std::unique_ptr<rotator::Controller> rotator_;
+  std::unique_ptr<radio::RadioDriver> radio_;
+  radio::Tuner tuner_;
+  std::optional<int> tuned_;  // db index the tuner is set up for
+};
+
+}  // namespace tb::tracker

@@ -1,0 +1,163 @@
+#include "tracker/tracker.h"
+
+#include <algorithm>
+
+namespace tb::tracker {
+namespace {
+
+bool same_elements(const orbit::Elements& a, const orbit::Elements& b) {
+  return a.catalog_number == b.catalog_number && a.epoch_year == b.epoch_year && a.epoch_day == b.epoch_day &&
+         a.ndot_over_2 == b.ndot_over_2 && a.nddot_over_6 == b.nddot_over_6 && a.bstar == b.bstar &&
+         a.inclination_deg == b.inclination_deg && a.raan_deg == b.raan_deg && a.eccentricity == b.eccentricity &&
+         a.arg_perigee_deg == b.arg_perigee_deg && a.mean_anomaly_deg == b.mean_anomaly_deg &&
+         a.mean_motion_rev_per_day == b.mean_motion_rev_per_day;
+}
+
+constexpr double kPassSearchDays = 1.0;
+
+}  // namespace
+
+std::optional<std::size_t> choose_multi(const std::vector<bool>& in_range, std::optional<std::size_t> current,
+                                        bool priority) {
+  if (!priority && current && *current < in_range.size() && in_range[*current]) return current;
+  for (std::size_t i = 0; i < in_range.size(); ++i)
+    if (in_range[i]) return i;
+  return std::nullopt;
+}
+
+Tracker::Tracker(const store::Model& model, const station::Clock& clock) : model_(model), clock_(clock) {}
+
+void Tracker::track_single(int db_index) {
+  mode_ = Mode::single;
+  single_ = db_index;
+  current_.reset();
+}
+
+void Tracker::track_multi(bool priority) {
+  mode_ = Mode::multi;
+  priority_ = priority;
+  current_.reset();
+}
+
+void Tracker::stop() {
+  mode_ = Mode::off;
+  current_.reset();
+  candidates_.clear();
+}
+
+Tracker::Cached& Tracker::cached(int db_index) const {
+  const auto& e = model_.db.satellites[static_cast<std::size_t>(db_index)].elements;
+  Cached& c = cache_[db_index];
+  if (!c.sgp4 || !same_elements(c.elements, e)) {
+    c.elements = e;
+    c.sgp4 = std::make_unique<orbit::Sgp4>(e);
+    c.pass.reset();
+    c.pass_searched_until = {};
+  }
+  return c;
+}
+
+const orbit::Sgp4* Tracker::propagator(int db_index) const {
+  if (db_index < 0 || db_index >= static_cast<int>(model_.db.satellites.size())) return nullptr;
+  return cached(db_index).sgp4.get();
+}
+
+SatNow Tracker::compute(int db_index, orbit::UtcTime t, bool with_pass) const {
+  SatNow s;
+  const auto& sat = model_.db.satellites[static_cast<std::size_t>(db_index)];
+  Cached& c = cached(db_index);
+  const orbit::Observer obs = model_.station.observer();
+  s.db_index = db_index;
+  s.list_number = model_.db.list_number(db_index);
+  s.name = sat.name();
+  s.obs = orbit::observe(*c.sgp4, obs, t);
+  s.in_range = s.obs.ok() && s.obs.look.el_deg >= orbit::kAosThresholdDeg;
+  if (s.obs.ok() && sat.radio.has_downlink())
+    s.downlink_doppler_hz =
+        orbit::doppler_shift_hz(static_cast<double>(sat.radio.downlink_hz), s.obs.look.range_rate_km_s);
+  if (with_pass && s.obs.ok()) {
+    const bool stale = !c.pass || t > c.pass->los;
+    if (stale && t >= c.pass_searched_until) {
+      orbit::PassOptions po;
+      po.precision_s = 1.0;
+      c.pass = orbit::next_pass(*c.sgp4, obs, t, kPassSearchDays, po);
+      // Nothing within a day (or a decayed set): do not search again for a while.
+      c.pass_searched_until = c.pass ? t : orbit::add_minutes(t, 60.0);
+    }
+    if (c.pass && t <= c.pass->los) s.pass = c.pass;
+  }
+  return s;
+}
+
+std::optional<SatNow> Tracker::observe(int db_index, orbit::UtcTime t) const {
+  if (db_index < 0 || db_index >= static_cast<int>(model_.db.satellites.size())) return std::nullopt;
+  return compute(db_index, t, false);
+}
+
+const SatNow* Tracker::followed() const {
+  if (!decision_.followed) return nullptr;
+  for (const auto& c : candidates_)
+    if (c.db_index == *decision_.followed) return &c;
+  return nullptr;
+}
+
+Decision Tracker::tick() {
+  const orbit::UtcTime t = clock_.now();
+  last_time_ = t;
+  candidates_.clear();
+  Decision d;
+  const int n_db = static_cast<int>(model_.db.satellites.size());
+
+  if (mode_ == Mode::single && single_ >= 0 && single_ < n_db) {
+    candidates_.push_back(compute(single_, t, true));
+    d.followed = single_;
+  } else if (mode_ == Mode::multi) {
+    const int n = std::min<int>(model_.db.multi_count, static_cast<int>(model_.db.selected.size()));
+    std::vector<bool> up;
+    std::optional<std::size_t> cur;
+    for (int k = 0; k < n; ++k) {
+      const int i = model_.db.selected[static_cast<std::size_t>(k)];
+      if (i < 0 || i >= n_db) continue;
+      candidates_.push_back(compute(i, t, true));
+      up.push_back(candidates_.back().in_range);
+      if (current_ && *current_ == i) cur = candidates_.size() - 1;
+    }
+    if (const auto pick = choose_multi(up, cur, priority_)) {
+      d.followed = candidates_[*pick].db_index;
+      current_ = d.followed;
+    } else {
+      current_.reset();
+    }
+  }
+
+  const SatNow* f = nullptr;
+  for (const auto& c : candidates_)
+    if (d.followed && c.db_index == *d.followed) f = &c;
+
+  if (f && f->in_range) {
+    d.antenna = Decision::Antenna::point;
+    d.az_deg = f->obs.look.az_deg;
+    d.el_deg = f->obs.look.el_deg;
+  } else {
+    // Nobody up: move ahead of time to the soonest AOS among the candidates, else park.
+    const SatNow* next = nullptr;
+    for (const auto& c : candidates_) {
+      if (mode_ == Mode::single && d.followed && c.db_index != *d.followed) continue;
+      if (!c.pass || c.pass->aos < t) continue;
+      if (orbit::minutes_between(t, c.pass->aos) > kPrepositionMinutes) continue;
+      if (!next || c.pass->aos < next->pass->aos) next = &c;
+    }
+    if (next) {
+      d.antenna = Decision::Antenna::preposition;
+      d.az_deg = next->pass->aos_az_deg;
+      d.el_deg = 0.0;
+      if (mode_ == Mode::multi) d.followed = next->db_index;
+    } else if (mode_ != Mode::off) {
+      d.antenna = Decision::Antenna::park;
+    }
+  }
+  decision_ = d;
+  return d;
+}
+
+}  // namespace tb::tracker
