@@ -14,13 +14,6 @@ void sign_on(term::Terminal& t, Services& s) {
   t.line("*******************************************");
 }
 
-void save_or_report(term::Terminal& t, Services& s) {
-  if (auto err = s.save()) {
-    t.bell();
-    t.line("State not saved: " + *err);
-  }
-}
-
 namespace {
 void show_main_menu(term::Terminal& t) {
   t.line("----- MAIN MENU -----");

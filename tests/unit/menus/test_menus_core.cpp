@@ -1,0 +1,64 @@
+#include <doctest/doctest.h>
+
+#include "fixture.h"
+#include "menus/realtime_display.h"
+
+using namespace tb;
+
+TEST_CASE("Menu 4 edits the station; Enter keeps each value") {
+  testing::MenuFixture f("WA7GXD\r32.259\r-110.778\r842\rS\r\r");
+  menus::menu_4_station_elements(f.term, *f.services);
+  CHECK(f.model.station.callsign == "WA7GXD");
+  CHECK(f.model.station.lat_deg == 32.259);
+  CHECK(f.model.station.lon_deg == -110.778);
+  CHECK(f.model.station.height_m == 842.0);
+  CHECK(f.model.station.rotor_start == station::RotorStart::south);
+  CHECK(f.model.station.com_baud == 9600);
+  CHECK(f.saves == 1);
+  CHECK(f.term.output().find("Callsign           : NOCALL  WA7GXD") != std::string::npos);
+  CHECK(f.term.output().find("Latitude  [deg]    : +27.391  32.259") != std::string::npos);
+}
+
+TEST_CASE("Menu 5 sets the clock when Enter is pressed, and Y zeroes the seconds") {
+  testing::MenuFixture f("\r93/07/17 03:03:15\r\r");
+  menus::menu_5_realtime_clock(f.term, *f.services);
+  CHECK(f.clock.now() == orbit::from_civil(1993, 7, 17, 3, 3, 15));
+  CHECK(f.model.clock_offset == f.clock.offset());
+  CHECK(f.term.output().find("Enter with format [YY/MM/DD HH:MM:SS]") != std::string::npos);
+  CHECK(f.term.output().find("ENTER when ready.") != std::string::npos);
+
+  testing::MenuFixture g("Y");
+  g.now = orbit::from_civil(2026, 1, 1, 5, 13, 4);
+  menus::menu_5_realtime_clock(g.term, *g.services);
+  CHECK(g.clock.now() == orbit::from_civil(2026, 1, 1, 5, 13, 0));
+}
+
+TEST_CASE("Menu 1 tracks the marked satellite live; E switches rotor control; Q leaves") {
+  // Enter = the marked one (#1, AO-07); then E, then Q.
+  testing::MenuFixture f("\rEQ");
+  f.term.timeouts_before_key = 2;
+  menus::menu_1_realtime_tracking(f.term, *f.services);
+  const std::string& out = f.term.output();
+  CHECK(out.find("*** Tracking object satellite ***") != std::string::npos);
+  CHECK(out.find(" 1.*AO-07") != std::string::npos);
+  CHECK(out.find("[Satellite:*AO-07]") != std::string::npos);
+  CHECK(out.find("HH:MM:SS     deg     deg       Km       Km    deg    deg  <256>       Hz") != std::string::npos);
+  CHECK(f.model.rotor_control);  // E turned it on
+  CHECK(f.tracker.mode() == tracker::Mode::single);
+  REQUIRE(f.tracker.followed() != nullptr);
+  CHECK(f.tracker.followed()->name == "AO-07");
+}
+
+TEST_CASE("The realtime row matches the manual's columns") {
+  tracker::SatNow n;
+  n.obs.time = orbit::from_civil(1993, 7, 17, 4, 6, 58);
+  n.obs.look = {28.54, -33.61, 22101.6, 0.0};
+  n.obs.sub_point = {33.1, 36.3, 12938.7};
+  n.obs.phase256 = 9.4;
+  n.downlink_doppler_hz = 2226.2;
+  CHECK(menus::format_realtime_row(n) == "04:06:58   28.54  -33.61  22101.6  12938.7   33.1   36.3    9.0    +2226");
+  CHECK(menus::aos_indicator(true, true, n.obs.time) == "AOS");
+  CHECK(menus::aos_indicator(false, true, n.obs.time) == "   ");
+  // Blinking with rotor control off: on one second, off the next.
+  CHECK(menus::aos_indicator(true, false, n.obs.time) != menus::aos_indicator(true, false, n.obs.time + std::chrono::seconds(1)));
+}
