@@ -180,11 +180,15 @@ void WorkerRadio::run() {
       open = false;
       status_.connected = false;
     }
-    // Retry it, unless a newer value for the same thing arrived meanwhile.
+    // Retry it, unless a newer value for the same thing arrived meanwhile. A command that failed
+    // on a working link goes to the back, so one silent radio (an Icom pair: RX radio switched
+    // off) does not hold up the commands for the other.
     const bool superseded = job.kind != Job::Kind::raw &&
         std::any_of(queue_.begin(), queue_.end(),
                     [&](const Job& j) { return j.kind == job.kind && j.link == job.link; });
-    if (!superseded) queue_.push_front(std::move(job));
+    if (superseded) continue;
+    if (error->action == LinkError::Action::retry) queue_.push_back(std::move(job));
+    else queue_.push_front(std::move(job));
   }
 
   // Stopping: one attempt at what is still queued, then leave the radio tidy.

@@ -72,6 +72,7 @@ struct Script {
   bool gate_open = true;         // set_frequency waits while false
   int fail_opens = 0;            // next opens that fail
   int fail_commands = 0;         // next commands that fail with `action`
+  int fail_modes = 0;            // next mode commands that fail (retry)
   LinkError::Action action = LinkError::Action::retry;
   std::vector<std::string> log;  // what reached the "radio"
   int opens = 0, closes = 0;
@@ -104,6 +105,10 @@ class ScriptedLink final : public RadioLink {
   void set_mode(Link l, Mode m) override {
     std::lock_guard lock(s_.mu);
     maybe_fail();
+    if (s_.fail_modes > 0) {
+      --s_.fail_modes;
+      throw LinkError(LinkError::Action::retry, "mode refused for now");
+    }
     s_.log.push_back(std::string(to_string(l)) + " " + to_string(m));
   }
   void send_raw(const std::string& b) override {
@@ -308,4 +313,18 @@ TEST_CASE("make_radio builds drivers without blocking; errors are clear") {
   REQUIRE(rigd.driver);
   CHECK(rigd.driver->describe() == "Hamlib rigctld at 127.0.0.1:4999");
   CHECK(make_radio("bogus", cfg).error.find("unknown radio") != std::string::npos);
+}
+
+TEST_CASE("Worker: a command that keeps failing does not hold up the others") {
+  Script s;
+  s.fail_modes = 3;   // the downlink mode fails three times
+  WorkerRadio radio(std::make_unique<ScriptedLink>(s), kFast);
+  radio.set_downlink_mode(Mode::fm);
+  radio.set_uplink_frequency(145'900'000);
+  REQUIRE(radio.wait_idle(2000ms));
+  // The first attempt at the mode failed, the uplink went out, then the mode got through.
+  const auto log = log_of(s);
+  REQUIRE(log.size() == 2);
+  CHECK(log[0] == "uplink 145900000");
+  CHECK(log[1] == "downlink FM");
 }

@@ -11,6 +11,12 @@ using namespace tb::radio;
 using namespace std::chrono_literals;
 using tbtest::eventually;
 
+// Hamlib 4.5.4's rig_open() for the NET rigctl backend leaks two small blocks (512 + 240 bytes)
+// on connections that rig_close()/rig_cleanup() never free; a ten-line C program
+// calling only rig_init/rig_open/rig_close/rig_cleanup shows the same. It is not ours to fix, so
+// LeakSanitizer is told to ignore leaks allocated inside libhamlib (and nowhere else).
+extern "C" const char* __lsan_default_suppressions() { return "leak:libhamlib.so\n"; }
+
 namespace {
 
 bool have_hamlib_utils() {
