@@ -1,0 +1,45 @@
+// The --rotator option: which rotator trakbox drives.
+//   simulated                        the simulated rotator (the default)
+//   hamlib:MODEL:DEVICE[:BAUD]       any rotator Hamlib drives, e.g. hamlib:603:/dev/ttyUSB0:9600
+//                                    (MODEL is Hamlib's number, `rotctl -l`; the last field is BAUD
+//                                    when it is all digits)
+//   rotctld:HOST[:PORT]              a rotctld on the network (Hamlib NET rotctl, model 2); PORT
+//                                    defaults to 4533; an IPv6 HOST goes in brackets: [::1]:4533
+#pragma once
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "rotator/hamlib.h"
+#include "rotator/simulated.h"
+
+namespace tb::rotator {
+
+struct RotatorSpec {
+  enum class Kind { simulated, hamlib, rotctld };
+  Kind kind = Kind::simulated;
+  int model = 0;        // hamlib: Hamlib model number (rotctld: 2)
+  std::string device;   // hamlib: the serial device; rotctld: HOST:PORT (Hamlib's pathname)
+  int baud = 0;         // hamlib: serial speed, 0 = the backend's default
+  std::string host;     // rotctld
+  int port = 0;         // rotctld
+  friend bool operator==(const RotatorSpec&, const RotatorSpec&) = default;
+};
+
+struct SpecResult {
+  std::optional<RotatorSpec> spec;
+  std::string error;  // what is wrong and what is expected, when there is no spec
+};
+
+// Parses (and checks: the Hamlib model must exist) a --rotator value.
+SpecResult parse_rotator_spec(std::string_view text);
+// The spec written back ("simulated", "hamlib:603:/dev/ttyUSB0:9600", "rotctld:localhost:4533").
+std::string to_string(const RotatorSpec& spec);
+
+// The driver for a valid spec. The simulated rotator runs on `clock` with `sim`; Hamlib drivers
+// take their timings from `hamlib` (model, pathname and baud come from the spec).
+std::unique_ptr<RotatorDriver> make_rotator(const RotatorSpec& spec, const station::Clock& clock,
+                                            const SimulatedRotatorParams& sim = {}, HamlibOptions hamlib = {});
+
+}  // namespace tb::rotator

@@ -1,0 +1,110 @@
+// The --rotator spec: simulated, hamlib:MODEL:DEVICE[:BAUD], rotctld:HOST[:PORT].
+#include <doctest/doctest.h>
+#include <spdlog/spdlog.h>
+
+#include "rotator/factory.h"
+
+using namespace tb::rotator;
+using tb::orbit::from_civil;
+using tb::station::ManualClock;
+
+TEST_CASE("Rotator specs that parse") {
+  spdlog::set_level(spdlog::level::off);
+  auto sim = parse_rotator_spec("simulated");
+  REQUIRE(sim.spec);
+  CHECK(sim.spec->kind == RotatorSpec::Kind::simulated);
+  CHECK(to_string(*sim.spec) == "simulated");
+
+  auto gs = parse_rotator_spec("hamlib:603:/dev/ttyUSB0:9600");
+  REQUIRE(gs.spec);
+  CHECK(gs.spec->kind == RotatorSpec::Kind::hamlib);
+  CHECK(gs.spec->model == 603);
+  CHECK(gs.spec->device == "/dev/ttyUSB0");
+  CHECK(gs.spec->baud == 9600);
+  CHECK(to_string(*gs.spec) == "hamlib:603:/dev/ttyUSB0:9600");
+
+  auto nobaud = parse_rotator_spec("hamlib:1:/dev/null");
+  REQUIRE(nobaud.spec);
+  CHECK(nobaud.spec->baud == 0);
+  CHECK(nobaud.spec->device == "/dev/null");
+
+  auto net = parse_rotator_spec("rotctld:127.0.0.1:4599");
+  REQUIRE(net.spec);
+  CHECK(net.spec->kind == RotatorSpec::Kind::rotctld);
+  CHECK(net.spec->model == 2);
+  CHECK(net.spec->host == "127.0.0.1");
+  CHECK(net.spec->port == 4599);
+  CHECK(net.spec->device == "127.0.0.1:4599");
+  CHECK(to_string(*net.spec) == "rotctld:127.0.0.1:4599");
+
+  auto dflt = parse_rotator_spec("rotctld:localhost");
+  REQUIRE(dflt.spec);
+  CHECK(dflt.spec->port == 4533);
+  auto v6 = parse_rotator_spec("rotctld:[::1]:4533");
+  REQUIRE(v6.spec);
+  CHECK(v6.spec->host == "[::1]");
+  CHECK(v6.spec->device == "[::1]:4533");
+}
+
+TEST_CASE("Bad rotator specs say what is wrong and what is expected") {
+  auto err = [](const char* s) {
+    SpecResult r = parse_rotator_spec(s);
+    CHECK_FALSE(r.spec);
+    return r.error;
+  };
+  CHECK(err("") == "bad --rotator '': empty; expected simulated, hamlib:MODEL:DEVICE[:BAUD] or rotctld:HOST[:PORT]");
+  CHECK(err("gs232:/dev/ttyS0") ==
+        "bad --rotator 'gs232:/dev/ttyS0': unknown rotator 'gs232'; expected simulated, hamlib:MODEL:DEVICE[:BAUD] or "
+        "rotctld:HOST[:PORT]");
+  CHECK(err("simulated:fast") == "bad --rotator 'simulated:fast': simulated takes no parameters");
+  CHECK(err("hamlib") == "bad --rotator 'hamlib': missing MODEL; expected hamlib:MODEL:DEVICE[:BAUD], e.g. hamlib:603:/dev/ttyUSB0:9600");
+  CHECK(err("hamlib:gs232b:/dev/ttyUSB0").find("MODEL 'gs232b' is not a Hamlib model number (see `rotctl -l`)") !=
+        std::string::npos);
+  CHECK(err("hamlib:603").find("missing DEVICE") != std::string::npos);
+  CHECK(err("hamlib:603:").find("missing DEVICE") != std::string::npos);
+  CHECK(err("hamlib:603:/dev/ttyUSB0:9601").find("BAUD 9601 is not a serial speed") != std::string::npos);
+  CHECK(err("hamlib:2:localhost:4533").find("for a rotctld use rotctld:HOST:PORT") != std::string::npos);
+  CHECK(err("hamlib:99999:/dev/ttyUSB0") == "bad --rotator 'hamlib:99999:/dev/ttyUSB0': Hamlib has no rotator model 99999 (see `rotctl -l`)");
+  CHECK(err("rotctld").find("missing HOST") != std::string::npos);
+  CHECK(err("rotctld:").find("missing HOST") != std::string::npos);
+  CHECK(err("rotctld:host:") .find("empty PORT") != std::string::npos);
+  CHECK(err("rotctld:host:http") == "bad --rotator 'rotctld:host:http': PORT 'http' is not a TCP port (1..65535)");
+  CHECK(err("rotctld:host:70000").find("not a TCP port") != std::string::npos);
+  CHECK(err("rotctld:::1:4533").find("IPv6 address goes in brackets") != std::string::npos);
+  CHECK(err("rotctld:[::1").find("unclosed '['") != std::string::npos);
+}
+
+TEST_CASE("make_rotator builds the simulated rotator on the given clock") {
+  ManualClock clock(from_civil(2026, 1, 1));
+  auto d = make_rotator(*parse_rotator_spec("simulated").spec, clock);
+  REQUIRE(d);
+  REQUIRE(d->as_adc());
+  CHECK_FALSE(d->as_degrees());
+  CHECK(d->description() == "simulated");
+  CHECK(d->as_adc()->read() == Counts{0, 0});
+}
+
+TEST_CASE("A Hamlib rotator that cannot connect reports the fault and keeps retrying, without blocking") {
+  spdlog::set_level(spdlog::level::off);
+  ManualClock clock(from_civil(2026, 1, 1));
+  HamlibOptions t;
+  t.backoff_min = std::chrono::milliseconds(20);
+  t.backoff_max = std::chrono::milliseconds(50);
+  // A serial rotator on a device that does not exist.
+  auto d = make_rotator(*parse_rotator_spec("hamlib:601:/nonexistent/ttyTB0:9600").spec, clock, {}, t);
+  REQUIRE(d->as_degrees());
+  CHECK(d->description() == "hamlib 601 /nonexistent/ttyTB0 9600");
+  Health h;
+  for (int i = 0; i < 250 && h.state != LinkState::fault; ++i) {  // at most 5 s
+    h = d->health();
+    if (h.state != LinkState::fault) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  CHECK(h.state == LinkState::fault);
+  CHECK(h.message.find("cannot connect to hamlib 601 /nonexistent/ttyTB0 9600") != std::string::npos);
+  CHECK(h.message.find("retrying") != std::string::npos);
+  CHECK(h.connects == 0);
+  CHECK_FALSE(d->as_degrees()->read());
+  d->as_degrees()->set_position({10, 10});  // dropped, returns at once
+  d->stop();
+  d.reset();  // joins the worker promptly
+}
