@@ -21,8 +21,8 @@
 #include "menus/standalone.h"
 #include "menus/term/curses_terminal.h"
 #include "menus/term/line_terminal.h"
-#include "radio/simulated.h"
-#include "rotator/simulated.h"
+#include "radio/factory.h"
+#include "rotator/factory.h"
 #include "store/state_file.h"
 #include "tracker/station_loop.h"
 
@@ -41,8 +41,9 @@ std::vector<OptionSpec> tracker_option_specs() {
       {"standalone", "N", "track selector position N (1-15) with no menus: LCD and AOS LED"},
       {"clock", "ISO8601", "start the real-time clock at this UTC time (e.g. 2026-05-21T12:00:00Z)"},
       {"clock-rate", "R", "run the clock R times faster than real time (with or without --clock)"},
-      {"rotator", "SPEC", "simulated (default), hamlib:MODEL:DEVICE[:BAUD], rotctld:HOST:PORT"},
-      {"radio", "SPEC", "simulated (default), icom:DEV, kenwood:DEV, yaesu:DEV, hamlib:MODEL:DEV[:BAUD], rigctld:HOST:PORT"},
+      {"rotator", "SPEC", "simulated (default), hamlib:MODEL:DEVICE[:BAUD], rotctld:HOST[:PORT]"},
+      {"radio", "SPEC", "simulated (default), icom:DEV, kenwood:DEV, yaesu:DEV, cat:DEV (rig of menu 6-7), "
+                        "hamlib:MODEL:DEV[:BAUD], rigctld[:HOST[:PORT]]"},
       {"tick-ms", "MS", "tracking interval in milliseconds, 100 to 1000 (default 1000)"},
   };
 }
@@ -204,10 +205,11 @@ int run_tracker(const std::vector<std::string>& args) {
     clock_start = orbit::parse_iso8601(*c);
     if (!clock_start) r.fail("--clock", "expected an ISO 8601 UTC time like 2026-05-21T12:00:00Z; found '" + *c + "'");
   }
-  for (const char* dev : {"rotator", "radio"}) {
-    if (const auto v = o.value(dev); v && *v != "simulated")
-      r.fail(std::string("--") + dev, "'" + *v + "': only the simulated " + dev + " is wired into this build yet");
-  }
+  // Device specs are checked before anything starts.
+  const auto rot_spec = rotator::parse_rotator_spec(o.value("rotator").value_or("simulated"));
+  if (!rot_spec.spec) r.fail("--rotator", rot_spec.error);
+  const auto radio_spec = radio::parse_radio_spec(o.value("radio").value_or("simulated"));
+  if (!radio_spec.spec) r.fail("--radio", radio_spec.error);
   if (o.has("tty") && o.has("line")) r.fail("--line", "not with --tty (a serial port is always plain lines)");
   if (!r.ok()) return usage_error(r.error()->text());
 
@@ -249,9 +251,12 @@ int run_tracker(const std::vector<std::string>& args) {
   App app(std::move(model), file, log);
   if (clock_start) app.clock().start_at(*clock_start, rate.value_or(1.0));
   else if (rate) app.clock().start_at(station::system_now(), *rate);
-  app.build_station(std::make_unique<rotator::SimulatedRotator>(app.clock(),
-                                                                rotator::SimulatedRotatorParams::matching(app.model().rotator)),
-                    std::make_unique<radio::SimulatedRadio>());
+  radio::MakeRadio made = radio::make_radio(*radio_spec.spec, app.model().radio);
+  if (!made.driver) return usage_error("--radio: " + made.error);
+  app.build_station(rotator::make_rotator(*rot_spec.spec, app.clock(),
+                                          rotator::SimulatedRotatorParams::matching(app.model().rotator)),
+                    std::move(made.driver));
+  log->info("rotator: {}; radio: {}", rotator::to_string(*rot_spec.spec), app.station().radio().describe());
   app.start(std::chrono::milliseconds(tick_ms.value_or(1000)));
   if (ram_lost || loaded.kind == store::LoadOutcome::Kind::fresh) app.save();
   log->info("trakbox {} started, state {}", kVersion, file.path().string());
