@@ -80,10 +80,14 @@ std::string control_line(Services& s) {
   if (!rs.link.ok()) motion = " FAULT: " + rs.link.message;
   else if (rs.az.motion != rotator::Drive::stop || rs.el.motion != rotator::Drive::stop) motion = " moving";
   const radio::RadioStatus rad = s.station.radio().status();
-  auto mhz = [](std::optional<radio::Hz> hz) { return hz ? static_cast<double>(*hz) / 1e6 : 0.0; };
-  std::snprintf(buf, sizeof buf, "Rotor control %s  antenna %s%s | RIT %+ld Hz | RX %.5f TX %.5f MHz",
+  auto mhz = [](std::optional<radio::Hz> hz) {
+    char b[24] = "---";
+    if (hz) std::snprintf(b, sizeof b, "%.5f", static_cast<double>(*hz) / 1e6);
+    return std::string(b);
+  };
+  std::snprintf(buf, sizeof buf, "Rotor control %s  antenna %s%s | RIT %+ld Hz | RX %s TX %s MHz",
                 s.model.rotor_control ? "ON " : "OFF", antenna, motion.c_str(),
-                static_cast<long>(s.station.tuner().rit_hz()), mhz(rad.downlink_hz), mhz(rad.uplink_hz));
+                static_cast<long>(s.station.tuner().rit_hz()), mhz(rad.downlink_hz).c_str(), mhz(rad.uplink_hz).c_str());
   return buf;
 }
 
@@ -114,7 +118,8 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
       graphics_pass = orbit::UtcTime{};
     }
     if (f) {
-      const std::string row = format_realtime_row(*f) + "  " + aos_indicator(f->in_range, s.model.rotor_control, f->obs.time);
+      std::string row = format_realtime_row(*f) + "  " + aos_indicator(f->in_range, s.model.rotor_control, f->obs.time);
+      while (row.back() == ' ') row.pop_back();
       if (t.full_screen()) {
         t.live({row, "", control_line(s)});
         // Redraw the pictures every few seconds and when the pass changes.

@@ -237,7 +237,8 @@ void CursesTerminal::status(std::string_view text) {
 void CursesTerminal::graphics(const Graphics& g) {
   WINDOW* w = impl_->text;
   const int top = (impl_->live_y >= 0 ? impl_->live_y + impl_->live_lines : getcury(w)) + 1;
-  const int height = getmaxy(w) - top;
+  // The window's last row stays empty: writing its last cell would scroll a scrolling window.
+  const int height = getmaxy(w) - top - 1;
   if (height < 7) return;
   const int sky_h = height;
   const int sky_w = std::min(2 * sky_h + 1, COLS / 3);

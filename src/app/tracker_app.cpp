@@ -273,6 +273,7 @@ int run_tracker(const std::vector<std::string>& args) {
     terminal = std::make_unique<term::LineTerminal>(STDIN_FILENO, STDOUT_FILENO, wait, false);
   }
   app.set_terminal(terminal.get());
+  terminal->status(app.station().status_line());
 
   menus::Services services{app.model(), app.clock(), app.tracker(), app.station(), [&app] { return app.save(); },
                            kVersion};

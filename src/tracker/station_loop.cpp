@@ -96,10 +96,12 @@ std::string StationLoop::status_line() const {
   const radio::RadioStatus radio = radio_->status();
   std::string rig = radio.fault ? "FAULT " + radio.message : "";
   if (!radio.fault) {
-    char r[64];
-    auto mhz = [](std::optional<radio::Hz> hz) { return hz ? static_cast<double>(*hz) / 1e6 : 0.0; };
-    std::snprintf(r, sizeof r, "D %.5f U %.5f", mhz(radio.downlink_hz), mhz(radio.uplink_hz));
-    rig = r;
+    auto mhz = [](std::optional<radio::Hz> hz) {
+      char b[24] = "---";
+      if (hz) std::snprintf(b, sizeof b, "%.5f", static_cast<double>(*hz) / 1e6);
+      return std::string(b);
+    };
+    rig = "D " + mhz(radio.downlink_hz) + " U " + mhz(radio.uplink_hz);
   }
   std::snprintf(buf, sizeof buf, " %04d/%02d/%02d %02d:%02d:%02d UTC | %s | Rotor %s %s | Radio %s", c.year, c.month,
                 c.day, c.hour, c.minute, static_cast<int>(c.second), sat.c_str(),

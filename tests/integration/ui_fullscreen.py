@@ -1,0 +1,100 @@
+"""The full-screen (ncurses) front end driven in tmux as a person would: keys with send-keys, the
+screen read with capture-pane. Checks the status line, in-place live updates, the sky plot and
+world map, an edit through menu 4, and that Ctrl-C leaves with the state saved.
+"""
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+sys.path.insert(0, os.path.dirname(__file__))
+from _tbharness import BIN, CLOCK, Failure, check, run_test  # noqa: E402
+
+SESSION = f"trakbox-it-{os.getpid()}"
+
+
+def tmux(*args):
+    return subprocess.run(["tmux", *args], capture_output=True, text=True, timeout=10)
+
+
+def screen():
+    return tmux("capture-pane", "-t", SESSION, "-p").stdout
+
+
+def wait_for(pattern, timeout=10.0):
+    deadline = time.time() + timeout
+    while True:
+        s = screen()
+        if re.search(pattern, s):
+            return s
+        if time.time() > deadline:
+            raise Failure(f"screen never showed {pattern!r}; it shows:\n{s}")
+        time.sleep(0.2)
+
+
+def keys(*k):
+    tmux("send-keys", "-t", SESSION, *k)
+
+
+def main():
+    state = tempfile.mkdtemp(prefix="trakbox-ui-")
+    tmux("kill-session", "-t", SESSION)
+    cmd = f"{BIN} --state {state} --clock {CLOCK}; echo EXITED $?; sleep 60"
+    r = tmux("new-session", "-d", "-s", SESSION, "-x", "100", "-y", "34", "env", "TERM=xterm", "sh", "-c", cmd)
+    check(r.returncode == 0, f"tmux: {r.stderr}")
+    try:
+        wait_for(r"Select \[1-8,S,M\]:")
+        s = wait_for(r"UTC \| .* \| Rotor OFF")
+        last = s.rstrip("\n").splitlines()[-1]
+        check(re.search(r"2026/05/21 12:0\d:\d\d UTC \| .* \| Rotor OFF", last), f"status line: {last!r}")
+
+        # S: single tracking with rotor control on; the ISS rises at 12:09:09 from this station.
+        keys("S", "Enter")
+        wait_for(r"Select :")
+        keys("4", "Enter")
+        s = wait_for(r"\[Satellite:\*ISS\]")
+        s = wait_for(r"pass 12:09:09-12:15:35")
+        time.sleep(2.5)
+        s = screen()
+        rows = re.findall(r"^\d\d:\d\d:\d\d\s+[\d.]+\s+-?[\d.]+", s, re.M)
+        check(len(rows) == 1, f"the live row is redrawn in place, not scrolled: {rows}")
+        check("Rotor control ON" in s, "S switches rotor control on")
+        check(re.search(r"^\s*\.*A?\.*N", s, re.M) or " N" in s, "the sky plot's north mark")
+        check("Q" in s and "#" in s and "@" in s, "world map with station, land and satellite")
+        check(s.count("\x1b") == 0, "capture is plain text")
+        first = rows[0]
+        time.sleep(1.5)
+        rows2 = re.findall(r"^\d\d:\d\d:\d\d\s+[\d.]+\s+-?[\d.]+", screen(), re.M)
+        check(rows2 and rows2[0] != first, "the row changes every second")
+
+        # E toggles rotor control off, the status line follows.
+        keys("E")
+        wait_for(r"Rotor control OFF")
+        keys("q")
+        wait_for(r"Select \[1-8,S,M\]:")
+
+        # Menu 4 in full screen.
+        keys("4", "Enter")
+        wait_for(r"Callsign\s+: NOCALL")
+        keys("VK2XYZ", "Enter")
+        for _ in range(5):
+            keys("Enter")
+        wait_for(r"COM port baud rate : 9600\s*\n----- MAIN MENU -----")
+
+        # Ctrl-C leaves trakbox; the state is saved.
+        keys("C-c")
+        wait_for(r"EXITED 0", timeout=15)
+        doc = json.load(open(os.path.join(state, "trakbox-state.json")))
+        check(doc["data"]["station"]["callsign"] == "VK2XYZ", "callsign saved")
+        check(doc["data"]["rotor_control"] is False, "rotor control off as left")
+    finally:
+        tmux("kill-session", "-t", SESSION)
+        shutil.rmtree(state, ignore_errors=True)
+
+
+if __name__ == "__main__":
+    run_test(main)
