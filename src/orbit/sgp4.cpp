@@ -21,11 +21,12 @@ constexpr double kTwoPi = 2.0 * kPi;
 constexpr double kDegToRad = kPi / 180.0;
 constexpr double kTwoThirds = 2.0 / 3.0;
 
-// WGS-72 as used by SGP4 ("wgs72", not the older "wgs72old" with a rounded xke).
-constexpr double kMu = 398600.8;               // km^3/s^2
-constexpr double kEarthRadiusKm = 6378.135;    // km
-// xke = 60 / sqrt(R^3 / mu), in (earth radii)^1.5 per minute. Written out because std::sqrt is not
-// constexpr in C++20; the literal is the double nearest to that expression (the unit test checks it).
+// WGS-72 as used by SGP4 ("wgs72", not the older "wgs72old" with a rounded xke):
+// mu = 398600.8 km^3/s^2, equatorial radius 6378.135 km.
+constexpr double kEarthRadiusKm = 6378.135;
+// xke = 60 / sqrt(R^3 / mu), sqrt(earth radii^3 / mu) per minute. std::sqrt is not constexpr in
+// C++20, so this is the value that expression gives in double arithmetic (as the reference computes
+// it at run time): 60.0 / std::sqrt(6378.135 * 6378.135 * 6378.135 / 398600.8).
 constexpr double kXke = 0x1.309b5d0b2444cp-4;  // 0.07436691613317342
 constexpr double kMinutesPerTimeUnit = 1.0 / kXke;  // tumin
 constexpr double kJ2 = 0.001082616;
@@ -96,6 +97,8 @@ double gstime(double jdut1) {
 // The epoch as the reference's TLE reader computes it: day of year -> month, day, h, m, s, then a
 // Julian date split into a day boundary and a fraction.
 JulianDate element_epoch(int year, double day_of_year) {
+  constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+  if (!(day_of_year >= 0.0 && day_of_year < 1000.0)) return {kNan, kNan};  // not a day of a year
   int month_days[13] = {0, 31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
   const int day_number = static_cast<int>(std::floor(day_of_year));
   if (year % 4 == 0) month_days[2] = 29;
