@@ -347,6 +347,7 @@ void Controller::tick_degrees(DegreeRotator& dr, orbit::UtcTime now) {
   const AxisMotion motion = dr.motion();
   const LimitFlags reported = dr.limits();
   status_.has_position = true;
+  raw_ = Counts{static_cast<int>(std::lround(raw_c[0])), static_cast<int>(std::lround(raw_c[1]))};
   for (Axis a : kAxes) {
     const int i = a == Axis::az ? 0 : 1;
     AxisStatus& s = axis_status(a);

@@ -113,6 +113,7 @@ class Controller {
 
   const Status& status() const { return status_; }
   // The latest raw counts (menu 6-1 calibration records these), nothing before the first reading.
+  // (Degree rotators: their position through the span.)
   std::optional<Counts> raw_counts() const { return raw_; }
 
  private:

@@ -2,6 +2,8 @@
 // resolution figures and monitor lines.
 #include <doctest/doctest.h>
 
+#include <cmath>
+
 #include "rotator/adc_model.h"
 #include "rotator/controller.h"
 
@@ -184,4 +186,63 @@ TEST_CASE("Target clamping to the rotation limits (menu 6-4)") {
   CHECK(m.target_for({200, 30}, 100) == RotatorPosition{200.0, 30.0});
   // Targets never leave the counts range either.
   CHECK(m.target_counts(Axis::az, {400.0, 0.0}) == 966);  // 340 deg = 966.2 counts: whole counts inside
+}
+
+TEST_CASE("Resolution at full span: about 0.35 deg azimuth and 0.18 deg elevation, as the manual says") {
+  // "+5 volts DC at one extreme of the rotator position and 0 volts at the other": azimuth 0..360
+  // over the 10-bit ADC, elevation 0..180 (a rotator that goes over the top) over it, i.e. 0..90
+  // over half of it. These are the factory spans.
+  AdcModel m(RotatorConfig{}, RotorStart::north);
+  CHECK(m.deg_per_count(Axis::az) == doctest::Approx(360.0 / 1023));
+  CHECK(m.deg_per_count(Axis::el) == doctest::Approx(90.0 / 511));
+  CHECK(std::round(m.deg_per_count(Axis::az) * 100) / 100 == doctest::Approx(0.35));
+  CHECK(std::round(m.deg_per_count(Axis::el) * 100) / 100 == doctest::Approx(0.18));
+  // A narrower span is coarser: the manual's 6-0 example span 3-837 / 1-460.
+  AdcModel n(span(3, 837, 1, 460), RotorStart::north);
+  CHECK(n.deg_per_count(Axis::az) == doctest::Approx(360.0 / 834));
+  CHECK(n.deg_per_count(Axis::el) == doctest::Approx(90.0 / 459));
+  // One count of the factory span moves the displayed azimuth by the resolution.
+  CHECK(m.az_deg_from_raw(101) - m.az_deg_from_raw(100) == doctest::Approx(0.352).epsilon(0.001));
+  CHECK(m.el_deg_from_raw(101) - m.el_deg_from_raw(100) == doctest::Approx(0.176).epsilon(0.001));
+}
+
+TEST_CASE("Limit sectors in travel, for both rotor starts (station file sample: South, 270 -> 90)") {
+  RotatorConfig c;
+  c.limits_enabled = true;
+  c.az_limit_min = 270;
+  c.az_limit_max = 90;
+  AdcModel south(c, RotorStart::south);
+  CHECK(south.az_limit_travel().lo == doctest::Approx(90.0));
+  CHECK(south.az_limit_travel().hi == doctest::Approx(270.0));
+  CHECK(south.target_for({0.0, 10.0}, 0.0).az_travel == doctest::Approx(180.0));
+  CHECK(south.target_for({180.0, 10.0}, 0.0).az_travel == doctest::Approx(90.0));  // equidistant: nearest the antenna
+  // For a North start a sector 250 -> 90 contains the stop: the longer piece (250 -> 360) is kept.
+  c.az_limit_min = 250;
+  AdcModel north(c, RotorStart::north);
+  CHECK(north.az_limit_travel().lo == doctest::Approx(250.0));
+  CHECK(north.az_limit_travel().hi == doctest::Approx(360.0));
+  // 0 -> 360 is no limit for either start.
+  c.az_limit_min = 0;
+  c.az_limit_max = 360;
+  CHECK(AdcModel(c, RotorStart::south).az_limit_travel().width() == doctest::Approx(360.0));
+  CHECK(validate(c).empty());
+  c.az_limit_max = 0;
+  CHECK(validate(c).size() == 1);
+}
+
+TEST_CASE("Elevation beyond 90 for rotators allowed to flip") {
+  RotatorConfig c;
+  c.el_flip_allowed = true;  // factory span 0-511: 180 deg at 1022
+  AdcModel m(c, RotorStart::north);
+  CHECK(m.el_range().hi == doctest::Approx(180.0));
+  CHECK(m.counts_from_el(180.0) == doctest::Approx(1022.0));
+  CHECK(m.el_from_counts(766.5) == doctest::Approx(135.0));
+  CHECK(m.clamp({100.0, 150.0}).el == doctest::Approx(150.0));
+  c.el_flip_allowed = false;
+  CHECK(AdcModel(c, RotorStart::north).clamp({100.0, 150.0}).el == doctest::Approx(90.0));
+  // A span that puts 180 deg beyond the ADC cannot flip.
+  c.el_flip_allowed = true;
+  c.el_span = {0, 600};
+  REQUIRE(validate(c).size() == 1);
+  CHECK(validate(c)[0].find("set the pot so 90 deg reads at most 511") != std::string::npos);
 }
