@@ -22,6 +22,7 @@ void StationLoop::set_rotor_control(bool on) {
 }
 
 void StationLoop::reconfigure() {
+  planned_.reset();  // the geometry may have changed
   rotator_->set_config(model_.rotator, model_.station.rotor_start);
   rotator_->set_control_enabled(model_.rotor_control);
   tuner_.set_config(model_.radio);
@@ -39,14 +40,42 @@ void StationLoop::stop_antenna() {
   rotator_->stop();
 }
 
+const rotator::PassPlan* StationLoop::plan_for(const SatNow& s) {
+  if (!s.pass) return nullptr;
+  if (planned_ && planned_->db_index == s.db_index && planned_->aos == s.pass->aos) return &planned_->plan;
+  // Sample the whole pass (AOS to LOS) and let the rotator plan it against its stop.
+  std::vector<rotator::TrackPoint> track;
+  const double minutes = orbit::minutes_between(s.pass->aos, s.pass->los);
+  const int steps = std::clamp(static_cast<int>(minutes * 6.0), 2, 600);  // every 10 s, at most 600
+  for (int k = 0; k <= steps; ++k) {
+    const orbit::UtcTime t = orbit::add_minutes(s.pass->aos, minutes * k / steps);
+    const auto p = tracker_.observe(s.db_index, t);
+    if (!p || !p->obs.ok()) break;
+    track.push_back({t, p->obs.look.az_deg, std::max(0.0, p->obs.look.el_deg)});
+  }
+  const auto& st = rotator_->status();
+  const std::optional<double> travel = st.has_position ? std::optional(st.az.travel) : std::nullopt;
+  planned_ = PlannedPass{s.db_index, s.pass->aos,
+                         rotator::plan_pass(track, rotator::PassGeometry::from(rotator_->model()), travel)};
+  return &planned_->plan;
+}
+
 void StationLoop::tick() {
   const orbit::UtcTime now = clock_.now();
   if (tracker_.mode() != Mode::off) {
     const Decision d = tracker_.tick();
+    const SatNow* followed = tracker_.followed();
+    const rotator::PassPlan* plan = nullptr;
+    if (followed && (d.antenna == Decision::Antenna::point || d.antenna == Decision::Antenna::preposition))
+      plan = plan_for(*followed);
     switch (d.antenna) {
       case Decision::Antenna::point:
+        if (plan) rotator_->set_target(plan->map(d.az_deg, std::max(0.0, d.el_deg)));
+        else rotator_->set_target(rotator::AzEl{d.az_deg, std::max(0.0, d.el_deg)});
+        break;
       case Decision::Antenna::preposition:
-        rotator_->set_target(rotator::AzEl{d.az_deg, std::max(0.0, d.el_deg)});
+        if (plan) rotator_->set_target(plan->aos);
+        else rotator_->set_target(rotator::AzEl{d.az_deg, 0.0});
         break;
       case Decision::Antenna::park:
         rotator_->park();  // does nothing when parking is off: the antenna stays where it is

@@ -11,6 +11,7 @@
 #include "radio/doppler.h"
 #include "radio/driver.h"
 #include "rotator/controller.h"
+#include "rotator/pass_plan.h"
 #include "tracker/tracker.h"
 
 namespace tb::tracker {
@@ -55,6 +56,19 @@ class StationLoop {
   std::unique_ptr<radio::RadioDriver> radio_;
   radio::Tuner tuner_;
   std::optional<int> tuned_;  // db index the tuner is set up for
+
+  // The plan for the pass being followed (or coming): which way round, flip, where to wait.
+  struct PlannedPass {
+    int db_index = -1;
+    orbit::UtcTime aos{};
+    rotator::PassPlan plan;
+  };
+  std::optional<PlannedPass> planned_;
+  const rotator::PassPlan* plan_for(const SatNow& s);
+
+ public:
+  // The plan in force, if any (for displays and tests).
+  const rotator::PassPlan* current_plan() const { return planned_ ? &planned_->plan : nullptr; }
 };
 
 }  // namespace tb::tracker

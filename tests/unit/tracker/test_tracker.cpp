@@ -1,0 +1,208 @@
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "radio/simulated.h"
+#include "rotator/pass_plan.h"
+#include "rotator/simulated.h"
+#include "tracker/station_loop.h"
+
+using namespace tb;
+
+namespace {
+std::string read_file(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+store::Model shipped(station::RotorStart start, double lat, double lon, double h) {
+  store::Model m;
+  const std::string dir = TRAKBOX_SOURCE_DIR "/data/";
+  const auto sets = orbit::parse_nasa(read_file(dir + "amateur.tle"), "amateur.tle");
+  const auto fm = radio::parse_freqmode(read_file(dir + "freqmode.txt"));
+  m.db = store::make_database(sets.sets, fm.records);
+  m.station.rotor_start = start;
+  m.station.lat_deg = lat;
+  m.station.lon_deg = lon;
+  m.station.height_m = h;
+  return m;
+}
+
+struct Station {
+  explicit Station(store::Model m, orbit::UtcTime t0)
+      : model(std::move(m)), now(t0), clock(now), tracker(model, clock) {
+    auto sim = std::make_unique<rotator::SimulatedRotator>(clock, rotator::SimulatedRotatorParams::matching(model.rotator));
+    rot = sim.get();
+    auto ctl = std::make_unique<rotator::Controller>(model.rotator, model.station.rotor_start, std::move(sim));
+    auto rad = std::make_unique<radio::SimulatedRadio>();
+    radio = rad.get();
+    loop = std::make_unique<tracker::StationLoop>(model, clock, tracker, std::move(ctl), std::move(rad));
+  }
+  void step(std::chrono::milliseconds dt) {
+    now += dt;
+    clock.set(now);
+    loop->tick();
+  }
+  store::Model model;
+  orbit::UtcTime now;
+  station::ManualClock clock;
+  tracker::Tracker tracker;
+  rotator::SimulatedRotator* rot = nullptr;
+  radio::SimulatedRadio* radio = nullptr;
+  std::unique_ptr<tracker::StationLoop> loop;
+};
+}  // namespace
+
+TEST_CASE("Multi-tracking choice: normal stays with the current one, priority takes the lowest number") {
+  using tracker::choose_multi;
+  CHECK(choose_multi({false, false, false}, std::nullopt, false) == std::nullopt);
+  CHECK(choose_multi({false, true, true}, std::nullopt, false) == 1u);  // tie: lowest list number
+  CHECK(choose_multi({true, true, false}, 1u, false) == 1u);            // normal: stay until LOS
+  CHECK(choose_multi({true, true, false}, 1u, true) == 0u);             // priority: the higher one takes over
+  CHECK(choose_multi({true, false, false}, 1u, false) == 0u);           // the current one set: next in view
+}
+
+TEST_CASE("Single tracking decides point / pre-position / park from the satellite's pass") {
+  store::Model m = shipped(station::RotorStart::south, 27.391, 128.657, 50.0);
+  m.rotator.parking_enabled = true;
+  m.rotator.parking = {90.0, 10.0};
+  const auto iss = m.db.find("ISS");
+  REQUIRE(iss);
+  station::ManualClock clock(orbit::from_civil(2026, 5, 21, 12, 0, 0));
+  tracker::Tracker t(m, clock);
+  t.track_single(*iss);
+  const auto d0 = t.tick();
+  REQUIRE(t.followed());
+  REQUIRE(t.followed()->pass);
+  const orbit::Pass pass = *t.followed()->pass;
+  const double to_aos = orbit::minutes_between(clock.now(), pass.aos);
+  if (to_aos > tracker::Tracker::kPrepositionMinutes) CHECK(d0.antenna == tracker::Decision::Antenna::park);
+  clock.set(orbit::add_minutes(pass.aos, -2.0));
+  const auto d1 = t.tick();
+  CHECK(d1.antenna == tracker::Decision::Antenna::preposition);
+  CHECK(d1.az_deg == doctest::Approx(pass.aos_az_deg));
+  clock.set(pass.tca);
+  const auto d2 = t.tick();
+  CHECK(d2.antenna == tracker::Decision::Antenna::point);
+  CHECK(d2.el_deg == doctest::Approx(pass.max_el_deg).epsilon(0.01));
+  clock.set(orbit::add_minutes(pass.los, 1.0));
+  CHECK(t.tick().antenna == tracker::Decision::Antenna::park);
+}
+
+namespace {
+// An ISS pass whose track crosses north, seen from Tucson.
+orbit::Pass north_crossing_pass(const store::Model& m, int iss) {
+  const orbit::Sgp4 sgp4(m.db.satellites[static_cast<std::size_t>(iss)].elements);
+  const orbit::Observer obs = m.station.observer();
+  const auto start = orbit::from_civil(2026, 5, 21, 0, 0, 0);
+  for (const auto& p : orbit::find_passes(sgp4, obs, start, orbit::add_minutes(start, 3 * 1440.0))) {
+    if (p.up_at_start || p.max_el_deg < 10.0 || p.max_el_deg > 70.0) continue;
+    bool east = false, west = false;
+    for (double f = 0; f <= 1.0; f += 0.02) {
+      const auto o = orbit::observe(sgp4, obs, orbit::add_minutes(p.aos, f * orbit::minutes_between(p.aos, p.los)));
+      if (o.look.el_deg < 0) continue;
+      if (o.look.az_deg < 60) east = true;
+      if (o.look.az_deg > 300) west = true;
+    }
+    if (east && west) return p;
+  }
+  FAIL("no north-crossing ISS pass from Tucson in three days");
+  return {};
+}
+
+struct FollowResult {
+  double max_step = 0.0;    // largest azimuth travel change in one 0.5 s tick
+  double max_error = 0.0;   // largest pointing error once on the pass, away from the zenith
+  int samples = 0;
+  bool held_at_stop = false;
+  bool flip = false;
+};
+
+FollowResult follow(station::RotorStart start, bool flip_allowed) {
+  store::Model m = shipped(start, 32.259, -110.778, 842.0);
+  m.rotator.el_flip_allowed = flip_allowed;
+  const int iss = *m.db.find("ISS");
+  const orbit::Pass pass = north_crossing_pass(m, iss);
+  Station st(m, orbit::add_minutes(pass.aos, -6.0));
+  st.loop->set_rotor_control(true);
+  st.tracker.track_single(iss);
+  FollowResult r;
+  double last_travel = -1.0;
+  while (st.now < pass.los) {
+    st.step(std::chrono::milliseconds(500));
+    const auto& s = st.loop->rotator().status();
+    REQUIRE(s.has_position);
+    CHECK(s.az.travel >= -0.5);
+    CHECK(s.az.travel <= 360.5);
+    if (last_travel >= 0) r.max_step = std::max(r.max_step, std::abs(s.az.travel - last_travel));
+    last_travel = s.az.travel;
+    const tracker::SatNow* f = st.tracker.followed();
+    REQUIRE(f);
+    if (st.now > orbit::add_minutes(pass.aos, 0.5) && f->obs.look.el_deg > 1.0 && f->obs.look.el_deg < 75.0) {
+      // The antenna's direction, unflipped when it points over the top.
+      double az = s.az.deg, el = s.el.deg;
+      if (el > 90.0) {
+        el = 180.0 - el;
+        az = std::fmod(az + 180.0, 360.0);
+      }
+      r.max_error = std::max(r.max_error, rotator::pointing_error_deg(az, el, f->obs.look.az_deg, f->obs.look.el_deg));
+      ++r.samples;
+    }
+  }
+  REQUIRE(st.loop->current_plan());
+  r.held_at_stop = st.loop->current_plan()->held_at_stop;
+  r.flip = st.loop->current_plan()->flip;
+  MESSAGE("rotor start " << std::string(station::to_string(start)) << std::string(flip_allowed ? " with flip" : "") << ", pass max el "
+                         << pass.max_el_deg << ": max pointing error " << r.max_error << " deg, max step "
+                         << r.max_step << " deg, held " << r.held_at_stop << ", flip " << r.flip);
+  return r;
+}
+
+// Dead band (3 counts of a full 1023-count span) plus what the ISS moves in one 0.5 s tick at 70 deg.
+const double kAllowedErrorDeg = 3 * 360.0 / 1023.0 + 2.0;
+// At 6 deg/s a 0.5 s tick moves 3 deg: anything larger would be a swing through the stop.
+const double kMaxStepDeg = 3.5;
+}  // namespace
+
+TEST_CASE("A real pass across the north: a South-start rotator follows it without touching the stop") {
+  const FollowResult r = follow(station::RotorStart::south, false);
+  CHECK(r.samples > 100);
+  CHECK(r.max_step < kMaxStepDeg);
+  CHECK(r.max_error < kAllowedErrorDeg);
+  CHECK_FALSE(r.held_at_stop);
+}
+
+TEST_CASE("A real pass across the north: a North-start rotator that may flip follows it over the top") {
+  const FollowResult r = follow(station::RotorStart::north, true);
+  CHECK(r.flip);
+  CHECK(r.max_step < kMaxStepDeg);
+  CHECK(r.max_error < kAllowedErrorDeg);
+}
+
+TEST_CASE("A real pass across the north: a North-start rotator without flip waits at the stop, never swings") {
+  const FollowResult r = follow(station::RotorStart::north, false);
+  CHECK(r.held_at_stop);
+  CHECK(r.max_step < kMaxStepDeg);  // no 360-degree swing while the satellite is up
+}
+
+TEST_CASE("Rotor control off: nothing moves; the radio is tuned while the satellite is up") {
+  store::Model m = shipped(station::RotorStart::south, 32.259, -110.778, 842.0);
+  const int iss = *m.db.find("ISS");
+  const orbit::Sgp4 sgp4(m.db.satellites[static_cast<std::size_t>(iss)].elements);
+  const auto p = orbit::next_pass(sgp4, m.station.observer(), orbit::from_civil(2026, 5, 21));
+  REQUIRE(p);
+  Station st(m, p->tca);
+  st.tracker.track_single(iss);
+  const auto before = st.rot->true_position();
+  for (int i = 0; i < 20; ++i) st.step(std::chrono::milliseconds(500));
+  CHECK(st.rot->true_position() == before);
+  // ISS downlink 437.800 MHz, AOS-only CAT: tuned near TCA, within the Doppler range, 10 Hz steps.
+  const auto rs = st.radio->status();
+  REQUIRE(rs.downlink_hz);
+  CHECK(std::abs(*rs.downlink_hz - 437800000) < 12000);
+  CHECK(*rs.downlink_hz % 10 == 0);
+}
