@@ -265,7 +265,7 @@ int run_tracker(const std::vector<std::string>& args) {
   std::unique_ptr<term::Terminal> terminal;
   if (const auto dev = o.value("tty")) {
     std::string err;
-    terminal = term::LineTerminal::open_serial(*dev, static_cast<int>(baud.value_or(9600)), wait, err);
+    terminal = term::LineTerminal::open_serial(*dev, static_cast<int>(baud.value_or(app.model().station.com_baud)), wait, err);
     if (!terminal) return usage_error(err);
   } else if (!o.has("line") && ::isatty(STDIN_FILENO) && ::isatty(STDOUT_FILENO) && std::getenv("TERM")) {
     terminal = std::make_unique<term::CursesTerminal>(wait);
