@@ -1,10 +1,24 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds with -Werror, runs every test through CTest,
-# then runs the unit tests again in an AddressSanitizer + UndefinedBehaviorSanitizer build.
+# Installs what is missing, builds with -Werror, runs every test through CTest (unit and
+# integration), then builds the unit tests again with AddressSanitizer + UndefinedBehaviorSanitizer
+# and runs them.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
+jobs=$(nproc)
+
+start=$SECONDS
 scripts/build.sh build -DTRAKBOX_WERROR=ON
-(cd build && ctest --output-on-failure -j"$(nproc)")
-scripts/build.sh build-asan -DTRAKBOX_WERROR=ON -DTRAKBOX_SANITIZE=ON -DTRAKBOX_BENCH=OFF -DCMAKE_BUILD_TYPE=Debug
-(cd build-asan && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j"$(nproc)" -L unit)
+echo "== build: $((SECONDS - start)) s"
+(cd build && ctest --output-on-failure -j"$jobs")
+echo "== tests: $((SECONDS - start)) s"
+
+cmake -S . -B build-asan -G Ninja -DTRAKBOX_WERROR=ON -DTRAKBOX_SANITIZE=ON -DTRAKBOX_BENCH=OFF \
+      -DCMAKE_BUILD_TYPE=Debug >/dev/null
+# Only the unit-test programs: the sanitizer pass runs the unit tests.
+mapfile -t unit_targets < <(cmake --build build-asan --target help | sed -n 's/^\(unit_[a-z_]*\):.*/\1/p')
+cmake --build build-asan -j"$jobs" --target "${unit_targets[@]}"
+echo "== sanitizer build: $((SECONDS - start)) s"
+(cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+   ctest --output-on-failure -j"$jobs" -L unit)
+echo "== all done: $((SECONDS - start)) s"
