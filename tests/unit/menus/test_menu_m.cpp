@@ -1,7 +1,7 @@
 // Menu M (multiple tracking) and the tracker's multi-tracking rules, on the shipped database from
-// the fixture's station (27.391 N). The pass times below were found with orbit::find_passes from
-// that station (horizon -2.0 deg); the tests re-check each one they rely on, so a change of the
-// shipped elements fails loudly here instead of silently testing nothing.
+// the fixture's station (27.391 N, 128.657 E). The pass times below were found with
+// orbit::find_passes from that station (horizon -2.0 deg); the tests re-check each one they rely
+// on, so a change of the shipped elements fails loudly here instead of silently testing nothing.
 //
 // Tracking list: #1 AO-07  #2 AO-27  #3 FO-29  #4 ISS  #5 SO-50 ...
 #include <doctest/doctest.h>
