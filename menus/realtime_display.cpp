@@ -30,6 +30,22 @@ std::string format_realtime_row(const tracker::SatNow& n) {
   return buf;
 }
 
+std::string format_multi_row(const tracker::SatNow& n, char marker) {
+  char buf[160];
+  if (!n.obs.ok()) {
+    std::snprintf(buf, sizeof buf, "%3d.%c%-10.10s  no position: %s", n.list_number, marker, n.name.c_str(),
+                  orbit::describe(n.obs.error));
+    return buf;
+  }
+  std::string next;
+  if (n.in_range) next = "AOS now";
+  else if (n.pass) next = format_time(n.pass->aos);
+  else next = "none in 24h";
+  std::snprintf(buf, sizeof buf, "%3d.%c%-10.10s%8.2f%8.2f%9.1f  %-3s  %s", n.list_number, marker, n.name.c_str(),
+                n.obs.look.az_deg, n.obs.look.el_deg, n.obs.look.range_km, n.in_range ? "AOS" : "", next.c_str());
+  return buf;
+}
+
 std::string aos_indicator(bool in_range, bool rotor_control, orbit::UtcTime now) {
   if (!in_range) return "   ";
   if (rotor_control) return "AOS";
@@ -100,12 +116,17 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
   t.line("'E' Toggle rotor control  'Y' RTC zero adjust  'Q' Return to main menu");
   t.line("'+/-/0' Doppler compensation");
   std::optional<int> shown;
+  bool was_in_range = false;       // the shown satellite was AOS on the last update
   orbit::UtcTime graphics_pass{};  // AOS of the pass last drawn (epoch: none)
   for (;;) {
     s.station.tick();  // fresh numbers at once, not a second late
-    const tracker::SatNow* f = s.tracker.followed();
+    const tracker::SatNow* followed = s.tracker.followed();
+    const tracker::SatNow* f = followed;
     if (!f && !s.tracker.candidates().empty()) f = &s.tracker.candidates().front();
-    if (exit_on_change && shown && (!f || f->db_index != *shown)) {
+    // Multiple tracking shows a satellite only while it is AOS: leave when the tracker follows
+    // another one, none (the fallback above must not hide that), or this one has gone LOS.
+    if (exit_on_change && shown &&
+        (!followed || followed->db_index != *shown || (was_in_range && !followed->in_range))) {
       t.end_live();
       return RealtimeExit::followed_changed;
     }
@@ -117,6 +138,7 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
       shown = f->db_index;
       graphics_pass = orbit::UtcTime{};
     }
+    was_in_range = f && f->in_range;
     if (f) {
       std::string row = format_realtime_row(*f) + "  " + aos_indicator(f->in_range, s.model.rotor_control, f->obs.time);
       while (row.back() == ' ') row.pop_back();

@@ -25,9 +25,21 @@ std::string aos_indicator(bool in_range, bool rotor_control, orbit::UtcTime now)
 enum class RealtimeExit { quit, followed_changed };
 
 // Shows the tracker's followed satellite live until Q (or, with exit_on_change, until the tracker
-// follows another satellite). Handles E, Y, + / - / 0. `marker` is shown before the name
+// follows another satellite or none, or the one shown goes LOS: multiple tracking's realtime display
+// lasts while its satellite is AOS). Handles E, Y, + / - / 0. `marker` is shown before the name
 // ('*' single, '!' multiple normal, '&' multiple priority).
 RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, bool exit_on_change = false);
+
+// Multiple tracking (menu M): one row of the table of the N multi-tracked satellites,
+//    No. Satellite    Azim.   Elev.    Range  In   Next AOS
+//                       deg     deg       Km  rng  UTC
+//     2.!AO-27       133.20   -1.52   3012.4  AOS  AOS now
+// list number, marker (or a space), name (10 characters), azimuth, elevation, range, "AOS" while
+// in range (elevation >= -2.0 deg), then "AOS now", the next AOS time (HH:MM:SS; the tracker looks
+// a day ahead), "none in 24h", or "no position" when the elements cannot be propagated.
+std::string format_multi_row(const tracker::SatNow& n, char marker);
+inline constexpr const char* kMultiHeader1 = " No. Satellite    Azim.   Elev.    Range  In   Next AOS";
+inline constexpr const char* kMultiHeader2 = "                    deg     deg       Km  rng  UTC";
 
 // The satellite names of the tracking list, for the selection screens.
 std::vector<std::string> tracking_list_names(const Services& s);
