@@ -22,14 +22,11 @@ bool ask_yes_no(term::Terminal& t, std::string_view prompt) {
 }
 
 char ask_key(term::Terminal& t, std::string_view prompt, std::string_view keys, bool allow_enter) {
-  for (;;) {
-    t.write(prompt);
-    t.flush();
-    const auto c = t.read_choice();
-    if (!c) throw InputClosed{};
-    if (*c == '\r' && allow_enter) return '\r';
-    if (*c != '\r' && keys.find(*c) != std::string_view::npos) return *c;
-  }
+  t.write(prompt);
+  t.flush();
+  const auto c = t.read_choice(keys, allow_enter);  // other keys (and Enter, unless allowed) are ignored
+  if (!c) throw InputClosed{};
+  return *c;
 }
 
 namespace {

@@ -5,12 +5,26 @@
 namespace tb::term {
 
 int Terminal::read_key(std::optional<Duration> timeout) {
-  if (!pending_.empty()) {
-    const int k = pending_.front();
-    pending_.erase(pending_.begin());
+  for (;;) {
+    int k;
+    if (!pending_.empty()) {
+      k = pending_.front();
+      pending_.erase(pending_.begin());
+    } else {
+      k = next_key(timeout);
+    }
+    if (k == kTimeout) return k;
+    if (swallow_ == Swallow::line_end && k == '\r') {
+      swallow_ = Swallow::lf;
+      continue;
+    }
+    if (swallow_ != Swallow::none && k == '\n') {
+      swallow_ = Swallow::none;
+      continue;
+    }
+    swallow_ = Swallow::none;
     return k;
   }
-  return next_key(timeout);
 }
 
 std::optional<std::string> Terminal::read_line(std::size_t max_length) {
@@ -47,21 +61,24 @@ std::optional<std::string> Terminal::read_line(std::size_t max_length) {
   }
 }
 
-std::optional<char> Terminal::read_choice() {
+std::optional<char> Terminal::read_choice(std::string_view accept, bool allow_enter) {
   for (;;) {
     const int k = read_key();
     if (k == kEndOfInput) return std::nullopt;
     if (k == '\n') continue;  // the tail of a CRLF from the previous answer
     if (k == '\r') {
+      if (!allow_enter) continue;
       write("\n");
       flush();
       return '\r';
     }
     if (k < 32 || k > 126) continue;
     const char c = static_cast<char>(std::toupper(k));
+    if (!accept.empty() && accept.find(c) == std::string_view::npos) continue;
     write(std::string_view(&c, 1));
     write("\n");
     flush();
+    swallow_ = Swallow::line_end;
     return c;
   }
 }

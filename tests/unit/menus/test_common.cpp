@@ -92,3 +92,15 @@ TEST_CASE("Sky plot and world map drawings") {
   CHECK(land > 72 * 18 / 5);  // about a quarter of the Earth's surface shows as land
   CHECK(land < 72 * 18 / 2);
 }
+
+TEST_CASE("A line end typed after a single-key answer belongs to that answer") {
+  // "Y <ENTER>" then the next prompt's own answer: the Enter after Y must not reach edit_text.
+  term::ScriptTerminal t("Y\r\n90\rN\r");
+  CHECK(ask_yes_no(t, "Set Antenna Parking position ? [Y/N] "));
+  CHECK(edit_text(t, "Azimuth Parking value", "0.0") == "90");
+  CHECK_FALSE(ask_yes_no(t, "Again ? [Y/N] "));
+  // Enter alone at a key question without an Enter choice is ignored, not an answer.
+  term::ScriptTerminal u("\rA");
+  CHECK(ask_key(u, "File format NASA/AMSAT (N/A) : ", "NA") == 'A');
+  CHECK(u.output() == "File format NASA/AMSAT (N/A) : A\n");
+}
