@@ -1,0 +1,959 @@
+// SGP4/SDP4 after Vallado, Crawford, Hujsak, Kelso, "Revisiting Spacetrack Report #3"
+// (AIAA 2006-6753), WGS-72 constants, improved operation mode. See docs/sgp4.md.
+//
+// Variable names follow the paper's code (ecco, nodeo, cc1, xlcof, d2201, ...) so that every line can
+// be checked against it; the structure is ours: everything that depends only on the element set is
+// computed once in the constructor and held in an immutable Model, and propagate_minutes() is a pure
+// function of that model and the time. The deep-space resonance integrator restarts from epoch on
+// every call; with its fixed 720-minute steps that produces the same numbers as the paper's cached
+// integrator, without mutable state.
+#include "orbit/sgp4.h"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace tb::orbit {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kTwoPi = 2.0 * kPi;
+constexpr double kDegToRad = kPi / 180.0;
+constexpr double kTwoThirds = 2.0 / 3.0;
+
+// WGS-72 as used by SGP4 ("wgs72", not the older "wgs72old" with a rounded xke).
+constexpr double kMu = 398600.8;               // km^3/s^2
+constexpr double kEarthRadiusKm = 6378.135;    // km
+// xke = 60 / sqrt(R^3 / mu), in (earth radii)^1.5 per minute. Written out because std::sqrt is not
+// constexpr in C++20; the literal is the double nearest to that expression (the unit test checks it).
+constexpr double kXke = 0x1.309b5d0b2444cp-4;  // 0.07436691613317342
+constexpr double kMinutesPerTimeUnit = 1.0 / kXke;  // tumin
+constexpr double kJ2 = 0.001082616;
+constexpr double kJ3 = -0.00000253881;
+constexpr double kJ4 = -0.00000165597;
+constexpr double kJ3OverJ2 = kJ3 / kJ2;
+constexpr double kKmPerSecPerErPerMin = kEarthRadiusKm * kXke / 60.0;  // velocity unit
+
+// Element-set units: rev/day -> rad/min.
+constexpr double kRevPerDayPerRadPerMin = 1440.0 / kTwoPi;  // xpdotp
+
+// Below this |1 + cos i| the J3 long-period terms use a fixed divisor (i = 180 deg guard).
+constexpr double kRetrogradeGuard = 1.5e-12;
+// Orbits with a period of 225 minutes or more get the deep-space (SDP4) treatment.
+constexpr double kDeepSpacePeriodMinutes = 225.0;
+// Julian date of 1949 Dec 31 00:00 UT, the origin of SGP4's "epoch" day count.
+constexpr double kSgp4EpochJd = 2433281.5;
+
+// Lunar and solar constants.
+constexpr double kSolarMeanMotion = 1.19459e-5;   // zns, rad/min
+constexpr double kSolarEccentricity = 0.01675;    // zes
+constexpr double kLunarMeanMotion = 1.5835218e-4; // znl, rad/min
+constexpr double kLunarEccentricity = 0.05490;    // zel
+
+// Earth rotation rate, rad/min (7.29211514668855e-5 rad/s).
+constexpr double kEarthRotationRadPerMin = 4.37526908801129966e-3;  // rptim
+
+// Resonance integrator step (minutes) and its half-square (step^2 / 2).
+constexpr double kResonanceStep = 720.0;
+constexpr double kResonanceStepSquaredHalf = 259200.0;
+
+// Fraction part as C's fmod (keeps the sign of x), which the reference uses throughout.
+inline double wrap_two_pi(double x) { return std::fmod(x, kTwoPi); }
+
+struct SinCos {
+  double s, c;
+};
+inline SinCos sin_cos(double x) { return {std::sin(x), std::cos(x)}; }
+
+// Greenwich mean sidereal time (IAU-82) from a single Julian date, as the reference computes the
+// sidereal angle at epoch. Kept separate from gmst82() so that the SDP4 resonance phase uses the
+// very same arithmetic as the published code.
+double gstime(double jdut1) {
+  const double tut1 = (jdut1 - 2451545.0) / 36525.0;
+  double temp = -6.2e-6 * tut1 * tut1 * tut1 + 0.093104 * tut1 * tut1 +
+                (876600.0 * 3600 + 8640184.812866) * tut1 + 67310.54841;  // seconds
+  temp = std::fmod(temp * kDegToRad / 240.0, kTwoPi);
+  if (temp < 0.0) temp += kTwoPi;
+  return temp;
+}
+
+// The epoch as the reference's TLE reader computes it: day of year -> month, day, h, m, s, then a
+// Julian date split into a day boundary and a fraction.
+JulianDate element_epoch(int year, double day_of_year) {
+  int month_days[13] = {0, 31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+  const int day_number = static_cast<int>(std::floor(day_of_year));
+  if (year % 4 == 0) month_days[2] = 29;
+  int month = 1;
+  int days_before = 0;
+  while (day_number > days_before + month_days[month] && month < 12) {
+    days_before += month_days[month];
+    ++month;
+  }
+  const int day = day_number - days_before;
+  double temp = (day_of_year - day_number) * 24.0;
+  const int hour = static_cast<int>(std::floor(temp));
+  temp = (temp - hour) * 60.0;
+  const int minute = static_cast<int>(std::floor(temp));
+  const double second = (temp - minute) * 60.0;
+
+  JulianDate jd;
+  jd.whole = 367.0 * year - std::floor((7 * (year + std::floor((month + 9) / 12.0))) * 0.25) +
+             std::floor(275 * month / 9.0) + day + 1721013.5;
+  jd.fraction = (second + minute * 60.0 + hour * 3600.0) / 86400.0;
+  if (std::fabs(jd.fraction) > 1.0) {
+    const double whole_days = std::floor(jd.fraction);
+    jd.whole += whole_days;
+    jd.fraction -= whole_days;
+  }
+  return jd;
+}
+
+enum class Resonance { none, one_day, half_day };
+
+// Coefficients of the lunar-solar long-period periodics (zero at epoch by construction).
+struct LunarSolarPeriodics {
+  double e3 = 0, ee2 = 0, se2 = 0, se3 = 0, sgh2 = 0, sgh3 = 0, sgh4 = 0, sh2 = 0, sh3 = 0;
+  double si2 = 0, si3 = 0, sl2 = 0, sl3 = 0, sl4 = 0;
+  double xgh2 = 0, xgh3 = 0, xgh4 = 0, xh2 = 0, xh3 = 0, xi2 = 0, xi3 = 0, xl2 = 0, xl3 = 0, xl4 = 0;
+  double zmol = 0, zmos = 0;  // lunar and solar mean anomalies at epoch
+};
+
+// Everything of the deep-space common terms that the secular-rate and resonance set-up needs.
+struct DeepSpaceCommon {
+  double sinim, cosim, emsq;
+  double s1, s2, s3, s4, s5;         // lunar
+  double ss1, ss2, ss3, ss4, ss5;    // solar
+  double z1, z3, z11, z13, z21, z23, z31, z33;
+  double sz1, sz3, sz11, sz13, sz21, sz23, sz31, sz33;
+};
+
+// The deep-space (SDP4) part of the model.
+struct DeepSpace {
+  LunarSolarPeriodics periodics;
+  // Secular lunar-solar rates of e, i, M, node, argument of perigee (per minute).
+  double dedt = 0, didt = 0, dmdt = 0, dnodt = 0, domdt = 0;
+  double gsto = 0;  // Greenwich sidereal angle at epoch, rad
+  Resonance resonance = Resonance::none;
+  // Half-day resonance coefficients.
+  double d2201 = 0, d2211 = 0, d3210 = 0, d3222 = 0, d4410 = 0, d4422 = 0;
+  double d5220 = 0, d5232 = 0, d5421 = 0, d5433 = 0;
+  // One-day (synchronous) resonance coefficients.
+  double del1 = 0, del2 = 0, del3 = 0;
+  double xfact = 0, xlamo = 0;
+};
+
+// Lunar-solar terms common to the secular and periodic deep-space effects, at epoch.
+DeepSpaceCommon deep_space_common(double epoch, double ep, double argpp, double inclp, double nodep,
+                                  double np, LunarSolarPeriodics& out) {
+  constexpr double c1ss = 2.9864797e-6;
+  constexpr double c1l = 4.7968065e-7;
+  constexpr double zsinis = 0.39785416;
+  constexpr double zcosis = 0.91744867;
+  constexpr double zcosgs = 0.1945905;
+  constexpr double zsings = -0.98088458;
+
+  DeepSpaceCommon c{};
+  const double snodm = std::sin(nodep);
+  const double cnodm = std::cos(nodep);
+  const double sinomm = std::sin(argpp);
+  const double cosomm = std::cos(argpp);
+  c.sinim = std::sin(inclp);
+  c.cosim = std::cos(inclp);
+  const double em = ep;
+  c.emsq = em * em;
+  const double betasq = 1.0 - c.emsq;
+  const double rtemsq = std::sqrt(betasq);
+
+  const double day = epoch + 18261.5;  // days since 1900 Jan 0.5
+  const double xnodce = std::fmod(4.5236020 - 9.2422029e-4 * day, kTwoPi);
+  const double stem = std::sin(xnodce);
+  const double ctem = std::cos(xnodce);
+  const double zcosil = 0.91375164 - 0.03568096 * ctem;
+  const double zsinil = std::sqrt(1.0 - zcosil * zcosil);
+  const double zsinhl = 0.089683511 * stem / zsinil;
+  const double zcoshl = std::sqrt(1.0 - zsinhl * zsinhl);
+  const double gam = 5.8351514 + 0.0019443680 * day;
+  double zx = 0.39785416 * stem / zsinil;
+  const double zy = zcoshl * ctem + 0.91744867 * zsinhl * stem;
+  zx = std::atan2(zx, zy);
+  zx = gam + zx - xnodce;
+  const double zcosgl = std::cos(zx);
+  const double zsingl = std::sin(zx);
+
+  // Two passes: the Sun (third body with the ecliptic orientation), then the Moon.
+  double zcosg = zcosgs, zsing = zsings, zcosi = zcosis, zsini = zsinis;
+  double zcosh = cnodm, zsinh = snodm;
+  double cc = c1ss;
+  const double xnoi = 1.0 / np;
+  double s1 = 0, s2 = 0, s3 = 0, s4 = 0, s5 = 0, s6 = 0, s7 = 0;
+  double z1 = 0, z2 = 0, z3 = 0, z11 = 0, z12 = 0, z13 = 0, z21 = 0, z22 = 0, z23 = 0;
+  double z31 = 0, z32 = 0, z33 = 0;
+  double ss1 = 0, ss2 = 0, ss3 = 0, ss4 = 0, ss6 = 0, ss7 = 0;
+  double sz1 = 0, sz2 = 0, sz3 = 0, sz11 = 0, sz12 = 0, sz13 = 0, sz21 = 0, sz22 = 0, sz23 = 0;
+  double sz31 = 0, sz32 = 0, sz33 = 0;
+  for (int body = 0; body < 2; ++body) {
+    const double a1 = zcosg * zcosh + zsing * zcosi * zsinh;
+    const double a3 = -zsing * zcosh + zcosg * zcosi * zsinh;
+    const double a7 = -zcosg * zsinh + zsing * zcosi * zcosh;
+    const double a8 = zsing * zsini;
+    const double a9 = zsing * zsinh + zcosg * zcosi * zcosh;
+    const double a10 = zcosg * zsini;
+    const double a2 = c.cosim * a7 + c.sinim * a8;
+    const double a4 = c.cosim * a9 + c.sinim * a10;
+    const double a5 = -c.sinim * a7 + c.cosim * a8;
+    const double a6 = -c.sinim * a9 + c.cosim * a10;
+
+    const double x1 = a1 * cosomm + a2 * sinomm;
+    const double x2 = a3 * cosomm + a4 * sinomm;
+    const double x3 = -a1 * sinomm + a2 * cosomm;
+    const double x4 = -a3 * sinomm + a4 * cosomm;
+    const double x5 = a5 * sinomm;
+    const double x6 = a6 * sinomm;
+    const double x7 = a5 * cosomm;
+    const double x8 = a6 * cosomm;
+
+    z31 = 12.0 * x1 * x1 - 3.0 * x3 * x3;
+    z32 = 24.0 * x1 * x2 - 6.0 * x3 * x4;
+    z33 = 12.0 * x2 * x2 - 3.0 * x4 * x4;
+    z1 = 3.0 * (a1 * a1 + a2 * a2) + z31 * c.emsq;
+    z2 = 6.0 * (a1 * a3 + a2 * a4) + z32 * c.emsq;
+    z3 = 3.0 * (a3 * a3 + a4 * a4) + z33 * c.emsq;
+    z11 = -6.0 * a1 * a5 + c.emsq * (-24.0 * x1 * x7 - 6.0 * x3 * x5);
+    z12 = -6.0 * (a1 * a6 + a3 * a5) +
+          c.emsq * (-24.0 * (x2 * x7 + x1 * x8) - 6.0 * (x3 * x6 + x4 * x5));
+    z13 = -6.0 * a3 * a6 + c.emsq * (-24.0 * x2 * x8 - 6.0 * x4 * x6);
+    z21 = 6.0 * a2 * a5 + c.emsq * (24.0 * x1 * x5 - 6.0 * x3 * x7);
+    z22 = 6.0 * (a4 * a5 + a2 * a6) +
+          c.emsq * (24.0 * (x2 * x5 + x1 * x6) - 6.0 * (x4 * x7 + x3 * x8));
+    z23 = 6.0 * a4 * a6 + c.emsq * (24.0 * x2 * x6 - 6.0 * x4 * x8);
+    z1 = z1 + z1 + betasq * z31;
+    z2 = z2 + z2 + betasq * z32;
+    z3 = z3 + z3 + betasq * z33;
+    s3 = cc * xnoi;
+    s2 = -0.5 * s3 / rtemsq;
+    s4 = s3 * rtemsq;
+    s1 = -15.0 * em * s4;
+    s5 = x1 * x3 + x2 * x4;
+    s6 = x2 * x3 + x1 * x4;
+    s7 = x2 * x4 - x1 * x3;
+
+    if (body == 0) {  // keep the solar terms, set up the lunar pass
+      ss1 = s1; ss2 = s2; ss3 = s3; ss4 = s4; c.ss5 = s5; ss6 = s6; ss7 = s7;
+      sz1 = z1; sz2 = z2; sz3 = z3;
+      sz11 = z11; sz12 = z12; sz13 = z13;
+      sz21 = z21; sz22 = z22; sz23 = z23;
+      sz31 = z31; sz32 = z32; sz33 = z33;
+      zcosg = zcosgl;
+      zsing = zsingl;
+      zcosi = zcosil;
+      zsini = zsinil;
+      zcosh = zcoshl * cnodm + zsinhl * snodm;
+      zsinh = snodm * zcoshl - cnodm * zsinhl;
+      cc = c1l;
+    }
+  }
+
+  LunarSolarPeriodics& p = out;
+  p.zmol = std::fmod(4.7199672 + 0.22997150 * day - gam, kTwoPi);
+  p.zmos = std::fmod(6.2565837 + 0.017201977 * day, kTwoPi);
+
+  p.se2 = 2.0 * ss1 * ss6;
+  p.se3 = 2.0 * ss1 * ss7;
+  p.si2 = 2.0 * ss2 * sz12;
+  p.si3 = 2.0 * ss2 * (sz13 - sz11);
+  p.sl2 = -2.0 * ss3 * sz2;
+  p.sl3 = -2.0 * ss3 * (sz3 - sz1);
+  p.sl4 = -2.0 * ss3 * (-21.0 - 9.0 * c.emsq) * kSolarEccentricity;
+  p.sgh2 = 2.0 * ss4 * sz32;
+  p.sgh3 = 2.0 * ss4 * (sz33 - sz31);
+  p.sgh4 = -18.0 * ss4 * kSolarEccentricity;
+  p.sh2 = -2.0 * ss2 * sz22;
+  p.sh3 = -2.0 * ss2 * (sz23 - sz21);
+
+  p.ee2 = 2.0 * s1 * s6;
+  p.e3 = 2.0 * s1 * s7;
+  p.xi2 = 2.0 * s2 * z12;
+  p.xi3 = 2.0 * s2 * (z13 - z11);
+  p.xl2 = -2.0 * s3 * z2;
+  p.xl3 = -2.0 * s3 * (z3 - z1);
+  p.xl4 = -2.0 * s3 * (-21.0 - 9.0 * c.emsq) * kLunarEccentricity;
+  p.xgh2 = 2.0 * s4 * z32;
+  p.xgh3 = 2.0 * s4 * (z33 - z31);
+  p.xgh4 = -18.0 * s4 * kLunarEccentricity;
+  p.xh2 = -2.0 * s2 * z22;
+  p.xh3 = -2.0 * s2 * (z23 - z21);
+
+  c.s1 = s1; c.s2 = s2; c.s3 = s3; c.s4 = s4; c.s5 = s5;
+  c.ss1 = ss1; c.ss2 = ss2; c.ss3 = ss3; c.ss4 = ss4;
+  c.z1 = z1; c.z3 = z3; c.z11 = z11; c.z13 = z13; c.z21 = z21; c.z23 = z23; c.z31 = z31; c.z33 = z33;
+  c.sz1 = sz1; c.sz3 = sz3; c.sz11 = sz11; c.sz13 = sz13; c.sz21 = sz21; c.sz23 = sz23;
+  c.sz31 = sz31; c.sz33 = sz33;
+  return c;
+}
+
+// Epoch quantities the deep-space set-up takes from the near-earth initialisation.
+struct DeepSpaceInputs {
+  double ecco, eccsq, inclo, argpo, mo, nodeo, no;  // mean elements (no un-Kozai'd)
+  double mdot, nodedot, xpidot;                     // secular rates
+};
+
+// Secular lunar-solar rates and the geopotential resonance terms (half-day and one-day orbits).
+void deep_space_secular(const DeepSpaceInputs& in, const DeepSpaceCommon& c, DeepSpace& ds) {
+  constexpr double q22 = 1.7891679e-6;
+  constexpr double q31 = 2.1460748e-6;
+  constexpr double q33 = 2.2123015e-7;
+  constexpr double root22 = 1.7891679e-6;
+  constexpr double root44 = 7.3636953e-9;
+  constexpr double root54 = 2.1765803e-9;
+  constexpr double root32 = 3.7393792e-7;
+  constexpr double root52 = 1.1428639e-7;
+  constexpr double kNearEquatorial = 5.2359877e-2;  // 3 deg: no node rate from the Sun/Moon
+
+  const double nm = in.no;
+  const double em = in.ecco;
+  const double sinim = c.sinim;
+  const double cosim = c.cosim;
+  const double emsq = c.emsq;
+
+  ds.resonance = Resonance::none;
+  if (nm < 0.0052359877 && nm > 0.0034906585) ds.resonance = Resonance::one_day;
+  if (nm >= 8.26e-3 && nm <= 9.24e-3 && em >= 0.5) ds.resonance = Resonance::half_day;
+
+  const bool near_equatorial = in.inclo < kNearEquatorial || in.inclo > kPi - kNearEquatorial;
+
+  // Solar.
+  const double ses = c.ss1 * kSolarMeanMotion * c.ss5;
+  const double sis = c.ss2 * kSolarMeanMotion * (c.sz11 + c.sz13);
+  const double sls = -kSolarMeanMotion * c.ss3 * (c.sz1 + c.sz3 - 14.0 - 6.0 * emsq);
+  const double sghs = c.ss4 * kSolarMeanMotion * (c.sz31 + c.sz33 - 6.0);
+  double shs = -kSolarMeanMotion * c.ss2 * (c.sz21 + c.sz23);
+  if (near_equatorial) shs = 0.0;
+  if (sinim != 0.0) shs = shs / sinim;
+  const double sgs = sghs - cosim * shs;
+
+  // Lunar.
+  ds.dedt = ses + c.s1 * kLunarMeanMotion * c.s5;
+  ds.didt = sis + c.s2 * kLunarMeanMotion * (c.z11 + c.z13);
+  ds.dmdt = sls - kLunarMeanMotion * c.s3 * (c.z1 + c.z3 - 14.0 - 6.0 * emsq);
+  const double sghl = c.s4 * kLunarMeanMotion * (c.z31 + c.z33 - 6.0);
+  double shll = -kLunarMeanMotion * c.s2 * (c.z21 + c.z23);
+  if (near_equatorial) shll = 0.0;
+  ds.domdt = sgs + sghl;
+  ds.dnodt = shs;
+  if (sinim != 0.0) {
+    ds.domdt = ds.domdt - cosim / sinim * shll;
+    ds.dnodt = ds.dnodt + shll / sinim;
+  }
+
+  if (ds.resonance == Resonance::none) return;
+
+  const double theta = std::fmod(ds.gsto, kTwoPi);
+  const double aonv = std::pow(nm / kXke, kTwoThirds);
+
+  if (ds.resonance == Resonance::half_day) {
+    const double cosisq = cosim * cosim;
+    // The eccentricity polynomials use the epoch eccentricity.
+    const double e = in.ecco;
+    const double esq = in.eccsq;
+    const double eoc = e * esq;
+    const double g201 = -0.306 - (e - 0.64) * 0.440;
+    double g211, g310, g322, g410, g422, g520, g521, g532, g533;
+    if (e <= 0.65) {
+      g211 = 3.616 - 13.2470 * e + 16.2900 * esq;
+      g310 = -19.302 + 117.3900 * e - 228.4190 * esq + 156.5910 * eoc;
+      g322 = -18.9068 + 109.7927 * e - 214.6334 * esq + 146.5816 * eoc;
+      g410 = -41.122 + 242.6940 * e - 471.0940 * esq + 313.9530 * eoc;
+      g422 = -146.407 + 841.8800 * e - 1629.014 * esq + 1083.4350 * eoc;
+      g520 = -532.114 + 3017.977 * e - 5740.032 * esq + 3708.2760 * eoc;
+    } else {
+      g211 = -72.099 + 331.819 * e - 508.738 * esq + 266.724 * eoc;
+      g310 = -346.844 + 1582.851 * e - 2415.925 * esq + 1246.113 * eoc;
+      g322 = -342.585 + 1554.908 * e - 2366.899 * esq + 1215.972 * eoc;
+      g410 = -1052.797 + 4758.686 * e - 7193.992 * esq + 3651.957 * eoc;
+      g422 = -3581.690 + 16178.110 * e - 24462.770 * esq + 12422.520 * eoc;
+      if (e > 0.715)
+        g520 = -5149.66 + 29936.92 * e - 54087.36 * esq + 31324.56 * eoc;
+      else
+        g520 = 1464.74 - 4664.75 * e + 3763.64 * esq;
+    }
+    if (e < 0.7) {
+      g533 = -919.22770 + 4988.6100 * e - 9064.7700 * esq + 5542.21 * eoc;
+      g521 = -822.71072 + 4568.6173 * e - 8491.4146 * esq + 5337.524 * eoc;
+      g532 = -853.66600 + 4690.2500 * e - 8624.7700 * esq + 5341.4 * eoc;
+    } else {
+      g533 = -37995.780 + 161616.52 * e - 229838.20 * esq + 109377.94 * eoc;
+      g521 = -51752.104 + 218913.95 * e - 309468.16 * esq + 146349.42 * eoc;
+      g532 = -40023.880 + 170470.89 * e - 242699.48 * esq + 115605.82 * eoc;
+    }
+
+    const double sini2 = sinim * sinim;
+    const double f220 = 0.75 * (1.0 + 2.0 * cosim + cosisq);
+    const double f221 = 1.5 * sini2;
+    const double f321 = 1.875 * sinim * (1.0 - 2.0 * cosim - 3.0 * cosisq);
+    const double f322 = -1.875 * sinim * (1.0 + 2.0 * cosim - 3.0 * cosisq);
+    const double f441 = 35.0 * sini2 * f220;
+    const double f442 = 39.3750 * sini2 * sini2;
+    const double f522 = 9.84375 * sinim *
+                        (sini2 * (1.0 - 2.0 * cosim - 5.0 * cosisq) +
+                         0.33333333 * (-2.0 + 4.0 * cosim + 6.0 * cosisq));
+    const double f523 = sinim * (4.92187512 * sini2 * (-2.0 - 4.0 * cosim + 10.0 * cosisq) +
+                                 6.56250012 * (1.0 + 2.0 * cosim - 3.0 * cosisq));
+    const double f542 = 29.53125 * sinim *
+                        (2.0 - 8.0 * cosim + cosisq * (-12.0 + 8.0 * cosim + 10.0 * cosisq));
+    const double f543 = 29.53125 * sinim *
+                        (-2.0 - 8.0 * cosim + cosisq * (12.0 + 8.0 * cosim - 10.0 * cosisq));
+    const double xno2 = nm * nm;
+    const double ainv2 = aonv * aonv;
+    double temp1 = 3.0 * xno2 * ainv2;
+    double temp = temp1 * root22;
+    ds.d2201 = temp * f220 * g201;
+    ds.d2211 = temp * f221 * g211;
+    temp1 = temp1 * aonv;
+    temp = temp1 * root32;
+    ds.d3210 = temp * f321 * g310;
+    ds.d3222 = temp * f322 * g322;
+    temp1 = temp1 * aonv;
+    temp = 2.0 * temp1 * root44;
+    ds.d4410 = temp * f441 * g410;
+    ds.d4422 = temp * f442 * g422;
+    temp1 = temp1 * aonv;
+    temp = temp1 * root52;
+    ds.d5220 = temp * f522 * g520;
+    ds.d5232 = temp * f523 * g532;
+    temp = 2.0 * temp1 * root54;
+    ds.d5421 = temp * f542 * g521;
+    ds.d5433 = temp * f543 * g533;
+    ds.xlamo = std::fmod(in.mo + in.nodeo + in.nodeo - theta - theta, kTwoPi);
+    ds.xfact = in.mdot + ds.dmdt + 2.0 * (in.nodedot + ds.dnodt - kEarthRotationRadPerMin) - in.no;
+  } else {  // one-day (geosynchronous) resonance
+    const double g200 = 1.0 + emsq * (-2.5 + 0.8125 * emsq);
+    const double g310 = 1.0 + 2.0 * emsq;
+    const double g300 = 1.0 + emsq * (-6.0 + 6.60937 * emsq);
+    const double f220 = 0.75 * (1.0 + cosim) * (1.0 + cosim);
+    const double f311 = 0.9375 * sinim * sinim * (1.0 + 3.0 * cosim) - 0.75 * (1.0 + cosim);
+    double f330 = 1.0 + cosim;
+    f330 = 1.875 * f330 * f330 * f330;
+    double del1 = 3.0 * nm * nm * aonv * aonv;
+    ds.del2 = 2.0 * del1 * f220 * g200 * q22;
+    ds.del3 = 3.0 * del1 * f330 * g300 * q33 * aonv;
+    del1 = del1 * f311 * g310 * q31 * aonv;
+    ds.del1 = del1;
+    ds.xlamo = std::fmod(in.mo + in.nodeo + in.argpo - theta, kTwoPi);
+    ds.xfact = in.mdot + in.xpidot - kEarthRotationRadPerMin + ds.dmdt + ds.domdt + ds.dnodt - in.no;
+  }
+}
+
+// Mean elements as they evolve between the secular update and the periodics.
+struct MeanElements {
+  double em, argpm, inclm, mm, nodem, nm;
+};
+
+// Secular lunar-solar drift plus, for resonant orbits, the numerically integrated mean longitude
+// and mean motion. The integrator always starts at epoch and steps 720 minutes towards t.
+void deep_space_drift(const DeepSpace& ds, double no, double argpo, double argpdot, double t,
+                      MeanElements& m) {
+  constexpr double fasx2 = 0.13130908;
+  constexpr double fasx4 = 2.8843198;
+  constexpr double fasx6 = 0.37448087;
+  constexpr double g22 = 5.7686396;
+  constexpr double g32 = 0.95240898;
+  constexpr double g44 = 1.8014998;
+  constexpr double g52 = 1.0508330;
+  constexpr double g54 = 4.4108898;
+
+  m.em = m.em + ds.dedt * t;
+  m.inclm = m.inclm + ds.didt * t;
+  m.argpm = m.argpm + ds.domdt * t;
+  m.nodem = m.nodem + ds.dnodt * t;
+  m.mm = m.mm + ds.dmdt * t;
+  if (ds.resonance == Resonance::none) return;
+
+  const double theta = std::fmod(ds.gsto + t * kEarthRotationRadPerMin, kTwoPi);
+  double atime = 0.0;
+  double xni = no;
+  double xli = ds.xlamo;
+  const double delt = t > 0.0 ? kResonanceStep : -kResonanceStep;
+  double xndt, xldot, xnddt, ft;
+  for (;;) {
+    if (ds.resonance == Resonance::one_day) {
+      const SinCos a = sin_cos(xli - fasx2);
+      const SinCos b = sin_cos(2.0 * (xli - fasx4));
+      const SinCos c = sin_cos(3.0 * (xli - fasx6));
+      xndt = ds.del1 * a.s + ds.del2 * b.s + ds.del3 * c.s;
+      xldot = xni + ds.xfact;
+      xnddt = ds.del1 * a.c + 2.0 * ds.del2 * b.c + 3.0 * ds.del3 * c.c;
+      xnddt = xnddt * xldot;
+    } else {
+      const double xomi = argpo + argpdot * atime;
+      const double x2omi = xomi + xomi;
+      const double x2li = xli + xli;
+      const SinCos a = sin_cos(x2omi + xli - g22);
+      const SinCos b = sin_cos(xli - g22);
+      const SinCos c = sin_cos(xomi + xli - g32);
+      const SinCos d = sin_cos(-xomi + xli - g32);
+      const SinCos e = sin_cos(x2omi + x2li - g44);
+      const SinCos f = sin_cos(x2li - g44);
+      const SinCos g = sin_cos(xomi + xli - g52);
+      const SinCos h = sin_cos(-xomi + xli - g52);
+      const SinCos i = sin_cos(xomi + x2li - g54);
+      const SinCos j = sin_cos(-xomi + x2li - g54);
+      xndt = ds.d2201 * a.s + ds.d2211 * b.s + ds.d3210 * c.s + ds.d3222 * d.s + ds.d4410 * e.s +
+             ds.d4422 * f.s + ds.d5220 * g.s + ds.d5232 * h.s + ds.d5421 * i.s + ds.d5433 * j.s;
+      xldot = xni + ds.xfact;
+      xnddt = ds.d2201 * a.c + ds.d2211 * b.c + ds.d3210 * c.c + ds.d3222 * d.c + ds.d5220 * g.c +
+              ds.d5232 * h.c +
+              2.0 * (ds.d4410 * e.c + ds.d4422 * f.c + ds.d5421 * i.c + ds.d5433 * j.c);
+      xnddt = xnddt * xldot;
+    }
+    if (std::fabs(t - atime) < kResonanceStep) {
+      ft = t - atime;
+      break;
+    }
+    xli = xli + xldot * delt + xndt * kResonanceStepSquaredHalf;
+    xni = xni + xndt * delt + xnddt * kResonanceStepSquaredHalf;
+    atime = atime + delt;
+  }
+
+  const double nm = xni + xndt * ft + xnddt * ft * ft * 0.5;
+  const double xl = xli + xldot * ft + xndt * ft * ft * 0.5;
+  if (ds.resonance == Resonance::half_day)
+    m.mm = xl - 2.0 * m.nodem + 2.0 * theta;
+  else
+    m.mm = xl - m.nodem - m.argpm + theta;
+  const double dndt = nm - no;
+  m.nm = no + dndt;
+}
+
+// Osculating elements after the lunar-solar periodics.
+struct PerturbedElements {
+  double ep, inclp, nodep, argpp, mp;
+  double sinip, cosip;  // of inclp
+};
+
+void lunar_solar_periodics(const LunarSolarPeriodics& p, double t, PerturbedElements& x) {
+  double zm = p.zmos + kSolarMeanMotion * t;
+  double zf = zm + 2.0 * kSolarEccentricity * std::sin(zm);
+  SinCos z = sin_cos(zf);
+  double f2 = 0.5 * z.s * z.s - 0.25;
+  double f3 = -0.5 * z.s * z.c;
+  const double ses = p.se2 * f2 + p.se3 * f3;
+  const double sis = p.si2 * f2 + p.si3 * f3;
+  const double sls = p.sl2 * f2 + p.sl3 * f3 + p.sl4 * z.s;
+  const double sghs = p.sgh2 * f2 + p.sgh3 * f3 + p.sgh4 * z.s;
+  const double shs = p.sh2 * f2 + p.sh3 * f3;
+  zm = p.zmol + kLunarMeanMotion * t;
+  zf = zm + 2.0 * kLunarEccentricity * std::sin(zm);
+  z = sin_cos(zf);
+  f2 = 0.5 * z.s * z.s - 0.25;
+  f3 = -0.5 * z.s * z.c;
+  const double sel = p.ee2 * f2 + p.e3 * f3;
+  const double sil = p.xi2 * f2 + p.xi3 * f3;
+  const double sll = p.xl2 * f2 + p.xl3 * f3 + p.xl4 * z.s;
+  const double sghl = p.xgh2 * f2 + p.xgh3 * f3 + p.xgh4 * z.s;
+  const double shll = p.xh2 * f2 + p.xh3 * f3;
+  const double pe = ses + sel;
+  const double pinc = sis + sil;
+  const double pl = sls + sll;
+  double pgh = sghs + sghl;
+  double ph = shs + shll;
+
+  x.inclp = x.inclp + pinc;
+  x.ep = x.ep + pe;
+  x.sinip = std::sin(x.inclp);
+  x.cosip = std::cos(x.inclp);
+
+  // Periodics applied directly above 0.2 rad of (perturbed) inclination, with Lyddane's
+  // modification below it.
+  if (x.inclp >= 0.2) {
+    ph = ph / x.sinip;
+    pgh = pgh - x.cosip * ph;
+    x.argpp = x.argpp + pgh;
+    x.nodep = x.nodep + ph;
+    x.mp = x.mp + pl;
+  } else {
+    const SinCos node = sin_cos(x.nodep);
+    double alfdp = x.sinip * node.s;
+    double betdp = x.sinip * node.c;
+    const double dalf = ph * node.c + pinc * x.cosip * node.s;
+    const double dbet = -ph * node.s + pinc * x.cosip * node.c;
+    alfdp = alfdp + dalf;
+    betdp = betdp + dbet;
+    x.nodep = std::fmod(x.nodep, kTwoPi);
+    double xls = x.mp + x.argpp + x.cosip * x.nodep;
+    const double dls = pl + pgh - pinc * x.nodep * x.sinip;
+    xls = xls + dls;
+    const double xnoh = x.nodep;
+    x.nodep = std::atan2(alfdp, betdp);
+    if (std::fabs(xnoh - x.nodep) > kPi) {
+      if (x.nodep < xnoh)
+        x.nodep = x.nodep + kTwoPi;
+      else
+        x.nodep = x.nodep - kTwoPi;
+    }
+    x.mp = x.mp + pl;
+    x.argpp = xls - x.mp - x.cosip * x.nodep;
+  }
+}
+
+Propagation failure(Sgp4Error e) {
+  Propagation p;
+  p.error = e;
+  return p;
+}
+
+}  // namespace
+
+// Every coefficient of the paper's satrec that depends only on the element set.
+struct Sgp4::Model {
+  // Mean elements at epoch: radians, un-Kozai'd mean motion in rad/min, bstar in 1/earth radii.
+  double ecco = 0, inclo = 0, nodeo = 0, argpo = 0, mo = 0, no_unkozai = 0, bstar = 0;
+  double sinio = 0, cosio = 0;
+  double ao = 0;          // (xke / no_unkozai)^(2/3), earth radii
+  double a = 0;           // semi-major axis reported to users, (no_unkozai * tumin)^(-2/3)
+  // Secular rates.
+  double mdot = 0, argpdot = 0, nodedot = 0;
+  // Drag.
+  double cc1 = 0, cc4 = 0, cc5 = 0, d2 = 0, d3 = 0, d4 = 0, delmo = 0, eta = 0, omgcof = 0;
+  double sinmao = 0, t2cof = 0, t3cof = 0, t4cof = 0, t5cof = 0, xmcof = 0, nodecf = 0;
+  // Long- and short-period gravity terms (near-earth; recomputed per call for deep space).
+  double aycof = 0, xlcof = 0, con41 = 0, x1mth2 = 0, x7thm1 = 0;
+  bool simplified_drag = false;  // isimp: perigee below 220 km, or deep space
+  bool deep_space = false;
+  DeepSpace ds;
+
+  // epoch: days since 1949 Dec 31 00:00 UT; no_kozai: mean motion from the element set, rad/min.
+  void initialise(double epoch, double no_kozai);
+  Propagation propagate(double tsince) const;
+};
+
+void Sgp4::Model::initialise(double epoch, double no_kozai) {
+  // Un-Kozai the mean motion and the epoch auxiliaries.
+  const double eccsq = ecco * ecco;
+  const double omeosq = 1.0 - eccsq;
+  const double rteosq = std::sqrt(omeosq);
+  cosio = std::cos(inclo);
+  const double cosio2 = cosio * cosio;
+  const double ak = std::pow(kXke / no_kozai, kTwoThirds);
+  const double d1 = 0.75 * kJ2 * (3.0 * cosio2 - 1.0) / (rteosq * omeosq);
+  double del = d1 / (ak * ak);
+  const double adel = ak * (1.0 - del * del - del * (1.0 / 3.0 + 134.0 * del * del / 81.0));
+  del = d1 / (adel * adel);
+  no_unkozai = no_kozai / (1.0 + del);
+
+  ao = std::pow(kXke / no_unkozai, kTwoThirds);
+  sinio = std::sin(inclo);
+  const double po = ao * omeosq;
+  const double con42 = 1.0 - 5.0 * cosio2;
+  con41 = -con42 - cosio2 - cosio2;
+  const double posq = po * po;
+  const double rp = ao * (1.0 - ecco);
+  const double gsto = gstime(epoch + kSgp4EpochJd);
+
+  a = std::pow(no_unkozai * kMinutesPerTimeUnit, -kTwoThirds);
+
+  // Atmospheric density parameters: s and (q0 - s)^4, lowered for perigees under 156 km.
+  const double ss = 78.0 / kEarthRadiusKm + 1.0;
+  const double qzms2ttemp = (120.0 - 78.0) / kEarthRadiusKm;
+  const double qzms2t = qzms2ttemp * qzms2ttemp * qzms2ttemp * qzms2ttemp;
+
+  simplified_drag = rp < (220.0 / kEarthRadiusKm + 1.0);
+  double sfour = ss;
+  double qzms24 = qzms2t;
+  const double perige = (rp - 1.0) * kEarthRadiusKm;
+  if (perige < 156.0) {
+    sfour = perige - 78.0;
+    if (perige < 98.0) sfour = 20.0;
+    const double qzms24temp = (120.0 - sfour) / kEarthRadiusKm;
+    qzms24 = qzms24temp * qzms24temp * qzms24temp * qzms24temp;
+    sfour = sfour / kEarthRadiusKm + 1.0;
+  }
+  const double pinvsq = 1.0 / posq;
+
+  const double tsi = 1.0 / (ao - sfour);
+  eta = ao * ecco * tsi;
+  const double etasq = eta * eta;
+  const double eeta = ecco * eta;
+  const double psisq = std::fabs(1.0 - etasq);
+  const double coef = qzms24 * std::pow(tsi, 4.0);
+  const double coef1 = coef / std::pow(psisq, 3.5);
+  const double cc2 = coef1 * no_unkozai *
+                     (ao * (1.0 + 1.5 * etasq + eeta * (4.0 + etasq)) +
+                      0.375 * kJ2 * tsi / psisq * con41 * (8.0 + 3.0 * etasq * (8.0 + etasq)));
+  cc1 = bstar * cc2;
+  double cc3 = 0.0;
+  if (ecco > 1.0e-4) cc3 = -2.0 * coef * tsi * kJ3OverJ2 * no_unkozai * sinio / ecco;
+  x1mth2 = 1.0 - cosio2;
+  cc4 = 2.0 * no_unkozai * coef1 * ao * omeosq *
+        (eta * (2.0 + 0.5 * etasq) + ecco * (0.5 + 2.0 * etasq) -
+         kJ2 * tsi / (ao * psisq) *
+             (-3.0 * con41 * (1.0 - 2.0 * eeta + etasq * (1.5 - 0.5 * eeta)) +
+              0.75 * x1mth2 * (2.0 * etasq - eeta * (1.0 + etasq)) * std::cos(2.0 * argpo)));
+  cc5 = 2.0 * coef1 * ao * omeosq * (1.0 + 2.75 * (etasq + eeta) + eeta * etasq);
+
+  // Secular gravity rates (J2 to second order, J4).
+  const double cosio4 = cosio2 * cosio2;
+  const double temp1 = 1.5 * kJ2 * pinvsq * no_unkozai;
+  const double temp2 = 0.5 * temp1 * kJ2 * pinvsq;
+  const double temp3 = -0.46875 * kJ4 * pinvsq * pinvsq * no_unkozai;
+  mdot = no_unkozai + 0.5 * temp1 * rteosq * con41 +
+         0.0625 * temp2 * rteosq * (13.0 - 78.0 * cosio2 + 137.0 * cosio4);
+  argpdot = -0.5 * temp1 * con42 + 0.0625 * temp2 * (7.0 - 114.0 * cosio2 + 395.0 * cosio4) +
+            temp3 * (3.0 - 36.0 * cosio2 + 49.0 * cosio4);
+  const double xhdot1 = -temp1 * cosio;
+  nodedot = xhdot1 + (0.5 * temp2 * (4.0 - 19.0 * cosio2) + 2.0 * temp3 * (3.0 - 7.0 * cosio2)) * cosio;
+  const double xpidot = argpdot + nodedot;
+  omgcof = bstar * cc3 * std::cos(argpo);
+  xmcof = 0.0;
+  if (ecco > 1.0e-4) xmcof = -kTwoThirds * coef * bstar / eeta;
+  nodecf = 3.5 * omeosq * xhdot1 * cc1;
+  t2cof = 1.5 * cc1;
+  if (std::fabs(cosio + 1.0) > kRetrogradeGuard)
+    xlcof = -0.25 * kJ3OverJ2 * sinio * (3.0 + 5.0 * cosio) / (1.0 + cosio);
+  else
+    xlcof = -0.25 * kJ3OverJ2 * sinio * (3.0 + 5.0 * cosio) / kRetrogradeGuard;
+  aycof = -0.5 * kJ3OverJ2 * sinio;
+  const double delmotemp = 1.0 + eta * std::cos(mo);
+  delmo = delmotemp * delmotemp * delmotemp;
+  sinmao = std::sin(mo);
+  x7thm1 = 7.0 * cosio2 - 1.0;
+
+  if (kTwoPi / no_unkozai >= kDeepSpacePeriodMinutes) {
+    deep_space = true;
+    simplified_drag = true;
+    ds.gsto = gsto;
+    const DeepSpaceCommon common =
+        deep_space_common(epoch, ecco, argpo, inclo, nodeo, no_unkozai, ds.periodics);
+    // (The periodics are zero at epoch, so the elements need no correction here.)
+    const DeepSpaceInputs in{ecco, eccsq, inclo, argpo, mo, nodeo, no_unkozai, mdot, nodedot, xpidot};
+    deep_space_secular(in, common, ds);
+  }
+
+  if (!simplified_drag) {
+    const double cc1sq = cc1 * cc1;
+    d2 = 4.0 * ao * tsi * cc1sq;
+    const double temp = d2 * tsi * cc1 / 3.0;
+    d3 = (17.0 * ao + sfour) * temp;
+    d4 = 0.5 * temp * ao * tsi * (221.0 * ao + 31.0 * sfour) * cc1;
+    t3cof = d2 + 2.0 * cc1sq;
+    t4cof = 0.25 * (3.0 * d3 + cc1 * (12.0 * d2 + 10.0 * cc1sq));
+    t5cof = 0.2 * (3.0 * d4 + 12.0 * cc1 * d3 + 6.0 * d2 * d2 + 15.0 * cc1sq * (2.0 * d2 + cc1sq));
+  }
+}
+
+Propagation Sgp4::Model::propagate(double t) const {
+  // Secular gravity and atmospheric drag.
+  const double xmdf = mo + mdot * t;
+  const double argpdf = argpo + argpdot * t;
+  const double nodedf = nodeo + nodedot * t;
+  const double t2 = t * t;
+  MeanElements m;
+  m.argpm = argpdf;
+  m.mm = xmdf;
+  m.nodem = nodedf + nodecf * t2;
+  double tempa = 1.0 - cc1 * t;
+  double tempe = bstar * cc4 * t;
+  double templ = t2cof * t2;
+
+  if (!simplified_drag) {
+    const double delomg = omgcof * t;
+    const double delmtemp = 1.0 + eta * std::cos(xmdf);
+    const double delm = xmcof * (delmtemp * delmtemp * delmtemp - delmo);
+    const double temp = delomg + delm;
+    m.mm = xmdf + temp;
+    m.argpm = argpdf - temp;
+    const double t3 = t2 * t;
+    const double t4 = t3 * t;
+    tempa = tempa - d2 * t2 - d3 * t3 - d4 * t4;
+    tempe = tempe + bstar * cc5 * (std::sin(m.mm) - sinmao);
+    templ = templ + t3cof * t3 + t4 * (t4cof + t * t5cof);
+  }
+
+  m.nm = no_unkozai;
+  m.em = ecco;
+  m.inclm = inclo;
+  double am;
+  if (deep_space) {
+    deep_space_drift(ds, no_unkozai, argpo, argpdot, t, m);
+    if (m.nm <= 0.0) return failure(Sgp4Error::mean_motion);
+    // Only the resonance integrator changes the mean motion.
+    const double a_mean = ds.resonance == Resonance::none ? ao : std::pow(kXke / m.nm, kTwoThirds);
+    am = a_mean * tempa * tempa;
+  } else {
+    am = ao * tempa * tempa;
+  }
+  const double nm = kXke / (am * std::sqrt(am));
+  double em = m.em - tempe;
+
+  if (em >= 1.0 || em < -0.001) return failure(Sgp4Error::mean_eccentricity);
+  if (em < 1.0e-6) em = 1.0e-6;
+  double mm = m.mm + no_unkozai * templ;
+  double xlm = mm + m.argpm + m.nodem;
+  const double nodem = wrap_two_pi(m.nodem);
+  const double argpm = wrap_two_pi(m.argpm);
+  xlm = wrap_two_pi(xlm);
+  mm = wrap_two_pi(xlm - argpm - nodem);
+
+  PerturbedElements p{em, m.inclm, nodem, argpm, mm, sinio, cosio};
+  double aycof_t = aycof, xlcof_t = xlcof, con41_t = con41, x1mth2_t = x1mth2, x7thm1_t = x7thm1;
+  if (deep_space) {
+    lunar_solar_periodics(ds.periodics, t, p);
+    if (p.inclp < 0.0) {
+      p.inclp = -p.inclp;
+      p.nodep = p.nodep + kPi;
+      p.argpp = p.argpp - kPi;
+      p.sinip = std::sin(p.inclp);
+      p.cosip = std::cos(p.inclp);
+    }
+    if (p.ep < 0.0 || p.ep > 1.0) return failure(Sgp4Error::perturbed_eccentricity);
+    // Long-period coefficients with the perturbed inclination.
+    aycof_t = -0.5 * kJ3OverJ2 * p.sinip;
+    if (std::fabs(p.cosip + 1.0) > kRetrogradeGuard)
+      xlcof_t = -0.25 * kJ3OverJ2 * p.sinip * (3.0 + 5.0 * p.cosip) / (1.0 + p.cosip);
+    else
+      xlcof_t = -0.25 * kJ3OverJ2 * p.sinip * (3.0 + 5.0 * p.cosip) / kRetrogradeGuard;
+    const double cosisq = p.cosip * p.cosip;
+    con41_t = 3.0 * cosisq - 1.0;
+    x1mth2_t = 1.0 - cosisq;
+    x7thm1_t = 7.0 * cosisq - 1.0;
+  }
+
+  // Long-period periodics.
+  const SinCos argp = sin_cos(p.argpp);
+  const double axnl = p.ep * argp.c;
+  double temp = 1.0 / (am * (1.0 - p.ep * p.ep));
+  const double aynl = p.ep * argp.s + temp * aycof_t;
+  const double xl = p.mp + p.argpp + p.nodep + temp * xlcof_t * axnl;
+
+  // Kepler's equation in the (axnl, aynl) form, Newton steps limited to 0.95 rad.
+  const double u = wrap_two_pi(xl - p.nodep);
+  double eo1 = u;
+  double tem5 = 9999.9;
+  SinCos eo{0.0, 1.0};
+  for (int iteration = 1; std::fabs(tem5) >= 1.0e-12 && iteration <= 10; ++iteration) {
+    eo = sin_cos(eo1);
+    tem5 = 1.0 - eo.c * axnl - eo.s * aynl;
+    tem5 = (u - aynl * eo.c + axnl * eo.s - eo1) / tem5;
+    if (std::fabs(tem5) >= 0.95) tem5 = tem5 > 0.0 ? 0.95 : -0.95;
+    eo1 = eo1 + tem5;
+  }
+
+  // Short-period preliminaries.
+  const double ecose = axnl * eo.c + aynl * eo.s;
+  const double esine = axnl * eo.s - aynl * eo.c;
+  const double el2 = axnl * axnl + aynl * aynl;
+  const double pl = am * (1.0 - el2);
+  if (pl < 0.0) return failure(Sgp4Error::semi_latus_rectum);
+
+  const double rl = am * (1.0 - ecose);
+  const double rdotl = std::sqrt(am) * esine / rl;
+  const double rvdotl = std::sqrt(pl) / rl;
+  const double betal = std::sqrt(1.0 - el2);
+  temp = esine / (1.0 + betal);
+  const double sinu = am / rl * (eo.s - aynl - axnl * temp);
+  const double cosu = am / rl * (eo.c - axnl + aynl * temp);
+  double su = std::atan2(sinu, cosu);
+  const double sin2u = (cosu + cosu) * sinu;
+  const double cos2u = 1.0 - 2.0 * sinu * sinu;
+  temp = 1.0 / pl;
+  const double temp1 = 0.5 * kJ2 * temp;
+  const double temp2 = temp1 * temp;
+
+  // Short-period periodics.
+  const double mrt = rl * (1.0 - 1.5 * temp2 * betal * con41_t) + 0.5 * temp1 * x1mth2_t * cos2u;
+  su = su - 0.25 * temp2 * x7thm1_t * sin2u;
+  const double xnode = p.nodep + 1.5 * temp2 * p.cosip * sin2u;
+  const double xinc = p.inclp + 1.5 * temp2 * p.cosip * p.sinip * cos2u;
+  const double mvt = rdotl - nm * temp1 * x1mth2_t * sin2u / kXke;
+  const double rvdot = rvdotl + nm * temp1 * (x1mth2_t * cos2u + 1.5 * con41_t) / kXke;
+
+  // Orientation vectors.
+  const SinCos s = sin_cos(su);
+  const SinCos node = sin_cos(xnode);
+  const SinCos inc = sin_cos(xinc);
+  const double xmx = -node.s * inc.c;
+  const double xmy = node.c * inc.c;
+  const double ux = xmx * s.s + node.c * s.c;
+  const double uy = xmy * s.s + node.s * s.c;
+  const double uz = inc.s * s.s;
+  const double vx = xmx * s.c - node.c * s.s;
+  const double vy = xmy * s.c - node.s * s.s;
+  const double vz = inc.s * s.c;
+
+  if (mrt < 1.0) return failure(Sgp4Error::decayed);
+
+  Propagation out;
+  out.state.r_km = {(mrt * ux) * kEarthRadiusKm, (mrt * uy) * kEarthRadiusKm, (mrt * uz) * kEarthRadiusKm};
+  out.state.v_km_s = {(mvt * ux + rvdot * vx) * kKmPerSecPerErPerMin,
+                      (mvt * uy + rvdot * vy) * kKmPerSecPerErPerMin,
+                      (mvt * uz + rvdot * vz) * kKmPerSecPerErPerMin};
+  return out;
+}
+
+const char* describe(Sgp4Error e) {
+  switch (e) {
+    case Sgp4Error::none: return "no error";
+    case Sgp4Error::mean_eccentricity: return "mean eccentricity is outside the range 0 to 1";
+    case Sgp4Error::mean_motion: return "mean motion is not positive";
+    case Sgp4Error::perturbed_eccentricity:
+      return "perturbed eccentricity is outside the range 0 to 1";
+    case Sgp4Error::semi_latus_rectum: return "semi-latus rectum is negative";
+    case Sgp4Error::decayed: return "orbit has decayed (radius below one earth radius)";
+  }
+  return "unknown SGP4 error";
+}
+
+Sgp4::Sgp4(const Elements& elements)
+    : elements_(elements),
+      epoch_jd_(element_epoch(elements.epoch_year, elements.epoch_day)),
+      epoch_(from_year_day(elements.epoch_year, elements.epoch_day)) {
+  const double n = elements.mean_motion_rev_per_day;
+  const double e = elements.eccentricity;
+  // The reference would run on with NaNs here; refuse such sets up front.
+  if (!(e >= 0.0 && e < 1.0)) {
+    init_error_ = Sgp4Error::mean_eccentricity;
+    return;
+  }
+  if (!(n > 0.0) || !std::isfinite(n)) {
+    init_error_ = Sgp4Error::mean_motion;
+    return;
+  }
+
+  auto model = std::make_shared<Model>();
+  model->ecco = e;
+  model->inclo = elements.inclination_deg * kDegToRad;
+  model->nodeo = elements.raan_deg * kDegToRad;
+  model->argpo = elements.arg_perigee_deg * kDegToRad;
+  model->mo = elements.mean_anomaly_deg * kDegToRad;
+  model->bstar = elements.bstar;
+  model->initialise((epoch_jd_.whole + epoch_jd_.fraction) - kSgp4EpochJd, n / kRevPerDayPerRadPerMin);
+  deep_space_ = model->deep_space;
+  init_error_ = model->propagate(0.0).error;
+  model_ = std::move(model);
+}
+
+Propagation Sgp4::propagate_minutes(double tsince) const {
+  if (init_error_ != Sgp4Error::none) return failure(init_error_);
+  return model_->propagate(tsince);
+}
+
+double Sgp4::mean_motion_rad_per_min() const {
+  return model_ ? model_->no_unkozai : std::numeric_limits<double>::quiet_NaN();
+}
+
+double Sgp4::semi_major_axis_er() const {
+  return model_ ? model_->a : std::numeric_limits<double>::quiet_NaN();
+}
+
+double Sgp4::period_minutes() const { return kTwoPi / mean_motion_rad_per_min(); }
+
+double Sgp4::perigee_km() const {
+  if (!model_) return std::numeric_limits<double>::quiet_NaN();
+  return (model_->a * (1.0 - model_->ecco) - 1.0) * kEarthRadiusKm;
+}
+
+double Sgp4::apogee_km() const {
+  if (!model_) return std::numeric_limits<double>::quiet_NaN();
+  return (model_->a * (1.0 + model_->ecco) - 1.0) * kEarthRadiusKm;
+}
+
+}  // namespace tb::orbit
