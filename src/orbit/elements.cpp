@@ -6,6 +6,8 @@
 #include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstdarg>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <iterator>
@@ -806,6 +808,170 @@ ParseResult parse_gpredict_satdata(std::string_view text, std::string_view file_
   }
   if (section) finish_section(*section, file_name, options, result);
   return result;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Writers
+
+namespace {
+
+std::string printf_string(const char* format, ...) __attribute__((format(printf, 1, 2)));
+std::string printf_string(const char* format, ...) {
+  char buf[128];
+  va_list args;
+  va_start(args, format);
+  const int n = std::vsnprintf(buf, sizeof buf, format, args);
+  va_end(args);
+  return n < 0 ? std::string() : std::string(buf, std::min<std::size_t>(static_cast<std::size_t>(n), sizeof buf - 1));
+}
+
+// Right-aligned fixed-point text of exactly `width` columns, with as many of `decimals` decimals
+// as fit; '*' when even no decimal fits (a value no element set can hold).
+std::string fixed_columns(double v, int width, int decimals) {
+  for (int d = decimals; d >= 0; --d) {
+    std::string t = printf_string("%*.*f", width, d, v);
+    if (static_cast<int>(t.size()) <= width) return t;
+  }
+  return std::string(static_cast<std::size_t>(width), '*');
+}
+
+// An angle in [0, 360) in columns "ddd.dddd": a value that rounds up to 360 is written as 0.
+std::string angle_columns(double deg) {
+  std::string t = fixed_columns(deg, 8, 4);
+  return t == "360.0000" ? "  0.0000" : t;
+}
+
+// ndot/2 in 10 columns: sign or blank, then the number without its leading zero (".00002182").
+std::string ndot_columns(double v) {
+  const char sign = std::signbit(v) ? '-' : ' ';
+  for (int d = 8; d >= 0; --d) {
+    std::string t = printf_string("%.*f", d, std::fabs(v));
+    if (t.starts_with("0.")) t.erase(0, 1);
+    if (t.size() <= 9) return sign + std::string(9 - t.size(), ' ') + t;
+  }
+  return std::string(10, '*');
+}
+
+// The implied-decimal exponent field, 8 columns: "-11606-4" for -0.11606e-4. Zero is " 00000-0".
+std::string implied_exponent_columns(double v) {
+  const std::string sign(1, std::signbit(v) ? '-' : ' ');
+  const double a = std::fabs(v);
+  if (a == 0.0) return sign + "00000-0";
+  const std::string e = printf_string("%.4e", a);  // d.dddde+XX, correctly rounded
+  const int exponent = std::atoi(e.c_str() + 7) + 1;
+  if (exponent > 9) return sign + "99999+9";  // beyond the field: the largest it holds
+  if (exponent < -9) {                         // below 0.1e-9: leading zeros in the mantissa
+    const long long m = std::llround(a * 1e14);
+    return m == 0 ? sign + "00000-0" : sign + printf_string("%05lld", m) + "-9";
+  }
+  return sign + e.substr(0, 1) + e.substr(2, 4) + (exponent < 0 ? '-' : '+') +
+         static_cast<char>('0' + std::abs(exponent));
+}
+
+// Fixed-point text with at least `decimals` decimals, more when needed to give back the value.
+std::string round_trip_fixed(double v, int decimals) {
+  std::string t = printf_string("%.*f", decimals, v);
+  if (parse_fixed(t) == v) return t;
+  char buf[400];
+  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed);
+  return ec == std::errc() ? std::string(buf, end) : t;
+}
+
+// Shortest scientific text that gives back the value, in the AMSAT style "-4.5e-07".
+std::string decay_rate_text(double v) {
+  char buf[64];
+  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::scientific);
+  std::string t(buf, end);
+  if (t.find('.') == std::string::npos) t.insert(t.find('e'), ".0");
+  return t;
+}
+
+// "YYDDD.DDDDDDDD" (also columns 19-32 of line 1).
+std::string epoch_text(int year, double day, bool round_trip) {
+  std::string d = printf_string("%012.8f", day);
+  if (round_trip && parse_fixed(d) != day) {
+    d = round_trip_fixed(day, 8);
+    const auto point = d.find('.');
+    if (point != std::string::npos && point < 3) d.insert(0, 3 - point, '0');
+  }
+  return printf_string("%02d", ((year % 100) + 100) % 100) + d;
+}
+
+// A name the NASA parser would take for something else gets Space-Track's "0 " prefix.
+std::string name_line(const std::string& name) {
+  if (classify(name) != LineKind::name || name.starts_with("0 ")) return "0 " + name;
+  return name;
+}
+
+}  // namespace
+
+std::string format_nasa(const Elements& e, bool with_name) {
+  std::string catalog = encode_catalog_number(e.catalog_number);
+  if (catalog.empty()) catalog = "*****";  // not representable: the output will not parse
+
+  std::string l1 = "1 " + catalog;
+  l1 += is_upper(e.classification) ? e.classification : 'U';
+  l1 += ' ';
+  std::string designator = e.international_designator.substr(0, 8);
+  designator.resize(8, ' ');
+  l1 += designator + ' ';
+  std::string epoch = epoch_text(e.epoch_year, e.epoch_day, false);
+  if (epoch.size() != 14) epoch = std::string(14, '*');
+  l1 += epoch + ' ';
+  l1 += ndot_columns(e.ndot_over_2) + ' ';
+  l1 += implied_exponent_columns(e.nddot_over_6) + ' ';
+  l1 += implied_exponent_columns(e.bstar) + ' ';
+  l1 += static_cast<char>(e.ephemeris_type >= 0 && e.ephemeris_type <= 9 ? '0' + e.ephemeris_type : '0');
+  l1 += ' ';
+  l1 += printf_string("%4d", e.element_set_number >= 0 ? e.element_set_number % 10000 : 0);
+  l1 += static_cast<char>('0' + nasa_checksum(l1));
+
+  std::string l2 = "2 " + catalog + ' ';
+  l2 += fixed_columns(e.inclination_deg, 8, 4) + ' ';
+  l2 += angle_columns(e.raan_deg) + ' ';
+  const std::string ecc = printf_string("%.7f", std::clamp(e.eccentricity, 0.0, 0.9999999));
+  l2 += ecc.substr(2, 7) + ' ';
+  l2 += angle_columns(e.arg_perigee_deg) + ' ';
+  l2 += angle_columns(e.mean_anomaly_deg) + ' ';
+  l2 += fixed_columns(e.mean_motion_rev_per_day, 11, 8);
+  l2 += printf_string("%5ld", e.revolution_number >= 0 ? e.revolution_number % 100000 : 0L);
+  l2 += static_cast<char>('0' + nasa_checksum(l2));
+
+  std::string out;
+  if (with_name && !e.name.empty()) out += name_line(e.name) + "\n";
+  return out + l1 + "\n" + l2 + "\n";
+}
+
+std::string format_amsat(const Elements& e) {
+  // The layout AMSAT's bulletins use: four values left-aligned at column 17/18, the others
+  // right-aligned to end at column 26, then the unit.
+  auto right = [](const char* label, const std::string& value, const char* unit) {
+    std::string line = std::string(label) + ":";
+    const std::size_t used = line.size() + value.size();
+    line += std::string(used < 26 ? 26 - used : 1, ' ') + value;
+    if (*unit) line += std::string(" ") + unit;
+    return line;
+  };
+  std::vector<std::string> lines;
+  lines.push_back(e.name.empty() ? "Satellite:" : "Satellite: " + e.name);
+  lines.push_back("Catalog number: " + (e.catalog_number >= 0 && e.catalog_number <= 99999
+                                            ? printf_string("%05d", e.catalog_number)
+                                            : std::to_string(e.catalog_number)));
+  lines.push_back("Epoch time:      " + epoch_text(e.epoch_year, e.epoch_day, true));
+  lines.push_back("Element set:     " + std::to_string(e.element_set_number));
+  lines.push_back(right("Inclination", round_trip_fixed(e.inclination_deg, 4), "deg"));
+  lines.push_back(right("RA of node", round_trip_fixed(e.raan_deg, 4), "deg"));
+  lines.push_back(right("Eccentricity", round_trip_fixed(e.eccentricity, 7), ""));
+  lines.push_back(right("Arg of perigee", round_trip_fixed(e.arg_perigee_deg, 4), "deg"));
+  lines.push_back(right("Mean anomaly", round_trip_fixed(e.mean_anomaly_deg, 4), "deg"));
+  lines.push_back(right("Mean motion", round_trip_fixed(e.mean_motion_rev_per_day, 8), "rev/day"));
+  lines.push_back(right("Decay rate", decay_rate_text(e.ndot_over_2), "rev/day^2"));
+  lines.push_back(right("Epoch rev", std::to_string(e.revolution_number), ""));
+  const std::vector<std::string_view> summed(lines.begin(), lines.end());
+  lines.push_back(right("Checksum", std::to_string(amsat_checksum(summed)), ""));
+  std::string out;
+  for (const std::string& l : lines) out += l + "\n";
+  return out;
 }
 
 // ---------------------------------------------------------------------------------------------
