@@ -237,8 +237,9 @@ bool offer_rotor_control(term::Terminal& t, Services& s, std::string_view why) {
   return true;
 }
 
-LiveMonitor::LiveMonitor(term::Terminal& t, Services& s, std::vector<std::string> below)
-    : t_(t), s_(s), message_(s.station.rotator().status().message) {
+LiveMonitor::LiveMonitor(term::Terminal& t, Services& s, std::vector<std::string> below,
+                         std::function<std::string()> line)
+    : t_(t), s_(s), line_(std::move(line)), message_(s.station.rotator().status().message) {
   set_below(std::move(below));
   update(true);
 }
@@ -268,7 +269,7 @@ void LiveMonitor::update(bool force) {
       force = true;
     }
   }
-  std::vector<std::string> lines{rotator::format_monitor_line(st)};
+  std::vector<std::string> lines{line_ ? line_() : rotator::format_monitor_line(st)};
   if (t_.full_screen()) lines.insert(lines.end(), below_.begin(), below_.end());
   if (!force && live_ && lines == shown_) return;
   t_.live(lines);

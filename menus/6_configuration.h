@@ -70,7 +70,9 @@ bool offer_rotor_control(term::Terminal& t, Services& s, std::string_view why);
 // rotator message (stall, fault) printed once above it.
 class LiveMonitor {
  public:
-  LiveMonitor(term::Terminal& t, Services& s, std::vector<std::string> below = {});
+  // `line` makes the monitor line (default: format_monitor_line of the rotator's status).
+  LiveMonitor(term::Terminal& t, Services& s, std::vector<std::string> below = {},
+              std::function<std::string()> line = {});
   ~LiveMonitor();
   LiveMonitor(const LiveMonitor&) = delete;
   LiveMonitor& operator=(const LiveMonitor&) = delete;
@@ -87,6 +89,7 @@ class LiveMonitor {
   term::Terminal& t_;
   Services& s_;
   std::vector<std::string> below_;
+  std::function<std::string()> line_;
   std::vector<std::string> shown_;
   std::string message_;
   bool live_ = false;

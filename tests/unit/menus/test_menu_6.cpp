@@ -152,6 +152,37 @@ TEST_CASE("6-1 calibration records the simulated rotator's counts at its end sto
   CHECK(f.station->rotator().status().mode == rotator::ControlMode::idle);
 }
 
+TEST_CASE("6-1 reaches the mechanical ends whatever the old span and limits say") {
+  // An elevation pot that reads 900 straight up (beyond the factory 90-degree count, 511) and limits
+  // on (the station file sample's): calibration still drives to both stops and records them, and the
+  // limits are in force again afterwards.
+  testing::MenuFixture f("1\r42Y68YQ\r");
+  f.model.rotator.limits_enabled = true;
+  f.model.rotator.az_limit_min = 270;
+  f.model.rotator.az_limit_max = 90;
+  f.model.rotator.el_limit_max = 45;
+  rotator::SimulatedRotatorParams p;
+  p.az_counts_at_ccw = 20;
+  p.az_counts_at_cw = 1000;
+  p.el_counts_at_0 = 10;
+  p.el_counts_at_90 = 900;
+  p.el_max_deg = 90;
+  p.start = {180.0, 20.0};
+  rebuild(f, p);
+  f.station->set_rotor_control(true);
+  f.term.timeouts_before_key = 200;
+  menus::menu_6_configuration(f.term, *f.services);
+  CHECK(has(f.term.output(), "ADC span value AZ:0020-1000 EL:0010-0900\n"));
+  CHECK(f.model.rotator.az_span == rotator::AxisSpan{20, 1000});
+  CHECK(f.model.rotator.el_span == rotator::AxisSpan{10, 900});
+  CHECK(f.model.rotator.limits_enabled);
+  CHECK(f.station->rotator().config() == f.model.rotator);
+  // Back under the limits: asked for 0/80, the antenna stops at 45.
+  f.station->point({0.0, 80.0});
+  run(f, 60);
+  CHECK(std::abs(truth(f).el - 45) <= 0.3);
+}
+
 TEST_CASE("6-1: N leaves the span alone; a span too narrow is refused") {
   SUBCASE("N") {
     testing::MenuFixture f("1\rNQ\r");
@@ -341,6 +372,24 @@ TEST_CASE("6-6-1 keyboard control drives the simulated rotator; 5 stops, Enter l
   run(f, 5);
   CHECK(f.rotator_sim->true_position().az_travel == doctest::Approx(travel).epsilon(0.02));
   CHECK(f.station->rotator().status().mode == rotator::ControlMode::idle);
+}
+
+TEST_CASE("6-6-1 keyboard control stops at the rotation limits") {
+  testing::MenuFixture f("6\r1\r8\rQ\rQ\r");
+  f.model.rotator.limits_enabled = true;
+  f.model.rotator.el_limit_max = 30;
+  f.station->reconfigure();
+  f.station->set_rotor_control(true);
+  double highest = 0;
+  f.term.on_wait = [&](std::optional<term::Duration> timeout) {
+    f.now += std::chrono::duration_cast<std::chrono::microseconds>(timeout.value_or(std::chrono::seconds(1)));
+    f.station->tick();
+    highest = std::max(highest, truth(f).el);
+  };
+  f.term.timeouts_before_key = 120;  // 60 s of Up: 180 degrees worth
+  menus::menu_6_configuration(f.term, *f.services);
+  CHECK(highest <= 30 + kElTol);
+  CHECK(highest >= 30 - kElTol);
 }
 
 TEST_CASE("6-6-2 points the simulated rotator at the value entered, as in the manual's example") {
