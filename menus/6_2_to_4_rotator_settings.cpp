@@ -1,0 +1,62 @@
+// 6-2 Set ADC span value, 6-3 Set Dead Band and Skew value, 6-4 Set Antenna Parking and Limit
+// position. Each edits a copy of the rotator configuration (Enter keeps a value, Q leaves with
+// nothing changed) and commits it only when rotator::validate accepts the whole.
+#include <cstdio>
+
+#include "menus/6_configuration.h"
+#include "store/model.h"
+
+namespace tb::menus {
+
+namespace {
+std::string span_of(const char* axis, const rotator::AxisSpan& a) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "ADC span value %s: %04d - %04d", axis, a.min, a.max);
+  return buf;
+}
+int whole(double v) { return static_cast<int>(v); }
+}  // namespace
+
+void menu_6_2_adc_span(term::Terminal& t, Services& s) {
+  rotator::RotatorConfig c = s.model.rotator;
+  const double top = rotator::kAdcMaxCount;
+  t.line(span_of("AZ", c.az_span));
+  c.az_span.min = whole(cfg::ask_number(t, "AZ minimum value ? : ", c.az_span.min, 0, top, true));
+  c.az_span.max = whole(cfg::ask_number(t, "AZ maximum value ? : ", c.az_span.max, 0, top, true));
+  t.line(span_of("EL", c.el_span));
+  c.el_span.min = whole(cfg::ask_number(t, "EL minimum value ? : ", c.el_span.min, 0, top, true));
+  c.el_span.max = whole(cfg::ask_number(t, "EL maximum value ? : ", c.el_span.max, 0, top, true));
+  if (cfg::commit_rotator(t, s, c)) t.line(span_line(c));
+}
+
+void menu_6_3_dead_band_skew(term::Terminal& t, Services& s) {
+  rotator::RotatorConfig c = s.model.rotator;
+  auto prompt = [](const char* label, int current) { return std::string(label) + " : " + cfg::fmt1(current) + "  "; };
+  c.az_dead_band = whole(cfg::ask_number(t, prompt("Azimuth Dead Band", c.az_dead_band), c.az_dead_band, 0, 100, true));
+  c.el_dead_band = whole(cfg::ask_number(t, prompt("Elevation Dead Band", c.el_dead_band), c.el_dead_band, 0, 100, true));
+  c.az_skew = whole(cfg::ask_number(t, prompt("Azimuth Skew value", c.az_skew), c.az_skew, -512, 512, true));
+  c.el_skew = whole(cfg::ask_number(t, prompt("Elevation Skew value", c.el_skew), c.el_skew, -512, 512, true));
+  cfg::commit_rotator(t, s, c);
+}
+
+void menu_6_4_parking_limits(term::Terminal& t, Services& s) {
+  rotator::RotatorConfig c = s.model.rotator;
+  const double el_top = c.el_flip_allowed ? 180.0 : 90.0;
+  auto prompt = [](const char* label, double current) { return std::string(label) + " : " + cfg::fmt1(current) + "  "; };
+  c.parking_enabled = cfg::ask_choice(t, "Set Antenna Parking position ? [Y/N] ", "YN") == 'Y';
+  if (c.parking_enabled) {
+    c.parking.az = cfg::ask_number(t, prompt("Azimuth Parking value", c.parking.az), c.parking.az, 0, 360);
+    c.parking.el = cfg::ask_number(t, prompt("Elevation Parking value", c.parking.el), c.parking.el, 0, el_top);
+  }
+  c.limits_enabled = cfg::ask_choice(t, "Set Antenna rotation limit ? [Y/N] ", "YN") == 'Y';
+  if (c.limits_enabled) {
+    // "minmum": the manual's spelling of these two prompts.
+    c.az_limit_min = cfg::ask_number(t, prompt("Azimuth minmum value", c.az_limit_min), c.az_limit_min, 0, 360);
+    c.az_limit_max = cfg::ask_number(t, prompt("Azimuth maximum value", c.az_limit_max), c.az_limit_max, 0, 360);
+    c.el_limit_min = cfg::ask_number(t, prompt("Elevation minmum value", c.el_limit_min), c.el_limit_min, 0, el_top);
+    c.el_limit_max = cfg::ask_number(t, prompt("Elevation maximum value", c.el_limit_max), c.el_limit_max, 0, el_top);
+  }
+  cfg::commit_rotator(t, s, c);
+}
+
+}  // namespace tb::menus

@@ -1,0 +1,79 @@
+// 6-7: Radio CAT port configuration. Chooses the CAT protocol (Kenwood, Yaesu, Icom, or N for none,
+// an addition), the Icom CI-V addresses, the FT-736 wide FM filter, which Doppler corrections are
+// sent and whether CAT runs the full orbit or only at AOS. The serial device itself comes from the
+// command line (--radio cat:DEVICE builds the driver for the rig chosen here when trakbox starts);
+// the corrections and F/A apply at once.
+#include <cctype>
+#include <charconv>
+#include <cstdio>
+
+#include "menus/6_configuration.h"
+#include "radio/cat.h"
+#include "store/model.h"
+#include "tracker/station_loop.h"
+
+namespace tb::menus {
+
+namespace {
+
+std::string hex2(std::uint8_t v) {
+  char buf[8];
+  std::snprintf(buf, sizeof buf, "%02X", v);
+  return buf;
+}
+
+// A CI-V address: one or two hex digits with an optional H, 00 to DF (E0 is TrakBox's own, and
+// FD/FE frame the messages).
+std::uint8_t ask_address(term::Terminal& t, const char* which, std::uint8_t current) {
+  for (;;) {
+    std::string a = cfg::answer(t, std::string("Enter destination Address for ") + which + " (" + hex2(current) + ") ");
+    if (a.empty()) return current;
+    std::string_view v(a);
+    if (v.back() == 'H' || v.back() == 'h') v.remove_suffix(1);
+    int n = 0;
+    const auto [p, ec] = std::from_chars(v.data(), v.data() + v.size(), n, 16);
+    if (!v.empty() && v.size() <= 2 && ec == std::errc() && p == v.data() + v.size() && n < radio::icom::kController)
+      return static_cast<std::uint8_t>(n);
+    t.line("  '" + a + "' is not a CI-V address: expected hex 00 to DF (E0 is TrakBox's own)");
+  }
+}
+
+}  // namespace
+
+void menu_6_7_radio_cat(term::Terminal& t, Services& s) {
+  radio::RadioConfig c = s.model.radio;
+  const radio::RadioConfig before = c;
+  t.line(std::string("Now: ") + radio::to_string(c.rig) + (c.cat_policy == radio::CatPolicy::aos_only ? " AOS" : " Full") +
+         "   (N: no CAT rig, Q: leave unchanged)");
+  switch (cfg::ask_choice(t, "CAT Rig KENWOOD,YAESU,ICOM [K/Y/I] ? ", "KYIN")) {
+    case 'K': c.rig = radio::Rig::kenwood; break;
+    case 'Y': c.rig = radio::Rig::yaesu; break;
+    case 'I': c.rig = radio::Rig::icom; break;
+    default: c.rig = radio::Rig::none; break;
+  }
+  if (c.rig == radio::Rig::icom) {
+    t.line("IC-275:10H IC-375/475:14H IC-970:2EH IC-271:20H IC-371/471:22H");
+    c.icom_rx_address = ask_address(t, "RX", c.icom_rx_address);
+    c.icom_tx_address = ask_address(t, "TX", c.icom_tx_address);
+  }
+  if (c.rig == radio::Rig::yaesu)
+    c.ft736_wide_fm = cfg::ask_choice(t, "FT-736 FM filter changed for a wider one (UO-22) ? [Y/N] ", "YN") == 'Y';
+  c.uplink_correction = cfg::ask_choice(t, "Uplink Doppler correction ? [Y/N] ", "YN") == 'Y';
+  switch (cfg::ask_choice(t, "Downlink Doppler correction ? [Y/N/R] ", "YNR")) {
+    case 'Y': c.downlink_correction = radio::DownlinkCorrection::on; break;
+    case 'R': c.downlink_correction = radio::DownlinkCorrection::reverse; break;
+    default: c.downlink_correction = radio::DownlinkCorrection::off; break;
+  }
+  c.cat_policy = cfg::ask_choice(t, "Select Full orbit or AOS CAT control ? [F/A] ", "FA") == 'F'
+                     ? radio::CatPolicy::full_orbit
+                     : radio::CatPolicy::aos_only;
+  s.model.radio = c;
+  s.station.reconfigure();
+  save_or_report(t, s);
+  t.line("Radio: " + s.station.radio().describe());
+  if (c.rig != before.rig || c.icom_rx_address != before.icom_rx_address ||
+      c.icom_tx_address != before.icom_tx_address || c.ft736_wide_fm != before.ft736_wide_fm)
+    t.line("The new rig settings reach the radio driver when trakbox next starts (--radio cat:DEVICE).");
+}
+
+}  // namespace tb::menus

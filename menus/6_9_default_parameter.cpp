@@ -1,0 +1,45 @@
+// 6-9: Set default parameter. Every parameter goes back to its factory value and the kepele database
+// is emptied (the manual: "the kepele database will be lost"); the real-time clock is not a
+// parameter and keeps its time. Then a station file may be uploaded (src/store/station_file.h): it
+// is read whole first and applied only when every line is valid.
+#include "menus/6_configuration.h"
+#include "store/model.h"
+#include "store/station_file.h"
+#include "tracker/station_loop.h"
+
+namespace tb::menus {
+
+void menu_6_9_default_parameter(term::Terminal& t, Services& s) {
+  t.line("Stored data in memory will be lost.");
+  if (!ask_yes_no(t, "Are you sure ? [Y/N] ? ")) return;
+  s.station.stop_antenna();  // tracking stops: the satellites it follows are about to go
+  const auto clock_offset = s.model.clock_offset;
+  s.model = store::factory_defaults();
+  s.model.clock_offset = clock_offset;
+  s.station.reconfigure();
+  save_or_report(t, s);
+  t.bell();
+  if (!ask_yes_no(t, "Configure your station elements by uploading data file ? [Y/N] ")) return;
+  t.line("Upload Station info data file (EOF:ctrl-Z)");
+  std::string text;
+  const bool ended = t.read_upload([&](std::string_view line) {
+    t.line(line);  // echoed as received
+    text.append(line).append("\n");
+  });
+  if (!ended) throw InputClosed{};
+  const store::StationFileParse parsed = store::parse_station_file(text);
+  std::vector<std::string> problems;
+  for (const auto& p : parsed.problems) problems.push_back(p.message());
+  if (parsed.ok()) problems = store::apply_station_file(*parsed.file, s.model);
+  if (!problems.empty()) {
+    t.bell();
+    for (const auto& p : problems) t.line("  " + p);
+    t.line("Station file not applied: every parameter is at its default.");
+    return;
+  }
+  s.station.reconfigure();
+  save_or_report(t, s);
+  t.line("Station file loaded. Verify it with 6-0 (Display all configured value).");
+}
+
+}  // namespace tb::menus

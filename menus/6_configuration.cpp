@@ -1,0 +1,317 @@
+// Menu 6: Configuration. The list of items 0-9, the 6-0 display, and what the items share.
+#include "menus/6_configuration.h"
+
+#include <cctype>
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+
+#include "rotator/controller.h"
+#include "store/model.h"
+#include "tracker/station_loop.h"
+
+namespace tb::menus {
+
+namespace {
+
+std::string trim(std::string s) {
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.pop_back();
+  std::size_t i = 0;
+  while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) ++i;
+  return s.substr(i);
+}
+
+std::string fmt(const char* f, ...) __attribute__((format(printf, 1, 2)));
+std::string fmt(const char* f, ...) {
+  char buf[256];
+  va_list ap;
+  va_start(ap, f);
+  std::vsnprintf(buf, sizeof buf, f, ap);
+  va_end(ap);
+  return buf;
+}
+
+std::string label(const char* l) { return fmt("%-17s", l); }
+
+const char* yn(bool b) { return b ? "Y" : "N"; }
+
+void show_list(term::Terminal& t) {
+  t.line("====== Configuration Menu ======");
+  t.line(" 0. Display all configured value");
+  t.line(" 1. Calibration of antenna span value");
+  t.line(" 2. Set ADC span value");
+  t.line(" 3. Set Dead Band and Skew value");
+  t.line(" 4. Set Antenna Parking and Limit position");
+  t.line(" 5. Monitor ADC value & Antenna position");
+  t.line(" 6. Direct antenna control");
+  t.line(" 7. Radio CAT port configuration");
+  t.line(" 8. Mic click configuration");
+  t.line(" 9. Set default parameter");
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// The list.
+
+void menu_6_configuration(term::Terminal& t, Services& s) {
+  bool show = true;
+  for (;;) {
+    if (show) show_list(t);
+    show = true;
+    t.write(" Select: ");
+    t.flush();
+    const std::string a = trim(read_line(t));
+    if (a.size() != 1) {
+      show = false;
+      continue;
+    }
+    const char c = static_cast<char>(std::toupper(static_cast<unsigned char>(a[0])));
+    if (c == 'Q') return;
+    try {
+      switch (c) {
+        case '0': menu_6_0_display(t, s); break;
+        case '1': menu_6_1_calibration(t, s); break;
+        case '2': menu_6_2_adc_span(t, s); break;
+        case '3': menu_6_3_dead_band_skew(t, s); break;
+        case '4': menu_6_4_parking_limits(t, s); break;
+        case '5': menu_6_5_monitor(t, s); break;
+        case '6': menu_6_6_direct_control(t, s); break;
+        case '7': menu_6_7_radio_cat(t, s); break;
+        case '8': menu_6_8_mic_click(t, s); break;
+        case '9': menu_6_9_default_parameter(t, s); break;
+        default: show = false; break;
+      }
+    } catch (const cfg::Quit&) {
+      t.end_live();
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// 6-0
+
+std::string span_line(const rotator::RotatorConfig& c) {
+  return fmt("ADC span value AZ:%04d-%04d EL:%04d-%04d", c.az_span.min, c.az_span.max, c.el_span.min, c.el_span.max);
+}
+
+std::vector<std::string> preset_lines(const rotator::RotatorConfig& c) {
+  std::vector<std::string> items;
+  for (std::size_t i = 0; i < c.presets.size(); ++i)
+    items.push_back(std::to_string(i + 1) + ":" + cfg::fmt1(c.presets[i].az) + "/" + cfg::fmt1(c.presets[i].el));
+  std::string all = " ";
+  for (const auto& it : items) all += it + " ";
+  all.pop_back();
+  if (all.size() <= 55) return {all};
+  std::string first = " ", second = "   ";
+  for (std::size_t i = 0; i < items.size(); ++i) (i < 3 ? first : second) += items[i] + " ";
+  first.pop_back();
+  second.pop_back();
+  return {first, second};
+}
+
+std::vector<std::string> configuration_lines(const store::Model& m) {
+  const auto& st = m.station;
+  const auto& r = m.rotator;
+  const auto& rc = m.radio;
+  std::vector<std::string> out;
+  out.push_back(fmt("Callsign:%s  Lat:%s Long:%s Hgt:%s", st.callsign.c_str(), cfg::fmt1(st.lat_deg).c_str(),
+                    cfg::fmt1(st.lon_deg).c_str(), cfg::fmt1(st.height_m).c_str()));
+  out.push_back(label("ADC span value") + fmt("AZ:%4d - %4d  EL:%4d - %4d", r.az_span.min, r.az_span.max, r.el_span.min,
+                                              r.el_span.max));
+  out.push_back(label("Dead band") + "AZ:" + cfg::fmt1(r.az_dead_band) + " EL:" + cfg::fmt1(r.el_dead_band) +
+                "  Skew AZ:" + cfg::fmt1(r.az_skew) + " EL:" + cfg::fmt1(r.el_skew));
+  out.push_back(label("Antenna parking") +
+                (r.parking_enabled ? "On  AZ:" + cfg::fmt1(r.parking.az) + " EL:" + cfg::fmt1(r.parking.el) : "Off"));
+  out.push_back(label("Rotator limit") +
+                (r.limits_enabled ? "On  AZ:" + cfg::fmt1(r.az_limit_min) + "-" + cfg::fmt1(r.az_limit_max) +
+                                        " EL:" + cfg::fmt1(r.el_limit_min) + "-" + cfg::fmt1(r.el_limit_max)
+                                  : "Off"));
+  out.push_back(label("Preset position") + trim(preset_lines(r).front()) +
+                (preset_lines(r).size() > 1 ? " " + trim(preset_lines(r).back()) : ""));
+  std::string cat = std::string(radio::to_string(rc.rig)) +
+                    (rc.cat_policy == radio::CatPolicy::aos_only ? " AOS" : " Full");
+  if (rc.rig == radio::Rig::icom) cat += fmt("  RX:%02XH TX:%02XH", rc.icom_rx_address, rc.icom_tx_address);
+  if (rc.rig == radio::Rig::yaesu && rc.ft736_wide_fm) cat += "  FT-736 wide FM";
+  out.push_back(label("CAT Rig") + cat);
+  const char* down = rc.downlink_correction == radio::DownlinkCorrection::on        ? "Y"
+                     : rc.downlink_correction == radio::DownlinkCorrection::reverse ? "R"
+                                                                                    : "N";
+  out.push_back(label("Doppler correct.") + "Up:" + yn(rc.uplink_correction) + " Down:" + down);
+  const auto& mc = rc.mic_click;
+  out.push_back(fmt("Step control ADC value Center:%d Reff:%d", mc.centre_adc, mc.reference_adc));
+  out.push_back(label("Frequency step") + fmt("%lld Hz", static_cast<long long>(mc.step_hz)));
+  out.push_back(label("Mic click at AOS") + "CAT:" + yn(mc.cat_at_aos) + " Up pulse:" + yn(mc.auto_up_at_aos) +
+                " Polarity:" + (mc.polarity == radio::PulsePolarity::normal ? "Normal" : "Reverse"));
+  out.push_back(label("Rotor start") + station::to_string(st.rotor_start));
+  out.push_back(label("COM port") + fmt("%d Baud 8-N-1", st.com_baud));
+  return out;
+}
+
+void menu_6_0_display(term::Terminal& t, Services& s) {
+  for (const auto& l : configuration_lines(s.model)) t.line(l);
+  t.write("Press any key to continue");
+  t.flush();
+  if (t.read_key() == term::kEndOfInput) throw InputClosed{};
+  t.line();
+}
+
+// ---------------------------------------------------------------------------------------------
+// Shared pieces.
+
+namespace cfg {
+
+std::string fmt1(double v) {
+  double r = std::round(v * 10.0) / 10.0;
+  if (r == 0.0) r = 0.0;
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f", r);
+  return buf;
+}
+
+std::string answer(term::Terminal& t, std::string_view prompt) {
+  t.write(prompt);
+  t.flush();
+  std::string a = trim(read_line(t));
+  if (a == "Q" || a == "q") throw Quit{};
+  return a;
+}
+
+double ask_number(term::Terminal& t, std::string_view prompt, std::optional<double> current, double lo, double hi,
+                  bool whole) {
+  for (;;) {
+    const std::string a = answer(t, prompt);
+    if (a.empty()) {
+      if (current) return *current;
+      t.line("  Enter a value (Q to leave)");
+      continue;
+    }
+    const auto v = parse_number(a);
+    if (!v) {
+      t.line("  '" + a + "' is not a number");
+      continue;
+    }
+    if (whole && *v != std::floor(*v)) {
+      t.line("  " + a + " is not a whole number");
+      continue;
+    }
+    if (*v < lo || *v > hi) {
+      t.line(fmt("  %s is out of range: expected %g to %g", a.c_str(), lo, hi));
+      continue;
+    }
+    return *v;
+  }
+}
+
+char ask_choice(term::Terminal& t, std::string_view prompt, std::string_view keys) {
+  for (;;) {
+    t.write(prompt);
+    t.flush();
+    const auto c = t.read_choice();
+    if (!c) throw InputClosed{};
+    if (*c == 'Q') throw Quit{};
+    if (*c != '\r' && keys.find(*c) != std::string_view::npos) return *c;
+  }
+}
+
+bool commit_rotator(term::Terminal& t, Services& s, const rotator::RotatorConfig& next) {
+  const auto problems = rotator::validate(next);
+  if (!problems.empty()) {
+    t.bell();
+    for (const auto& p : problems) t.line("  " + p);
+    t.line("Not changed.");
+    return false;
+  }
+  s.model.rotator = next;
+  s.station.reconfigure();
+  save_or_report(t, s);
+  return true;
+}
+
+bool offer_rotor_control(term::Terminal& t, Services& s, std::string_view why) {
+  if (s.station.rotor_control()) return true;
+  t.line("Rotor control is OFF (E key): " + std::string(why));
+  if (!ask_yes_no(t, "Switch rotor control ON ? [Y/N] ")) return false;
+  s.station.set_rotor_control(true);
+  save_or_report(t, s);
+  return true;
+}
+
+LiveMonitor::LiveMonitor(term::Terminal& t, Services& s, std::vector<std::string> below,
+                         std::function<std::string()> line)
+    : t_(t), s_(s), line_(std::move(line)), message_(s.station.rotator().status().message) {
+  set_below(std::move(below));
+  update(true);
+}
+
+LiveMonitor::~LiveMonitor() { end(); }
+
+// Full screen: the lines below are part of the live block, redrawn in place. Line mode: they are
+// printed once when they change (a prompt is not repeated with every reading).
+void LiveMonitor::set_below(std::vector<std::string> below) {
+  if (below == below_) return;
+  below_ = std::move(below);
+  if (t_.full_screen()) {
+    update();
+  } else {
+    end();
+    for (const auto& l : below_) t_.line(l);
+  }
+}
+
+void LiveMonitor::update(bool force) {
+  const auto& st = s_.station.rotator().status();
+  if (st.message != message_) {
+    message_ = st.message;
+    if (!message_.empty()) {
+      end();
+      t_.line(message_);
+      force = true;
+    }
+  }
+  std::vector<std::string> lines{line_ ? line_() : rotator::format_monitor_line(st)};
+  if (t_.full_screen()) lines.insert(lines.end(), below_.begin(), below_.end());
+  if (!force && live_ && lines == shown_) return;
+  t_.live(lines);
+  shown_ = std::move(lines);
+  live_ = true;
+}
+
+void LiveMonitor::note(std::string_view text) {
+  end();
+  t_.line(text);
+  update(true);
+}
+
+int LiveMonitor::key() {
+  const int k = t_.read_key(kLiveInterval);
+  if (k == term::kEndOfInput) throw InputClosed{};
+  update();
+  return k;
+}
+
+void LiveMonitor::end() {
+  if (live_) t_.end_live();
+  live_ = false;
+}
+
+void watch_until_arrived(term::Terminal& t, Services& s) {
+  LiveMonitor m(t, s);
+  for (;;) {
+    const int k = m.key();  // one wait first: the status then describes the new target
+    if (k != term::kTimeout) {
+      if (k == '5') s.station.stop_antenna();
+      break;
+    }
+    const auto& st = s.station.rotator().status();
+    if (st.on_target || st.mode != rotator::ControlMode::target) break;
+    if ((st.az.stalled || st.el.stalled) && st.az.motion == rotator::Drive::stop &&
+        st.el.motion == rotator::Drive::stop)
+      break;
+  }
+  m.update();
+  m.end();
+}
+
+}  // namespace cfg
+}  // namespace tb::menus

@@ -1,0 +1,270 @@
+#include "host/host_mode.h"
+
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+
+#include "rotator/adc_model.h"
+#include "tracker/station_loop.h"
+
+namespace tb::host {
+
+namespace {
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+  return s;
+}
+
+std::string upper(std::string_view s) {
+  std::string u(s);
+  for (auto& c : u) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return u;
+}
+
+bool blank(char c) { return c == ' ' || c == '\t'; }
+
+// A decimal number at the front of s ([+-]digits[.digits]); advances s past it.
+std::optional<double> take_number(std::string_view& s, std::string& text) {
+  std::size_t i = 0;
+  if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+  const std::size_t digits_from = i;
+  while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i;
+  bool any = i > digits_from;
+  if (i < s.size() && s[i] == '.') {
+    ++i;
+    const std::size_t frac = i;
+    while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i;
+    any = any || i > frac;
+  }
+  text.assign(s.substr(0, i));
+  if (!any) return std::nullopt;
+  std::string_view num = s.substr(s[0] == '+' ? 1 : 0, i - (s[0] == '+' ? 1 : 0));
+  double v = 0.0;
+  const auto [p, ec] = std::from_chars(num.data(), num.data() + num.size(), v);
+  if (ec != std::errc() || p != num.data() + num.size()) return std::nullopt;
+  s.remove_prefix(i);
+  return v;
+}
+
+void skip_blanks(std::string_view& s) {
+  while (!s.empty() && blank(s.front())) s.remove_prefix(1);
+}
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+Reply error(std::string text) {
+  Reply r;
+  r.ok = false;
+  r.lines.push_back("ERROR " + std::move(text));
+  return r;
+}
+
+}  // namespace
+
+AzElParse parse_az_el(std::string_view line) {
+  const char* kForm = "expected AZxxx ELxxx in degrees, e.g. AZ220 EL45";
+  std::string_view s = trim(line);
+  AzElParse r;
+  if (s.size() < 2 || upper(s.substr(0, 2)) != "AZ") {
+    r.error = kForm;
+    return r;
+  }
+  s.remove_prefix(2);
+  skip_blanks(s);
+  std::string text;
+  const auto az = take_number(s, text);
+  if (!az) {
+    r.error = std::string("no azimuth after AZ: ") + kForm;
+    return r;
+  }
+  skip_blanks(s);
+  if (!s.empty() && (s.front() == '_' || s.front() == ',')) s.remove_prefix(1);
+  skip_blanks(s);
+  if (s.size() < 2 || upper(s.substr(0, 2)) != "EL") {
+    r.error = s.empty() ? std::string("no EL: ") + kForm : "'" + std::string(s) + "' where EL was expected: " + kForm;
+    return r;
+  }
+  s.remove_prefix(2);
+  skip_blanks(s);
+  const auto el = take_number(s, text);
+  if (!el) {
+    r.error = std::string("no elevation after EL: ") + kForm;
+    return r;
+  }
+  skip_blanks(s);
+  if (!s.empty()) {
+    r.error = "'" + std::string(s) + "' after the elevation: " + kForm;
+    return r;
+  }
+  if (!(*az >= 0.0 && *az <= 360.0)) {
+    r.error = "azimuth " + num(*az) + " out of range: expected 0 to 360";
+    return r;
+  }
+  if (!(*el >= 0.0 && *el <= 90.0)) {
+    r.error = "elevation " + num(*el) + " out of range: expected 0 to 90";
+    return r;
+  }
+  r.args = AzElArgs{*az, *el};
+  return r;
+}
+
+std::optional<radio::Hz> parse_ten_hz(std::string_view digits) {
+  if (digits.empty() || digits.size() > 9) return std::nullopt;
+  radio::Hz v = 0;
+  for (char c : digits) {
+    if (!std::isdigit(static_cast<unsigned char>(c))) return std::nullopt;
+    v = v * 10 + (c - '0');
+  }
+  if (v == 0) return std::nullopt;
+  return v * radio::kTuningStepHz;
+}
+
+std::optional<std::string> unescape(std::string_view text) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] != '\\') {
+      out.push_back(text[i]);
+      continue;
+    }
+    if (i + 1 < text.size() && text[i + 1] == '\\') {
+      out.push_back('\\');
+      ++i;
+      continue;
+    }
+    if (i + 3 < text.size() && (text[i + 1] == 'x' || text[i + 1] == 'X')) {
+      int v = 0;
+      const auto [p, ec] = std::from_chars(text.data() + i + 2, text.data() + i + 4, v, 16);
+      if (ec != std::errc() || p != text.data() + i + 4) return std::nullopt;
+      out.push_back(static_cast<char>(v));
+      i += 3;
+      continue;
+    }
+    return std::nullopt;
+  }
+  return out;
+}
+
+std::string format_antenna(double az_deg, double el_deg) {
+  double az = std::round(az_deg * 10.0) / 10.0;
+  if (az >= 360.0) az -= 360.0;
+  if (az < 0.0) az += 360.0;
+  if (az == 0.0) az = 0.0;  // no -0.0
+  double el = std::round(el_deg * 10.0) / 10.0;
+  if (el == 0.0) el = 0.0;
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "AZ%.1f EL%.1f", az, el);
+  return buf;
+}
+
+Interpreter::Interpreter(tracker::StationLoop& station) : station_(station) {}
+
+std::vector<std::string> Interpreter::greeting() { return {std::string(kBanner), std::string(kCommandLine)}; }
+
+std::vector<std::string> Interpreter::help() {
+  return {
+      "AZxxx ELxxx  point the antenna, degrees        AZ220 EL45",
+      "MUxxx        uplink mode FM, LSB, USB or CW    MUFM",
+      "MDxxx        downlink mode                     MDUSB",
+      "FUxxxxxxxx   uplink frequency, 10 Hz units     FU14595000 = 145.950 MHz",
+      "FDxxxxxxxx   downlink frequency, 10 Hz units   FD43590000 = 435.900 MHz",
+      "Sxxx         send the string to the radio      STX;   (\\xHH sends byte HH)",
+      "?A           present antenna position          reply AZ220.0 EL45.0",
+      "?            this list",
+      "Q            quit to the main menu",
+  };
+}
+
+Reply Interpreter::execute(std::string_view line) {
+  const std::string_view s = trim(line);
+  if (s.empty()) return {};
+  const std::string u = upper(s);
+  if (u == "Q") {
+    Reply r;
+    r.quit = true;
+    return r;
+  }
+  if (u == "?") return Reply{help(), true, false};
+  if (u == "?A") return antenna();
+  if (u.rfind("AZ", 0) == 0) return az_el(s);
+  if (u.rfind("MU", 0) == 0 || u.rfind("MD", 0) == 0) return mode(u.substr(0, 2), s.substr(2));
+  if (u.rfind("FU", 0) == 0 || u.rfind("FD", 0) == 0) return frequency(u.substr(0, 2), s.substr(2));
+  if (u[0] == 'S') {
+    // The string as typed after the S: only the blanks and CR/LF at the ends of the line are dropped
+    // (\x20 sends a trailing blank).
+    return raw(s.substr(1));
+  }
+  std::string shown(s.substr(0, 20));
+  if (s.size() > 20) shown += "...";
+  return error("unknown command '" + shown + "': expected AZxxx ELxxx, MUxxx, MDxxx, FUxxx, FDxxx, Sxxx, ?A, ? or Q");
+}
+
+Reply Interpreter::az_el(std::string_view line) {
+  const AzElParse p = parse_az_el(line);
+  if (!p.args) return error("AZ/EL: " + p.error);
+  if (!station_.rotor_control())
+    return error("AZ/EL: rotor control is OFF (the E key of realtime tracking): antenna not moved");
+  const rotator::AzEl asked{p.args->az, p.args->el};
+  const rotator::AzEl got = station_.point(asked);
+  Reply r;
+  if (rotator::azimuth_distance(asked.az, got.az) > 0.05 || std::abs(asked.el - got.el) > 0.05)
+    r.lines.push_back("LIMIT " + format_antenna(got.az, got.el));
+  return r;
+}
+
+Reply Interpreter::mode(std::string_view cmd, std::string_view arg) {
+  const std::string_view a = trim(arg);
+  const auto m = radio::parse_mode(a);
+  if (!m || *m == radio::Mode::none)
+    return error(std::string(cmd) + ": '" + std::string(a) + "' is not a radio mode: expected FM, LSB, USB or CW, e.g. " +
+                 std::string(cmd) + "FM");
+  station_.tracker().stop();
+  station_.radio().set_mode(cmd == "MU" ? radio::Link::uplink : radio::Link::downlink, *m);
+  return radio_outcome(cmd);
+}
+
+Reply Interpreter::frequency(std::string_view cmd, std::string_view arg) {
+  const std::string_view a = trim(arg);
+  const auto hz = parse_ten_hz(a);
+  if (!hz)
+    return error(std::string(cmd) + ": '" + std::string(a) +
+                 "' is not a frequency: expected 1 to 9 digits in 10 Hz units, not 0, e.g. " + std::string(cmd) +
+                 "14595000 for 145.950 MHz");
+  station_.tracker().stop();
+  station_.radio().set_frequency(cmd == "FU" ? radio::Link::uplink : radio::Link::downlink, *hz);
+  return radio_outcome(cmd);
+}
+
+Reply Interpreter::raw(std::string_view arg) {
+  if (arg.empty()) return error("S: nothing to send: expected the string after S, e.g. STX;");
+  const auto bytes = unescape(arg);
+  if (!bytes) return error("S: a bad escape in '" + std::string(arg) + "': expected \\xHH (two hex digits) or \\\\");
+  station_.tracker().stop();
+  station_.radio().send_raw(*bytes);
+  return radio_outcome("S");
+}
+
+Reply Interpreter::radio_outcome(std::string_view cmd) {
+  const radio::RadioStatus st = station_.radio().status();
+  if (st.fault) return error(std::string(cmd) + ": radio fault: " + st.message);
+  return {};
+}
+
+Reply Interpreter::antenna() {
+  const auto a = station_.antenna();
+  if (!a) {
+    const auto& st = station_.rotator().status();
+    return error("?A: no antenna position" + (st.link.ok() ? std::string() : ": " + st.link.message));
+  }
+  Reply r;
+  r.lines.push_back(format_antenna(a->az, a->el));
+  return r;
+}
+
+}  // namespace tb::host
