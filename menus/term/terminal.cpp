@@ -13,16 +13,6 @@ int Terminal::read_key(std::optional<Duration> timeout) {
     } else {
       k = next_key(timeout);
     }
-    if (k == kTimeout) return k;
-    if (swallow_ == Swallow::line_end && k == '\r') {
-      swallow_ = Swallow::lf;
-      continue;
-    }
-    if (swallow_ != Swallow::none && k == '\n') {
-      swallow_ = Swallow::none;
-      continue;
-    }
-    swallow_ = Swallow::none;
     return k;
   }
 }
@@ -78,7 +68,6 @@ std::optional<char> Terminal::read_choice(std::string_view accept, bool allow_en
     write(std::string_view(&c, 1));
     write("\n");
     flush();
-    swallow_ = Swallow::line_end;
     return c;
   }
 }

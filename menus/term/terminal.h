@@ -82,8 +82,7 @@ class Terminal {
   std::optional<std::string> read_line(std::size_t max_length = 80);
   // A single key for [Y/N]-style questions: echoes it and a newline; upper-cased. With `accept`,
   // other keys are ignored; Enter returns '\r' (echoing a newline) when allow_enter, else it is
-  // ignored. A line end typed right after the key is taken as part of the answer. nullopt when
-  // input closed.
+  // ignored. nullopt when input closed.
   std::optional<char> read_choice(std::string_view accept = {}, bool allow_enter = true);
 
   // An ASCII upload ending in Ctrl-Z (menus 3-3, 6-9): raw lines as received, each passed to
@@ -97,9 +96,6 @@ class Terminal {
 
  private:
   std::vector<int> pending_;  // keys read ahead (the LF after a CR that was not one)
-  // After a single-key answer, a line end typed after it belongs to that answer ("Y <ENTER>" in
-  // the manual's transcripts), not to the next prompt.
-  enum class Swallow { none, line_end, lf } swallow_ = Swallow::none;
 };
 
 }  // namespace tb::term

@@ -93,14 +93,15 @@ TEST_CASE("Sky plot and world map drawings") {
   CHECK(land < 72 * 18 / 2);
 }
 
-TEST_CASE("A line end typed after a single-key answer belongs to that answer") {
-  // "Y <ENTER>" then the next prompt's own answer: the Enter after Y must not reach edit_text.
-  term::ScriptTerminal t("Y\r\n90\rN\r");
-  CHECK(ask_yes_no(t, "Set Antenna Parking position ? [Y/N] "));
-  CHECK(edit_text(t, "Azimuth Parking value", "0.0") == "90");
-  CHECK_FALSE(ask_yes_no(t, "Again ? [Y/N] "));
-  // Enter alone at a key question without an Enter choice is ignored, not an answer.
-  term::ScriptTerminal u("\rA");
+TEST_CASE("Key questions ignore a bare Enter; the Enter after a Y/N answer goes to the next prompt") {
+  // The manual's 6-4: "Set Antenna rotation limit ? [Y/N] Y Azimuth minmum value : 0.0 <ENTER>".
+  term::ScriptTerminal t("Y\r340\r");
+  CHECK(ask_yes_no(t, "Set Antenna rotation limit ? [Y/N] "));
+  CHECK(edit_text(t, "Azimuth minmum value", "0.0") == "0.0");
+  CHECK(edit_text(t, "Azimuth maximum value", "360.0") == "340");
+  // The manual's 3-3: "Are you sure ? [Y/N] ? Y <ENTER>" then "File format NASA/AMSAT (N/A) : N".
+  term::ScriptTerminal u("Y\rA");
+  CHECK(ask_yes_no(u, "Are you sure ? [Y/N] ? "));
   CHECK(ask_key(u, "File format NASA/AMSAT (N/A) : ", "NA") == 'A');
-  CHECK(u.output() == "File format NASA/AMSAT (N/A) : A\n");
+  CHECK(u.output() == "Are you sure ? [Y/N] ? Y\nFile format NASA/AMSAT (N/A) : A\n");
 }
