@@ -212,8 +212,10 @@ TEST_CASE("HamlibRotator against rotctld: drive, read back, lose the daemon, rec
   CHECK(ctl.status().message.find("restored") != std::string::npos);
   p = rotctl_position(rotctl, port);
   REQUIRE(p);
-  CHECK(std::abs(p->az - 30.0) <= 3 * 360.0 / 1023);
-  CHECK(std::abs(p->el - 15.0) <= 90.0 / 511 + 1e-6);
+  // Within the dead band, plus one count: rotctl reads a moment after the controller's last reading,
+  // and the dummy rotator moves in real time in between (seen under load: 0.19 deg in elevation).
+  CHECK(std::abs(p->az - 30.0) <= 4 * 360.0 / 1023);
+  CHECK(std::abs(p->el - 15.0) <= 2 * 90.0 / 511 + 1e-6);
 
   // stop() reaches the rotator.
   ctl.set_target(AzEl{100.0, 15.0});
