@@ -28,25 +28,25 @@ std::optional<std::string> Terminal::read_line(std::size_t max_length) {
         const int next = read_key(std::chrono::milliseconds(30));
         if (next != '\n' && next != kTimeout && next != kEndOfInput) pending_.push_back(next);
       }
-      write("\n");
+      if (echo_) write("\n");
       flush();
       return text;
     }
     if (k == kCtrlZ && text.empty()) {
-      write("\n");
+      if (echo_) write("\n");
       return std::string(1, '\x1a');
     }
     if (k == kBackspace || k == 127) {
       if (!text.empty()) {
         text.pop_back();
-        write("\b \b");
+        if (echo_) write("\b \b");
         flush();
       }
       continue;
     }
     if (k < 32 || k > 126 || text.size() >= max_length) continue;  // ignore controls, overlong input
     text.push_back(static_cast<char>(k));
-    write(std::string_view(&text.back(), 1));
+    if (echo_) write(std::string_view(&text.back(), 1));
     flush();
   }
 }

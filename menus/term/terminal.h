@@ -77,6 +77,11 @@ class Terminal {
   // True when input has closed for good.
   virtual bool closed() const = 0;
 
+  // Typed characters are echoed (what a terminal on a serial line expects); a program talking to
+  // trakbox through a pipe may not want them back.
+  void set_echo(bool on) { echo_ = on; }
+  bool echo() const { return echo_; }
+
   // A line, echoed as typed, Backspace/DEL edit, Enter (CR, LF or CRLF) ends it.
   // nullopt when input closed. Ctrl-Z alone returns "\x1a".
   std::optional<std::string> read_line(std::size_t max_length = 80);
@@ -96,6 +101,7 @@ class Terminal {
 
  private:
   std::vector<int> pending_;  // keys read ahead (the LF after a CR that was not one)
+  bool echo_ = true;
 };
 
 }  // namespace tb::term

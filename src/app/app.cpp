@@ -20,6 +20,8 @@ std::string usage() {
          "\n"
          "commands:\n" +
          orbit_commands_summary() +
+         "  host [options]      host mode (menu 7's commands: AZ EL, MU, MD, FU, FD, S, ?A, ?, Q) on\n"
+         "                      stdin/stdout for scripts; takes the options above\n" +
          "\n"
          "`trakbox COMMAND --help` describes a command's arguments. Exit status: 0 done, 1 the command\n"
          "could not finish (e.g. a satellite decayed part-way), 2 bad arguments or unusable input.\n";
@@ -39,7 +41,8 @@ int main(int argc, char** argv) {
     if (command == "propagate") return run_propagate(std::move(rest));
     if (command == "schedule") return run_schedule(std::move(rest));
     if (command == "passes") return run_passes(std::move(rest));
-    std::fprintf(stderr, "trakbox: %s: unknown command; expected propagate, schedule or passes (see trakbox --help)\n",
+    if (command == "host") return run_tracker(rest, FrontEnd::host);
+    std::fprintf(stderr, "trakbox: %s: unknown command; expected propagate, schedule, passes or host (see trakbox --help)\n",
                  command.c_str());
     return kExitUsage;
   }

@@ -176,7 +176,7 @@ int usage_error(const std::string& text) {
 
 }  // namespace
 
-int run_tracker(const std::vector<std::string>& args) {
+int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   const auto specs = tracker_option_specs();
   const ParseOutcome parsed = parse_options(args, specs);
   if (parsed.error) return usage_error(parsed.error->text());
@@ -211,6 +211,8 @@ int run_tracker(const std::vector<std::string>& args) {
   const auto radio_spec = radio::parse_radio_spec(o.value("radio").value_or("simulated"));
   if (!radio_spec.spec) r.fail("--radio", radio_spec.error);
   if (o.has("tty") && o.has("line")) r.fail("--line", "not with --tty (a serial port is always plain lines)");
+  if (front_end == FrontEnd::host && (o.has("tty") || o.has("standalone")))
+    r.fail(o.has("tty") ? "--tty" : "--standalone", "not with trakbox host (host mode talks on stdin/stdout)");
   if (!r.ok()) return usage_error(r.error()->text());
 
   const std::filesystem::path state_dir = o.value("state") ? std::filesystem::path(*o.value("state"))
@@ -257,13 +259,17 @@ int run_tracker(const std::vector<std::string>& args) {
                                           rotator::SimulatedRotatorParams::matching(app.model().rotator)),
                     std::move(made.driver));
   log->info("rotator: {}; radio: {}", rotator::to_string(*rot_spec.spec), app.station().radio().describe());
+  app.station().tick();  // the antenna's position is known before the first prompt
   app.start(std::chrono::milliseconds(tick_ms.value_or(1000)));
   if (ram_lost || loaded.kind == store::LoadOutcome::Kind::fresh) app.save();
   log->info("trakbox {} started, state {}", kVersion, file.path().string());
 
   auto wait = [&app](int fd, std::optional<term::Duration> t) { return app.wait_readable(fd, t); };
   std::unique_ptr<term::Terminal> terminal;
-  if (const auto dev = o.value("tty")) {
+  if (front_end == FrontEnd::host) {
+    terminal = std::make_unique<term::LineTerminal>(STDIN_FILENO, STDOUT_FILENO, wait, false);
+    terminal->set_echo(false);
+  } else if (const auto dev = o.value("tty")) {
     std::string err;
     terminal = term::LineTerminal::open_serial(*dev, static_cast<int>(baud.value_or(app.model().station.com_baud)), wait, err);
     if (!terminal) return usage_error(err);
@@ -284,7 +290,9 @@ int run_tracker(const std::vector<std::string>& args) {
       terminal->line("(the damaged state was kept as " + kept + ")");
     }
     for (const auto& n : startup_notes) terminal->line(n);
-    if (standalone) {
+    if (front_end == FrontEnd::host) {
+      menus::menu_7_host_mode(*terminal, services);
+    } else if (standalone) {
       menus::standalone(*terminal, services, static_cast<int>(*standalone));
     } else {
       menus::sign_on(*terminal, services);

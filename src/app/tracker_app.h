@@ -10,7 +10,12 @@
 namespace tb::app {
 
 std::vector<OptionSpec> tracker_option_specs();
-int run_tracker(const std::vector<std::string>& args);
+// How the program talks to its operator.
+enum class FrontEnd {
+  menus,  // the TrakBox menus (or standalone with --standalone)
+  host,   // `trakbox host`: host mode (menu 7's command set) on stdin/stdout, no echo; Q ends
+};
+int run_tracker(const std::vector<std::string>& args, FrontEnd front_end = FrontEnd::menus);
 
 // Where the shipped data lives: --data, else $TRAKBOX_DATA, else the source tree's data/.
 std::string default_data_directory();

@@ -208,8 +208,9 @@ Reply Interpreter::execute(std::string_view line) {
 Reply Interpreter::az_el(std::string_view line) {
   const AzElParse p = parse_az_el(line);
   if (!p.args) return error("AZ/EL: " + p.error);
-  if (!station_.rotor_control())
-    return error("AZ/EL: rotor control is OFF (the E key of realtime tracking): antenna not moved");
+  // A host program pointing the antenna takes control, as the operator pressing E would: it has no
+  // other way to switch rotor control on. The limits still hold (point() clamps).
+  if (!station_.rotor_control()) station_.set_rotor_control(true);
   const rotator::AzEl asked{p.args->az, p.args->el};
   const rotator::AzEl got = station_.point(asked);
   Reply r;
