@@ -60,6 +60,7 @@ constexpr double kAngleMargin = 2e-4;        // rad, on horizon angles
 constexpr double kMaxElTolerance = 2e-5;     // sin(el): hidden maxima below this are not chased
 constexpr double kTaylorAngle = 5e-7;        // rad: error allowed to the model step onto a maximum
 constexpr double kFlatTopShift = 10.0;       // s: flatter maxima are found from F alone
+constexpr double kFarStep = 300.0;           // s: a step this long needs no refinement
 
 void sin_cos(double x, double& s, double& c) {
 #if defined(__GNUC__)
@@ -99,11 +100,16 @@ struct Sample {
 
 // The angles of a sample that the geometric bounds use (computed only where a step is planned).
 struct Angles {
-  double theta, beta, du;  // du in (-pi, pi]
-  explicit Angles(const Sample& s)
-      : theta(std::acos(std::clamp(s.cos_theta, -1.0, 1.0))),
-        beta(std::asin(std::min(std::abs(s.sin_beta), 1.0))),
-        du(std::atan2(s.du_y, s.du_x)) {}
+  double theta = 0.0;    // geocentric angle station - satellite (only when asked for)
+  double beta, du;       // du in (-pi, pi]
+  double sin_b, cos_b;   // of beta
+  Angles(const Sample& s, bool with_theta)
+      : beta(std::asin(std::min(std::abs(s.sin_beta), 1.0))),
+        du(std::atan2(s.du_y, s.du_x)),
+        sin_b(std::min(std::abs(s.sin_beta), 1.0)),
+        cos_b(std::sqrt(1.0 - sin_b * sin_b)) {
+    if (with_theta) theta = std::acos(std::clamp(s.cos_theta, -1.0, 1.0));
+  }
 };
 
 // The first x > 0 where F + d x + (b / 2) x^2 reaches 0 for F < 0 (an upper envelope), or where
@@ -171,8 +177,8 @@ class Searcher {
   double reach(const Sample& s, double span, int dir) const;
   // Whether F provably keeps its sign from a (where it does for `fwd` seconds) to b.
   bool keeps_sign(const Sample& a, double fwd, const Sample& b) const {
-    const double D = b.t - a.t;
-    return fwd >= D || fwd + reach(b, D, -1) >= D || monotone(a, b);
+    const double gap = b.t - a.t - fwd;  // what b has to cover looking back
+    return gap <= 0.0 || reach(b, gap, -1) >= gap || monotone(a, b);
   }
   // Whether F is provably monotonic from a to b: F' has the same sign at both ends and cannot turn
   // in between, |F'a| + |F'b| > B (b - a).
@@ -352,7 +358,7 @@ void Searcher::init_bounds(const Sample& s0) {
   h_min_ = (1.0 - kMomentumMargin) * s0.h;
   h_max_ = (1.0 + kMomentumMargin) * s0.h;
   derive();
-  eccentric_ = sat_.deep_space() || (r_max_ - r_min_) / (r_max_ + r_min_) > 0.05;
+  eccentric_ = sat_.elements().eccentricity > 0.05;
   vel_err_ = kVelocityErrKmS + kVelocityErrPerEcc * sat_.elements().eccentricity;
 }
 
@@ -433,15 +439,18 @@ double Searcher::along_track(const Sample& s, const Angles& g, double span, bool
   // cos(theta) = cos(beta) cos(du) exactly. The foot p moves at most at the station's inertial speed
   // over cos(beta) plus the plane's turning; the satellite runs at h / r^2 along the plane. When it is
   // always faster than the foot, du only grows, at a rate in [w_lo, w_hi].
-  const Local G = local(s, span);
+  struct {
+    double r_lo, r_hi;
+  } G = {std::max(r_min_, s.r - rdot_max_ * span), std::min(r_max_, s.r + rdot_max_ * span)};
   const double omega_w = G.r_hi * perturbation(G.r_lo, G.r_hi) / h_min_;
   const double beta = g.beta, du = g.du;
   const double beta_rate = kOmega * cos_phi_ + omega_w;
-  const double beta_hi = beta + beta_rate * span;
-  if (beta_hi >= 1.4) return 0.0;
-  const double cos_beta_hi = std::cos(beta_hi);
-  const double beta_lo = std::max(0.0, beta - beta_rate * span);
-  const double cos_beta_lo = std::cos(beta_lo);
+  const double db = beta_rate * span;
+  if (beta + db >= 1.4) return 0.0;
+  double sdb, cdb;
+  sin_cos(db, sdb, cdb);
+  const double cos_beta_hi = g.cos_b * cdb - g.sin_b * sdb;                  // cos(beta + db)
+  const double cos_beta_lo = beta > db ? g.cos_b * cdb + g.sin_b * sdb : 1.0;  // cos(max(0, beta - db))
   // The foot's own speed along the plane: the station moves at omega z x u, and
   // (z x u).(W x p) = (W_z - u_z sin(beta)) / cos(beta), so foot = omega (W_z - u_z sin(beta)) / cos^2(beta).
   // W_z changes only as the plane turns, sin(beta) at most at beta_rate.
@@ -481,49 +490,63 @@ double Searcher::along_track(const Sample& s, const Angles& g, double span, bool
 }
 
 double Searcher::step_below(const Sample& s) {
-  const Angles g(s);
+  const Angles g(s, true);
   const double theta = g.theta, beta = g.beta;
   const double d = s.Fdot + fdot_err(s);
   // Global constants: valid for any step.
   double best = std::max({(theta - lambda_glob_) / omega_a_glob_, (beta - lambda_glob_) / omega_b_glob_,
                           envelope_root(s.F, d, b_below_glob_)});
-  // Local constants over a span: try about twice the last step, then a span fitted to the result.
-  auto local_step = [&](double span) {
-    const Local L = local(s, span);
-    const double lam = lambda(L.r_hi, true) + kAngleMargin;
-    const double omega_w = L.r_hi * perturbation(L.r_lo, L.r_hi) / h_min_;
-    const double s_lo = std::max(range_floor_below(L.r_lo), s.s - L.V * span);
-    const double loc = std::max({(theta - lam) * L.r_lo / L.V, (beta - lam) / (kOmega * cos_phi_ + omega_w),
-                                 envelope_root(s.F, d, curvature(s, L, span, s_lo))});
-    return std::min(loc, span);
-  };
-  best = std::max(best, fitted_span(local_step));
-  // Along track, over one revolution and over a shorter span (tighter when close).
+  // Along track, over one revolution.
   const double rev = kTwoPi * r_max_ * r_max_ / h_min_;
   const double x = along_track(s, g, rev, true, best);
   best = std::max(best, x);
-  if (x > 0.0 && x < 0.5 * rev) best = std::max(best, along_track(s, g, std::max(1.5 * x, 60.0), true, best));
+  if (x < 0.4 * rev) {
+    // Close: local constants over a span, about twice the last step, then one fitted to the result.
+    auto local_step = [&](double span) {
+      const Local L = local(s, span);
+      const double lam = lambda(L.r_hi, true) + kAngleMargin;
+      const double omega_w = L.r_hi * perturbation(L.r_lo, L.r_hi) / h_min_;
+      const double s_lo = std::max(range_floor_below(L.r_lo), s.s - L.V * span);
+      const double loc = std::max({(theta - lam) * L.r_lo / L.V, (beta - lam) / (kOmega * cos_phi_ + omega_w),
+                                   envelope_root(s.F, d, curvature(s, L, span, s_lo))});
+      return std::min(loc, span);
+    };
+    best = std::max(best, fitted_span(local_step));
+    // Along track again: over a span fitted to the result, and with what the rest now covers.
+    const double span = x > 0.0 ? std::max(1.5 * x, 60.0) : rev;
+    best = std::max(best, along_track(s, g, span, true, best));
+  }
   return kStepSafety * best;
 }
 
 double Searcher::step_above(const Sample& s) {
   const double d = s.Fdot - fdot_err(s);
   double best = envelope_root(s.F, d, b_above_glob_);
-  auto local_step = [&](double span) {
-    const Local L = local(s, span);
-    const double s_lo = std::max({L.r_lo - rs_, s.s - L.V * span, 1.0});
-    return std::min(envelope_root(s.F, d, curvature(s, L, span, s_lo)), span);
-  };
-  best = std::max(best, fitted_span(local_step));
-  // Along track: a pass lasts at most about 2 lam / w; try that span and a shorter one.
+  // Along track: a pass lasts at most about 2 lam / w; from a quarter revolution to fitted spans.
   const double rev = kTwoPi * r_max_ * r_max_ / h_min_;
-  const Angles g(s);
+  const Angles g(s, false);
   double x = along_track(s, g, 0.25 * rev, false, best);
   for (int k = 0; k < 2 && x > 0.0; ++k) {  // a span fitted to the result is tighter
     best = std::max(best, x);
     x = along_track(s, g, std::max(1.2 * x, 30.0), false, best);
   }
   best = std::max(best, x);
+  if (true) {
+    auto local_step = [&](double span) {
+      const Local L = local(s, span);
+      const double s_lo = std::max({L.r_lo - rs_, s.s - L.V * span, 1.0});
+      return std::min(envelope_root(s.F, d, curvature(s, L, span, s_lo)), span);
+    };
+    const double env = fitted_span(local_step);
+    if (env > best) {
+      best = env;
+      if (x == 0.0) {  // the along-track bound may start to hold within what the envelope covers
+        x = along_track(s, g, 0.25 * rev, false, best);
+        if (x > 0.0) x = std::max(x, along_track(s, g, std::max(1.2 * x, 30.0), false, best));
+        best = std::max(best, x);
+      }
+    }
+  }
   return kStepSafety * best;
 }
 
@@ -847,6 +870,11 @@ std::optional<Pass> Searcher::next_any() {
   Sample up = aos_s;
   double los_t = span_;
   Sample los_near = up;
+  // As in find_aos: a speculative sample not proven yet (still up), or a refined LOS with its up side.
+  std::optional<Sample> ahead;
+  bool cross = false;
+  double cross_t = 0.0;
+  Sample cross_down, cross_near;
   for (;;) {
     if (up.t >= span_) {
       pass.up_at_end = true;
@@ -856,26 +884,49 @@ std::optional<Pass> Searcher::next_any() {
       break;
     }
     const double safe = step_above(up);
+    if (ahead && keeps_sign(up, safe, *ahead)) {
+      if (cross) {
+        los_t = cross_t;
+        los_near = cross_near;
+        samples.push_back(*ahead);
+        cur_ = cross_down;
+        break;
+      }
+      last_step_ = ahead->t - up.t;
+      samples.push_back(*ahead);
+      up = *ahead;
+      ahead.reset();
+      continue;
+    }
     Sample n, in, out;
     double t = 0.0;
     // A step onto the predicted LOS, kept only when proven not to have jumped a crossing.
     const double xp = predict_crossing(up);
-    if (xp > safe && xp < 3.0 * safe + 30.0 && up.t + xp < span_) {
+    if (!ahead && xp > safe && xp < 3.0 * safe + 30.0 && up.t + xp < span_) {
       if (eval(up.t + xp + 0.125 * tol_ + 0.002 * xp, n)) {
         widen(n);
         if (n.F < 0.0) {
           const bool single = monotone(up, n);
-          if (refine_crossing(up, n, single, t, in, out, los_near) && (single || keeps_sign(up, safe, in))) {
-            los_t = t;
-            samples.push_back(in);
-            cur_ = out;
-            break;
+          if (refine_crossing(up, n, single, t, in, out, los_near)) {
+            if (single || keeps_sign(up, safe, in)) {
+              los_t = t;
+              samples.push_back(in);
+              cur_ = out;
+              break;
+            }
+            ahead = in;
+            cross = true;
+            cross_t = t;
+            cross_down = out;
+            cross_near = los_near;
           }
         } else if (keeps_sign(up, safe, n)) {
           last_step_ = n.t - up.t;
           samples.push_back(n);
           up = n;
           continue;
+        } else {
+          ahead = n;
         }
       }
     }
@@ -928,9 +979,31 @@ std::optional<Pass> Searcher::next_any() {
     }
     samples.push_back(n);
     up = n;
+    if (ahead && up.t >= ahead->t) {
+      ahead.reset();
+      cross = false;
+    }
   }
-  // For a whole pass the middle of AOS and LOS is a good first guess for the maximum.
-  finish_pass(samples, pass, pass.up_at_start || pass.up_at_end ? -1.0 : 0.5 * (aos_t + los_t));
+  // For a whole pass, the top of the cubic through (0, F') at AOS and LOS is a good first guess for
+  // the maximum (the middle for a symmetric pass).
+  double guess = -1.0;
+  if (!pass.up_at_start && !pass.up_at_end) {
+    const double D = los_t - aos_t, m0 = aos_near.Fdot * D, m1 = los_near.Fdot * D;
+    const double qa = 3.0 * (m0 + m1), qb = -2.0 * (2.0 * m0 + m1);  // p'(u) = qa u^2 + qb u + m0
+    double u = 0.5;
+    if (std::abs(qa) > 1e-12 * std::abs(qb)) {
+      const double disc = qb * qb - 4.0 * qa * m0;
+      if (disc >= 0.0) {
+        const double sq = std::sqrt(disc);
+        for (double cand : {(-qb - sq) / (2.0 * qa), (-qb + sq) / (2.0 * qa)})
+          if (cand > 0.0 && cand < 1.0 && 2.0 * qa * cand + qb < 0.0) u = cand;
+      }
+    } else if (qb != 0.0) {
+      u = std::clamp(-m0 / qb, 0.0, 1.0);
+    }
+    guess = aos_t + u * D;
+  }
+  finish_pass(samples, pass, guess);
   pass.aos = at(aos_t);
   pass.los = at(los_t);
   pass.aos_az_deg = look_angles(aos_near.ecef, obs_).az_deg;
@@ -939,24 +1012,51 @@ std::optional<Pass> Searcher::next_any() {
 }
 
 bool Searcher::find_aos(double& aos_t, Sample& aos_s, Sample& aos_near) {
+  // A speculative sample that could not be proven yet is kept: `ahead` (still down) or a refined
+  // crossing `cross` whose down side is `ahead`. Safe steps go on until the proof reaches it.
+  std::optional<Sample> ahead;
+  bool cross = false;
+  double cross_t = 0.0;
+  Sample cross_up, cross_near;
   for (;;) {
     const double safe = step_below(cur_);
     if (cur_.t + safe >= span_) return false;
+    if (ahead && keeps_sign(cur_, safe, *ahead)) {
+      if (cross) {
+        aos_t = cross_t;
+        aos_s = cross_up;
+        aos_near = cross_near;
+        return aos_t < span_;
+      }
+      last_step_ = ahead->t - cur_.t;
+      cur_ = *ahead;
+      ahead.reset();
+      continue;
+    }
     Sample n, down;
     // A step onto the predicted AOS, kept only when proven not to have jumped a crossing.
     const double xp = predict_crossing(cur_);
-    if (xp > safe && xp < 3.0 * safe + 30.0) {
+    if (!ahead && xp > safe && xp < 3.0 * safe + 30.0) {
       if (eval(std::min(cur_.t + xp + 0.125 * tol_ + 0.002 * xp, span_), n)) {
         widen(n);
         if (n.F >= 0.0) {
           const bool single = monotone(cur_, n);
-          if (refine_crossing(cur_, n, single, aos_t, aos_s, down, aos_near) &&
-              (single || keeps_sign(cur_, safe, down)))
-            return aos_t < span_;
+          if (refine_crossing(cur_, n, single, aos_t, aos_s, down, aos_near)) {
+            if (single || keeps_sign(cur_, safe, down)) {
+              return aos_t < span_;
+            }
+            ahead = down;
+            cross = true;
+            cross_t = aos_t;
+            cross_up = aos_s;
+            cross_near = aos_near;
+          }
         } else if (keeps_sign(cur_, safe, n)) {
           last_step_ = n.t - cur_.t;
           cur_ = n;
           continue;
+        } else {
+          ahead = n;
         }
       }
     }
@@ -970,6 +1070,10 @@ bool Searcher::find_aos(double& aos_t, Sample& aos_s, Sample& aos_near) {
       return refine_crossing(cur_, n, monotone(cur_, n), aos_t, aos_s, down, aos_near) && aos_t < span_;
     }
     cur_ = n;
+    if (ahead && cur_.t >= ahead->t) {  // stepped past it (a min_step): forget it
+      ahead.reset();
+      cross = false;
+    }
     if (tn >= span_) return false;
   }
 }
