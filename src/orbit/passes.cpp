@@ -171,7 +171,9 @@ class Searcher {
     const double span0 = std::clamp(2.0 * last_step_, 20.0, 86400.0);
     const double x0 = step(span0);
     const double span1 = x0 < span0 ? std::max(1.5 * x0, 20.0) : 4.0 * span0;
-    return std::max(x0, step(span1));
+    const double x1 = std::max(x0, step(span1));
+    // A step that fell well short of the last one: try the last one's span too.
+    return x1 < 0.5 * last_step_ ? std::max(x1, step(std::max(last_step_, 20.0))) : x1;
   }
   // How long after (dir = 1) or before (dir = -1) s, at most span, F provably keeps its sign.
   double reach(const Sample& s, double span, int dir) const;
@@ -202,6 +204,8 @@ class Searcher {
   double span_ = 0.0;        // window length, s
   PassOptions opt_;
   double tol_ = 0.1;         // precision, s
+  double tol_top_ = 0.1;     // precision of a maximum: at most 0.1 s, so that its elevation
+                             // stays within 1e-4 deg whatever the precision asked of AOS and LOS
   double min_step_ = 0.05;
   double tsince0_ = 0.0;     // minutes from epoch at the window start
   double gmst0_ = 0.0;       // GMST at the window start, rad
@@ -237,6 +241,7 @@ Searcher::Searcher(const Sgp4& sat, const Observer& o, UtcTime start, UtcTime st
     : sat_(sat), obs_(o), start_(start), opt_(opt) {
   span_ = static_cast<double>((stop - start).count()) * 1e-6;
   tol_ = std::max(opt_.precision_s, 1e-3);
+  tol_top_ = std::min(tol_, 0.1);
   min_step_ = 0.5 * tol_;
   tsince0_ = minutes_between(sat.epoch(), start);
   // GMST-82 is a cubic in time; over the days a search spans it is linear to 1e-11 rad.
@@ -673,8 +678,8 @@ Sample Searcher::refine_max(const Sample& a, const Sample& b, double guess) {
   Sample m, prev;
   bool have_prev = false, have_m = false;
   double width = hi.t - lo.t;
-  for (int it = 0; it < 60 && hi.t - lo.t > tol_; ++it) {
-    x = std::clamp(x, lo.t + 0.125 * tol_, hi.t - 0.125 * tol_);
+  for (int it = 0; it < 60 && hi.t - lo.t > tol_top_; ++it) {
+    x = std::clamp(x, lo.t + 0.125 * tol_top_, hi.t - 0.125 * tol_top_);
     if (have_m) {
       prev = m;
       have_prev = true;
@@ -688,14 +693,14 @@ Sample Searcher::refine_max(const Sample& a, const Sample& b, double guess) {
     if (m.F > best.F) best = m;
     (m.Fdot > 0.0 ? lo : hi) = m;
     double nx = m.Fddot < 0.0 ? m.t - m.Fdot / m.Fddot : -1.0;
-    if (std::abs(nx - m.t) < 0.25 * tol_) break;
+    if (std::abs(nx - m.t) < 0.25 * tol_top_) break;
     // A short Newton step needs no propagation: the quadratic model gives the maximum, a Taylor step
     // of the state its direction.
     const double dx = nx - m.t;
     // The step is short enough when the velocity error, extrapolated over it, moves the line of sight by
     // less than kTaylorAngle, and can move the zero of Fdot by less than a quarter of the precision.
     if (nx > lo.t && nx < hi.t && vel_err_ * std::abs(dx) < kTaylorAngle * m.s &&
-        fdot_err(m) < -0.25 * tol_ * m.Fddot) {
+        fdot_err(m) < -0.25 * tol_top_ * m.Fddot) {
       Sample top = m;
       top.t = nx;
       top.F = m.F + 0.5 * m.Fdot * dx;  // F + F' dx + F'' dx^2 / 2 with dx = -F'/F''
@@ -716,7 +721,7 @@ Sample Searcher::refine_max(const Sample& a, const Sample& b, double guess) {
   // the top from F alone.
   const double shift_bound = fdot_err(m) / std::max(-m.Fddot, 1e-300);
   if (shift_bound > kFlatTopShift) return polish_max(best, std::min(shift_bound, 3600.0));
-  if (!(m.Fddot < 0.0) || shift_bound < 0.25 * tol_) return best;
+  if (!(m.Fddot < 0.0) || shift_bound < 0.25 * tol_top_) return best;
   // The SGP4 velocity is not exactly the derivative of the SGP4 position, so the zero of Fdot may sit
   // off the top of F where the top is flat. Measure the bias b of Fdot between two samples (trapezoid
   // rule: F(q) - F(m) = D (Fdot(m) + Fdot(q)) / 2 - b D, up to D^3 F'''/12) and go to the zero of
@@ -733,7 +738,7 @@ Sample Searcher::refine_max(const Sample& a, const Sample& b, double guess) {
   Sample cur = m;
   for (int k = 0; k < 3; ++k) {
     const double tx = cur.t - (cur.Fdot - bias) / cur.Fddot;
-    if (std::abs(tx - cur.t) < 0.25 * tol_) break;
+    if (std::abs(tx - cur.t) < 0.25 * tol_top_) break;
     Sample n;
     if (!eval(tx, n) || !(n.Fddot < 0.0)) break;
     widen(n);
@@ -745,7 +750,7 @@ Sample Searcher::refine_max(const Sample& a, const Sample& b, double guess) {
 
 Sample Searcher::polish_max(const Sample& best, double h) {
   // Successive parabolic interpolation on F alone, through a triple with the highest in the middle.
-  h = std::max(h, tol_);
+  h = std::max(h, tol_top_);
   Sample a, b, c = best;
   if (!eval(c.t - h, a) || !eval(c.t + h, b)) return best;
   for (int k = 0; k < 8 && (a.F > c.F || b.F > c.F); ++k) {  // walk until c is the highest
@@ -765,7 +770,7 @@ Sample Searcher::polish_max(const Sample& best, double h) {
     const double den = p * (c.F - b.F) - q * (c.F - a.F);
     if (den == 0.0) break;
     const double x = c.t - 0.5 * num / den;
-    if (!(x > a.t && x < b.t) || std::abs(x - c.t) < 0.5 * tol_) break;
+    if (!(x > a.t && x < b.t) || std::abs(x - c.t) < 0.5 * tol_top_) break;
     Sample m;
     if (!eval(x, m)) break;
     if (m.F > c.F) {
@@ -796,7 +801,7 @@ void Searcher::finish_pass(std::vector<Sample>& samples, Pass& p, double guess) 
     work.pop_back();
     const Sample a = samples[ia], b = samples[ib];
     const double D = b.t - a.t;
-    if (D <= tol_) continue;
+    if (D <= tol_top_) continue;
     if (a.Fdot > 0.0 && b.Fdot <= 0.0) {
       const Sample m = refine_max(a, b, guess);
       if (m.F > top.F) top = m;
@@ -829,7 +834,7 @@ void Searcher::finish_pass(std::vector<Sample>& samples, Pass& p, double guess) 
     }
     if (split > 0.0) {
       Sample m;
-      if (!eval(std::clamp(a.t + split * D, a.t + 0.25 * tol_, b.t - 0.25 * tol_), m)) continue;
+      if (!eval(std::clamp(a.t + split * D, a.t + 0.25 * tol_top_, b.t - 0.25 * tol_top_), m)) continue;
       widen(m);
       if (m.F > top.F) top = m;
       samples.push_back(m);
