@@ -95,8 +95,17 @@ struct Sample {
   double du_y = 0.0, du_x = 0.0;  // atan2(du_y, du_x): angle of the satellite ahead of the station's foot
                                   // on the orbit plane
   StateVector ecef;
-  Vec3 a_ecef{};           // point-mass gravity + centrifugal + Coriolis, km/s^2 (for Taylor steps)
 };
+
+// Earth-fixed acceleration with point-mass gravity: gravity + centrifugal + Coriolis, km/s^2 (for
+// Newton and Taylor steps, never for bounds).
+Vec3 accel(const StateVector& e) {
+  const double r2 = dot(e.r_km, e.r_km);
+  const double k = kEarthRotationRadS * kEarthRotationRadS - kMu / (r2 * std::sqrt(r2));
+  return {k * e.r_km[0] + 2.0 * kEarthRotationRadS * e.v_km_s[1],
+          k * e.r_km[1] - 2.0 * kEarthRotationRadS * e.v_km_s[0],
+          (k - kEarthRotationRadS * kEarthRotationRadS) * e.r_km[2]};
+}
 
 // The angles of a sample that the geometric bounds use (computed only where a step is planned).
 struct Angles {
@@ -161,7 +170,11 @@ class Searcher {
   double fdot_err(const Sample& s) const { return vel_err_ / s.s; }
   // (d): the time, at most span, for which the satellite provably stays down (below) or up, given
   // that it provably does for `covered` seconds anyway; 0 if the bound says nothing.
-  double along_track(const Sample& s, const Angles& g, double span, bool below, double covered) const;
+  // mode kAhead: as above; kBack: the same looking back from s; kGuess: where a forward jump would
+  // land if the satellite had already cleared the window's edge (to be proven afterwards).
+  enum Mode { kAhead, kBack, kGuess };
+  double along_track(const Sample& s, const Angles& g, double span, bool below, double covered,
+                     Mode mode = kAhead) const;
   double step_below(const Sample& s);
   double step_above(const Sample& s);
   // The best of step(span) (a bound valid over span, capped by it) for two spans: about twice the
@@ -197,6 +210,8 @@ class Searcher {
   Sample refine_max(const Sample& a, const Sample& b, double guess);
   Sample polish_max(const Sample& best, double h);
   UtcTime at(double t) const { return add_seconds(start_, t); }
+  // look_angles(ecef, obs_) with the station's frame computed once (the same arithmetic).
+  LookAngles look(const StateVector& ecef) const;
 
   const Sgp4& sat_;
   Observer obs_;
@@ -214,6 +229,7 @@ class Searcher {
   // Station.
   Vec3 site_{};              // Earth-fixed position, km
   Vec3 up_{};                // geodetic zenith
+  double sl_ = 0.0, cl_ = 1.0, so_ = 0.0, co_ = 1.0;  // sin, cos of geodetic latitude and longitude
   Vec3 us_{};                // geocentric direction
   double rs_ = 0.0;          // geocentric distance, km
   double cos_phi_ = 1.0;     // cos(geocentric latitude)
@@ -254,7 +270,11 @@ Searcher::Searcher(const Sgp4& sat, const Observer& o, UtcTime start, UtcTime st
 
   site_ = observer_ecef_km(o);
   const double lat = o.lat_deg * kDeg, lon = o.lon_deg * kDeg;
-  up_ = {std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)};
+  sl_ = std::sin(lat);
+  cl_ = std::cos(lat);
+  so_ = std::sin(lon);
+  co_ = std::cos(lon);
+  up_ = {cl_ * co_, cl_ * so_, sl_};
   rs_ = norm(site_);
   us_ = {site_[0] / rs_, site_[1] / rs_, site_[2] / rs_};
   cos_phi_ = std::hypot(us_[0], us_[1]);
@@ -287,32 +307,51 @@ bool Searcher::eval(double t, Sample& out) {
   const Vec3 rho = {e.r_km[0] - site_[0], e.r_km[1] - site_[1], e.r_km[2] - site_[2]};
   out.t = t;
   out.s = norm(rho);
-  const double f = dot(rho, up_) / out.s;
-  out.sdot = dot(rho, e.v_km_s) / out.s;
+  const double inv_s = 1.0 / out.s;
+  const double f = dot(rho, up_) * inv_s;
+  out.sdot = dot(rho, e.v_km_s) * inv_s;
   out.F = f - sin_h_;
-  out.Fdot = (dot(e.v_km_s, up_) - f * out.sdot) / out.s;
-  out.r = norm(e.r_km);
-  out.v = norm(e.v_km_s);
-  const double ir3 = kMu / (out.r * out.r * out.r);
+  out.Fdot = (dot(e.v_km_s, up_) - f * out.sdot) * inv_s;
+  const double r2 = dot(e.r_km, e.r_km), v2 = dot(e.v_km_s, e.v_km_s);
+  out.r = std::sqrt(r2);
+  out.v = std::sqrt(v2);
+  const double ir3 = kMu / (r2 * out.r);
   const double w2 = kEarthRotationRadS * kEarthRotationRadS;
-  const double cxy = (w2 - ir3), cz = ir3 * e.r_km[2];
+  const double cxy = w2 - ir3, cz = ir3 * e.r_km[2];
   out.c0 = std::sqrt(cxy * cxy * (e.r_km[0] * e.r_km[0] + e.r_km[1] * e.r_km[1]) + cz * cz);
   // f'' = a.(z - f u) / s - |u'|^2 f - 2 (s'/s) f', a = gravity + centrifugal + Coriolis.
-  Vec3& a = out.a_ecef;
-  a = {(w2 - ir3) * e.r_km[0] + 2.0 * kEarthRotationRadS * e.v_km_s[1],
-       (w2 - ir3) * e.r_km[1] - 2.0 * kEarthRotationRadS * e.v_km_s[0], -ir3 * e.r_km[2]};
-  const double u2 = std::max(0.0, out.v * out.v - out.sdot * out.sdot) / (out.s * out.s);
-  out.Fddot = (dot(a, up_) - f * dot(a, rho) / out.s) / out.s - u2 * f - 2.0 * out.sdot / out.s * out.Fdot;
+  const Vec3 a = accel(e);
+  const double u2 = std::max(0.0, v2 - out.sdot * out.sdot) * inv_s * inv_s;
+  out.Fddot = (dot(a, up_) - f * dot(a, rho) * inv_s) * inv_s - u2 * f - 2.0 * out.sdot * inv_s * out.Fdot;
   out.cos_theta = dot(e.r_km, us_) / out.r;
   const Vec3 hv = cross(rt, vt);  // inertial angular momentum, TEME
   out.h = norm(hv);
-  const Vec3 w = {(c * hv[0] + sn * hv[1]) / out.h, (-sn * hv[0] + c * hv[1]) / out.h, hv[2] / out.h};
+  const double inv_h = 1.0 / out.h;
+  const Vec3 w = {(c * hv[0] + sn * hv[1]) * inv_h, (-sn * hv[0] + c * hv[1]) * inv_h, hv[2] * inv_h};
   out.sin_beta = dot(w, us_);
   out.w_z = w[2];
   // The satellite moves along W x r; ahead of the foot p of the station: cos(du) ~ us.r, sin ~ us.(r x W).
   out.du_y = dot(us_, cross(e.r_km, w));
   out.du_x = dot(us_, e.r_km);
   return true;
+}
+
+LookAngles Searcher::look(const StateVector& ecef) const {
+  const Vec3 rho = {ecef.r_km[0] - site_[0], ecef.r_km[1] - site_[1], ecef.r_km[2] - site_[2]};
+  const double south = sl_ * co_ * rho[0] + sl_ * so_ * rho[1] - cl_ * rho[2];
+  const double east = -so_ * rho[0] + co_ * rho[1];
+  const double zen = cl_ * co_ * rho[0] + cl_ * so_ * rho[1] + sl_ * rho[2];
+  LookAngles la;
+  la.range_km = norm(rho);
+  if (la.range_km <= 0.0) return la;
+  double az = (east == 0.0 && south == 0.0) ? 0.0 : std::atan2(east, -south) / kDeg;
+  az = std::fmod(az, 360.0);
+  if (az < 0.0) az += 360.0;
+  if (az >= 360.0) az = 0.0;
+  la.az_deg = az;
+  la.el_deg = std::atan2(zen, std::hypot(south, east)) / kDeg;
+  la.range_rate_km_s = dot(rho, ecef.v_km_s) / la.range_km;
+  return la;
 }
 
 double Searcher::lambda(double r, bool low) const {
@@ -439,7 +478,8 @@ double Searcher::curvature(const Sample& s, const Local& L, double span, double 
   return std::min(crude, (L.A / s_lo + K * std::min(1.0, f0 + d0 * span) + C * d0) / den);
 }
 
-double Searcher::along_track(const Sample& s, const Angles& g, double span, bool below, double covered) const {
+double Searcher::along_track(const Sample& s, const Angles& g, double span, bool below, double covered,
+                             Mode mode) const {
   // Station u = cos(beta) p + sin(beta) W, satellite r^ = cos(du) p + sin(du) W x p, so
   // cos(theta) = cos(beta) cos(du) exactly. The foot p moves at most at the station's inertial speed
   // over cos(beta) plus the plane's turning; the satellite runs at h / r^2 along the plane. When it is
@@ -447,6 +487,9 @@ double Searcher::along_track(const Sample& s, const Angles& g, double span, bool
   struct {
     double r_lo, r_hi;
   } G = {std::max(r_min_, s.r - rdot_max_ * span), std::min(r_max_, s.r + rdot_max_ * span)};
+  // A satellite slower than the Earth's rotation may fall behind its foot (geostationary, a high
+  // apogee): nothing to rely on.
+  if (h_min_ / (G.r_hi * G.r_hi) <= kOmega) return 0.0;
   const double omega_w = G.r_hi * perturbation(G.r_lo, G.r_hi) / h_min_;
   const double beta = g.beta, du = g.du;
   const double beta_rate = kOmega * cos_phi_ + omega_w;
@@ -477,9 +520,12 @@ double Searcher::along_track(const Sample& s, const Angles& g, double span, bool
     const double c = cos_lam / cos_beta_lo;
     if (c >= 1.0) return span;
     const double u = std::acos(c);
-    if (du < -u) {
+    if (mode == kBack) {
+      if (du > u) x = (du - u) / w_hi;                  // came from the window's far edge
+      else if (du < -u) x = (du + kTwoPi - u) / w_hi;   // came round the orbit
+    } else if (du < -u) {
       x = (-u - du) / w_hi;                 // still approaching
-    } else if (du > u || covered >= (u - du) / w_lo) {
+    } else if (du > u || covered >= (u - du) / w_lo || (mode == kGuess && du >= 0.0)) {
       x = (kTwoPi - u - du) / w_hi;         // passed (or surely past before `covered` runs out)
     }
   } else {
@@ -489,7 +535,11 @@ double Searcher::along_track(const Sample& s, const Angles& g, double span, bool
     const double c = cos_lam / cos_beta_hi;
     if (c >= 1.0) return 0.0;
     const double u = std::acos(c);
-    if (du <= u && (du >= -u || covered >= (-u - du) / w_lo)) x = (u - du) / w_hi;
+    if (mode == kBack) {
+      if (std::abs(du) <= u) x = (du + u) / w_hi;
+    } else if (du <= u && (du >= -u || covered >= (-u - du) / w_lo || mode == kGuess)) {
+      x = (u - du) / w_hi;
+    }
   }
   return std::min(span, x);
 }
@@ -501,11 +551,11 @@ double Searcher::step_below(const Sample& s) {
   // Global constants: valid for any step.
   double best = std::max({(theta - lambda_glob_) / omega_a_glob_, (beta - lambda_glob_) / omega_b_glob_,
                           envelope_root(s.F, d, b_below_glob_)});
-  // Along track, over one revolution.
+  // Along track, over one revolution (unless the station stays far from the plane for longer).
   const double rev = kTwoPi * r_max_ * r_max_ / h_min_;
-  const double x = along_track(s, g, rev, true, best);
+  const double x = best < rev ? along_track(s, g, rev, true, best) : 0.0;
   best = std::max(best, x);
-  if (x < 0.4 * rev) {
+  if (best < 0.4 * rev) {
     // Close: local constants over a span, about twice the last step, then one fitted to the result.
     auto local_step = [&](double span) {
       const Local L = local(s, span);
@@ -531,7 +581,7 @@ double Searcher::step_above(const Sample& s) {
   const double rev = kTwoPi * r_max_ * r_max_ / h_min_;
   const Angles g(s, false);
   double x = along_track(s, g, 0.25 * rev, false, best);
-  for (int k = 0; k < 2 && x > 0.0; ++k) {  // a span fitted to the result is tighter
+  for (int k = 0; k < 1 && x > 0.0; ++k) {  // a span fitted to the result is tighter
     best = std::max(best, x);
     x = along_track(s, g, std::max(1.2 * x, 30.0), false, best);
   }
@@ -557,16 +607,17 @@ double Searcher::step_above(const Sample& s) {
 
 double Searcher::reach(const Sample& s, double span, int dir) const {
   const Local L = local(s, span);
+  const Angles g(s, s.F < 0.0);
+  const double at = dir < 0 ? along_track(s, g, span, s.F < 0.0, 0.0, kBack) : 0.0;
   if (s.F < 0.0) {
     const double d = dir * s.Fdot + fdot_err(s);
     const double s_lo = std::max(range_floor_below(L.r_lo), s.s - L.V * span);
-    const double theta = std::acos(std::clamp(s.cos_theta, -1.0, 1.0));
-    const double xa = (theta - lambda(L.r_hi, true) - kAngleMargin) * L.r_lo / L.V;
-    return std::min(span, std::max(xa, envelope_root(s.F, d, curvature(s, L, span, s_lo))));
+    const double xa = (g.theta - lambda(L.r_hi, true) - kAngleMargin) * L.r_lo / L.V;
+    return std::min(span, std::max({xa, at, envelope_root(s.F, d, curvature(s, L, span, s_lo))}));
   }
   const double d = dir * s.Fdot - fdot_err(s);
   const double s_lo = std::max({L.r_lo - rs_, s.s - L.V * span, 1.0});
-  return std::min(span, envelope_root(s.F, d, curvature(s, L, span, s_lo)));
+  return std::min(span, std::max(at, envelope_root(s.F, d, curvature(s, L, span, s_lo))));
 }
 
 bool Searcher::monotone(const Sample& a, const Sample& b) const {
@@ -704,9 +755,10 @@ Sample Searcher::refine_max(const Sample& a, const Sample& b, double guess) {
       Sample top = m;
       top.t = nx;
       top.F = m.F + 0.5 * m.Fdot * dx;  // F + F' dx + F'' dx^2 / 2 with dx = -F'/F''
+      const Vec3 a = accel(m.ecef);
       for (int k = 0; k < 3; ++k) {
-        top.ecef.r_km[k] += (m.ecef.v_km_s[k] + 0.5 * m.a_ecef[k] * dx) * dx;
-        top.ecef.v_km_s[k] += m.a_ecef[k] * dx;
+        top.ecef.r_km[k] += (m.ecef.v_km_s[k] + 0.5 * a[k] * dx) * dx;
+        top.ecef.v_km_s[k] += a[k] * dx;
       }
       return top.F >= best.F ? top : best;
     }
@@ -843,7 +895,7 @@ void Searcher::finish_pass(std::vector<Sample>& samples, Pass& p, double guess) 
     }
   }
   p.tca = at(top.t);
-  const LookAngles la = look_angles(top.ecef, obs_);
+  const LookAngles la = look(top.ecef);
   p.max_el_deg = la.el_deg;
   p.tca_az_deg = la.az_deg;
 }
@@ -905,10 +957,23 @@ std::optional<Pass> Searcher::next_any() {
     }
     Sample n, in, out;
     double t = 0.0;
-    // A step onto the predicted LOS, kept only when proven not to have jumped a crossing.
-    const double xp = predict_crossing(up);
-    if (!ahead && xp > safe && xp < 3.0 * safe + 30.0 && up.t + xp < span_) {
-      if (eval(up.t + xp + 0.125 * tol_ + 0.002 * xp, n)) {
+    // A step onto the predicted LOS, or the along-track jump across the pass taken before the
+    // satellite is proven inside it: kept only when proven not to have jumped a crossing.
+    double target = -1.0;
+    if (!ahead) {
+      const double xp = predict_crossing(up);
+      if (xp > safe && xp < 3.0 * safe + 30.0) {
+        target = up.t + xp + 0.125 * tol_ + 0.002 * xp;
+      } else if (safe < 300.0) {
+        const double rev = kTwoPi * r_max_ * r_max_ / h_min_;
+        const Angles g(up, false);
+        double xg = along_track(up, g, 0.25 * rev, false, 0.0, kGuess);
+        if (xg > 0.0) xg = std::max(xg, along_track(up, g, std::max(1.2 * xg, 30.0), false, 0.0, kGuess));
+        if (xg > 2.0 * safe) target = up.t + 0.99 * xg;
+      }
+    }
+    if (target > 0.0 && target < span_) {
+      if (eval(target, n)) {
         widen(n);
         if (n.F < 0.0) {
           const bool single = monotone(up, n);
@@ -1011,8 +1076,8 @@ std::optional<Pass> Searcher::next_any() {
   finish_pass(samples, pass, guess);
   pass.aos = at(aos_t);
   pass.los = at(los_t);
-  pass.aos_az_deg = look_angles(aos_near.ecef, obs_).az_deg;
-  pass.los_az_deg = look_angles(los_near.ecef, obs_).az_deg;
+  pass.aos_az_deg = look(aos_near.ecef).az_deg;
+  pass.los_az_deg = look(los_near.ecef).az_deg;
   return pass;
 }
 
@@ -1039,10 +1104,21 @@ bool Searcher::find_aos(double& aos_t, Sample& aos_s, Sample& aos_near) {
       continue;
     }
     Sample n, down;
-    // A step onto the predicted AOS, kept only when proven not to have jumped a crossing.
-    const double xp = predict_crossing(cur_);
-    if (!ahead && xp > safe && xp < 3.0 * safe + 30.0) {
-      if (eval(std::min(cur_.t + xp + 0.125 * tol_ + 0.002 * xp, span_), n)) {
+    // A step onto the predicted AOS, or the along-track jump to the next approach taken before the
+    // satellite is proven clear of this one: kept only when proven not to have jumped a crossing.
+    double target = -1.0;
+    if (!ahead) {
+      const double xp = predict_crossing(cur_);
+      if (xp > safe && xp < 3.0 * safe + 30.0) {
+        target = cur_.t + xp + 0.125 * tol_ + 0.002 * xp;
+      } else if (safe < 300.0) {
+        const double rev = kTwoPi * r_max_ * r_max_ / h_min_;
+        const double xg = along_track(cur_, Angles(cur_, false), rev, true, 0.0, kGuess);
+        if (xg > 2.0 * safe) target = cur_.t + 0.99 * xg;
+      }
+    }
+    if (target > 0.0) {
+      if (eval(std::min(target, span_), n)) {
         widen(n);
         if (n.F >= 0.0) {
           const bool single = monotone(cur_, n);
