@@ -317,8 +317,13 @@ std::string Unit::handle(const Decoded& d) {
   switch (d.kind) {
     case Decoded::Kind::frame: return handle(std::string_view(d.payload));
     case Decoded::Kind::bad_checksum: return reply_error(guess_head(d.payload), Error::bad_checksum);
-    case Decoded::Kind::malformed: return reply_error(guess_head(d.payload), Error::malformed_frame);
-    case Decoded::Kind::overlong: return reply_error(guess_head(d.payload), Error::frame_too_long);
+    // Here the word is echoed only when the line reads as a command: garbage is not a word.
+    case Decoded::Kind::malformed:
+    case Decoded::Kind::overlong: {
+      const auto c = parse_payload(d.payload);
+      return reply_error(c ? c->head() : std::string(),
+                         d.kind == Decoded::Kind::overlong ? Error::frame_too_long : Error::malformed_frame);
+    }
   }
   return reply_error("", Error::internal);
 }
