@@ -111,6 +111,8 @@ class Unit {
   // a satellite above the threshold.
   std::optional<rotator::AzEl> tracking_target() const { return last_track_target_; }
   int load_image_status() const { return image_status_; }
+  // A download (SATELLITE_HTTP / SATELLITE_FTP) is in flight.
+  bool downloading() const { return download_in_flight_; }
 
  private:
   using Reply = std::string;
