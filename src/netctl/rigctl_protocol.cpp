@@ -157,8 +157,10 @@ Outcome RigctlProtocol::set_freq(radio::Link link, const std::vector<std::string
 Outcome RigctlProtocol::get_freq(radio::Link link, const char* key) {
   const radio::RadioStatus st = station_.radio().status();
   const auto hz = link == radio::Link::downlink ? st.downlink_hz : st.uplink_hz;
-  if (!hz) return Outcome::fail(Error::io);
-  return Outcome{}.add(key, hz_text(*hz));
+  // Nothing tuned on this link yet: 0. An error here would break Hamlib's NET client, which reads
+  // the frequency when it opens and again inside set_vfo and set_freq, and gives the command up
+  // when that read fails.
+  return Outcome{}.add(key, hz_text(hz.value_or(0)));
 }
 
 Outcome RigctlProtocol::set_mode(radio::Link link, const std::vector<std::string>& args) {
@@ -236,7 +238,7 @@ Outcome RigctlProtocol::dump_state() {
            std::string("0x0"),
            std::string("vfo_ops=0x0"),
            std::string("ptt_type=0x0"),
-           std::string("targetable_vfo=0x3"),
+           std::string("targetable_vfo=0x0"),  // no VFO argument: a read is always of the current VFO
            std::string("has_set_vfo=1"),
            std::string("has_get_vfo=1"),
            std::string("has_set_freq=1"),

@@ -20,8 +20,9 @@
 //  * while trakbox's tracker tunes a link (a satellite followed whose entry has that frequency and
 //    whose correction is on) sets on that link are refused, RPRT -9: two Doppler sources fighting
 //    over one VFO is worse than an explicit refusal.
-//  * a radio in fault: sets RPRT -6; gets answer the last value the radio accepted, RPRT -6 when
-//    there is none.
+//  * gets answer what the radio last accepted; a frequency never tuned reads 0 (Hamlib's client
+//    gives a command up when its frequency read fails), a mode never set RPRT -6.
+//  * a radio in fault: sets RPRT -6 and nothing is queued.
 // The current VFO and the split flag are the server's (shared by its clients, as one rig is).
 #pragma once
 #include <string>

@@ -172,7 +172,18 @@ TEST_CASE("server: Hamlib's rigctl -m 2 tunes the downlink (F / f) and the uplin
   LoopThread lt(io, st);
   const std::string where = port_arg(server.port());
 
-  RunResult r = run({*rigctl, "-m", "2", "-r", where, "F", "145950000"});
+  // Nothing tuned yet: the client reads the frequency when it opens and inside set_vfo/set_freq,
+  // and gives a command up when that read fails.
+  RunResult r = run({*rigctl, "-m", "2", "-r", where, "V", "VFOB", "F", "435120000", "v"});
+  CAPTURE(r.out);
+  CAPTURE(r.err);
+  REQUIRE(!r.timed_out);
+  CHECK(r.status == 0);
+  CHECK(lt.on_loop([&] { return st.radio->frequency(radio::Link::uplink); }) == 435120000);
+  CHECK(!lt.on_loop([&] { return st.radio->frequency(radio::Link::downlink); }));
+  CHECK(r.out == "VFOB\n");
+
+  r = run({*rigctl, "-m", "2", "-r", where, "V", "VFOA", "F", "145950000"});
   CAPTURE(r.out);
   CAPTURE(r.err);
   REQUIRE(!r.timed_out);
@@ -207,6 +218,15 @@ TEST_CASE("server: Hamlib's rigctl -m 2 tunes the downlink (F / f) and the uplin
   CHECK(lt.on_loop([&] { return st.radio->mode(radio::Link::uplink); }) == radio::Mode::lsb);
   CHECK(lt.on_loop([&] { return st.radio->mode(radio::Link::downlink); }) == radio::Mode::usb);
   CHECK(r.out.find("USB\n") != std::string::npos);
+
+  // Split as a logging program sets it up: the client reads the TX frequency with i (or by
+  // swapping VFOs), never with a plain f, because \dump_state says no VFO is targetable.
+  r = run({*rigctl, "-m", "2", "-r", where, "S", "1", "VFOB", "I", "435130000", "X", "USB", "0", "i", "x", "s", "f"});
+  CAPTURE(r.out);
+  REQUIRE(!r.timed_out);
+  CHECK(r.status == 0);
+  CHECK(r.out == "435130000\nUSB\n0\n1\nVFOB\n145950000\n");
+  CHECK(lt.on_loop([&] { return st.radio->mode(radio::Link::uplink); }) == radio::Mode::usb);
   lt.stop();
 }
 
