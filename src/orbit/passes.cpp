@@ -60,6 +60,7 @@ constexpr double kAngleMargin = 2e-4;        // rad, on horizon angles
 constexpr double kMaxElTolerance = 2e-5;     // sin(el): hidden maxima below this are not chased
 constexpr double kTaylorAngle = 5e-7;        // rad: error allowed to the model step onto a maximum
 constexpr double kFlatTopShift = 10.0;       // s: flatter maxima are found from F alone
+constexpr double kFarStep = 300.0;           // s: a step this long needs no refinement
 
 void sin_cos(double x, double& s, double& c) {
 #if defined(__GNUC__)
@@ -94,16 +95,30 @@ struct Sample {
   double du_y = 0.0, du_x = 0.0;  // atan2(du_y, du_x): angle of the satellite ahead of the station's foot
                                   // on the orbit plane
   StateVector ecef;
-  Vec3 a_ecef{};           // point-mass gravity + centrifugal + Coriolis, km/s^2 (for Taylor steps)
 };
+
+// Earth-fixed acceleration with point-mass gravity: gravity + centrifugal + Coriolis, km/s^2 (for
+// Newton and Taylor steps, never for bounds).
+Vec3 accel(const StateVector& e) {
+  const double r2 = dot(e.r_km, e.r_km);
+  const double k = kEarthRotationRadS * kEarthRotationRadS - kMu / (r2 * std::sqrt(r2));
+  return {k * e.r_km[0] + 2.0 * kEarthRotationRadS * e.v_km_s[1],
+          k * e.r_km[1] - 2.0 * kEarthRotationRadS * e.v_km_s[0],
+          (k - kEarthRotationRadS * kEarthRotationRadS) * e.r_km[2]};
+}
 
 // The angles of a sample that the geometric bounds use (computed only where a step is planned).
 struct Angles {
-  double theta, beta, du;  // du in (-pi, pi]
-  explicit Angles(const Sample& s)
-      : theta(std::acos(std::clamp(s.cos_theta, -1.0, 1.0))),
-        beta(std::asin(std::min(std::abs(s.sin_beta), 1.0))),
-        du(std::atan2(s.du_y, s.du_x)) {}
+  double theta = 0.0;    // geocentric angle station - satellite (only when asked for)
+  double beta, du;       // du in (-pi, pi]
+  double sin_b, cos_b;   // of beta
+  Angles(const Sample& s, bool with_theta)
+      : beta(std::asin(std::min(std::abs(s.sin_beta), 1.0))),
+        du(std::atan2(s.du_y, s.du_x)),
+        sin_b(std::min(std::abs(s.sin_beta), 1.0)),
+        cos_b(std::sqrt(1.0 - sin_b * sin_b)) {
+    if (with_theta) theta = std::acos(std::clamp(s.cos_theta, -1.0, 1.0));
+  }
 };
 
 // The first x > 0 where F + d x + (b / 2) x^2 reaches 0 for F < 0 (an upper envelope), or where
@@ -155,7 +170,11 @@ class Searcher {
   double fdot_err(const Sample& s) const { return vel_err_ / s.s; }
   // (d): the time, at most span, for which the satellite provably stays down (below) or up, given
   // that it provably does for `covered` seconds anyway; 0 if the bound says nothing.
-  double along_track(const Sample& s, const Angles& g, double span, bool below, double covered) const;
+  // mode kAhead: as above; kBack: the same looking back from s; kGuess: where a forward jump would
+  // land if the satellite had already cleared the window's edge (to be proven afterwards).
+  enum Mode { kAhead, kBack, kGuess };
+  double along_track(const Sample& s, const Angles& g, double span, bool below, double covered,
+                     Mode mode = kAhead) const;
   double step_below(const Sample& s);
   double step_above(const Sample& s);
   // The best of step(span) (a bound valid over span, capped by it) for two spans: about twice the
@@ -165,14 +184,16 @@ class Searcher {
     const double span0 = std::clamp(2.0 * last_step_, 20.0, 86400.0);
     const double x0 = step(span0);
     const double span1 = x0 < span0 ? std::max(1.5 * x0, 20.0) : 4.0 * span0;
-    return std::max(x0, step(span1));
+    const double x1 = std::max(x0, step(span1));
+    // A step that fell well short of the last one: try the last one's span too.
+    return x1 < 0.5 * last_step_ ? std::max(x1, step(std::max(last_step_, 20.0))) : x1;
   }
   // How long after (dir = 1) or before (dir = -1) s, at most span, F provably keeps its sign.
   double reach(const Sample& s, double span, int dir) const;
   // Whether F provably keeps its sign from a (where it does for `fwd` seconds) to b.
   bool keeps_sign(const Sample& a, double fwd, const Sample& b) const {
-    const double D = b.t - a.t;
-    return fwd >= D || fwd + reach(b, D, -1) >= D || monotone(a, b);
+    const double gap = b.t - a.t - fwd;  // what b has to cover looking back
+    return gap <= 0.0 || reach(b, gap, -1) >= gap || monotone(a, b);
   }
   // Whether F is provably monotonic from a to b: F' has the same sign at both ends and cannot turn
   // in between, |F'a| + |F'b| > B (b - a).
@@ -189,6 +210,8 @@ class Searcher {
   Sample refine_max(const Sample& a, const Sample& b, double guess);
   Sample polish_max(const Sample& best, double h);
   UtcTime at(double t) const { return add_seconds(start_, t); }
+  // look_angles(ecef, obs_) with the station's frame computed once (the same arithmetic).
+  LookAngles look(const StateVector& ecef) const;
 
   const Sgp4& sat_;
   Observer obs_;
@@ -196,6 +219,8 @@ class Searcher {
   double span_ = 0.0;        // window length, s
   PassOptions opt_;
   double tol_ = 0.1;         // precision, s
+  double tol_top_ = 0.1;     // precision of a maximum: at most 0.1 s, so that its elevation
+                             // stays within 1e-4 deg whatever the precision asked of AOS and LOS
   double min_step_ = 0.05;
   double tsince0_ = 0.0;     // minutes from epoch at the window start
   double gmst0_ = 0.0;       // GMST at the window start, rad
@@ -204,6 +229,7 @@ class Searcher {
   // Station.
   Vec3 site_{};              // Earth-fixed position, km
   Vec3 up_{};                // geodetic zenith
+  double sl_ = 0.0, cl_ = 1.0, so_ = 0.0, co_ = 1.0;  // sin, cos of geodetic latitude and longitude
   Vec3 us_{};                // geocentric direction
   double rs_ = 0.0;          // geocentric distance, km
   double cos_phi_ = 1.0;     // cos(geocentric latitude)
@@ -231,6 +257,7 @@ Searcher::Searcher(const Sgp4& sat, const Observer& o, UtcTime start, UtcTime st
     : sat_(sat), obs_(o), start_(start), opt_(opt) {
   span_ = static_cast<double>((stop - start).count()) * 1e-6;
   tol_ = std::max(opt_.precision_s, 1e-3);
+  tol_top_ = std::min(tol_, 0.1);
   min_step_ = 0.5 * tol_;
   tsince0_ = minutes_between(sat.epoch(), start);
   // GMST-82 is a cubic in time; over the days a search spans it is linear to 1e-11 rad.
@@ -243,7 +270,11 @@ Searcher::Searcher(const Sgp4& sat, const Observer& o, UtcTime start, UtcTime st
 
   site_ = observer_ecef_km(o);
   const double lat = o.lat_deg * kDeg, lon = o.lon_deg * kDeg;
-  up_ = {std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)};
+  sl_ = std::sin(lat);
+  cl_ = std::cos(lat);
+  so_ = std::sin(lon);
+  co_ = std::cos(lon);
+  up_ = {cl_ * co_, cl_ * so_, sl_};
   rs_ = norm(site_);
   us_ = {site_[0] / rs_, site_[1] / rs_, site_[2] / rs_};
   cos_phi_ = std::hypot(us_[0], us_[1]);
@@ -276,32 +307,51 @@ bool Searcher::eval(double t, Sample& out) {
   const Vec3 rho = {e.r_km[0] - site_[0], e.r_km[1] - site_[1], e.r_km[2] - site_[2]};
   out.t = t;
   out.s = norm(rho);
-  const double f = dot(rho, up_) / out.s;
-  out.sdot = dot(rho, e.v_km_s) / out.s;
+  const double inv_s = 1.0 / out.s;
+  const double f = dot(rho, up_) * inv_s;
+  out.sdot = dot(rho, e.v_km_s) * inv_s;
   out.F = f - sin_h_;
-  out.Fdot = (dot(e.v_km_s, up_) - f * out.sdot) / out.s;
-  out.r = norm(e.r_km);
-  out.v = norm(e.v_km_s);
-  const double ir3 = kMu / (out.r * out.r * out.r);
+  out.Fdot = (dot(e.v_km_s, up_) - f * out.sdot) * inv_s;
+  const double r2 = dot(e.r_km, e.r_km), v2 = dot(e.v_km_s, e.v_km_s);
+  out.r = std::sqrt(r2);
+  out.v = std::sqrt(v2);
+  const double ir3 = kMu / (r2 * out.r);
   const double w2 = kEarthRotationRadS * kEarthRotationRadS;
-  const double cxy = (w2 - ir3), cz = ir3 * e.r_km[2];
+  const double cxy = w2 - ir3, cz = ir3 * e.r_km[2];
   out.c0 = std::sqrt(cxy * cxy * (e.r_km[0] * e.r_km[0] + e.r_km[1] * e.r_km[1]) + cz * cz);
   // f'' = a.(z - f u) / s - |u'|^2 f - 2 (s'/s) f', a = gravity + centrifugal + Coriolis.
-  Vec3& a = out.a_ecef;
-  a = {(w2 - ir3) * e.r_km[0] + 2.0 * kEarthRotationRadS * e.v_km_s[1],
-       (w2 - ir3) * e.r_km[1] - 2.0 * kEarthRotationRadS * e.v_km_s[0], -ir3 * e.r_km[2]};
-  const double u2 = std::max(0.0, out.v * out.v - out.sdot * out.sdot) / (out.s * out.s);
-  out.Fddot = (dot(a, up_) - f * dot(a, rho) / out.s) / out.s - u2 * f - 2.0 * out.sdot / out.s * out.Fdot;
+  const Vec3 a = accel(e);
+  const double u2 = std::max(0.0, v2 - out.sdot * out.sdot) * inv_s * inv_s;
+  out.Fddot = (dot(a, up_) - f * dot(a, rho) * inv_s) * inv_s - u2 * f - 2.0 * out.sdot * inv_s * out.Fdot;
   out.cos_theta = dot(e.r_km, us_) / out.r;
   const Vec3 hv = cross(rt, vt);  // inertial angular momentum, TEME
   out.h = norm(hv);
-  const Vec3 w = {(c * hv[0] + sn * hv[1]) / out.h, (-sn * hv[0] + c * hv[1]) / out.h, hv[2] / out.h};
+  const double inv_h = 1.0 / out.h;
+  const Vec3 w = {(c * hv[0] + sn * hv[1]) * inv_h, (-sn * hv[0] + c * hv[1]) * inv_h, hv[2] * inv_h};
   out.sin_beta = dot(w, us_);
   out.w_z = w[2];
   // The satellite moves along W x r; ahead of the foot p of the station: cos(du) ~ us.r, sin ~ us.(r x W).
   out.du_y = dot(us_, cross(e.r_km, w));
   out.du_x = dot(us_, e.r_km);
   return true;
+}
+
+LookAngles Searcher::look(const StateVector& ecef) const {
+  const Vec3 rho = {ecef.r_km[0] - site_[0], ecef.r_km[1] - site_[1], ecef.r_km[2] - site_[2]};
+  const double south = sl_ * co_ * rho[0] + sl_ * so_ * rho[1] - cl_ * rho[2];
+  const double east = -so_ * rho[0] + co_ * rho[1];
+  const double zen = cl_ * co_ * rho[0] + cl_ * so_ * rho[1] + sl_ * rho[2];
+  LookAngles la;
+  la.range_km = norm(rho);
+  if (la.range_km <= 0.0) return la;
+  double az = (east == 0.0 && south == 0.0) ? 0.0 : std::atan2(east, -south) / kDeg;
+  az = std::fmod(az, 360.0);
+  if (az < 0.0) az += 360.0;
+  if (az >= 360.0) az = 0.0;
+  la.az_deg = az;
+  la.el_deg = std::atan2(zen, std::hypot(south, east)) / kDeg;
+  la.range_rate_km_s = dot(rho, ecef.v_km_s) / la.range_km;
+  return la;
 }
 
 double Searcher::lambda(double r, bool low) const {
@@ -352,7 +402,7 @@ void Searcher::init_bounds(const Sample& s0) {
   h_min_ = (1.0 - kMomentumMargin) * s0.h;
   h_max_ = (1.0 + kMomentumMargin) * s0.h;
   derive();
-  eccentric_ = sat_.deep_space() || (r_max_ - r_min_) / (r_max_ + r_min_) > 0.05;
+  eccentric_ = sat_.elements().eccentricity > 0.05;
   vel_err_ = kVelocityErrKmS + kVelocityErrPerEcc * sat_.elements().eccentricity;
 }
 
@@ -428,20 +478,27 @@ double Searcher::curvature(const Sample& s, const Local& L, double span, double 
   return std::min(crude, (L.A / s_lo + K * std::min(1.0, f0 + d0 * span) + C * d0) / den);
 }
 
-double Searcher::along_track(const Sample& s, const Angles& g, double span, bool below, double covered) const {
+double Searcher::along_track(const Sample& s, const Angles& g, double span, bool below, double covered,
+                             Mode mode) const {
   // Station u = cos(beta) p + sin(beta) W, satellite r^ = cos(du) p + sin(du) W x p, so
   // cos(theta) = cos(beta) cos(du) exactly. The foot p moves at most at the station's inertial speed
   // over cos(beta) plus the plane's turning; the satellite runs at h / r^2 along the plane. When it is
   // always faster than the foot, du only grows, at a rate in [w_lo, w_hi].
-  const Local G = local(s, span);
+  struct {
+    double r_lo, r_hi;
+  } G = {std::max(r_min_, s.r - rdot_max_ * span), std::min(r_max_, s.r + rdot_max_ * span)};
+  // A satellite slower than the Earth's rotation may fall behind its foot (geostationary, a high
+  // apogee): nothing to rely on.
+  if (h_min_ / (G.r_hi * G.r_hi) <= kOmega) return 0.0;
   const double omega_w = G.r_hi * perturbation(G.r_lo, G.r_hi) / h_min_;
   const double beta = g.beta, du = g.du;
   const double beta_rate = kOmega * cos_phi_ + omega_w;
-  const double beta_hi = beta + beta_rate * span;
-  if (beta_hi >= 1.4) return 0.0;
-  const double cos_beta_hi = std::cos(beta_hi);
-  const double beta_lo = std::max(0.0, beta - beta_rate * span);
-  const double cos_beta_lo = std::cos(beta_lo);
+  const double db = beta_rate * span;
+  if (beta + db >= 1.4) return 0.0;
+  double sdb, cdb;
+  sin_cos(db, sdb, cdb);
+  const double cos_beta_hi = g.cos_b * cdb - g.sin_b * sdb;                  // cos(beta + db)
+  const double cos_beta_lo = beta > db ? g.cos_b * cdb + g.sin_b * sdb : 1.0;  // cos(max(0, beta - db))
   // The foot's own speed along the plane: the station moves at omega z x u, and
   // (z x u).(W x p) = (W_z - u_z sin(beta)) / cos(beta), so foot = omega (W_z - u_z sin(beta)) / cos^2(beta).
   // W_z changes only as the plane turns, sin(beta) at most at beta_rate.
@@ -463,9 +520,12 @@ double Searcher::along_track(const Sample& s, const Angles& g, double span, bool
     const double c = cos_lam / cos_beta_lo;
     if (c >= 1.0) return span;
     const double u = std::acos(c);
-    if (du < -u) {
+    if (mode == kBack) {
+      if (du > u) x = (du - u) / w_hi;                  // came from the window's far edge
+      else if (du < -u) x = (du + kTwoPi - u) / w_hi;   // came round the orbit
+    } else if (du < -u) {
       x = (-u - du) / w_hi;                 // still approaching
-    } else if (du > u || covered >= (u - du) / w_lo) {
+    } else if (du > u || covered >= (u - du) / w_lo || (mode == kGuess && du >= 0.0)) {
       x = (kTwoPi - u - du) / w_hi;         // passed (or surely past before `covered` runs out)
     }
   } else {
@@ -475,70 +535,89 @@ double Searcher::along_track(const Sample& s, const Angles& g, double span, bool
     const double c = cos_lam / cos_beta_hi;
     if (c >= 1.0) return 0.0;
     const double u = std::acos(c);
-    if (du <= u && (du >= -u || covered >= (-u - du) / w_lo)) x = (u - du) / w_hi;
+    if (mode == kBack) {
+      if (std::abs(du) <= u) x = (du + u) / w_hi;
+    } else if (du <= u && (du >= -u || covered >= (-u - du) / w_lo || mode == kGuess)) {
+      x = (u - du) / w_hi;
+    }
   }
   return std::min(span, x);
 }
 
 double Searcher::step_below(const Sample& s) {
-  const Angles g(s);
+  const Angles g(s, true);
   const double theta = g.theta, beta = g.beta;
   const double d = s.Fdot + fdot_err(s);
   // Global constants: valid for any step.
   double best = std::max({(theta - lambda_glob_) / omega_a_glob_, (beta - lambda_glob_) / omega_b_glob_,
                           envelope_root(s.F, d, b_below_glob_)});
-  // Local constants over a span: try about twice the last step, then a span fitted to the result.
-  auto local_step = [&](double span) {
-    const Local L = local(s, span);
-    const double lam = lambda(L.r_hi, true) + kAngleMargin;
-    const double omega_w = L.r_hi * perturbation(L.r_lo, L.r_hi) / h_min_;
-    const double s_lo = std::max(range_floor_below(L.r_lo), s.s - L.V * span);
-    const double loc = std::max({(theta - lam) * L.r_lo / L.V, (beta - lam) / (kOmega * cos_phi_ + omega_w),
-                                 envelope_root(s.F, d, curvature(s, L, span, s_lo))});
-    return std::min(loc, span);
-  };
-  best = std::max(best, fitted_span(local_step));
-  // Along track, over one revolution and over a shorter span (tighter when close).
+  // Along track, over one revolution (unless the station stays far from the plane for longer).
   const double rev = kTwoPi * r_max_ * r_max_ / h_min_;
-  const double x = along_track(s, g, rev, true, best);
+  const double x = best < rev ? along_track(s, g, rev, true, best) : 0.0;
   best = std::max(best, x);
-  if (x > 0.0 && x < 0.5 * rev) best = std::max(best, along_track(s, g, std::max(1.5 * x, 60.0), true, best));
+  if (best < 0.4 * rev) {
+    // Close: local constants over a span, about twice the last step, then one fitted to the result.
+    auto local_step = [&](double span) {
+      const Local L = local(s, span);
+      const double lam = lambda(L.r_hi, true) + kAngleMargin;
+      const double omega_w = L.r_hi * perturbation(L.r_lo, L.r_hi) / h_min_;
+      const double s_lo = std::max(range_floor_below(L.r_lo), s.s - L.V * span);
+      const double loc = std::max({(theta - lam) * L.r_lo / L.V, (beta - lam) / (kOmega * cos_phi_ + omega_w),
+                                   envelope_root(s.F, d, curvature(s, L, span, s_lo))});
+      return std::min(loc, span);
+    };
+    best = std::max(best, fitted_span(local_step));
+    // Along track again: over a span fitted to the result, and with what the rest now covers.
+    const double span = x > 0.0 ? std::max(1.5 * x, 60.0) : rev;
+    best = std::max(best, along_track(s, g, span, true, best));
+  }
   return kStepSafety * best;
 }
 
 double Searcher::step_above(const Sample& s) {
   const double d = s.Fdot - fdot_err(s);
   double best = envelope_root(s.F, d, b_above_glob_);
-  auto local_step = [&](double span) {
-    const Local L = local(s, span);
-    const double s_lo = std::max({L.r_lo - rs_, s.s - L.V * span, 1.0});
-    return std::min(envelope_root(s.F, d, curvature(s, L, span, s_lo)), span);
-  };
-  best = std::max(best, fitted_span(local_step));
-  // Along track: a pass lasts at most about 2 lam / w; try that span and a shorter one.
+  // Along track: a pass lasts at most about 2 lam / w; from a quarter revolution to fitted spans.
   const double rev = kTwoPi * r_max_ * r_max_ / h_min_;
-  const Angles g(s);
+  const Angles g(s, false);
   double x = along_track(s, g, 0.25 * rev, false, best);
-  for (int k = 0; k < 2 && x > 0.0; ++k) {  // a span fitted to the result is tighter
+  for (int k = 0; k < 1 && x > 0.0; ++k) {  // a span fitted to the result is tighter
     best = std::max(best, x);
     x = along_track(s, g, std::max(1.2 * x, 30.0), false, best);
   }
   best = std::max(best, x);
+  if (true) {
+    auto local_step = [&](double span) {
+      const Local L = local(s, span);
+      const double s_lo = std::max({L.r_lo - rs_, s.s - L.V * span, 1.0});
+      return std::min(envelope_root(s.F, d, curvature(s, L, span, s_lo)), span);
+    };
+    const double env = fitted_span(local_step);
+    if (env > best) {
+      best = env;
+      if (x == 0.0) {  // the along-track bound may start to hold within what the envelope covers
+        x = along_track(s, g, 0.25 * rev, false, best);
+        if (x > 0.0) x = std::max(x, along_track(s, g, std::max(1.2 * x, 30.0), false, best));
+        best = std::max(best, x);
+      }
+    }
+  }
   return kStepSafety * best;
 }
 
 double Searcher::reach(const Sample& s, double span, int dir) const {
   const Local L = local(s, span);
+  const Angles g(s, s.F < 0.0);
+  const double at = dir < 0 ? along_track(s, g, span, s.F < 0.0, 0.0, kBack) : 0.0;
   if (s.F < 0.0) {
     const double d = dir * s.Fdot + fdot_err(s);
     const double s_lo = std::max(range_floor_below(L.r_lo), s.s - L.V * span);
-    const double theta = std::acos(std::clamp(s.cos_theta, -1.0, 1.0));
-    const double xa = (theta - lambda(L.r_hi, true) - kAngleMargin) * L.r_lo / L.V;
-    return std::min(span, std::max(xa, envelope_root(s.F, d, curvature(s, L, span, s_lo))));
+    const double xa = (g.theta - lambda(L.r_hi, true) - kAngleMargin) * L.r_lo / L.V;
+    return std::min(span, std::max({xa, at, envelope_root(s.F, d, curvature(s, L, span, s_lo))}));
   }
   const double d = dir * s.Fdot - fdot_err(s);
   const double s_lo = std::max({L.r_lo - rs_, s.s - L.V * span, 1.0});
-  return std::min(span, envelope_root(s.F, d, curvature(s, L, span, s_lo)));
+  return std::min(span, std::max(at, envelope_root(s.F, d, curvature(s, L, span, s_lo))));
 }
 
 bool Searcher::monotone(const Sample& a, const Sample& b) const {
@@ -650,8 +729,8 @@ Sample Searcher::refine_max(const Sample& a, const Sample& b, double guess) {
   Sample m, prev;
   bool have_prev = false, have_m = false;
   double width = hi.t - lo.t;
-  for (int it = 0; it < 60 && hi.t - lo.t > tol_; ++it) {
-    x = std::clamp(x, lo.t + 0.125 * tol_, hi.t - 0.125 * tol_);
+  for (int it = 0; it < 60 && hi.t - lo.t > tol_top_; ++it) {
+    x = std::clamp(x, lo.t + 0.125 * tol_top_, hi.t - 0.125 * tol_top_);
     if (have_m) {
       prev = m;
       have_prev = true;
@@ -665,20 +744,21 @@ Sample Searcher::refine_max(const Sample& a, const Sample& b, double guess) {
     if (m.F > best.F) best = m;
     (m.Fdot > 0.0 ? lo : hi) = m;
     double nx = m.Fddot < 0.0 ? m.t - m.Fdot / m.Fddot : -1.0;
-    if (std::abs(nx - m.t) < 0.25 * tol_) break;
+    if (std::abs(nx - m.t) < 0.25 * tol_top_) break;
     // A short Newton step needs no propagation: the quadratic model gives the maximum, a Taylor step
     // of the state its direction.
     const double dx = nx - m.t;
     // The step is short enough when the velocity error, extrapolated over it, moves the line of sight by
     // less than kTaylorAngle, and can move the zero of Fdot by less than a quarter of the precision.
     if (nx > lo.t && nx < hi.t && vel_err_ * std::abs(dx) < kTaylorAngle * m.s &&
-        fdot_err(m) < -0.25 * tol_ * m.Fddot) {
+        fdot_err(m) < -0.25 * tol_top_ * m.Fddot) {
       Sample top = m;
       top.t = nx;
       top.F = m.F + 0.5 * m.Fdot * dx;  // F + F' dx + F'' dx^2 / 2 with dx = -F'/F''
+      const Vec3 a = accel(m.ecef);
       for (int k = 0; k < 3; ++k) {
-        top.ecef.r_km[k] += (m.ecef.v_km_s[k] + 0.5 * m.a_ecef[k] * dx) * dx;
-        top.ecef.v_km_s[k] += m.a_ecef[k] * dx;
+        top.ecef.r_km[k] += (m.ecef.v_km_s[k] + 0.5 * a[k] * dx) * dx;
+        top.ecef.v_km_s[k] += a[k] * dx;
       }
       return top.F >= best.F ? top : best;
     }
@@ -693,7 +773,7 @@ Sample Searcher::refine_max(const Sample& a, const Sample& b, double guess) {
   // the top from F alone.
   const double shift_bound = fdot_err(m) / std::max(-m.Fddot, 1e-300);
   if (shift_bound > kFlatTopShift) return polish_max(best, std::min(shift_bound, 3600.0));
-  if (!(m.Fddot < 0.0) || shift_bound < 0.25 * tol_) return best;
+  if (!(m.Fddot < 0.0) || shift_bound < 0.25 * tol_top_) return best;
   // The SGP4 velocity is not exactly the derivative of the SGP4 position, so the zero of Fdot may sit
   // off the top of F where the top is flat. Measure the bias b of Fdot between two samples (trapezoid
   // rule: F(q) - F(m) = D (Fdot(m) + Fdot(q)) / 2 - b D, up to D^3 F'''/12) and go to the zero of
@@ -710,7 +790,7 @@ Sample Searcher::refine_max(const Sample& a, const Sample& b, double guess) {
   Sample cur = m;
   for (int k = 0; k < 3; ++k) {
     const double tx = cur.t - (cur.Fdot - bias) / cur.Fddot;
-    if (std::abs(tx - cur.t) < 0.25 * tol_) break;
+    if (std::abs(tx - cur.t) < 0.25 * tol_top_) break;
     Sample n;
     if (!eval(tx, n) || !(n.Fddot < 0.0)) break;
     widen(n);
@@ -722,7 +802,7 @@ Sample Searcher::refine_max(const Sample& a, const Sample& b, double guess) {
 
 Sample Searcher::polish_max(const Sample& best, double h) {
   // Successive parabolic interpolation on F alone, through a triple with the highest in the middle.
-  h = std::max(h, tol_);
+  h = std::max(h, tol_top_);
   Sample a, b, c = best;
   if (!eval(c.t - h, a) || !eval(c.t + h, b)) return best;
   for (int k = 0; k < 8 && (a.F > c.F || b.F > c.F); ++k) {  // walk until c is the highest
@@ -742,7 +822,7 @@ Sample Searcher::polish_max(const Sample& best, double h) {
     const double den = p * (c.F - b.F) - q * (c.F - a.F);
     if (den == 0.0) break;
     const double x = c.t - 0.5 * num / den;
-    if (!(x > a.t && x < b.t) || std::abs(x - c.t) < 0.5 * tol_) break;
+    if (!(x > a.t && x < b.t) || std::abs(x - c.t) < 0.5 * tol_top_) break;
     Sample m;
     if (!eval(x, m)) break;
     if (m.F > c.F) {
@@ -773,7 +853,7 @@ void Searcher::finish_pass(std::vector<Sample>& samples, Pass& p, double guess) 
     work.pop_back();
     const Sample a = samples[ia], b = samples[ib];
     const double D = b.t - a.t;
-    if (D <= tol_) continue;
+    if (D <= tol_top_) continue;
     if (a.Fdot > 0.0 && b.Fdot <= 0.0) {
       const Sample m = refine_max(a, b, guess);
       if (m.F > top.F) top = m;
@@ -806,7 +886,7 @@ void Searcher::finish_pass(std::vector<Sample>& samples, Pass& p, double guess) 
     }
     if (split > 0.0) {
       Sample m;
-      if (!eval(std::clamp(a.t + split * D, a.t + 0.25 * tol_, b.t - 0.25 * tol_), m)) continue;
+      if (!eval(std::clamp(a.t + split * D, a.t + 0.25 * tol_top_, b.t - 0.25 * tol_top_), m)) continue;
       widen(m);
       if (m.F > top.F) top = m;
       samples.push_back(m);
@@ -815,7 +895,7 @@ void Searcher::finish_pass(std::vector<Sample>& samples, Pass& p, double guess) 
     }
   }
   p.tca = at(top.t);
-  const LookAngles la = look_angles(top.ecef, obs_);
+  const LookAngles la = look(top.ecef);
   p.max_el_deg = la.el_deg;
   p.tca_az_deg = la.az_deg;
 }
@@ -847,6 +927,11 @@ std::optional<Pass> Searcher::next_any() {
   Sample up = aos_s;
   double los_t = span_;
   Sample los_near = up;
+  // As in find_aos: a speculative sample not proven yet (still up), or a refined LOS with its up side.
+  std::optional<Sample> ahead;
+  bool cross = false;
+  double cross_t = 0.0;
+  Sample cross_down, cross_near;
   for (;;) {
     if (up.t >= span_) {
       pass.up_at_end = true;
@@ -856,26 +941,62 @@ std::optional<Pass> Searcher::next_any() {
       break;
     }
     const double safe = step_above(up);
+    if (ahead && keeps_sign(up, safe, *ahead)) {
+      if (cross) {
+        los_t = cross_t;
+        los_near = cross_near;
+        samples.push_back(*ahead);
+        cur_ = cross_down;
+        break;
+      }
+      last_step_ = ahead->t - up.t;
+      samples.push_back(*ahead);
+      up = *ahead;
+      ahead.reset();
+      continue;
+    }
     Sample n, in, out;
     double t = 0.0;
-    // A step onto the predicted LOS, kept only when proven not to have jumped a crossing.
-    const double xp = predict_crossing(up);
-    if (xp > safe && xp < 3.0 * safe + 30.0 && up.t + xp < span_) {
-      if (eval(up.t + xp + 0.125 * tol_ + 0.002 * xp, n)) {
+    // A step onto the predicted LOS, or the along-track jump across the pass taken before the
+    // satellite is proven inside it: kept only when proven not to have jumped a crossing.
+    double target = -1.0;
+    if (!ahead) {
+      const double xp = predict_crossing(up);
+      if (xp > safe && xp < 3.0 * safe + 30.0) {
+        target = up.t + xp + 0.125 * tol_ + 0.002 * xp;
+      } else if (safe < 300.0) {
+        const double rev = kTwoPi * r_max_ * r_max_ / h_min_;
+        const Angles g(up, false);
+        double xg = along_track(up, g, 0.25 * rev, false, 0.0, kGuess);
+        if (xg > 0.0) xg = std::max(xg, along_track(up, g, std::max(1.2 * xg, 30.0), false, 0.0, kGuess));
+        if (xg > 2.0 * safe) target = up.t + 0.99 * xg;
+      }
+    }
+    if (target > 0.0 && target < span_) {
+      if (eval(target, n)) {
         widen(n);
         if (n.F < 0.0) {
           const bool single = monotone(up, n);
-          if (refine_crossing(up, n, single, t, in, out, los_near) && (single || keeps_sign(up, safe, in))) {
-            los_t = t;
-            samples.push_back(in);
-            cur_ = out;
-            break;
+          if (refine_crossing(up, n, single, t, in, out, los_near)) {
+            if (single || keeps_sign(up, safe, in)) {
+              los_t = t;
+              samples.push_back(in);
+              cur_ = out;
+              break;
+            }
+            ahead = in;
+            cross = true;
+            cross_t = t;
+            cross_down = out;
+            cross_near = los_near;
           }
         } else if (keeps_sign(up, safe, n)) {
           last_step_ = n.t - up.t;
           samples.push_back(n);
           up = n;
           continue;
+        } else {
+          ahead = n;
         }
       }
     }
@@ -928,35 +1049,95 @@ std::optional<Pass> Searcher::next_any() {
     }
     samples.push_back(n);
     up = n;
+    if (ahead && up.t >= ahead->t) {
+      ahead.reset();
+      cross = false;
+    }
   }
-  // For a whole pass the middle of AOS and LOS is a good first guess for the maximum.
-  finish_pass(samples, pass, pass.up_at_start || pass.up_at_end ? -1.0 : 0.5 * (aos_t + los_t));
+  // For a whole pass, the top of the cubic through (0, F') at AOS and LOS is a good first guess for
+  // the maximum (the middle for a symmetric pass).
+  double guess = -1.0;
+  if (!pass.up_at_start && !pass.up_at_end) {
+    const double D = los_t - aos_t, m0 = aos_near.Fdot * D, m1 = los_near.Fdot * D;
+    const double qa = 3.0 * (m0 + m1), qb = -2.0 * (2.0 * m0 + m1);  // p'(u) = qa u^2 + qb u + m0
+    double u = 0.5;
+    if (std::abs(qa) > 1e-12 * std::abs(qb)) {
+      const double disc = qb * qb - 4.0 * qa * m0;
+      if (disc >= 0.0) {
+        const double sq = std::sqrt(disc);
+        for (double cand : {(-qb - sq) / (2.0 * qa), (-qb + sq) / (2.0 * qa)})
+          if (cand > 0.0 && cand < 1.0 && 2.0 * qa * cand + qb < 0.0) u = cand;
+      }
+    } else if (qb != 0.0) {
+      u = std::clamp(-m0 / qb, 0.0, 1.0);
+    }
+    guess = aos_t + u * D;
+  }
+  finish_pass(samples, pass, guess);
   pass.aos = at(aos_t);
   pass.los = at(los_t);
-  pass.aos_az_deg = look_angles(aos_near.ecef, obs_).az_deg;
-  pass.los_az_deg = look_angles(los_near.ecef, obs_).az_deg;
+  pass.aos_az_deg = look(aos_near.ecef).az_deg;
+  pass.los_az_deg = look(los_near.ecef).az_deg;
   return pass;
 }
 
 bool Searcher::find_aos(double& aos_t, Sample& aos_s, Sample& aos_near) {
+  // A speculative sample that could not be proven yet is kept: `ahead` (still down) or a refined
+  // crossing `cross` whose down side is `ahead`. Safe steps go on until the proof reaches it.
+  std::optional<Sample> ahead;
+  bool cross = false;
+  double cross_t = 0.0;
+  Sample cross_up, cross_near;
   for (;;) {
     const double safe = step_below(cur_);
     if (cur_.t + safe >= span_) return false;
+    if (ahead && keeps_sign(cur_, safe, *ahead)) {
+      if (cross) {
+        aos_t = cross_t;
+        aos_s = cross_up;
+        aos_near = cross_near;
+        return aos_t < span_;
+      }
+      last_step_ = ahead->t - cur_.t;
+      cur_ = *ahead;
+      ahead.reset();
+      continue;
+    }
     Sample n, down;
-    // A step onto the predicted AOS, kept only when proven not to have jumped a crossing.
-    const double xp = predict_crossing(cur_);
-    if (xp > safe && xp < 3.0 * safe + 30.0) {
-      if (eval(std::min(cur_.t + xp + 0.125 * tol_ + 0.002 * xp, span_), n)) {
+    // A step onto the predicted AOS, or the along-track jump to the next approach taken before the
+    // satellite is proven clear of this one: kept only when proven not to have jumped a crossing.
+    double target = -1.0;
+    if (!ahead) {
+      const double xp = predict_crossing(cur_);
+      if (xp > safe && xp < 3.0 * safe + 30.0) {
+        target = cur_.t + xp + 0.125 * tol_ + 0.002 * xp;
+      } else if (safe < 300.0) {
+        const double rev = kTwoPi * r_max_ * r_max_ / h_min_;
+        const double xg = along_track(cur_, Angles(cur_, false), rev, true, 0.0, kGuess);
+        if (xg > 2.0 * safe) target = cur_.t + 0.99 * xg;
+      }
+    }
+    if (target > 0.0) {
+      if (eval(std::min(target, span_), n)) {
         widen(n);
         if (n.F >= 0.0) {
           const bool single = monotone(cur_, n);
-          if (refine_crossing(cur_, n, single, aos_t, aos_s, down, aos_near) &&
-              (single || keeps_sign(cur_, safe, down)))
-            return aos_t < span_;
+          if (refine_crossing(cur_, n, single, aos_t, aos_s, down, aos_near)) {
+            if (single || keeps_sign(cur_, safe, down)) {
+              return aos_t < span_;
+            }
+            ahead = down;
+            cross = true;
+            cross_t = aos_t;
+            cross_up = aos_s;
+            cross_near = aos_near;
+          }
         } else if (keeps_sign(cur_, safe, n)) {
           last_step_ = n.t - cur_.t;
           cur_ = n;
           continue;
+        } else {
+          ahead = n;
         }
       }
     }
@@ -970,6 +1151,10 @@ bool Searcher::find_aos(double& aos_t, Sample& aos_s, Sample& aos_near) {
       return refine_crossing(cur_, n, monotone(cur_, n), aos_t, aos_s, down, aos_near) && aos_t < span_;
     }
     cur_ = n;
+    if (ahead && cur_.t >= ahead->t) {  // stepped past it (a min_step): forget it
+      ahead.reset();
+      cross = false;
+    }
     if (tn >= span_) return false;
   }
 }

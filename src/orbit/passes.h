@@ -28,14 +28,18 @@ struct PassSearchStats {
 
 // All passes overlapping [start, stop). A satellite always above the horizon (geostationary, in
 // view) gives one pass with both flags set; one never above gives none. A propagation failure ends
-// the search at the failure time (a decayed satellite has no more passes).
+// the search at the failure time (a decayed satellite has no more passes): a pass still up then
+// ends there, with up_at_end. Passes shorter than precision_s / 2 may be missed. How the search
+// works and what it was measured to do: docs/passes.md.
 std::vector<Pass> find_passes(const Sgp4& sat, const Observer& o, UtcTime start, UtcTime stop,
                               const PassOptions& options = {}, const EarthOrientation& eo = {});
 // The same, adding the propagations it made to stats.
 std::vector<Pass> find_passes(const Sgp4& sat, const Observer& o, UtcTime start, UtcTime stop,
                               const PassOptions& options, const EarthOrientation& eo, PassSearchStats& stats);
 
-// The next pass whose maximum reaches options.min_max_elevation_deg, searching up to max_days.
+// The next pass whose maximum reaches options.min_max_elevation_deg, searching up to max_days. A pass
+// in progress at `from` counts, as up_at_start with aos = from, when what is left of it reaches the
+// minimum.
 std::optional<Pass> next_pass(const Sgp4& sat, const Observer& o, UtcTime from, double max_days = 10.0,
                               const PassOptions& options = {}, const EarthOrientation& eo = {});
 

@@ -266,7 +266,10 @@ void brute_force_check(const Sgp4& sat, const Observer& o, UtcTime start, UtcTim
     ++stats.runs;
     if (highest < opt.horizon_deg + 0.5) ++stats.grazing_runs;
     if (highest < opt.min_max_elevation_deg - 1e-4) return;  // filtered out, rightly or not: see below
-    const auto it = std::find_if(passes.begin(), passes.end(), [&](const Pass& p) { return p.aos <= a && b <= p.los; });
+    // Inside a pass, to the precision (a sample may fall a hair after a true AOS).
+    const auto it = std::find_if(passes.begin(), passes.end(), [&](const Pass& p) {
+      return p.aos <= add_seconds(a, opt.precision_s) && add_seconds(b, -opt.precision_s) <= p.los;
+    });
     CAPTURE(format_iso8601(a));
     CAPTURE(format_iso8601(b));
     CAPTURE(highest);

@@ -1,0 +1,95 @@
+// What rotctld and rigctld have in common: one command a line, short ("P") or long ("\set_pos")
+// names, the Default Protocol (data lines, or "RPRT n") and the Extended Response Protocol
+// (a '+' or other punctuation before the command: "set_pos: 90 45", "Key: value" lines, "RPRT n").
+// Transport-free: a line in, reply text out. docs/hamlib-endpoints.md has the formats.
+#pragma once
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace tb::netctl {
+
+// Hamlib's error numbers (hamlib/rig.h, enum rig_errcode_e) that trakbox answers with; "RPRT"
+// carries them negated ("RPRT -1").
+enum class Error : int {
+  none = 0,
+  invalid = 1,         // RIG_EINVAL: argument missing, extra, malformed or outside the protocol's range
+  io = 6,              // RIG_EIO: the device is not answering (link down, no reading yet)
+  protocol = 8,        // RIG_EPROTO: line too long
+  rejected = 9,        // RIG_ERJCTED: trakbox refuses now (rotor control off, parking off, tracking)
+  not_available = 11,  // RIG_ENAVAIL: a command trakbox does not offer
+  bad_vfo = 16,        // RIG_EVFO: a VFO trakbox has no link for
+};
+// "RPRT -1"
+std::string rprt(Error e);
+
+// The longest line taken (bytes, newline excluded). Hamlib's own lines are under 100 bytes.
+inline constexpr std::size_t kMaxLineLength = 1024;
+
+// One request line, split.
+struct Request {
+  char separator = 0;             // 0: Default Protocol; else the Extended Response separator
+  std::string name;               // "P", "set_pos" (long names without the backslash)
+  bool long_name = false;
+  std::vector<std::string> args;  // whitespace-separated
+  bool extended() const { return separator != 0; }
+};
+// Nothing for a blank line or a comment ('#').
+std::optional<Request> parse_request(std::string_view line);
+
+// What a command produced: its values (in order, each a key and a value) or an error.
+struct Outcome {
+  Error error = Error::none;
+  std::vector<std::pair<std::string, std::string>> values;
+  static Outcome fail(Error e) { return Outcome{e, {}}; }
+  Outcome& add(std::string key, std::string value) {
+    values.emplace_back(std::move(key), std::move(value));
+    return *this;
+  }
+};
+
+// The reply text. A "get" command answers its values one a line in the Default Protocol and
+// "RPRT n" only on error; a "set" answers "RPRT n" (after its values, if it has any, as the
+// "M ?" lists do). Extended: "long_name: args", "Key: value" records (a value with an empty key is
+// sent as it is), "RPRT n", the records ended by the separator and the whole by a newline.
+std::string format_reply(const Request& r, std::string_view long_name, bool get, const Outcome& o);
+
+// What the server sends back for a line, and whether it then closes the connection.
+struct Reply {
+  std::string text;    // empty: nothing to send
+  bool close = false;  // q / Q: send text, then close
+};
+
+// The interface a server drives: one call a line, in order, on the event loop.
+class LineProtocol {
+ public:
+  virtual ~LineProtocol() = default;
+  // One line without its newline (a trailing '\r' is ignored).
+  Reply handle(std::string_view line);
+  // A line longer than kMaxLineLength (the server discards it up to its newline): RPRT -8.
+  Reply overlong() const;
+
+ protected:
+  struct Command {
+    int id = 0;
+    char short_name = 0;         // 0: long name only
+    std::string_view long_name;
+    bool get = false;
+  };
+  // The command table, and what each command does (args already split; the count unchecked).
+  virtual const std::vector<Command>& commands() const = 0;
+  virtual Outcome execute(int id, const std::vector<std::string>& args) = 0;
+};
+
+// Strict number parsing for arguments: the whole token, finite.
+std::optional<double> parse_double(std::string_view s);
+std::optional<long long> parse_integer(std::string_view s);
+// printf("%.2f")
+std::string fixed2(double v);
+// Control characters replaced by spaces, so a value always fits on its line.
+std::string one_line(std::string s);
+
+}  // namespace tb::netctl

@@ -1,0 +1,60 @@
+// The rotctld protocol (Hamlib's TCP rotator daemon, port 4533 by convention) answered by trakbox's
+// station, so that Gpredict and every Hamlib client (rotctl -m 2) can drive the antenna.
+//
+//   P az el / \set_pos   point there (through trakbox's model: limits, dead band); tracking stops
+//   p / \get_pos         where the antenna points: two lines, azimuth and elevation
+//   S / \stop            motors off, tracking stops (always works)
+//   K / \park            to the parking position
+//   M dir speed / \move  2 up, 4 down, 8 CCW, 16 CW: drive at the rotator's rate until S
+//   _ / \get_info        one line naming the rotator
+//   \dump_state          what Hamlib's NET client reads when it opens (protocol 1)
+//   1 / \dump_caps       capabilities, for people
+//   q / Q                close
+//
+// Positions are compass bearings. Rules (docs/hamlib-endpoints.md):
+//  * azimuth -180..540 and elevation 0..90 (0..180 where the elevation may flip) are the protocol's
+//    range: outside it the request is refused (RPRT -1) and nothing changes. Inside it the azimuth
+//    is taken modulo 360, and a position outside trakbox's rotation limits or span is clamped to the
+//    nearest limit (as trakbox's own tracking does), RPRT 0; p then says where the antenna went.
+//  * with rotor control off (the E key) P, K and M are refused (RPRT -9) and nothing changes;
+//    S always works. K with parking disabled: RPRT -9. A rotator link in fault: P, K, M and p
+//    answer RPRT -6.
+// Transport-free: the server hands it lines; it acts on the StationLoop at once.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "netctl/protocol.h"
+#include "tracker/station_loop.h"
+
+namespace tb::netctl {
+
+class RotctlProtocol final : public LineProtocol {
+ public:
+  explicit RotctlProtocol(tracker::StationLoop& station);
+
+  // The protocol's coordinate range (what \dump_state advertises and P accepts).
+  static constexpr double kMinAz = -180.0;
+  static constexpr double kMaxAz = 540.0;
+  double max_el() const;  // 90, or 180 where the elevation may flip over the top
+
+ protected:
+  const std::vector<Command>& commands() const override;
+  Outcome execute(int id, const std::vector<std::string>& args) override;
+
+ private:
+  Outcome set_pos(const std::vector<std::string>& args);
+  Outcome get_pos();
+  Outcome stop();
+  Outcome park();
+  Outcome move(const std::vector<std::string>& args);
+  Outcome info();
+  Outcome dump_state();
+  Outcome dump_caps();
+  // Why the antenna cannot be moved now, if it cannot.
+  Error cannot_move() const;
+
+  tracker::StationLoop& station_;
+};
+
+}  // namespace tb::netctl

@@ -1,0 +1,244 @@
+#include "netctl/server.h"
+
+#include <spdlog/spdlog.h>
+
+#include <array>
+#include <boost/asio/write.hpp>
+#include <chrono>
+#include <cstring>
+#include <system_error>
+#include <unordered_map>
+#include <vector>
+
+namespace tb::netctl {
+
+namespace asio = boost::asio;
+using asio::ip::tcp;
+using boost::system::error_code;
+
+namespace {
+class Session;
+}
+
+struct LineServer::Core {
+  LineProtocol* protocol = nullptr;
+  ServerOptions options;
+  bool open = true;
+  std::unordered_map<Session*, std::weak_ptr<Session>> sessions;
+};
+
+namespace {
+
+std::string describe(const tcp::socket& s) {
+  error_code ec;
+  const tcp::endpoint ep = s.remote_endpoint(ec);
+  if (ec) return "?";
+  return ep.address().to_string() + ":" + std::to_string(ep.port());
+}
+
+// One client: reads lines, hands them to the protocol in order, queues the replies.
+class Session : public std::enable_shared_from_this<Session> {
+ public:
+  Session(tcp::socket socket, std::shared_ptr<LineServer::Core> core)
+      : socket_(std::move(socket)), core_(std::move(core)), peer_(describe(socket_)) {}
+
+  void start() {
+    spdlog::debug("{}: client {} connected", core_->options.name, peer_);
+    read();
+  }
+
+  void close(const char* why) {
+    if (closed_) return;
+    closed_ = true;
+    error_code ec;
+    socket_.shutdown(tcp::socket::shutdown_both, ec);
+    socket_.close(ec);
+    core_->sessions.erase(this);
+    spdlog::debug("{}: client {} closed ({})", core_->options.name, peer_, why);
+  }
+
+ private:
+  void read() {
+    socket_.async_read_some(asio::buffer(buf_), [self = shared_from_this()](const error_code& ec, std::size_t n) {
+      self->on_read(ec, n);
+    });
+  }
+
+  void on_read(const error_code& ec, std::size_t n) {
+    if (closed_) return;
+    if (ec) {
+      if (ec != asio::error::eof) {
+        close(ec.message().c_str());
+        return;
+      }
+      // The client has sent all it will: answer an unterminated last line, send what is queued,
+      // then close.
+      if (!discarding_ && !line_.empty()) handle_line();
+      closing_ = true;
+      write();
+      return;
+    }
+    feed(buf_.data(), n);
+    if (closed_) return;
+    if (closing_) {
+      write();  // q: no more reading; close once the reply is out
+      return;
+    }
+    read();
+  }
+
+  void feed(const char* p, std::size_t n) {
+    const char* const end = p + n;
+    const std::size_t max_line = core_->options.max_line;
+    while (p < end && !closed_ && !closing_) {
+      const char* nl = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
+      const char* stop = nl ? nl : end;
+      if (!discarding_) {
+        const std::size_t take = static_cast<std::size_t>(stop - p);
+        if (line_.size() + take > max_line) {
+          // Too long: answered once, the rest discarded up to the newline.
+          discarding_ = true;
+          std::string().swap(line_);
+          if (core_->protocol) queue(core_->protocol->overlong().text);
+        } else {
+          line_.append(p, take);
+        }
+      }
+      if (!nl) break;
+      if (discarding_) {
+        discarding_ = false;
+      } else {
+        handle_line();
+      }
+      line_.clear();
+      p = nl + 1;
+    }
+  }
+
+  void handle_line() {
+    if (!core_->protocol) return;
+    const Reply r = core_->protocol->handle(line_);
+    queue(r.text);
+    if (r.close) closing_ = true;
+  }
+
+  void queue(const std::string& text) {
+    if (text.empty() || closed_) return;
+    if (out_.size() + writing_.size() + text.size() > core_->options.max_output) {
+      spdlog::warn("{}: client {} does not read its replies; disconnected", core_->options.name, peer_);
+      close("output queue full");
+      return;
+    }
+    out_ += text;
+    write();
+  }
+
+  void write() {
+    if (closed_ || !writing_.empty()) return;
+    if (out_.empty()) {
+      if (closing_) close("done");
+      return;
+    }
+    writing_.swap(out_);
+    asio::async_write(socket_, asio::buffer(writing_), [self = shared_from_this()](const error_code& ec, std::size_t) {
+      if (self->closed_) return;
+      if (ec) {
+        self->close(ec.message().c_str());
+        return;
+      }
+      self->writing_.clear();
+      self->write();
+    });
+  }
+
+  tcp::socket socket_;
+  std::shared_ptr<LineServer::Core> core_;
+  std::string peer_;
+  std::array<char, 4096> buf_{};
+  std::string line_;
+  bool discarding_ = false;
+  std::string out_;      // queued
+  std::string writing_;  // handed to async_write
+  bool closing_ = false; // close once out_ and writing_ are sent
+  bool closed_ = false;
+};
+
+}  // namespace
+
+LineServer::LineServer(asio::io_context& io, std::uint16_t port, LineProtocol& protocol, ServerOptions options)
+    : acceptor_(io), retry_(io), core_(std::make_shared<Core>()) {
+  core_->protocol = &protocol;
+  core_->options = std::move(options);
+  const std::string where = core_->options.address + ":" + std::to_string(port);
+  error_code ec;
+  const asio::ip::address addr = asio::ip::make_address(core_->options.address, ec);
+  if (ec) throw std::system_error(ec, core_->options.name + ": bad listening address " + core_->options.address);
+  const tcp::endpoint ep(addr, port);
+  acceptor_.open(ep.protocol(), ec);
+  if (!ec) acceptor_.set_option(tcp::acceptor::reuse_address(true), ec);
+  if (!ec) acceptor_.bind(ep, ec);
+  if (!ec) acceptor_.listen(asio::socket_base::max_listen_connections, ec);
+  if (ec) throw std::system_error(ec, core_->options.name + ": cannot listen on " + where);
+  port_ = acceptor_.local_endpoint().port();
+  spdlog::info("{}: listening on {}:{}", core_->options.name, core_->options.address, port_);
+  accept();
+}
+
+LineServer::~LineServer() { close(); }
+
+std::size_t LineServer::client_count() const { return core_->sessions.size(); }
+
+const ServerOptions& LineServer::options() const { return core_->options; }
+
+void LineServer::close() {
+  if (!core_->open) return;
+  core_->open = false;
+  core_->protocol = nullptr;
+  error_code ec;
+  acceptor_.close(ec);
+  retry_.cancel();
+  std::vector<std::shared_ptr<Session>> live;
+  for (auto& [p, w] : core_->sessions)
+    if (auto s = w.lock()) live.push_back(std::move(s));
+  for (auto& s : live) s->close("server closed");
+  core_->sessions.clear();
+}
+
+void LineServer::accept() {
+  acceptor_.async_accept([this, core = core_](const error_code& ec, tcp::socket socket) {
+    if (!core->open) return;
+    if (ec) {
+      if (ec == asio::error::operation_aborted) return;
+      // Out of descriptors and the like: try again shortly rather than spin.
+      spdlog::warn("{}: accept failed: {}", core->options.name, ec.message());
+      retry_.expires_after(std::chrono::milliseconds(100));
+      retry_.async_wait([this, core](const error_code& e) {
+        if (!e && core->open) accept();
+      });
+      return;
+    }
+    if (core->sessions.size() >= core->options.max_clients) {
+      spdlog::warn("{}: {} clients already; connection from {} refused", core->options.name,
+                   core->sessions.size(), describe(socket));
+      error_code ignored;
+      socket.close(ignored);
+    } else {
+      error_code ignored;
+      socket.set_option(tcp::no_delay(true), ignored);
+      auto s = std::make_shared<Session>(std::move(socket), core);
+      core->sessions.emplace(s.get(), s);
+      s->start();
+    }
+    accept();
+  });
+}
+
+RotctldServer::RotctldServer(asio::io_context& io, std::uint16_t port, tracker::StationLoop& station,
+                             ServerOptions options)
+    : protocol_(station), server_(io, port, protocol_, std::move(options)) {}
+
+RigctldServer::RigctldServer(asio::io_context& io, std::uint16_t port, tracker::StationLoop& station,
+                             ServerOptions options)
+    : protocol_(station), server_(io, port, protocol_, std::move(options)) {}
+
+}  // namespace tb::netctl

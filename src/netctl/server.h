@@ -1,0 +1,102 @@
+// Line-oriented TCP servers on the event loop: trakbox answering the rotctld and rigctld protocols.
+//
+//   boost::asio::io_context io;
+//   netctl::RotctldServer rot(io, 4533, station);   // Gpredict "Rotators": localhost:4533
+//   netctl::RigctldServer rig(io, 4532, station);   // Gpredict "Radios": localhost:4532
+//   io.run();                                       // the same loop that ticks the station
+//
+// Everything runs on the io_context's thread, the one that ticks the StationLoop: construct, use and
+// destroy the servers there (or while the loop is not running). Nothing blocks: a client that
+// stops reading, never sends a newline or floods is dealt with without stalling the loop:
+//  * a line longer than max_line is answered "RPRT -8" once and discarded up to its newline;
+//  * a client whose unsent replies exceed max_output (it sends but does not read) is disconnected;
+//  * at most max_clients connections; more are closed as soon as they are accepted.
+#pragma once
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/ip/tcp.hpp>
+#include <boost/asio/steady_timer.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "netctl/protocol.h"
+#include "netctl/rigctl_protocol.h"
+#include "netctl/rotctl_protocol.h"
+#include "tracker/station_loop.h"
+
+namespace tb::netctl {
+
+struct ServerOptions {
+  std::string address = "127.0.0.1";       // loopback unless told otherwise ("0.0.0.0", "::")
+  std::size_t max_line = kMaxLineLength;   // bytes a line may have, newline excluded
+  std::size_t max_output = 64 * 1024;      // bytes of replies queued for one client
+  std::size_t max_clients = 16;
+  std::string name = "netctl";             // for the log: "rotctld", "rigctld"
+};
+
+// A TCP server handing each line of each client to one LineProtocol, in order of arrival.
+// Port 0 picks a free port (port() says which). Throws std::system_error when it cannot listen.
+class LineServer {
+ public:
+  LineServer(boost::asio::io_context& io, std::uint16_t port, LineProtocol& protocol, ServerOptions options = {});
+  ~LineServer();
+  LineServer(const LineServer&) = delete;
+  LineServer& operator=(const LineServer&) = delete;
+
+  std::uint16_t port() const { return port_; }
+  std::size_t client_count() const;
+  const ServerOptions& options() const;
+  // Stops listening and drops every client. Also done by the destructor.
+  void close();
+
+  struct Core;  // shared with the sessions, which may outlive the server by a handler or two
+
+ private:
+  void accept();
+  boost::asio::ip::tcp::acceptor acceptor_;
+  boost::asio::steady_timer retry_;
+  std::shared_ptr<Core> core_;
+  std::uint16_t port_ = 0;
+};
+
+// rotctld-compatible: the antenna of `station`.
+class RotctldServer {
+ public:
+  static constexpr std::uint16_t kDefaultPort = 4533;
+  RotctldServer(boost::asio::io_context& io, std::uint16_t port, tracker::StationLoop& station,
+                ServerOptions options = named("rotctld"));
+  std::uint16_t port() const { return server_.port(); }
+  std::size_t client_count() const { return server_.client_count(); }
+  RotctlProtocol& protocol() { return protocol_; }
+  void close() { server_.close(); }
+
+  static ServerOptions named(std::string name) {
+    ServerOptions o;
+    o.name = std::move(name);
+    return o;
+  }
+
+ private:
+  RotctlProtocol protocol_;
+  LineServer server_;
+};
+
+// rigctld-compatible: the radio of `station` (VFO A = downlink, VFO B = uplink).
+class RigctldServer {
+ public:
+  static constexpr std::uint16_t kDefaultPort = 4532;
+  RigctldServer(boost::asio::io_context& io, std::uint16_t port, tracker::StationLoop& station,
+                ServerOptions options = RotctldServer::named("rigctld"));
+  std::uint16_t port() const { return server_.port(); }
+  std::size_t client_count() const { return server_.client_count(); }
+  RigctlProtocol& protocol() { return protocol_; }
+  void close() { server_.close(); }
+
+ private:
+  RigctlProtocol protocol_;
+  LineServer server_;
+};
+
+}  // namespace tb::netctl

@@ -1,0 +1,142 @@
+#include "satrak/download.h"
+
+#include <curl/curl.h>
+
+#include <memory>
+
+namespace tb::satrak {
+
+namespace {
+
+void global_init() {
+  static std::once_flag once;
+  std::call_once(once, [] { curl_global_init(CURL_GLOBAL_DEFAULT); });
+}
+
+struct Transfer {
+  std::string body;
+  std::size_t max_bytes = 0;
+  bool too_big = false;
+  const std::function<bool()>* abort = nullptr;
+};
+
+std::size_t on_data(char* ptr, std::size_t size, std::size_t n, void* user) {
+  auto* t = static_cast<Transfer*>(user);
+  const std::size_t bytes = size * n;
+  if (t->body.size() + bytes > t->max_bytes) {
+    t->too_big = true;
+    return 0;  // makes libcurl fail the transfer with CURLE_WRITE_ERROR
+  }
+  t->body.append(ptr, bytes);
+  return bytes;
+}
+
+int on_progress(void* user, curl_off_t, curl_off_t, curl_off_t, curl_off_t) {
+  auto* t = static_cast<Transfer*>(user);
+  return (t->abort && *t->abort && (*t->abort)()) ? 1 : 0;
+}
+
+}  // namespace
+
+DownloadResult download(const DownloadRequest& r, const std::function<bool()>& abort) {
+  global_init();
+  DownloadResult out;
+  std::unique_ptr<CURL, void (*)(CURL*)> curl(curl_easy_init(), curl_easy_cleanup);
+  if (!curl) {
+    out.error = "libcurl could not start a transfer";
+    return out;
+  }
+  Transfer t;
+  t.max_bytes = r.max_bytes;
+  t.abort = &abort;
+  char errbuf[CURL_ERROR_SIZE] = {0};
+  CURL* c = curl.get();
+  curl_easy_setopt(c, CURLOPT_URL, r.url.c_str());
+  curl_easy_setopt(c, CURLOPT_PROTOCOLS_STR, "http,https,ftp,ftps,sftp");
+  curl_easy_setopt(c, CURLOPT_REDIR_PROTOCOLS_STR, "http,https");
+  curl_easy_setopt(c, CURLOPT_FOLLOWLOCATION, 1L);
+  curl_easy_setopt(c, CURLOPT_MAXREDIRS, 5L);
+  curl_easy_setopt(c, CURLOPT_NOSIGNAL, 1L);
+  curl_easy_setopt(c, CURLOPT_FAILONERROR, 1L);
+  curl_easy_setopt(c, CURLOPT_CONNECTTIMEOUT_MS, static_cast<long>(r.connect_timeout.count()));
+  curl_easy_setopt(c, CURLOPT_TIMEOUT_MS, static_cast<long>(r.total_timeout.count()));
+  curl_easy_setopt(c, CURLOPT_MAXFILESIZE_LARGE, static_cast<curl_off_t>(r.max_bytes));
+  curl_easy_setopt(c, CURLOPT_WRITEFUNCTION, on_data);
+  curl_easy_setopt(c, CURLOPT_WRITEDATA, &t);
+  curl_easy_setopt(c, CURLOPT_NOPROGRESS, 0L);
+  curl_easy_setopt(c, CURLOPT_XFERINFOFUNCTION, on_progress);
+  curl_easy_setopt(c, CURLOPT_XFERINFODATA, &t);
+  curl_easy_setopt(c, CURLOPT_ERRORBUFFER, errbuf);
+  curl_easy_setopt(c, CURLOPT_USERAGENT, "trakbox-satrak");
+  if (!r.user.empty()) {
+    curl_easy_setopt(c, CURLOPT_USERNAME, r.user.c_str());
+    curl_easy_setopt(c, CURLOPT_PASSWORD, r.password.c_str());
+  }
+  const CURLcode rc = curl_easy_perform(c);
+  if (rc == CURLE_OK) {
+    out.ok = true;
+    out.body = std::move(t.body);
+    return out;
+  }
+  if (t.too_big || rc == CURLE_FILESIZE_EXCEEDED) {
+    out.error = r.url + ": larger than " + std::to_string(r.max_bytes) + " bytes";
+  } else if (rc == CURLE_ABORTED_BY_CALLBACK) {
+    out.error = r.url + ": cancelled";
+  } else {
+    out.error = r.url + ": " + (errbuf[0] ? std::string(errbuf) : std::string(curl_easy_strerror(rc)));
+  }
+  return out;
+}
+
+Downloader::Downloader() : worker_([this] { run(); }) {}
+
+Downloader::~Downloader() {
+  {
+    std::lock_guard lk(m_);
+    quit_ = true;
+    jobs_.clear();
+  }
+  cv_.notify_all();
+  worker_.join();
+}
+
+void Downloader::submit(DownloadRequest request, Callback done) {
+  {
+    std::lock_guard lk(m_);
+    jobs_.push_back(Job{std::move(request), std::move(done)});
+  }
+  cv_.notify_all();
+}
+
+std::size_t Downloader::busy() const {
+  std::lock_guard lk(m_);
+  return jobs_.size() + (running_job_ ? 1 : 0);
+}
+
+void Downloader::run() {
+  for (;;) {
+    Job job;
+    {
+      std::unique_lock lk(m_);
+      cv_.wait(lk, [&] { return quit_ || !jobs_.empty(); });
+      if (quit_) return;
+      job = std::move(jobs_.front());
+      jobs_.pop_front();
+      running_job_ = true;
+    }
+    DownloadResult result = download(job.request, [this] {
+      std::lock_guard lk(m_);
+      return quit_;
+    });
+    bool quit;
+    {
+      std::lock_guard lk(m_);
+      quit = quit_;
+    }
+    if (!quit && job.done) job.done(std::move(result));
+    std::lock_guard lk(m_);
+    running_job_ = false;
+  }
+}
+
+}  // namespace tb::satrak

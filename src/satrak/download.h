@@ -1,0 +1,63 @@
+// Element-set downloads over HTTP(S) and FTP(S)/SFTP with libcurl, on a worker thread of their own.
+// libcurl blocks, so no transfer ever runs on the event loop: submit() queues a job and returns at
+// once; the worker runs the jobs one at a time and hands each result to the job's callback **on
+// the worker thread** (the Satrak unit posts it to its io_context). The destructor aborts a
+// transfer in progress (within about 100 ms) and joins the worker; callbacks of jobs still queued
+// then are not called.
+#pragma once
+#include <chrono>
+#include <condition_variable>
+#include <cstddef>
+#include <deque>
+#include <functional>
+#include <mutex>
+#include <string>
+#include <thread>
+
+namespace tb::satrak {
+
+struct DownloadRequest {
+  std::string url;           // http://, https://, ftp://, ftps:// or sftp://
+  std::string user;          // empty: none (anonymous FTP)
+  std::string password;
+  std::chrono::milliseconds connect_timeout{10000};
+  std::chrono::milliseconds total_timeout{60000};
+  std::size_t max_bytes = 1 << 20;  // element files are small; anything bigger is refused
+};
+
+struct DownloadResult {
+  bool ok = false;
+  std::string body;          // the file (when ok)
+  std::string error;         // one line: what went wrong (when not ok)
+};
+
+class Downloader {
+ public:
+  using Callback = std::function<void(DownloadResult)>;
+  Downloader();
+  ~Downloader();
+  Downloader(const Downloader&) = delete;
+  Downloader& operator=(const Downloader&) = delete;
+
+  void submit(DownloadRequest request, Callback done);
+  // Jobs queued or running.
+  std::size_t busy() const;
+
+ private:
+  void run();
+  struct Job {
+    DownloadRequest request;
+    Callback done;
+  };
+  mutable std::mutex m_;
+  std::condition_variable cv_;
+  std::deque<Job> jobs_;
+  bool running_job_ = false;
+  bool quit_ = false;
+  std::thread worker_;
+};
+
+// The transfer itself (blocking; what the worker runs). `abort` is polled during the transfer.
+DownloadResult download(const DownloadRequest& request, const std::function<bool()>& abort = {});
+
+}  // namespace tb::satrak

@@ -1,0 +1,192 @@
+#include "satrak/server.h"
+
+#include <array>
+#include <boost/asio/ip/tcp.hpp>
+#include <boost/asio/write.hpp>
+#include <deque>
+#include <set>
+
+#include <spdlog/spdlog.h>
+
+namespace tb::satrak {
+namespace asio = boost::asio;
+using asio::ip::tcp;
+
+namespace {
+class Session;
+}
+
+struct Server::State {
+  State(asio::io_context& io, Unit& u, ServerOptions o) : unit(u), opt(std::move(o)), acceptor(io) {}
+  Unit& unit;
+  ServerOptions opt;
+  tcp::acceptor acceptor;
+  std::set<std::shared_ptr<Session>> sessions;
+  Stats stats;
+  bool closed = false;
+};
+
+namespace {
+
+class Session : public std::enable_shared_from_this<Session> {
+ public:
+  Session(tcp::socket socket, std::weak_ptr<Server::State> state, std::size_t max_line, std::size_t max_output)
+      : socket_(std::move(socket)), state_(std::move(state)), decoder_(max_line), max_output_(max_output) {
+    boost::system::error_code ec;
+    const auto ep = socket_.remote_endpoint(ec);
+    peer_ = ec ? std::string("?") : ep.address().to_string() + ":" + std::to_string(ep.port());
+  }
+
+  void start() { read(); }
+
+  void close() {
+    if (closed_) return;
+    closed_ = true;
+    boost::system::error_code ec;
+    socket_.shutdown(tcp::socket::shutdown_both, ec);
+    socket_.close(ec);
+    out_.clear();
+    if (auto s = state_.lock()) s->sessions.erase(shared_from_this());
+  }
+
+ private:
+  void read() {
+    auto self = shared_from_this();
+    socket_.async_read_some(asio::buffer(buf_), [self](const boost::system::error_code& ec, std::size_t n) {
+      if (self->closed_) return;
+      if (ec) {
+        if (ec != asio::error::eof && ec != asio::error::operation_aborted)
+          spdlog::debug("satrak: client {}: {}", self->peer_, ec.message());
+        self->close();
+        return;
+      }
+      self->received(n);
+    });
+  }
+
+  void received(std::size_t n) {
+    auto state = state_.lock();
+    if (!state) {
+      close();
+      return;
+    }
+    events_.clear();
+    decoder_.feed(std::string_view(buf_.data(), n), events_);
+    for (const Decoded& d : events_) {
+      if (d.kind == Decoded::Kind::overlong) spdlog::warn("satrak: client {}: line longer than {} bytes discarded", peer_, decoder_.max_line());
+      ++state->stats.frames;
+      queue(encode(state->unit.handle(d)));
+      if (closed_) return;
+    }
+    read();
+  }
+
+  void queue(std::string frame) {
+    queued_ += frame.size();
+    out_.push_back(std::move(frame));
+    if (queued_ > max_output_) {
+      spdlog::warn("satrak: client {} does not read its replies ({} bytes waiting): disconnected", peer_, queued_);
+      if (auto s = state_.lock()) ++s->stats.dropped_slow;
+      close();
+      return;
+    }
+    if (!writing_) write();
+  }
+
+  void write() {
+    if (out_.empty() || closed_) {
+      writing_ = false;
+      return;
+    }
+    writing_ = true;
+    auto self = shared_from_this();
+    asio::async_write(socket_, asio::buffer(out_.front()), [self](const boost::system::error_code& ec, std::size_t) {
+      if (self->closed_) return;
+      if (ec) {
+        self->close();
+        return;
+      }
+      self->queued_ -= self->out_.front().size();
+      self->out_.pop_front();
+      self->write();
+    });
+  }
+
+  tcp::socket socket_;
+  std::weak_ptr<Server::State> state_;
+  Decoder decoder_;
+  std::size_t max_output_;
+  std::array<char, 4096> buf_{};
+  std::vector<Decoded> events_;
+  std::deque<std::string> out_;
+  std::size_t queued_ = 0;
+  bool writing_ = false;
+  bool closed_ = false;
+  std::string peer_;
+};
+
+void accept(const std::shared_ptr<Server::State>& state) {
+  std::weak_ptr<Server::State> weak = state;
+  state->acceptor.async_accept([weak](const boost::system::error_code& ec, tcp::socket socket) {
+    auto s = weak.lock();
+    if (!s || s->closed) return;
+    if (ec) {
+      if (ec == asio::error::operation_aborted) return;
+      spdlog::warn("satrak: accept: {}", ec.message());
+      accept(s);
+      return;
+    }
+    if (s->sessions.size() >= s->opt.max_clients) {
+      ++s->stats.refused;
+      spdlog::warn("satrak: more than {} clients: connection refused", s->opt.max_clients);
+      boost::system::error_code ignored;
+      socket.close(ignored);
+    } else {
+      ++s->stats.accepted;
+      boost::system::error_code ignored;
+      socket.set_option(tcp::no_delay(true), ignored);
+      if (s->opt.send_buffer > 0) socket.set_option(asio::socket_base::send_buffer_size(s->opt.send_buffer), ignored);
+      auto session = std::make_shared<Session>(std::move(socket), weak, s->opt.max_line, s->opt.max_output);
+      s->sessions.insert(session);
+      session->start();
+    }
+    accept(s);
+  });
+}
+
+}  // namespace
+
+Server::Server(asio::io_context& io, Unit& unit, ServerOptions options)
+    : state_(std::make_shared<State>(io, unit, std::move(options))) {
+  const tcp::endpoint ep(asio::ip::make_address(state_->opt.address), state_->opt.port);
+  state_->acceptor.open(ep.protocol());
+  state_->acceptor.set_option(tcp::acceptor::reuse_address(true));
+  state_->acceptor.bind(ep);
+  state_->acceptor.listen();
+  spdlog::info("satrak: listening on {}:{}", state_->opt.address, port());
+  accept(state_);
+}
+
+Server::~Server() { close(); }
+
+void Server::close() {
+  if (state_->closed) return;
+  state_->closed = true;
+  boost::system::error_code ec;
+  state_->acceptor.close(ec);
+  auto sessions = state_->sessions;  // close() erases from the set
+  for (const auto& s : sessions) s->close();
+  state_->sessions.clear();
+}
+
+unsigned short Server::port() const {
+  boost::system::error_code ec;
+  const auto ep = state_->acceptor.local_endpoint(ec);
+  return ec ? 0 : ep.port();
+}
+
+std::size_t Server::clients() const { return state_->sessions.size(); }
+
+Server::Stats Server::stats() const { return state_->stats; }
+
+}  // namespace tb::satrak

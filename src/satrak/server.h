@@ -1,0 +1,59 @@
+// The Satrak TCP server: port 4001 by default, on the program's io_context, many clients at once.
+//
+//   satrak::Server server(io, unit, {.port = 4001});   // binds 127.0.0.1 unless told otherwise
+//
+// Every client is served with asynchronous reads and writes only, so none can stall the loop or
+// the others:
+//   * input goes through a bounded frame Decoder (a line longer than max_line is answered with
+//     ERR,3 once and discarded up to its end; 1 MB without a newline costs max_line bytes);
+//   * each frame is answered in order, at once (Unit::handle);
+//   * replies wait in a per-client queue; a client that does not read them and lets the queue pass
+//     max_output bytes is disconnected;
+//   * a client that connects beyond max_clients is closed at once.
+#pragma once
+#include <boost/asio/io_context.hpp>
+#include <chrono>
+#include <cstddef>
+#include <memory>
+#include <string>
+
+#include "satrak/unit.h"
+
+namespace tb::satrak {
+
+struct ServerOptions {
+  std::string address = "127.0.0.1";  // "0.0.0.0" or "::" to serve other hosts
+  unsigned short port = 4001;         // 0: a free port (tests); see Server::port()
+  std::size_t max_clients = 16;
+  std::size_t max_line = Decoder::kDefaultMaxLine;
+  std::size_t max_output = 64 * 1024;  // bytes of replies queued for one client before it is dropped
+  int send_buffer = 0;                 // SO_SNDBUF of client sockets; 0: the system's (tests set it small)
+};
+
+class Server {
+ public:
+  // Binds and listens at once; throws boost::system::system_error when the address cannot be bound.
+  Server(boost::asio::io_context& io, Unit& unit, ServerOptions options = {});
+  ~Server();  // closes the listener and every client
+  Server(const Server&) = delete;
+  Server& operator=(const Server&) = delete;
+
+  unsigned short port() const;
+  std::size_t clients() const;
+  // Counters for logs and tests.
+  struct Stats {
+    std::size_t accepted = 0;
+    std::size_t refused = 0;       // beyond max_clients
+    std::size_t dropped_slow = 0;  // output queue over max_output
+    std::size_t frames = 0;        // lines answered
+  };
+  Stats stats() const;
+  void close();
+
+  struct State;
+
+ private:
+  std::shared_ptr<State> state_;
+};
+
+}  // namespace tb::satrak

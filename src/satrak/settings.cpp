@@ -1,0 +1,161 @@
+#include "satrak/settings.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace tb::satrak {
+using nlohmann::json;
+
+namespace {
+
+[[noreturn]] void bad(const std::string& where, const std::string& what) { throw std::runtime_error(where + ": " + what); }
+
+const json& field(const json& j, const std::string& where, const char* key) {
+  if (!j.is_object()) bad(where, "expected an object");
+  const auto it = j.find(key);
+  if (it == j.end()) bad(where + "." + key, "missing");
+  return *it;
+}
+
+double num(const json& j, const std::string& where, const char* key, double lo, double hi) {
+  const json& v = field(j, where, key);
+  if (!v.is_number()) bad(where + "." + key, "expected a number");
+  const double d = v.get<double>();
+  if (!std::isfinite(d) || d < lo || d > hi)
+    bad(where + "." + key, "value " + v.dump() + " outside " + json(lo).dump() + " .. " + json(hi).dump());
+  return d;
+}
+
+long long integer(const json& j, const std::string& where, const char* key, long long lo, long long hi) {
+  const json& v = field(j, where, key);
+  if (!v.is_number_integer()) bad(where + "." + key, "expected a whole number");
+  const long long n = v.get<long long>();
+  if (n < lo || n > hi) bad(where + "." + key, "value " + v.dump() + " outside " + std::to_string(lo) + " .. " + std::to_string(hi));
+  return n;
+}
+
+bool boolean(const json& j, const std::string& where, const char* key) {
+  const json& v = field(j, where, key);
+  if (!v.is_boolean()) bad(where + "." + key, "expected true or false");
+  return v.get<bool>();
+}
+
+std::string text(const json& j, const std::string& where, const char* key, std::size_t max_len) {
+  const json& v = field(j, where, key);
+  if (!v.is_string()) bad(where + "." + key, "expected a string");
+  std::string s = v.get<std::string>();
+  if (s.size() > max_len) bad(where + "." + key, "longer than " + std::to_string(max_len) + " characters");
+  for (unsigned char c : s)
+    if (c < 0x20 || c == ',' || c == '*' || c == '$') bad(where + "." + key, "holds a control character, ',', '*' or '$'");
+  return s;
+}
+
+std::string file_name(const json& j, const std::string& where, const char* key) {
+  std::string s = text(j, where, key, limits::kNameMax);
+  if (!s.empty() && !safe_file_name(s)) bad(where + "." + key, "'" + s + "' is not a plain file name (no '/', no '..')");
+  return s;
+}
+
+orbit::UtcTime time_of(const json& j, const std::string& where, const char* key) {
+  const std::string s = text(j, where, key, 40);
+  const auto t = orbit::parse_iso8601(s);
+  if (!t) bad(where + "." + key, "expected an ISO 8601 UTC time, found '" + s + "'");
+  return *t;
+}
+
+}  // namespace
+
+bool safe_file_name(std::string_view name) {
+  if (name.empty() || name.size() > limits::kNameMax) return false;
+  if (name.front() == '.' || name.find("..") != std::string_view::npos) return false;
+  for (unsigned char c : name)
+    if (c < 0x20 || c == 0x7F || c == '/' || c == '\\') return false;
+  return true;
+}
+
+json to_json(const Settings& s) {
+  json j;
+  j["rtc_auto_update"] = s.rtc_auto_update;
+  j["time_offset_ms"] = s.time_offset_ms;
+  j["az_offset_deg"] = s.az_offset_deg;
+  j["el_offset_deg"] = s.el_offset_deg;
+  j["go_to_start_before_ms"] = s.go_to_start_before_ms;
+  j["position_base"] = s.position_base;
+  j["min_elevation_deg"] = s.min_elevation_deg;
+  j["north_offset_deg"] = s.north_offset_deg;
+  j["sspa_manual"] = s.sspa_manual;
+  j["sspa_auto_option"] = s.sspa_auto_option;
+  j["source"] = static_cast<int>(s.source);
+  j["el_threshold_deg"] = s.el_threshold_deg;
+  if (s.window) j["window"] = {{"start", orbit::format_iso8601(s.window->start)}, {"stop", orbit::format_iso8601(s.window->stop)}};
+  else j["window"] = nullptr;
+  j["auto_track"] = s.auto_track;
+  j["tle_file"] = s.tle_file;
+  j["satellite"] = s.satellite;
+  j["tle_period_days"] = s.tle_period_days;
+  j["http"] = {{"url", s.http.url}, {"period_days", s.http.period_days}, {"on_error", static_cast<int>(s.http.on_error)}};
+  j["ftp"] = {{"host", s.ftp.host},           {"user", s.ftp.user},
+              {"password", s.ftp.password},   {"port", s.ftp.port},
+              {"file", s.ftp.file},           {"satellite", s.ftp.satellite},
+              {"period_days", s.ftp.period_days}, {"on_error", static_cast<int>(s.ftp.on_error)}};
+  j["gps_auto"] = s.gps_auto;
+  j["az_sensor_ref"] = s.az_sensor_ref;
+  j["el_sensor_ref"] = s.el_sensor_ref;
+  j["reduction_x"] = s.reduction_x;
+  j["reduction_y"] = s.reduction_y;
+  return j;
+}
+
+Settings settings_from_json(const json& j, const std::string& w) {
+  using namespace limits;
+  Settings s;
+  s.rtc_auto_update = boolean(j, w, "rtc_auto_update");
+  s.time_offset_ms = static_cast<int>(integer(j, w, "time_offset_ms", -kTimeOffsetMs, kTimeOffsetMs));
+  s.az_offset_deg = num(j, w, "az_offset_deg", -kAzOffsetDeg, kAzOffsetDeg);
+  s.el_offset_deg = num(j, w, "el_offset_deg", -kElOffsetDeg, kElOffsetDeg);
+  s.go_to_start_before_ms = static_cast<int>(integer(j, w, "go_to_start_before_ms", 0, kGoToStartBeforeMs));
+  s.position_base = static_cast<int>(integer(j, w, "position_base", 0, 1));
+  s.min_elevation_deg = num(j, w, "min_elevation_deg", kMinElevationLo, kMinElevationHi);
+  s.north_offset_deg = num(j, w, "north_offset_deg", -kNorthOffsetDeg, kNorthOffsetDeg);
+  s.sspa_manual = static_cast<int>(integer(j, w, "sspa_manual", 0, 2));
+  s.sspa_auto_option = static_cast<int>(integer(j, w, "sspa_auto_option", 0, 3));
+  s.source = static_cast<TleSource>(integer(j, w, "source", 0, 2));
+  s.el_threshold_deg = num(j, w, "el_threshold_deg", kThresholdLo, kThresholdHi);
+  const json& win = field(j, w, "window");
+  if (!win.is_null()) {
+    TrackWindow tw{time_of(win, w + ".window", "start"), time_of(win, w + ".window", "stop")};
+    if (tw.stop <= tw.start) bad(w + ".window", "stop must be after start");
+    s.window = tw;
+  }
+  s.auto_track = boolean(j, w, "auto_track");
+  s.tle_file = file_name(j, w, "tle_file");
+  s.satellite = text(j, w, "satellite", kNameMax);
+  s.tle_period_days = num(j, w, "tle_period_days", 0, kPeriodDays);
+  {
+    const std::string wh = w + ".http";
+    const json& h = field(j, w, "http");
+    s.http.url = text(h, wh, "url", kUrlMax);
+    s.http.period_days = num(h, wh, "period_days", 0, kPeriodDays);
+    s.http.on_error = static_cast<ErrorAction>(integer(h, wh, "on_error", 0, 1));
+  }
+  {
+    const std::string wf = w + ".ftp";
+    const json& f = field(j, w, "ftp");
+    s.ftp.host = text(f, wf, "host", kUrlMax);
+    s.ftp.user = text(f, wf, "user", kNameMax);
+    s.ftp.password = text(f, wf, "password", kNameMax);
+    s.ftp.port = static_cast<int>(integer(f, wf, "port", 1, 65535));
+    s.ftp.file = file_name(f, wf, "file");
+    s.ftp.satellite = text(f, wf, "satellite", kNameMax);
+    s.ftp.period_days = num(f, wf, "period_days", 0, kPeriodDays);
+    s.ftp.on_error = static_cast<ErrorAction>(integer(f, wf, "on_error", 0, 1));
+  }
+  s.gps_auto = boolean(j, w, "gps_auto");
+  s.az_sensor_ref = static_cast<int>(integer(j, w, "az_sensor_ref", -100000, 100000));
+  s.el_sensor_ref = static_cast<int>(integer(j, w, "el_sensor_ref", -100000, 100000));
+  s.reduction_x = num(j, w, "reduction_x", 1e-6, kReductionMax);
+  s.reduction_y = num(j, w, "reduction_y", 1e-6, kReductionMax);
+  return s;
+}
+
+}  // namespace tb::satrak

@@ -1,0 +1,382 @@
+// The servers on loopback, with the io_context on a thread that also ticks the simulated station:
+// Hamlib's own NET clients (rotctl -m 2, rigctl -m 2) drive trakbox, and clients that flood, never
+// read or stay silent do not stall the loop or the other clients. Every wait is bounded; every
+// child process is reaped.
+#include <doctest/doctest.h>
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <sys/socket.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cerrno>
+#include <cmath>
+
+#include "fixture.h"
+#include "netctl/server.h"
+
+using namespace tb;
+using namespace nettest;
+
+namespace {
+
+// A plain loopback TCP client with bounded waits.
+class RawClient {
+ public:
+  explicit RawClient(std::uint16_t port) {
+    fd_ = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in a{};
+    a.sin_family = AF_INET;
+    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    a.sin_port = htons(port);
+    if (::connect(fd_, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0) {
+      ::close(fd_);
+      fd_ = -1;
+    }
+    if (fd_ >= 0) ::fcntl(fd_, F_SETFL, ::fcntl(fd_, F_GETFL) | O_NONBLOCK);
+  }
+  ~RawClient() { close(); }
+  bool ok() const { return fd_ >= 0; }
+  void close() {
+    if (fd_ >= 0) ::close(fd_);
+    fd_ = -1;
+  }
+  void set_receive_buffer(int bytes) { ::setsockopt(fd_, SOL_SOCKET, SO_RCVBUF, &bytes, sizeof bytes); }
+  // Sends what the socket takes now; the count sent, -1 when the connection is gone.
+  long send_some(const std::string& s) {
+    const ssize_t n = ::send(fd_, s.data(), s.size(), MSG_NOSIGNAL);
+    if (n < 0) return (errno == EAGAIN || errno == EWOULDBLOCK) ? 0 : -1;
+    return n;
+  }
+  bool send_all(const std::string& s, std::chrono::milliseconds limit = 5s) {
+    const auto end = std::chrono::steady_clock::now() + limit;
+    std::size_t done = 0;
+    while (done < s.size()) {
+      const long n = send_some(s.substr(done));
+      if (n < 0) return false;
+      done += static_cast<std::size_t>(n);
+      if (done < s.size()) {
+        if (std::chrono::steady_clock::now() > end) return false;
+        pollfd p{fd_, POLLOUT, 0};
+        ::poll(&p, 1, 20);
+      }
+    }
+    return true;
+  }
+  void shutdown_write() { ::shutdown(fd_, SHUT_WR); }
+  // Reads until `pred(received)` holds, the peer closes, or the limit passes.
+  bool read_until(const std::function<bool(const std::string&)>& pred, std::chrono::milliseconds limit = 5s) {
+    const auto end = std::chrono::steady_clock::now() + limit;
+    while (!pred(in_)) {
+      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(end - std::chrono::steady_clock::now());
+      if (left.count() <= 0 || eof_) return pred(in_);
+      pollfd p{fd_, POLLIN, 0};
+      if (::poll(&p, 1, static_cast<int>(std::min<long long>(left.count(), 50))) <= 0) continue;
+      char buf[8192];
+      const ssize_t n = ::recv(fd_, buf, sizeof buf, 0);
+      if (n == 0 || (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK)) eof_ = true;
+      if (n > 0) in_.append(buf, static_cast<std::size_t>(n));
+    }
+    return true;
+  }
+  // One request, the reply up to the line that ends it.
+  std::string ask(const std::string& line, std::size_t reply_lines = 1) {
+    in_.clear();
+    if (!send_all(line + "\n")) return "<send failed>";
+    read_until([&](const std::string& s) { return static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n')) >= reply_lines; });
+    std::string r;
+    r.swap(in_);
+    return r;
+  }
+  bool closed_by_peer(std::chrono::milliseconds limit = 5s) {
+    read_until([](const std::string&) { return false; }, limit);
+    return eof_;
+  }
+  const std::string& received() const { return in_; }
+
+ private:
+  int fd_ = -1;
+  std::string in_;
+  bool eof_ = false;
+};
+
+std::string port_arg(std::uint16_t port) { return "127.0.0.1:" + std::to_string(port); }
+
+// Polls cond on the loop every 20 ms until it holds or the limit passes.
+template <class F>
+bool eventually(LoopThread& lt, F cond, std::chrono::milliseconds limit = 30s) {
+  const auto end = std::chrono::steady_clock::now() + limit;
+  while (std::chrono::steady_clock::now() < end) {
+    if (lt.on_loop(cond)) return true;
+    std::this_thread::sleep_for(20ms);
+  }
+  return lt.on_loop(cond);
+}
+
+}  // namespace
+
+TEST_CASE("server: Hamlib's rotctl -m 2 moves and reads the simulated antenna") {
+  const auto rotctl = which("rotctl");
+  if (!rotctl) {
+    MESSAGE("rotctl not installed (libhamlib-utils): skipped");
+    return;
+  }
+  SimStation st;
+  boost::asio::io_context io;
+  netctl::RotctldServer server(io, 0, *st.loop);
+  REQUIRE(server.port() != 0);
+  LoopThread lt(io, st);
+
+  const RunResult set = run({*rotctl, "-m", "2", "-r", port_arg(server.port()), "P", "120", "30"});
+  CAPTURE(set.err);
+  REQUIRE(!set.timed_out);
+  CHECK(set.status == 0);
+  CHECK(lt.on_loop([&] { return st.loop->rotator().status().target.has_value(); }));
+  // The station ticks on the loop until the antenna has arrived.
+  REQUIRE(eventually(lt, [&] { return st.loop->rotator().status().on_target; }));
+  const rotator::AzEl truth = lt.on_loop([&] { return st.truth(); });
+  CHECK(az_diff(truth.az, 120.0) < 1.1);
+  CHECK(std::abs(truth.el - 30.0) < 0.36);
+
+  const RunResult get = run({*rotctl, "-m", "2", "-r", port_arg(server.port()), "p"});
+  CAPTURE(get.err);
+  REQUIRE(!get.timed_out);
+  CHECK(get.status == 0);
+  const auto l = lines(get.out);
+  REQUIRE(l.size() >= 2);
+  CHECK(az_diff(std::stod(l[0]), truth.az) < 0.5);
+  CHECK(std::abs(std::stod(l[1]) - truth.el) < 0.3);
+
+  // A position the client's own limits (from \dump_state) refuse never reaches trakbox.
+  const RunResult bad = run({*rotctl, "-m", "2", "-r", port_arg(server.port()), "P", "120", "95"});
+  REQUIRE(!bad.timed_out);
+  CHECK(lt.on_loop([&] { return st.loop->rotator().status().target->el; }) == doctest::Approx(30.0));
+
+  // S and K through the client.
+  CHECK(run({*rotctl, "-m", "2", "-r", port_arg(server.port()), "S"}).status == 0);
+  CHECK(lt.on_loop([&] { return st.loop->rotator().status().mode; }) == rotator::ControlMode::idle);
+  lt.stop();
+  CHECK(lt.ticks() > 10);  // the station ticked all along
+}
+
+TEST_CASE("server: Hamlib's rigctl -m 2 tunes the downlink (F / f) and the uplink (I / i)") {
+  const auto rigctl = which("rigctl");
+  if (!rigctl) {
+    MESSAGE("rigctl not installed (libhamlib-utils): skipped");
+    return;
+  }
+  SimStation st;
+  boost::asio::io_context io;
+  netctl::RigctldServer server(io, 0, *st.loop);
+  LoopThread lt(io, st);
+  const std::string where = port_arg(server.port());
+
+  // Nothing tuned yet: the client reads the frequency when it opens and inside set_vfo/set_freq,
+  // and gives a command up when that read fails.
+  RunResult r = run({*rigctl, "-m", "2", "-r", where, "V", "VFOB", "F", "435120000", "v"});
+  CAPTURE(r.out);
+  CAPTURE(r.err);
+  REQUIRE(!r.timed_out);
+  CHECK(r.status == 0);
+  CHECK(lt.on_loop([&] { return st.radio->frequency(radio::Link::uplink); }) == 435120000);
+  CHECK(!lt.on_loop([&] { return st.radio->frequency(radio::Link::downlink); }));
+  CHECK(r.out == "VFOB\n");
+
+  r = run({*rigctl, "-m", "2", "-r", where, "V", "VFOA", "F", "145950000"});
+  CAPTURE(r.out);
+  CAPTURE(r.err);
+  REQUIRE(!r.timed_out);
+  CHECK(r.status == 0);
+  CHECK(lt.on_loop([&] { return st.radio->frequency(radio::Link::downlink); }) == 145950000);
+
+  r = run({*rigctl, "-m", "2", "-r", where, "f"});
+  REQUIRE(!r.timed_out);
+  CHECK(r.status == 0);
+  REQUIRE(!lines(r.out).empty());
+  CHECK(lines(r.out)[0] == "145950000");
+
+  r = run({*rigctl, "-m", "2", "-r", where, "I", "435100000"});
+  REQUIRE(!r.timed_out);
+  CHECK(r.status == 0);
+  CHECK(lt.on_loop([&] { return st.radio->frequency(radio::Link::uplink); }) == 435100000);
+  CHECK(lt.on_loop([&] { return st.radio->frequency(radio::Link::downlink); }) == 145950000);
+
+  r = run({*rigctl, "-m", "2", "-r", where, "i"});
+  REQUIRE(!r.timed_out);
+  CHECK(r.status == 0);
+  REQUIRE(!lines(r.out).empty());
+  CHECK(lines(r.out)[0] == "435100000");
+
+  // Several commands in one session: VFO B is the uplink; mode on each link.
+  r = run({*rigctl, "-m", "2", "-r", where, "V", "VFOB", "F", "435110000", "M", "LSB", "0", "V", "VFOA", "M", "USB",
+           "0", "m", "s"});
+  CAPTURE(r.out);
+  REQUIRE(!r.timed_out);
+  CHECK(r.status == 0);
+  CHECK(lt.on_loop([&] { return st.radio->frequency(radio::Link::uplink); }) == 435110000);
+  CHECK(lt.on_loop([&] { return st.radio->mode(radio::Link::uplink); }) == radio::Mode::lsb);
+  CHECK(lt.on_loop([&] { return st.radio->mode(radio::Link::downlink); }) == radio::Mode::usb);
+  CHECK(r.out.find("USB\n") != std::string::npos);
+
+  // Split as a logging program sets it up: the client reads the TX frequency with i (or by
+  // swapping VFOs), never with a plain f, because \dump_state says no VFO is targetable.
+  r = run({*rigctl, "-m", "2", "-r", where, "S", "1", "VFOB", "I", "435130000", "X", "USB", "0", "i", "x", "s", "f"});
+  CAPTURE(r.out);
+  REQUIRE(!r.timed_out);
+  CHECK(r.status == 0);
+  CHECK(r.out == "435130000\nUSB\n0\n1\nVFOB\n145950000\n");
+  CHECK(lt.on_loop([&] { return st.radio->mode(radio::Link::uplink); }) == radio::Mode::usb);
+  lt.stop();
+}
+
+TEST_CASE("server: a flooding, a non-reading and a silent client never stall the loop or the others") {
+  SimStation st;
+  boost::asio::io_context io;
+  netctl::RotctldServer rot(io, 0, *st.loop);
+  netctl::RigctldServer rig(io, 0, *st.loop);
+  LoopThread lt(io, st);
+
+  RawClient silent(rot.port());  // connects and never says anything
+  RawClient flood(rot.port());   // bytes without a newline, as fast as it can
+  RawClient deaf(rig.port());    // asks and asks, never reads
+  RawClient good(rot.port());
+  RawClient good_rig(rig.port());
+  REQUIRE(silent.ok());
+  REQUIRE(flood.ok());
+  REQUIRE(deaf.ok());
+  REQUIRE(good.ok());
+  REQUIRE(good_rig.ok());
+  deaf.set_receive_buffer(4096);
+  REQUIRE(eventually(lt, [&] { return rot.client_count() == 3 && rig.client_count() == 2; }, 5s));
+
+  std::atomic<bool> stop{false};
+  std::atomic<long> flooded{0}, deaf_sent{0};
+  std::atomic<bool> deaf_dropped{false};
+  std::thread flooder([&] {
+    const std::string junk(16 * 1024, 'x');
+    while (!stop) {
+      const long n = flood.send_some(junk);
+      if (n < 0) break;
+      flooded += n;
+      if (n == 0) std::this_thread::sleep_for(1ms);
+    }
+  });
+  std::thread asker([&] {
+    std::string many;
+    for (int i = 0; i < 1000; ++i) many += "\\dump_state\n";
+    while (!stop) {
+      const long n = deaf.send_some(many);
+      if (n < 0) {
+        deaf_dropped = true;
+        break;
+      }
+      deaf_sent += n;
+      if (n == 0) std::this_thread::sleep_for(1ms);
+    }
+  });
+
+  // Meanwhile the well-behaved clients get their answers and the station keeps ticking.
+  const std::uint64_t ticks0 = lt.ticks();
+  CHECK(good.ask("P 200 40") == "RPRT 0\n");
+  for (int i = 0; i < 20; ++i) {
+    const std::string r = good.ask("p", 2);
+    CAPTURE(r);
+    CHECK(lines(r).size() == 2);
+    const std::string hz = std::to_string(145200000 + 10 * i);
+    CHECK(good_rig.ask("F " + hz) == "RPRT 0\n");
+    CHECK(good_rig.ask("f") == hz + "\n");
+    std::this_thread::sleep_for(20ms);
+  }
+  REQUIRE(eventually(lt, [&] { return st.loop->rotator().status().on_target; }));
+  const rotator::AzEl truth = lt.on_loop([&] { return st.truth(); });
+  CHECK(az_diff(truth.az, 200.0) < 1.1);
+  CHECK(lt.ticks() > ticks0 + 20);
+
+  // The client that never reads is disconnected once its replies pile up; the flooder was told
+  // once that its line is too long and is still connected (it may yet send a newline).
+  const auto drop_deadline = std::chrono::steady_clock::now() + 20s;
+  while (!deaf_dropped && rig.client_count() == 2 && std::chrono::steady_clock::now() < drop_deadline)
+    std::this_thread::sleep_for(20ms);
+  CHECK(lt.on_loop([&] { return rig.client_count(); }) == 1);
+  stop = true;
+  flooder.join();
+  asker.join();
+  CHECK(flooded.load() > static_cast<long>(netctl::kMaxLineLength));
+  CHECK(deaf_sent.load() > 64 * 1024 / 30);
+  CHECK(flood.read_until([](const std::string& s) { return s.find('\n') != std::string::npos; }));
+  CHECK(flood.received() == "RPRT -8\n");
+  // The flooder ends its line: the next one is heard again.
+  CHECK(flood.send_all("\np\n"));
+  CHECK(flood.read_until([](const std::string& s) { return std::count(s.begin(), s.end(), '\n') >= 3; }));
+  CHECK(lines(flood.received()).size() == 3);
+  CHECK(lines(flood.received())[0] == "RPRT -8");
+  // The silent client is still there and answered when it speaks.
+  CHECK(silent.ask("_") == "trakbox rotator (simulated)\n");
+  lt.stop();
+}
+
+TEST_CASE("server: q closes after the reply; a half-closed client still gets its answers") {
+  SimStation st;
+  boost::asio::io_context io;
+  netctl::RotctldServer rot(io, 0, *st.loop);
+  LoopThread lt(io, st);
+  {
+    RawClient c(rot.port());
+    REQUIRE(c.ok());
+    CHECK(c.send_all("_\nq\np\n"));
+    CHECK(c.closed_by_peer());
+    CHECK(c.received() == "trakbox rotator (simulated)\nRPRT 0\n");  // nothing after q
+  }
+  {
+    RawClient c(rot.port());
+    REQUIRE(c.ok());
+    CHECK(c.send_all("P 10 10\nS\n_"));  // the last line has no newline
+    c.shutdown_write();
+    CHECK(c.closed_by_peer());
+    CHECK(c.received() == "RPRT 0\nRPRT 0\ntrakbox rotator (simulated)\n");
+  }
+  REQUIRE(eventually(lt, [&] { return rot.client_count() == 0; }, 5s));
+  lt.stop();
+}
+
+TEST_CASE("server: connections beyond max_clients are closed; close() drops everyone; port 0 and bind errors") {
+  SimStation st;
+  boost::asio::io_context io;
+  netctl::ServerOptions opt = netctl::RotctldServer::named("rotctld");
+  opt.max_clients = 2;
+  netctl::RotctldServer rot(io, 0, *st.loop, opt);
+  netctl::RigctldServer other(io, 0, *st.loop);
+  CHECK(rot.port() != other.port());
+  // The same port twice: the second cannot listen, and says where.
+  try {
+    netctl::RigctldServer clash(io, rot.port(), *st.loop);
+    FAIL("listening twice on one port");
+  } catch (const std::system_error& e) {
+    CHECK(std::string(e.what()).find("127.0.0.1:" + std::to_string(rot.port())) != std::string::npos);
+  }
+  CHECK_THROWS_AS(netctl::RotctldServer(io, 0, *st.loop, [] {
+                    netctl::ServerOptions o;
+                    o.address = "not-an-address";
+                    return o;
+                  }()),
+                  std::system_error);
+
+  LoopThread lt(io, st);
+  RawClient a(rot.port()), b(rot.port());
+  REQUIRE(a.ok());
+  REQUIRE(b.ok());
+  CHECK(a.ask("_") == "trakbox rotator (simulated)\n");
+  CHECK(b.ask("_") == "trakbox rotator (simulated)\n");
+  RawClient c(rot.port());
+  CHECK(c.closed_by_peer());
+  CHECK(a.ask("_") == "trakbox rotator (simulated)\n");
+  lt.on_loop([&] {
+    rot.close();
+    return 0;
+  });
+  CHECK(a.closed_by_peer());
+  CHECK(b.closed_by_peer());
+  CHECK(lt.on_loop([&] { return rot.client_count(); }) == 0u);
+  lt.stop();
+}
