@@ -2,6 +2,7 @@
 
 #include <array>
 #include <boost/asio/ip/tcp.hpp>
+#include <boost/asio/steady_timer.hpp>
 #include <boost/asio/write.hpp>
 #include <deque>
 #include <set>
@@ -17,10 +18,11 @@ class Session;
 }
 
 struct Server::State {
-  State(asio::io_context& io, Unit& u, ServerOptions o) : unit(u), opt(std::move(o)), acceptor(io) {}
+  State(asio::io_context& io, Unit& u, ServerOptions o) : unit(u), opt(std::move(o)), acceptor(io), retry(io) {}
   Unit& unit;
   ServerOptions opt;
   tcp::acceptor acceptor;
+  asio::steady_timer retry;  // after a failed accept (out of descriptors): try again a little later
   std::set<std::shared_ptr<Session>> sessions;
   Stats stats;
   bool closed = false;
@@ -133,7 +135,11 @@ void accept(const std::shared_ptr<Server::State>& state) {
     if (ec) {
       if (ec == asio::error::operation_aborted) return;
       spdlog::warn("satrak: accept: {}", ec.message());
-      accept(s);
+      s->retry.expires_after(std::chrono::milliseconds(100));
+      s->retry.async_wait([weak](const boost::system::error_code& e) {
+        auto st = weak.lock();
+        if (!e && st && !st->closed) accept(st);
+      });
       return;
     }
     if (s->sessions.size() >= s->opt.max_clients) {
@@ -174,6 +180,7 @@ void Server::close() {
   state_->closed = true;
   boost::system::error_code ec;
   state_->acceptor.close(ec);
+  state_->retry.cancel();
   auto sessions = state_->sessions;  // close() erases from the set
   for (const auto& s : sessions) s->close();
   state_->sessions.clear();

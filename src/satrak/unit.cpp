@@ -637,6 +637,10 @@ void Unit::tick() {
   if (tracking_) track(now);
   check_file(now);
   schedule_download(now);
+  if (const bool sspa = sspa_on(); sspa_last_ != sspa) {
+    if (sspa_last_) spdlog::info("satrak: SSPA {}", sspa ? "on" : "off");
+    sspa_last_ = sspa;
+  }
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -240,6 +240,7 @@ class Unit {
   std::shared_ptr<int> alive_ = std::make_shared<int>(0);
 
   int image_status_ = 0;  // LOAD_IMAGE?: 0 none, 1 loaded, 2 failed
+  std::optional<bool> sspa_last_;  // for logging changes
 };
 
 // "0.1.0" -> "VERSION?,TRAKBOX SATRAK CU V0.1.0,..." etc. are built by the unit; exposed for the
