@@ -7,6 +7,9 @@
 #include "app/cli_orbit.h"
 #include "app/options.h"
 #include "app/tracker_app.h"
+#include "satrak/client.h"
+
+#include <iostream>
 
 namespace tb::app {
 namespace {
@@ -20,6 +23,8 @@ std::string usage() {
          "\n"
          "commands:\n" +
          orbit_commands_summary() +
+         "  satrak HOST[:PORT] COMMAND...   send Satrak ACU commands (STATUS?, GOTO=,10,20, ...) and print\n"
+         "                      the replies\n"
          "  host [options]      host mode (menu 7's commands: AZ EL, MU, MD, FU, FD, S, ?A, ?, Q) on\n"
          "                      stdin/stdout for scripts; takes the options above\n" +
          "\n"
@@ -42,7 +47,8 @@ int main(int argc, char** argv) {
     if (command == "schedule") return run_schedule(std::move(rest));
     if (command == "passes") return run_passes(std::move(rest));
     if (command == "host") return run_tracker(rest, FrontEnd::host);
-    std::fprintf(stderr, "trakbox: %s: unknown command; expected propagate, schedule, passes or host (see trakbox --help)\n",
+    if (command == "satrak") return satrak::run_cli(rest, std::cout, std::cerr);
+    std::fprintf(stderr, "trakbox: %s: unknown command; expected propagate, schedule, passes, host or satrak (see trakbox --help)\n",
                  command.c_str());
     return kExitUsage;
   }

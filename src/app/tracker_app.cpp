@@ -21,8 +21,12 @@
 #include "menus/standalone.h"
 #include "menus/term/curses_terminal.h"
 #include "menus/term/line_terminal.h"
+#include "netctl/server.h"
 #include "radio/factory.h"
 #include "rotator/factory.h"
+#include "satrak/client.h"
+#include "satrak/server.h"
+#include "satrak/unit.h"
 #include "store/state_file.h"
 #include "tracker/station_loop.h"
 
@@ -45,6 +49,10 @@ std::vector<OptionSpec> tracker_option_specs() {
       {"radio", "SPEC", "simulated (default), icom:DEV, kenwood:DEV, yaesu:DEV, cat:DEV (rig of menu 6-7), "
                         "hamlib:MODEL:DEV[:BAUD], rigctld[:HOST[:PORT]]"},
       {"tick-ms", "MS", "tracking interval in milliseconds, 100 to 1000 (default 1000)"},
+      {"satrak-port", "N", "Satrak ACU protocol on TCP port N (default 4001; 0 turns it off)"},
+      {"satrak-bind", "ADDR", "address the Satrak server listens on (default 127.0.0.1)"},
+      {"rotctld-port", "N", "answer the rotctld protocol on TCP port N (4533 by convention; off by default)"},
+      {"rigctld-port", "N", "answer the rigctld protocol on TCP port N (4532 by convention; off by default)"},
   };
 }
 
@@ -135,7 +143,10 @@ class App {
   std::optional<std::string> save() {
     model_.clock_offset = clock_.offset();
     std::string err;
-    if (!file_.save(store::to_json(model_), err)) {
+    nlohmann::json doc = store::to_json(model_);
+    if (satrak_) doc["satrak"] = satrak::to_json(satrak_->settings());
+    else if (!satrak_saved_.is_null()) doc["satrak"] = satrak_saved_;
+    if (!file_.save(doc, err)) {
       log_->error("state not saved: {}", err);
       return err;
     }
@@ -143,6 +154,9 @@ class App {
   }
 
   tracker::Tracker& tracker() { return tracker_; }
+  boost::asio::io_context& io() { return io_; }
+  // Settings of the Satrak unit, persisted beside the model (data["satrak"]).
+  void set_satrak(satrak::Unit* unit) { satrak_ = unit; }
 
  private:
   void schedule_tick() {
@@ -167,6 +181,10 @@ class App {
   tracker::Tracker tracker_;
   std::unique_ptr<tracker::StationLoop> station_;
   term::Terminal* terminal_ = nullptr;
+  satrak::Unit* satrak_ = nullptr;
+
+ public:
+  nlohmann::json satrak_saved_;  // kept as loaded when the Satrak server is off
 };
 
 int usage_error(const std::string& text) {
@@ -200,14 +218,26 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   const auto standalone = r.integer("standalone", false, "a selector position 1 to 15", Range{1, 15});
   const auto rate = r.number("clock-rate", false, "a rate > 0 (1 is real time)", Range{0.0, 10000.0, true});
   const auto tick_ms = r.integer("tick-ms", false, "milliseconds, 100 to 1000", Range{100, 1000});
+  const auto satrak_port = r.integer("satrak-port", false, "a TCP port 0 to 65535 (0: off)", Range{0, 65535});
+  const auto rotctld_port = r.integer("rotctld-port", false, "a TCP port 1 to 65535", Range{1, 65535});
+  const auto rigctld_port = r.integer("rigctld-port", false, "a TCP port 1 to 65535", Range{1, 65535});
   std::optional<orbit::UtcTime> clock_start;
   if (const auto c = o.value("clock")) {
     clock_start = orbit::parse_iso8601(*c);
     if (!clock_start) r.fail("--clock", "expected an ISO 8601 UTC time like 2026-05-21T12:00:00Z; found '" + *c + "'");
   }
   // Device specs are checked before anything starts.
-  const auto rot_spec = rotator::parse_rotator_spec(o.value("rotator").value_or("simulated"));
-  if (!rot_spec.spec) r.fail("--rotator", rot_spec.error);
+  const std::string rot_text = o.value("rotator").value_or("simulated");
+  std::optional<satrak::SatrakRotatorOptions> satrak_rotator;
+  rotator::SpecResult rot_spec;
+  if (rot_text.rfind("satrak:", 0) == 0) {
+    std::string err;
+    satrak_rotator = satrak::parse_rotator_spec(rot_text, err);
+    if (!satrak_rotator) r.fail("--rotator", err);
+  } else {
+    rot_spec = rotator::parse_rotator_spec(rot_text);
+    if (!rot_spec.spec) r.fail("--rotator", rot_spec.error);
+  }
   const auto radio_spec = radio::parse_radio_spec(o.value("radio").value_or("simulated"));
   if (!radio_spec.spec) r.fail("--radio", radio_spec.error);
   if (o.has("tty") && o.has("line")) r.fail("--line", "not with --tty (a serial port is always plain lines)");
@@ -224,6 +254,7 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   auto log = std::make_shared<spdlog::logger>(
       "trakbox", std::make_shared<spdlog::sinks::basic_file_sink_mt>((state_dir / "trakbox.log").string()));
   log->flush_on(spdlog::level::info);
+  spdlog::set_default_logger(log);  // drivers and servers log here, never on the terminal the UI owns
 
   // Battery-backed RAM test.
   store::StateFile file(state_dir);
@@ -233,9 +264,15 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   bool ram_lost = false;
   std::string kept;
   const store::LoadOutcome loaded = file.load();
+  satrak::Settings satrak_settings;
+  nlohmann::json satrak_saved;
   if (loaded.kind == store::LoadOutcome::Kind::loaded) {
     try {
       model = store::model_from_json(loaded.data);
+      if (loaded.data.contains("satrak")) {
+        satrak_settings = satrak::settings_from_json(loaded.data["satrak"]);
+        satrak_saved = loaded.data["satrak"];
+      }
     } catch (const std::exception& e) {
       ram_lost = true;
       kept = file.keep_aside().string();
@@ -248,18 +285,62 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
     log->error("{}", loaded.reason);
     startup_notes.push_back("(" + loaded.reason + ")");
   }
-  if (loaded.kind != store::LoadOutcome::Kind::loaded || ram_lost) model = defaults_with_data(data_dir, startup_notes);
+  if (loaded.kind != store::LoadOutcome::Kind::loaded || ram_lost) {
+    model = defaults_with_data(data_dir, startup_notes);
+    satrak_settings = satrak::Settings{};
+    satrak_saved = nlohmann::json();
+  }
 
   App app(std::move(model), file, log);
   if (clock_start) app.clock().start_at(*clock_start, rate.value_or(1.0));
   else if (rate) app.clock().start_at(station::system_now(), *rate);
   radio::MakeRadio made = radio::make_radio(*radio_spec.spec, app.model().radio);
   if (!made.driver) return usage_error("--radio: " + made.error);
-  app.build_station(rotator::make_rotator(*rot_spec.spec, app.clock(),
-                                          rotator::SimulatedRotatorParams::matching(app.model().rotator)),
-                    std::move(made.driver));
-  log->info("rotator: {}; radio: {}", rotator::to_string(*rot_spec.spec), app.station().radio().describe());
+  std::unique_ptr<rotator::RotatorDriver> rot_driver =
+      satrak_rotator ? std::make_unique<satrak::SatrakRotator>(*satrak_rotator)
+                     : rotator::make_rotator(*rot_spec.spec, app.clock(),
+                                             rotator::SimulatedRotatorParams::matching(app.model().rotator));
+  const std::string rot_name = rot_driver->description();
+  app.build_station(std::move(rot_driver), std::move(made.driver));
+  log->info("rotator: {}; radio: {}", rot_name, app.station().radio().describe());
   app.station().tick();  // the antenna's position is known before the first prompt
+  app.satrak_saved_ = satrak_saved;
+
+  // Remote control on the same event loop: the Satrak ACU protocol, rotctld/rigctld compatibles.
+  std::unique_ptr<satrak::Unit> satrak_unit;
+  std::unique_ptr<satrak::Server> satrak_server;
+  std::unique_ptr<netctl::RotctldServer> rotctld;
+  std::unique_ptr<netctl::RigctldServer> rigctld;
+  const int sat_port = static_cast<int>(satrak_port.value_or(satrak::kDefaultPort));
+  if (sat_port != 0) {
+    satrak::UnitOptions uo;
+    uo.tle_dir = state_dir / "tle";
+    uo.image_dir = state_dir / "images";
+    uo.version = kVersion;
+    satrak_unit = std::make_unique<satrak::Unit>(app.io(), app.station(), app.model(), app.clock(), satrak_settings, uo,
+                                                 satrak::UnitHooks{[&app] { app.save(); }});
+    satrak::ServerOptions so;
+    so.address = o.value("satrak-bind").value_or("127.0.0.1");
+    so.port = static_cast<unsigned short>(sat_port);
+    try {
+      satrak_server = std::make_unique<satrak::Server>(app.io(), *satrak_unit, so);
+      satrak_unit->start();
+      app.set_satrak(satrak_unit.get());
+      log->info("Satrak server on {}:{}", so.address, satrak_server->port());
+    } catch (const std::exception& e) {
+      const std::string msg = "Satrak server not started on " + so.address + ":" + std::to_string(sat_port) + ": " + e.what();
+      log->error("{}", msg);
+      if (satrak_port) return usage_error("--satrak-port: " + msg);  // asked for explicitly: refuse
+      startup_notes.push_back(msg);                                   // the default port is busy: say so, go on
+      satrak_unit.reset();
+    }
+  }
+  try {
+    if (rotctld_port) rotctld = std::make_unique<netctl::RotctldServer>(app.io(), static_cast<std::uint16_t>(*rotctld_port), app.station());
+    if (rigctld_port) rigctld = std::make_unique<netctl::RigctldServer>(app.io(), static_cast<std::uint16_t>(*rigctld_port), app.station());
+  } catch (const std::exception& e) {
+    return usage_error(std::string(rotctld_port && !rotctld ? "--rotctld-port: " : "--rigctld-port: ") + e.what());
+  }
   app.start(std::chrono::milliseconds(tick_ms.value_or(1000)));
   if (ram_lost || loaded.kind == store::LoadOutcome::Kind::fresh) app.save();
   log->info("trakbox {} started, state {}", kVersion, file.path().string());
@@ -303,10 +384,15 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   }
   app.set_terminal(nullptr);
   terminal.reset();
+  rotctld.reset();
+  rigctld.reset();
+  satrak_server.reset();
   if (auto err = app.save()) {
     std::fprintf(stderr, "trakbox: state not saved: %s\n", err->c_str());
     code = kExitFailure;
   }
+  app.set_satrak(nullptr);
+  satrak_unit.reset();
   log->info("trakbox stopped");
   return code;
 }

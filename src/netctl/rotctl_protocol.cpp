@@ -66,8 +66,8 @@ Outcome RotctlProtocol::execute(int id, const std::vector<std::string>& args) {
   }
 }
 
-Error RotctlProtocol::cannot_move() const {
-  if (!station_.rotor_control()) return Error::rejected;
+Error RotctlProtocol::cannot_move() {
+  if (!station_.rotor_control()) station_.set_rotor_control(true);
   if (!station_.rotator().status().link.ok()) return Error::io;
   return Error::none;
 }

@@ -52,7 +52,9 @@ class RotctlProtocol final : public LineProtocol {
   Outcome dump_state();
   Outcome dump_caps();
   // Why the antenna cannot be moved now, if it cannot.
-  Error cannot_move() const;
+  // A command that moves the antenna takes rotor control (the E key), as it does through host mode
+  // and Satrak; then io when the rotator link is in fault.
+  Error cannot_move();
 
   tracker::StationLoop& station_;
 };

@@ -375,7 +375,9 @@ std::string Unit::dispatch(const Command& c) {
 // ---------------------------------------------------------------------------------------------
 // Antenna
 
-bool Unit::motion_allowed() const { return model_.rotor_control; }
+void Unit::take_control() {
+  if (!model_.rotor_control) station_.set_rotor_control(true);
+}
 
 void Unit::take_antenna() {
   if (station_.tracker().mode() != tracker::Mode::off) station_.tracker().stop();
@@ -870,7 +872,7 @@ Unit::Reply Unit::cmd_move(const Command& c) {
   const double x = r.number(0, -kMaxRateDegS, kMaxRateDegS);
   const double y = r.number(1, -kMaxRateDegS, kMaxRateDegS);
   if (!r.ok()) return reply_error(c.head(), r.error());
-  if (!motion_allowed()) return reply_error(c.head(), Error::not_allowed);
+  take_control();
   const auto& st = station_.rotator().status();
   if (x == 0.0 && y == 0.0) {
     // Both rates zero: the button released.
@@ -901,7 +903,7 @@ Unit::Reply Unit::cmd_step(const Command& c) {
   const double x = r.number(0, -kMaxStepDeg, kMaxStepDeg);
   const double y = r.number(1, -kMaxStepDeg, kMaxStepDeg);
   if (!r.ok()) return reply_error(c.head(), r.error());
-  if (!motion_allowed()) return reply_error(c.head(), Error::not_allowed);
+  take_control();
   const auto& st = station_.rotator().status();
   if (!st.has_position && !st.target) return reply_error(c.head(), Error::not_allowed);
   RotatorPosition p = current_position();
@@ -922,7 +924,7 @@ Unit::Reply Unit::cmd_goto(const Command& c) {
   const double az = az_none ? 0.0 : r.number(0, 0.0, 360.0);
   const double el = el_none ? 0.0 : r.number(1, -90.0, 180.0);
   if (!r.ok()) return reply_error(c.head(), r.error());
-  if (!motion_allowed()) return reply_error(c.head(), Error::not_allowed);
+  take_control();
   const auto& st = station_.rotator().status();
   if ((az_none || el_none) && !st.has_position && !st.target) return reply_error(c.head(), Error::not_allowed);
   const RotatorPosition base = current_position();
@@ -1151,7 +1153,7 @@ Unit::Reply Unit::cmd_track(const Command& c) {
     stop_tracking(false);
     return reply_ok(c.head());
   }
-  if (!motion_allowed()) return reply_error(c.head(), Error::not_allowed);
+  take_control();
   if (!sgp4_) return reply_error(c.head(), active_satellite().empty() ? Error::not_allowed : Error::satellite_not_found);
   spdlog::info("satrak: tracking {}", elements_->label());
   start_tracking();

@@ -143,7 +143,9 @@ class Unit {
   Reply cmd_reduction(const Command& c);
 
   // Antenna.
-  bool motion_allowed() const;
+  // A command that moves the antenna takes control (rotor control on), as the operator pressing
+  // E would: a remote client has no other way to do it.
+  void take_control();
   void take_antenna();                      // stops the station's Tracker when it runs
   void command(rotator::RotatorPosition p);  // set a target and remember it as Satrak's
   void release();                           // Satrak no longer drives the antenna

@@ -117,6 +117,10 @@ class Trakbox:
         self.state_dir = state_dir or tempfile.mkdtemp(prefix="trakbox-it-")
         env = dict(os.environ)
         env.pop("TERM", None) if stdin is not None else None
+        # The Satrak server is off unless a test asks for it: tests run in parallel and would race
+        # for its default port.
+        if not any(a.startswith("--satrak-port") for a in args):
+            args = ["--satrak-port", "0"] + list(args)
         self.proc = subprocess.Popen([BIN, "--state", self.state_dir] + list(args), stdin=stdin, stdout=stdout,
                                      stderr=subprocess.PIPE, env=env)
 
@@ -140,6 +144,13 @@ class Trakbox:
             self.proc.wait()
         if self.own_state:
             shutil.rmtree(self.state_dir, ignore_errors=True)
+
+
+def free_port():
+    import socket
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
 
 
 def run_test(main):

@@ -16,7 +16,7 @@ from _tbharness import BIN, CLOCK, Terminal, check, run_test  # noqa: E402
 
 def main():
     state = tempfile.mkdtemp(prefix="trakbox-host-")
-    p = subprocess.Popen([BIN, "host", "--state", state, "--clock", CLOCK, "--clock-rate", "10"],
+    p = subprocess.Popen([BIN, "host", "--state", state, "--clock", CLOCK, "--clock-rate", "10", "--satrak-port", "0"],
                          stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
     try:
         t = Terminal(p.stdout.fileno())

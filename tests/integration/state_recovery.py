@@ -17,7 +17,7 @@ LOST = "Data in RAM was lost !! Set default parameter !"
 
 
 def run(state, keys, extra=()):
-    p = subprocess.run([BIN, "--state", state, "--clock", CLOCK, *extra], input=keys.encode(),
+    p = subprocess.run([BIN, "--state", state, "--clock", CLOCK, "--satrak-port", "0", *extra], input=keys.encode(),
                        capture_output=True, timeout=60)
     return p.returncode, p.stdout.decode("latin-1"), p.stderr.decode("latin-1")
 
@@ -83,7 +83,8 @@ def main():
         for args, word in ((["--baud", "300"], "--baud"), (["--standalone", "16"], "--standalone"),
                            (["--clock", "yesterday"], "--clock"), (["--rotator", "gs232"], "--rotator"),
                            (["--bogus"], "--bogus")):
-            p = subprocess.run([BIN, "--state", state, *args], input=b"", capture_output=True, timeout=30)
+            p = subprocess.run([BIN, "--state", state, "--satrak-port", "0", *args], input=b"", capture_output=True,
+                               timeout=30)
             err = p.stderr.decode()
             check(p.returncode == 2, f"{args}: exit status {p.returncode}")
             check(word in err and err.count("\n") == 1, f"{args}: one line naming {word}: {err!r}")

@@ -43,7 +43,7 @@ def keys(*k):
 def main():
     state = tempfile.mkdtemp(prefix="trakbox-ui-")
     tmux("kill-session", "-t", SESSION)
-    cmd = f"{BIN} --state {state} --clock {CLOCK}; echo EXITED $?; sleep 60"
+    cmd = f"{BIN} --state {state} --clock {CLOCK} --satrak-port 0; echo EXITED $?; sleep 60"
     r = tmux("new-session", "-d", "-s", SESSION, "-x", "100", "-y", "34", "env", "TERM=xterm", "sh", "-c", cmd)
     check(r.returncode == 0, f"tmux: {r.stderr}")
     try:

@@ -303,8 +303,9 @@ TEST_CASE("Serial driver: the cable goes away, the driver reports it and reopens
     CHECK(radio->status().connected);
   }   // socat ends: both ptys disappear
   radio->set_downlink_frequency(435'000'010);
-  REQUIRE(eventually([&] { return radio->status().fault; }));
-  CHECK_FALSE(radio->status().connected);
-  CHECK(radio->status().pending >= 1);   // kept, to be sent when the port is back
+  // Under load this write may still reach the dying pty; the fault follows either way.
+  REQUIRE(eventually([&] { const auto s = radio->status(); return s.fault && !s.connected; }));
+  radio->set_downlink_frequency(435'000'020);  // the port is gone now for certain
+  CHECK(eventually([&] { return radio->status().pending >= 1; }));  // kept, to be sent when it is back
   radio.reset();   // shutting down with the port gone is bounded
 }

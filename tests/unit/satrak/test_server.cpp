@@ -327,14 +327,10 @@ TEST_CASE("SatrakRotator: another Satrak ACU as trakbox's rotator, with lost con
     REQUIRE(wait([&] { return rot.health().ok() && rot.read().has_value(); }, 10s));
     CHECK(rot.health().connects == 2);
 
-    // A GOTO the peer refuses is reported.
-    peer.on_loop([&] {
-      peer.acu.loop->set_rotor_control(false);
-      return 0;
-    });
-    rot.set_position({30.0, 10.0});
+    // A GOTO the peer refuses (an elevation beyond 180) is reported.
+    rot.set_position({30.0, 200.0});
     REQUIRE(wait([&] { return rot.health().state == rotator::LinkState::fault; }, 5s));
-    CHECK(rot.health().message.find("ERR,8") != std::string::npos);
+    CHECK(rot.health().message.find("GOTO=,ERR,") != std::string::npos);
   }
   SUBCASE("behind the rotator controller, as --rotator satrak:HOST:PORT") {
     station::ManualClock clock(kT0);

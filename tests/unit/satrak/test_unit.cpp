@@ -690,14 +690,12 @@ TEST_CASE("Bad requests are answered with their error code and change nothing") 
     CHECK(acu.unit->handle(small.feed("$GOTO=,10,10," + std::string(100, '1')).at(0)) == "GOTO=,ERR,3");
     CHECK(acu.rs().target == target);
   }
-  SUBCASE("rotor control off (the E key): motion is not allowed") {
+  SUBCASE("rotor control off (the E key): a command that moves the antenna takes control") {
     acu.loop->set_rotor_control(false);
-    CHECK(acu.cmd("GOTO=,10,10") == "GOTO=,ERR,8");
-    CHECK(acu.cmd("MOVE=,1,0") == "MOVE=,ERR,8");
-    CHECK(acu.cmd("STEP=,1,0") == "STEP=,ERR,8");
-    CHECK(acu.cmd("TRACK=,1") == "TRACK=,ERR,8");
-    CHECK(acu.cmd("STOP=") == "STOP=,OK");  // stopping is always allowed
-    CHECK(snapshot() == before);
+    CHECK(acu.cmd("STOP=") == "STOP=,OK");  // stopping never takes control
+    CHECK_FALSE(acu.model.rotor_control);
+    CHECK(acu.cmd("GOTO=,10,10") == "GOTO=,OK");
+    CHECK(acu.model.rotor_control);
   }
   SUBCASE("TRACK=,1 without a satellite") {
     Acu fresh(kT0);
