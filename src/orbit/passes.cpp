@@ -923,6 +923,7 @@ std::optional<Pass> Searcher::next_any() {
     return std::nullopt;
   }
   // Up: step to LOS (or the window end, or the end of the propagation).
+  last_step_ = 30.0;  // the spans of the local bounds start afresh at each crossing
   std::vector<Sample> samples;
   samples.reserve(24);
   samples.push_back(aos_s);
@@ -1076,6 +1077,7 @@ std::optional<Pass> Searcher::next_any() {
     guess = aos_t + u * D;
   }
   finish_pass(samples, pass, guess);
+  last_step_ = 30.0;
   pass.aos = at(aos_t);
   pass.los = at(los_t);
   pass.aos_az_deg = look(aos_near.ecef).az_deg;
