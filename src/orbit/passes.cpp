@@ -569,9 +569,8 @@ double Searcher::step_below(const Sample& s) {
       return std::min(loc, span);
     };
     best = std::max(best, fitted_span(local_step));
-    // Along track again: over a span fitted to the result, and with what the rest now covers.
-    const double span = x > 0.0 ? std::max(1.5 * x, 60.0) : rev;
-    best = std::max(best, along_track(s, g, span, true, best));
+    // Along track again, over a span fitted to the result (tighter).
+    if (x > 0.0) best = std::max(best, along_track(s, g, std::max(1.5 * x, 60.0), true, best));
   }
   return kStepSafety * best;
 }
@@ -594,15 +593,7 @@ double Searcher::step_above(const Sample& s) {
       const double s_lo = std::max({L.r_lo - rs_, s.s - L.V * span, 1.0});
       return std::min(envelope_root(s.F, d, curvature(s, L, span, s_lo)), span);
     };
-    const double env = fitted_span(local_step);
-    if (env > best) {
-      best = env;
-      if (x == 0.0) {  // the along-track bound may start to hold within what the envelope covers
-        x = along_track(s, g, 0.25 * rev, false, best);
-        if (x > 0.0) x = std::max(x, along_track(s, g, std::max(1.2 * x, 30.0), false, best));
-        best = std::max(best, x);
-      }
-    }
+    best = std::max(best, fitted_span(local_step));
   }
   return kStepSafety * best;
 }
