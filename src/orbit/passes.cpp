@@ -495,10 +495,11 @@ double Searcher::along_track(const Sample& s, const Angles& g, double span, bool
   const double beta_rate = kOmega * cos_phi_ + omega_w;
   const double db = beta_rate * span;
   if (beta + db >= 1.4) return 0.0;
-  double sdb, cdb;
-  sin_cos(db, sdb, cdb);
-  const double cos_beta_hi = g.cos_b * cdb - g.sin_b * sdb;                  // cos(beta + db)
-  const double cos_beta_lo = beta > db ? g.cos_b * cdb + g.sin_b * sdb : 1.0;  // cos(max(0, beta - db))
+  // cos(beta + db) >= cos(beta) (1 - db^2/2) - sin(beta) db, cos(beta - db) <= cos(beta) + sin(beta) db:
+  // bounds on the smallest and largest cos(beta) over the span, each on the safe side where used.
+  const double cos_beta_hi = g.cos_b * (1.0 - 0.5 * db * db) - g.sin_b * db;
+  const double cos_beta_lo = std::min(1.0, g.cos_b + g.sin_b * db);
+  if (cos_beta_hi <= 0.1) return 0.0;
   // The foot's own speed along the plane: the station moves at omega z x u, and
   // (z x u).(W x p) = (W_z - u_z sin(beta)) / cos(beta), so foot = omega (W_z - u_z sin(beta)) / cos^2(beta).
   // W_z changes only as the plane turns, sin(beta) at most at beta_rate.
@@ -534,6 +535,7 @@ double Searcher::along_track(const Sample& s, const Angles& g, double span, bool
     if (cos_lam <= 0.0 || cos_lam >= 1.0) return 0.0;
     const double c = cos_lam / cos_beta_hi;
     if (c >= 1.0) return 0.0;
+    if (du > 0.0 && s.du_x < c * std::hypot(s.du_x, s.du_y)) return 0.0;  // du > u: nothing certain
     const double u = std::acos(c);
     if (mode == kBack) {
       if (std::abs(du) <= u) x = (du + u) / w_hi;
@@ -567,9 +569,8 @@ double Searcher::step_below(const Sample& s) {
       return std::min(loc, span);
     };
     best = std::max(best, fitted_span(local_step));
-    // Along track again: over a span fitted to the result, and with what the rest now covers.
-    const double span = x > 0.0 ? std::max(1.5 * x, 60.0) : rev;
-    best = std::max(best, along_track(s, g, span, true, best));
+    // Along track again, over a span fitted to the result (tighter).
+    if (x > 0.0) best = std::max(best, along_track(s, g, std::max(1.5 * x, 60.0), true, best));
   }
   return kStepSafety * best;
 }
@@ -592,32 +593,24 @@ double Searcher::step_above(const Sample& s) {
       const double s_lo = std::max({L.r_lo - rs_, s.s - L.V * span, 1.0});
       return std::min(envelope_root(s.F, d, curvature(s, L, span, s_lo)), span);
     };
-    const double env = fitted_span(local_step);
-    if (env > best) {
-      best = env;
-      if (x == 0.0) {  // the along-track bound may start to hold within what the envelope covers
-        x = along_track(s, g, 0.25 * rev, false, best);
-        if (x > 0.0) x = std::max(x, along_track(s, g, std::max(1.2 * x, 30.0), false, best));
-        best = std::max(best, x);
-      }
-    }
+    best = std::max(best, fitted_span(local_step));
   }
   return kStepSafety * best;
 }
 
 double Searcher::reach(const Sample& s, double span, int dir) const {
+  // The envelope first; the angles only when it falls short.
   const Local L = local(s, span);
-  const Angles g(s, s.F < 0.0);
-  const double at = dir < 0 ? along_track(s, g, span, s.F < 0.0, 0.0, kBack) : 0.0;
-  if (s.F < 0.0) {
-    const double d = dir * s.Fdot + fdot_err(s);
-    const double s_lo = std::max(range_floor_below(L.r_lo), s.s - L.V * span);
-    const double xa = (g.theta - lambda(L.r_hi, true) - kAngleMargin) * L.r_lo / L.V;
-    return std::min(span, std::max({xa, at, envelope_root(s.F, d, curvature(s, L, span, s_lo))}));
-  }
-  const double d = dir * s.Fdot - fdot_err(s);
-  const double s_lo = std::max({L.r_lo - rs_, s.s - L.V * span, 1.0});
-  return std::min(span, std::max(at, envelope_root(s.F, d, curvature(s, L, span, s_lo))));
+  const bool below = s.F < 0.0;
+  const double d = dir * s.Fdot + (below ? fdot_err(s) : -fdot_err(s));
+  const double s_lo = below ? std::max(range_floor_below(L.r_lo), s.s - L.V * span)
+                            : std::max({L.r_lo - rs_, s.s - L.V * span, 1.0});
+  double x = envelope_root(s.F, d, curvature(s, L, span, s_lo));
+  if (x >= span) return span;
+  const Angles g(s, below);
+  if (below) x = std::max(x, (g.theta - lambda(L.r_hi, true) - kAngleMargin) * L.r_lo / L.V);
+  if (x < span && dir < 0) x = std::max(x, along_track(s, g, span, below, 0.0, kBack));
+  return std::min(span, x);
 }
 
 bool Searcher::monotone(const Sample& a, const Sample& b) const {
@@ -921,6 +914,7 @@ std::optional<Pass> Searcher::next_any() {
     return std::nullopt;
   }
   // Up: step to LOS (or the window end, or the end of the propagation).
+  last_step_ = 30.0;  // the spans of the local bounds start afresh at each crossing
   std::vector<Sample> samples;
   samples.reserve(24);
   samples.push_back(aos_s);
@@ -964,7 +958,7 @@ std::optional<Pass> Searcher::next_any() {
       const double xp = predict_crossing(up);
       if (xp > safe && xp < 3.0 * safe + 30.0) {
         target = up.t + xp + 0.125 * tol_ + 0.002 * xp;
-      } else if (safe < 300.0) {
+      } else if (safe < 300.0 && up.du_y < 0.0) {  // still approaching the station's foot
         const double rev = kTwoPi * r_max_ * r_max_ / h_min_;
         const Angles g(up, false);
         double xg = along_track(up, g, 0.25 * rev, false, 0.0, kGuess);
@@ -1074,6 +1068,7 @@ std::optional<Pass> Searcher::next_any() {
     guess = aos_t + u * D;
   }
   finish_pass(samples, pass, guess);
+  last_step_ = 30.0;
   pass.aos = at(aos_t);
   pass.los = at(los_t);
   pass.aos_az_deg = look(aos_near.ecef).az_deg;
@@ -1111,7 +1106,7 @@ bool Searcher::find_aos(double& aos_t, Sample& aos_s, Sample& aos_near) {
       const double xp = predict_crossing(cur_);
       if (xp > safe && xp < 3.0 * safe + 30.0) {
         target = cur_.t + xp + 0.125 * tol_ + 0.002 * xp;
-      } else if (safe < 300.0) {
+      } else if (safe < 300.0 && cur_.du_y > 0.0) {  // receding from the station's foot
         const double rev = kTwoPi * r_max_ * r_max_ / h_min_;
         const double xg = along_track(cur_, Angles(cur_, false), rev, true, 0.0, kGuess);
         if (xg > 2.0 * safe) target = cur_.t + 0.99 * xg;

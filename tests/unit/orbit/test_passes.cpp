@@ -44,10 +44,16 @@ const UtcTime kDay1 = from_civil(2018, 1, 22);
 double since0(UtcTime t) { return minutes_between(kDay0, t) * 60.0; }
 
 // --- Skyfield reference -----------------------------------------------------------------------------
-// Generated with /usr/bin/python3 (Debian python3-skyfield 1.45, python3-sgp4), window
-// 2018-01-21T00:00Z .. 2018-01-22T00:00Z, horizon -2 deg, times in seconds from the window start:
+// Window 2018-01-21T00:00Z .. 2018-01-22T00:00Z, horizon -2 deg, times in seconds from the window
+// start. Skyfield's find_events is good to about a second (one UKUBE-1 set is 1 s off), so each event
+// is polished on Skyfield's own altitude. Printed by this script (Debian python3-skyfield 1.45 with
+// python3-sgp4, run with /usr/bin/python3; T(43200).dut1 = 0.206455 s is the UT1 both sides use):
 //
+//   # /usr/bin/python3 gen_reference.py  (Debian python3-skyfield; builtin timescale, no ephemeris files)
+//   # Skyfield's find_events gives rise/culminate/set to about a second; each event is then polished on
+//   # Skyfield's own altitude (bisection to 1e-4 s, golden section to 1e-3 s).
 //   from skyfield.api import load, wgs84, EarthSatellite
+//   import numpy as np
 //   ts = load.timescale(builtin=True)
 //   sats = {}
 //   for block in open('/usr/share/gpredict/data/satdata/satellites.dat').read().split('\n['):
@@ -55,19 +61,51 @@ double since0(UtcTime t) { return minutes_between(kDay0, t) * 60.0; }
 //       if 'TLE1' in d: sats[int(d['TLE1'][2:7])] = EarthSatellite(d['TLE1'], d['TLE2'], d['NAME'], ts)
 //   stations = {'tucson': (32.2226, -110.9747, 800.0), 'darmstadt': (49.8706, 8.6494, 140.0),
 //               'sydney': (-33.8688, 151.2093, 50.0), 'tromso': (69.6496, 18.9560, 100.0)}
+//   cases = [(25544, 'tucson'), (33591, 'darmstadt'), (40025, 'tucson'), (40074, 'darmstadt'),
+//            (38771, 'tromso'), (42725, 'tromso'), (13070, 'tucson')]
 //   t0, t1 = ts.utc(2018, 1, 21), ts.utc(2018, 1, 22)
-//   def T(sec): return ts.utc(2018, 1, 21, 0, 0, sec)
+//   def T(sec): return ts.utc(2018, 1, 21, 0, 0, sec)  # seconds from the window start
 //   def alt(sat, topo, sec): return (sat - topo).at(T(sec)).altaz()[0].degrees
-//   print(T(43200).dut1)                                   # 0.206455 s: the UT1 both sides use
+//   def cross(f, a, b):  # the sign change of f next to [a, b], bisected to 1e-4 s
+//       while (f(a) < 0) == (f(b) < 0): a, b = a - 1, b + 1
+//       fa = f(a)
+//       while b - a > 1e-4:
+//           m = (a + b) / 2
+//           if (f(m) < 0) == (fa < 0): a = m
+//           else: b = m
+//       return (a + b) / 2
+//   def peak(f, a, b):  # golden section to 1e-3 s
+//       g = 0.6180339887498949
+//       c, d = b - g * (b - a), a + g * (b - a)
+//       fc, fd = f(c), f(d)
+//       while b - a > 1e-3:
+//           if fc > fd: b, d, fd = d, c, fc; c = b - g * (b - a); fc = f(c)
+//           else: a, c, fc = c, d, fd; d = a + g * (b - a); fd = f(d)
+//       return (a + b) / 2
+//   print(f'// DUT1 {T(43200).dut1:.6f} s')
 //   for num, st in cases:
 //       sat, topo = sats[num], wgs84.latlon(*stations[st])
 //       f = lambda sec: alt(sat, topo, sec) + 2.0
 //       t, ev = sat.find_events(topo, t0, t1, altitude_degrees=-2.0)
-//       # each event, in seconds, polished on Skyfield's own altitude: rise and set bisected to
-//       # 1e-4 s (find_events is good to about a second), culminations by golden section to 1e-3 s
-//       # within +-60 s, printed with alt(sat, topo, t) in degrees.
+//       print(f'{{{num}, "{st}", {{  // {sat.name}, events {"".join(map(str, ev))}')
+//       p = None
+//       for jd, e in zip(t, ev):
+//           sec = (jd - t0) * 86400.0
+//           if e == 0: p = [cross(f, sec - 0.5, sec + 0.5), []]
+//           elif e == 1 and p is not None:
+//               m = peak(f, sec - 60, sec + 60); p[1].append((m, alt(sat, topo, m)))
+//           elif e == 2 and p is not None:
+//               s = cross(f, sec - 0.5, sec + 0.5)
+//               print(f'  {{{p[0]:.3f}, {s:.3f}, {{' + ', '.join(f'{{{m:.3f}, {el:.5f}}}' for m, el in p[1]) + '}},')
+//               p = None
+//       print('}},')
+//   for num, st in [(38552, 'darmstadt'), (41866, 'sydney')]:  # geostationary: no events, so sample
+//       sat, topo = sats[num], wgs84.latlon(*stations[st])
+//       secs = np.arange(0, 86401, 60.0)
+//       alts = (sat - topo).at(T(secs)).altaz()[0].degrees
+//       i = int(np.argmax(alts))
+//       print(f'// {num} {sat.name} from {st}: el {alts.min():.5f} .. {alts.max():.5f} (highest minute {secs[i]:.0f} s)')
 //
-// For the two geostationary satellites the script samples every minute of the day instead.
 constexpr double kDut1 = 0.206455;
 
 struct RefPass {
@@ -428,6 +466,14 @@ TEST_CASE("A decayed satellite: the search ends where the propagation does") {
   CHECK(find_passes(sat, {35.0, -100.0, 0.0}, add_minutes(epoch, 60.0), add_minutes(epoch, 1440.0), {}, {}, stats).empty());
   CHECK(stats.propagations == 1);
   CHECK_FALSE(next_pass(sat, {-24.6018, -113.0817, 0.0}, add_minutes(epoch, 52.0)).has_value());
+  // A set SGP4 refuses at initialisation: no pass, no propagation.
+  Elements bad = set(25544);
+  bad.eccentricity = 1.2;
+  const Sgp4 refused(bad);
+  REQUIRE(refused.init_error() != Sgp4Error::none);
+  PassSearchStats none;
+  CHECK(find_passes(refused, kTucson, kDay0, kDay1, {}, {}, none).empty());
+  CHECK(none.propagations == 0);
 }
 
 TEST_CASE("Grazing: a horizon a thousandth of a degree under a maximum still finds that pass") {
