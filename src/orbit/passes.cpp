@@ -60,7 +60,7 @@ constexpr double kAngleMargin = 2e-4;        // rad, on horizon angles
 constexpr double kMaxElTolerance = 2e-5;     // sin(el): hidden maxima below this are not chased
 constexpr double kTaylorAngle = 5e-7;        // rad: error allowed to the model step onto a maximum
 constexpr double kFlatTopShift = 10.0;       // s: flatter maxima are found from F alone
-constexpr double kFarStep = 300.0;           // s: a step this long needs no refinement
+constexpr double kModelStep = 2.0;           // s: a crossing this close is taken from the quadratic model
 
 void sin_cos(double x, double& s, double& c) {
 #if defined(__GNUC__)
@@ -96,6 +96,20 @@ struct Sample {
                                   // on the orbit plane
   StateVector ecef;
 };
+
+Vec3 accel(const StateVector& e);
+
+// The state dt seconds on, by a second-order Taylor step (dt of a few seconds: metres).
+StateVector taylor(const StateVector& e, double dt) {
+  if (dt == 0.0) return e;
+  const Vec3 a = accel(e);
+  StateVector out = e;
+  for (int k = 0; k < 3; ++k) {
+    out.r_km[k] += (e.v_km_s[k] + 0.5 * a[k] * dt) * dt;
+    out.v_km_s[k] += a[k] * dt;
+  }
+  return out;
+}
 
 // Earth-fixed acceleration with point-mass gravity: gravity + centrifugal + Coriolis, km/s^2 (for
 // Newton and Taylor steps, never for bounds).
@@ -666,7 +680,8 @@ bool Searcher::refine_crossing(const Sample& a, const Sample& b, bool single, do
       }
       if (!std::isfinite(dx) && near.Fdot != 0.0) dx = -near.F / near.Fdot;
     }
-    if (single && std::abs(dx) < 0.5 * tol_) {
+    // Unique crossing: the model's root is good to far below the precision within kModelStep.
+    if (single && std::abs(dx) < std::max(0.5 * tol_, kModelStep)) {
       t = near.t + dx;
       return true;
     }
@@ -684,6 +699,8 @@ bool Searcher::refine_crossing(const Sample& a, const Sample& b, bool single, do
     widen(m);
     (m.F >= 0.0 ? up : down) = m;
     near = m;
+    // A bracket that has shrunk may now be provably monotonic: its crossing is then unique.
+    if (!single) single = up.t < down.t ? monotone(up, down) : monotone(down, up);
     const double width = std::abs(up.t - down.t);
     slow = width > 0.5 * prev_width ? slow + 1 : 0;
     prev_width = width;
@@ -1071,8 +1088,8 @@ std::optional<Pass> Searcher::next_any() {
   last_step_ = 30.0;
   pass.aos = at(aos_t);
   pass.los = at(los_t);
-  pass.aos_az_deg = look(aos_near.ecef).az_deg;
-  pass.los_az_deg = look(los_near.ecef).az_deg;
+  pass.aos_az_deg = look(taylor(aos_near.ecef, aos_t - aos_near.t)).az_deg;
+  pass.los_az_deg = look(taylor(los_near.ecef, los_t - los_near.t)).az_deg;
   return pass;
 }
 
