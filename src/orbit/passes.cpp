@@ -145,7 +145,8 @@ double envelope_root(double F, double d, double b) {
 // Perturbing acceleration bound (J2 with room for the higher zonals, Sun and Moon, drag), km/s^2.
 double perturbation(double r_lo, double r_hi) {
   const double q = kReSgp4 / r_lo;
-  return 4.5 * kJ2 * kMu / (r_lo * r_lo) * q * q + 3e-13 * r_hi + 1e-8;
+  const double q2 = q * q;
+  return (4.5 * kJ2 * kMu / (kReSgp4 * kReSgp4)) * q2 * q2 + 3e-13 * r_hi + 1e-8;
 }
 
 class Searcher {
@@ -465,7 +466,8 @@ Searcher::Local Searcher::local(const Sample& s, double span) const {
   // Earth-fixed acceleration = gravity + centrifugal (c, |c(t) - c0| <= lc |r(t) - r0|) + perturbations
   // + Coriolis (2 omega |v|, but perpendicular to v: it turns v without changing |v|). So
   // |v(t)| <= |v0| + span (c0 + pert + lc V span): a Gronwall bound when span is short.
-  const double lc = 2.0 * kMu / (L.r_lo * L.r_lo * L.r_lo) + kOmega * kOmega;
+  const double inv_r = 1.0 / L.r_lo;
+  const double lc = 2.0 * kMu * inv_r * inv_r * inv_r + kOmega * kOmega;
   const double pert = perturbation(L.r_lo, L.r_hi);
   const double den = 1.0 - lc * span * span;
   L.V = v_glob_;
@@ -482,14 +484,16 @@ double Searcher::curvature(const Sample& s, const Local& L, double span, double 
   //   B >= A / s + K (|f0| + |f'0| span) + C |f'0| + B (C span + K span^2 / 2),  K = V^2/s^2, C = 2 S / s,
   // S bounding |s'| (|s''| = |s |u'|^2 + rho''.u| <= V^2 / s + A). The crude bound A/s + 2 V^2/s^2 (from
   // |f| <= 1 and |f'| <= V/s) holds regardless.
-  const double crude = L.A / s_lo + 2.0 * L.V * L.V / (s_lo * s_lo);
+  const double inv_s = 1.0 / s_lo;
+  const double K = L.V * L.V * inv_s * inv_s;
+  const double crude = L.A * inv_s + 2.0 * K;
   const double f0 = std::abs(s.F + sin_h_);
-  const double d0 = std::abs(s.Fdot) + fdot_err(s);
-  const double S = std::min(L.V, std::abs(s.sdot) + (L.V * L.V / s_lo + L.A) * span);
-  const double K = L.V * L.V / (s_lo * s_lo), C = 2.0 * S / s_lo;
+  const double d0 = std::abs(s.Fdot) + vel_err_ / s.s;
+  const double S = std::min(L.V, std::abs(s.sdot) + (L.V * L.V * inv_s + L.A) * span);
+  const double C = 2.0 * S * inv_s;
   const double den = 1.0 - C * span - 0.5 * K * span * span;
   if (den <= 0.1) return crude;
-  return std::min(crude, (L.A / s_lo + K * std::min(1.0, f0 + d0 * span) + C * d0) / den);
+  return std::min(crude, (L.A * inv_s + K * std::min(1.0, f0 + d0 * span) + C * d0) / den);
 }
 
 double Searcher::along_track(const Sample& s, const Angles& g, double span, bool below, double covered,
@@ -519,9 +523,8 @@ double Searcher::along_track(const Sample& s, const Angles& g, double span, bool
   // W_z changes only as the plane turns, sin(beta) at most at beta_rate.
   const double n0 = s.w_z - us_[2] * s.sin_beta;
   const double dn = (omega_w + std::abs(us_[2]) * beta_rate) * span;
-  auto over_cos2 = [&](double n) {
-    return n >= 0.0 ? n / (cos_beta_hi * cos_beta_hi) : n / (cos_beta_lo * cos_beta_lo);
-  };
+  const double inv_hi2 = 1.0 / (cos_beta_hi * cos_beta_hi), inv_lo2 = 1.0 / (cos_beta_lo * cos_beta_lo);
+  auto over_cos2 = [&](double n) { return n >= 0.0 ? n * inv_hi2 : n * inv_lo2; };
   const double turn = 2.0 * omega_w / cos_beta_hi;  // the plane's turning moves the foot too
   const double foot_hi = kOmega * over_cos2(n0 + dn) + turn;
   const double foot_lo = kOmega * -over_cos2(-(n0 - dn)) - turn;
