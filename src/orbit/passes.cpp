@@ -225,8 +225,9 @@ class Searcher {
   Sample refine_max(const Sample& a, const Sample& b, double guess);
   Sample polish_max(const Sample& best, double h);
   UtcTime at(double t) const { return add_seconds(start_, t); }
-  // look_angles(ecef, obs_) with the station's frame computed once (the same arithmetic).
-  LookAngles look(const StateVector& ecef) const;
+  // look_angles(ecef, obs_) with the station's frame computed once (the same arithmetic); only the
+  // azimuth unless `all`.
+  LookAngles look(const StateVector& ecef, bool all = true) const;
 
   const Sgp4& sat_;
   Observer obs_;
@@ -351,7 +352,7 @@ bool Searcher::eval(double t, Sample& out) {
   return true;
 }
 
-LookAngles Searcher::look(const StateVector& ecef) const {
+LookAngles Searcher::look(const StateVector& ecef, bool all) const {
   const Vec3 rho = {ecef.r_km[0] - site_[0], ecef.r_km[1] - site_[1], ecef.r_km[2] - site_[2]};
   const double south = sl_ * co_ * rho[0] + sl_ * so_ * rho[1] - cl_ * rho[2];
   const double east = -so_ * rho[0] + co_ * rho[1];
@@ -364,6 +365,7 @@ LookAngles Searcher::look(const StateVector& ecef) const {
   if (az < 0.0) az += 360.0;
   if (az >= 360.0) az = 0.0;
   la.az_deg = az;
+  if (!all) return la;
   la.el_deg = std::atan2(zen, std::hypot(south, east)) / kDeg;
   la.range_rate_km_s = dot(rho, ecef.v_km_s) / la.range_km;
   return la;
@@ -1091,8 +1093,8 @@ std::optional<Pass> Searcher::next_any() {
   last_step_ = 30.0;
   pass.aos = at(aos_t);
   pass.los = at(los_t);
-  pass.aos_az_deg = look(taylor(aos_near.ecef, aos_t - aos_near.t)).az_deg;
-  pass.los_az_deg = look(taylor(los_near.ecef, los_t - los_near.t)).az_deg;
+  pass.aos_az_deg = look(taylor(aos_near.ecef, aos_t - aos_near.t), false).az_deg;
+  pass.los_az_deg = look(taylor(los_near.ecef, los_t - los_near.t), false).az_deg;
   return pass;
 }
 
