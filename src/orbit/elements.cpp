@@ -10,7 +10,6 @@
 #include <cstdlib>
 #include <cstdio>
 #include <cstring>
-#include <iterator>
 #include <memory>
 #include <optional>
 #include <system_error>
@@ -48,6 +47,7 @@ std::vector<TextLine> split_lines(std::string_view text) {
 bool is_space(char c) { return c == ' ' || c == '\t'; }
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 bool is_upper(char c) { return c >= 'A' && c <= 'Z'; }
+char to_lower(char c) { return is_upper(c) ? static_cast<char>(c - 'A' + 'a') : c; }
 
 std::string_view trim_left(std::string_view s) {
   while (!s.empty() && is_space(s.front())) s.remove_prefix(1);
@@ -467,10 +467,11 @@ ParseResult parse_nasa(std::string_view text, std::string_view file_name, const 
         ++i;
         break;
       case LineKind::line2: {
-        // Line 2 without line 1. When line 1 follows and is not itself followed by a line 2, the
-        // two were swapped: one problem for the pair.
+        // Line 2 without line 1. When line 1 of the same satellite follows and is not itself
+        // followed by a line 2, the two were swapped: one problem for the pair.
         const std::size_t j = next_significant(i + 1);
-        const bool swapped = kind_at(j) == LineKind::line1 && kind_at(next_significant(j + 1)) != LineKind::line2;
+        const bool swapped = kind_at(j) == LineKind::line1 && kind_at(next_significant(j + 1)) != LineKind::line2 &&
+                             element_line(i).raw(3, 7) == element_line(j).raw(3, 7);
         result.problems.push_back(make_problem(file_name, line.number, 1, "line 1", quote_line(line.text),
                                                "line 1 before line 2"));
         i = swapped ? j + 1 : i + 1;
@@ -546,7 +547,7 @@ LabelledLine split_label(std::string_view line) {
     if (is_space(c)) {
       if (!out.label.empty() && out.label.back() != ' ') out.label += ' ';
     } else {
-      out.label += static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+      out.label += to_lower(c);
     }
   }
   std::size_t v = colon + 1;
@@ -559,7 +560,7 @@ LabelledLine split_label(std::string_view line) {
 int amsat_field_of(const std::string& label) {
   for (int f = 0; f < kAmsatFieldCount; ++f) {
     std::string folded;
-    for (const char* c = kAmsatLabels[f]; *c; ++c) folded += static_cast<char>(*c >= 'A' && *c <= 'Z' ? *c - 'A' + 'a' : *c);
+    for (const char* c = kAmsatLabels[f]; *c; ++c) folded += to_lower(*c);
     if (folded == label) return f;
   }
   return -1;
@@ -672,7 +673,7 @@ class AmsatBlock {
     const auto point = epoch.find('.');
     const std::string_view whole = epoch.substr(0, point);
     const std::string_view fraction = point == std::string_view::npos ? std::string_view{} : epoch.substr(point + 1);
-    if (!all_digits(whole) || whole.size() > 5 || (point != std::string_view::npos && !all_digits(fraction)))
+    if (!all_digits(whole) || whole.size() > 5 || (!fraction.empty() && !all_digits(fraction)))
       return problem(kEpochTime, "YYDDD.DDDDDDDD");
     const long yyddd = *parse_unsigned(whole);
     e.epoch_year = expand_two_digit_year(static_cast<int>(yyddd / 1000));

@@ -21,11 +21,12 @@ constexpr double kTwoPi = 2.0 * kPi;
 constexpr double kDegToRad = kPi / 180.0;
 constexpr double kTwoThirds = 2.0 / 3.0;
 
-// WGS-72 as used by SGP4 ("wgs72", not the older "wgs72old" with a rounded xke).
-constexpr double kMu = 398600.8;               // km^3/s^2
-constexpr double kEarthRadiusKm = 6378.135;    // km
-// xke = 60 / sqrt(R^3 / mu), in (earth radii)^1.5 per minute. Written out because std::sqrt is not
-// constexpr in C++20; the literal is the double nearest to that expression (the unit test checks it).
+// WGS-72 as used by SGP4 ("wgs72", not the older "wgs72old" with a rounded xke):
+// mu = 398600.8 km^3/s^2, equatorial radius 6378.135 km.
+constexpr double kEarthRadiusKm = 6378.135;
+// xke = 60 / sqrt(R^3 / mu), sqrt(earth radii^3 / mu) per minute. std::sqrt is not constexpr in
+// C++20, so this is the value that expression gives in double arithmetic (as the reference computes
+// it at run time): 60.0 / std::sqrt(6378.135 * 6378.135 * 6378.135 / 398600.8).
 constexpr double kXke = 0x1.309b5d0b2444cp-4;  // 0.07436691613317342
 constexpr double kMinutesPerTimeUnit = 1.0 / kXke;  // tumin
 constexpr double kJ2 = 0.001082616;
@@ -57,13 +58,29 @@ constexpr double kEarthRotationRadPerMin = 4.37526908801129966e-3;  // rptim
 constexpr double kResonanceStep = 720.0;
 constexpr double kResonanceStepSquaredHalf = 259200.0;
 
-// Fraction part as C's fmod (keeps the sign of x), which the reference uses throughout.
-inline double wrap_two_pi(double x) { return std::fmod(x, kTwoPi); }
+// Remainder of x / 2pi with the sign of x, as C's fmod, which the reference uses throughout.
+// fmod is exact, so it returns x itself when |x| < 2pi: skipping the call there changes nothing.
+inline double wrap_two_pi(double x) { return std::fabs(x) < kTwoPi ? x : std::fmod(x, kTwoPi); }
 
 struct SinCos {
   double s, c;
 };
 inline SinCos sin_cos(double x) { return {std::sin(x), std::cos(x)}; }
+
+// sin and cos of (a + d) from those of a. The propagator's corrections are mostly tiny, and then a
+// short series for sin d and cos d (exact to rounding for |d| < 2e-3) saves a libm call.
+inline SinCos add_angle(SinCos a, double d) {
+  double sd, cd;
+  if (std::fabs(d) < 2e-3) {
+    const double d2 = d * d;
+    sd = d * (1.0 - d2 / 6.0 * (1.0 - d2 / 20.0));
+    cd = 1.0 - d2 / 2.0 * (1.0 - d2 / 12.0);
+  } else {
+    sd = std::sin(d);
+    cd = std::cos(d);
+  }
+  return {a.s * cd + a.c * sd, a.c * cd - a.s * sd};
+}
 
 // Greenwich mean sidereal time (IAU-82) from a single Julian date, as the reference computes the
 // sidereal angle at epoch. Kept separate from gmst82() so that the SDP4 resonance phase uses the
@@ -80,6 +97,8 @@ double gstime(double jdut1) {
 // The epoch as the reference's TLE reader computes it: day of year -> month, day, h, m, s, then a
 // Julian date split into a day boundary and a fraction.
 JulianDate element_epoch(int year, double day_of_year) {
+  constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+  if (!(day_of_year >= 0.0 && day_of_year < 1000.0)) return {kNan, kNan};  // not a day of a year
   int month_days[13] = {0, 31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
   const int day_number = static_cast<int>(std::floor(day_of_year));
   if (year % 4 == 0) month_days[2] = 29;
@@ -140,6 +159,11 @@ struct DeepSpace {
   // One-day (synchronous) resonance coefficients.
   double del1 = 0, del2 = 0, del3 = 0;
   double xfact = 0, xlamo = 0;
+  // Rates of the resonance integrator's state (mean motion xni and mean longitude xli).
+  struct Rates {
+    double xndt = 0, xldot = 0, xnddt = 0;
+  };
+  Rates rates_at_epoch;  // the integrator's first evaluation, the same for every call
 };
 
 // Lunar-solar terms common to the secular and periodic deep-space effects, at epoch.
@@ -448,10 +472,10 @@ struct MeanElements {
   double em, argpm, inclm, mm, nodem, nm;
 };
 
-// Secular lunar-solar drift plus, for resonant orbits, the numerically integrated mean longitude
-// and mean motion. The integrator always starts at epoch and steps 720 minutes towards t.
-void deep_space_drift(const DeepSpace& ds, double no, double argpo, double argpdot, double t,
-                      MeanElements& m) {
+// Derivatives of the resonance integrator's state: mean motion xni and mean longitude xli at
+// atime minutes from epoch.
+DeepSpace::Rates resonance_rates(const DeepSpace& ds, double xli, double xni, double atime,
+                                 double argpo, double argpdot) {
   constexpr double fasx2 = 0.13130908;
   constexpr double fasx4 = 2.8843198;
   constexpr double fasx6 = 0.37448087;
@@ -461,6 +485,42 @@ void deep_space_drift(const DeepSpace& ds, double no, double argpo, double argpd
   constexpr double g52 = 1.0508330;
   constexpr double g54 = 4.4108898;
 
+  DeepSpace::Rates r;
+  r.xldot = xni + ds.xfact;
+  if (ds.resonance == Resonance::one_day) {
+    const SinCos a = sin_cos(xli - fasx2);
+    const SinCos b = sin_cos(2.0 * (xli - fasx4));
+    const SinCos c = sin_cos(3.0 * (xli - fasx6));
+    r.xndt = ds.del1 * a.s + ds.del2 * b.s + ds.del3 * c.s;
+    r.xnddt = ds.del1 * a.c + 2.0 * ds.del2 * b.c + 3.0 * ds.del3 * c.c;
+  } else {
+    const double xomi = argpo + argpdot * atime;
+    const double x2omi = xomi + xomi;
+    const double x2li = xli + xli;
+    const SinCos a = sin_cos(x2omi + xli - g22);
+    const SinCos b = sin_cos(xli - g22);
+    const SinCos c = sin_cos(xomi + xli - g32);
+    const SinCos d = sin_cos(-xomi + xli - g32);
+    const SinCos e = sin_cos(x2omi + x2li - g44);
+    const SinCos f = sin_cos(x2li - g44);
+    const SinCos g = sin_cos(xomi + xli - g52);
+    const SinCos h = sin_cos(-xomi + xli - g52);
+    const SinCos i = sin_cos(xomi + x2li - g54);
+    const SinCos j = sin_cos(-xomi + x2li - g54);
+    r.xndt = ds.d2201 * a.s + ds.d2211 * b.s + ds.d3210 * c.s + ds.d3222 * d.s + ds.d4410 * e.s +
+             ds.d4422 * f.s + ds.d5220 * g.s + ds.d5232 * h.s + ds.d5421 * i.s + ds.d5433 * j.s;
+    r.xnddt = ds.d2201 * a.c + ds.d2211 * b.c + ds.d3210 * c.c + ds.d3222 * d.c + ds.d5220 * g.c +
+              ds.d5232 * h.c +
+              2.0 * (ds.d4410 * e.c + ds.d4422 * f.c + ds.d5421 * i.c + ds.d5433 * j.c);
+  }
+  r.xnddt = r.xnddt * r.xldot;
+  return r;
+}
+
+// Secular lunar-solar drift plus, for resonant orbits, the numerically integrated mean longitude
+// and mean motion. The integrator always starts at epoch and steps 720 minutes towards t.
+void deep_space_drift(const DeepSpace& ds, double no, double argpo, double argpdot, double t,
+                      MeanElements& m) {
   m.em = m.em + ds.dedt * t;
   m.inclm = m.inclm + ds.didt * t;
   m.argpm = m.argpm + ds.domdt * t;
@@ -472,50 +532,18 @@ void deep_space_drift(const DeepSpace& ds, double no, double argpo, double argpd
   double atime = 0.0;
   double xni = no;
   double xli = ds.xlamo;
+  DeepSpace::Rates r = ds.rates_at_epoch;
   const double delt = t > 0.0 ? kResonanceStep : -kResonanceStep;
-  double xndt, xldot, xnddt, ft;
-  for (;;) {
-    if (ds.resonance == Resonance::one_day) {
-      const SinCos a = sin_cos(xli - fasx2);
-      const SinCos b = sin_cos(2.0 * (xli - fasx4));
-      const SinCos c = sin_cos(3.0 * (xli - fasx6));
-      xndt = ds.del1 * a.s + ds.del2 * b.s + ds.del3 * c.s;
-      xldot = xni + ds.xfact;
-      xnddt = ds.del1 * a.c + 2.0 * ds.del2 * b.c + 3.0 * ds.del3 * c.c;
-      xnddt = xnddt * xldot;
-    } else {
-      const double xomi = argpo + argpdot * atime;
-      const double x2omi = xomi + xomi;
-      const double x2li = xli + xli;
-      const SinCos a = sin_cos(x2omi + xli - g22);
-      const SinCos b = sin_cos(xli - g22);
-      const SinCos c = sin_cos(xomi + xli - g32);
-      const SinCos d = sin_cos(-xomi + xli - g32);
-      const SinCos e = sin_cos(x2omi + x2li - g44);
-      const SinCos f = sin_cos(x2li - g44);
-      const SinCos g = sin_cos(xomi + xli - g52);
-      const SinCos h = sin_cos(-xomi + xli - g52);
-      const SinCos i = sin_cos(xomi + x2li - g54);
-      const SinCos j = sin_cos(-xomi + x2li - g54);
-      xndt = ds.d2201 * a.s + ds.d2211 * b.s + ds.d3210 * c.s + ds.d3222 * d.s + ds.d4410 * e.s +
-             ds.d4422 * f.s + ds.d5220 * g.s + ds.d5232 * h.s + ds.d5421 * i.s + ds.d5433 * j.s;
-      xldot = xni + ds.xfact;
-      xnddt = ds.d2201 * a.c + ds.d2211 * b.c + ds.d3210 * c.c + ds.d3222 * d.c + ds.d5220 * g.c +
-              ds.d5232 * h.c +
-              2.0 * (ds.d4410 * e.c + ds.d4422 * f.c + ds.d5421 * i.c + ds.d5433 * j.c);
-      xnddt = xnddt * xldot;
-    }
-    if (std::fabs(t - atime) < kResonanceStep) {
-      ft = t - atime;
-      break;
-    }
-    xli = xli + xldot * delt + xndt * kResonanceStepSquaredHalf;
-    xni = xni + xndt * delt + xnddt * kResonanceStepSquaredHalf;
+  while (std::fabs(t - atime) >= kResonanceStep) {
+    xli = xli + r.xldot * delt + r.xndt * kResonanceStepSquaredHalf;
+    xni = xni + r.xndt * delt + r.xnddt * kResonanceStepSquaredHalf;
     atime = atime + delt;
+    r = resonance_rates(ds, xli, xni, atime, argpo, argpdot);
   }
+  const double ft = t - atime;
 
-  const double nm = xni + xndt * ft + xnddt * ft * ft * 0.5;
-  const double xl = xli + xldot * ft + xndt * ft * ft * 0.5;
+  const double nm = xni + r.xndt * ft + r.xnddt * ft * ft * 0.5;
+  const double xl = xli + r.xldot * ft + r.xndt * ft * ft * 0.5;
   if (ds.resonance == Resonance::half_day)
     m.mm = xl - 2.0 * m.nodem + 2.0 * theta;
   else
@@ -578,7 +606,7 @@ void lunar_solar_periodics(const LunarSolarPeriodics& p, double t, PerturbedElem
     const double dbet = -ph * node.s + pinc * x.cosip * node.c;
     alfdp = alfdp + dalf;
     betdp = betdp + dbet;
-    x.nodep = std::fmod(x.nodep, kTwoPi);
+    x.nodep = wrap_two_pi(x.nodep);
     double xls = x.mp + x.argpp + x.cosip * x.nodep;
     const double dls = pl + pgh - pinc * x.nodep * x.sinip;
     xls = xls + dls;
@@ -726,6 +754,8 @@ void Sgp4::Model::initialise(double epoch, double no_kozai) {
     // (The periodics are zero at epoch, so the elements need no correction here.)
     const DeepSpaceInputs in{ecco, eccsq, inclo, argpo, mo, nodeo, no_unkozai, mdot, nodedot, xpidot};
     deep_space_secular(in, common, ds);
+    if (ds.resonance != Resonance::none)
+      ds.rates_at_epoch = resonance_rates(ds, ds.xlamo, no_unkozai, 0.0, argpo, argpdot);
   }
 
   if (!simplified_drag) {
@@ -756,7 +786,8 @@ Propagation Sgp4::Model::propagate(double t) const {
 
   if (!simplified_drag) {
     const double delomg = omgcof * t;
-    const double delmtemp = 1.0 + eta * std::cos(xmdf);
+    const SinCos xm = sin_cos(xmdf);
+    const double delmtemp = 1.0 + eta * xm.c;
     const double delm = xmcof * (delmtemp * delmtemp * delmtemp - delmo);
     const double temp = delomg + delm;
     m.mm = xmdf + temp;
@@ -764,7 +795,7 @@ Propagation Sgp4::Model::propagate(double t) const {
     const double t3 = t2 * t;
     const double t4 = t3 * t;
     tempa = tempa - d2 * t2 - d3 * t3 - d4 * t4;
-    tempe = tempe + bstar * cc5 * (std::sin(m.mm) - sinmao);
+    tempe = tempe + bstar * cc5 * (add_angle(xm, temp).s - sinmao);
     templ = templ + t3cof * t3 + t4 * (t4cof + t * t5cof);
   }
 
@@ -826,15 +857,17 @@ Propagation Sgp4::Model::propagate(double t) const {
 
   // Kepler's equation in the (axnl, aynl) form, Newton steps limited to 0.95 rad.
   const double u = wrap_two_pi(xl - p.nodep);
+  // As in the reference, the sine and cosine used afterwards are those of the last iterate
+  // evaluated, not of the final (at most 1e-12 rad different) update.
   double eo1 = u;
-  double tem5 = 9999.9;
-  SinCos eo{0.0, 1.0};
-  for (int iteration = 1; std::fabs(tem5) >= 1.0e-12 && iteration <= 10; ++iteration) {
-    eo = sin_cos(eo1);
-    tem5 = 1.0 - eo.c * axnl - eo.s * aynl;
+  SinCos eo = sin_cos(eo1);
+  for (int iteration = 1;; ++iteration) {
+    double tem5 = 1.0 - eo.c * axnl - eo.s * aynl;
     tem5 = (u - aynl * eo.c + axnl * eo.s - eo1) / tem5;
     if (std::fabs(tem5) >= 0.95) tem5 = tem5 > 0.0 ? 0.95 : -0.95;
     eo1 = eo1 + tem5;
+    if (std::fabs(tem5) < 1.0e-12 || iteration == 10) break;
+    eo = add_angle(eo, tem5);
   }
 
   // Short-period preliminaries.
@@ -851,7 +884,6 @@ Propagation Sgp4::Model::propagate(double t) const {
   temp = esine / (1.0 + betal);
   const double sinu = am / rl * (eo.s - aynl - axnl * temp);
   const double cosu = am / rl * (eo.c - axnl + aynl * temp);
-  double su = std::atan2(sinu, cosu);
   const double sin2u = (cosu + cosu) * sinu;
   const double cos2u = 1.0 - 2.0 * sinu * sinu;
   temp = 1.0 / pl;
@@ -860,16 +892,17 @@ Propagation Sgp4::Model::propagate(double t) const {
 
   // Short-period periodics.
   const double mrt = rl * (1.0 - 1.5 * temp2 * betal * con41_t) + 0.5 * temp1 * x1mth2_t * cos2u;
-  su = su - 0.25 * temp2 * x7thm1_t * sin2u;
   const double xnode = p.nodep + 1.5 * temp2 * p.cosip * sin2u;
-  const double xinc = p.inclp + 1.5 * temp2 * p.cosip * p.sinip * cos2u;
   const double mvt = rdotl - nm * temp1 * x1mth2_t * sin2u / kXke;
   const double rvdot = rvdotl + nm * temp1 * (x1mth2_t * cos2u + 1.5 * con41_t) / kXke;
 
   // Orientation vectors.
-  const SinCos s = sin_cos(su);
+  // (sinu, cosu) is a unit vector up to rounding; normalised, it is the (sin, cos) of the
+  // reference's atan2(sinu, cosu), to which the short-period terms add small corrections.
+  const double unit = 1.0 / std::sqrt(sinu * sinu + cosu * cosu);
+  const SinCos s = add_angle({sinu * unit, cosu * unit}, -0.25 * temp2 * x7thm1_t * sin2u);
   const SinCos node = sin_cos(xnode);
-  const SinCos inc = sin_cos(xinc);
+  const SinCos inc = add_angle({p.sinip, p.cosip}, 1.5 * temp2 * p.cosip * p.sinip * cos2u);
   const double xmx = -node.s * inc.c;
   const double xmy = node.c * inc.c;
   const double ux = xmx * s.s + node.c * s.c;

@@ -345,6 +345,13 @@ TEST_CASE("NASA problems: lines out of order") {
   check_problem(r.problems[0], 2, 1, "line 1", kIss2, "line 1 before line 2");
   CHECK(r.sets.size() == 1);
 
+  // Line 2 of one satellite before line 1 of another: two problems.
+  const ParseResult other =
+      parse_nasa(lines({kIss2, "1 07530U 74089B   12256.61218065 -.00000027  00000-0  10000-3 0  4795"}));
+  REQUIRE(other.problems.size() == 2);
+  check_problem(other.problems[0], 1, 1, "line 1", kIss2, "line 1 before line 2");
+  check_problem(other.problems[1], 3, 1, "line 2", "", "line 2 after line 1");
+
   // A stray line 2 followed by a complete set: the set is kept.
   const ParseResult stray = parse_nasa(lines({kIss2, kIss1, kIss2}));
   REQUIRE(stray.problems.size() == 1);
@@ -395,6 +402,18 @@ TEST_CASE("NASA problems: ranges and separators") {
   l2 = kIss2;
   l2.replace(26, 7, "00067.3");
   check_problem(line2_problem(l2), 2, 27, "eccentricity", "00067.3", "7 digits (implied leading decimal point)");
+  // The epoch day must exist in its year (2008 is a leap year, 2007 is not).
+  {
+    std::string l1 = kIss1;
+    l1.replace(18, 14, "07366.51782528");
+    l1[68] = static_cast<char>('0' + nasa_checksum(l1));
+    const ParseResult r = parse_nasa(lines({l1, kIss2}));
+    REQUIRE(r.problems.size() == 1);
+    check_problem(r.problems[0], 1, 21, "epoch day", "366.51782528", "day of year in [1, 366)");
+    l1.replace(18, 2, "08");
+    l1[68] = static_cast<char>('0' + nasa_checksum(l1));
+    CHECK(parse_nasa(lines({l1, kIss2})).sets.size() == 1);
+  }
   // A field shifted by one column.
   l2 = "2 25544  51.6416  247.4627 0006703 130.5360 325.0288 15.72125391563537";
   check_problem(line2_problem(l2), 2, 26, "separator", "7", "blank");
@@ -612,7 +631,8 @@ TEST_CASE("AMSAT problems: bad values and missing lines") {
   r = parse_amsat(replace_line(two, "Mean motion:   12.53610824 rev/day\n", ""), "b.txt");
   REQUIRE(r.problems.size() == 1);
   check_problem(r.problems[0], 3, 0, "Mean motion", "", "a 'Mean motion:' line in the block");
-  CHECK(r.problems[0].message() == "b.txt:3:0: Mean motion: found nothing, expected a 'Mean motion:' line in the block");
+  CHECK(r.problems[0].message() ==
+        "b.txt:3:0: Mean motion: found nothing, expected a 'Mean motion:' line in the block");
   CHECK(r.sets.size() == 1);
 
   r = parse_amsat(replace_line(two, "Epoch time:      12256.61218065", "Epoch time:      12367.61218065"), "b.txt");
@@ -627,7 +647,8 @@ TEST_CASE("AMSAT problems: bad values and missing lines") {
   REQUIRE(r.problems.size() == 1);
   check_problem(r.problems[0], 26, 16, "Mean motion", "-12.5359114", "number > 0");
 
-  r = parse_amsat(replace_line(two, "Epoch rev:           73100\n", "Epoch rev:           73100\nEpoch rev: 1\n"), "b.txt");
+  r = parse_amsat(replace_line(two, "Epoch rev:           73100\n", "Epoch rev:           73100\nEpoch rev: 1\n"),
+                  "b.txt");
   REQUIRE(r.problems.size() == 1);
   check_problem(r.problems[0], 29, 12, "Epoch rev", "1", "one 'Epoch rev:' line in the block");
 }

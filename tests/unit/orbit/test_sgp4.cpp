@@ -299,7 +299,7 @@ TEST_CASE("Deep-space resonant set at epoch and after 1000 minutes agrees with p
   CHECK(sat.apogee_km() == doctest::Approx(39701.88472482788).epsilon(1e-12));
 }
 
-TEST_CASE("Propagation is a pure function of the time: order, copies and threads do not matter") {
+TEST_CASE("Propagation is a pure function of the time: call order and copies do not matter") {
   const Sgp4 sat(molniya());
   const Propagation far = sat.propagate_minutes(20000.0);
   const Propagation back = sat.propagate_minutes(-3000.0);

@@ -1,0 +1,127 @@
+// SGP4/SDP4 speed: one near-earth and one deep-space propagation, and a catalogue run over the 979
+// real element sets of Debian gpredict's satellites.dat at 1440 one-minute steps, looped as
+// python-sgp4's SatrecArray.sgp4(jd, fr) loops (every satellite at every time, results written to
+// position/velocity/error arrays). scripts/bench_reference_sgp4.py runs the same workload through
+// python-sgp4 for a same-machine baseline.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "orbit/elements.h"
+#include "orbit/sgp4.h"
+
+using namespace tb::orbit;
+
+namespace {
+
+// ISS (ZARYA) from satellites.dat (near earth, drag terms active).
+Elements iss() {
+  Elements e;
+  e.catalog_number = 25544;
+  e.epoch_year = 2018;
+  e.epoch_day = 20.89808844;
+  e.ndot_over_2 = 0.00002078;
+  e.bstar = 0.38550e-4;
+  e.inclination_deg = 51.6424;
+  e.raan_deg = 32.9776;
+  e.eccentricity = 0.0003646;
+  e.arg_perigee_deg = 28.7227;
+  e.mean_anomaly_deg = 39.5332;
+  e.mean_motion_rev_per_day = 15.54190080;
+  return e;
+}
+
+// MOLNIYA 1-53 from satellites.dat (deep space, half-day resonance: the most expensive case).
+Elements molniya() {
+  Elements e;
+  e.catalog_number = 13070;
+  e.epoch_year = 2018;
+  e.epoch_day = 19.33649993;
+  e.ndot_over_2 = 0.00000405;
+  e.bstar = -0.24669e-3;
+  e.inclination_deg = 62.4528;
+  e.raan_deg = 108.1401;
+  e.eccentricity = 0.7349782;
+  e.arg_perigee_deg = 265.0722;
+  e.mean_anomaly_deg = 44.8738;
+  e.mean_motion_rev_per_day = 2.00563378;
+  return e;
+}
+
+void propagate_over_a_day(benchmark::State& state, const Elements& elements) {
+  const Sgp4 sat(elements);
+  double t = 0.0;
+  for (auto _ : state) {
+    Propagation p = sat.propagate_minutes(t);
+    benchmark::DoNotOptimize(p);
+    t = t < 1439.0 ? t + 1.0 : 0.0;
+  }
+}
+
+void BM_Sgp4NearEarth(benchmark::State& state) { propagate_over_a_day(state, iss()); }
+BENCHMARK(BM_Sgp4NearEarth);
+
+void BM_Sgp4DeepSpaceResonant(benchmark::State& state) { propagate_over_a_day(state, molniya()); }
+BENCHMARK(BM_Sgp4DeepSpaceResonant);
+
+std::vector<Sgp4> gpredict_catalogue() {
+  std::ifstream in(TRAKBOX_GPREDICT_SATDATA, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " TRAKBOX_GPREDICT_SATDATA);
+  std::ostringstream text;
+  text << in.rdbuf();
+  const ParseResult parsed = parse_gpredict_satdata(text.str(), TRAKBOX_GPREDICT_SATDATA);
+  std::vector<Sgp4> sats;
+  sats.reserve(parsed.sets.size());
+  for (const Elements& e : parsed.sets) sats.emplace_back(e);
+  return sats;
+}
+
+// Every set at 2018-01-21 00:00 UTC + k minutes, k = 0..1439 (the file's epochs are 2017 Dec 23
+// to 2018 Jan 22), times given as a split Julian date as SatrecArray takes them.
+void BM_Sgp4Gpredict979x1440(benchmark::State& state) {
+  const std::vector<Sgp4> sats = gpredict_catalogue();
+  constexpr int kTimes = 1440;
+  const double jd = 2458139.5;
+  std::vector<double> fr(kTimes);
+  for (int k = 0; k < kTimes; ++k) fr[k] = k / 1440.0;
+  const std::size_t n = sats.size() * kTimes;
+  std::vector<double> r(3 * n), v(3 * n);
+  std::vector<std::uint8_t> errors(n);
+  constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+
+  for (auto _ : state) {
+    std::size_t k = 0;
+    for (const Sgp4& sat : sats) {
+      const JulianDate epoch = sat.epoch_jd();
+      for (int j = 0; j < kTimes; ++j, ++k) {
+        const double tsince = (jd - epoch.whole) * 1440.0 + (fr[j] - epoch.fraction) * 1440.0;
+        const Propagation p = sat.propagate_minutes(tsince);
+        errors[k] = static_cast<std::uint8_t>(p.error);
+        for (int c = 0; c < 3; ++c) {
+          r[3 * k + c] = p.ok() ? p.state.r_km[c] : kNan;
+          v[3 * k + c] = p.ok() ? p.state.v_km_s[c] : kNan;
+        }
+      }
+    }
+    benchmark::ClobberMemory();
+  }
+  std::size_t failed = 0;
+  for (std::uint8_t e : errors) failed += e != 0;
+  state.counters["sets"] = static_cast<double>(sats.size());
+  state.counters["failed"] = static_cast<double>(failed);
+  // Seconds per propagation (printed with an SI prefix: "650n" is 650 ns).
+  state.counters["per_propagation"] = benchmark::Counter(
+      static_cast<double>(n), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_Sgp4Gpredict979x1440)->Unit(benchmark::kMillisecond)->MinTime(5.0);
+
+}  // namespace
+
+BENCHMARK_MAIN();
