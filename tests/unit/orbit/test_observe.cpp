@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "orbit/elements.h"
 #include "orbit/observe.h"
 
 using namespace tb::orbit;
@@ -374,4 +375,52 @@ TEST_CASE("Visible: satellite up and sunlit, station in darkness") {
   const Observer day{0.0, o.lon_deg + 140.0 > 180.0 ? o.lon_deg - 220.0 : o.lon_deg + 140.0, 0.0};
   CHECK(sun_elevation_deg(day, t) > -12.0);
   CHECK_FALSE(visible(high, day));
+}
+
+TEST_CASE("observe(): SGP4, frames, look angles, sub-point and phase in one call") {
+  // The ISS over Tucson case above, now propagated by our SGP4 from its element set (Debian
+  // gpredict's satellites.dat); Skyfield's figures as above.
+  const ParseResult parsed = parse_nasa(
+      "ISS (ZARYA)\n"
+      "1 25544U 98067A   18020.89808844  .00002078  00000-0  38550-4 0  9992\n"
+      "2 25544  51.6424  32.9776 0003646  28.7227  39.5332 15.54190080 95614\n");
+  REQUIRE(parsed.sets.size() == 1);
+  const Sgp4 sat(parsed.sets[0]);
+  const Observer tucson{32.259, -110.778, 842.0};
+  const UtcTime t = from_civil(2018, 1, 21, 3, 37, 10);
+  const Observation o = observe(sat, tucson, t, {0.2066917506946453});
+  REQUIRE(o.ok());
+  CHECK(o.time == t);
+  CHECK(std::abs(o.teme.r_km[0] - 2694.09928504791) < 1e-6);
+  CHECK(az_diff(o.look.az_deg, 280.7671915737405) < 1e-6);
+  CHECK(std::abs(o.look.el_deg - 62.240113402288195) < 1e-6);
+  CHECK(std::abs(o.look.range_km - 451.97968010867146) < 1e-5);
+  CHECK(std::abs(o.look.range_rate_km_s - -1.8662343828285592) < 1e-7);
+  CHECK(std::abs(o.sub_point.lat_deg - 32.57552304809707) < 1e-6);
+  CHECK(std::abs(o.sub_point.lon_deg - -112.84985541097882) < 1e-6);
+  CHECK(std::abs(o.sub_point.alt_km - 404.06762016333596) < 1e-5);
+  CHECK(o.phase256 == phase256(parsed.sets[0], t));
+  // Without DUT1 the Earth is 0.207 s behind: about 0.005 deg here.
+  const Observation utc = observe(sat, tucson, t);
+  CHECK(std::abs(utc.look.el_deg - o.look.el_deg) > 1e-3);
+  CHECK(std::abs(utc.look.el_deg - o.look.el_deg) < 2e-2);
+}
+
+TEST_CASE("observe(): a propagation failure is a value") {
+  // Vallado's 28872 (SGP4-VER.TLE) decays at 55 minutes: error 6.
+  ParseOptions lax;
+  lax.verify_checksums = false;
+  const ParseResult parsed = parse_nasa(
+      "1 28872U 05037B   05333.02012661  .25992681  00000-0  24476-3 0  1534\n"
+      "2 28872  96.4736 157.9986 0303955 244.0492 110.6523 16.46015938 10708\n",
+      "<28872>", lax);
+  REQUIRE(parsed.sets.size() == 1);
+  const Sgp4 sat(parsed.sets[0]);
+  const Observer o{0.0, 0.0, 0.0};
+  CHECK(observe(sat, o, add_minutes(sat.epoch(), 50.0)).ok());
+  const Observation late = observe(sat, o, add_minutes(sat.epoch(), 60.0));
+  CHECK_FALSE(late.ok());
+  CHECK(late.error == Sgp4Error::decayed);
+  CHECK(late.time == add_minutes(sat.epoch(), 60.0));
+  CHECK_FALSE(visible(late, o));
 }

@@ -1,0 +1,580 @@
+#include "app/cli_orbit.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstdarg>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <optional>
+
+#include "app/options.h"
+#include "orbit/elements.h"
+#include "orbit/observe.h"
+#include "orbit/passes.h"
+#include "orbit/sgp4.h"
+
+namespace tb::app {
+namespace {
+
+using orbit::Elements;
+using orbit::UtcTime;
+
+// ---------------------------------------------------------------------------------------------
+// Text helpers
+
+std::string strprintf(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
+std::string strprintf(const char* fmt, ...) {
+  char buf[512];
+  va_list ap;
+  va_start(ap, fmt);
+  const int n = std::vsnprintf(buf, sizeof buf, fmt, ap);
+  va_end(ap);
+  if (n < 0) return {};
+  if (static_cast<std::size_t>(n) < sizeof buf) return std::string(buf, static_cast<std::size_t>(n));
+  std::string big(static_cast<std::size_t>(n) + 1, '\0');
+  va_start(ap, fmt);
+  std::vsnprintf(big.data(), big.size(), fmt, ap);
+  va_end(ap);
+  big.resize(static_cast<std::size_t>(n));
+  return big;
+}
+
+void out(const std::string& s) { std::fwrite(s.data(), 1, s.size(), stdout); }
+
+std::string json_string(std::string_view s) {
+  std::string r = "\"";
+  for (const char c : s) {
+    switch (c) {
+      case '"': r += "\\\""; break;
+      case '\\': r += "\\\\"; break;
+      case '\n': r += "\\n"; break;
+      case '\r': r += "\\r"; break;
+      case '\t': r += "\\t"; break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20) r += strprintf("\\u%04x", static_cast<unsigned char>(c));
+        else r += c;
+    }
+  }
+  return r + "\"";
+}
+
+std::string csv_field(std::string_view s) {
+  if (s.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(s);
+  std::string r = "\"";
+  for (const char c : s) {
+    if (c == '"') r += '"';
+    r += c;
+  }
+  return r + "\"";
+}
+
+std::string lower(std::string_view s) {
+  std::string r(s);
+  for (char& c : r) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return r;
+}
+
+std::string trim(std::string_view s) {
+  const auto b = s.find_first_not_of(" \t");
+  if (b == std::string_view::npos) return {};
+  const auto e = s.find_last_not_of(" \t");
+  return std::string(s.substr(b, e - b + 1));
+}
+
+// "ISS (ZARYA) (25544)" or "25544".
+std::string choice_label(const Elements& e) {
+  const std::string name = trim(e.name);
+  return name.empty() ? std::to_string(e.catalog_number) : name + " (" + std::to_string(e.catalog_number) + ")";
+}
+
+// "2018/01/21 03:37:10" (the manual's date and time), with `decimals` digits of seconds.
+std::string manual_time(UtcTime t, int decimals) {
+  const std::string iso = orbit::format_iso8601(t, decimals);  // 2018-01-21T03:37:10[.fff]Z
+  std::string s = iso.substr(0, iso.size() - 1);
+  s[4] = '/';
+  s[7] = '/';
+  s[10] = ' ';
+  return s;
+}
+
+// Digits of seconds needed to show every time start + i * step exactly: 0, 3 or 6.
+int seconds_decimals(UtcTime start, std::chrono::microseconds step) {
+  const auto us_of = [](std::int64_t v) { return ((v % 1000000) + 1000000) % 1000000; };
+  const std::int64_t a = us_of(start.time_since_epoch().count()), b = us_of(step.count());
+  if (a == 0 && b == 0) return 0;
+  if (a % 1000 == 0 && b % 1000 == 0) return 3;
+  return 6;
+}
+
+enum class OutputFormat { table, csv, json };
+
+// ---------------------------------------------------------------------------------------------
+// Element files and satellite selection
+
+const char* const kElementsHelp = "an element file (NASA 2/3-line, AMSAT verbose or gpredict .sat/satellites.dat)";
+
+struct LoadedElements {
+  std::vector<Elements> sets;
+  std::optional<ArgError> error;
+};
+
+LoadedElements load_elements(const std::string& path) {
+  LoadedElements r;
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    r.error = ArgError{"ELEMENTS", "'" + path + "' is a folder; expected " + kElementsHelp};
+    return r;
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    r.error = ArgError{"ELEMENTS", "cannot read '" + path + "': " + std::strerror(errno) + "; expected " + kElementsHelp};
+    return r;
+  }
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) {
+    r.error = ArgError{"ELEMENTS", "cannot read '" + path + "'"};
+    return r;
+  }
+  // parse_elements recognises the format: AMSAT "Satellite:" blocks, gpredict keys, NASA lines.
+  orbit::ParseResult parsed = orbit::parse_elements(text, path);
+  for (const orbit::ParseProblem& p : parsed.problems)
+    std::fprintf(stderr, "trakbox: warning: %s\n", p.message().c_str());
+  if (parsed.sets.empty()) {
+    r.error = ArgError{"ELEMENTS", "no usable element set in '" + path + "'; expected " + kElementsHelp};
+    return r;
+  }
+  r.sets = std::move(parsed.sets);
+  return r;
+}
+
+std::string list_choices(const std::vector<Elements>& sets) {
+  constexpr std::size_t kMax = 30;
+  std::string s;
+  for (std::size_t i = 0; i < sets.size() && i < kMax; ++i) s += (i ? ", " : "") + choice_label(sets[i]);
+  if (sets.size() > kMax) s += strprintf(", ... (%zu more)", sets.size() - kMax);
+  return s;
+}
+
+// --sat KEY: the name exactly, then the name ignoring case and surrounding blanks, then the catalog
+// number (digits or Alpha-5). Several matching sets: the newest epoch wins, with a warning.
+std::optional<std::size_t> match_sat(const std::vector<Elements>& sets, const std::string& key, std::string& why) {
+  std::vector<std::size_t> hits;
+  for (std::size_t i = 0; i < sets.size(); ++i)
+    if (sets[i].name == key) hits.push_back(i);
+  if (hits.empty()) {
+    const std::string k = lower(trim(key));
+    for (std::size_t i = 0; i < sets.size(); ++i)
+      if (!k.empty() && lower(trim(sets[i].name)) == k) hits.push_back(i);
+  }
+  if (hits.empty()) {
+    std::optional<std::int64_t> number = to_int64(key);
+    if (!number && key.size() == 5) {
+      const int n = orbit::decode_catalog_number(key);
+      if (n >= 0) number = n;
+    }
+    if (number)
+      for (std::size_t i = 0; i < sets.size(); ++i)
+        if (sets[i].catalog_number == *number) hits.push_back(i);
+  }
+  if (hits.empty()) {
+    why = "no element set named or numbered '" + key + "'; the file holds " + list_choices(sets);
+    return std::nullopt;
+  }
+  // Different satellites under one name (rocket bodies: "SL-8 R/B") need the catalog number;
+  // several sets of one satellite (successive epochs) resolve to the newest.
+  std::size_t best = hits.front();
+  for (const std::size_t i : hits) {
+    if (sets[i].catalog_number != sets[best].catalog_number) {
+      std::string list;
+      for (const std::size_t k : hits) list += (list.empty() ? "" : ", ") + choice_label(sets[k]);
+      why = "'" + key + "' names several satellites (" + list + "); give the catalog number";
+      return std::nullopt;
+    }
+    if (sets[i].epoch() > sets[best].epoch()) best = i;
+  }
+  if (hits.size() > 1)
+    std::fprintf(stderr, "trakbox: warning: --sat %s: %zu element sets match; using the newest, epoch %s\n",
+                 key.c_str(), hits.size(), orbit::format_iso8601(sets[best].epoch(), 3).c_str());
+  return best;
+}
+
+// The sets named by --sat (in command-line order), or the only set of the file. With allow_all,
+// no --sat selects every set.
+std::vector<Elements> select_sats(const std::vector<Elements>& sets, const std::vector<std::string>& keys,
+                                  bool allow_all, const std::string& path, OptionReader& in) {
+  std::vector<Elements> chosen;
+  if (keys.empty()) {
+    if (sets.size() == 1 || allow_all) return sets;
+    in.fail("ELEMENTS", strprintf("'%s' holds %zu element sets; choose one with --sat NAME|NUMBER: ", path.c_str(),
+                                  sets.size()) + list_choices(sets));
+    return chosen;
+  }
+  for (const std::string& key : keys) {
+    std::string why;
+    const auto i = match_sat(sets, key, why);
+    if (!i) {
+      in.fail("--sat", why);
+      return {};
+    }
+    chosen.push_back(sets[*i]);
+  }
+  return chosen;
+}
+
+// --station LAT,LON,HEIGHT_M
+std::optional<orbit::Observer> read_station(OptionReader& in) {
+  const char* expected = "LAT,LON,HEIGHT_M (degrees north -90..90, degrees east -180..360, metres -1000..100000)";
+  const auto text = in.text("station", true, expected);
+  if (!text) return std::nullopt;
+  const auto v = to_double_list(*text);
+  if (!v || v->size() != 3 || !Range{-90.0, 90.0}.contains((*v)[0]) || !Range{-180.0, 360.0}.contains((*v)[1]) ||
+      !Range{-1000.0, 100000.0}.contains((*v)[2])) {
+    in.fail("--station", std::string("expected ") + expected + ", found '" + *text + "'");
+    return std::nullopt;
+  }
+  double lon = (*v)[1];
+  if (lon > 180.0) lon -= 360.0;
+  return orbit::Observer{(*v)[0], lon, (*v)[2]};
+}
+
+std::optional<UtcTime> read_time(OptionReader& in, std::string_view name) {
+  const char* expected = "ISO8601 UTC (YYYY-MM-DD or YYYY-MM-DDTHH:MM[:SS[.fff]][Z])";
+  const auto text = in.text(name, true, expected);
+  if (!text) return std::nullopt;
+  const auto t = orbit::parse_iso8601(*text);
+  if (!t) in.fail(OptionReader::option_label(name), std::string("expected ") + expected + ", found '" + *text + "'");
+  return t;
+}
+
+orbit::EarthOrientation read_dut1(OptionReader& in) {
+  const auto v = in.number("dut1", false, "S, UT1-UTC in seconds (-1 < S < 1)", Range{-1.0, 1.0, true, true});
+  return {v.value_or(0.0)};
+}
+
+OutputFormat read_format(OptionReader& in) {
+  const bool csv = in.flag("csv"), json = in.flag("json");
+  if (csv && json) in.fail("--json", "expected at most one of --csv and --json");
+  return csv ? OutputFormat::csv : json ? OutputFormat::json : OutputFormat::table;
+}
+
+// Common front matter of every command: options, --help, one ELEMENTS argument.
+struct Command {
+  const char* name;
+  const char* synopsis;
+  const char* description;
+  std::vector<OptionSpec> specs;
+};
+
+std::string usage(const Command& c) {
+  return std::string("usage: trakbox ") + c.name + " " + c.synopsis + "\n\n" + c.description + "\n\noptions:\n" +
+         describe_options(c.specs);
+}
+
+int usage_error(const Command& c, const ArgError& e) {
+  std::fprintf(stderr, "trakbox %s: %s (see trakbox %s --help)\n", c.name, e.text().c_str(), c.name);
+  return kExitUsage;
+}
+
+// Parses args; returns the exit code when the command is already done (help or error).
+std::optional<int> parse_command(const Command& c, const std::vector<std::string>& args, ParsedOptions& parsed,
+                                 std::string& elements_path) {
+  ParseOutcome po = parse_options(args, c.specs);
+  if (po.error) return usage_error(c, *po.error);
+  parsed = std::move(po.options);
+  if (parsed.has("help")) {
+    out(usage(c));
+    return kExitOk;
+  }
+  const auto& pos = parsed.positional();
+  if (pos.empty()) return usage_error(c, {"ELEMENTS", std::string("missing; expected ") + kElementsHelp});
+  if (pos.size() > 1) return usage_error(c, {pos[1], "unexpected argument (ELEMENTS is given once)"});
+  elements_path = pos[0];
+  return std::nullopt;
+}
+
+// ---------------------------------------------------------------------------------------------
+// propagate
+
+const Command kPropagate{
+    "propagate", "ELEMENTS [--sat NAME|NUMBER] --start MIN --stop MIN --step MIN",
+    "Prints SGP4/SDP4 state vectors in the TEME frame, one line per time: minutes from epoch, x y z\n"
+    "(km) and xdot ydot zdot (km/s), as Vallado's tcppver.out. The last line is --stop itself when\n"
+    "the steps do not land on it. When propagation fails, a line '# sgp4 error N at tsince T min\n"
+    "(UTC): meaning' ends the output and the exit status is 1.",
+    {{"sat", "NAME|NUMBER", "satellite by name (exact, then any case) or catalog number"},
+     {"start", "MIN", "first time, minutes from the element-set epoch (may be negative)"},
+     {"stop", "MIN", "last time, minutes from epoch (>= --start)"},
+     {"step", "MIN", "minutes between lines (> 0)"},
+     {"help", "", "show this help"}}};
+
+}  // namespace
+
+int run_propagate(std::vector<std::string> args) {
+  const Command& c = kPropagate;
+  ParsedOptions parsed;
+  std::string path;
+  if (auto done = parse_command(c, args, parsed, path)) return *done;
+  OptionReader in(parsed);
+  const auto start = in.number("start", true, "MIN, minutes from epoch");
+  const auto stop = in.number("stop", true, "MIN, minutes from epoch");
+  const auto step = in.number("step", true, "MIN, a number of minutes > 0", Range{0.0, std::nullopt, true});
+  if (in.ok() && *stop < *start)
+    in.fail("--stop", strprintf("expected MIN >= --start (%g), found '%s'", *start, parsed.value("stop")->c_str()));
+  if (in.ok() && (*stop - *start) / *step > 1e7)
+    in.fail("--step", "too small: more than 10000000 lines between --start and --stop");
+  if (!in.ok()) return usage_error(c, *in.error());
+  const LoadedElements loaded = load_elements(path);
+  if (loaded.error) return usage_error(c, *loaded.error);
+  const std::vector<Elements> sats = select_sats(loaded.sets, parsed.values("sat"), false, path, in);
+  if (!in.ok()) return usage_error(c, *in.error());
+
+  const orbit::Sgp4 sat(sats.front());
+  auto emit = [&](double tsince) {
+    const orbit::Propagation p = sat.propagate_minutes(tsince);
+    if (!p.ok()) {
+      out(strprintf("# sgp4 error %d at tsince %.8f min (%s): %s\n", static_cast<int>(p.error), tsince,
+                    orbit::format_iso8601(orbit::add_minutes(sat.epoch(), tsince), 6).c_str(),
+                    orbit::describe(p.error)));
+      return false;
+    }
+    const orbit::StateVector& s = p.state;
+    // testcpp.cpp's format: " %16.8f %16.8f %16.8f %16.8f %12.9f %12.9f %12.9f".
+    out(strprintf(" %16.8f %16.8f %16.8f %16.8f %12.9f %12.9f %12.9f\n", tsince, s.r_km[0], s.r_km[1], s.r_km[2],
+                  s.v_km_s[0], s.v_km_s[1], s.v_km_s[2]));
+    return true;
+  };
+  // Times start + i * step (multiplied, not summed, so no drift); a step that lands within
+  // rounding of --stop counts as landing on it, so --stop is printed once.
+  const double tol = 1e-9 * std::max(1.0, std::abs(*stop));
+  for (std::int64_t i = 0;; ++i) {
+    const double t = *start + static_cast<double>(i) * *step;
+    if (t >= *stop - tol) break;
+    if (!emit(t)) return kExitFailure;
+  }
+  return emit(*stop) ? kExitOk : kExitFailure;
+}
+
+// ---------------------------------------------------------------------------------------------
+// schedule
+
+namespace {
+
+const Command kSchedule{
+    "schedule",
+    "ELEMENTS [--sat NAME|NUMBER] --station LAT,LON,HEIGHT_M --start ISO8601 --step SECONDS --count N\n"
+    "                        [--freq HZ] [--dut1 S] [--csv|--json]",
+    "The TrakBox menu-2 schedule: where one satellite is, seen from the station, at --count times\n"
+    "--step seconds apart. Azimuth/elevation (deg), phase (256ths of an orbit), Doppler shift at\n"
+    "--freq (Hz, + approaching), range (km), range rate (km/s, + receding), and the sub-satellite\n"
+    "point (altitude km above the WGS-84 ellipsoid, latitude, longitude). CSV and JSON columns:\n"
+    "utc, az_deg, el_deg, range_km, range_rate_km_s, alt_km, lat_deg, lon_deg, phase256, doppler_hz.",
+    {{"sat", "NAME|NUMBER", "satellite by name (exact, then any case) or catalog number"},
+     {"station", "LAT,LON,HEIGHT_M", "station: degrees north, degrees east, metres above the WGS-84 ellipsoid"},
+     {"start", "ISO8601", "first time, UTC (2018-01-21T03:37:10Z)"},
+     {"step", "SECONDS", "seconds between rows (> 0)"},
+     {"count", "N", "number of rows (1..10000000)"},
+     {"freq", "HZ", "downlink frequency in Hz for the Doppler column (default: none, 0)"},
+     {"dut1", "S", "UT1-UTC in seconds (default 0)"},
+     {"csv", "", "comma-separated values with a header line"},
+     {"json", "", "a JSON array of row objects"},
+     {"help", "", "show this help"}}};
+
+}  // namespace
+
+int run_schedule(std::vector<std::string> args) {
+  const Command& c = kSchedule;
+  ParsedOptions parsed;
+  std::string path;
+  if (auto done = parse_command(c, args, parsed, path)) return *done;
+  OptionReader in(parsed);
+  const auto station = read_station(in);
+  const auto start = read_time(in, "start");
+  const auto step_s = in.number("step", true, "SECONDS, a number > 0 (at most one day)", Range{0.0, 86400.0, true});
+  const auto count = in.integer("count", true, "N, a whole number 1..10000000", Range{1.0, 1e7});
+  const auto freq = in.integer("freq", false, "HZ, a whole number of hertz >= 0", Range{0.0, 1e12});
+  const orbit::EarthOrientation eo = read_dut1(in);
+  const OutputFormat format = read_format(in);
+  std::chrono::microseconds step{0};
+  if (in.ok()) {
+    step = std::chrono::microseconds(std::llround(*step_s * 1e6));
+    if (step.count() <= 0) in.fail("--step", "expected SECONDS, at least one microsecond");
+  }
+  if (!in.ok()) return usage_error(c, *in.error());
+  const LoadedElements loaded = load_elements(path);
+  if (loaded.error) return usage_error(c, *loaded.error);
+  const std::vector<Elements> sats = select_sats(loaded.sets, parsed.values("sat"), false, path, in);
+  if (!in.ok()) return usage_error(c, *in.error());
+  if (sats.size() > 1) return usage_error(c, {"--sat", "expected one satellite for a schedule"});
+
+  const orbit::Sgp4 sat(sats.front());
+  const int decimals = seconds_decimals(*start, step);
+  const double f = freq ? static_cast<double>(*freq) : 0.0;
+
+  if (format == OutputFormat::csv)
+    out("utc,az_deg,el_deg,range_km,range_rate_km_s,alt_km,lat_deg,lon_deg,phase256,doppler_hz\n");
+  if (format == OutputFormat::json) out("[");
+  if (format == OutputFormat::table) {
+    out(strprintf("%s  station %.4f, %.4f, %.0f m  elements epoch %s%s\n", choice_label(sats.front()).c_str(),
+                  station->lat_deg, station->lon_deg, station->height_m,
+                  orbit::format_iso8601(sats.front().epoch(), 0).c_str(),
+                  freq ? strprintf("  Doppler at %lld Hz", static_cast<long long>(*freq)).c_str() : ""));
+    const int time_width = static_cast<int>(manual_time(*start, decimals).size());
+    out(strprintf("%-*s  %-11s  %6s  %8s  %10s  %10s  %8s  %8s\n", time_width,
+                  "DATE       TIME", "AZ/EL", "Phase", "Doppler", "Range km", "Alt km", "Lat deg", "Lon deg"));
+  }
+  int status = kExitOk;
+  for (std::int64_t i = 0; i < *count; ++i) {
+    const UtcTime t = *start + step * i;
+    const orbit::Observation o = orbit::observe(sat, *station, t, eo);
+    if (!o.ok()) {
+      std::fprintf(stderr, "trakbox schedule: %s: sgp4 error %d at %s: %s; no positions from then on\n",
+                   choice_label(sats.front()).c_str(), static_cast<int>(o.error),
+                   orbit::format_iso8601(t, decimals).c_str(), orbit::describe(o.error));
+      status = kExitFailure;
+      break;
+    }
+    const double doppler = orbit::doppler_shift_hz(f, o.look.range_rate_km_s);
+    switch (format) {
+      case OutputFormat::csv:
+        out(strprintf("%s,%.6f,%.6f,%.6f,%.9f,%.6f,%.6f,%.6f,%.4f,%.3f\n", orbit::format_iso8601(t, decimals).c_str(),
+                      o.look.az_deg, o.look.el_deg, o.look.range_km, o.look.range_rate_km_s, o.sub_point.alt_km,
+                      o.sub_point.lat_deg, o.sub_point.lon_deg, o.phase256, doppler));
+        break;
+      case OutputFormat::json:
+        out(strprintf("%s\n  {\"utc\": %s, \"az_deg\": %.6f, \"el_deg\": %.6f, \"range_km\": %.6f, "
+                      "\"range_rate_km_s\": %.9f, \"alt_km\": %.6f, \"lat_deg\": %.6f, \"lon_deg\": %.6f, "
+                      "\"phase256\": %.4f, \"doppler_hz\": %.3f}",
+                      i ? "," : "", json_string(orbit::format_iso8601(t, decimals)).c_str(), o.look.az_deg,
+                      o.look.el_deg, o.look.range_km, o.look.range_rate_km_s, o.sub_point.alt_km, o.sub_point.lat_deg,
+                      o.sub_point.lon_deg, o.phase256, doppler));
+        break;
+      case OutputFormat::table:
+        out(strprintf("%s  %5.1f/%5.1f  %6.1f  %8s  %10.1f  %10.1f  %8.1f  %8.1f\n", manual_time(t, decimals).c_str(),
+                      o.look.az_deg, o.look.el_deg, o.phase256,
+                      freq ? strprintf("%+.0f", doppler).c_str() : "-", o.look.range_km, o.sub_point.alt_km,
+                      o.sub_point.lat_deg, o.sub_point.lon_deg));
+        break;
+    }
+  }
+  if (format == OutputFormat::json) out("\n]\n");
+  return status;
+}
+
+// ---------------------------------------------------------------------------------------------
+// passes
+
+namespace {
+
+const Command kPasses{
+    "passes",
+    "ELEMENTS [--sat NAME|NUMBER]... --station LAT,LON,HEIGHT_M --start ISO8601 --hours H\n"
+    "                      [--min-el DEG] [--dut1 S] [--csv|--json]",
+    "Passes over the station between --start and --start + --hours, sorted by AOS: AOS and LOS are\n"
+    "the crossings of -2.0 deg elevation (the manual's AOS rule), TCA the time of maximum elevation.\n"
+    "Without --sat, every satellite of the file. CSV and JSON columns: sat, aos_utc, tca_utc, los_utc,\n"
+    "max_el_deg, aos_az_deg, los_az_deg. A pass already up at --start begins there; one still up at\n"
+    "the end stops there (marked < and > in the table).",
+    {{"sat", "NAME|NUMBER", "satellite by name (exact, then any case) or catalog number", true},
+     {"station", "LAT,LON,HEIGHT_M", "station: degrees north, degrees east, metres above the WGS-84 ellipsoid"},
+     {"start", "ISO8601", "start of the window, UTC"},
+     {"hours", "H", "length of the window in hours (> 0, at most 8784)"},
+     {"min-el", "DEG", "only passes whose maximum elevation reaches DEG (default: all)"},
+     {"dut1", "S", "UT1-UTC in seconds (default 0)"},
+     {"csv", "", "comma-separated values with a header line"},
+     {"json", "", "a JSON array of pass objects"},
+     {"help", "", "show this help"}}};
+
+struct SatPass {
+  std::string sat;
+  orbit::Pass pass;
+};
+
+}  // namespace
+
+int run_passes(std::vector<std::string> args) {
+  const Command& c = kPasses;
+  ParsedOptions parsed;
+  std::string path;
+  if (auto done = parse_command(c, args, parsed, path)) return *done;
+  OptionReader in(parsed);
+  const auto station = read_station(in);
+  const auto start = read_time(in, "start");
+  const auto hours = in.number("hours", true, "H, a number of hours > 0 (at most 8784)", Range{0.0, 8784.0, true});
+  const auto min_el = in.number("min-el", false, "DEG, an elevation -90..90", Range{-90.0, 90.0});
+  const orbit::EarthOrientation eo = read_dut1(in);
+  const OutputFormat format = read_format(in);
+  if (!in.ok()) return usage_error(c, *in.error());
+  const LoadedElements loaded = load_elements(path);
+  if (loaded.error) return usage_error(c, *loaded.error);
+  const std::vector<Elements> sats = select_sats(loaded.sets, parsed.values("sat"), true, path, in);
+  if (!in.ok()) return usage_error(c, *in.error());
+
+  const UtcTime stop = orbit::add_seconds(*start, *hours * 3600.0);
+  orbit::PassOptions options;
+  options.horizon_deg = orbit::kAosThresholdDeg;
+  if (min_el) options.min_max_elevation_deg = *min_el;
+  std::vector<SatPass> passes;
+  for (const Elements& e : sats) {
+    const orbit::Sgp4 sat(e);
+    const std::string label = trim(e.name).empty() ? std::to_string(e.catalog_number) : trim(e.name);
+    for (const orbit::Pass& p : orbit::find_passes(sat, *station, *start, stop, options, eo))
+      passes.push_back({label, p});
+  }
+  std::stable_sort(passes.begin(), passes.end(),
+                   [](const SatPass& a, const SatPass& b) { return a.pass.aos < b.pass.aos; });
+
+  auto iso3 = [](UtcTime t) { return orbit::format_iso8601(t, 3); };
+  switch (format) {
+    case OutputFormat::csv:
+      out("sat,aos_utc,tca_utc,los_utc,max_el_deg,aos_az_deg,los_az_deg\n");
+      for (const SatPass& s : passes)
+        out(strprintf("%s,%s,%s,%s,%.4f,%.4f,%.4f\n", csv_field(s.sat).c_str(), iso3(s.pass.aos).c_str(),
+                      iso3(s.pass.tca).c_str(), iso3(s.pass.los).c_str(), s.pass.max_el_deg, s.pass.aos_az_deg,
+                      s.pass.los_az_deg));
+      break;
+    case OutputFormat::json:
+      out("[");
+      for (std::size_t i = 0; i < passes.size(); ++i) {
+        const SatPass& s = passes[i];
+        out(strprintf("%s\n  {\"sat\": %s, \"aos_utc\": %s, \"tca_utc\": %s, \"los_utc\": %s, \"max_el_deg\": %.4f, "
+                      "\"aos_az_deg\": %.4f, \"los_az_deg\": %.4f}",
+                      i ? "," : "", json_string(s.sat).c_str(), json_string(iso3(s.pass.aos)).c_str(),
+                      json_string(iso3(s.pass.tca)).c_str(), json_string(iso3(s.pass.los)).c_str(), s.pass.max_el_deg,
+                      s.pass.aos_az_deg, s.pass.los_az_deg));
+      }
+      out("\n]\n");
+      break;
+    case OutputFormat::table: {
+      out(strprintf("station %.4f, %.4f, %.0f m  from %s for %g h  AOS/LOS at %.1f deg\n", station->lat_deg,
+                    station->lon_deg, station->height_m, orbit::format_iso8601(*start, 0).c_str(), *hours,
+                    orbit::kAosThresholdDeg));
+      out(strprintf("%-24s  %-20s  %-9s  %-9s  %6s  %6s  %6s  %8s\n", "SAT", "AOS (UTC)", "TCA", "LOS", "MAX EL",
+                    "AOS AZ", "LOS AZ", "DURATION"));
+      for (const SatPass& s : passes) {
+        const std::string aos = manual_time(s.pass.aos, 0), tca = manual_time(s.pass.tca, 0),
+                          los = manual_time(s.pass.los, 0);
+        const auto dur = std::chrono::duration_cast<std::chrono::seconds>(s.pass.los - s.pass.aos).count();
+        out(strprintf("%-24.24s  %s%c  %s   %s%c  %6.1f  %6.1f  %6.1f  %5lld:%02lld\n", s.sat.c_str(), aos.c_str(),
+                      s.pass.up_at_start ? '<' : ' ', tca.substr(11).c_str(), los.substr(11).c_str(),
+                      s.pass.up_at_end ? '>' : ' ', s.pass.max_el_deg, s.pass.aos_az_deg, s.pass.los_az_deg,
+                      static_cast<long long>(dur / 60), static_cast<long long>(dur % 60)));
+      }
+      if (passes.empty()) out("no passes\n");
+      break;
+    }
+  }
+  return kExitOk;
+}
+
+std::string orbit_commands_summary() {
+  return "  propagate   SGP4 state vectors (TEME) from minutes after epoch, as Vallado's tcppver.out\n"
+         "  schedule    the menu-2 table: look angles, phase, Doppler, range and sub-point at fixed steps\n"
+         "  passes      AOS, TCA and LOS of passes over the station\n";
+}
+
+}  // namespace tb::app

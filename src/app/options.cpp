@@ -1,0 +1,181 @@
+#include "app/options.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
+namespace tb::app {
+namespace {
+
+const OptionSpec* find_spec(const std::vector<OptionSpec>& specs, std::string_view name) {
+  for (const OptionSpec& s : specs)
+    if (s.name == name) return &s;
+  return nullptr;
+}
+
+bool looks_like_number(std::string_view word) {
+  return word.size() >= 2 && word[0] == '-' &&
+         ((word[1] >= '0' && word[1] <= '9') || word[1] == '.');
+}
+
+std::string quoted(std::string_view s) { return "'" + std::string(s) + "'"; }
+
+}  // namespace
+
+bool ParsedOptions::has(std::string_view name) const { return values_.find(name) != values_.end(); }
+
+std::optional<std::string> ParsedOptions::value(std::string_view name) const {
+  const auto it = values_.find(name);
+  if (it == values_.end() || it->second.empty()) return std::nullopt;
+  return it->second.back();
+}
+
+std::vector<std::string> ParsedOptions::values(std::string_view name) const {
+  const auto it = values_.find(name);
+  return it == values_.end() ? std::vector<std::string>{} : it->second;
+}
+
+ParseOutcome parse_options(const std::vector<std::string>& args, const std::vector<OptionSpec>& specs) {
+  ParseOutcome out;
+  auto fail = [&](std::string argument, std::string message) {
+    out.error = ArgError{std::move(argument), std::move(message)};
+    return out;
+  };
+  bool options_ended = false;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& word = args[i];
+    if (options_ended || word == "-" || word.empty() || word[0] != '-' || looks_like_number(word)) {
+      out.options.positional_.push_back(word);
+      continue;
+    }
+    if (word == "--") {
+      options_ended = true;
+      continue;
+    }
+    std::string name;
+    std::optional<std::string> inline_value;
+    if (word.rfind("--", 0) == 0) {
+      const std::size_t eq = word.find('=');
+      name = word.substr(2, eq == std::string::npos ? std::string::npos : eq - 2);
+      if (eq != std::string::npos) inline_value = word.substr(eq + 1);
+    } else if (word == "-h" && find_spec(specs, "help")) {
+      name = "help";
+    } else {
+      return fail(word, "unknown option (options are written --name)");
+    }
+    const std::string label = "--" + name;
+    const OptionSpec* spec = find_spec(specs, name);
+    if (!spec) return fail(label, "unknown option");
+    std::vector<std::string>& slot = out.options.values_[spec->name];
+    if (!slot.empty() && !spec->repeatable) return fail(label, "given more than once");
+    if (!spec->takes_value()) {
+      if (inline_value) return fail(label, "takes no value, found " + quoted(*inline_value));
+      slot.emplace_back();
+      continue;
+    }
+    if (inline_value) {
+      slot.push_back(*inline_value);
+      continue;
+    }
+    if (i + 1 >= args.size() || args[i + 1].rfind("--", 0) == 0)
+      return fail(label, "expected " + spec->value_name + " after it");
+    slot.push_back(args[++i]);
+  }
+  return out;
+}
+
+std::string describe_options(const std::vector<OptionSpec>& specs) {
+  std::string text;
+  for (const OptionSpec& s : specs) {
+    std::string left = "  --" + s.name + (s.takes_value() ? " " + s.value_name : "");
+    if (left.size() < 26) left.resize(26, ' ');
+    else left += "  ";
+    text += left + s.help + (s.repeatable ? " (repeatable)" : "") + "\n";
+  }
+  return text;
+}
+
+std::optional<double> to_double(std::string_view text) {
+  if (text.empty() || text.size() > 64) return std::nullopt;
+  const char c0 = text[0];
+  if (!(c0 == '-' || c0 == '+' || c0 == '.' || (c0 >= '0' && c0 <= '9'))) return std::nullopt;
+  const std::string s(text);
+  char* end = nullptr;
+  errno = 0;
+  const double v = std::strtod(s.c_str(), &end);
+  if (end != s.c_str() + s.size() || errno == ERANGE || !std::isfinite(v)) return std::nullopt;
+  // strtod accepts hexadecimal and "inf"/"nan": only plain decimal numbers are meant here.
+  if (s.find_first_of("xXnN") != std::string::npos) return std::nullopt;
+  return v;
+}
+
+std::optional<std::int64_t> to_int64(std::string_view text) {
+  if (text.empty() || text.size() > 20) return std::nullopt;
+  std::size_t i = (text[0] == '-' || text[0] == '+') ? 1 : 0;
+  if (i == text.size()) return std::nullopt;
+  for (std::size_t k = i; k < text.size(); ++k)
+    if (text[k] < '0' || text[k] > '9') return std::nullopt;
+  const std::string s(text);
+  errno = 0;
+  char* end = nullptr;
+  const long long v = std::strtoll(s.c_str(), &end, 10);
+  if (errno == ERANGE || end != s.c_str() + s.size()) return std::nullopt;
+  return static_cast<std::int64_t>(v);
+}
+
+std::optional<std::vector<double>> to_double_list(std::string_view text, char separator) {
+  std::vector<double> out;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t end = text.find(separator, start);
+    const auto item = to_double(text.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start));
+    if (!item) return std::nullopt;
+    out.push_back(*item);
+    if (end == std::string_view::npos) break;
+    start = end + 1;
+  }
+  return out;
+}
+
+bool Range::contains(double v) const {
+  if (min && (min_exclusive ? !(v > *min) : !(v >= *min))) return false;
+  if (max && (max_exclusive ? !(v < *max) : !(v <= *max))) return false;
+  return true;
+}
+
+void OptionReader::fail(std::string argument, std::string message) {
+  if (!error_) error_ = ArgError{std::move(argument), std::move(message)};
+}
+
+std::optional<std::string> OptionReader::text(std::string_view name, bool required, std::string_view expected) {
+  auto v = options_.value(name);
+  if (!v && required) fail(option_label(name), "missing; expected " + std::string(expected));
+  return v;
+}
+
+std::optional<double> OptionReader::number(std::string_view name, bool required, std::string_view expected,
+                                           const Range& range) {
+  const auto t = text(name, required, expected);
+  if (!t) return std::nullopt;
+  const auto v = to_double(*t);
+  if (!v || !range.contains(*v)) {
+    fail(option_label(name), "expected " + std::string(expected) + ", found " + quoted(*t));
+    return std::nullopt;
+  }
+  return v;
+}
+
+std::optional<std::int64_t> OptionReader::integer(std::string_view name, bool required, std::string_view expected,
+                                                  const Range& range) {
+  const auto t = text(name, required, expected);
+  if (!t) return std::nullopt;
+  const auto v = to_int64(*t);
+  if (!v || !range.contains(static_cast<double>(*v))) {
+    fail(option_label(name), "expected " + std::string(expected) + ", found " + quoted(*t));
+    return std::nullopt;
+  }
+  return v;
+}
+
+}  // namespace tb::app
