@@ -71,6 +71,29 @@ void sin_cos(double x, double& s, double& c) {
 #endif
 }
 
+// atan2 from a minimax polynomial: |error| < 6e-9 rad (2e7 + 5e7 points against std::atan2, asin and
+// acos), a few times faster. Used only inside the bounds, which carry kFastAtanErr on the safe side.
+constexpr double kFastAtanErr = 2e-8;
+double fast_atan2(double y, double x) {
+  const double ax = std::abs(x), ay = std::abs(y);
+  const double mx = std::max(ax, ay), mn = std::min(ax, ay);
+  if (mx == 0.0) return 0.0;
+  const double a = mn / mx, s = a * a;
+  double r = a * (0.9999998863824159 +
+                  s * (-0.33332597025546035 +
+                       s * (0.19985906731337763 +
+                            s * (-0.14161228977057888 +
+                                 s * (0.1049894535543198 +
+                                      s * (-0.07234855996589841 +
+                                           s * (0.03978120868453937 +
+                                                s * (-0.014401349336020525 + s * 0.0024567225469432352))))))));
+  if (ay > ax) r = 0.5 * kPi - r;
+  if (x < 0.0) r = kPi - r;
+  return y < 0.0 ? -r : r;
+}
+double fast_asin(double x) { return fast_atan2(x, std::sqrt(std::max(0.0, 1.0 - x * x))); }
+double fast_acos(double x) { return fast_atan2(std::sqrt(std::max(0.0, 1.0 - x * x)), x); }
+
 double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
 Vec3 cross(const Vec3& a, const Vec3& b) {
@@ -123,15 +146,15 @@ Vec3 accel(const StateVector& e) {
 
 // The angles of a sample that the geometric bounds use (computed only where a step is planned).
 struct Angles {
-  double theta = 0.0;    // geocentric angle station - satellite (only when asked for)
-  double beta, du;       // du in (-pi, pi]
+  double theta = 0.0;    // geocentric angle station - satellite (only when asked for), at most this
+  double beta, du;       // beta at most this; du in (-pi, pi] to kFastAtanErr (along_track allows)
   double sin_b, cos_b;   // of beta
   Angles(const Sample& s, bool with_theta)
-      : beta(std::asin(std::min(std::abs(s.sin_beta), 1.0))),
-        du(std::atan2(s.du_y, s.du_x)),
+      : beta(std::max(0.0, fast_asin(std::min(std::abs(s.sin_beta), 1.0)) - kFastAtanErr)),
+        du(fast_atan2(s.du_y, s.du_x)),
         sin_b(std::min(std::abs(s.sin_beta), 1.0)),
         cos_b(std::sqrt(1.0 - sin_b * sin_b)) {
-    if (with_theta) theta = std::acos(std::clamp(s.cos_theta, -1.0, 1.0));
+    if (with_theta) theta = std::max(0.0, fast_acos(std::clamp(s.cos_theta, -1.0, 1.0)) - kFastAtanErr);
   }
 };
 
@@ -374,7 +397,7 @@ LookAngles Searcher::look(const StateVector& ecef, bool all) const {
 double Searcher::lambda(double r, bool low) const {
   const double x = rs_ * (low ? cos_e_low_ : cos_e_high_) / r;
   if (x >= 1.0) return kPi;
-  return std::min(kPi, 0.5 * kPi - (low ? e_low_ : e_high_) - std::asin(x));
+  return std::min(kPi, 0.5 * kPi - (low ? e_low_ : e_high_) - fast_asin(x) + kFastAtanErr);
 }
 
 double Searcher::cos_lambda(double r, bool low, double margin) const {
@@ -539,7 +562,7 @@ double Searcher::along_track(const Sample& s, const Angles& g, double span, bool
     if (cos_lam <= 0.0) return 0.0;
     const double c = cos_lam / cos_beta_lo;
     if (c >= 1.0) return span;
-    const double u = std::acos(c);
+    const double u = fast_acos(c) + 2.0 * kFastAtanErr;  // wider by the errors of u and du
     if (mode == kBack) {
       if (du > u) x = (du - u) / w_hi;                  // came from the window's far edge
       else if (du < -u) x = (du + kTwoPi - u) / w_hi;   // came round the orbit
@@ -555,7 +578,7 @@ double Searcher::along_track(const Sample& s, const Angles& g, double span, bool
     const double c = cos_lam / cos_beta_hi;
     if (c >= 1.0) return 0.0;
     if (du > 0.0 && s.du_x < c * std::hypot(s.du_x, s.du_y)) return 0.0;  // du > u: nothing certain
-    const double u = std::acos(c);
+    const double u = fast_acos(c) - 2.0 * kFastAtanErr;  // narrower by the errors of u and du
     if (mode == kBack) {
       if (std::abs(du) <= u) x = (du + u) / w_hi;
     } else if (du <= u && (du >= -u || covered >= (-u - du) / w_lo || mode == kGuess)) {
