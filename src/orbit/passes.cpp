@@ -60,7 +60,7 @@ constexpr double kAngleMargin = 2e-4;        // rad, on horizon angles
 constexpr double kMaxElTolerance = 2e-5;     // sin(el): hidden maxima below this are not chased
 constexpr double kTaylorAngle = 5e-7;        // rad: error allowed to the model step onto a maximum
 constexpr double kFlatTopShift = 10.0;       // s: flatter maxima are found from F alone
-constexpr double kFarStep = 300.0;           // s: a step this long needs no refinement
+constexpr double kModelStep = 2.0;           // s: a crossing this close is taken from the quadratic model
 
 void sin_cos(double x, double& s, double& c) {
 #if defined(__GNUC__)
@@ -70,6 +70,29 @@ void sin_cos(double x, double& s, double& c) {
   c = std::cos(x);
 #endif
 }
+
+// atan2 from a minimax polynomial: |error| < 6e-9 rad (2e7 + 5e7 points against std::atan2, asin and
+// acos), a few times faster. Used only inside the bounds, which carry kFastAtanErr on the safe side.
+constexpr double kFastAtanErr = 2e-8;
+double fast_atan2(double y, double x) {
+  const double ax = std::abs(x), ay = std::abs(y);
+  const double mx = std::max(ax, ay), mn = std::min(ax, ay);
+  if (mx == 0.0) return 0.0;
+  const double a = mn / mx, s = a * a;
+  double r = a * (0.9999998863824159 +
+                  s * (-0.33332597025546035 +
+                       s * (0.19985906731337763 +
+                            s * (-0.14161228977057888 +
+                                 s * (0.1049894535543198 +
+                                      s * (-0.07234855996589841 +
+                                           s * (0.03978120868453937 +
+                                                s * (-0.014401349336020525 + s * 0.0024567225469432352))))))));
+  if (ay > ax) r = 0.5 * kPi - r;
+  if (x < 0.0) r = kPi - r;
+  return y < 0.0 ? -r : r;
+}
+double fast_asin(double x) { return fast_atan2(x, std::sqrt(std::max(0.0, 1.0 - x * x))); }
+double fast_acos(double x) { return fast_atan2(std::sqrt(std::max(0.0, 1.0 - x * x)), x); }
 
 double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
@@ -97,6 +120,20 @@ struct Sample {
   StateVector ecef;
 };
 
+Vec3 accel(const StateVector& e);
+
+// The state dt seconds on, by a second-order Taylor step (dt of a few seconds: metres).
+StateVector taylor(const StateVector& e, double dt) {
+  if (dt == 0.0) return e;
+  const Vec3 a = accel(e);
+  StateVector out = e;
+  for (int k = 0; k < 3; ++k) {
+    out.r_km[k] += (e.v_km_s[k] + 0.5 * a[k] * dt) * dt;
+    out.v_km_s[k] += a[k] * dt;
+  }
+  return out;
+}
+
 // Earth-fixed acceleration with point-mass gravity: gravity + centrifugal + Coriolis, km/s^2 (for
 // Newton and Taylor steps, never for bounds).
 Vec3 accel(const StateVector& e) {
@@ -109,15 +146,15 @@ Vec3 accel(const StateVector& e) {
 
 // The angles of a sample that the geometric bounds use (computed only where a step is planned).
 struct Angles {
-  double theta = 0.0;    // geocentric angle station - satellite (only when asked for)
-  double beta, du;       // du in (-pi, pi]
+  double theta = 0.0;    // geocentric angle station - satellite (only when asked for), at most this
+  double beta, du;       // beta at most this; du in (-pi, pi] to kFastAtanErr (along_track allows)
   double sin_b, cos_b;   // of beta
   Angles(const Sample& s, bool with_theta)
-      : beta(std::asin(std::min(std::abs(s.sin_beta), 1.0))),
-        du(std::atan2(s.du_y, s.du_x)),
+      : beta(std::max(0.0, fast_asin(std::min(std::abs(s.sin_beta), 1.0)) - kFastAtanErr)),
+        du(fast_atan2(s.du_y, s.du_x)),
         sin_b(std::min(std::abs(s.sin_beta), 1.0)),
         cos_b(std::sqrt(1.0 - sin_b * sin_b)) {
-    if (with_theta) theta = std::acos(std::clamp(s.cos_theta, -1.0, 1.0));
+    if (with_theta) theta = std::max(0.0, fast_acos(std::clamp(s.cos_theta, -1.0, 1.0)) - kFastAtanErr);
   }
 };
 
@@ -131,7 +168,8 @@ double envelope_root(double F, double d, double b) {
 // Perturbing acceleration bound (J2 with room for the higher zonals, Sun and Moon, drag), km/s^2.
 double perturbation(double r_lo, double r_hi) {
   const double q = kReSgp4 / r_lo;
-  return 4.5 * kJ2 * kMu / (r_lo * r_lo) * q * q + 3e-13 * r_hi + 1e-8;
+  const double q2 = q * q;
+  return (4.5 * kJ2 * kMu / (kReSgp4 * kReSgp4)) * q2 * q2 + 3e-13 * r_hi + 1e-8;
 }
 
 class Searcher {
@@ -210,8 +248,9 @@ class Searcher {
   Sample refine_max(const Sample& a, const Sample& b, double guess);
   Sample polish_max(const Sample& best, double h);
   UtcTime at(double t) const { return add_seconds(start_, t); }
-  // look_angles(ecef, obs_) with the station's frame computed once (the same arithmetic).
-  LookAngles look(const StateVector& ecef) const;
+  // look_angles(ecef, obs_) with the station's frame computed once (the same arithmetic); only the
+  // azimuth unless `all`.
+  LookAngles look(const StateVector& ecef, bool all = true) const;
 
   const Sgp4& sat_;
   Observer obs_;
@@ -336,7 +375,7 @@ bool Searcher::eval(double t, Sample& out) {
   return true;
 }
 
-LookAngles Searcher::look(const StateVector& ecef) const {
+LookAngles Searcher::look(const StateVector& ecef, bool all) const {
   const Vec3 rho = {ecef.r_km[0] - site_[0], ecef.r_km[1] - site_[1], ecef.r_km[2] - site_[2]};
   const double south = sl_ * co_ * rho[0] + sl_ * so_ * rho[1] - cl_ * rho[2];
   const double east = -so_ * rho[0] + co_ * rho[1];
@@ -349,6 +388,7 @@ LookAngles Searcher::look(const StateVector& ecef) const {
   if (az < 0.0) az += 360.0;
   if (az >= 360.0) az = 0.0;
   la.az_deg = az;
+  if (!all) return la;
   la.el_deg = std::atan2(zen, std::hypot(south, east)) / kDeg;
   la.range_rate_km_s = dot(rho, ecef.v_km_s) / la.range_km;
   return la;
@@ -357,7 +397,7 @@ LookAngles Searcher::look(const StateVector& ecef) const {
 double Searcher::lambda(double r, bool low) const {
   const double x = rs_ * (low ? cos_e_low_ : cos_e_high_) / r;
   if (x >= 1.0) return kPi;
-  return std::min(kPi, 0.5 * kPi - (low ? e_low_ : e_high_) - std::asin(x));
+  return std::min(kPi, 0.5 * kPi - (low ? e_low_ : e_high_) - fast_asin(x) + kFastAtanErr);
 }
 
 double Searcher::cos_lambda(double r, bool low, double margin) const {
@@ -451,7 +491,8 @@ Searcher::Local Searcher::local(const Sample& s, double span) const {
   // Earth-fixed acceleration = gravity + centrifugal (c, |c(t) - c0| <= lc |r(t) - r0|) + perturbations
   // + Coriolis (2 omega |v|, but perpendicular to v: it turns v without changing |v|). So
   // |v(t)| <= |v0| + span (c0 + pert + lc V span): a Gronwall bound when span is short.
-  const double lc = 2.0 * kMu / (L.r_lo * L.r_lo * L.r_lo) + kOmega * kOmega;
+  const double inv_r = 1.0 / L.r_lo;
+  const double lc = 2.0 * kMu * inv_r * inv_r * inv_r + kOmega * kOmega;
   const double pert = perturbation(L.r_lo, L.r_hi);
   const double den = 1.0 - lc * span * span;
   L.V = v_glob_;
@@ -468,14 +509,16 @@ double Searcher::curvature(const Sample& s, const Local& L, double span, double 
   //   B >= A / s + K (|f0| + |f'0| span) + C |f'0| + B (C span + K span^2 / 2),  K = V^2/s^2, C = 2 S / s,
   // S bounding |s'| (|s''| = |s |u'|^2 + rho''.u| <= V^2 / s + A). The crude bound A/s + 2 V^2/s^2 (from
   // |f| <= 1 and |f'| <= V/s) holds regardless.
-  const double crude = L.A / s_lo + 2.0 * L.V * L.V / (s_lo * s_lo);
+  const double inv_s = 1.0 / s_lo;
+  const double K = L.V * L.V * inv_s * inv_s;
+  const double crude = L.A * inv_s + 2.0 * K;
   const double f0 = std::abs(s.F + sin_h_);
-  const double d0 = std::abs(s.Fdot) + fdot_err(s);
-  const double S = std::min(L.V, std::abs(s.sdot) + (L.V * L.V / s_lo + L.A) * span);
-  const double K = L.V * L.V / (s_lo * s_lo), C = 2.0 * S / s_lo;
+  const double d0 = std::abs(s.Fdot) + vel_err_ / s.s;
+  const double S = std::min(L.V, std::abs(s.sdot) + (L.V * L.V * inv_s + L.A) * span);
+  const double C = 2.0 * S * inv_s;
   const double den = 1.0 - C * span - 0.5 * K * span * span;
   if (den <= 0.1) return crude;
-  return std::min(crude, (L.A / s_lo + K * std::min(1.0, f0 + d0 * span) + C * d0) / den);
+  return std::min(crude, (L.A * inv_s + K * std::min(1.0, f0 + d0 * span) + C * d0) / den);
 }
 
 double Searcher::along_track(const Sample& s, const Angles& g, double span, bool below, double covered,
@@ -505,9 +548,8 @@ double Searcher::along_track(const Sample& s, const Angles& g, double span, bool
   // W_z changes only as the plane turns, sin(beta) at most at beta_rate.
   const double n0 = s.w_z - us_[2] * s.sin_beta;
   const double dn = (omega_w + std::abs(us_[2]) * beta_rate) * span;
-  auto over_cos2 = [&](double n) {
-    return n >= 0.0 ? n / (cos_beta_hi * cos_beta_hi) : n / (cos_beta_lo * cos_beta_lo);
-  };
+  const double inv_hi2 = 1.0 / (cos_beta_hi * cos_beta_hi), inv_lo2 = 1.0 / (cos_beta_lo * cos_beta_lo);
+  auto over_cos2 = [&](double n) { return n >= 0.0 ? n * inv_hi2 : n * inv_lo2; };
   const double turn = 2.0 * omega_w / cos_beta_hi;  // the plane's turning moves the foot too
   const double foot_hi = kOmega * over_cos2(n0 + dn) + turn;
   const double foot_lo = kOmega * -over_cos2(-(n0 - dn)) - turn;
@@ -520,7 +562,7 @@ double Searcher::along_track(const Sample& s, const Angles& g, double span, bool
     if (cos_lam <= 0.0) return 0.0;
     const double c = cos_lam / cos_beta_lo;
     if (c >= 1.0) return span;
-    const double u = std::acos(c);
+    const double u = fast_acos(c) + 2.0 * kFastAtanErr;  // wider by the errors of u and du
     if (mode == kBack) {
       if (du > u) x = (du - u) / w_hi;                  // came from the window's far edge
       else if (du < -u) x = (du + kTwoPi - u) / w_hi;   // came round the orbit
@@ -536,7 +578,7 @@ double Searcher::along_track(const Sample& s, const Angles& g, double span, bool
     const double c = cos_lam / cos_beta_hi;
     if (c >= 1.0) return 0.0;
     if (du > 0.0 && s.du_x < c * std::hypot(s.du_x, s.du_y)) return 0.0;  // du > u: nothing certain
-    const double u = std::acos(c);
+    const double u = fast_acos(c) - 2.0 * kFastAtanErr;  // narrower by the errors of u and du
     if (mode == kBack) {
       if (std::abs(du) <= u) x = (du + u) / w_hi;
     } else if (du <= u && (du >= -u || covered >= (-u - du) / w_lo || mode == kGuess)) {
@@ -666,7 +708,8 @@ bool Searcher::refine_crossing(const Sample& a, const Sample& b, bool single, do
       }
       if (!std::isfinite(dx) && near.Fdot != 0.0) dx = -near.F / near.Fdot;
     }
-    if (single && std::abs(dx) < 0.5 * tol_) {
+    // Unique crossing: the model's root is good to far below the precision within kModelStep.
+    if (single && std::abs(dx) < std::max(0.5 * tol_, kModelStep)) {
       t = near.t + dx;
       return true;
     }
@@ -684,6 +727,8 @@ bool Searcher::refine_crossing(const Sample& a, const Sample& b, bool single, do
     widen(m);
     (m.F >= 0.0 ? up : down) = m;
     near = m;
+    // A bracket that has shrunk may now be provably monotonic: its crossing is then unique.
+    if (!single) single = up.t < down.t ? monotone(up, down) : monotone(down, up);
     const double width = std::abs(up.t - down.t);
     slow = width > 0.5 * prev_width ? slow + 1 : 0;
     prev_width = width;
@@ -1071,8 +1116,8 @@ std::optional<Pass> Searcher::next_any() {
   last_step_ = 30.0;
   pass.aos = at(aos_t);
   pass.los = at(los_t);
-  pass.aos_az_deg = look(aos_near.ecef).az_deg;
-  pass.los_az_deg = look(los_near.ecef).az_deg;
+  pass.aos_az_deg = look(taylor(aos_near.ecef, aos_t - aos_near.t), false).az_deg;
+  pass.los_az_deg = look(taylor(los_near.ecef, los_t - los_near.t), false).az_deg;
   return pass;
 }
 
