@@ -21,6 +21,7 @@
 #include "menus/standalone.h"
 #include "menus/term/curses_terminal.h"
 #include "menus/term/line_terminal.h"
+#include "netctl/host_server.h"
 #include "netctl/server.h"
 #include "radio/factory.h"
 #include "rotator/factory.h"
@@ -53,6 +54,8 @@ std::vector<OptionSpec> tracker_option_specs() {
       {"satrak-bind", "ADDR", "address the Satrak server listens on (default 127.0.0.1)"},
       {"rotctld-port", "N", "answer the rotctld protocol on TCP port N (4533 by convention; off by default)"},
       {"rigctld-port", "N", "answer the rigctld protocol on TCP port N (4532 by convention; off by default)"},
+      {"host-port", "N", "host mode (menu 7's commands) on TCP port N (off by default)"},
+      {"listen", "ADDR", "address the host, rotctld and rigctld servers listen on (default 127.0.0.1)"},
   };
 }
 
@@ -221,6 +224,7 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   const auto satrak_port = r.integer("satrak-port", false, "a TCP port 0 to 65535 (0: off)", Range{0, 65535});
   const auto rotctld_port = r.integer("rotctld-port", false, "a TCP port 1 to 65535", Range{1, 65535});
   const auto rigctld_port = r.integer("rigctld-port", false, "a TCP port 1 to 65535", Range{1, 65535});
+  const auto host_port = r.integer("host-port", false, "a TCP port 1 to 65535", Range{1, 65535});
   std::optional<orbit::UtcTime> clock_start;
   if (const auto c = o.value("clock")) {
     clock_start = orbit::parse_iso8601(*c);
@@ -311,6 +315,7 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   std::unique_ptr<satrak::Server> satrak_server;
   std::unique_ptr<netctl::RotctldServer> rotctld;
   std::unique_ptr<netctl::RigctldServer> rigctld;
+  std::unique_ptr<netctl::HostServer> host_server;
   const int sat_port = static_cast<int>(satrak_port.value_or(satrak::kDefaultPort));
   if (sat_port != 0) {
     satrak::UnitOptions uo;
@@ -335,11 +340,27 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
       satrak_unit.reset();
     }
   }
+  const std::string listen = o.value("listen").value_or("127.0.0.1");
+  const char* starting = "";
   try {
-    if (rotctld_port) rotctld = std::make_unique<netctl::RotctldServer>(app.io(), static_cast<std::uint16_t>(*rotctld_port), app.station());
-    if (rigctld_port) rigctld = std::make_unique<netctl::RigctldServer>(app.io(), static_cast<std::uint16_t>(*rigctld_port), app.station());
+    auto opts = [&listen](netctl::ServerOptions so) {
+      so.address = listen;
+      return so;
+    };
+    starting = "--rotctld-port";
+    if (rotctld_port)
+      rotctld = std::make_unique<netctl::RotctldServer>(app.io(), static_cast<std::uint16_t>(*rotctld_port), app.station(),
+                                                         opts(netctl::RotctldServer::named("rotctld")));
+    starting = "--rigctld-port";
+    if (rigctld_port)
+      rigctld = std::make_unique<netctl::RigctldServer>(app.io(), static_cast<std::uint16_t>(*rigctld_port), app.station(),
+                                                         opts(netctl::RotctldServer::named("rigctld")));
+    starting = "--host-port";
+    if (host_port)
+      host_server = std::make_unique<netctl::HostServer>(app.io(), static_cast<std::uint16_t>(*host_port), app.station(),
+                                                          opts(netctl::HostServer::defaults()));
   } catch (const std::exception& e) {
-    return usage_error(std::string(rotctld_port && !rotctld ? "--rotctld-port: " : "--rigctld-port: ") + e.what());
+    return usage_error(std::string(starting) + ": " + e.what());
   }
   app.start(std::chrono::milliseconds(tick_ms.value_or(1000)));
   if (ram_lost || loaded.kind == store::LoadOutcome::Kind::fresh) app.save();
@@ -386,6 +407,7 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   terminal.reset();
   rotctld.reset();
   rigctld.reset();
+  host_server.reset();
   satrak_server.reset();
   if (auto err = app.save()) {
     std::fprintf(stderr, "trakbox: state not saved: %s\n", err->c_str());

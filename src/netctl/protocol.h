@@ -63,14 +63,25 @@ struct Reply {
   bool close = false;  // q / Q: send text, then close
 };
 
-// The interface a server drives: one call a line, in order, on the event loop.
-class LineProtocol {
+// What a LineServer drives: one call a line, in order, on the event loop.
+class LineHandler {
  public:
-  virtual ~LineProtocol() = default;
+  virtual ~LineHandler() = default;
+  // One line without its line end.
+  virtual Reply handle(std::string_view line) = 0;
+  // A line longer than the server's max_line (discarded up to its line end).
+  virtual Reply overlong() const = 0;
+  // Sent to each client as it connects (empty: nothing).
+  virtual std::string greeting() const { return {}; }
+};
+
+// The Hamlib line protocols (rotctld, rigctld).
+class LineProtocol : public LineHandler {
+ public:
   // One line without its newline (a trailing '\r' is ignored).
-  Reply handle(std::string_view line);
+  Reply handle(std::string_view line) override;
   // A line longer than kMaxLineLength (the server discards it up to its newline): RPRT -8.
-  Reply overlong() const;
+  Reply overlong() const override;
 
  protected:
   struct Command {

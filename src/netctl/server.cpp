@@ -21,7 +21,7 @@ class Session;
 }
 
 struct LineServer::Core {
-  LineProtocol* protocol = nullptr;
+  LineHandler* protocol = nullptr;
   ServerOptions options;
   bool open = true;
   std::unordered_map<Session*, std::weak_ptr<Session>> sessions;
@@ -44,6 +44,8 @@ class Session : public std::enable_shared_from_this<Session> {
 
   void start() {
     spdlog::debug("{}: client {} connected", core_->options.name, peer_);
+    if (core_->protocol) queue(core_->protocol->greeting());
+    if (closed_) return;
     read();
   }
 
@@ -90,8 +92,16 @@ class Session : public std::enable_shared_from_this<Session> {
   void feed(const char* p, std::size_t n) {
     const char* const end = p + n;
     const std::size_t max_line = core_->options.max_line;
+    const bool cr = core_->options.cr_ends_line;
     while (p < end && !closed_ && !closing_) {
-      const char* nl = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
+      if (after_cr_) {  // the LF of a CR LF pair: that line has been handled
+        after_cr_ = false;
+        if (*p == '\n') {
+          ++p;
+          continue;
+        }
+      }
+      const char* nl = cr ? line_end(p, end) : static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
       const char* stop = nl ? nl : end;
       if (!discarding_) {
         const std::size_t take = static_cast<std::size_t>(stop - p);
@@ -111,8 +121,15 @@ class Session : public std::enable_shared_from_this<Session> {
         handle_line();
       }
       line_.clear();
+      after_cr_ = *nl == '\r';
       p = nl + 1;
     }
+  }
+
+  static const char* line_end(const char* p, const char* end) {
+    for (; p < end; ++p)
+      if (*p == '\n' || *p == '\r') return p;
+    return nullptr;
   }
 
   void handle_line() {
@@ -157,6 +174,7 @@ class Session : public std::enable_shared_from_this<Session> {
   std::array<char, 4096> buf_{};
   std::string line_;
   bool discarding_ = false;
+  bool after_cr_ = false;  // the last line ended with a CR (cr_ends_line)
   std::string out_;      // queued
   std::string writing_;  // handed to async_write
   bool closing_ = false; // close once out_ and writing_ are sent
@@ -165,7 +183,7 @@ class Session : public std::enable_shared_from_this<Session> {
 
 }  // namespace
 
-LineServer::LineServer(asio::io_context& io, std::uint16_t port, LineProtocol& protocol, ServerOptions options)
+LineServer::LineServer(asio::io_context& io, std::uint16_t port, LineHandler& protocol, ServerOptions options)
     : acceptor_(io), retry_(io), core_(std::make_shared<Core>()) {
   core_->protocol = &protocol;
   core_->options = std::move(options);

@@ -33,14 +33,17 @@ struct ServerOptions {
   std::size_t max_line = kMaxLineLength;   // bytes a line may have, newline excluded
   std::size_t max_output = 64 * 1024;      // bytes of replies queued for one client
   std::size_t max_clients = 16;
-  std::string name = "netctl";             // for the log: "rotctld", "rigctld"
+  std::string name = "netctl";             // for the log: "rotctld", "rigctld", "host"
+  // A CR ends a line as well as a LF (a CR LF pair ends one line): terminal programs send CR.
+  bool cr_ends_line = false;
 };
 
-// A TCP server handing each line of each client to one LineProtocol, in order of arrival.
+// A TCP server handing each line of each client to one LineHandler, in order of arrival; the
+// handler's greeting goes to each client as it connects.
 // Port 0 picks a free port (port() says which). Throws std::system_error when it cannot listen.
 class LineServer {
  public:
-  LineServer(boost::asio::io_context& io, std::uint16_t port, LineProtocol& protocol, ServerOptions options = {});
+  LineServer(boost::asio::io_context& io, std::uint16_t port, LineHandler& handler, ServerOptions options = {});
   ~LineServer();
   LineServer(const LineServer&) = delete;
   LineServer& operator=(const LineServer&) = delete;

@@ -1,10 +1,12 @@
 """Remote control of the real program: trakbox runs (menus on a pipe kept open) with the Satrak
-server and the rotctld/rigctld-compatible endpoints on free loopback ports; `trakbox satrak`,
-Hamlib's own `rotctl -m 2` and `rigctl -m 2` drive it.
+server, the rotctld/rigctld-compatible endpoints and host mode on free loopback ports;
+`trakbox satrak`, Hamlib's own `rotctl -m 2` and `rigctl -m 2`, and a plain TCP client typing host
+mode commands drive it.
 """
 import os
 import re
 import shutil
+import socket
 import subprocess
 import sys
 import tempfile
@@ -21,10 +23,10 @@ def sh(*args, timeout=20):
 
 def main():
     state = tempfile.mkdtemp(prefix="trakbox-remote-")
-    sat_port, rot_port, rig_port = free_port(), free_port(), free_port()
+    sat_port, rot_port, rig_port, host_port = free_port(), free_port(), free_port(), free_port()
     tb = subprocess.Popen([BIN, "--state", state, "--clock", CLOCK, "--clock-rate", "10", "--line",
                            "--satrak-port", str(sat_port), "--rotctld-port", str(rot_port),
-                           "--rigctld-port", str(rig_port)],
+                           "--rigctld-port", str(rig_port), "--host-port", str(host_port)],
                           stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
     try:
         deadline = time.time() + 15
@@ -70,6 +72,40 @@ def main():
         check(code == 0, f"rigctl F: {out} {err}")
         code, out, err = sh("rigctl", "-m", "2", "-r", f"127.0.0.1:{rig_port}", "f")
         check("145950000" in out, f"rigctl f reads back: {out!r} {err!r}")
+
+        # Host mode on TCP: the banner and prompt, AZ/EL moves the antenna, ?A reads it, a bad
+        # command is one ERROR line, Q closes.
+        with socket.create_connection(("127.0.0.1", host_port), timeout=10) as c:
+            def until(marker, limit=10):
+                data = b""
+                end = time.time() + limit
+                while marker not in data:
+                    if time.time() > end:
+                        raise Failure(f"host mode: no {marker!r} in {data!r}")
+                    chunk = c.recv(4096)
+                    if not chunk:
+                        return data
+                    data += chunk
+                return data
+            hello = until(b"TrakBox>>")
+            check(hello.startswith(b"TrakBox host mode.\r\nCommand:"), f"host banner: {hello!r}")
+            c.sendall(b"AZ45 EL20\r")
+            check(until(b"TrakBox>>") == b"TrakBox>>", "AZ/EL answers with the prompt only")
+            c.sendall(b"FDx\r")
+            err = until(b"TrakBox>>")
+            check(err.startswith(b"ERROR FD:") and err.count(b"\r\n") == 1, f"one ERROR line: {err!r}")
+            deadline = time.time() + 40
+            while True:
+                c.sendall(b"?A\r")
+                m = re.match(rb"AZ([\d.]+) EL([\d.]+)\r\nTrakBox>>", until(b"TrakBox>>"))
+                check(m is not None, "?A answers AZxxx.x ELxx.x")
+                if abs(float(m.group(1)) - 45) < 1.5 and abs(float(m.group(2)) - 20) < 1.1:
+                    break
+                if time.time() > deadline:
+                    raise Failure(f"host mode AZ45 EL20: the antenna is at {m.group(0)!r}")
+                time.sleep(0.3)
+            c.sendall(b"Q\r")
+            check(until(b"never") == b"", "Q closes the connection")
     finally:
         try:
             tb.stdin.close()  # input ends: trakbox saves and leaves

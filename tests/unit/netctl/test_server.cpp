@@ -14,6 +14,7 @@
 #include <cmath>
 
 #include "fixture.h"
+#include "netctl/host_server.h"
 #include "netctl/server.h"
 
 using namespace tb;
@@ -85,6 +86,15 @@ class RawClient {
     in_.clear();
     if (!send_all(line + "\n")) return "<send failed>";
     read_until([&](const std::string& s) { return static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n')) >= reply_lines; });
+    std::string r;
+    r.swap(in_);
+    return r;
+  }
+  // Sends bytes as they are; the reply up to (and with) the first `end` after them.
+  std::string exchange(const std::string& bytes, const std::string& end) {
+    in_.clear();
+    if (!send_all(bytes)) return "<send failed>";
+    read_until([&](const std::string& s) { return s.find(end) != std::string::npos; });
     std::string r;
     r.swap(in_);
     return r;
@@ -378,5 +388,69 @@ TEST_CASE("server: connections beyond max_clients are closed; close() drops ever
   CHECK(a.closed_by_peer());
   CHECK(b.closed_by_peer());
   CHECK(lt.on_loop([&] { return rot.client_count(); }) == 0u);
+  lt.stop();
+}
+
+TEST_CASE("host server: the banner and prompt, menu 7's commands over TCP, CR / LF / CR LF lines, Q closes") {
+  SimStation st;
+  boost::asio::io_context io;
+  netctl::HostServer host(io, 0, *st.loop);
+  LoopThread lt(io, st);
+  const std::string prompt = "TrakBox>>";
+  auto ends_with_prompts = [&](std::size_t n) {
+    return [&prompt, n](const std::string& s) {
+      std::size_t count = 0;
+      for (std::size_t at = s.find(prompt); at != std::string::npos; at = s.find(prompt, at + 1)) ++count;
+      return count >= n;
+    };
+  };
+
+  RawClient c(host.port());
+  REQUIRE(c.ok());
+  REQUIRE(c.read_until(ends_with_prompts(1)));
+  CHECK(c.received() ==
+        "TrakBox host mode.\r\nCommand:MUxxx,MDxxx,FUxxx,FDxxx,AZxxx_ELxx,Sxxx,Q,?A,?\r\nTrakBox>>");
+
+  // A terminal program sends CR, a script LF, telnet CR LF: one command each, one prompt each.
+  CHECK(c.send_all("AZ120 EL30\rFD43580000\nMDUSB\r\n"));
+  REQUIRE(c.read_until(ends_with_prompts(4)));
+  CHECK(c.received().substr(c.received().size() - 3 * prompt.size()) == prompt + prompt + prompt);
+  CHECK(lt.on_loop([&] { return st.loop->rotor_control(); }));
+  REQUIRE(eventually(lt, [&] { return st.loop->rotator().status().on_target; }));
+  const rotator::AzEl truth = lt.on_loop([&] { return st.truth(); });
+  CHECK(az_diff(truth.az, 120.0) < 1.1);
+  CHECK(std::abs(truth.el - 30.0) < 1.1);
+  const radio::RadioStatus rs = lt.on_loop([&] { return st.loop->radio().status(); });
+  CHECK(rs.downlink_hz == radio::Hz{435800000});
+  CHECK(rs.downlink_mode == radio::Mode::usb);
+
+  // ?A reports where the antenna is; a bad command gets one ERROR line and the prompt, nothing moves.
+  const std::string a = c.exchange("?A\r", prompt);
+  CAPTURE(a);
+  double az = 0, el = 0;
+  REQUIRE(std::sscanf(a.c_str(), "AZ%lf EL%lf\r\nTrakBox>>", &az, &el) == 2);
+  CHECK(az_diff(az, 120.0) < 1.1);
+  CHECK(std::abs(el - 30.0) < 1.1);
+  CHECK(a.size() == std::string("AZ120.0 EL30.0\r\nTrakBox>>").size());
+  const std::string bad = c.exchange("FD0\r", prompt);
+  CHECK(bad.rfind("ERROR FD: '0' is not a frequency", 0) == 0);
+  CHECK(bad.find("\r\nTrakBox>>") == bad.size() - prompt.size() - 2);
+  CHECK(lt.on_loop([&] { return st.loop->radio().status().downlink_hz; }) == radio::Hz{435800000});
+
+  // Control bytes never reach the reply raw; an overlong line is refused once, then heard again.
+  const std::string garbage = c.exchange(std::string("zz\x01\x7f\n"), prompt);
+  CHECK(garbage.rfind("ERROR unknown command", 0) == 0);
+  CHECK(garbage.find('\x01') == std::string::npos);
+  RawClient d(host.port());
+  REQUIRE(d.read_until(ends_with_prompts(1)));
+  CHECK(d.send_all(std::string(netctl::kMaxHostLine + 10, 'A') + "\r?A\r"));
+  REQUIRE(d.read_until(ends_with_prompts(3)));
+  CHECK(d.received().find("ERROR line too long: at most 256 characters\r\nTrakBox>>") != std::string::npos);
+  CHECK(d.received().find("characters\r\nTrakBox>>AZ1") != std::string::npos);
+
+  // Q closes that client only.
+  CHECK(c.send_all("q\r"));
+  CHECK(c.closed_by_peer());
+  CHECK(eventually(lt, [&] { return host.client_count() == 1; }, 5s));
   lt.stop();
 }
