@@ -5,7 +5,6 @@ from the factory station) with menu S, from 05:39:45. A's antenna follows the sa
 reports the lost link and stops; when A comes back on the same port, B reconnects and A's antenna
 follows again. B's host mode on TCP reads B's view of the antenna meanwhile.
 """
-import math
 import os
 import re
 import shutil
@@ -18,32 +17,12 @@ import time
 from datetime import datetime, timedelta, timezone
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, SOURCE, Failure, check, free_port, run_test  # noqa: E402
+from _tbharness import (BIN, Failure, check, free_port, pointing_error, reap, run_test,  # noqa: E402
+                        satellite_track, sh)
 
 # Past culmination (az 93, el 38 and falling): the resting antennas (North) reach it in seconds.
 START = datetime(2026, 5, 21, 5, 39, 45, tzinfo=timezone.utc)
 CLOCK = START.strftime("%Y-%m-%dT%H:%M:%SZ")
-
-
-def sh(*args, timeout=20):
-    p = subprocess.run(list(args), capture_output=True, text=True, timeout=timeout)
-    return p.returncode, p.stdout, p.stderr
-
-
-def iss_track(at, seconds):
-    """The ISS from the factory station, one row a second from `at` (trakbox's own schedule)."""
-    import json
-    code, out, err = sh(BIN, "schedule", os.path.join(SOURCE, "data", "amateur.tle"), "--sat", "ISS",
-                        "--station", "27.391,128.657,50", "--start", at.strftime("%Y-%m-%dT%H:%M:%S.%fZ"),
-                        "--step", "1", "--count", str(seconds), "--json")
-    check(code == 0, f"schedule: {err}")
-    return json.loads(out)
-
-
-def pointing_error(az1, el1, az2, el2):
-    a1, e1, a2, e2 = map(math.radians, (az1, el1, az2, el2))
-    c = math.sin(e1) * math.sin(e2) + math.cos(e1) * math.cos(e2) * math.cos(a1 - a2)
-    return math.degrees(math.acos(max(-1.0, min(1.0, c))))
 
 
 # Menu 4: Enter keeps callsign, latitude, longitude and height; rotor start North; Enter keeps the
@@ -90,7 +69,7 @@ def follows(port, t0, samples_needed, limit):
         # On the track as it was within the last eight seconds: B's 1 s ticks, its 250 ms STATUS?
         # polls, A's own tick and the simulated slew make the chain lag a few seconds; the dead
         # band (1.06 deg az, 0.18 deg el) and a count of each axis bound the rest.
-        rows = iss_track(now - timedelta(seconds=8), 9)
+        rows = satellite_track(now - timedelta(seconds=8), 9)
         err = min(pointing_error(pos[0], pos[1], r["az_deg"], r["el_deg"]) for r in rows)
         last = (pos, (rows[-1]["az_deg"], rows[-1]["el_deg"]), round(err, 2))
         print(f"  {time.time() - t0:5.1f}s antenna {pos} err {err:.2f}") if os.environ.get("VERBOSE") else None
@@ -188,10 +167,7 @@ def main():
         a.stdin.close()
         check(a.wait(20) == 0, "A leaves cleanly when its input ends")
     finally:
-        for p in procs:
-            if p.poll() is None:
-                p.kill()
-                p.wait()
+        reap(procs)
         shutil.rmtree(state_a, ignore_errors=True)
         shutil.rmtree(state_b, ignore_errors=True)
 
