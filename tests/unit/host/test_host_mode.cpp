@@ -1,9 +1,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
-#include <fstream>
 #include <memory>
-#include <sstream>
 
 #include "host/host_mode.h"
 #include "radio/freqmode.h"
@@ -12,32 +10,17 @@
 #include "rotator/simulated.h"
 #include "station/clock.h"
 #include "store/model.h"
+#include "support/shipped_model.h"
 #include "tracker/station_loop.h"
 
 using namespace tb;
 
 namespace {
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-store::Model shipped_model() {
-  store::Model m;
-  const std::string dir = TRAKBOX_SOURCE_DIR "/data/";
-  const auto sets = orbit::parse_nasa(read_file(dir + "amateur.tle"), "amateur.tle");
-  const auto fm = radio::parse_freqmode(read_file(dir + "freqmode.txt"));
-  m.db = store::make_database(sets.sets, fm.records);
-  return m;
-}
-
 // A whole simulated station (rotator, radio, tracker) with a clock the test moves.
 struct Station {
   explicit Station(bool rotor_control = true, rotator::RotatorPosition start = {})
-      : start_at(start), now(orbit::from_civil(2026, 5, 21, 12, 0, 0)), model(shipped_model()), clock([this] { return now; }),
+      : start_at(start), now(orbit::from_civil(2026, 5, 21, 12, 0, 0)), model(testing::shipped_model()), clock([this] { return now; }),
         tracker(model, clock) {
     model.rotor_control = rotor_control;
     build();

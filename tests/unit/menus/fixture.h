@@ -2,12 +2,11 @@
 // tracker and station loop on the simulated rotator and radio, and a scripted terminal whose waits
 // advance the clock and tick the station (as the event loop would).
 #pragma once
-#include <fstream>
 #include <memory>
-#include <sstream>
 
 #include "menus/menus.h"
 #include "menus/term/script_terminal.h"
+#include "support/shipped_model.h"
 #include "radio/simulated.h"
 #include "rotator/simulated.h"
 #include "station/clock.h"
@@ -15,23 +14,6 @@
 #include "tracker/station_loop.h"
 
 namespace tb::testing {
-
-inline std::string read_file(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-// The shipped data (data/amateur.tle + data/freqmode.txt) as a database.
-inline store::Model shipped_model() {
-  store::Model m;
-  const std::string dir = TRAKBOX_SOURCE_DIR "/data/";
-  const auto sets = orbit::parse_nasa(read_file(dir + "amateur.tle"), "amateur.tle");
-  const auto fm = radio::parse_freqmode(read_file(dir + "freqmode.txt"));
-  m.db = store::make_database(sets.sets, fm.records);
-  return m;
-}
 
 struct MenuFixture {
   explicit MenuFixture(std::string input = {}, orbit::UtcTime start = orbit::from_civil(2026, 5, 21, 12, 0, 0))

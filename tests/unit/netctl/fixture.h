@@ -252,27 +252,13 @@ inline std::vector<std::string> lines(const std::string& s) {
 
 }  // namespace nettest
 
-#include <fstream>
-
-#include "orbit/elements.h"
-#include "radio/freqmode.h"
-#include "store/database.h"
+#include "support/shipped_model.h"
 
 namespace nettest {
 
-// The shipped element sets and freq/mode table (data/), as trakbox loads them.
+// The shipped element sets and freq/mode table (data/), as trakbox loads them, in Tucson.
 inline store::Model shipped_model() {
-  auto read = [](const std::string& path) {
-    std::ifstream in(path);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-  };
-  store::Model m;
-  const std::string dir = TRAKBOX_SOURCE_DIR "/data/";
-  const auto sets = orbit::parse_nasa(read(dir + "amateur.tle"), "amateur.tle");
-  const auto fm = radio::parse_freqmode(read(dir + "freqmode.txt"));
-  m.db = store::make_database(sets.sets, fm.records);
+  store::Model m = tb::testing::shipped_model();
   m.station.lat_deg = 32.259;
   m.station.lon_deg = -110.778;
   m.station.height_m = 842.0;

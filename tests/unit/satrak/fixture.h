@@ -18,6 +18,7 @@
 #include "rotator/simulated.h"
 #include "satrak/commands.h"
 #include "satrak/unit.h"
+#include "support/shipped_model.h"
 #include "tracker/station_loop.h"
 
 namespace satrak_test {
@@ -30,12 +31,7 @@ inline const bool kQuietLog = [] {
   return true;
 }();
 
-inline std::string read_file(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using tb::testing::read_file;
 
 inline void write_file(const fs::path& p, const std::string& text) {
   std::ofstream out(p, std::ios::binary | std::ios::trunc);
@@ -58,11 +54,7 @@ struct TempDir {
 };
 
 inline store::Model tucson_model() {
-  store::Model m;
-  const std::string dir = TRAKBOX_SOURCE_DIR "/data/";
-  const auto sets = orbit::parse_nasa(read_file(dir + "amateur.tle"), "amateur.tle");
-  const auto fm = radio::parse_freqmode(read_file(dir + "freqmode.txt"));
-  m.db = store::make_database(sets.sets, fm.records);
+  store::Model m = testing::shipped_model();
   m.station.lat_deg = 32.259;
   m.station.lon_deg = -110.778;
   m.station.height_m = 842.0;

@@ -1,30 +1,18 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "radio/simulated.h"
 #include "rotator/pass_plan.h"
 #include "rotator/simulated.h"
+#include "support/shipped_model.h"
 #include "tracker/station_loop.h"
 
 using namespace tb;
 
 namespace {
-std::string read_file(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 store::Model shipped(station::RotorStart start, double lat, double lon, double h) {
-  store::Model m;
-  const std::string dir = TRAKBOX_SOURCE_DIR "/data/";
-  const auto sets = orbit::parse_nasa(read_file(dir + "amateur.tle"), "amateur.tle");
-  const auto fm = radio::parse_freqmode(read_file(dir + "freqmode.txt"));
-  m.db = store::make_database(sets.sets, fm.records);
+  store::Model m = testing::shipped_model();
   m.station.rotor_start = start;
   m.station.lat_deg = lat;
   m.station.lon_deg = lon;
