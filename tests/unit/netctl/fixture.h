@@ -27,9 +27,7 @@
 #include <thread>
 #include <vector>
 
-#include "radio/simulated.h"
-#include "rotator/simulated.h"
-#include "tracker/station_loop.h"
+#include "support/sim_station.h"
 
 extern char** environ;
 
@@ -46,12 +44,10 @@ inline const bool kQuietLogs = [] {
 struct SimStation {
   explicit SimStation(store::Model m = {}, bool rotor_control = true)
       : model(std::move(m)), clock(orbit::from_civil(2026, 5, 21, 12, 0, 0)), tracker(model, clock) {
-    auto sim = std::make_unique<rotator::SimulatedRotator>(clock, rotator::SimulatedRotatorParams::matching(model.rotator));
-    rot = sim.get();
-    auto ctl = std::make_unique<rotator::Controller>(model.rotator, model.station.rotor_start, std::move(sim));
-    auto rad = std::make_unique<radio::SimulatedRadio>();
-    radio = rad.get();
-    loop = std::make_unique<tracker::StationLoop>(model, clock, tracker, std::move(ctl), std::move(rad));
+    tb::testing::SimulatedStation sim = tb::testing::simulated_station(model, clock, tracker);
+    rot = sim.rotator;
+    radio = sim.radio;
+    loop = std::move(sim.loop);
     loop->set_rotor_control(rotor_control);
     loop->tick();  // a first reading
   }

@@ -19,6 +19,7 @@
 #include "satrak/commands.h"
 #include "satrak/unit.h"
 #include "support/shipped_model.h"
+#include "support/sim_station.h"
 #include "tracker/station_loop.h"
 
 namespace satrak_test {
@@ -105,10 +106,9 @@ inline double angle_diff(double a, double b) {
 struct Acu {
   explicit Acu(orbit::UtcTime t0, satrak::Settings settings = {}, store::Model m = tucson_model())
       : base(t0), clock([this] { return base; }), model(std::move(m)), tracker(model, clock) {
-    auto sim = std::make_unique<rotator::SimulatedRotator>(clock, rotator::SimulatedRotatorParams::matching(model.rotator));
-    rot = sim.get();
-    auto ctl = std::make_unique<rotator::Controller>(model.rotator, model.station.rotor_start, std::move(sim));
-    loop = std::make_unique<tracker::StationLoop>(model, clock, tracker, std::move(ctl), std::make_unique<radio::SimulatedRadio>());
+    tb::testing::SimulatedStation sim = tb::testing::simulated_station(model, clock, tracker);
+    rot = sim.rotator;
+    loop = std::move(sim.loop);
     fs::create_directories(dir.path / "tle");
     fs::create_directories(dir.path / "images");
     fs::copy_file(TRAKBOX_SOURCE_DIR "/data/amateur.tle", dir.path / "tle" / "amateur.txt");

@@ -2,11 +2,9 @@
 
 #include <cmath>
 
-#include "radio/simulated.h"
 #include "rotator/pass_plan.h"
-#include "rotator/simulated.h"
 #include "support/shipped_model.h"
-#include "tracker/station_loop.h"
+#include "support/sim_station.h"
 
 using namespace tb;
 
@@ -23,12 +21,10 @@ store::Model shipped(station::RotorStart start, double lat, double lon, double h
 struct Station {
   explicit Station(store::Model m, orbit::UtcTime t0)
       : model(std::move(m)), now(t0), clock(now), tracker(model, clock) {
-    auto sim = std::make_unique<rotator::SimulatedRotator>(clock, rotator::SimulatedRotatorParams::matching(model.rotator));
-    rot = sim.get();
-    auto ctl = std::make_unique<rotator::Controller>(model.rotator, model.station.rotor_start, std::move(sim));
-    auto rad = std::make_unique<radio::SimulatedRadio>();
-    radio = rad.get();
-    loop = std::make_unique<tracker::StationLoop>(model, clock, tracker, std::move(ctl), std::move(rad));
+    testing::SimulatedStation sim = testing::simulated_station(model, clock, tracker);
+    rot = sim.rotator;
+    radio = sim.radio;
+    loop = std::move(sim.loop);
   }
   void step(std::chrono::milliseconds dt) {
     now += dt;
