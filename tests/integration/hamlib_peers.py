@@ -75,7 +75,11 @@ def main():
         check(good >= 8, f"rotctl positions never followed the ISS; last antenna/expected {last}")
 
         # The radio: the ISS downlink 437.800 MHz with its Doppler, in 10 Hz steps.
-        code, out, err = sh("rigctl", "-m", "2", "-r", f"127.0.0.1:{rig_port}", "f")
+        for _ in range(3):  # Hamlib 4.5's rigctld resets a connection now and then: ask again
+            code, out, err = sh("rigctl", "-m", "2", "-r", f"127.0.0.1:{rig_port}", "f")
+            if code == 0 and re.search(r"\d", out):
+                break
+            time.sleep(0.1)
         check(code == 0, f"rigctl f: {err}")
         hz = int(re.findall(r"\d+", out)[0])
         e = expected(START + timedelta(seconds=time.time() - t0))
