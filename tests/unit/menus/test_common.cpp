@@ -105,3 +105,29 @@ TEST_CASE("Key questions ignore a bare Enter; the Enter after a Y/N answer goes 
   CHECK(ask_key(u, "File format NASA/AMSAT (N/A) : ", "NA") == 'A');
   CHECK(u.output() == "Are you sure ? [Y/N] ? Y\nFile format NASA/AMSAT (N/A) : A\n");
 }
+
+TEST_CASE("Full screen: a live block keeps a row of its own below it for what follows") {
+  // A 39-row text window (40 rows less the status line), the cursor on its last row: the monitor
+  // line of 6-6 goes there. The window scrolls one line so that the sub-menu printed after the
+  // antenna arrived starts below the last position instead of over it.
+  auto p = term::place_live_block(-1, 38, 0, 1, 39);
+  CHECK(p.scroll == 1);
+  CHECK(p.first_row == 37);
+  CHECK(p.cursor_row == 38);
+  // Redrawn in place afterwards: no further scrolling.
+  p = term::place_live_block(37, 38, 0, 1, 39);
+  CHECK(p.scroll == 0);
+  CHECK(p.first_row == 37);
+  CHECK(p.cursor_row == 38);
+  // With room below, the block starts at the cursor's line (or the next one after a prompt).
+  p = term::place_live_block(-1, 10, 0, 2, 39);
+  CHECK((p.scroll == 0 && p.first_row == 10 && p.cursor_row == 12));
+  p = term::place_live_block(-1, 10, 5, 2, 39);
+  CHECK((p.scroll == 0 && p.first_row == 11 && p.cursor_row == 13));
+  // A block that grows at the bottom scrolls by what it needs.
+  p = term::place_live_block(36, 37, 0, 3, 39);
+  CHECK((p.scroll == 1 && p.first_row == 35 && p.cursor_row == 38));
+  // Taller than the window: from the top, cut at the bottom.
+  p = term::place_live_block(-1, 20, 0, 50, 39);
+  CHECK((p.scroll == 20 && p.first_row == 0 && p.cursor_row == 38));
+}
