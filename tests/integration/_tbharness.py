@@ -231,7 +231,10 @@ class LineUI:
         self._last = m.start()
         return out
 
-    wait = prompt  # a live display: the next line matching rx
+    def wait(self, rx, timeout=10.0, after=None):
+        """A live display: the transcript up to the next text matching rx (`after` is for screens:
+        a stream has nothing old to skip)."""
+        return self.prompt(rx, timeout)
 
     def upload(self, text, eof=True, timeout=10.0):
         """An ASCII upload a line at a time, as the manual asks of a terminal program; each line
@@ -281,51 +284,74 @@ class ScreenUI:
     def screen(self):
         return self.snapshot()[0]
 
+    def _text_area(self, snap):
+        """The snapshot without the status line (the bottom row, which changes every second)."""
+        text, x, y = snap
+        return "\n".join(text.split("\n")[:self.rows - 1]), x, y
+
     def send(self, keys, pace=0.0):
         """Keys as the line front end takes them: '\\r' is Enter, '\\x1a' Ctrl-Z, '\\x03' Ctrl-C."""
-        self._before = self.snapshot()
+        self._before = self._text_area(self.snapshot())
         chunk = ""
         for c in keys:
             special = {"\r": "Enter", "\x1a": "C-z", "\x03": "C-c", "\x7f": "BSpace"}.get(c)
             if special:
                 if chunk:
-                    self._tmux("send-keys", "-t", self.session, "-l", chunk)
+                    self._tmux("send-keys", "-t", self.session, "-l", "--", chunk)
                     chunk = ""
                 self._tmux("send-keys", "-t", self.session, special)
             else:
                 chunk += c
         if chunk:
-            self._tmux("send-keys", "-t", self.session, "-l", chunk)
+            self._tmux("send-keys", "-t", self.session, "-l", "--", chunk)
         if pace:
             time.sleep(pace * len(keys))
 
     def prompt(self, rx, timeout=10.0):
+        """Waits until trakbox waits at rx: the text area changed since the last keys, the text left
+        of the cursor (or the line above, when the cursor starts a line) matches rx, and the screen
+        holds still for a moment (not half-way through printing)."""
         deadline = time.time() + timeout
         pattern = re.compile(rx + r"\s*$")
+        last, seen = None, 0.0
         while True:
             snap = self.snapshot()
-            text, x, y = snap
+            area = self._text_area(snap)
+            text, x, y = area
             rows = text.split("\n")
-            at_cursor = rows[y][:x] if y < len(rows) else ""
-            if snap != self._before and pattern.search(at_cursor):
-                self._before = snap
-                return text
+            if x > 0 or y == 0:
+                at_cursor = rows[y].ljust(x)[:x] if y < len(rows) else ""  # the blanks it typed too
+            else:
+                at_cursor = rows[y - 1] if y - 1 < len(rows) else ""
+            if area != self._before and pattern.search(at_cursor):
+                if area != last:
+                    last, seen = area, time.time()
+                elif time.time() - seen >= 0.06:
+                    self._before = area
+                    return snap[0]
+            else:
+                last = None
             if time.time() > deadline:
                 raise Failure(f"screen never waited at {rx!r}; cursor at ({x},{y}) after {at_cursor!r}; "
-                              f"it shows:\n{text}")
-            time.sleep(0.1)
+                              f"it shows:\n{snap[0]}")
+            time.sleep(0.02)
 
-    def wait(self, rx, timeout=10.0):
-        """Waits until rx matches somewhere on the screen (a live display); returns the match."""
+    def wait(self, rx, timeout=10.0, after=None):
+        """Waits until rx matches on the screen (a live display), below the last line containing
+        `after` when given (what is above it is older); returns the screen."""
+        return self.wait_match(rx, timeout, after).string
+
+    def wait_match(self, rx, timeout=10.0, after=None):
         deadline = time.time() + timeout
         while True:
             text = self.screen()
-            m = re.search(rx, text, re.M)
+            start = text.rfind(after) if after else 0
+            m = re.compile(rx, re.M).search(text, max(start, 0)) if start >= 0 else None
             if m:
                 return m
             if time.time() > deadline:
                 raise Failure(f"screen never showed {rx!r}; it shows:\n{text}")
-            time.sleep(0.1)
+            time.sleep(0.03)
 
     def upload(self, text, eof=True, timeout=10.0):
         """The upload a line at a time (a terminal program's ASCII send), then Ctrl-Z."""
@@ -337,7 +363,7 @@ class ScreenUI:
 
     def exited(self, timeout=15.0):
         """The exit status once trakbox has left (the session's shell prints it)."""
-        m = self.wait(r"EXITED (\d+)", timeout)
+        m = self.wait_match(r"EXITED (\d+)", timeout)
         return int(m.group(1))
 
     def close(self):
@@ -369,6 +395,10 @@ class SerialSession:
     @property
     def state_file(self):
         return self.tb.state_file
+
+    def stop(self):
+        """SIGTERM: trakbox saves and leaves; returns its exit status."""
+        return self.tb.stop()
 
     def close(self):
         if self.fd is not None:
