@@ -130,6 +130,7 @@ struct CursesTerminal::Impl {
   int live_lines = 0;
   std::string status_text;
   bool colors = false;
+  bool closed = false;  // Ctrl-C was typed
 
   void layout() {
     if (text) delwin(text);
@@ -279,8 +280,11 @@ void CursesTerminal::graphics(const Graphics& g) {
   flush();
 }
 
+bool CursesTerminal::closed() const { return impl_->closed; }
+
 int CursesTerminal::next_key(std::optional<Duration> timeout) {
   flush();
+  if (impl_->closed) return kEndOfInput;
   const auto deadline = timeout ? std::optional(std::chrono::steady_clock::now() + *timeout) : std::nullopt;
   for (;;) {
     const int ch = wgetch(impl_->text);
@@ -295,7 +299,10 @@ int CursesTerminal::next_key(std::optional<Duration> timeout) {
         case KEY_DC: return kBackspace;
         case KEY_ENTER:
         case '\n': return kEnter;
-        case 3: return kEndOfInput;  // Ctrl-C leaves trakbox (raw mode delivers it as a key)
+        case 3:  // Ctrl-C leaves trakbox (raw mode delivers it as a key); it stays the end of input,
+                 // also when a read that only looked ahead (the LF after a CR) was the one to see it
+          impl_->closed = true;
+          return kEndOfInput;
         default:
           if (ch >= 0 && ch < 256) return ch;
           continue;  // function keys the menus do not use

@@ -26,7 +26,8 @@ class CursesTerminal final : public Terminal {
   bool full_screen() const override { return true; }
   int columns() const override;
   int rows() const override;
-  bool closed() const override { return false; }
+  // True once Ctrl-C was typed: it ends the input for good (every later read sees the end).
+  bool closed() const override;
 
  protected:
   int next_key(std::optional<Duration> timeout) override;
