@@ -247,8 +247,9 @@ class LineUI:
 
 
 class ScreenUI:
-    """A walkthrough's view of the full-screen front end in tmux (its own tmux server, so parallel
-    tests never share sessions): keys with send-keys, the screen with capture-pane.
+    """A walkthrough's view of the full-screen front end in tmux (its own tmux server on a socket in
+    a temporary folder, so parallel tests never share sessions): keys with send-keys, the screen
+    with capture-pane.
 
     prompt(rx) waits until the screen has changed since the last keys and the text left of the
     cursor matches rx (the prompt trakbox waits at); it returns the whole screen."""
@@ -256,7 +257,8 @@ class ScreenUI:
     full_screen = True
 
     def __init__(self, argv, cols=100, rows=40, env=None):
-        self.socket = f"tbwalk-{os.getpid()}-{int(time.time() * 1000) % 100000}"
+        self.socket_dir = tempfile.mkdtemp(prefix="trakbox-tmux-")
+        self.socket = os.path.join(self.socket_dir, "tmux")
         self.session = "walk"
         self.rows = rows
         envs = " ".join(f"{k}={_shq(v)}" for k, v in (env or {}).items())
@@ -267,7 +269,7 @@ class ScreenUI:
         self._before = None
 
     def _tmux(self, *args):
-        return subprocess.run(["tmux", "-L", self.socket, "-f", "/dev/null", *args], capture_output=True,
+        return subprocess.run(["tmux", "-S", self.socket, "-f", "/dev/null", *args], capture_output=True,
                               text=True, timeout=10)
 
     def snapshot(self):
@@ -367,7 +369,16 @@ class ScreenUI:
         return int(m.group(1))
 
     def close(self):
-        self._tmux("kill-server")
+        """Ends trakbox if it still runs (Ctrl-C: it saves first), then the tmux server."""
+        try:
+            if "EXITED" not in self.screen():
+                self._tmux("send-keys", "-t", self.session, "C-c")
+                self.exited(timeout=10)
+        except (Failure, subprocess.TimeoutExpired):
+            pass
+        finally:
+            self._tmux("kill-server")
+            shutil.rmtree(self.socket_dir, ignore_errors=True)
 
 
 def _shq(s):
