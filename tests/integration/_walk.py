@@ -42,7 +42,10 @@ def must_not(text, rx, what):
 
 def answer(ui, label_rx, keys, what, timeout=10.0):
     """Waits at a prompt, then types the answer."""
-    out = ui.prompt(label_rx, timeout)
+    try:
+        out = ui.prompt(label_rx, timeout)
+    except Failure as e:
+        raise Failure(f"{what}: {e}") from None
     ui.send(keys)
     return out
 
@@ -369,7 +372,7 @@ CONFIG = r"====== Configuration Menu ======"
 
 def walk_6_0(ui, expect):
     ui.send("0\r")
-    out = ui.prompt(r"Press any key to continue")
+    out = since(ui.prompt(r"Press any key to continue"), " Select: 0")  # this display, not an older one
     for rx in expect:
         must(out, rx, "6-0")
     ui.send(" ")
@@ -416,11 +419,11 @@ def wait_arrived(ui, prompt_rx, az, el, timeout=30.0):
 PRESETS = [(125, 15), (90, 22), (0, 45), (270, 10), (165, 0)]
 
 
-def walk_6_6(ui, entry="6\r"):
+def walk_6_6(ui):
     """6-6: the sub-menu, 2 (enter a direction, the manual's 210/20), 3 (presets, S to store the
     manual's five, then preset 4: 270/10, on this side of the South-start rotator's stop), 1
     (keyboard: up, stop, Enter)."""
-    ui.send(entry)
+    ui.send("6\r")
     out = ui.prompt(DIRECT)
     must(out, r"1\.Direct rotor control from key board\.\n2\.Enter direction value\.\n3\.Preset Control\.",
          "the 6-6 sub-menu")
@@ -722,6 +725,8 @@ def group_2_3(s, page_rows):
 
     walk_menu_3_1(ui)
     data = load_state(s.state_file)  # saved after the change, before the next prompt
+    check(data["db"]["marked"] == 0 and data["rotor_control"] is False,
+          "menu 2 tracked nothing: the '*' stays on AO-07, rotor control off")
     ao73 = data["db"]["satellites"][6]
     check(ao73["elements"]["name"] == "AO-73", f"#7 is AO-73: {ao73['elements']['name']}")
     check(ao73["elements"]["revolution"] == 67560 and ao73["elements"]["inclination_deg"] == 97.83,
