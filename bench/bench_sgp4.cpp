@@ -16,44 +16,11 @@
 
 #include "orbit/elements.h"
 #include "orbit/sgp4.h"
+#include "support/gpredict_sets.h"
 
 using namespace tb::orbit;
 
 namespace {
-
-// ISS (ZARYA) from satellites.dat (near earth, drag terms active).
-Elements iss() {
-  Elements e;
-  e.catalog_number = 25544;
-  e.epoch_year = 2018;
-  e.epoch_day = 20.89808844;
-  e.ndot_over_2 = 0.00002078;
-  e.bstar = 0.38550e-4;
-  e.inclination_deg = 51.6424;
-  e.raan_deg = 32.9776;
-  e.eccentricity = 0.0003646;
-  e.arg_perigee_deg = 28.7227;
-  e.mean_anomaly_deg = 39.5332;
-  e.mean_motion_rev_per_day = 15.54190080;
-  return e;
-}
-
-// MOLNIYA 1-53 from satellites.dat (deep space, half-day resonance: the most expensive case).
-Elements molniya() {
-  Elements e;
-  e.catalog_number = 13070;
-  e.epoch_year = 2018;
-  e.epoch_day = 19.33649993;
-  e.ndot_over_2 = 0.00000405;
-  e.bstar = -0.24669e-3;
-  e.inclination_deg = 62.4528;
-  e.raan_deg = 108.1401;
-  e.eccentricity = 0.7349782;
-  e.arg_perigee_deg = 265.0722;
-  e.mean_anomaly_deg = 44.8738;
-  e.mean_motion_rev_per_day = 2.00563378;
-  return e;
-}
 
 void propagate_over_a_day(benchmark::State& state, const Elements& elements) {
   const Sgp4 sat(elements);
@@ -65,10 +32,10 @@ void propagate_over_a_day(benchmark::State& state, const Elements& elements) {
   }
 }
 
-void BM_Sgp4NearEarth(benchmark::State& state) { propagate_over_a_day(state, iss()); }
+void BM_Sgp4NearEarth(benchmark::State& state) { propagate_over_a_day(state, tb::testing::iss_2018()); }
 BENCHMARK(BM_Sgp4NearEarth);
 
-void BM_Sgp4DeepSpaceResonant(benchmark::State& state) { propagate_over_a_day(state, molniya()); }
+void BM_Sgp4DeepSpaceResonant(benchmark::State& state) { propagate_over_a_day(state, tb::testing::molniya_2018()); }
 BENCHMARK(BM_Sgp4DeepSpaceResonant);
 
 std::vector<Sgp4> gpredict_catalogue() {

@@ -24,13 +24,6 @@ constexpr const char* kHeader = "DATE       TIME      AZ/EL       Phase Doppler"
 constexpr const char* kMorePrompt = "        - 'Q' for abort 'S' for scroll ";
 constexpr long kMaxStepMinutes = 10080;  // a week
 
-std::string trim(std::string s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.pop_back();
-  std::size_t i = 0;
-  while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) ++i;
-  return s.substr(i);
-}
-
 orbit::UtcTime whole_seconds(orbit::UtcTime t) { return std::chrono::floor<std::chrono::seconds>(t); }
 
 int days_in_year(int year) {

@@ -1,7 +1,5 @@
 // Menu 3: Update Satellite Elements. The UPDATE MENU of the manual; each choice is its own file
 // (3_1_edit.cpp, 3_2_select.cpp, 3_3_upload.cpp, 3_4_multi_track.cpp). Q returns to the main menu.
-#include <cctype>
-
 #include "menus/menus.h"
 
 namespace tb::menus {
@@ -17,28 +15,17 @@ void show_update_menu(term::Terminal& t) {
 }  // namespace
 
 void menu_3_update_elements(term::Terminal& t, Services& s) {
-  bool show = true;
-  for (;;) {
-    if (show) show_update_menu(t);
-    show = true;
-    t.write(" Select: ");
-    t.flush();
-    std::string a = read_line(t);
-    while (!a.empty() && a.back() == ' ') a.pop_back();
-    while (!a.empty() && a.front() == ' ') a.erase(0, 1);
-    if (a.size() != 1) {
-      show = false;
-      continue;
-    }
-    switch (std::toupper(static_cast<unsigned char>(a[0]))) {
+  run_menu(t, [&] { show_update_menu(t); }, " Select: ", [&](char key) {
+    switch (key) {
       case '1': menu_3_1_edit(t, s); break;
       case '2': menu_3_2_select(t, s); break;
       case '3': menu_3_3_upload(t, s); break;
       case '4': menu_3_4_multi_track(t, s); break;
-      case 'Q': return;
-      default: show = false; break;
+      case 'Q': return MenuStep::back;
+      default: return MenuStep::unknown;
     }
-  }
+    return MenuStep::again;
+  });
 }
 
 }  // namespace tb::menus

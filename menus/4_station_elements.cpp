@@ -5,6 +5,7 @@
 #include "menus/menus.h"
 #include "menus/term/line_terminal.h"
 #include "store/model.h"
+#include "tracker/station_loop.h"
 
 namespace tb::menus {
 namespace {
@@ -42,6 +43,7 @@ void menu_4_station_elements(term::Terminal& t, Services& s) {
     st.com_baud = edit_int(t, "COM port baud rate", 9600, 1200, 19200);
   }
   s.model.station = st;
+  s.station.reconfigure();  // the rotor start changes how the antenna's travel maps to the compass
   save_or_report(t, s);
 }
 

@@ -14,13 +14,6 @@ namespace tb::menus {
 
 namespace {
 
-std::string trim(std::string s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.pop_back();
-  std::size_t i = 0;
-  while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) ++i;
-  return s.substr(i);
-}
-
 const char* kWhy = "direct control cannot move the antenna.";
 
 // Points at a compass position and watches it go there; says so when the limits moved the target.
@@ -34,31 +27,25 @@ void go_to(term::Terminal& t, Services& s, rotator::AzEl where) {
 }  // namespace
 
 void menu_6_6_direct_control(term::Terminal& t, Services& s) {
-  bool show = true;
-  for (;;) {
-    if (show) {
-      t.line("1.Direct rotor control from key board.");
-      t.line("2.Enter direction value.");
-      t.line("3.Preset Control.");
-    }
-    show = true;
-    t.write("Select[1-3,Q]:");
-    t.flush();
-    const std::string a = trim(read_line(t));
-    if (a == "q" || a == "Q") return;
+  auto show = [&] {
+    t.line("1.Direct rotor control from key board.");
+    t.line("2.Enter direction value.");
+    t.line("3.Preset Control.");
+  };
+  run_menu(t, show, "Select[1-3,Q]:", [&](char key) {
+    if (key == 'Q') return MenuStep::back;
     try {
-      if (a == "1")
-        menu_6_6_1_keyboard(t, s);
-      else if (a == "2")
-        menu_6_6_2_enter_value(t, s);
-      else if (a == "3")
-        menu_6_6_3_presets(t, s);
-      else
-        show = false;
+      switch (key) {
+        case '1': menu_6_6_1_keyboard(t, s); break;
+        case '2': menu_6_6_2_enter_value(t, s); break;
+        case '3': menu_6_6_3_presets(t, s); break;
+        default: return MenuStep::unknown;
+      }
     } catch (const cfg::Quit&) {
       t.end_live();
     }
-  }
+    return MenuStep::again;
+  });
 }
 
 void menu_6_6_1_keyboard(term::Terminal& t, Services& s) {
@@ -88,16 +75,12 @@ void menu_6_6_2_enter_value(term::Terminal& t, Services& s) {
 }
 
 void menu_6_6_3_presets(term::Terminal& t, Services& s) {
-  bool show = true;
-  for (;;) {
-    if (show)
-      for (const auto& l : preset_lines(s.model.rotator)) t.line(l);
-    show = true;
-    t.write(" Select[1-5,S,Q]: ");
-    t.flush();
-    const std::string a = trim(read_line(t));
-    if (a == "q" || a == "Q") return;
-    if (a == "s" || a == "S") {
+  auto show = [&] {
+    for (const auto& l : preset_lines(s.model.rotator)) t.line(l);
+  };
+  run_menu(t, show, " Select[1-5,S,Q]: ", [&](char key) {
+    if (key == 'Q') return MenuStep::back;
+    if (key == 'S') {
       rotator::RotatorConfig c = s.model.rotator;
       for (std::size_t i = 0; i < c.presets.size(); ++i) {
         auto& p = c.presets[i];
@@ -107,15 +90,12 @@ void menu_6_6_3_presets(term::Terminal& t, Services& s) {
                                c.el_flip_allowed ? 180.0 : 90.0);
       }
       cfg::commit_rotator(t, s, c);
-      continue;
+      return MenuStep::again;
     }
-    if (a.size() == 1 && a[0] >= '1' && a[0] <= '5') {
-      if (!cfg::offer_rotor_control(t, s, kWhy)) continue;
-      go_to(t, s, s.model.rotator.presets[static_cast<std::size_t>(a[0] - '1')]);
-      continue;
-    }
-    show = false;
-  }
+    if (key < '1' || key > '5') return MenuStep::unknown;
+    if (cfg::offer_rotor_control(t, s, kWhy)) go_to(t, s, s.model.rotator.presets[static_cast<std::size_t>(key - '1')]);
+    return MenuStep::again;
+  });
 }
 
 }  // namespace tb::menus

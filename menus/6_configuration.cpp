@@ -14,13 +14,6 @@ namespace tb::menus {
 
 namespace {
 
-std::string trim(std::string s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.pop_back();
-  std::size_t i = 0;
-  while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) ++i;
-  return s.substr(i);
-}
-
 std::string fmt(const char* f, ...) __attribute__((format(printf, 1, 2)));
 std::string fmt(const char* f, ...) {
   char buf[256];
@@ -55,21 +48,10 @@ void show_list(term::Terminal& t) {
 // The list.
 
 void menu_6_configuration(term::Terminal& t, Services& s) {
-  bool show = true;
-  for (;;) {
-    if (show) show_list(t);
-    show = true;
-    t.write(" Select: ");
-    t.flush();
-    const std::string a = trim(read_line(t));
-    if (a.size() != 1) {
-      show = false;
-      continue;
-    }
-    const char c = static_cast<char>(std::toupper(static_cast<unsigned char>(a[0])));
-    if (c == 'Q') return;
+  run_menu(t, [&] { show_list(t); }, " Select: ", [&](char key) {
+    if (key == 'Q') return MenuStep::back;
     try {
-      switch (c) {
+      switch (key) {
         case '0': menu_6_0_display(t, s); break;
         case '1': menu_6_1_calibration(t, s); break;
         case '2': menu_6_2_adc_span(t, s); break;
@@ -80,12 +62,13 @@ void menu_6_configuration(term::Terminal& t, Services& s) {
         case '7': menu_6_7_radio_cat(t, s); break;
         case '8': menu_6_8_mic_click(t, s); break;
         case '9': menu_6_9_default_parameter(t, s); break;
-        default: show = false; break;
+        default: return MenuStep::unknown;
       }
     } catch (const cfg::Quit&) {
       t.end_live();
     }
-  }
+    return MenuStep::again;
+  });
 }
 
 // ---------------------------------------------------------------------------------------------

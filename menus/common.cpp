@@ -29,17 +29,29 @@ char ask_key(term::Terminal& t, std::string_view prompt, std::string_view keys, 
   return *c;
 }
 
-namespace {
-std::string trim(std::string s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.pop_back();
-  std::size_t i = 0;
-  while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) ++i;
-  return s.substr(i);
+std::string trim(std::string_view s) {
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
+  return std::string(s);
 }
-}  // namespace
+
+void run_menu(term::Terminal& t, const std::function<void()>& show, std::string_view prompt,
+              const std::function<MenuStep(char key)>& choose) {
+  bool skip_menu = false;
+  for (;;) {
+    if (!skip_menu) show();
+    t.write(prompt);
+    t.flush();
+    const std::string a = trim(read_line(t));
+    const MenuStep step =
+        a.size() == 1 ? choose(static_cast<char>(std::toupper(static_cast<unsigned char>(a[0])))) : MenuStep::unknown;
+    if (step == MenuStep::back) return;
+    skip_menu = step == MenuStep::unknown;
+  }
+}
 
 std::optional<double> parse_number(std::string_view text) {
-  std::string s = trim(std::string(text));
+  std::string s = trim(text);
   if (s.empty()) return std::nullopt;
   if (s[0] == '+') s.erase(0, 1);
   double v = 0.0;
@@ -49,7 +61,7 @@ std::optional<double> parse_number(std::string_view text) {
 }
 
 std::optional<long> parse_integer(std::string_view text) {
-  std::string s = trim(std::string(text));
+  std::string s = trim(text);
   if (s.empty()) return std::nullopt;
   if (s[0] == '+') s.erase(0, 1);
   long v = 0;

@@ -16,10 +16,21 @@ struct InputClosed {};
 
 // Reads a line, throwing InputClosed when input ends.
 std::string read_line(term::Terminal& t, std::size_t max_length = 80);
+// The text without the white space around it.
+std::string trim(std::string_view text);
 // A [Y/N] question: prints the prompt, returns true for Y. Any other key is No.
 bool ask_yes_no(term::Terminal& t, std::string_view prompt);
 // A single-key choice among `keys` (upper-cased); Enter returns '\r' when allow_enter.
 char ask_key(term::Terminal& t, std::string_view prompt, std::string_view keys, bool allow_enter = false);
+
+// What a menu's choice did: go on asking (showing the menu again), `unknown` (only the prompt is
+// asked again), or `back` (the menu returns).
+enum class MenuStep { again, unknown, back };
+// The loop of a menu of the manual: `show` prints the menu, then `prompt` is asked and an answer of
+// one key (white space around it ignored) is handed upper-cased to `choose`. An answer that is not
+// one key asks again without showing the menu, as `unknown` does. Returns when `choose` says `back`.
+void run_menu(term::Terminal& t, const std::function<void()>& show, std::string_view prompt,
+              const std::function<MenuStep(char key)>& choose);
 
 // "Label : current " then the answer; Enter keeps the current value. validate returns an error
 // message for a bad answer (the prompt is repeated), or nullopt when fine.

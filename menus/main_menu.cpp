@@ -1,6 +1,4 @@
 // The sign-on banner and the MAIN MENU: Select [1-8,S,M].
-#include <cctype>
-
 #include "menus/menus.h"
 
 namespace tb::menus {
@@ -29,20 +27,8 @@ void show_main_menu(term::Terminal& t) {
 }  // namespace
 
 void main_menu(term::Terminal& t, Services& s) {
-  bool show = true;
-  for (;;) {
-    if (show) show_main_menu(t);
-    show = true;
-    t.write("     Select [1-8,S,M]:");
-    t.flush();
-    std::string a = read_line(t);
-    while (!a.empty() && a.back() == ' ') a.pop_back();
-    while (!a.empty() && a.front() == ' ') a.erase(0, 1);
-    if (a.size() != 1) {
-      show = false;
-      continue;
-    }
-    switch (std::toupper(static_cast<unsigned char>(a[0]))) {
+  run_menu(t, [&] { show_main_menu(t); }, "     Select [1-8,S,M]:", [&](char key) {
+    switch (key) {
       case '1': menu_1_realtime_tracking(t, s); break;
       case '2': menu_2_display_schedule(t, s); break;
       case '3': menu_3_update_elements(t, s); break;
@@ -53,9 +39,10 @@ void main_menu(term::Terminal& t, Services& s) {
       case '8': menu_8_direct_antenna(t, s); break;
       case 'S': menu_s_single_tracking(t, s); break;
       case 'M': menu_m_multiple_tracking(t, s); break;
-      default: show = false; break;
+      default: return MenuStep::unknown;
     }
-  }
+    return MenuStep::again;
+  });
 }
 
 }  // namespace tb::menus

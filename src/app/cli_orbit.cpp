@@ -226,7 +226,16 @@ std::vector<Elements> select_sats(const std::vector<Elements>& sets, const std::
   return chosen;
 }
 
-// --station LAT,LON,HEIGHT_M
+// The options several commands share, described once; each is read by the function below it.
+const OptionSpec kSatOption{"sat", "NAME|NUMBER", "satellite by name (exact, then any case) or catalog number"};
+const OptionSpec kHelpOption{"help", "", "show this help"};
+OptionSpec repeatable(OptionSpec spec) {
+  spec.repeatable = true;
+  return spec;
+}
+
+const OptionSpec kStationOption{"station", "LAT,LON,HEIGHT_M",
+                                "station: degrees north, degrees east, metres above the WGS-84 ellipsoid"};
 std::optional<orbit::Observer> read_station(OptionReader& in) {
   const char* expected = "LAT,LON,HEIGHT_M (degrees north -90..90, degrees east -180..360, metres -1000..100000)";
   const auto text = in.text("station", true, expected);
@@ -251,11 +260,14 @@ std::optional<UtcTime> read_time(OptionReader& in, std::string_view name) {
   return t;
 }
 
+const OptionSpec kDut1Option{"dut1", "S", "UT1-UTC in seconds (default 0)"};
 orbit::EarthOrientation read_dut1(OptionReader& in) {
   const auto v = in.number("dut1", false, "S, UT1-UTC in seconds (-1 < S < 1)", Range{-1.0, 1.0, true, true});
   return {v.value_or(0.0)};
 }
 
+const OptionSpec kCsvOption{"csv", "", "comma-separated values with a header line"};
+// --csv, or --json (described by each command: what its array holds).
 OutputFormat read_format(OptionReader& in) {
   const bool csv = in.flag("csv"), json = in.flag("json");
   if (csv && json) in.fail("--json", "expected at most one of --csv and --json");
@@ -280,22 +292,49 @@ int usage_error(const Command& c, const ArgError& e) {
   return kExitUsage;
 }
 
-// Parses args; returns the exit code when the command is already done (help or error).
-std::optional<int> parse_command(const Command& c, const std::vector<std::string>& args, ParsedOptions& parsed,
-                                 std::string& elements_path) {
-  ParseOutcome po = parse_options(args, c.specs);
-  if (po.error) return usage_error(c, *po.error);
-  parsed = std::move(po.options);
-  if (parsed.has("help")) {
-    out(usage(c));
-    return kExitOk;
+// One run of a command: parses its words (`done` is then the exit code when --help or a usage error
+// already finished it); the command reads its values through `in`, then load_sats() takes over.
+struct CommandRun {
+  CommandRun(const Command& c, const std::vector<std::string>& args) : command(c) {
+    ParseOutcome po = parse_options(args, c.specs);
+    if (po.error) {
+      done = usage_error(c, *po.error);
+      return;
+    }
+    parsed = std::move(po.options);
+    if (parsed.has("help")) {
+      out(usage(c));
+      done = kExitOk;
+      return;
+    }
+    const auto& pos = parsed.positional();
+    if (pos.empty()) done = usage_error(c, {"ELEMENTS", std::string("missing; expected ") + kElementsHelp});
+    else if (pos.size() > 1) done = usage_error(c, {pos[1], "unexpected argument (ELEMENTS is given once)"});
+    else path = pos[0];
   }
-  const auto& pos = parsed.positional();
-  if (pos.empty()) return usage_error(c, {"ELEMENTS", std::string("missing; expected ") + kElementsHelp});
-  if (pos.size() > 1) return usage_error(c, {pos[1], "unexpected argument (ELEMENTS is given once)"});
-  elements_path = pos[0];
-  return std::nullopt;
-}
+  CommandRun(const CommandRun&) = delete;
+  CommandRun& operator=(const CommandRun&) = delete;
+
+  int error(const ArgError& e) const { return usage_error(command, e); }
+
+  // Once the options are read: the first error among them, else ELEMENTS loaded and the sets --sat
+  // chooses (allow_all: every set when no --sat is given) put in `sats`. Returns the exit code when
+  // the command cannot go on.
+  std::optional<int> load_sats(bool allow_all, std::vector<Elements>& sats) {
+    if (!in.ok()) return error(*in.error());
+    const LoadedElements loaded = load_elements(path);
+    if (loaded.error) return error(*loaded.error);
+    sats = select_sats(loaded.sets, parsed.values("sat"), allow_all, path, in);
+    if (!in.ok()) return error(*in.error());
+    return std::nullopt;
+  }
+
+  const Command& command;
+  ParsedOptions parsed;
+  std::string path;  // ELEMENTS
+  OptionReader in{parsed};
+  std::optional<int> done;
+};
 
 // ---------------------------------------------------------------------------------------------
 // propagate
@@ -306,32 +345,27 @@ const Command kPropagate{
     "(km) and xdot ydot zdot (km/s), as Vallado's tcppver.out. The last line is --stop itself when\n"
     "the steps do not land on it. When propagation fails, a line '# sgp4 error N at tsince T min\n"
     "(UTC): meaning' ends the output and the exit status is 1.",
-    {{"sat", "NAME|NUMBER", "satellite by name (exact, then any case) or catalog number"},
+    {kSatOption,
      {"start", "MIN", "first time, minutes from the element-set epoch (may be negative)"},
      {"stop", "MIN", "last time, minutes from epoch (>= --start)"},
      {"step", "MIN", "minutes between lines (> 0)"},
-     {"help", "", "show this help"}}};
+     kHelpOption}};
 
 }  // namespace
 
 int run_propagate(std::vector<std::string> args) {
-  const Command& c = kPropagate;
-  ParsedOptions parsed;
-  std::string path;
-  if (auto done = parse_command(c, args, parsed, path)) return *done;
-  OptionReader in(parsed);
+  CommandRun run(kPropagate, args);
+  if (run.done) return *run.done;
+  OptionReader& in = run.in;
   const auto start = in.number("start", true, "MIN, minutes from epoch");
   const auto stop = in.number("stop", true, "MIN, minutes from epoch");
   const auto step = in.number("step", true, "MIN, a number of minutes > 0", Range{0.0, std::nullopt, true});
   if (in.ok() && *stop < *start)
-    in.fail("--stop", strprintf("expected MIN >= --start (%g), found '%s'", *start, parsed.value("stop")->c_str()));
+    in.fail("--stop", strprintf("expected MIN >= --start (%g), found '%s'", *start, run.parsed.value("stop")->c_str()));
   if (in.ok() && (*stop - *start) / *step > 1e7)
     in.fail("--step", "too small: more than 10000000 lines between --start and --stop");
-  if (!in.ok()) return usage_error(c, *in.error());
-  const LoadedElements loaded = load_elements(path);
-  if (loaded.error) return usage_error(c, *loaded.error);
-  const std::vector<Elements> sats = select_sats(loaded.sets, parsed.values("sat"), false, path, in);
-  if (!in.ok()) return usage_error(c, *in.error());
+  std::vector<Elements> sats;
+  if (auto done = run.load_sats(false, sats)) return *done;
 
   const orbit::Sgp4 sat(sats.front());
   auto emit = [&](double tsince) {
@@ -373,25 +407,23 @@ const Command kSchedule{
     "--freq (Hz, + approaching), range (km), range rate (km/s, + receding), and the sub-satellite\n"
     "point (altitude km above the WGS-84 ellipsoid, latitude, longitude). CSV and JSON columns:\n"
     "utc, az_deg, el_deg, range_km, range_rate_km_s, alt_km, lat_deg, lon_deg, phase256, doppler_hz.",
-    {{"sat", "NAME|NUMBER", "satellite by name (exact, then any case) or catalog number"},
-     {"station", "LAT,LON,HEIGHT_M", "station: degrees north, degrees east, metres above the WGS-84 ellipsoid"},
+    {kSatOption,
+     kStationOption,
      {"start", "ISO8601", "first time, UTC (2018-01-21T03:37:10Z)"},
      {"step", "SECONDS", "seconds between rows (> 0)"},
      {"count", "N", "number of rows (1..10000000)"},
      {"freq", "HZ", "downlink frequency in Hz for the Doppler column (default: none, 0)"},
-     {"dut1", "S", "UT1-UTC in seconds (default 0)"},
-     {"csv", "", "comma-separated values with a header line"},
+     kDut1Option,
+     kCsvOption,
      {"json", "", "a JSON array of row objects"},
-     {"help", "", "show this help"}}};
+     kHelpOption}};
 
 }  // namespace
 
 int run_schedule(std::vector<std::string> args) {
-  const Command& c = kSchedule;
-  ParsedOptions parsed;
-  std::string path;
-  if (auto done = parse_command(c, args, parsed, path)) return *done;
-  OptionReader in(parsed);
+  CommandRun run(kSchedule, args);
+  if (run.done) return *run.done;
+  OptionReader& in = run.in;
   const auto station = read_station(in);
   const auto start = read_time(in, "start");
   const auto step_s = in.number("step", true, "SECONDS, a number > 0 (at most one day)", Range{0.0, 86400.0, true});
@@ -404,12 +436,9 @@ int run_schedule(std::vector<std::string> args) {
     step = std::chrono::microseconds(std::llround(*step_s * 1e6));
     if (step.count() <= 0) in.fail("--step", "expected SECONDS, at least one microsecond");
   }
-  if (!in.ok()) return usage_error(c, *in.error());
-  const LoadedElements loaded = load_elements(path);
-  if (loaded.error) return usage_error(c, *loaded.error);
-  const std::vector<Elements> sats = select_sats(loaded.sets, parsed.values("sat"), false, path, in);
-  if (!in.ok()) return usage_error(c, *in.error());
-  if (sats.size() > 1) return usage_error(c, {"--sat", "expected one satellite for a schedule"});
+  std::vector<Elements> sats;
+  if (auto done = run.load_sats(false, sats)) return *done;
+  if (sats.size() > 1) return run.error({"--sat", "expected one satellite for a schedule"});
 
   const orbit::Sgp4 sat(sats.front());
   const int decimals = seconds_decimals(*start, step);
@@ -479,15 +508,15 @@ const Command kPasses{
     "Without --sat, every satellite of the file. CSV and JSON columns: sat, aos_utc, tca_utc, los_utc,\n"
     "max_el_deg, aos_az_deg, los_az_deg. A pass already up at --start begins there; one still up at\n"
     "the end stops there (marked < and > in the table).",
-    {{"sat", "NAME|NUMBER", "satellite by name (exact, then any case) or catalog number", true},
-     {"station", "LAT,LON,HEIGHT_M", "station: degrees north, degrees east, metres above the WGS-84 ellipsoid"},
+    {repeatable(kSatOption),
+     kStationOption,
      {"start", "ISO8601", "start of the window, UTC"},
      {"hours", "H", "length of the window in hours (> 0, at most 8784)"},
      {"min-el", "DEG", "only passes whose maximum elevation reaches DEG (default: all)"},
-     {"dut1", "S", "UT1-UTC in seconds (default 0)"},
-     {"csv", "", "comma-separated values with a header line"},
+     kDut1Option,
+     kCsvOption,
      {"json", "", "a JSON array of pass objects"},
-     {"help", "", "show this help"}}};
+     kHelpOption}};
 
 struct SatPass {
   std::string sat;
@@ -497,22 +526,17 @@ struct SatPass {
 }  // namespace
 
 int run_passes(std::vector<std::string> args) {
-  const Command& c = kPasses;
-  ParsedOptions parsed;
-  std::string path;
-  if (auto done = parse_command(c, args, parsed, path)) return *done;
-  OptionReader in(parsed);
+  CommandRun run(kPasses, args);
+  if (run.done) return *run.done;
+  OptionReader& in = run.in;
   const auto station = read_station(in);
   const auto start = read_time(in, "start");
   const auto hours = in.number("hours", true, "H, a number of hours > 0 (at most 8784)", Range{0.0, 8784.0, true});
   const auto min_el = in.number("min-el", false, "DEG, an elevation -90..90", Range{-90.0, 90.0});
   const orbit::EarthOrientation eo = read_dut1(in);
   const OutputFormat format = read_format(in);
-  if (!in.ok()) return usage_error(c, *in.error());
-  const LoadedElements loaded = load_elements(path);
-  if (loaded.error) return usage_error(c, *loaded.error);
-  const std::vector<Elements> sats = select_sats(loaded.sets, parsed.values("sat"), true, path, in);
-  if (!in.ok()) return usage_error(c, *in.error());
+  std::vector<Elements> sats;
+  if (auto done = run.load_sats(true, sats)) return *done;
 
   const UtcTime stop = orbit::add_seconds(*start, *hours * 3600.0);
   orbit::PassOptions options;

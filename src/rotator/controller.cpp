@@ -87,6 +87,15 @@ RotatorPosition Controller::set_target(RotatorPosition p) {
   status_.mode = ControlMode::target;
   az_.manual_goal.reset();
   el_.manual_goal.reset();
+  // The status describes the new target at once (goal counts, on target from the last reading),
+  // not the previous one until the next tick: a display or a remote client asking "arrived?"
+  // right after a GOTO must not see the previous arrival.
+  for (Axis a : kAxes) {
+    AxisStatus& s = axis_status(a);
+    s.goal_counts.reset();
+    if (auto g = goal_counts(a)) s.goal_counts = static_cast<int>(std::lround(*g));
+  }
+  update_on_target();
   return p;
 }
 
@@ -240,6 +249,10 @@ void Controller::tick(orbit::UtcTime now) {
   } else if (DegreeRotator* dr = driver_->as_degrees()) {
     tick_degrees(*dr, now);
   }
+  update_on_target();
+}
+
+void Controller::update_on_target() {
   // On target: pointing, both axes inside the dead band and still.
   status_.on_target = status_.mode == ControlMode::target && status_.has_position;
   for (Axis a : kAxes) {

@@ -135,6 +135,7 @@ class Controller {
   std::optional<double> goal_counts(Axis a) const;
   void tick_adc(AdcRotator& adc, orbit::UtcTime now, double dt);
   void tick_degrees(DegreeRotator& dr, orbit::UtcTime now);
+  void update_on_target();  // status_.on_target from the goals, the last readings and the motion
   void update_limits(Axis a, double corrected, const LimitFlags& reported);
 
   AdcModel model_;

@@ -11,11 +11,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
-#include <condition_variable>
 #include <cstring>
-#include <mutex>
-
-#include <spdlog/spdlog.h>
 
 #include "satrak/commands.h"
 
@@ -312,41 +308,6 @@ std::optional<SatrakRotatorOptions> parse_rotator_spec(std::string_view text, st
   return o;
 }
 
-struct SatrakRotator::Shared {
-  SatrakRotatorOptions opt;
-  std::string label;
-  std::mutex m;
-  std::condition_variable cv;
-  bool quit = false;
-  // Commands for the worker.
-  std::optional<rotator::AzEl> pending_pos;
-  bool pending_stop = false;
-  // The worker's report.
-  bool connected = false;
-  rotator::Health health{rotator::LinkState::connecting, "connecting", 0};
-  std::optional<rotator::AzEl> pos;
-  rotator::AxisMotion motion;
-  rotator::LimitFlags limits;
-
-  void run();
-  bool wait(std::chrono::milliseconds d) {
-    std::unique_lock lk(m);
-    cv.wait_for(lk, d, [&] { return quit; });
-    return !quit;
-  }
-  void set_fault(const std::string& message) {
-    std::lock_guard lk(m);
-    connected = false;
-    health.state = rotator::LinkState::fault;
-    health.message = message;
-    pos.reset();
-    motion = {};
-    limits = {};
-    pending_pos.reset();
-    pending_stop = false;
-  }
-};
-
 namespace {
 
 rotator::Drive drive_of(const std::string& s) {
@@ -357,161 +318,62 @@ rotator::Drive drive_of(const std::string& s) {
 
 bool refused(const std::string& reply) { return reply.find(",ERR,") != std::string::npos; }
 
+// One connection to the other ACU, on the worker thread of WorkerRotator.
+class SatrakLink final : public rotator::RotatorLink {
+ public:
+  explicit SatrakLink(SatrakRotatorOptions opt) : opt_(std::move(opt)) {}
+
+  bool open(std::string& error) override {
+    if (client_.connect(opt_.host, opt_.port, opt_.io_timeout)) return true;
+    error = client_.error();
+    return false;
+  }
+  void close() override { client_.close(); }
+
+  bool stop(std::string& error) override { return request("STOP=", error).has_value(); }
+
+  bool go_to(rotator::AzEl p, std::optional<std::string>& refusal, std::string& error) override {
+    const std::string payload = "GOTO=," + format_fixed(rotator::wrap360(p.az), 2) + "," + format_fixed(p.el, 2);
+    const auto r = request(payload, error);
+    if (!r) return false;
+    if (refused(*r)) refusal = "refused " + payload + ": " + *r;
+    return true;
+  }
+
+  bool poll(rotator::LinkReport& report, std::string& error) override {
+    const auto r = request("STATUS?", error);
+    if (!r) return false;
+    const auto c = parse_payload(*r);
+    if (c && c->fields.size() >= 15) {
+      const auto& f = c->fields;
+      const auto az = parse_number(f[1]), el = parse_number(f[2]);
+      if (az && el) report.position = rotator::AzEl{*az, *el};
+      report.limits = rotator::LimitFlags{{f[4] == "1", f[3] == "1"}, {f[6] == "1", f[5] == "1"}};
+      report.motion = rotator::AxisMotion{drive_of(f[11]), drive_of(f[12])};
+    }
+    return true;
+  }
+
+ private:
+  std::optional<std::string> request(std::string_view payload, std::string& error) {
+    auto r = client_.request(payload, opt_.io_timeout);
+    if (!r) error = client_.error();
+    return r;
+  }
+
+  const SatrakRotatorOptions opt_;
+  Client client_;
+};
+
+std::string rotator_label(const SatrakRotatorOptions& o) {
+  const bool v6 = o.host.find(':') != std::string::npos;
+  return "satrak " + (v6 ? "[" + o.host + "]" : o.host) + ":" + std::to_string(o.port);
+}
+
 }  // namespace
 
-void SatrakRotator::Shared::run() {
-  auto backoff = opt.backoff_min;
-  bool reported = false;
-  Client client;
-  for (;;) {
-    {
-      std::lock_guard lk(m);
-      if (quit) break;
-    }
-    if (!client.connect(opt.host, opt.port, opt.io_timeout)) {
-      const std::string msg = "cannot connect to " + label + ": " + client.error() + "; retrying in " +
-                              std::to_string(backoff.count()) + " ms";
-      set_fault(msg);
-      if (!reported) spdlog::warn("rotator: {}", msg);
-      reported = true;
-      if (!wait(backoff)) break;
-      backoff = std::min(backoff * 2, opt.backoff_max);
-      continue;
-    }
-    {
-      std::lock_guard lk(m);
-      connected = true;
-      health.state = rotator::LinkState::ok;
-      health.message.clear();
-      ++health.connects;
-      pending_pos.reset();
-      pending_stop = false;
-    }
-    spdlog::info("rotator: connected to {}", label);
-    reported = false;
-    backoff = opt.backoff_min;
-    std::string lost;
-    auto next_poll = Steady::now();
-    for (;;) {
-      std::optional<rotator::AzEl> cmd;
-      bool stop_now = false;
-      {
-        std::unique_lock lk(m);
-        cv.wait_until(lk, next_poll, [&] { return quit || pending_stop || pending_pos.has_value(); });
-        if (quit) break;
-        stop_now = pending_stop;
-        pending_stop = false;
-        cmd = pending_pos;
-        pending_pos.reset();
-      }
-      if (stop_now) {
-        const auto r = client.request("STOP=", opt.io_timeout);
-        if (!r) {
-          lost = client.error();
-          break;
-        }
-      }
-      if (cmd) {
-        const std::string payload = "GOTO=," + format_fixed(rotator::wrap360(cmd->az), 2) + "," + format_fixed(cmd->el, 2);
-        const auto r = client.request(payload, opt.io_timeout);
-        if (!r) {
-          lost = client.error();
-          break;
-        }
-        std::lock_guard lk(m);
-        if (refused(*r)) {
-          health.state = rotator::LinkState::fault;
-          health.message = label + " refused " + payload + ": " + *r;
-        } else if (health.state == rotator::LinkState::fault) {
-          health.state = rotator::LinkState::ok;
-          health.message.clear();
-        }
-      }
-      if (Steady::now() >= next_poll) {
-        const auto r = client.request("STATUS?", opt.io_timeout);
-        if (!r) {
-          lost = client.error();
-          break;
-        }
-        const auto c = parse_payload(*r);
-        if (c && c->fields.size() >= 15) {
-          const auto& f = c->fields;
-          const auto az = parse_number(f[1]), el = parse_number(f[2]);
-          std::lock_guard lk(m);
-          if (az && el) pos = rotator::AzEl{*az, *el};
-          limits.az = {f[4] == "1", f[3] == "1"};
-          limits.el = {f[6] == "1", f[5] == "1"};
-          motion = {drive_of(f[11]), drive_of(f[12])};
-        }
-        next_poll = Steady::now() + opt.poll;
-      }
-    }
-    client.close();
-    {
-      std::lock_guard lk(m);
-      if (quit) break;
-    }
-    const std::string msg = "lost " + label + ": " + lost + "; motion stopped, reconnecting";
-    set_fault(msg);
-    spdlog::warn("rotator: {}", msg);
-    reported = false;
-    if (!wait(backoff)) break;
-  }
-  std::lock_guard lk(m);
-  connected = false;
-}
-
-SatrakRotator::SatrakRotator(SatrakRotatorOptions options) : s_(std::make_shared<Shared>()) {
-  s_->opt = std::move(options);
-  const bool v6 = s_->opt.host.find(':') != std::string::npos;
-  s_->label = "satrak " + (v6 ? "[" + s_->opt.host + "]" : s_->opt.host) + ":" + std::to_string(s_->opt.port);
-  s_->health = {rotator::LinkState::connecting, "connecting to " + s_->label, 0};
-  worker_ = std::thread([s = s_] { s->run(); });
-}
-
-SatrakRotator::~SatrakRotator() {
-  {
-    std::lock_guard lk(s_->m);
-    s_->quit = true;
-  }
-  s_->cv.notify_all();
-  worker_.join();  // every wait of the worker is bounded by io_timeout
-}
-
-std::string SatrakRotator::description() const { return s_->label; }
-
-rotator::Health SatrakRotator::health() {
-  std::lock_guard lk(s_->m);
-  return s_->health;
-}
-
-rotator::AxisMotion SatrakRotator::motion() {
-  std::lock_guard lk(s_->m);
-  return s_->motion;
-}
-
-rotator::LimitFlags SatrakRotator::limits() {
-  std::lock_guard lk(s_->m);
-  return s_->limits;
-}
-
-void SatrakRotator::stop() {
-  std::lock_guard lk(s_->m);
-  s_->pending_pos.reset();
-  if (s_->connected) s_->pending_stop = true;
-  s_->cv.notify_all();
-}
-
-std::optional<rotator::AzEl> SatrakRotator::read() {
-  std::lock_guard lk(s_->m);
-  return s_->pos;
-}
-
-void SatrakRotator::set_position(rotator::AzEl p) {
-  std::lock_guard lk(s_->m);
-  if (!s_->connected) return;
-  s_->pending_pos = p;
-  s_->cv.notify_all();
-}
+SatrakRotator::SatrakRotator(SatrakRotatorOptions options)
+    : WorkerRotator(rotator_label(options), std::make_unique<SatrakLink>(options),
+                    {options.poll, options.io_timeout, options.backoff_min, options.backoff_max}) {}
 
 }  // namespace tb::satrak

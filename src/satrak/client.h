@@ -8,10 +8,9 @@
 #include <ostream>
 #include <string>
 #include <string_view>
-#include <thread>
 #include <vector>
 
-#include "rotator/driver.h"
+#include "rotator/worker.h"
 #include "satrak/frame.h"
 
 namespace tb::satrak {
@@ -73,34 +72,17 @@ struct SatrakRotatorOptions {
 // otherwise.
 std::optional<SatrakRotatorOptions> parse_rotator_spec(std::string_view text, std::string& error);
 
-// Another Satrak ACU as trakbox's rotator. All network I/O runs on a worker thread:
+// Another Satrak ACU as trakbox's rotator. All network I/O runs on the worker thread of a
+// WorkerRotator (rotator/worker.h):
 //   set_position -> GOTO=,AZ,EL (the latest position wins; STOP= first when stop() came in)
 //   read / motion / limits -> from STATUS? polled every `poll` (X2/X3 az/el, X4..X7 limit flags,
 //                             X12/X13 motion)
 //   health -> connecting / ok / fault; a lost connection is reported and retried with backoff
 //             (backoff_min doubling to backoff_max); commands given while it is down are dropped.
 // A GOTO the ACU refuses (ERR) is reported as a fault with its code until a GOTO is accepted.
-class SatrakRotator final : public rotator::DegreeRotator {
+class SatrakRotator final : public rotator::WorkerRotator {
  public:
   explicit SatrakRotator(SatrakRotatorOptions options);
-  ~SatrakRotator() override;  // stops the worker (within about one io_timeout)
-  SatrakRotator(const SatrakRotator&) = delete;
-  SatrakRotator& operator=(const SatrakRotator&) = delete;
-
-  std::string description() const override;
-  rotator::Health health() override;
-  rotator::AxisMotion motion() override;
-  rotator::LimitFlags limits() override;
-  void stop() override;
-  std::optional<rotator::AzEl> read() override;
-  void set_position(rotator::AzEl p) override;
-  rotator::Range az_range() override { return {0.0, 360.0}; }
-
-  struct Shared;
-
- private:
-  std::shared_ptr<Shared> s_;
-  std::thread worker_;
 };
 
 }  // namespace tb::satrak

@@ -1,65 +1,37 @@
 #include "satrak/settings.h"
 
-#include <cmath>
-#include <stdexcept>
+#include "store/json_fields.h"
 
 namespace tb::satrak {
 using nlohmann::json;
 
 namespace {
 
-[[noreturn]] void bad(const std::string& where, const std::string& what) { throw std::runtime_error(where + ": " + what); }
+using store::json_fields::bad;
+using store::json_fields::boolean;
+using store::json_fields::field;
+using store::json_fields::integer;
+using store::json_fields::num;
+using store::json_fields::path;
 
-const json& field(const json& j, const std::string& where, const char* key) {
-  if (!j.is_object()) bad(where, "expected an object");
-  const auto it = j.find(key);
-  if (it == j.end()) bad(where + "." + key, "missing");
-  return *it;
-}
-
-double num(const json& j, const std::string& where, const char* key, double lo, double hi) {
-  const json& v = field(j, where, key);
-  if (!v.is_number()) bad(where + "." + key, "expected a number");
-  const double d = v.get<double>();
-  if (!std::isfinite(d) || d < lo || d > hi)
-    bad(where + "." + key, "value " + v.dump() + " outside " + json(lo).dump() + " .. " + json(hi).dump());
-  return d;
-}
-
-long long integer(const json& j, const std::string& where, const char* key, long long lo, long long hi) {
-  const json& v = field(j, where, key);
-  if (!v.is_number_integer()) bad(where + "." + key, "expected a whole number");
-  const long long n = v.get<long long>();
-  if (n < lo || n > hi) bad(where + "." + key, "value " + v.dump() + " outside " + std::to_string(lo) + " .. " + std::to_string(hi));
-  return n;
-}
-
-bool boolean(const json& j, const std::string& where, const char* key) {
-  const json& v = field(j, where, key);
-  if (!v.is_boolean()) bad(where + "." + key, "expected true or false");
-  return v.get<bool>();
-}
-
+// A string the Satrak frame can carry back: no control characters and none of its separators.
 std::string text(const json& j, const std::string& where, const char* key, std::size_t max_len) {
-  const json& v = field(j, where, key);
-  if (!v.is_string()) bad(where + "." + key, "expected a string");
-  std::string s = v.get<std::string>();
-  if (s.size() > max_len) bad(where + "." + key, "longer than " + std::to_string(max_len) + " characters");
+  std::string s = store::json_fields::text(j, where, key, max_len);
   for (unsigned char c : s)
-    if (c < 0x20 || c == ',' || c == '*' || c == '$') bad(where + "." + key, "holds a control character, ',', '*' or '$'");
+    if (c < 0x20 || c == ',' || c == '*' || c == '$') bad(path(where, key), "holds a control character, ',', '*' or '$'");
   return s;
 }
 
 std::string file_name(const json& j, const std::string& where, const char* key) {
   std::string s = text(j, where, key, limits::kNameMax);
-  if (!s.empty() && !safe_file_name(s)) bad(where + "." + key, "'" + s + "' is not a plain file name (no '/', no '..')");
+  if (!s.empty() && !safe_file_name(s)) bad(path(where, key), "'" + s + "' is not a plain file name (no '/', no '..')");
   return s;
 }
 
 orbit::UtcTime time_of(const json& j, const std::string& where, const char* key) {
   const std::string s = text(j, where, key, 40);
   const auto t = orbit::parse_iso8601(s);
-  if (!t) bad(where + "." + key, "expected an ISO 8601 UTC time, found '" + s + "'");
+  if (!t) bad(path(where, key), "expected an ISO 8601 UTC time, found '" + s + "'");
   return *t;
 }
 

@@ -268,6 +268,7 @@ Unit::Unit(boost::asio::io_context& io, tracker::StationLoop& station, store::Mo
 Unit::~Unit() {
   running_ = false;
   timer_.cancel();
+  if (tracking_) station_.remote_follow(std::nullopt);
   downloader_.reset();  // aborts and joins: no callback runs after this
   alive_.reset();
 }
@@ -419,6 +420,7 @@ void Unit::check_takeover() {
     auto_started_ = false;
     tracking_stopped_fault_ = true;
     last_track_target_.reset();
+    station_.remote_follow(std::nullopt);
   }
   release();
 }
@@ -496,6 +498,7 @@ void Unit::stop_tracking(bool fault) {
   auto_started_ = false;
   last_track_target_.reset();
   if (fault && was) tracking_stopped_fault_ = true;
+  if (was) station_.remote_follow(std::nullopt);
   if (owner_ == Owner::track) {
     station_.rotator().stop();
     release();
@@ -515,6 +518,8 @@ void Unit::track(orbit::UtcTime now) {
     stop_tracking(true);
     return;
   }
+  // The station keeps the radio on this satellite and names it on the status line.
+  station_.remote_follow(tracker::StationLoop::RemoteFollow{"Satrak", elements_->label(), elements_->catalog_number, *o});
   const orbit::Pass* p = pass_at(t);
   if (o->look.el_deg >= s_.el_threshold_deg) {
     const AzEl a = adjusted(o->look.az_deg, o->look.el_deg);
@@ -944,6 +949,7 @@ Unit::Reply Unit::cmd_goto(const Command& c) {
 
 Unit::Reply Unit::cmd_stop(const Command& c) {
   if (!c.fields.empty()) return reply_error(c.head(), Error::parameter_count);
+  if (tracking_) station_.remote_follow(std::nullopt);
   tracking_ = false;
   auto_started_ = false;
   last_track_target_.reset();

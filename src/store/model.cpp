@@ -1,56 +1,19 @@
 #include "store/model.h"
 
-#include <cmath>
-#include <stdexcept>
+#include "store/json_fields.h"
 
 namespace tb::store {
 using nlohmann::json;
 
 namespace {
 
-[[noreturn]] void bad(const std::string& where, const std::string& what) {
-  throw std::runtime_error(where + ": " + what);
-}
-
-std::string path(const std::string& where, const char* key) { return where.empty() ? key : where + "." + key; }
-
-const json& field(const json& j, const std::string& where, const char* key) {
-  if (!j.is_object()) bad(where.empty() ? "state" : where, "expected an object");
-  const auto it = j.find(key);
-  if (it == j.end()) bad(path(where, key), "missing");
-  return *it;
-}
-
-double num(const json& j, const std::string& where, const char* key, double lo, double hi) {
-  const json& v = field(j, where, key);
-  if (!v.is_number()) bad(where + "." + key, "expected a number");
-  const double d = v.get<double>();
-  if (!std::isfinite(d) || d < lo || d > hi)
-    bad(where + "." + key, "value " + v.dump() + " outside " + json(lo).dump() + " .. " + json(hi).dump());
-  return d;
-}
-
-long long integer(const json& j, const std::string& where, const char* key, long long lo, long long hi) {
-  const json& v = field(j, where, key);
-  if (!v.is_number_integer()) bad(where + "." + key, "expected a whole number");
-  const long long n = v.get<long long>();
-  if (n < lo || n > hi) bad(where + "." + key, "value " + v.dump() + " outside " + std::to_string(lo) + " .. " + std::to_string(hi));
-  return n;
-}
-
-bool boolean(const json& j, const std::string& where, const char* key) {
-  const json& v = field(j, where, key);
-  if (!v.is_boolean()) bad(where + "." + key, "expected true or false");
-  return v.get<bool>();
-}
-
-std::string text(const json& j, const std::string& where, const char* key, std::size_t max_len) {
-  const json& v = field(j, where, key);
-  if (!v.is_string()) bad(where + "." + key, "expected a string");
-  std::string s = v.get<std::string>();
-  if (s.size() > max_len) bad(where + "." + key, "longer than " + std::to_string(max_len) + " characters");
-  return s;
-}
+using json_fields::bad;
+using json_fields::boolean;
+using json_fields::field;
+using json_fields::integer;
+using json_fields::num;
+using json_fields::path;
+using json_fields::text;
 
 // An enum stored by name.
 template <typename E, std::size_t N>
@@ -60,7 +23,7 @@ E named(const json& j, const std::string& where, const char* key, const std::pai
     if (s == n) return e;
   std::string choices;
   for (const auto& [e, n] : names) choices += (choices.empty() ? "" : ", ") + std::string(n);
-  bad(where + "." + key, "'" + s + "' is not one of " + choices);
+  bad(path(where, key), "'" + s + "' is not one of " + choices);
 }
 template <typename E, std::size_t N>
 const char* name_of(E e, const std::pair<E, const char*> (&names)[N]) {
@@ -234,6 +197,7 @@ json to_json(const Model& m) {
 }
 
 Model model_from_json(const json& j) {
+  if (!j.is_object()) bad("state", "expected an object");
   Model m;
   {
     const std::string w = "station";

@@ -23,10 +23,36 @@ void StationLoop::set_rotor_control(bool on) {
 
 void StationLoop::reconfigure() {
   planned_.reset();  // the geometry may have changed
+  find_remote_in_database();  // the database may have changed too
   rotator_->set_config(model_.rotator, model_.station.rotor_start);
   rotator_->set_control_enabled(model_.rotor_control);
   tuner_.set_config(model_.radio);
   tuned_.reset();  // frequencies may have changed: select the satellite again
+}
+
+void StationLoop::remote_follow(std::optional<RemoteFollow> f) {
+  const bool same = f && remote_ && remote_->catalog_number == f->catalog_number;
+  remote_ = std::move(f);
+  if (!same) find_remote_in_database();
+}
+
+void StationLoop::find_remote_in_database() {
+  remote_db_.reset();
+  if (!remote_) return;
+  const auto& sats = model_.db.satellites;
+  for (std::size_t i = 0; i < sats.size(); ++i)
+    if (sats[i].elements.catalog_number == remote_->catalog_number) {
+      remote_db_ = static_cast<int>(i);
+      return;
+    }
+}
+
+void StationLoop::follow_radio(int db_index, const orbit::Observation& obs) {
+  if (!tuned_ || *tuned_ != db_index) {
+    tuner_.select(model_.db.satellites[static_cast<std::size_t>(db_index)].radio);
+    tuned_ = db_index;
+  }
+  if (obs.ok()) radio::apply(*radio_, tuner_.update(obs.look.el_deg, obs.look.range_rate_km_s));
 }
 
 rotator::AzEl StationLoop::point(rotator::AzEl compass) {
@@ -62,6 +88,9 @@ const rotator::PassPlan* StationLoop::plan_for(const SatNow& s) {
 
 void StationLoop::tick() {
   const orbit::UtcTime now = clock_.now();
+  if (tracker_.mode() != Mode::off) remote_follow(std::nullopt);
+  if (remote_ && remote_db_ && static_cast<std::size_t>(*remote_db_) < model_.db.satellites.size())
+    follow_radio(*remote_db_, remote_->obs);
   if (tracker_.mode() != Mode::off) {
     const Decision d = tracker_.tick();
     const SatNow* followed = tracker_.followed();
@@ -84,12 +113,7 @@ void StationLoop::tick() {
         break;
     }
     // The radio follows the satellite being followed.
-    const SatNow* f = tracker_.followed();
-    if (f && (!tuned_ || *tuned_ != f->db_index)) {
-      tuner_.select(model_.db.satellites[static_cast<std::size_t>(f->db_index)].radio);
-      tuned_ = f->db_index;
-    }
-    if (f && f->obs.ok()) radio::apply(*radio_, tuner_.update(f->obs.look.el_deg, f->obs.look.range_rate_km_s));
+    if (const SatNow* f = tracker_.followed()) follow_radio(f->db_index, f->obs);
   }
   rotator_->tick(now);
 }
@@ -110,6 +134,11 @@ std::string StationLoop::status_line() const {
   if (const SatNow* f = tracker_.followed(); f && tracker_.mode() != Mode::off) {
     char s[64];
     std::snprintf(s, sizeof s, "%s%s", f->name.c_str(), f->in_range ? " AOS" : "");
+    sat = s;
+  } else if (remote_) {
+    char s[96];
+    std::snprintf(s, sizeof s, "%s: %s%s", remote_->owner.c_str(), remote_->name.c_str(),
+                  remote_->obs.ok() && remote_->obs.look.el_deg >= -2.0 ? " AOS" : "");
     sat = s;
   }
   const auto& rs = rotator_->status();

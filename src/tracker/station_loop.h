@@ -37,6 +37,22 @@ class StationLoop {
   // After the operator changed station, rotator or radio settings in the model.
   void reconfigure();
 
+  // Something other than the Tracker follows a satellite with the antenna: the Satrak unit's
+  // TRACK. It reports each of its ticks; the station then keeps the radio on that satellite's
+  // frequencies with its Doppler (when the database holds the satellite: same catalogue number)
+  // and the status line names it. nullopt when it stops. The Tracker starting (menu S, 1, M)
+  // ends it: whoever takes the antenna takes the radio.
+  struct RemoteFollow {
+    std::string owner;        // "Satrak"
+    std::string name;         // the element set's name
+    int catalog_number = 0;
+    orbit::Observation obs;   // at the follower's time
+  };
+  void remote_follow(std::optional<RemoteFollow> f);
+  const std::optional<RemoteFollow>& remote_followed() const { return remote_; }
+  // The database satellite the radio follows for the remote follower, if any.
+  std::optional<int> remote_db_index() const { return remote_db_; }
+
   rotator::Controller& rotator() { return *rotator_; }
   const rotator::Controller& rotator() const { return *rotator_; }
   radio::RadioDriver& radio() { return *radio_; }
@@ -56,6 +72,10 @@ class StationLoop {
   std::unique_ptr<radio::RadioDriver> radio_;
   radio::Tuner tuner_;
   std::optional<int> tuned_;  // db index the tuner is set up for
+  std::optional<RemoteFollow> remote_;
+  std::optional<int> remote_db_;  // remote_'s satellite in the database
+  void follow_radio(int db_index, const orbit::Observation& obs);
+  void find_remote_in_database();
 
   // The plan for the pass being followed (or coming): which way round, flip, where to wait.
   struct PlannedPass {

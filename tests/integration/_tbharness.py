@@ -153,6 +153,42 @@ def free_port():
         return s.getsockname()[1]
 
 
+def sh(*args, timeout=20):
+    """Runs a command; (exit status, stdout, stderr)."""
+    p = subprocess.run(list(args), capture_output=True, text=True, timeout=timeout)
+    return p.returncode, p.stdout, p.stderr
+
+
+def reap(procs):
+    """Kills and waits for every process still running (a test's finally)."""
+    for p in procs:
+        if p.poll() is None:
+            p.kill()
+            p.wait()
+
+
+def pointing_error(az1, el1, az2, el2):
+    """Angle between two antenna pointing directions, degrees (elevations over 90 allowed)."""
+    import math
+    a1, e1, a2, e2 = map(math.radians, (az1, el1, az2, el2))
+    c = math.sin(e1) * math.sin(e2) + math.cos(e1) * math.cos(e2) * math.cos(a1 - a2)
+    return math.degrees(math.acos(max(-1.0, min(1.0, c))))
+
+
+def satellite_track(at, seconds, sat="ISS", station="27.391,128.657,50", freq=None):
+    """Where a shipped satellite is, one row a second from `at` (a datetime), from trakbox's own
+    schedule command (the engine is compared with Skyfield elsewhere): dicts with az_deg, el_deg,
+    doppler_hz (with freq), ..."""
+    import json
+    args = [BIN, "schedule", os.path.join(SOURCE, "data", "amateur.tle"), "--sat", sat, "--station", station,
+            "--start", at.strftime("%Y-%m-%dT%H:%M:%S.%fZ"), "--step", "1", "--count", str(seconds), "--json"]
+    if freq:
+        args += ["--freq", str(freq)]
+    code, out, err = sh(*args)
+    check(code == 0, f"schedule: {err}")
+    return json.loads(out)
+
+
 def run_test(main):
     """Runs main() and prints one result line; exit status 0 on success."""
     name = os.path.basename(main.__code__.co_filename)

@@ -3,7 +3,6 @@ and the dummy radio of `rigctld -m 1` stand in for the station's hardware; Hamli
 `rigctl` read back what trakbox made of them. The ISS pass of 2026-05-21 05:33-05:45 UTC seen from
 the factory station (27.391 N, 128.657 E) is tracked from two minutes before its culmination.
 """
-import json
 import os
 import re
 import shutil
@@ -14,36 +13,19 @@ import time
 from datetime import datetime, timedelta, timezone
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, SOURCE, Failure, check, free_port, run_test  # noqa: E402
+from _tbharness import (BIN, check, free_port, pointing_error, reap, run_test, satellite_track,  # noqa: E402
+                        sh)
 
 START = datetime(2026, 5, 21, 5, 37, 0, tzinfo=timezone.utc)
 
 
-def sh(*args, timeout=20):
-    p = subprocess.run(list(args), capture_output=True, text=True, timeout=timeout)
-    return p.returncode, p.stdout, p.stderr
-
-
 def track(at, seconds=1):
-    """Where the ISS is at `at` and the following seconds, from trakbox's own schedule command (the
-    engine compared with Skyfield elsewhere)."""
-    code, out, err = sh(BIN, "schedule", os.path.join(SOURCE, "data", "amateur.tle"), "--sat", "ISS",
-                        "--station", "27.391,128.657,50", "--start", at.strftime("%Y-%m-%dT%H:%M:%S.%fZ"),
-                        "--step", "1", "--count", str(seconds), "--freq", "437800000", "--json")
-    check(code == 0, f"schedule: {err}")
-    return json.loads(out)
+    """The ISS from the factory station, with the Doppler on its 437.800 MHz downlink."""
+    return satellite_track(at, seconds, freq=437800000)
 
 
 def expected(at):
     return track(at)[0]
-
-
-def pointing_error(az1, el1, az2, el2):
-    """Angle between two pointing directions, degrees."""
-    import math
-    a1, e1, a2, e2 = map(math.radians, (az1, el1, az2, el2))
-    c = math.sin(e1) * math.sin(e2) + math.cos(e1) * math.cos(e2) * math.cos(a1 - a2)
-    return math.degrees(math.acos(max(-1.0, min(1.0, c))))
 
 
 def main():
@@ -105,10 +87,7 @@ def main():
         tb.stdin.close()
         check(tb.wait(20) == 0, "trakbox leaves cleanly when input ends")
     finally:
-        for p in procs:
-            if p.poll() is None:
-                p.kill()
-                p.wait()
+        reap(procs)
         shutil.rmtree(state, ignore_errors=True)
 
 

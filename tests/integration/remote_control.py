@@ -13,12 +13,7 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, CLOCK, Failure, check, free_port, run_test  # noqa: E402
-
-
-def sh(*args, timeout=20):
-    p = subprocess.run(list(args), capture_output=True, text=True, timeout=timeout)
-    return p.returncode, p.stdout, p.stderr
+from _tbharness import BIN, CLOCK, Failure, check, free_port, run_test, sh  # noqa: E402
 
 
 def main():

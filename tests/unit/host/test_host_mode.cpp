@@ -1,92 +1,37 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
-#include <fstream>
 #include <memory>
-#include <sstream>
 
 #include "host/host_mode.h"
-#include "radio/freqmode.h"
-#include "radio/simulated.h"
-#include "rotator/adc_model.h"
-#include "rotator/simulated.h"
-#include "station/clock.h"
-#include "store/model.h"
-#include "tracker/station_loop.h"
+#include "support/sim_station.h"
 
 using namespace tb;
 
 namespace {
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-store::Model shipped_model() {
-  store::Model m;
-  const std::string dir = TRAKBOX_SOURCE_DIR "/data/";
-  const auto sets = orbit::parse_nasa(read_file(dir + "amateur.tle"), "amateur.tle");
-  const auto fm = radio::parse_freqmode(read_file(dir + "freqmode.txt"));
-  m.db = store::make_database(sets.sets, fm.records);
-  return m;
-}
-
-// A whole simulated station (rotator, radio, tracker) with a clock the test moves.
-struct Station {
-  explicit Station(bool rotor_control = true, rotator::RotatorPosition start = {})
-      : start_at(start), now(orbit::from_civil(2026, 5, 21, 12, 0, 0)), model(shipped_model()), clock([this] { return now; }),
-        tracker(model, clock) {
+// A whole simulated station (rotator, radio, tracker) with a clock the test moves, and the host
+// mode interpreter on it.
+struct Station : testing::StationFixture {
+  explicit Station(bool rotor_control = true, rotator::RotatorPosition start = {}) : start_at(start) {
     model.rotor_control = rotor_control;
     build();
   }
   void build() {
     auto params = rotator::SimulatedRotatorParams::matching(model.rotator);
     params.start = start_at;
-    auto sim = std::make_unique<rotator::SimulatedRotator>(clock, params);
-    rotator_sim = sim.get();
-    auto controller = std::make_unique<rotator::Controller>(model.rotator, model.station.rotor_start, std::move(sim));
-    auto rad = std::make_unique<radio::SimulatedRadio>();
-    radio_sim = rad.get();
-    station = std::make_unique<tracker::StationLoop>(model, clock, tracker, std::move(controller), std::move(rad));
+    build_station(params);
     host = std::make_unique<host::Interpreter>(*station);
     station->tick();
-  }
-  // Runs the station for `seconds` in 100 ms steps; `each` sees every step.
-  template <class F>
-  void run(double seconds, F each) {
-    for (int i = 0; i < static_cast<int>(seconds * 10); ++i) {
-      now += std::chrono::milliseconds(100);
-      station->tick();
-      each();
-    }
-  }
-  void run(double seconds) {
-    run(seconds, [] {});
-  }
-  // The simulated rotator's true compass azimuth and elevation.
-  rotator::AzEl truth() {
-    const auto p = rotator_sim->true_position();
-    return {rotator::wrap360(p.az_travel + rotator::rotor_start_deg(model.station.rotor_start)), p.el};
   }
   host::Reply cmd(std::string_view line) { return host->execute(line); }
 
   rotator::RotatorPosition start_at;
-  orbit::UtcTime now;
-  store::Model model;
-  station::RealTimeClock clock;
-  tracker::Tracker tracker;
-  rotator::SimulatedRotator* rotator_sim = nullptr;
-  radio::SimulatedRadio* radio_sim = nullptr;
-  std::unique_ptr<tracker::StationLoop> station;
   std::unique_ptr<host::Interpreter> host;
 };
 
-// Dead band plus one count of ADC flooring, in degrees (factory span: 360/1023 and 90/511 a count).
-constexpr double kAzTol = 4 * 360.0 / 1023;
-constexpr double kElTol = 2 * 90.0 / 511;
+using testing::kAzTol;
+using testing::kElTol;
 
 }  // namespace
 

@@ -2,51 +2,18 @@
 // tracker and station loop on the simulated rotator and radio, and a scripted terminal whose waits
 // advance the clock and tick the station (as the event loop would).
 #pragma once
-#include <fstream>
 #include <memory>
-#include <sstream>
 
 #include "menus/menus.h"
 #include "menus/term/script_terminal.h"
-#include "radio/simulated.h"
-#include "rotator/simulated.h"
-#include "station/clock.h"
-#include "store/model.h"
-#include "tracker/station_loop.h"
+#include "support/sim_station.h"
 
 namespace tb::testing {
 
-inline std::string read_file(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-// The shipped data (data/amateur.tle + data/freqmode.txt) as a database.
-inline store::Model shipped_model() {
-  store::Model m;
-  const std::string dir = TRAKBOX_SOURCE_DIR "/data/";
-  const auto sets = orbit::parse_nasa(read_file(dir + "amateur.tle"), "amateur.tle");
-  const auto fm = radio::parse_freqmode(read_file(dir + "freqmode.txt"));
-  m.db = store::make_database(sets.sets, fm.records);
-  return m;
-}
-
-struct MenuFixture {
+struct MenuFixture : StationFixture {
   explicit MenuFixture(std::string input = {}, orbit::UtcTime start = orbit::from_civil(2026, 5, 21, 12, 0, 0))
-      : now(start), model(shipped_model()), clock([this] { return now; }), tracker(model, clock),
-        term(std::move(input)) {
-    auto sim = std::make_unique<rotator::SimulatedRotator>(clock, rotator::SimulatedRotatorParams::matching(model.rotator));
-    rotator_sim = sim.get();
-    auto controller = std::make_unique<rotator::Controller>(model.rotator, model.station.rotor_start, std::move(sim));
-    auto rad = std::make_unique<radio::SimulatedRadio>();
-    radio_sim = rad.get();
-    station = std::make_unique<tracker::StationLoop>(model, clock, tracker, std::move(controller), std::move(rad));
-    services = std::make_unique<menus::Services>(menus::Services{model, clock, tracker, *station, [this]() -> std::optional<std::string> {
-      ++saves;
-      return std::nullopt;
-    }, "test"});
+      : StationFixture(start), term(std::move(input)) {
+    build();
     // Each wait of the terminal lets the timeout pass on the clock and ticks the station.
     term.on_wait = [this](std::optional<term::Duration> timeout) {
       now += std::chrono::duration_cast<std::chrono::microseconds>(timeout.value_or(std::chrono::seconds(1)));
@@ -54,13 +21,16 @@ struct MenuFixture {
     };
   }
 
-  orbit::UtcTime now;
-  store::Model model;
-  station::RealTimeClock clock;
-  tracker::Tracker tracker;
-  rotator::SimulatedRotator* rotator_sim = nullptr;
-  radio::SimulatedRadio* radio_sim = nullptr;
-  std::unique_ptr<tracker::StationLoop> station;
+  // (Re)builds the station around a simulated rotator with these mechanics (by default matching
+  // the model's rotator settings), and the menus' services on it.
+  void build(std::optional<rotator::SimulatedRotatorParams> params = std::nullopt) {
+    build_station(params);
+    services = std::make_unique<menus::Services>(menus::Services{model, clock, tracker, *station, [this]() -> std::optional<std::string> {
+      ++saves;
+      return std::nullopt;
+    }, "test"});
+  }
+
   std::unique_ptr<menus::Services> services;
   term::ScriptTerminal term;
   int saves = 0;

@@ -17,37 +17,12 @@ bool has(const std::string& out, std::string_view text) { return out.find(text) 
 
 // Rebuilds the fixture's station around a simulated rotator with these mechanics.
 void rebuild(testing::MenuFixture& f, rotator::SimulatedRotatorParams p) {
-  auto sim = std::make_unique<rotator::SimulatedRotator>(f.clock, p);
-  f.rotator_sim = sim.get();
-  auto controller = std::make_unique<rotator::Controller>(f.model.rotator, f.model.station.rotor_start, std::move(sim));
-  auto rad = std::make_unique<radio::SimulatedRadio>();
-  f.radio_sim = rad.get();
-  f.station = std::make_unique<tracker::StationLoop>(f.model, f.clock, f.tracker, std::move(controller), std::move(rad));
-  f.services = std::make_unique<menus::Services>(menus::Services{f.model, f.clock, f.tracker, *f.station,
-                                                                 [&f]() -> std::optional<std::string> {
-                                                                   ++f.saves;
-                                                                   return std::nullopt;
-                                                                 },
-                                                                 "test"});
+  f.build(p);
   f.station->tick();
 }
 
-// The simulated rotator's true compass azimuth and elevation.
-rotator::AzEl truth(testing::MenuFixture& f) {
-  const auto p = f.rotator_sim->true_position();
-  return {rotator::wrap360(p.az_travel + rotator::rotor_start_deg(f.model.station.rotor_start)), p.el};
-}
-
-// Dead band plus one count of ADC flooring (factory span).
-constexpr double kAzTol = 4 * 360.0 / 1023;
-constexpr double kElTol = 2 * 90.0 / 511;
-
-void run(testing::MenuFixture& f, double seconds) {
-  for (int i = 0; i < static_cast<int>(seconds * 10); ++i) {
-    f.now += std::chrono::milliseconds(100);
-    f.station->tick();
-  }
-}
+using testing::kAzTol;
+using testing::kElTol;
 
 const char* kSample =
     "1 WA7GXD 32.259 -110.778 842 S\r\n"
@@ -144,11 +119,11 @@ TEST_CASE("6-1 calibration records the simulated rotator's counts at its end sto
   CHECK(f.station->rotator().config().az_span == rotator::AxisSpan{3, 837});
   CHECK(f.saves == 1);
   // With the new span the monitor reads the true position.
-  run(f, 1);
+  f.run(1);
   const auto a = f.station->antenna();
   REQUIRE(a);
-  CHECK(rotator::azimuth_distance(a->az, truth(f).az) < 1.0);
-  CHECK(std::abs(a->el - truth(f).el) < 0.3);
+  CHECK(rotator::azimuth_distance(a->az, f.truth().az) < 1.0);
+  CHECK(std::abs(a->el - f.truth().el) < 0.3);
   CHECK(f.station->rotator().status().mode == rotator::ControlMode::idle);
 }
 
@@ -179,8 +154,8 @@ TEST_CASE("6-1 reaches the mechanical ends whatever the old span and limits say"
   CHECK(f.station->rotator().config() == f.model.rotator);
   // Back under the limits: asked for 0/80, the antenna stops at 45.
   f.station->point({0.0, 80.0});
-  run(f, 60);
-  CHECK(std::abs(truth(f).el - 45) <= 0.3);
+  f.run(60);
+  CHECK(std::abs(f.truth().el - 45) <= 0.3);
 }
 
 TEST_CASE("6-1: N leaves the span alone; a span too narrow is refused") {
@@ -309,9 +284,9 @@ TEST_CASE("6-4 sets parking and limits, as in the manual's example") {
   // Parking now works: the controller goes there.
   f.station->set_rotor_control(true);
   CHECK(f.station->rotator().park());
-  run(f, 60);
-  CHECK(rotator::azimuth_distance(truth(f).az, 90) <= kAzTol);
-  CHECK(std::abs(truth(f).el - 45) <= kElTol);
+  f.run(60);
+  CHECK(rotator::azimuth_distance(f.truth().az, 90) <= kAzTol);
+  CHECK(std::abs(f.truth().el - 45) <= kElTol);
 }
 
 TEST_CASE("6-4 refuses limits that leave nowhere to go; N switches parking and limits off") {
@@ -369,7 +344,7 @@ TEST_CASE("6-6-1 keyboard control drives the simulated rotator; 5 stops, Enter l
   const double travel = f.rotator_sim->true_position().az_travel;
   CHECK(travel > 40.0);
   CHECK(travel < 70.0);
-  run(f, 5);
+  f.run(5);
   CHECK(f.rotator_sim->true_position().az_travel == doctest::Approx(travel).epsilon(0.02));
   CHECK(f.station->rotator().status().mode == rotator::ControlMode::idle);
 }
@@ -384,7 +359,7 @@ TEST_CASE("6-6-1 keyboard control stops at the rotation limits") {
   f.term.on_wait = [&](std::optional<term::Duration> timeout) {
     f.now += std::chrono::duration_cast<std::chrono::microseconds>(timeout.value_or(std::chrono::seconds(1)));
     f.station->tick();
-    highest = std::max(highest, truth(f).el);
+    highest = std::max(highest, f.truth().el);
   };
   f.term.timeouts_before_key = 120;  // 60 s of Up: 180 degrees worth
   menus::menu_6_configuration(f.term, *f.services);
@@ -402,8 +377,8 @@ TEST_CASE("6-6-2 points the simulated rotator at the value entered, as in the ma
   CHECK(has(out, "Azimuth: 180.0  210\nElevation: 0.0  20\nAZ=   0 / 180.0deg EL=   0 / 0.0deg.\n"));
   CHECK(f.tracker.mode() == tracker::Mode::off);  // direct control stops tracking
   CHECK(f.station->rotator().status().on_target);
-  CHECK(rotator::azimuth_distance(truth(f).az, 210) <= kAzTol);
-  CHECK(std::abs(truth(f).el - 20) <= kElTol);
+  CHECK(rotator::azimuth_distance(f.truth().az, 210) <= kAzTol);
+  CHECK(std::abs(f.truth().el - 20) <= kElTol);
   // The last live line is the arrival.
   const auto a = f.station->antenna();
   REQUIRE(a);
@@ -425,15 +400,15 @@ TEST_CASE("6-6-2 never leaves the rotation limits, even for a target outside the
   f.term.on_wait = [&](std::optional<term::Duration> timeout) {
     f.now += std::chrono::duration_cast<std::chrono::microseconds>(timeout.value_or(std::chrono::seconds(1)));
     f.station->tick();
-    const auto t = truth(f);
+    const auto t = f.truth();
     if ((t.az > 90 + kAzTol && t.az < 270 - kAzTol) || t.el > 45 + kElTol) outside = true;
   };
   f.term.timeouts_before_key = 4000;
   menus::menu_6_configuration(f.term, *f.services);
   CHECK(has(f.term.output(), "Limited to Az 90.0 El 45.0 (antenna rotation limit)\n"));
   CHECK(!outside);
-  CHECK(rotator::azimuth_distance(truth(f).az, 90) <= kAzTol);
-  CHECK(std::abs(truth(f).el - 45) <= kElTol);
+  CHECK(rotator::azimuth_distance(f.truth().az, 90) <= kAzTol);
+  CHECK(std::abs(f.truth().el - 45) <= kElTol);
 }
 
 TEST_CASE("6-6-2 asks again for a value out of range") {
@@ -443,8 +418,8 @@ TEST_CASE("6-6-2 asks again for a value out of range") {
   menus::menu_6_configuration(f.term, *f.services);
   CHECK(has(f.term.output(), "400 is out of range: expected 0 to 360"));
   CHECK(has(f.term.output(), "95 is out of range: expected 0 to 90"));
-  CHECK(rotator::azimuth_distance(truth(f).az, 10) <= kAzTol);
-  CHECK(std::abs(truth(f).el - 10) <= kElTol);
+  CHECK(rotator::azimuth_distance(f.truth().az, 10) <= kAzTol);
+  CHECK(std::abs(f.truth().el - 10) <= kElTol);
 }
 
 TEST_CASE("6-6 with rotor control off asks first; N moves nothing, Y switches it on") {
@@ -462,7 +437,7 @@ TEST_CASE("6-6 with rotor control off asks first; N moves nothing, Y switches it
     menus::menu_6_configuration(f.term, *f.services);
     CHECK(f.model.rotor_control);
     CHECK(f.saves == 1);
-    CHECK(rotator::azimuth_distance(truth(f).az, 30) <= kAzTol);
+    CHECK(rotator::azimuth_distance(f.truth().az, 30) <= kAzTol);
   }
 }
 
@@ -496,8 +471,8 @@ TEST_CASE("6-6-3 stores five presets and goes to one, as in the manual's example
   CHECK(pr[4] == rotator::AzEl{165, 0});
   CHECK(f.station->rotator().config().presets == pr);
   CHECK(f.saves == 1);
-  CHECK(rotator::azimuth_distance(truth(f).az, 125) <= kAzTol);
-  CHECK(std::abs(truth(f).el - 15) <= kElTol);
+  CHECK(rotator::azimuth_distance(f.truth().az, 125) <= kAzTol);
+  CHECK(std::abs(f.truth().el - 15) <= kElTol);
 }
 
 TEST_CASE("6-6-3 after 6-6-2: the live display follows the antenna to the preset (the manual's 'display of the "

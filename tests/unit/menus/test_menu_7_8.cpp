@@ -12,20 +12,8 @@ namespace {
 
 bool has(const std::string& out, std::string_view text) { return out.find(text) != std::string::npos; }
 
-rotator::AzEl truth(testing::MenuFixture& f) {
-  const auto p = f.rotator_sim->true_position();
-  return {rotator::wrap360(p.az_travel + rotator::rotor_start_deg(f.model.station.rotor_start)), p.el};
-}
-
-constexpr double kAzTol = 4 * 360.0 / 1023;
-constexpr double kElTol = 2 * 90.0 / 511;
-
-void run(testing::MenuFixture& f, double seconds) {
-  for (int i = 0; i < static_cast<int>(seconds * 10); ++i) {
-    f.now += std::chrono::milliseconds(100);
-    f.station->tick();
-  }
-}
+using testing::kAzTol;
+using testing::kElTol;
 
 }  // namespace
 
@@ -57,9 +45,9 @@ TEST_CASE("Menu 7 drives the simulated rotator and radio; errors change nothing"
   REQUIRE(h.size() == 5);
   CHECK(h.back().raw == "TX;");
   // The antenna goes to 220/45 (not 400) while the event loop runs on.
-  run(f, 90);
-  CHECK(rotator::azimuth_distance(truth(f).az, 220) <= kAzTol);
-  CHECK(std::abs(truth(f).el - 45) <= kElTol);
+  f.run(90);
+  CHECK(rotator::azimuth_distance(f.truth().az, 220) <= kAzTol);
+  CHECK(std::abs(f.truth().el - 45) <= kElTol);
   // ?A answers where it is, in a form AZ/EL reads back.
   f.term.clear_output();
   f.term.feed("?A\rQ\r");
@@ -86,7 +74,7 @@ TEST_CASE("Menu 8 is the 6-6 sub-menu: keyboard control from the main menu") {
   const double el = f.rotator_sim->true_position().el;
   CHECK(el > 20);
   CHECK(el < 35);
-  run(f, 5);
+  f.run(5);
   CHECK(f.rotator_sim->true_position().el == doctest::Approx(el).epsilon(0.02));
   CHECK(f.station->rotator().status().mode == rotator::ControlMode::idle);
 }

@@ -19,6 +19,19 @@ TEST_CASE("Menu 4 edits the station; Enter keeps each value") {
   CHECK(f.term.output().find("Latitude  [deg]    : +27.391  32.259") != std::string::npos);
 }
 
+TEST_CASE("Menu 4: a new rotor start takes effect at once on the antenna, not at the next start") {
+  testing::MenuFixture f("\r\r\r\rN\r\r");
+  REQUIRE(f.model.station.rotor_start == station::RotorStart::south);
+  // South start: travel 0 is the South stop; North start: travel 0 is North.
+  CHECK(f.station->rotator().model().compass_from_travel(0.0) == doctest::Approx(180.0));
+  menus::menu_4_station_elements(f.term, *f.services);
+  CHECK(f.model.station.rotor_start == station::RotorStart::north);
+  CHECK(f.station->rotator().model().compass_from_travel(0.0) == doctest::Approx(0.0));
+  // A GOTO to 90 deg now goes the North-start way: to travel 90.
+  const rotator::RotatorPosition p = f.station->rotator().set_target(rotator::AzEl{90.0, 10.0});
+  CHECK(p.az_travel == doctest::Approx(90.0));
+}
+
 TEST_CASE("Menu 5 sets the clock when Enter is pressed, and Y zeroes the seconds") {
   testing::MenuFixture f("\r93/07/17 03:03:15\r\r");
   menus::menu_5_realtime_clock(f.term, *f.services);

@@ -27,9 +27,7 @@
 #include <thread>
 #include <vector>
 
-#include "radio/simulated.h"
-#include "rotator/simulated.h"
-#include "tracker/station_loop.h"
+#include "support/sim_station.h"
 
 extern char** environ;
 
@@ -46,12 +44,10 @@ inline const bool kQuietLogs = [] {
 struct SimStation {
   explicit SimStation(store::Model m = {}, bool rotor_control = true)
       : model(std::move(m)), clock(orbit::from_civil(2026, 5, 21, 12, 0, 0)), tracker(model, clock) {
-    auto sim = std::make_unique<rotator::SimulatedRotator>(clock, rotator::SimulatedRotatorParams::matching(model.rotator));
-    rot = sim.get();
-    auto ctl = std::make_unique<rotator::Controller>(model.rotator, model.station.rotor_start, std::move(sim));
-    auto rad = std::make_unique<radio::SimulatedRadio>();
-    radio = rad.get();
-    loop = std::make_unique<tracker::StationLoop>(model, clock, tracker, std::move(ctl), std::move(rad));
+    tb::testing::SimulatedStation sim = tb::testing::simulated_station(model, clock, tracker);
+    rot = sim.rotator;
+    radio = sim.radio;
+    loop = std::move(sim.loop);
     loop->set_rotor_control(rotor_control);
     loop->tick();  // a first reading
   }
@@ -252,27 +248,13 @@ inline std::vector<std::string> lines(const std::string& s) {
 
 }  // namespace nettest
 
-#include <fstream>
-
-#include "orbit/elements.h"
-#include "radio/freqmode.h"
-#include "store/database.h"
+#include "support/shipped_model.h"
 
 namespace nettest {
 
-// The shipped element sets and freq/mode table (data/), as trakbox loads them.
+// The shipped element sets and freq/mode table (data/), as trakbox loads them, in Tucson.
 inline store::Model shipped_model() {
-  auto read = [](const std::string& path) {
-    std::ifstream in(path);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-  };
-  store::Model m;
-  const std::string dir = TRAKBOX_SOURCE_DIR "/data/";
-  const auto sets = orbit::parse_nasa(read(dir + "amateur.tle"), "amateur.tle");
-  const auto fm = radio::parse_freqmode(read(dir + "freqmode.txt"));
-  m.db = store::make_database(sets.sets, fm.records);
+  store::Model m = tb::testing::shipped_model();
   m.station.lat_deg = 32.259;
   m.station.lon_deg = -110.778;
   m.station.height_m = 842.0;

@@ -13,8 +13,11 @@
 
 #include "orbit/elements.h"
 #include "orbit/sgp4.h"
+#include "support/gpredict_sets.h"
 
 using namespace tb::orbit;
+using tb::testing::iss_2018;
+using tb::testing::molniya_2018;
 
 namespace {
 
@@ -215,47 +218,7 @@ namespace {
 //   /usr/bin/python3 -c 'from sgp4.api import Satrec, WGS72
 //     s = Satrec.twoline2rv(L1, L2, WGS72); print(s.sgp4_tsince(0.0), s.no_unkozai, s.a,
 //     s.altp * s.radiusearthkm, s.alta * s.radiusearthkm, s.jdsatepoch, s.jdsatepochF)'
-// with the two element sets from Debian gpredict's satellites.dat quoted in each case.
-
-// ISS (ZARYA)
-// 1 25544U 98067A   18020.89808844  .00002078  00000-0  38550-4 0  9992
-// 2 25544  51.6424  32.9776 0003646  28.7227  39.5332 15.54190080 95614
-Elements iss() {
-  Elements e;
-  e.name = "ISS (ZARYA)";
-  e.catalog_number = 25544;
-  e.epoch_year = 2018;
-  e.epoch_day = 20.89808844;
-  e.ndot_over_2 = 0.00002078;
-  e.bstar = 0.38550e-4;
-  e.inclination_deg = 51.6424;
-  e.raan_deg = 32.9776;
-  e.eccentricity = 0.0003646;
-  e.arg_perigee_deg = 28.7227;
-  e.mean_anomaly_deg = 39.5332;
-  e.mean_motion_rev_per_day = 15.54190080;
-  return e;
-}
-
-// MOLNIYA 1-53: deep space, half-day resonance, negative BSTAR.
-// 1 13070U 82015A   18019.33649993  .00000405  00000-0 -24669-3 0  9992
-// 2 13070  62.4528 108.1401 7349782 265.0722  44.8738  2.00563378262951
-Elements molniya() {
-  Elements e;
-  e.name = "MOLNIYA 1-53";
-  e.catalog_number = 13070;
-  e.epoch_year = 2018;
-  e.epoch_day = 19.33649993;
-  e.ndot_over_2 = 0.00000405;
-  e.bstar = -0.24669e-3;
-  e.inclination_deg = 62.4528;
-  e.raan_deg = 108.1401;
-  e.eccentricity = 0.7349782;
-  e.arg_perigee_deg = 265.0722;
-  e.mean_anomaly_deg = 44.8738;
-  e.mean_motion_rev_per_day = 2.00563378;
-  return e;
-}
+// with the two element sets of Debian gpredict's satellites.dat in tests/support/gpredict_sets.h.
 
 void check_state(const Propagation& p, const Vec3& r, const Vec3& v) {
   REQUIRE(p.ok());
@@ -268,7 +231,7 @@ void check_state(const Propagation& p, const Vec3& r, const Vec3& v) {
 }  // namespace
 
 TEST_CASE("Near-earth set at epoch and after 1000 minutes agrees with python-sgp4") {
-  const Sgp4 sat(iss());
+  const Sgp4 sat(iss_2018());
   CHECK(sat.init_error() == Sgp4Error::none);
   CHECK_FALSE(sat.deep_space());
   check_state(sat.propagate_minutes(0.0), {-20.314287227236353, 4643.403562446339, 4932.52142131598},
@@ -286,7 +249,7 @@ TEST_CASE("Near-earth set at epoch and after 1000 minutes agrees with python-sgp
 }
 
 TEST_CASE("Deep-space resonant set at epoch and after 1000 minutes agrees with python-sgp4") {
-  const Sgp4 sat(molniya());
+  const Sgp4 sat(molniya_2018());
   CHECK(sat.init_error() == Sgp4Error::none);
   CHECK(sat.deep_space());
   check_state(sat.propagate_minutes(0.0), {-13322.868072997519, 16157.217157452547, 14587.805539639601},
@@ -300,12 +263,12 @@ TEST_CASE("Deep-space resonant set at epoch and after 1000 minutes agrees with p
 }
 
 TEST_CASE("Propagation is a pure function of the time: call order and copies do not matter") {
-  const Sgp4 sat(molniya());
+  const Sgp4 sat(molniya_2018());
   const Propagation far = sat.propagate_minutes(20000.0);
   const Propagation back = sat.propagate_minutes(-3000.0);
   const Propagation near = sat.propagate_minutes(1000.0);
   const Sgp4 copy = sat;  // NOLINT(performance-unnecessary-copy-initialization)
-  const Sgp4 fresh(molniya());
+  const Sgp4 fresh(molniya_2018());
   REQUIRE(far.ok());
   REQUIRE(back.ok());
   REQUIRE(near.ok());
@@ -321,7 +284,7 @@ TEST_CASE("Propagation is a pure function of the time: call order and copies do 
 }
 
 TEST_CASE("propagate(UtcTime) is propagate_minutes of the minutes since epoch") {
-  const Sgp4 sat(iss());
+  const Sgp4 sat(iss_2018());
   const UtcTime t = add_minutes(sat.epoch(), 90.5);
   const Propagation a = sat.propagate(t);
   const Propagation b = sat.propagate_minutes(minutes_between(sat.epoch(), t));
@@ -332,7 +295,7 @@ TEST_CASE("propagate(UtcTime) is propagate_minutes of the minutes since epoch") 
 
 TEST_CASE("Element sets SGP4 cannot use are refused at construction") {
   SUBCASE("eccentricity 1 or more") {
-    Elements e = iss();
+    Elements e = iss_2018();
     e.eccentricity = 1.0;
     const Sgp4 sat(e);
     CHECK(sat.init_error() == Sgp4Error::mean_eccentricity);
@@ -340,13 +303,13 @@ TEST_CASE("Element sets SGP4 cannot use are refused at construction") {
     CHECK(std::isnan(sat.semi_major_axis_er()));
   }
   SUBCASE("negative eccentricity") {
-    Elements e = iss();
+    Elements e = iss_2018();
     e.eccentricity = -0.01;
     CHECK(Sgp4(e).init_error() == Sgp4Error::mean_eccentricity);
   }
   SUBCASE("mean motion zero, negative or not a number") {
     for (double n : {0.0, -1.0, std::nan("")}) {
-      Elements e = iss();
+      Elements e = iss_2018();
       e.mean_motion_rev_per_day = n;
       const Sgp4 sat(e);
       CHECK(sat.init_error() == Sgp4Error::mean_motion);
@@ -356,7 +319,7 @@ TEST_CASE("Element sets SGP4 cannot use are refused at construction") {
     }
   }
   SUBCASE("perturbed eccentricity out of range at epoch (Vallado's 33334)") {
-    Elements e = molniya();
+    Elements e = molniya_2018();
     e.epoch_year = 2006;
     e.epoch_day = 174.85818871;
     e.ndot_over_2 = 0.00000620;

@@ -368,3 +368,26 @@ TEST_CASE("Calibration of the span (menu 6-1)") {
   CHECK(bad.result().error.find("azimuth ADC span 500-400") != std::string::npos);
   CHECK(bad.apply(c) == c);
 }
+
+TEST_CASE("A new target shows in the status at once: no previous arrival is taken for the new one") {
+  Rig r;
+  r.ctl->set_control_enabled(true);
+  r.ctl->set_target(AzEl{100.0, 20.0});
+  REQUIRE(r.run(60s) < 60s);
+  REQUIRE(r.ctl->status().on_target);
+
+  // Far away: not on target before any tick, and the goals are the new target's.
+  const RotatorPosition far = r.ctl->set_target(AzEl{200.0, 40.0});
+  CHECK_FALSE(r.ctl->status().on_target);
+  CHECK(r.ctl->status().az.goal_counts == static_cast<int>(std::lround(r.ctl->model().target_counts(Axis::az, far))));
+  CHECK(r.ctl->status().el.goal_counts == static_cast<int>(std::lround(r.ctl->model().target_counts(Axis::el, far))));
+  REQUIRE(r.run(60s) < 60s);
+
+  // Inside the dead band of where it rests: on target at once, and nothing moves.
+  const double az = r.ctl->status().az.deg, el = r.ctl->status().el.deg;
+  r.ctl->set_target(AzEl{az + kAzBand / 4, el});
+  CHECK(r.ctl->status().on_target);
+  r.idle(2s);
+  CHECK(r.ctl->status().on_target);
+  CHECK(r.ctl->status().az.motion == Drive::stop);
+}

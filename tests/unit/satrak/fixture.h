@@ -18,6 +18,8 @@
 #include "rotator/simulated.h"
 #include "satrak/commands.h"
 #include "satrak/unit.h"
+#include "support/shipped_model.h"
+#include "support/sim_station.h"
 #include "tracker/station_loop.h"
 
 namespace satrak_test {
@@ -30,12 +32,7 @@ inline const bool kQuietLog = [] {
   return true;
 }();
 
-inline std::string read_file(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using tb::testing::read_file;
 
 inline void write_file(const fs::path& p, const std::string& text) {
   std::ofstream out(p, std::ios::binary | std::ios::trunc);
@@ -58,11 +55,7 @@ struct TempDir {
 };
 
 inline store::Model tucson_model() {
-  store::Model m;
-  const std::string dir = TRAKBOX_SOURCE_DIR "/data/";
-  const auto sets = orbit::parse_nasa(read_file(dir + "amateur.tle"), "amateur.tle");
-  const auto fm = radio::parse_freqmode(read_file(dir + "freqmode.txt"));
-  m.db = store::make_database(sets.sets, fm.records);
+  store::Model m = testing::shipped_model();
   m.station.lat_deg = 32.259;
   m.station.lon_deg = -110.778;
   m.station.height_m = 842.0;
@@ -113,10 +106,9 @@ inline double angle_diff(double a, double b) {
 struct Acu {
   explicit Acu(orbit::UtcTime t0, satrak::Settings settings = {}, store::Model m = tucson_model())
       : base(t0), clock([this] { return base; }), model(std::move(m)), tracker(model, clock) {
-    auto sim = std::make_unique<rotator::SimulatedRotator>(clock, rotator::SimulatedRotatorParams::matching(model.rotator));
-    rot = sim.get();
-    auto ctl = std::make_unique<rotator::Controller>(model.rotator, model.station.rotor_start, std::move(sim));
-    loop = std::make_unique<tracker::StationLoop>(model, clock, tracker, std::move(ctl), std::make_unique<radio::SimulatedRadio>());
+    tb::testing::SimulatedStation sim = tb::testing::simulated_station(model, clock, tracker);
+    rot = sim.rotator;
+    loop = std::move(sim.loop);
     fs::create_directories(dir.path / "tle");
     fs::create_directories(dir.path / "images");
     fs::copy_file(TRAKBOX_SOURCE_DIR "/data/amateur.tle", dir.path / "tle" / "amateur.txt");

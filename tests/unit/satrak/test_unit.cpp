@@ -475,6 +475,60 @@ TEST_CASE("Tracking: SATELLITE= + TRACK=,1 follows the satellite through a pass,
   }
 }
 
+TEST_CASE("Satrak tracking is the station's: the radio follows with Doppler, the status line names it") {
+  const store::Model m = tucson_model();
+  const orbit::Pass pass = iss_pass(m, kT0, 30.0, 70.0);
+  Acu acu(orbit::add_minutes(pass.aos, -3.0));
+  REQUIRE(acu.cmd("SATELLITE=,amateur.txt,ISS,1,1") == "SATELLITE=,OK");
+  CHECK_FALSE(acu.loop->remote_followed());
+  CHECK(acu.cmd("TRACK=,1") == "TRACK=,OK");
+  acu.run(1s);
+  REQUIRE(acu.loop->remote_followed());
+  CHECK(acu.loop->remote_followed()->name == "ISS");
+  CHECK(acu.loop->remote_followed()->owner == "Satrak");
+  CHECK(acu.loop->remote_db_index() == acu.model.db.find("ISS"));
+  CHECK(acu.loop->status_line().find("| Satrak: ISS |") != std::string::npos);
+
+  // Two minutes after AOS the ISS approaches fast: the downlink the radio is tuned to is
+  // 437.800 MHz (data/freqmode.txt) with the Doppler of the moment, to the 10 Hz step.
+  acu.run_until(orbit::add_minutes(pass.aos, 2.0));
+  CHECK(acu.loop->status_line().find("| Satrak: ISS AOS |") != std::string::npos);
+  const orbit::Observation o = acu.loop->remote_followed()->obs;
+  REQUIRE(o.look.range_rate_km_s < -3.0);
+  const double expected = 437.8e6 * (1.0 - o.look.range_rate_km_s / radio::kSpeedOfLightKmS);
+  const auto rs = acu.loop->radio().status();
+  REQUIRE(rs.downlink_hz);
+  CHECK(std::abs(static_cast<double>(*rs.downlink_hz) - expected) <= 10.0);
+  CHECK(*rs.downlink_hz > radio::Hz{437800000} + 5000);  // about +9 kHz: really corrected
+
+  SUBCASE("TRACK=,0 ends it") {
+    CHECK(acu.cmd("TRACK=,0") == "TRACK=,OK");
+    CHECK_FALSE(acu.loop->remote_followed());
+    CHECK(acu.loop->status_line().find("Satrak") == std::string::npos);
+    const auto before = acu.loop->radio().status().downlink_hz;
+    acu.run(5s);
+    CHECK(acu.loop->radio().status().downlink_hz == before);  // nobody tunes it any more
+  }
+  SUBCASE("the menus' tracker taking the antenna takes the radio too") {
+    acu.tracker.track_single(*acu.model.db.find("AO-07"));
+    acu.step();
+    CHECK_FALSE(acu.loop->remote_followed());
+    CHECK(acu.loop->status_line().find("| AO-07") != std::string::npos);
+  }
+  SUBCASE("a satellite the database does not hold: the antenna follows, the radio is left alone") {
+    acu.model.db.satellites.erase(acu.model.db.satellites.begin() + *acu.model.db.find("ISS"));
+    acu.model.db.selected.clear();
+    acu.loop->reconfigure();
+    acu.step();
+    REQUIRE(acu.loop->remote_followed());
+    CHECK_FALSE(acu.loop->remote_db_index());
+    const auto before = acu.loop->radio().status().downlink_hz;
+    acu.run(5s);
+    CHECK(acu.loop->radio().status().downlink_hz == before);
+    CHECK(acu.unit->tracking_target());
+  }
+}
+
 TEST_CASE("Auto tracking: START_STOP_TIME + TRACK_AUTO_ENABLE start and stop by themselves") {
   const store::Model m = tucson_model();
   const orbit::Pass pass = iss_pass(m, kT0, 30.0, 70.0);

@@ -1,20 +1,13 @@
 #include <doctest/doctest.h>
 
-#include <fstream>
-#include <sstream>
-
 #include "store/database.h"
+#include "support/shipped_model.h"
 
 using namespace tb;
 using namespace tb::store;
 
 namespace {
-std::string read_file(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using tb::testing::read_file;
 // Three sets; the second has its line-1 checksum spoiled (9 instead of 8 at column 69).
 const char* kUpload =
     "AO-07\n"

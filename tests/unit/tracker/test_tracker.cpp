@@ -1,30 +1,16 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
-#include "radio/simulated.h"
 #include "rotator/pass_plan.h"
-#include "rotator/simulated.h"
-#include "tracker/station_loop.h"
+#include "support/shipped_model.h"
+#include "support/sim_station.h"
 
 using namespace tb;
 
 namespace {
-std::string read_file(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 store::Model shipped(station::RotorStart start, double lat, double lon, double h) {
-  store::Model m;
-  const std::string dir = TRAKBOX_SOURCE_DIR "/data/";
-  const auto sets = orbit::parse_nasa(read_file(dir + "amateur.tle"), "amateur.tle");
-  const auto fm = radio::parse_freqmode(read_file(dir + "freqmode.txt"));
-  m.db = store::make_database(sets.sets, fm.records);
+  store::Model m = testing::shipped_model();
   m.station.rotor_start = start;
   m.station.lat_deg = lat;
   m.station.lon_deg = lon;
@@ -35,12 +21,10 @@ store::Model shipped(station::RotorStart start, double lat, double lon, double h
 struct Station {
   explicit Station(store::Model m, orbit::UtcTime t0)
       : model(std::move(m)), now(t0), clock(now), tracker(model, clock) {
-    auto sim = std::make_unique<rotator::SimulatedRotator>(clock, rotator::SimulatedRotatorParams::matching(model.rotator));
-    rot = sim.get();
-    auto ctl = std::make_unique<rotator::Controller>(model.rotator, model.station.rotor_start, std::move(sim));
-    auto rad = std::make_unique<radio::SimulatedRadio>();
-    radio = rad.get();
-    loop = std::make_unique<tracker::StationLoop>(model, clock, tracker, std::move(ctl), std::move(rad));
+    testing::SimulatedStation sim = testing::simulated_station(model, clock, tracker);
+    rot = sim.rotator;
+    radio = sim.radio;
+    loop = std::move(sim.loop);
   }
   void step(std::chrono::milliseconds dt) {
     now += dt;

@@ -1,0 +1,64 @@
+// The typed field readers the state document and the Satrak settings share (store/json_fields.h):
+// every failure names the field by its path and says what was expected.
+#include <doctest/doctest.h>
+
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "store/json_fields.h"
+#include "store/model.h"
+
+using namespace tb::store;
+using namespace tb::store::json_fields;
+using nlohmann::json;
+
+TEST_CASE("Field readers return the value when it is what was expected") {
+  const json j = {{"n", 1.5}, {"i", -3}, {"b", true}, {"s", "abc"}};
+  CHECK(num(j, "x", "n", 0, 2) == 1.5);
+  CHECK(num(j, "x", "i", -3, -3) == -3.0);  // a whole number is a number; bounds are inclusive
+  CHECK(integer(j, "x", "i", -3, 0) == -3);
+  CHECK(boolean(j, "x", "b"));
+  CHECK(text(j, "x", "s", 3) == "abc");
+  CHECK(field(j, "x", "s") == "abc");
+  CHECK(path("x", "s") == "x.s");
+  CHECK(path("", "s") == "s");
+}
+
+TEST_CASE("Field readers name the field and what was expected") {
+  const json j = {{"n", 100}, {"f", 1.5}, {"s", "abcd"}, {"b", 1}, {"o", {{"k", "v"}}}};
+  CHECK_THROWS_WITH_AS(num(j, "station", "n", -90, 90), "station.n: value 100 outside -90.0 .. 90.0", std::runtime_error);
+  CHECK_THROWS_WITH_AS(num(j, "station", "s", -90, 90), "station.s: expected a number", std::runtime_error);
+  CHECK_THROWS_WITH_AS(integer(j, "r", "f", 0, 9), "r.f: expected a whole number", std::runtime_error);
+  CHECK_THROWS_WITH_AS(integer(j, "r", "n", 0, 9), "r.n: value 100 outside 0 .. 9", std::runtime_error);
+  CHECK_THROWS_WITH_AS(boolean(j, "r", "b"), "r.b: expected true or false", std::runtime_error);
+  CHECK_THROWS_WITH_AS(text(j, "r", "n", 9), "r.n: expected a string", std::runtime_error);
+  CHECK_THROWS_WITH_AS(text(j, "r", "s", 3), "r.s: longer than 3 characters", std::runtime_error);
+  CHECK_THROWS_WITH_AS(field(j, "r", "missing"), "r.missing: missing", std::runtime_error);
+  CHECK_THROWS_WITH_AS(field(j["o"]["k"], "r.o.k", "x"), "r.o.k: expected an object", std::runtime_error);
+}
+
+TEST_CASE("At the top level a field is named by its key alone") {
+  const json j = {{"clock_offset_us", "soon"}, {"rotor_control", 1}};
+  CHECK_THROWS_WITH_AS(integer(j, "", "clock_offset_us", 0, 1), "clock_offset_us: expected a whole number",
+                       std::runtime_error);
+  CHECK_THROWS_WITH_AS(boolean(j, "", "rotor_control"), "rotor_control: expected true or false", std::runtime_error);
+  CHECK_THROWS_WITH_AS(field(j, "", "db"), "db: missing", std::runtime_error);
+  CHECK_THROWS_WITH_AS(field(json::array(), "", "db"), "document: expected an object", std::runtime_error);
+}
+
+TEST_CASE("The state document's errors name the field") {
+  CHECK_THROWS_WITH_AS(model_from_json(json::array()), "state: expected an object", std::runtime_error);
+  CHECK_THROWS_WITH_AS(model_from_json(json::object()), "station: missing", std::runtime_error);
+  json j = to_json(Model{});
+  CHECK(to_json(model_from_json(j)) == j);
+  j["station"]["lat_deg"] = 91;
+  CHECK_THROWS_WITH_AS(model_from_json(j), "station.lat_deg: value 91 outside -90.0 .. 90.0", std::runtime_error);
+  j = to_json(Model{});
+  j["rotor_control"] = "yes";
+  CHECK_THROWS_WITH_AS(model_from_json(j), "rotor_control: expected true or false", std::runtime_error);
+  j = to_json(Model{});
+  j["radio"]["rig"] = "collins";
+  CHECK_THROWS_WITH_AS(model_from_json(j), "radio.rig: 'collins' is not one of none, kenwood, yaesu, icom",
+                       std::runtime_error);
+}
