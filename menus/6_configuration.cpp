@@ -279,16 +279,8 @@ void LiveMonitor::end() {
 }
 
 void watch_until_arrived(term::Terminal& t, Services& s) {
-  // The controller takes a new target at its next tick, which may be a second away when the antenna
-  // was resting on the previous target: until then its status (on_target, stalled) still describes
-  // that previous target. It describes the new one once its goal counts are the new target's.
-  auto status_is_current = [&s] {
-    const auto& rot = s.station.rotator();
-    const auto& st = rot.status();
-    if (!st.target) return true;
-    return st.az.goal_counts == rot.model().target_counts(rotator::Axis::az, *st.target) &&
-           st.el.goal_counts == rot.model().target_counts(rotator::Axis::el, *st.target);
-  };
+  // The controller's status describes a new target as soon as it is set (Controller::set_target),
+  // so a resting antenna's previous arrival is never taken for this one.
   LiveMonitor m(t, s);
   for (;;) {
     const int k = m.key();
@@ -297,9 +289,7 @@ void watch_until_arrived(term::Terminal& t, Services& s) {
       break;
     }
     const auto& st = s.station.rotator().status();
-    if (st.mode != rotator::ControlMode::target) break;
-    if (!status_is_current()) continue;
-    if (st.on_target) break;
+    if (st.on_target || st.mode != rotator::ControlMode::target) break;
     if ((st.az.stalled || st.el.stalled) && st.az.motion == rotator::Drive::stop &&
         st.el.motion == rotator::Drive::stop)
       break;

@@ -478,8 +478,8 @@ TEST_CASE("6-6-3 stores five presets and goes to one, as in the manual's example
 TEST_CASE("6-6-3 after 6-6-2: the live display follows the antenna to the preset (the manual's 'display of the "
           "current position')") {
   // The event loop ticks the station when StationLoop::next_tick_in says: every second while the
-  // antenna rests on a target. A new target is taken at the next tick; the display must not take
-  // the old arrival for the new one.
+  // antenna rests on a target. The display must not take the previous arrival for the new target
+  // in the time before the next tick.
   testing::MenuFixture f("6\r2\r210\r20\r3\r5\rQ\rQ\rQ\r");
   f.model.rotator.presets[4] = {165, 0};
   f.station->reconfigure();
@@ -501,8 +501,8 @@ TEST_CASE("6-6-3 after 6-6-2: the live display follows the antenna to the preset
   REQUIRE(back != std::string::npos);
   const std::string shown = out.substr(preset, back - preset);
   // The display ran until the antenna was there, and the last line it showed is the arrival.
-  CHECK(rotator::azimuth_distance(truth(f).az, 165) <= kAzTol);
-  CHECK(std::abs(truth(f).el - 0) <= kElTol);
+  CHECK(rotator::azimuth_distance(f.truth().az, 165) <= kAzTol);
+  CHECK(std::abs(f.truth().el - 0) <= kElTol);
   CHECK(f.station->rotator().status().on_target);
   CHECK(has(shown, rotator::format_monitor_line(f.station->rotator().status()) + "\n"));
   CHECK(std::count(shown.begin(), shown.end(), '\n') > 3);  // more than the first line: it moved on screen
