@@ -279,9 +279,11 @@ void LiveMonitor::end() {
 }
 
 void watch_until_arrived(term::Terminal& t, Services& s) {
+  // The controller's status describes a new target as soon as it is set (Controller::set_target),
+  // so a resting antenna's previous arrival is never taken for this one.
   LiveMonitor m(t, s);
   for (;;) {
-    const int k = m.key();  // one wait first: the status then describes the new target
+    const int k = m.key();
     if (k != term::kTimeout) {
       if (k == '5') s.station.stop_antenna();
       break;

@@ -109,6 +109,19 @@ std::vector<std::string> draw_world_map(const Graphics& g, int width, int height
   return grid;
 }
 
+LivePlacement place_live_block(int live_row, int cursor_row, int cursor_col, int n, int height) {
+  LivePlacement p;
+  int y = live_row >= 0 ? live_row : cursor_row + (cursor_col != 0 ? 1 : 0);
+  const int need = y + n + 1;  // the block, then a row of its own for the cursor
+  if (need > height) {
+    p.scroll = std::min(need - height, y);
+    y -= p.scroll;
+  }
+  p.first_row = y;
+  p.cursor_row = std::min(height - 1, y + n);
+  return p;
+}
+
 struct CursesTerminal::Impl {
   WaitReadable wait;
   WINDOW* text = nullptr;
@@ -117,6 +130,7 @@ struct CursesTerminal::Impl {
   int live_lines = 0;
   std::string status_text;
   bool colors = false;
+  bool closed = false;  // Ctrl-C was typed
 
   void layout() {
     if (text) delwin(text);
@@ -197,24 +211,17 @@ void CursesTerminal::flush() {
 void CursesTerminal::live(const std::vector<std::string>& lines) {
   WINDOW* w = impl_->text;
   const int h = getmaxy(w);
-  if (impl_->live_y < 0) {
-    int y = getcury(w);
-    if (getcurx(w) != 0) ++y;
-    impl_->live_y = y;
-  }
   const int n = static_cast<int>(lines.size());
-  if (impl_->live_y + n > h) {
-    const int up = impl_->live_y + n - h;
-    wscrl(w, up);
-    impl_->live_y = std::max(0, impl_->live_y - up);
-  }
+  const LivePlacement p = place_live_block(impl_->live_y, getcury(w), getcurx(w), n, h);
+  if (p.scroll > 0) wscrl(w, p.scroll);
+  impl_->live_y = p.first_row;
   for (int i = 0; i < n && impl_->live_y + i < h; ++i) {
     wmove(w, impl_->live_y + i, 0);
     wclrtoeol(w);
     waddnstr(w, lines[static_cast<std::size_t>(i)].c_str(), COLS - 1);
   }
   impl_->live_lines = n;
-  wmove(w, std::min(h - 1, impl_->live_y + n), 0);
+  wmove(w, p.cursor_row, 0);
   flush();
 }
 
@@ -273,8 +280,11 @@ void CursesTerminal::graphics(const Graphics& g) {
   flush();
 }
 
+bool CursesTerminal::closed() const { return impl_->closed; }
+
 int CursesTerminal::next_key(std::optional<Duration> timeout) {
   flush();
+  if (impl_->closed) return kEndOfInput;
   const auto deadline = timeout ? std::optional(std::chrono::steady_clock::now() + *timeout) : std::nullopt;
   for (;;) {
     const int ch = wgetch(impl_->text);
@@ -289,7 +299,10 @@ int CursesTerminal::next_key(std::optional<Duration> timeout) {
         case KEY_DC: return kBackspace;
         case KEY_ENTER:
         case '\n': return kEnter;
-        case 3: return kEndOfInput;  // Ctrl-C leaves trakbox (raw mode delivers it as a key)
+        case 3:  // Ctrl-C leaves trakbox (raw mode delivers it as a key); it stays the end of input,
+                 // also when a read that only looked ahead (the LF after a CR) was the one to see it
+          impl_->closed = true;
+          return kEndOfInput;
         default:
           if (ch >= 0 && ch < 256) return ch;
           continue;  // function keys the menus do not use

@@ -26,7 +26,8 @@ class CursesTerminal final : public Terminal {
   bool full_screen() const override { return true; }
   int columns() const override;
   int rows() const override;
-  bool closed() const override { return false; }
+  // True once Ctrl-C was typed: it ends the input for good (every later read sees the end).
+  bool closed() const override;
 
  protected:
   int next_key(std::optional<Duration> timeout) override;
@@ -40,5 +41,17 @@ class CursesTerminal final : public Terminal {
 // equirectangular world map with a ground track.
 std::vector<std::string> draw_sky_plot(const Graphics& g, int width, int height);
 std::vector<std::string> draw_world_map(const Graphics& g, int width, int height);
+
+// Where a live block of n lines goes in a text window of `height` rows: below the cursor at
+// (cursor_row, cursor_col) the first time (live_row < 0), then where it is (live_row). The window
+// is scrolled first when needed so that the row after the block is on the screen: text written
+// after the block goes there, and never over the block's last line (the last position of a live
+// display stays readable above what follows).
+struct LivePlacement {
+  int scroll = 0;      // lines to scroll the window up first
+  int first_row = 0;   // the block's first row, after scrolling
+  int cursor_row = 0;  // where the cursor waits after drawing it
+};
+LivePlacement place_live_block(int live_row, int cursor_row, int cursor_col, int n, int height);
 
 }  // namespace tb::term

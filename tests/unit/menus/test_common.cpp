@@ -1,5 +1,17 @@
 #include <doctest/doctest.h>
 
+#include <poll.h>
+#include <pty.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
 #include "menus/common.h"
 #include "menus/term/curses_terminal.h"
 #include "menus/term/script_terminal.h"
@@ -104,4 +116,94 @@ TEST_CASE("Key questions ignore a bare Enter; the Enter after a Y/N answer goes 
   CHECK(ask_yes_no(u, "Are you sure ? [Y/N] ? "));
   CHECK(ask_key(u, "File format NASA/AMSAT (N/A) : ", "NA") == 'A');
   CHECK(u.output() == "Are you sure ? [Y/N] ? Y\nFile format NASA/AMSAT (N/A) : A\n");
+}
+
+TEST_CASE("Full screen: a live block keeps a row of its own below it for what follows") {
+  // A 39-row text window (40 rows less the status line), the cursor on its last row: the monitor
+  // line of 6-6 goes there. The window scrolls one line so that the sub-menu printed after the
+  // antenna arrived starts below the last position instead of over it.
+  auto p = term::place_live_block(-1, 38, 0, 1, 39);
+  CHECK(p.scroll == 1);
+  CHECK(p.first_row == 37);
+  CHECK(p.cursor_row == 38);
+  // Redrawn in place afterwards: no further scrolling.
+  p = term::place_live_block(37, 38, 0, 1, 39);
+  CHECK(p.scroll == 0);
+  CHECK(p.first_row == 37);
+  CHECK(p.cursor_row == 38);
+  // With room below, the block starts at the cursor's line (or the next one after a prompt).
+  p = term::place_live_block(-1, 10, 0, 2, 39);
+  CHECK((p.scroll == 0 && p.first_row == 10 && p.cursor_row == 12));
+  p = term::place_live_block(-1, 10, 5, 2, 39);
+  CHECK((p.scroll == 0 && p.first_row == 11 && p.cursor_row == 13));
+  // A block that grows at the bottom scrolls by what it needs.
+  p = term::place_live_block(36, 37, 0, 3, 39);
+  CHECK((p.scroll == 1 && p.first_row == 35 && p.cursor_row == 38));
+  // Taller than the window: from the top, cut at the bottom.
+  p = term::place_live_block(-1, 20, 0, 50, 39);
+  CHECK((p.scroll == 20 && p.first_row == 0 && p.cursor_row == 38));
+}
+
+TEST_CASE("Full screen: Ctrl-C typed right after Enter still ends the input") {
+  // The CR of an Enter is followed by a short look for its LF; a Ctrl-C arriving then must not be
+  // lost (trakbox would stay in the menus). The full-screen terminal runs on a pseudo-terminal in a
+  // fresh copy of this program (exec'd, not only forked: other tests may have left threads).
+  if (std::getenv("TB_TEST_CURSES_CTRL_C")) {
+    int code = 1;
+    {
+      term::CursesTerminal t([](int fd, std::optional<term::Duration> timeout) {
+        pollfd p{fd, POLLIN, 0};
+        const int ms =
+            timeout ? static_cast<int>(std::chrono::duration_cast<std::chrono::milliseconds>(*timeout).count()) : -1;
+        return ::poll(&p, 1, ms) > 0;
+      });
+      const auto first = t.read_line();
+      const auto second = t.read_line();
+      code = first && *first == "6" && !second && t.closed() ? 0 : 2;
+    }
+    _exit(code);
+  }
+  std::vector<std::string> env_text{"TB_TEST_CURSES_CTRL_C=1", "TERM=xterm"};
+  for (char** e = environ; *e; ++e)
+    if (std::strncmp(*e, "TERM=", 5) != 0) env_text.emplace_back(*e);
+  std::vector<char*> envp;
+  for (auto& e : env_text) envp.push_back(e.data());
+  envp.push_back(nullptr);
+  std::string arg0 = "unit_menus", filter = "-tc=*Ctrl-C typed right after Enter*";
+  char* argv[] = {arg0.data(), filter.data(), nullptr};
+
+  int master = -1;
+  const pid_t pid = forkpty(&master, nullptr, nullptr, nullptr);
+  REQUIRE(pid >= 0);
+  if (pid == 0) {
+    ::execve("/proc/self/exe", argv, envp.data());
+    _exit(127);
+  }
+  // Once the screen is set up (raw mode), type 6, Enter and Ctrl-C in one go, as a fast typist or
+  // a script does; the screen output is read (and not looked at) so that it never blocks.
+  std::string shown;
+  bool typed = false;
+  int status = 0;
+  pid_t done = 0;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  while ((done = ::waitpid(pid, &status, WNOHANG)) == 0 && std::chrono::steady_clock::now() < deadline) {
+    pollfd p{master, POLLIN, 0};
+    if (::poll(&p, 1, 50) > 0) {
+      char buf[4096];
+      const auto n = ::read(master, buf, sizeof buf);
+      if (n > 0) shown.append(buf, static_cast<std::size_t>(n));
+      else ::usleep(10000);
+    }
+    if (!typed && shown.find("\x1b[2J") != std::string::npos) {
+      REQUIRE(::write(master, "6\r\x03", 3) == 3);
+      typed = true;
+    }
+  }
+  if (done == 0) {
+    ::kill(pid, SIGKILL);
+    ::waitpid(pid, &status, 0);
+  }
+  ::close(master);
+  CHECK(done == pid);
+  CHECK((WIFEXITED(status) && WEXITSTATUS(status) == 0));
 }

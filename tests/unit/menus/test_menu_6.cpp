@@ -475,6 +475,39 @@ TEST_CASE("6-6-3 stores five presets and goes to one, as in the manual's example
   CHECK(std::abs(f.truth().el - 15) <= kElTol);
 }
 
+TEST_CASE("6-6-3 after 6-6-2: the live display follows the antenna to the preset (the manual's 'display of the "
+          "current position')") {
+  // The event loop ticks the station when StationLoop::next_tick_in says: every second while the
+  // antenna rests on a target. The display must not take the previous arrival for the new target
+  // in the time before the next tick.
+  testing::MenuFixture f("6\r2\r210\r20\r3\r5\rQ\rQ\rQ\r");
+  f.model.rotator.presets[4] = {165, 0};
+  f.station->reconfigure();
+  f.station->set_rotor_control(true);
+  auto last_tick = f.now;
+  f.term.on_wait = [&](std::optional<term::Duration> timeout) {
+    f.now += std::chrono::duration_cast<std::chrono::microseconds>(timeout.value_or(std::chrono::seconds(1)));
+    if (f.now - last_tick >= f.station->next_tick_in()) {
+      f.station->tick();
+      last_tick = f.now;
+    }
+  };
+  f.term.timeouts_before_key = 4000;
+  menus::menu_6_configuration(f.term, *f.services);
+  const std::string& out = f.term.output();
+  const auto preset = out.find(" Select[1-5,S,Q]: 5\n");
+  REQUIRE(preset != std::string::npos);
+  const auto back = out.find(" Select[1-5,S,Q]: ", preset + 1);
+  REQUIRE(back != std::string::npos);
+  const std::string shown = out.substr(preset, back - preset);
+  // The display ran until the antenna was there, and the last line it showed is the arrival.
+  CHECK(rotator::azimuth_distance(f.truth().az, 165) <= kAzTol);
+  CHECK(std::abs(f.truth().el - 0) <= kElTol);
+  CHECK(f.station->rotator().status().on_target);
+  CHECK(has(shown, rotator::format_monitor_line(f.station->rotator().status()) + "\n"));
+  CHECK(std::count(shown.begin(), shown.end(), '\n') > 3);  // more than the first line: it moved on screen
+}
+
 TEST_CASE("6-7 configures an Icom pair, as in the manual's example") {
   testing::MenuFixture f("7\rI14\r10\rYYAQ\r");
   f.model.radio.icom_tx_address = 0x10;  // the example shows the value stored before
