@@ -53,6 +53,7 @@ Tracker::Cached& Tracker::cached(int db_index) const {
     c.sgp4 = std::make_unique<orbit::Sgp4>(e);
     c.pass.reset();
     c.pass_searched_until = {};
+    c.pass_searched_at = {};
   }
   return c;
 }
@@ -76,11 +77,15 @@ SatNow Tracker::compute(int db_index, orbit::UtcTime t, bool with_pass) const {
     s.downlink_doppler_hz =
         orbit::doppler_shift_hz(static_cast<double>(sat.radio.downlink_hz), s.obs.look.range_rate_km_s);
   if (with_pass && s.obs.ok()) {
-    const bool stale = !c.pass || t > c.pass->los;
-    if (stale && t >= c.pass_searched_until) {
+    // The clock set back (menu 5, TIME=): what was found from a later time may not be the next
+    // pass any more.
+    const bool went_back = t < c.pass_searched_at;
+    const bool stale = went_back || !c.pass || t > c.pass->los;
+    if (stale && (went_back || t >= c.pass_searched_until)) {
       orbit::PassOptions po;
       po.precision_s = 1.0;
       c.pass = orbit::next_pass(*c.sgp4, obs, t, kPassSearchDays, po);
+      c.pass_searched_at = t;
       // Nothing within a day (or a decayed set): do not search again for a while.
       c.pass_searched_until = c.pass ? t : orbit::add_minutes(t, 60.0);
     }

@@ -86,6 +86,7 @@ class Tracker {
     std::unique_ptr<orbit::Sgp4> sgp4;
     std::optional<orbit::Pass> pass;  // cached next/current pass, recomputed after its LOS
     orbit::UtcTime pass_searched_until{};
+    orbit::UtcTime pass_searched_at{};  // the time the pass was searched from
   };
   mutable std::map<int, Cached> cache_;
   Cached& cached(int db_index) const;

@@ -77,6 +77,38 @@ TEST_CASE("Single tracking decides point / pre-position / park from the satellit
   CHECK(t.tick().antenna == tracker::Decision::Antenna::park);
 }
 
+TEST_CASE("The clock set back (menu 5): the pass shown is the one then, not the one found from later") {
+  store::Model m = shipped(station::RotorStart::south, 27.391, 128.657, 50.0);
+  const auto iss = m.db.find("ISS");
+  REQUIRE(iss);
+  station::ManualClock clock(orbit::from_civil(2026, 5, 21, 0, 0, 0));
+  tracker::Tracker t(m, clock);
+  t.track_single(*iss);
+  t.tick();
+  REQUIRE(t.followed()->pass);
+  const orbit::Pass first = *t.followed()->pass;
+  // Past that pass: the next one is found.
+  clock.set(orbit::add_minutes(first.los, 1.0));
+  t.tick();
+  REQUIRE(t.followed()->pass);
+  const orbit::Pass second = *t.followed()->pass;
+  REQUIRE(second.aos > first.los);
+  // The operator sets the clock back into the first pass: it is the one shown, and it is up.
+  clock.set(first.tca);
+  const auto d = t.tick();
+  // A pass in progress is shown from now (as at start-up mid-pass), ending when the first did.
+  REQUIRE(t.followed()->pass);
+  CHECK(t.followed()->pass->up_at_start);
+  CHECK(std::abs(orbit::minutes_between(t.followed()->pass->los, first.los)) * 60.0 < 1.0);
+  CHECK(d.antenna == tracker::Decision::Antenna::point);
+  // And back before it: the first pass is the next again (to the search's 1 s precision).
+  clock.set(orbit::add_minutes(first.aos, -30.0));
+  t.tick();
+  REQUIRE(t.followed()->pass);
+  CHECK_FALSE(t.followed()->pass->up_at_start);
+  CHECK(std::abs(orbit::minutes_between(t.followed()->pass->aos, first.aos)) * 60.0 < 1.0);
+}
+
 namespace {
 // An ISS pass whose track crosses north, seen from Tucson.
 orbit::Pass north_crossing_pass(const store::Model& m, int iss) {
