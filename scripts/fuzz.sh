@@ -46,6 +46,7 @@ for t in "${targets[@]}"; do
   [ -f "$src/tests/fuzz/dict/$t.dict" ] && args+=(-dict="$src/tests/fuzz/dict/$t.dict")
   echo "== fuzz_$t: $seconds s, max_len $len"
   rc=0
+  touch "$out/logs/$t.start"
   nice -n 10 "$build/fuzz_$t" "${args[@]}" "$out/corpus/$t" "$src/tests/fuzz/corpus/$t" \
     >"$out/logs/$t.log" 2>&1 || rc=$?
   # libFuzzer exits non-zero on a crash, leak, timeout or out-of-memory, after writing the input to
@@ -61,7 +62,7 @@ for t in "${targets[@]}"; do
     failed+=("$t")
     echo "   FAILED (exit $rc): see $out/logs/$t.log"
     grep -E '^(==[0-9]+==ERROR|SUMMARY|\*\*\* fuzz property|.*runtime error)' "$out/logs/$t.log" | head -5 | sed 's/^/   /'
-    ls "$out/artifacts/$t" | sed 's/^/   artifact: /' | tail -3
+    find "$out/artifacts/$t" -type f -newer "$out/logs/$t.start" | sed 's/^/   artifact: /'
   fi
 done
 echo

@@ -4,7 +4,7 @@
 // The first byte sets the decoder's line bound, the second how the bytes are cut into reads.
 // Properties: the decoder's memory stays within its bound; every line it reports is a frame, a bad
 // checksum, malformed or overlong, with the payload within the bound; a frame's payload re-encoded
-// decodes to itself; a parsed command's word is upper case letters, digits, '_' and inner blanks.
+// decodes to itself; a parsed command's word is one the unit may echo (sanitize_word leaves it).
 #include <algorithm>
 #include <cmath>
 
@@ -19,11 +19,8 @@ namespace {
 void check_payload(std::string_view payload) {
   const auto c = satrak::parse_payload(payload);
   if (!c) return;
-  // Upper case letters, digits, '_' and inner blanks ("IRIDIUM 70" style words are refused later as
-  // unknown commands); never a blank at either end.
-  TB_FUZZ_CHECK(!c->word.empty() && c->word.front() != ' ' && c->word.back() != ' ', payload);
-  for (const char ch : c->word)
-    TB_FUZZ_CHECK((ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') || ch == '_' || ch == ' ', payload);
+  // What the unit may echo: upper case letters, digits and '_', 32 at most (commands.h).
+  TB_FUZZ_CHECK(!c->word.empty() && c->word.size() <= 32 && satrak::sanitize_word(c->word) == c->word, payload);
   const std::string head = c->head();
   (void)satrak::reply_ok(head);
   (void)satrak::reply_error(head, satrak::Error::bad_value);

@@ -8,7 +8,7 @@
 // (no_network.cpp); the TLE directory holds the shipped elements as amateur.txt and an AMSAT copy,
 // the image directory a good image and a broken one.
 // Properties: every reply is a payload a peer reads back unchanged from its frame (encode, then a
-// 512-byte decoder: one frame, the same payload) and parses as a reply (WORD?/WORD= and fields), or
+// 512-byte decoder: one frame, the same payload), holds no control byte, '$' or '*', and parses as a reply (WORD?/WORD= and fields), or
 // is the refusal of something that is not a command ("ERR,n", "WORD,ERR,n"); the settings and the
 // model the unit leaves read back.
 #include <boost/asio/io_context.hpp>
@@ -61,6 +61,8 @@ void check_reply(const std::string& reply, std::string_view input) {
   const std::string why = "reply '" + reply + "' to:\n" + std::string(input);
   const auto back = satrak::Decoder().feed(satrak::encode(reply));
   TB_FUZZ_CHECK(back.size() == 1 && back[0].kind == satrak::Decoded::Kind::frame && back[0].payload == reply, why);
+  // "Sent: always exact": no control bytes, no '$' or '*' inside (docs/satrak.md, Framing).
+  for (const unsigned char c : reply) TB_FUZZ_CHECK(c >= 0x20 && c != 0x7F && c != '$' && c != '*', why);
   if (satrak::parse_payload(reply)) return;
   // A refusal of something that is not a command: "ERR,n" or "WORD,ERR,n" (docs/satrak.md).
   const std::size_t err = reply.find("ERR,");
