@@ -57,11 +57,13 @@ std::string format_reply(const Request& r, std::string_view long_name, bool get,
   std::string out;
   if (r.extended()) {
     const char sep = r.separator;
-    out += long_name;
+    // The request is echoed: its control bytes (NUL, ESC, ... -- not line ends, the server split
+    // the lines) go back as blanks, like every value.
+    out += one_line(std::string(long_name));
     out += ':';
     for (const auto& a : r.args) {
       out += ' ';
-      out += a;
+      out += one_line(a);
     }
     out += sep;
     if (o.error == Error::none) {

@@ -63,7 +63,7 @@ constexpr double kFlatTopShift = 10.0;       // s: flatter maxima are found from
 constexpr double kModelStep = 2.0;           // s: a crossing this close is taken from the quadratic model
 
 void sin_cos(double x, double& s, double& c) {
-#if defined(__GNUC__)
+#if defined(__GNUC__) && !defined(__clang__)  // clang has no __builtin_sincos (it fuses sin+cos itself)
   __builtin_sincos(x, &s, &c);
 #else
   s = std::sin(x);

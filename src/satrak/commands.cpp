@@ -66,10 +66,12 @@ std::optional<Command> parse_payload(std::string_view payload) {
   while (k < payload.size() && payload[k] != '?' && payload[k] != '=') ++k;
   if (k == payload.size()) return std::nullopt;
   const std::string_view word = trim(payload.substr(0, k));
-  if (word.empty()) return std::nullopt;
+  // No command word is longer, and the unit echoes the word in its refusals: a word with blanks
+  // inside (a tab would reach the peer) or of hundreds of letters is not a command.
+  if (word.empty() || word.size() > 32) return std::nullopt;
   Command c;
   for (char ch : word) {
-    if (!word_char(ch) && !blank(ch)) return std::nullopt;
+    if (!word_char(ch)) return std::nullopt;
     c.word += upper(ch);
   }
   c.kind = payload[k] == '?' ? Kind::query : Kind::request;

@@ -44,8 +44,8 @@ struct Command {
   friend bool operator==(const Command&, const Command&) = default;
 };
 
-// Splits a payload. Nothing when it has no `?` or `=`, or no word before it, or the word holds
-// characters other than letters, digits, `_` and blanks.
+// Splits a payload. Nothing when it has no `?` or `=`, or no word before it, or the word (blanks
+// around it dropped) holds characters other than letters, digits and `_`, or more than 32 of them.
 std::optional<Command> parse_payload(std::string_view payload);
 
 // A word that is safe to echo in a reply: upper case, only letters, digits and `_`, at most 32

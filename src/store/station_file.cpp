@@ -51,10 +51,13 @@ std::optional<int> to_int(std::string_view s) {
   return v;
 }
 
-// "10", "2E", "2eH": one or two hex digits, an optional trailing H.
+// "10", "2E", "2eH": one or two hex digits, an optional trailing H. Digits only: from_chars takes a
+// '-', and "-4" would wrap to FC (the CI-V jam code) in the address byte.
 std::optional<int> to_hex_address(std::string_view s) {
   if (!s.empty() && (s.back() == 'H' || s.back() == 'h')) s.remove_suffix(1);
   if (s.empty() || s.size() > 2) return std::nullopt;
+  for (const char c : s)
+    if (!std::isxdigit(static_cast<unsigned char>(c))) return std::nullopt;
   int v = 0;
   const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v, 16);
   if (ec != std::errc() || p != s.data() + s.size()) return std::nullopt;

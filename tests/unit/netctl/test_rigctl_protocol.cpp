@@ -213,6 +213,11 @@ TEST_CASE("rigctl: malformed requests are answered RPRT -1 / -8 / -11 and change
   CHECK(ask(p, "f") == "145950000\n");
   CHECK(ask(p, "+F abc") == "set_freq: abc\nRPRT -1\n");
   CHECK(ask(p, "+W 1") == "W: 1\nRPRT -11\n");
+  // Found by fuzzing: the Extended Response echo carried the request's control bytes back as they
+  // were (a NUL, an ESC). They are blanks, like control bytes in every value.
+  CHECK(ask(p, std::string("+F 4\0\x1b[2J", 9)) == "set_freq: 4  [2J\nRPRT -1\n");
+  CHECK(ask(p, "+\x01 x") == " : x\nRPRT -11\n");
+  CHECK(st.radio->history() == before);
 }
 
 TEST_CASE("rigctl: a link trakbox's tracker is tuning is refused (RPRT -9), the other is free") {

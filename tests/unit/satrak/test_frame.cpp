@@ -189,6 +189,12 @@ TEST_CASE("Payload parser: liberal forms of the seed") {
   CHECK_FALSE(p("=,1"));
   CHECK_FALSE(p("GO-TO=,1"));
   CHECK_FALSE(p(std::string_view("\x01\x02?", 3)));
+  // Found by fuzzing: blanks inside the word, and words of any length, were taken, and the unit
+  // echoed them in its refusals (a tab in a reply, a reply past the peer's line bound).
+  CHECK_FALSE(p("STATU\tS?"));
+  CHECK_FALSE(p("TRACK AUTO=,1"));
+  CHECK(p(std::string(32, 'A') + "?") == Command{std::string(32, 'A'), Kind::query, {}});
+  CHECK_FALSE(p(std::string(33, 'A') + "?"));
   CHECK(p("GOTO=,1,2")->head() == "GOTO=");
   CHECK(p("STATUS?")->head() == "STATUS?");
 }

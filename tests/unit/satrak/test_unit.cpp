@@ -692,6 +692,11 @@ TEST_CASE("Bad requests are answered with their error code and change nothing") 
       {"STOP?", "STOP?,ERR,4"},
       {"STATUS=", "STATUS=,ERR,4"},
       {"HELLO", "HELLO,ERR,4"},
+      // Found by fuzzing: a word with a tab inside, or hundreds of letters long, came back as it was
+      // ("STATU\tS?,ERR,4": a control byte on the wire; a reply past the peer's 512-byte line).
+      // What is not a command is echoed as sanitize_word() makes it: letters, digits, '_', 32 at most.
+      {"STATU\tS?", "STATUS?,ERR,4"},
+      {std::string(300, 'X') + "=,1", std::string(32, 'X') + "=,ERR,4"},
       {"", "ERR,4"},
       {"GOTO=,1", "GOTO=,ERR,5"},
       {"GOTO=,1,2,3", "GOTO=,ERR,5"},

@@ -246,3 +246,17 @@ TEST_CASE("apply refuses what rotator::validate refuses and leaves the model alo
   CHECK(m.rotator == before.rotator);
   CHECK(m.station.callsign == before.station.callsign);
 }
+
+TEST_CASE("An Icom address with a sign is refused, not wrapped into the address byte") {
+  // Found by fuzzing: from_chars took the '-', so "-4" became FC (the CI-V jam code), which the file
+  // written back and the state document then refused.
+  const auto r = parse_station_file("1 A 0 0 0 S\n2 0 1023 0 511\n3 0 0 0 0\n4 ICOM A 10 -4\n5 0 0 0 0 0 360 0 90\n");
+  CHECK(!r.ok());
+  CHECK(!r.file);
+  REQUIRE(r.problems.size() == 1);
+  CHECK(r.problems[0].message() ==
+        "line 4, item 5 (Icom TX address): found \"-4\", expected a CI-V address in hex, 00 to DF (e.g. 10 for an "
+        "IC-275, 14 for an IC-475; E0 is TrakBox's own)");
+  CHECK(!parse_station_file("1 A 0 0 0 S\n2 0 1023 0 511\n3 0 0 0 0\n4 ICOM A -0 10\n5 0 0 0 0 0 360 0 90\n").ok());
+  CHECK(!parse_station_file("1 A 0 0 0 S\n2 0 1023 0 511\n3 0 0 0 0\n4 ICOM A +1 10\n5 0 0 0 0 0 360 0 90\n").ok());
+}
