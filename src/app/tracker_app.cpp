@@ -100,6 +100,9 @@ class App {
   void build_station(std::unique_ptr<rotator::RotatorDriver> rot, std::unique_ptr<radio::RadioDriver> rad) {
     auto controller = std::make_unique<rotator::Controller>(model_.rotator, model_.station.rotor_start, std::move(rot));
     station_ = std::make_unique<tracker::StationLoop>(model_, clock_, tracker_, std::move(controller), std::move(rad));
+    station_->on_wake([this] {
+      if (started_) arm_tick(std::chrono::milliseconds(0));
+    });
   }
   tracker::StationLoop& station() { return *station_; }
 
@@ -162,8 +165,11 @@ class App {
   void set_satrak(satrak::Unit* unit) { satrak_ = unit; }
 
  private:
-  void schedule_tick() {
-    timer_.expires_after(std::min(station_->next_tick_in(), tick_));
+  void schedule_tick() { arm_tick(std::min(station_->next_tick_in(), tick_)); }
+  // (Re)arms the tick timer; a wait already pending is cancelled (its handler sees the abort).
+  void arm_tick(std::chrono::milliseconds in) {
+    started_ = true;
+    timer_.expires_after(in);
     timer_.async_wait([this](const boost::system::error_code& ec) {
       if (ec) return;
       station_->tick();
@@ -177,6 +183,7 @@ class App {
   asio::signal_set signals_{io_, SIGTERM, SIGHUP, SIGINT};
   asio::steady_timer timer_{io_};
   std::chrono::milliseconds tick_{1000};
+  bool started_ = false;  // the tick timer runs (start() was called)
   store::Model model_;
   store::StateFile file_;
   std::shared_ptr<spdlog::logger> log_;

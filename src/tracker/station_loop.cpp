@@ -19,6 +19,7 @@ StationLoop::StationLoop(store::Model& model, const station::Clock& clock, Track
 void StationLoop::set_rotor_control(bool on) {
   model_.rotor_control = on;
   rotator_->set_control_enabled(on);
+  wake();
 }
 
 void StationLoop::reconfigure() {
@@ -58,12 +59,14 @@ void StationLoop::follow_radio(int db_index, const orbit::Observation& obs) {
 rotator::AzEl StationLoop::point(rotator::AzEl compass) {
   tracker_.stop();
   const rotator::RotatorPosition p = rotator_->set_target(compass);
+  wake();
   return rotator::AzEl{rotator_->model().compass_from_travel(p.az_travel), p.el};
 }
 
 void StationLoop::stop_antenna() {
   tracker_.stop();
   rotator_->stop();
+  wake();
 }
 
 const rotator::PassPlan* StationLoop::plan_for(const SatNow& s) {

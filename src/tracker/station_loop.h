@@ -4,6 +4,7 @@
 // dead band, parking rules and rotor-control switch.
 #pragma once
 #include <chrono>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -36,6 +37,11 @@ class StationLoop {
 
   // After the operator changed station, rotator or radio settings in the model.
   void reconfigure();
+
+  // Called when a command changed what the antenna should do (point, stop, rotor control): the
+  // event loop ticks at once rather than at the end of the interval it was waiting out, so the
+  // antenna starts within milliseconds, not up to a second later.
+  void on_wake(std::function<void()> wake) { wake_ = std::move(wake); }
 
   // Something other than the Tracker follows a satellite with the antenna: the Satrak unit's
   // TRACK. It reports each of its ticks; the station then keeps the radio on that satellite's
@@ -74,6 +80,10 @@ class StationLoop {
   std::optional<int> tuned_;  // db index the tuner is set up for
   std::optional<RemoteFollow> remote_;
   std::optional<int> remote_db_;  // remote_'s satellite in the database
+  std::function<void()> wake_;
+  void wake() {
+    if (wake_) wake_();
+  }
   void follow_radio(int db_index, const orbit::Observation& obs);
   void find_remote_in_database();
 

@@ -222,3 +222,19 @@ TEST_CASE("Rotor control off: nothing moves; the radio is tuned while the satell
   CHECK(std::abs(*rs.downlink_hz - 437800000) < 12000);
   CHECK(*rs.downlink_hz % 10 == 0);
 }
+
+TEST_CASE("A command that changes what the antenna should do wakes the event loop; ticks do not") {
+  Station st(shipped(station::RotorStart::south, 32.259, -110.778, 842.0), orbit::from_civil(2026, 5, 21, 12, 0, 0));
+  int wakes = 0;
+  st.loop->on_wake([&] { ++wakes; });
+  st.step(std::chrono::milliseconds(500));
+  CHECK(wakes == 0);
+  st.loop->set_rotor_control(true);
+  CHECK(wakes == 1);
+  st.loop->point({120.0, 30.0});
+  CHECK(wakes == 2);
+  st.step(std::chrono::milliseconds(500));
+  CHECK(wakes == 2);  // the antenna moving is the loop's own business
+  st.loop->stop_antenna();
+  CHECK(wakes == 3);
+}
