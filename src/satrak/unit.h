@@ -229,7 +229,7 @@ class Unit {
   std::optional<PlanCache> plan_cache_;
 
   // Element sources.
-  bool tle_missing_ = false, sat_missing_ = false, download_failed_ = false, bad_file_ = false;
+  bool tle_missing_ = false, sat_missing_ = false, download_failed_ = false;
   bool file_seen_ = false;          // file_stat_us_/file_size_ describe the active file as last read
   std::int64_t file_stat_us_ = 0;   // its modification time, microseconds since 1970
   std::uintmax_t file_size_ = 0;

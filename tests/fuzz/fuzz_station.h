@@ -14,7 +14,6 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -22,13 +21,11 @@
 #include <spdlog/spdlog.h>
 
 #include "orbit/elements.h"
-#include "radio/freqmode.h"
-#include "radio/simulated.h"
-#include "rotator/simulated.h"
 #include "station/clock.h"
 #include "store/database.h"
 #include "store/model.h"
-#include "tracker/station_loop.h"
+#include "support/shipped_model.h"
+#include "support/sim_station.h"
 
 #ifndef TRAKBOX_SOURCE_DIR
 #error "TRAKBOX_SOURCE_DIR must name the source tree (tests/fuzz/CMakeLists.txt defines it)"
@@ -46,12 +43,7 @@ inline const bool kQuietLog = [] {
   return true;
 }();
 
-inline std::string read_file(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using testing::read_file;
 
 inline void write_file(const fs::path& p, std::string_view text) {
   std::ofstream out(p, std::ios::binary | std::ios::trunc);
@@ -60,14 +52,11 @@ inline void write_file(const fs::path& p, std::string_view text) {
 
 inline std::string data_file(const char* name) { return read_file(fs::path(TRAKBOX_SOURCE_DIR) / "data" / name); }
 
-// The shipped database (data/amateur.tle + data/freqmode.txt), Tucson as the station, as the unit
-// tests' fixtures have it. Parsed once; each station gets a copy.
+// The shipped database (tests/support/shipped_model.h), Tucson as the station, as the unit tests'
+// fixtures have it. Parsed once; each station gets a copy.
 inline const store::Model& shipped_model() {
   static const store::Model m = [] {
-    store::Model model;
-    const auto sets = orbit::parse_nasa(data_file("amateur.tle"), "amateur.tle");
-    const auto fm = radio::parse_freqmode(data_file("freqmode.txt"));
-    model.db = store::make_database(sets.sets, fm.records);
+    store::Model model = testing::shipped_model();
     model.station.lat_deg = 32.259;
     model.station.lon_deg = -110.778;
     model.station.height_m = 842.0;
@@ -99,12 +88,10 @@ inline orbit::UtcTime start_time() { return orbit::from_civil(2026, 5, 21, 12, 0
 struct Station {
   explicit Station(store::Model m = shipped_model(), bool rotor_control = true)
       : now(start_time()), clock([this] { return now; }), model(std::move(m)), tracker(model, clock) {
-    auto sim = std::make_unique<rotator::SimulatedRotator>(clock, rotator::SimulatedRotatorParams::matching(model.rotator));
-    rotator_sim = sim.get();
-    auto ctl = std::make_unique<rotator::Controller>(model.rotator, model.station.rotor_start, std::move(sim));
-    auto rad = std::make_unique<radio::SimulatedRadio>();
-    radio_sim = rad.get();
-    loop = std::make_unique<tracker::StationLoop>(model, clock, tracker, std::move(ctl), std::move(rad));
+    testing::SimulatedStation sim = testing::simulated_station(model, clock, tracker);
+    rotator_sim = sim.rotator;
+    radio_sim = sim.radio;
+    loop = std::move(sim.loop);
     loop->set_rotor_control(rotor_control);
     loop->tick();  // a first reading
   }
