@@ -308,7 +308,8 @@ std::string guess_head(std::string_view payload) {
   std::size_t k = 0;
   while (k < payload.size() && payload[k] != '?' && payload[k] != '=' && payload[k] != ',') ++k;
   std::string w = sanitize_word(payload.substr(0, k));
-  if (w.empty()) return {};
+  // "ERR" is the replies' own word: "ERR,ERR,4" would read as a refusal of a refusal.
+  if (w.empty() || w == "ERR") return {};
   if (k < payload.size() && (payload[k] == '?' || payload[k] == '=')) w += payload[k];
   return w;
 }

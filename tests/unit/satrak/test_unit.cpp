@@ -696,6 +696,9 @@ TEST_CASE("Bad requests are answered with their error code and change nothing") 
       // ("STATU\tS?,ERR,4": a control byte on the wire; a reply past the peer's 512-byte line).
       // What is not a command is echoed as sanitize_word() makes it: letters, digits, '_', 32 at most.
       {"STATU\tS?", "STATUS?,ERR,4"},
+      // Found by fuzzing: a line starting "ERR," was answered "ERR,ERR,4"; ERR is the replies' word.
+      {"ERR,STATUS?", "ERR,4"},
+      {"ERR?", "ERR?,ERR,4"},  // a command word like any other, unknown
       {std::string(300, 'X') + "=,1", std::string(32, 'X') + "=,ERR,4"},
       {"", "ERR,4"},
       {"GOTO=,1", "GOTO=,ERR,5"},
