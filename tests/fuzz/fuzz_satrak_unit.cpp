@@ -65,8 +65,14 @@ void check_reply(const std::string& reply, std::string_view input) {
   for (const unsigned char c : reply) TB_FUZZ_CHECK(c >= 0x20 && c != 0x7F && c != '$' && c != '*', why);
   if (satrak::parse_payload(reply)) return;
   // A refusal of something that is not a command: "ERR,n" or "WORD,ERR,n" (docs/satrak.md).
-  const std::size_t err = reply.find("ERR,");
-  TB_FUZZ_CHECK(err != std::string::npos && (err == 0 || reply[err - 1] == ','), why);
+  // The word is what sanitize_word leaves (it may itself end in "ERR": "VERR,ERR,4").
+  std::size_t err = 0;
+  if (reply.rfind("ERR,", 0) != 0) {
+    const std::size_t comma = reply.find(',');
+    TB_FUZZ_CHECK(comma != std::string::npos && comma > 0 && satrak::sanitize_word(reply.substr(0, comma)) == reply.substr(0, comma), why);
+    TB_FUZZ_CHECK(reply.compare(comma + 1, 4, "ERR,") == 0, why);
+    err = comma + 1;
+  }
   TB_FUZZ_CHECK(reply.find_first_not_of("0123456789", err + 4) == std::string::npos && reply.size() > err + 4, why);
 }
 
