@@ -17,8 +17,7 @@ using store::json_fields::path;
 // A string the Satrak frame can carry back: no control characters and none of its separators.
 std::string text(const json& j, const std::string& where, const char* key, std::size_t max_len) {
   std::string s = store::json_fields::text(j, where, key, max_len);
-  for (unsigned char c : s)
-    if (c < 0x20 || c == ',' || c == '*' || c == '$') bad(path(where, key), "holds a control character, ',', '*' or '$'");
+  if (!frame_text(s)) bad(path(where, key), "holds a control character, ',', '*' or '$'");
   return s;
 }
 
@@ -37,12 +36,16 @@ orbit::UtcTime time_of(const json& j, const std::string& where, const char* key)
 
 }  // namespace
 
-bool safe_file_name(std::string_view name) {
-  if (name.empty() || name.size() > limits::kNameMax) return false;
-  if (name.front() == '.' || name.find("..") != std::string_view::npos) return false;
-  for (unsigned char c : name)
-    if (c < 0x20 || c == 0x7F || c == '/' || c == '\\') return false;
+bool frame_text(std::string_view s) {
+  for (unsigned char c : s)
+    if (c < 0x20 || c == 0x7F || c == ',' || c == '*' || c == '$') return false;
   return true;
+}
+
+bool safe_file_name(std::string_view name) {
+  if (name.empty() || name.size() > limits::kNameMax || !frame_text(name)) return false;
+  if (name.front() == '.' || name.find("..") != std::string_view::npos) return false;
+  return name.find_first_of("/\\") == std::string_view::npos;
 }
 
 json to_json(const Settings& s) {

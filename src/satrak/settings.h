@@ -106,8 +106,14 @@ nlohmann::json to_json(const Settings& s);
 // range. `where` prefixes the field names.
 Settings settings_from_json(const nlohmann::json& j, const std::string& where = "satrak");
 
-// A file name the TLE or image directory may hold: not empty, at most 128 bytes, no `/`, no `\`,
-// not `.` or `..` (nor containing `..`), no control bytes, not starting with `.`.
+// Text a reply frame can carry back as one field: no control bytes (nor DEL), no `,` (the field
+// separator), `*` (the checksum mark) or `$` (the frame start). Every text setting the unit takes
+// is checked with this before it is stored, and the state file's reader checks the same, so what
+// the unit stores always reads back.
+bool frame_text(std::string_view s);
+
+// A file name the TLE or image directory may hold: not empty, at most 128 bytes, frame_text, no
+// `/`, no `\`, not `.` or `..` (nor containing `..`), not starting with `.`.
 bool safe_file_name(std::string_view name);
 
 }  // namespace tb::satrak

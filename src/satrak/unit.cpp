@@ -216,16 +216,16 @@ std::string ftp_url(const FtpSource& f) {
 bool valid_http_url(std::string_view u) {
   const std::string l = lower(u);
   if (l.rfind("http://", 0) != 0 && l.rfind("https://", 0) != 0) return false;
-  if (u.size() > limits::kUrlMax) return false;
+  if (u.size() > limits::kUrlMax || !frame_text(u)) return false;
   for (unsigned char c : u)
-    if (c <= 0x20 || c >= 0x7F) return false;
+    if (c == ' ' || c >= 0x7F) return false;
   return l.size() > (l[4] == 's' ? 8u : 7u);
 }
 
 bool valid_text_field(std::string_view s, std::size_t max_len) {
-  if (s.size() > max_len) return false;
+  if (s.size() > max_len || !frame_text(s)) return false;
   for (unsigned char c : s)
-    if (c < 0x20 || c >= 0x7F) return false;
+    if (c >= 0x7F) return false;
   return true;
 }
 
@@ -1308,10 +1308,13 @@ Unit::Reply Unit::cmd_satellite_ftp(const Command& c) {
   f.host = c.fields[0];
   if (f.host.empty() || !valid_text_field(f.host, limits::kUrlMax) || f.host.find(' ') != std::string::npos)
     r.fail(Error::bad_value);
-  if (!valid_text_field(c.fields[1], limits::kNameMax) || !valid_text_field(c.fields[2], limits::kNameMax))
+  // "***" (as SATELLITE_FTP? shows it) or "?" keeps the stored password.
+  const bool keep_password = c.fields[2] == kMaskedPassword || c.fields[2] == "?";
+  if (!valid_text_field(c.fields[1], limits::kNameMax) ||
+      (!keep_password && !valid_text_field(c.fields[2], limits::kNameMax)))
     r.fail(Error::bad_value);
   f.user = c.fields[1];
-  if (c.fields[2] != kMaskedPassword && c.fields[2] != "?") f.password = c.fields[2];
+  if (!keep_password) f.password = c.fields[2];
   f.port = static_cast<int>(r.integer(3, 1, 65535));
   std::size_t i = 4;
   if (full) {

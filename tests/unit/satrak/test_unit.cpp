@@ -728,6 +728,12 @@ TEST_CASE("Bad requests are answered with their error code and change nothing") 
       {"SATELLITE_FTP=,host,u,p,21,../f.txt,ISS,1,1", "SATELLITE_FTP=,ERR,6"},
       {"SATELLITE_FTP=,host,u,p,21,f.txt", "SATELLITE_FTP=,ERR,5"},
       {"LOAD_IMAGE=,../x.json", "LOAD_IMAGE=,ERR,6"},
+      // Found by fuzzing: '$' and '*' (which a bare payload may hold) were stored, and the state
+      // file's reader refuses them, so the next start lost every Satrak setting.
+      {"SATELLITE_HTTP=,https://exampl$.invalid/a.txt,1,0,1", "SATELLITE_HTTP=,ERR,6"},
+      {"SATELLITE_FTP=,ho*st,u,p,21,f.txt,ISS,1,1", "SATELLITE_FTP=,ERR,6"},
+      {"SATELLITE_FTP=,host,u,p$,21,f.txt,ISS,1,1", "SATELLITE_FTP=,ERR,6"},
+      {"SATELLITE_FTP=,host,u,p,21,f*.txt,ISS,1,1", "SATELLITE_FTP=,ERR,6"},
       {"LOAD_IMAGE=", "LOAD_IMAGE=,ERR,5"},
       {"GPS_DATA?,1", "GPS_DATA?,ERR,5"},
   };
