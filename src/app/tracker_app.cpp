@@ -56,6 +56,8 @@ std::vector<OptionSpec> tracker_option_specs() {
       {"rigctld-port", "N", "answer the rigctld protocol on TCP port N (4532 by convention; off by default)"},
       {"host-port", "N", "host mode (menu 7's commands) on TCP port N (off by default)"},
       {"listen", "ADDR", "address the host, rotctld and rigctld servers listen on (default 127.0.0.1)"},
+      {"log-level", "LEVEL", "what trakbox.log in the state directory keeps: error, warn, info (default) or "
+                             "debug (every remote command and its reply)"},
   };
 }
 
@@ -251,6 +253,14 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   }
   const auto radio_spec = radio::parse_radio_spec(o.value("radio").value_or("simulated"));
   if (!radio_spec.spec) r.fail("--radio", radio_spec.error);
+  spdlog::level::level_enum log_level = spdlog::level::info;
+  if (const auto l = o.value("log-level")) {
+    if (*l == "error") log_level = spdlog::level::err;
+    else if (*l == "warn") log_level = spdlog::level::warn;
+    else if (*l == "info") log_level = spdlog::level::info;
+    else if (*l == "debug") log_level = spdlog::level::debug;
+    else r.fail("--log-level", "expected error, warn, info or debug; found '" + *l + "'");
+  }
   if (o.has("tty") && o.has("line")) r.fail("--line", "not with --tty (a serial port is always plain lines)");
   if (front_end == FrontEnd::host && (o.has("tty") || o.has("standalone")))
     r.fail(o.has("tty") ? "--tty" : "--standalone", "not with trakbox host (host mode talks on stdin/stdout)");
@@ -264,6 +274,7 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
 
   auto log = std::make_shared<spdlog::logger>(
       "trakbox", std::make_shared<spdlog::sinks::basic_file_sink_mt>((state_dir / "trakbox.log").string()));
+  log->set_level(log_level);
   log->flush_on(spdlog::level::info);
   spdlog::set_default_logger(log);  // drivers and servers log here, never on the terminal the UI owns
 

@@ -43,7 +43,7 @@ class Session : public std::enable_shared_from_this<Session> {
       : socket_(std::move(socket)), core_(std::move(core)), peer_(describe(socket_)) {}
 
   void start() {
-    spdlog::debug("{}: client {} connected", core_->options.name, peer_);
+    spdlog::info("{}: client {} connected", core_->options.name, peer_);
     if (core_->protocol) queue(core_->protocol->greeting());
     if (closed_) return;
     read();
@@ -56,7 +56,7 @@ class Session : public std::enable_shared_from_this<Session> {
     socket_.shutdown(tcp::socket::shutdown_both, ec);
     socket_.close(ec);
     core_->sessions.erase(this);
-    spdlog::debug("{}: client {} closed ({})", core_->options.name, peer_, why);
+    spdlog::info("{}: client {} closed ({})", core_->options.name, peer_, why);
   }
 
  private:
@@ -135,6 +135,9 @@ class Session : public std::enable_shared_from_this<Session> {
   void handle_line() {
     if (!core_->protocol) return;
     const Reply r = core_->protocol->handle(line_);
+    if (spdlog::should_log(spdlog::level::debug))  // --log-level debug: what a client asked, what it got
+      spdlog::debug("{}: client {}: '{}' -> '{}'", core_->options.name, peer_, one_line(line_.substr(0, 200)),
+                    one_line(r.text.substr(0, 200)));
     queue(r.text);
     if (r.close) closing_ = true;
   }

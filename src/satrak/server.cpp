@@ -39,11 +39,15 @@ class Session : public std::enable_shared_from_this<Session> {
     peer_ = ec ? std::string("?") : ep.address().to_string() + ":" + std::to_string(ep.port());
   }
 
-  void start() { read(); }
+  void start() {
+    spdlog::info("satrak: client {} connected", peer_);
+    read();
+  }
 
   void close() {
     if (closed_) return;
     closed_ = true;
+    spdlog::info("satrak: client {} disconnected", peer_);
     boost::system::error_code ec;
     socket_.shutdown(tcp::socket::shutdown_both, ec);
     socket_.close(ec);
@@ -77,7 +81,14 @@ class Session : public std::enable_shared_from_this<Session> {
     for (const Decoded& d : events_) {
       if (d.kind == Decoded::Kind::overlong) spdlog::warn("satrak: client {}: line longer than {} bytes discarded", peer_, decoder_.max_line());
       ++state->stats.frames;
-      queue(encode(state->unit.handle(d)));
+      std::string reply = state->unit.handle(d);
+      if (spdlog::should_log(spdlog::level::debug)) {  // --log-level debug: what a client asked, what it got
+        std::string asked = d.payload.substr(0, 200);
+        for (char& c : asked)
+          if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F) c = ' ';
+        spdlog::debug("satrak: client {}: '{}' -> '{}'", peer_, asked, reply);
+      }
+      queue(encode(reply));
       if (closed_) return;
     }
     read();

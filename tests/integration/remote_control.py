@@ -21,7 +21,7 @@ def main():
     sat_port, rot_port, rig_port, host_port = free_port(), free_port(), free_port(), free_port()
     tb = subprocess.Popen([BIN, "--state", state, "--clock", CLOCK, "--clock-rate", "10", "--line",
                            "--satrak-port", str(sat_port), "--rotctld-port", str(rot_port),
-                           "--rigctld-port", str(rig_port), "--host-port", str(host_port)],
+                           "--rigctld-port", str(rig_port), "--host-port", str(host_port), "--log-level", "debug"],
                           stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
     try:
         deadline = time.time() + 15
@@ -101,6 +101,16 @@ def main():
                 time.sleep(0.3)
             c.sendall(b"Q\r")
             check(until(b"never") == b"", "Q closes the connection")
+
+        # The log says who connected and, at --log-level debug, what each client asked and got.
+        with open(os.path.join(state, "trakbox.log"), encoding="utf-8", errors="replace") as f:
+            log = f.read()
+        check(re.search(r"rotctld: client 127\.0\.0\.1:\d+ connected", log) is not None, "rotctld connections logged")
+        check("'P 200 10' -> 'RPRT 0" in log or "'P 200.000000 10.000000' -> 'RPRT 0" in log,
+              "rotctld P logged with its reply")
+        check(re.search(r"satrak: client 127\.0\.0\.1:\d+: 'GOTO=,120,30' -> 'GOTO=,OK'", log) is not None,
+              "Satrak GOTO logged with its reply")
+        check("'FDx' -> 'ERROR FD:" in log, "a refused host command logged")
     finally:
         try:
             tb.stdin.close()  # input ends: trakbox saves and leaves
