@@ -275,7 +275,7 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   auto log = std::make_shared<spdlog::logger>(
       "trakbox", std::make_shared<spdlog::sinks::basic_file_sink_mt>((state_dir / "trakbox.log").string()));
   log->set_level(log_level);
-  log->flush_on(spdlog::level::info);
+  log->flush_on(std::min(log_level, spdlog::level::info));  // a debug log is read while it grows
   spdlog::set_default_logger(log);  // drivers and servers log here, never on the terminal the UI owns
 
   // Battery-backed RAM test.
