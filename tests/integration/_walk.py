@@ -13,7 +13,8 @@ import re
 import subprocess
 import time
 
-from _tbharness import BIN, SOURCE, Failure, check, factory_state, load_state, read_tle, tle_to_amsat
+from _tbharness import (BIN, SOURCE, Failure, ScreenSession, SerialSession, check, factory_state, load_state,
+                        read_tle, tle_to_amsat)
 
 MAIN = r"Select \[1-8,S,M\]:"
 UPDATE = r" Select:"              # the UPDATE MENU and the Configuration Menu prompt
@@ -853,3 +854,29 @@ def group_m(s):
     check(data["priority_mode"] is True, "priority mode, the last choice, is stored")
     check(data["rotor_control"] is True, "M switches rotor control on (E twice left it on)")
     check(data["clock_offset_us"] != 0, "menu 5 stored the clock")
+
+
+# ---------------------------------------------------------------------------------------------
+# How the ui_walk_* tests run a group: on a fresh session of one front end, closed whatever happens.
+
+def walk_serial(group, *args, transcript_checks=(), **kwargs):
+    """The group over a serial line (socat pty pair, 9600 bps), then the rules of a serial terminal:
+    no escape codes, CR LF line ends; each of transcript_checks(transcript) after them."""
+    s = SerialSession()
+    try:
+        group(s, *args, **kwargs)
+        check("\x1b" not in s.term.transcript, "no escape codes on a serial line")
+        check("\r\n" in s.term.transcript, "a serial terminal gets CR LF line ends")
+        for extra in transcript_checks:
+            extra(s.term.transcript)
+    finally:
+        s.close()
+
+
+def walk_screen(group, *args, **kwargs):
+    """The group on the full-screen front end in tmux, 100x40."""
+    s = ScreenSession(cols=100, rows=40)
+    try:
+        group(s, *args, **kwargs)
+    finally:
+        s.close()

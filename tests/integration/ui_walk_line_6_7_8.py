@@ -11,18 +11,15 @@ import sys
 
 sys.path.insert(0, os.path.dirname(__file__))
 import _walk as w  # noqa: E402
-from _tbharness import SerialSession, check, run_test  # noqa: E402
+from _tbharness import check, run_test  # noqa: E402
+
+
+def beep_before_6_9(transcript):
+    check("\x07Configure your station elements" in transcript, "6-9: a beep tone, then the question")
 
 
 def main():
-    s = SerialSession()
-    try:
-        w.group_6_7_8(s)
-        check("\x1b" not in s.term.transcript, "no escape codes on a serial line")
-        check("\r\n" in s.term.transcript, "a serial terminal gets CR LF line ends")
-        check("\x07Configure your station elements" in s.term.transcript, "6-9: a beep tone, then the question")
-    finally:
-        s.close()
+    w.walk_serial(w.group_6_7_8, transcript_checks=[beep_before_6_9])
 
 
 if __name__ == "__main__":

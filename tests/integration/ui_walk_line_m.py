@@ -10,17 +10,11 @@ import sys
 
 sys.path.insert(0, os.path.dirname(__file__))
 import _walk as w  # noqa: E402
-from _tbharness import SerialSession, check, run_test  # noqa: E402
+from _tbharness import run_test  # noqa: E402
 
 
 def main():
-    s = SerialSession()
-    try:
-        w.group_m(s)
-        check("\x1b" not in s.term.transcript, "no escape codes on a serial line")
-        check("\r\n" in s.term.transcript, "a serial terminal gets CR LF line ends")
-    finally:
-        s.close()
+    w.walk_serial(w.group_m)
 
 
 if __name__ == "__main__":

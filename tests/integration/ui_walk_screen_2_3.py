@@ -9,17 +9,13 @@ import sys
 
 sys.path.insert(0, os.path.dirname(__file__))
 import _walk as w  # noqa: E402
-from _tbharness import ScreenSession, run_test  # noqa: E402
+from _tbharness import run_test  # noqa: E402
 
 PAGE = 37  # 40 rows less the status line, the header and the prompt
 
 
 def main():
-    s = ScreenSession(cols=100, rows=40)
-    try:
-        w.group_2_3(s, page_rows=PAGE)
-    finally:
-        s.close()
+    w.walk_screen(w.group_2_3, page_rows=PAGE)
 
 
 if __name__ == "__main__":

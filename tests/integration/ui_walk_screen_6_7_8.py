@@ -10,15 +10,11 @@ import sys
 
 sys.path.insert(0, os.path.dirname(__file__))
 import _walk as w  # noqa: E402
-from _tbharness import ScreenSession, run_test  # noqa: E402
+from _tbharness import run_test  # noqa: E402
 
 
 def main():
-    s = ScreenSession(cols=100, rows=40)
-    try:
-        w.group_6_7_8(s)
-    finally:
-        s.close()
+    w.walk_screen(w.group_6_7_8)
 
 
 if __name__ == "__main__":
