@@ -27,8 +27,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   fuzz::Station st(fuzz::shipped_model(), (mode & 2) == 0);
   if (mode & 4) st.tracker.track_single(0);
-  host::Interpreter interpreter(*st.loop);
-  netctl::HostProtocol protocol(*st.loop);
+  host::Interpreter interpreter(*st.station);
+  netctl::HostProtocol protocol(*st.station);
   if (mode & 1) TB_FUZZ_CHECK(clean(protocol.greeting()), protocol.greeting());
 
   for (const auto line : fuzz::split_lines(input, 64)) {
@@ -37,14 +37,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       TB_FUZZ_CHECK(clean(r.text), r.text);
       if (r.close) break;
     } else {
-      const auto target = st.loop->rotator().status().target;
+      const auto target = st.station->rotator().status().target;
       const auto sent = st.radio_sim->history().size();
       const auto tracking = st.tracker.mode();
       const host::Reply r = interpreter.execute(line);
       if (!r.ok) {
         TB_FUZZ_CHECK(r.lines.size() == 1 && r.lines[0].rfind("ERROR ", 0) == 0, std::string(line));
         if (r.lines[0].find("radio fault") == std::string::npos) {
-          TB_FUZZ_CHECK(st.loop->rotator().status().target == target, std::string(line));
+          TB_FUZZ_CHECK(st.station->rotator().status().target == target, std::string(line));
           TB_FUZZ_CHECK(st.radio_sim->history().size() == sent, std::string(line));
           TB_FUZZ_CHECK(st.tracker.mode() == tracking, std::string(line));
         }

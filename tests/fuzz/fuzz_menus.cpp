@@ -21,7 +21,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   fuzz::Station st(fuzz::shipped_model(), false);
   int saves = 0;
-  menus::Services services{st.model, st.clock, st.tracker, *st.loop,
+  menus::Services services{st.model, st.clock, st.tracker, *st.station,
                            [&saves]() -> std::optional<std::string> {
                              ++saves;
                              return std::nullopt;
@@ -31,7 +31,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   term.timeouts_before_key = data[0] & 3;
   term.on_wait = [&st](std::optional<term::Duration> timeout) {
     st.now += std::chrono::duration_cast<std::chrono::microseconds>(timeout.value_or(std::chrono::seconds(1)));
-    st.loop->tick();
+    st.station->tick();
   };
   try {
     menus::sign_on(term, services);

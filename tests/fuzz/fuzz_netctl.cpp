@@ -28,18 +28,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   fuzz::Station st(fuzz::shipped_model(), (mode & 2) == 0);
   if (mode & 4) st.tracker.track_single(0);
 #ifdef FUZZ_RIGCTL
-  const auto protocol = std::make_unique<netctl::RigctlProtocol>(*st.loop);
+  const auto protocol = std::make_unique<netctl::RigctlProtocol>(*st.station);
 #else
-  const auto protocol = std::make_unique<netctl::RotctlProtocol>(*st.loop);
+  const auto protocol = std::make_unique<netctl::RotctlProtocol>(*st.station);
 #endif
 
   for (const auto line : fuzz::split_lines(input, 64)) {
-    const auto target = st.loop->rotator().status().target;
+    const auto target = st.station->rotator().status().target;
     const auto sent = st.radio_sim->history().size();
     const netctl::Reply r = protocol->handle(line);
     TB_FUZZ_CHECK(clean(r.text), r.text);
     if (r.text.find("RPRT -") != std::string::npos) {
-      TB_FUZZ_CHECK(st.loop->rotator().status().target == target, std::string(line) + " -> " + r.text);
+      TB_FUZZ_CHECK(st.station->rotator().status().target == target, std::string(line) + " -> " + r.text);
       TB_FUZZ_CHECK(st.radio_sim->history().size() == sent, std::string(line) + " -> " + r.text);
     }
     if (r.close) break;

@@ -84,33 +84,18 @@ inline const fs::path& scratch_dir() {
 // 2026-05-21 12:00:00 UTC, the unit tests' usual start; the shipped elements are recent there.
 inline orbit::UtcTime start_time() { return orbit::from_civil(2026, 5, 21, 12, 0, 0); }
 
-// The whole station, as the program builds it, on simulated hardware.
-struct Station {
+// The whole station, as the program builds it, on simulated hardware (tests/support/sim_station.h),
+// rotor control as asked and a first reading taken.
+struct Station : testing::StationFixture {
   explicit Station(store::Model m = shipped_model(), bool rotor_control = true)
-      : now(start_time()), clock([this] { return now; }), model(std::move(m)), tracker(model, clock) {
-    testing::SimulatedStation sim = testing::simulated_station(model, clock, tracker);
-    rotator_sim = sim.rotator;
-    radio_sim = sim.radio;
-    loop = std::move(sim.loop);
-    loop->set_rotor_control(rotor_control);
-    loop->tick();  // a first reading
+      : StationFixture(start_time(), std::move(m)) {
+    build_station();
+    station->set_rotor_control(rotor_control);
+    station->tick();  // a first reading
   }
-  Station(const Station&) = delete;
-  Station& operator=(const Station&) = delete;
 
   // Time passes on the clock's base and the station ticks, as the event loop would.
-  void step(std::chrono::milliseconds dt = 500ms) {
-    now += dt;
-    loop->tick();
-  }
-
-  orbit::UtcTime now;
-  station::RealTimeClock clock;
-  store::Model model;
-  tracker::Tracker tracker;
-  rotator::SimulatedRotator* rotator_sim = nullptr;
-  radio::SimulatedRadio* radio_sim = nullptr;
-  std::unique_ptr<tracker::StationLoop> loop;
+  void step(std::chrono::milliseconds dt = 500ms) { StationFixture::step(dt); }
 };
 
 // The input as lines (split at LF; a CR before it stays, the protocols deal with it), at most

@@ -54,7 +54,10 @@ inline constexpr double kElTol = 2 * 90.0 / 511;
 // build on.
 struct StationFixture {
   explicit StationFixture(orbit::UtcTime start = orbit::from_civil(2026, 5, 21, 12, 0, 0))
-      : now(start), model(shipped_model()), clock([this] { return now; }), tracker(model, clock) {}
+      : StationFixture(start, shipped_model()) {}
+  // The same on a model of the test's own.
+  StationFixture(orbit::UtcTime start, store::Model m)
+      : now(start), model(std::move(m)), clock([this] { return now; }), tracker(model, clock) {}
   StationFixture(const StationFixture&) = delete;
   StationFixture& operator=(const StationFixture&) = delete;
 
@@ -70,11 +73,16 @@ struct StationFixture {
   // The simulated rotator's true compass azimuth and elevation.
   rotator::AzEl truth() { return true_compass(*rotator_sim, model.station.rotor_start); }
 
+  // Lets `dt` pass on the clock, then the station ticks, as the event loop would.
+  void step(std::chrono::milliseconds dt) {
+    now += dt;
+    station->tick();
+  }
+
   // Lets `seconds` pass on the clock, ticking the station every 100 ms; `each` runs after each tick.
   void run(double seconds, const std::function<void()>& each = {}) {
     for (int i = 0; i < static_cast<int>(seconds * 10); ++i) {
-      now += std::chrono::milliseconds(100);
-      station->tick();
+      step(std::chrono::milliseconds(100));
       if (each) each();
     }
   }

@@ -18,26 +18,9 @@ store::Model shipped(station::RotorStart start, double lat, double lon, double h
   return m;
 }
 
-struct Station {
-  explicit Station(store::Model m, orbit::UtcTime t0)
-      : model(std::move(m)), now(t0), clock(now), tracker(model, clock) {
-    testing::SimulatedStation sim = testing::simulated_station(model, clock, tracker);
-    rot = sim.rotator;
-    radio = sim.radio;
-    loop = std::move(sim.loop);
-  }
-  void step(std::chrono::milliseconds dt) {
-    now += dt;
-    clock.set(now);
-    loop->tick();
-  }
-  store::Model model;
-  orbit::UtcTime now;
-  station::ManualClock clock;
-  tracker::Tracker tracker;
-  rotator::SimulatedRotator* rot = nullptr;
-  radio::SimulatedRadio* radio = nullptr;
-  std::unique_ptr<tracker::StationLoop> loop;
+// The whole simulated station on a model of the test's own, its clock at t0.
+struct Station : testing::StationFixture {
+  Station(store::Model m, orbit::UtcTime t0) : StationFixture(t0, std::move(m)) { build_station(); }
 };
 }  // namespace
 
@@ -144,13 +127,13 @@ FollowResult follow(station::RotorStart start, bool flip_allowed) {
   const int iss = *m.db.find("ISS");
   const orbit::Pass pass = north_crossing_pass(m, iss);
   Station st(m, orbit::add_minutes(pass.aos, -6.0));
-  st.loop->set_rotor_control(true);
+  st.station->set_rotor_control(true);
   st.tracker.track_single(iss);
   FollowResult r;
   double last_travel = -1.0;
   while (st.now < pass.los) {
     st.step(std::chrono::milliseconds(500));
-    const auto& s = st.loop->rotator().status();
+    const auto& s = st.station->rotator().status();
     REQUIRE(s.has_position);
     CHECK(s.az.travel >= -0.5);
     CHECK(s.az.travel <= 360.5);
@@ -169,9 +152,9 @@ FollowResult follow(station::RotorStart start, bool flip_allowed) {
       ++r.samples;
     }
   }
-  REQUIRE(st.loop->current_plan());
-  r.held_at_stop = st.loop->current_plan()->held_at_stop;
-  r.flip = st.loop->current_plan()->flip;
+  REQUIRE(st.station->current_plan());
+  r.held_at_stop = st.station->current_plan()->held_at_stop;
+  r.flip = st.station->current_plan()->flip;
   MESSAGE("rotor start " << std::string(station::to_string(start)) << std::string(flip_allowed ? " with flip" : "") << ", pass max el "
                          << pass.max_el_deg << ": max pointing error " << r.max_error << " deg, max step "
                          << r.max_step << " deg, held " << r.held_at_stop << ", flip " << r.flip);
@@ -213,11 +196,11 @@ TEST_CASE("Rotor control off: nothing moves; the radio is tuned while the satell
   REQUIRE(p);
   Station st(m, p->tca);
   st.tracker.track_single(iss);
-  const auto before = st.rot->true_position();
+  const auto before = st.rotator_sim->true_position();
   for (int i = 0; i < 20; ++i) st.step(std::chrono::milliseconds(500));
-  CHECK(st.rot->true_position() == before);
+  CHECK(st.rotator_sim->true_position() == before);
   // ISS downlink 437.800 MHz, AOS-only CAT: tuned near TCA, within the Doppler range, 10 Hz steps.
-  const auto rs = st.radio->status();
+  const auto rs = st.radio_sim->status();
   REQUIRE(rs.downlink_hz);
   CHECK(std::abs(*rs.downlink_hz - 437800000) < 12000);
   CHECK(*rs.downlink_hz % 10 == 0);
@@ -226,15 +209,15 @@ TEST_CASE("Rotor control off: nothing moves; the radio is tuned while the satell
 TEST_CASE("A command that changes what the antenna should do wakes the event loop; ticks do not") {
   Station st(shipped(station::RotorStart::south, 32.259, -110.778, 842.0), orbit::from_civil(2026, 5, 21, 12, 0, 0));
   int wakes = 0;
-  st.loop->on_wake([&] { ++wakes; });
+  st.station->on_wake([&] { ++wakes; });
   st.step(std::chrono::milliseconds(500));
   CHECK(wakes == 0);
-  st.loop->set_rotor_control(true);
+  st.station->set_rotor_control(true);
   CHECK(wakes == 1);
-  st.loop->point({120.0, 30.0});
+  st.station->point({120.0, 30.0});
   CHECK(wakes == 2);
   st.step(std::chrono::milliseconds(500));
   CHECK(wakes == 2);  // the antenna moving is the loop's own business
-  st.loop->stop_antenna();
+  st.station->stop_antenna();
   CHECK(wakes == 3);
 }
