@@ -80,8 +80,8 @@ SatNow Tracker::compute(int db_index, orbit::UtcTime t, bool with_pass) const {
     // The clock set back (menu 5, TIME=): what was found from a later time may not be the next
     // pass any more.
     const bool went_back = t < c.pass_searched_at;
-    const bool stale = went_back || !c.pass || t > c.pass->los;
-    if (stale && (went_back || t >= c.pass_searched_until)) {
+    const bool past = !c.pass || t > c.pass->los;
+    if (went_back || (past && t >= c.pass_searched_until)) {
       orbit::PassOptions po;
       po.precision_s = 1.0;
       c.pass = orbit::next_pass(*c.sgp4, obs, t, kPassSearchDays, po);
