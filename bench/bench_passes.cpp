@@ -1,6 +1,7 @@
 // One day of passes for a whole catalogue from one station: the pass search against the naive
 // one-minute stepping. Run a Release build: bench_passes --benchmark_counters_tabular=true
 #include <benchmark/benchmark.h>
+#include "test_paths.h"  // TRAKBOX_SOURCE_DIR, ...
 
 #include <cmath>
 #include <fstream>

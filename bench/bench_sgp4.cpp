@@ -4,6 +4,7 @@
 // position/velocity/error arrays). scripts/bench_reference_sgp4.py runs the same workload through
 // python-sgp4 for a same-machine baseline.
 #include <benchmark/benchmark.h>
+#include "test_paths.h"  // TRAKBOX_SOURCE_DIR, ...
 
 #include <cmath>
 #include <cstdint>

@@ -5,6 +5,7 @@
 // always does the same thing (libFuzzer needs that to minimise and to replay a crash).
 #pragma once
 #include <unistd.h>
+#include "test_paths.h"  // TRAKBOX_SOURCE_DIR, ...
 
 #include <chrono>
 #include <cstddef>

@@ -3,6 +3,7 @@
 // links tb_store (and what it pulls in) and defines TRAKBOX_SOURCE_DIR (tests/CMakeLists.txt).
 #pragma once
 #include <filesystem>
+#include "test_paths.h"  // TRAKBOX_SOURCE_DIR, ...
 #include <fstream>
 #include <sstream>
 #include <string>

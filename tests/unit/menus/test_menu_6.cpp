@@ -1,6 +1,7 @@
 // Menu 6 through the whole simulated station: every transcript of the manual's section 6, then what
 // the screen does not show (model, rotator controller, simulated rotator and radio).
 #include <doctest/doctest.h>
+#include "test_paths.h"  // TRAKBOX_SOURCE_DIR, ...
 
 #include <cmath>
 

@@ -1,6 +1,7 @@
 // SGP4/SDP4 against Vallado's verification set (SGP4-VER.TLE, tcppver.out from Debian's
 // python3-sgp4), plus focused cases with values computed independently by python-sgp4.
 #include <doctest/doctest.h>
+#include "test_paths.h"  // TRAKBOX_SOURCE_DIR, ...
 
 #include <algorithm>
 #include <cmath>

@@ -3,6 +3,7 @@
 // test moves by hand, and a TLE directory holding the shipped elements as amateur.txt.
 #pragma once
 #include <doctest/doctest.h>
+#include "test_paths.h"  // TRAKBOX_SOURCE_DIR, ...
 #include <unistd.h>
 
 #include <boost/asio/io_context.hpp>

@@ -1,4 +1,5 @@
 #include <doctest/doctest.h>
+#include "test_paths.h"  // TRAKBOX_SOURCE_DIR, ...
 
 #include "store/database.h"
 #include "support/shipped_model.h"
