@@ -39,6 +39,21 @@ BENCHMARK(BM_Sgp4NearEarth);
 void BM_Sgp4DeepSpaceResonant(benchmark::State& state) { propagate_over_a_day(state, tb::testing::molniya_2018()); }
 BENCHMARK(BM_Sgp4DeepSpaceResonant);
 
+// A resonant (Molniya, half-day) set propagated over one day starting `age` days after its epoch:
+// SDP4 integrates the resonance from epoch, so without checkpoints the cost grows with the age.
+void BM_Sgp4ResonantAtAge(benchmark::State& state) {
+  const Sgp4 sat(tb::testing::molniya_2018());
+  const double start = 1440.0 * static_cast<double>(state.range(0));
+  double t = start;
+  for (auto _ : state) {
+    Propagation p = sat.propagate_minutes(t);
+    benchmark::DoNotOptimize(p);
+    t = t < start + 1439.0 ? t + 1.0 : start;
+  }
+  state.SetLabel("days after epoch: " + std::to_string(state.range(0)));
+}
+BENCHMARK(BM_Sgp4ResonantAtAge)->Arg(0)->Arg(7)->Arg(30)->Arg(365);
+
 std::vector<Sgp4> gpredict_catalogue() {
   std::ifstream in(TRAKBOX_GPREDICT_SATDATA, std::ios::binary);
   if (!in) throw std::runtime_error("cannot read " TRAKBOX_GPREDICT_SATDATA);

@@ -10,8 +10,10 @@
 #include "orbit/sgp4.h"
 
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <numbers>
+#include <vector>
 
 namespace tb::orbit {
 namespace {
@@ -57,6 +59,11 @@ constexpr double kEarthRotationRadPerMin = 4.37526908801129966e-3;  // rptim
 // Resonance integrator step (minutes) and its half-square (step^2 / 2).
 constexpr double kResonanceStep = 720.0;
 constexpr double kResonanceStepSquaredHalf = 259200.0;
+// Integrator checkpoints (DeepSpace::ahead/behind): one every 2 steps (1 day), over 366 days each
+// way (about 29 kB and 1,464 integrator steps per resonant set, once). At most one step is
+// integrated beyond a checkpoint inside that span; beyond it, the integration goes on from the last.
+constexpr std::size_t kCheckpointStride = 2;
+constexpr std::size_t kCheckpointSteps = 732;
 
 // Remainder of x / 2pi with the sign of x, as C's fmod, which the reference uses throughout.
 // fmod is exact, so it returns x itself when |x| < 2pi: skipping the call there changes nothing.
@@ -164,6 +171,16 @@ struct DeepSpace {
     double xndt = 0, xldot = 0, xnddt = 0;
   };
   Rates rates_at_epoch;  // the integrator's first evaluation, the same for every call
+  // The integrator's state after every kCheckpointStride steps ahead of epoch (ahead[j]: after
+  // (j + 1) * stride steps) and behind it, computed once with the model. A propagation starts from
+  // the last checkpoint the integration from epoch would pass and takes the same steps from there,
+  // so its result is bit-identical to integrating from epoch, at a cost that no longer grows with the
+  // age of the elements (within the checkpoints' span).
+  struct IntegratorState {
+    double xli = 0, xni = 0;
+    Rates r;
+  };
+  std::vector<IntegratorState> ahead, behind;
 };
 
 // Lunar-solar terms common to the secular and periodic deep-space effects, at epoch.
@@ -517,8 +534,46 @@ DeepSpace::Rates resonance_rates(const DeepSpace& ds, double xli, double xni, do
   return r;
 }
 
+// The integrator's state after n steps of delt from epoch (n = 0, 1, 2, ...; atime = n * delt).
+void resonance_step(const DeepSpace& ds, double& xli, double& xni, double& atime, DeepSpace::Rates& r,
+                    double delt, double argpo, double argpdot) {
+  xli = xli + r.xldot * delt + r.xndt * kResonanceStepSquaredHalf;
+  xni = xni + r.xndt * delt + r.xnddt * kResonanceStepSquaredHalf;
+  atime = atime + delt;
+  r = resonance_rates(ds, xli, xni, atime, argpo, argpdot);
+}
+
+// The checkpoints (DeepSpace::ahead/behind) for t, computed once per model.
+void build_checkpoints(DeepSpace& ds, double no, double argpo, double argpdot) {
+  for (const double delt : {kResonanceStep, -kResonanceStep}) {
+    auto& out = delt > 0.0 ? ds.ahead : ds.behind;
+    out.reserve(kCheckpointSteps / kCheckpointStride);
+    double atime = 0.0, xni = no, xli = ds.xlamo;
+    DeepSpace::Rates r = ds.rates_at_epoch;
+    for (std::size_t n = 1; n <= kCheckpointSteps; ++n) {
+      resonance_step(ds, xli, xni, atime, r, delt, argpo, argpdot);
+      if (n % kCheckpointStride == 0) out.push_back({xli, xni, r});
+    }
+  }
+}
+
+// How many steps the integration from epoch towards t takes from a checkpoint: the largest
+// multiple of the stride, within the checkpoints, such that the loop's condition
+// |t - atime| >= step still held one step before it (so the loop from epoch passes it). 0: none.
+std::size_t checkpoint_steps(const DeepSpace& ds, double t, double delt) {
+  const double whole = std::floor(std::fabs(t) / kResonanceStep);
+  if (!(whole >= static_cast<double>(kCheckpointStride))) return 0;  // also NaN
+  const auto& cps = delt > 0.0 ? ds.ahead : ds.behind;
+  std::size_t j = whole >= static_cast<double>(cps.size() * kCheckpointStride)
+                      ? cps.size()
+                      : static_cast<std::size_t>(whole) / kCheckpointStride;
+  while (j > 0 && !(std::fabs(t - static_cast<double>(j * kCheckpointStride - 1) * delt) >= kResonanceStep)) --j;
+  return j * kCheckpointStride;
+}
+
 // Secular lunar-solar drift plus, for resonant orbits, the numerically integrated mean longitude
-// and mean motion. The integrator always starts at epoch and steps 720 minutes towards t.
+// and mean motion. The integrator steps 720 minutes from epoch towards t (from the last checkpoint
+// on that way).
 void deep_space_drift(const DeepSpace& ds, double no, double argpo, double argpdot, double t,
                       MeanElements& m) {
   m.em = m.em + ds.dedt * t;
@@ -534,12 +589,14 @@ void deep_space_drift(const DeepSpace& ds, double no, double argpo, double argpd
   double xli = ds.xlamo;
   DeepSpace::Rates r = ds.rates_at_epoch;
   const double delt = t > 0.0 ? kResonanceStep : -kResonanceStep;
-  while (std::fabs(t - atime) >= kResonanceStep) {
-    xli = xli + r.xldot * delt + r.xndt * kResonanceStepSquaredHalf;
-    xni = xni + r.xndt * delt + r.xnddt * kResonanceStepSquaredHalf;
-    atime = atime + delt;
-    r = resonance_rates(ds, xli, xni, atime, argpo, argpdot);
+  if (const std::size_t steps = checkpoint_steps(ds, t, delt)) {
+    const DeepSpace::IntegratorState& c = (t > 0.0 ? ds.ahead : ds.behind)[steps / kCheckpointStride - 1];
+    xli = c.xli;
+    xni = c.xni;
+    r = c.r;
+    atime = static_cast<double>(steps) * delt;  // exact: what `steps` additions of delt give
   }
+  while (std::fabs(t - atime) >= kResonanceStep) resonance_step(ds, xli, xni, atime, r, delt, argpo, argpdot);
   const double ft = t - atime;
 
   const double nm = xni + r.xndt * ft + r.xnddt * ft * ft * 0.5;
@@ -754,8 +811,10 @@ void Sgp4::Model::initialise(double epoch, double no_kozai) {
     // (The periodics are zero at epoch, so the elements need no correction here.)
     const DeepSpaceInputs in{ecco, eccsq, inclo, argpo, mo, nodeo, no_unkozai, mdot, nodedot, xpidot};
     deep_space_secular(in, common, ds);
-    if (ds.resonance != Resonance::none)
+    if (ds.resonance != Resonance::none) {
       ds.rates_at_epoch = resonance_rates(ds, ds.xlamo, no_unkozai, 0.0, argpo, argpdot);
+      build_checkpoints(ds, no_unkozai, argpo, argpdot);
+    }
   }
 
   if (!simplified_drag) {
