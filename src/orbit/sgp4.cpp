@@ -1036,6 +1036,16 @@ double Sgp4::semi_major_axis_er() const {
   return model_ ? model_->a : std::numeric_limits<double>::quiet_NaN();
 }
 
+std::optional<NearEarthTerms> Sgp4::near_earth_terms() const {
+  if (deep_space_ || init_error_ != Sgp4Error::none) return std::nullopt;
+  const Model& m = *model_;
+  return NearEarthTerms{m.ecco,   m.inclo,  m.nodeo,  m.argpo,  m.mo,     m.no_unkozai, m.bstar,  m.sinio,
+                        m.cosio,  m.ao,     m.mdot,   m.argpdot, m.nodedot, m.cc1,      m.cc4,    m.cc5,
+                        m.d2,     m.d3,     m.d4,     m.delmo,  m.eta,    m.omgcof,     m.sinmao, m.t2cof,
+                        m.t3cof,  m.t4cof,  m.t5cof,  m.xmcof,  m.nodecf, m.aycof,      m.xlcof,  m.con41,
+                        m.x1mth2, m.x7thm1, m.simplified_drag};
+}
+
 double Sgp4::period_minutes() const { return kTwoPi / mean_motion_rad_per_min(); }
 
 double Sgp4::perigee_km() const {

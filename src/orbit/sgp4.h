@@ -4,6 +4,7 @@
 #pragma once
 #include <array>
 #include <memory>
+#include <optional>
 
 #include "orbit/elements.h"
 
@@ -33,6 +34,16 @@ struct Propagation {
   bool ok() const { return error == Sgp4Error::none; }
 };
 
+// The coefficients of a near-earth (SGP4, not SDP4) model that a propagation reads: what the
+// vectorised batch kernel (sgp4_batch.h) takes. Names as in Vallado's satrec.
+struct NearEarthTerms {
+  double ecco, inclo, nodeo, argpo, mo, no_unkozai, bstar, sinio, cosio, ao;
+  double mdot, argpdot, nodedot;
+  double cc1, cc4, cc5, d2, d3, d4, delmo, eta, omgcof, sinmao, t2cof, t3cof, t4cof, t5cof, xmcof, nodecf;
+  double aycof, xlcof, con41, x1mth2, x7thm1;
+  bool simplified_drag;
+};
+
 class Sgp4 {
  public:
   explicit Sgp4(const Elements& elements);
@@ -47,6 +58,9 @@ class Sgp4 {
   // tsince in minutes from epoch. Thread-safe: const, no hidden cache.
   Propagation propagate_minutes(double tsince) const;
   Propagation propagate(UtcTime t) const { return propagate_minutes(minutes_between(epoch_, t)); }
+
+  // The near-earth coefficients; nullopt for a deep-space set or one that failed to initialise.
+  std::optional<NearEarthTerms> near_earth_terms() const;
 
   // Un-Kozai'd mean motion (rad/min) and semi-major axis (earth radii) from initialisation.
   double mean_motion_rad_per_min() const;

@@ -1,0 +1,314 @@
+#include "orbit/sgp4_batch.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string_view>
+
+namespace tb::orbit {
+namespace {
+
+// The constants of sgp4.cpp (WGS-72, improved mode), repeated bit for bit where the kernel needs
+// them: 60 / sqrt(R^3 / mu) and the velocity unit.
+constexpr double kXke = 0x1.309b5d0b2444cp-4;
+constexpr double kEarthRadiusKm = 6378.135;
+constexpr double kJ2 = 0.001082616;
+constexpr double kKmPerSecPerErPerMin = kEarthRadiusKm * kXke / 60.0;
+constexpr double kTwoPi = 6.28318530717958647693;
+
+// 2/pi and pi/2 in two parts (fdlibm's pio2_1, pio2_1t: the first has 33 bits, so n * it is exact
+// for |n| < 2^20, i.e. |x| < 1.6e6 rad), and 2pi the same way.
+constexpr double kTwoOverPi = 6.36619772367581382433e-01;
+constexpr double kPio2Hi = 1.57079632673412561417e+00;
+constexpr double kPio2Lo = 6.07710050650619224932e-11;
+constexpr double kTwoPiHi = 2.0 * kPio2Hi * 2.0;
+constexpr double kTwoPiLo = 2.0 * kPio2Lo * 2.0;
+constexpr double kRoundMagic = 0x1.8p52;  // (x + magic) - magic rounds to an integer, |x| < 2^51
+
+struct SinCos {
+  double s, c;
+};
+
+// sin and cos without a branch or a library call, so that a loop over lanes vectorises: Cody-Waite
+// reduction to [-pi/4, pi/4] and fdlibm's kernel polynomials (error below 1 ulp there), then the
+// quadrant by selects.
+[[gnu::always_inline]] inline SinCos sin_cos(double x) {
+  const double n = (x * kTwoOverPi + kRoundMagic) - kRoundMagic;
+  const double r = (x - n * kPio2Hi) - n * kPio2Lo;
+  const double z = r * r;
+  const double s = r + r * z *
+                           (-1.66666666666666324348e-01 +
+                            z * (8.33333333332248946124e-03 +
+                                 z * (-1.98412698298579493134e-04 +
+                                      z * (2.75573137070700676789e-06 +
+                                           z * (-2.50507602534068634195e-08 + z * 1.58969099521155010221e-10)))));
+  const double c = 1.0 - 0.5 * z +
+                   z * z *
+                       (4.16666666666666019037e-02 +
+                        z * (-1.38888888888741095749e-03 +
+                             z * (2.48015872894767294178e-05 +
+                                  z * (-2.75573143513906633035e-07 +
+                                       z * (2.08757232129817482790e-09 + z * -1.13596475577881948265e-11)))));
+  const double q = n - 4.0 * std::floor(n * 0.25);  // quadrant 0..3
+  const bool odd = q == 1.0 || q == 3.0;
+  const double sin_abs = odd ? c : s;
+  const double cos_abs = odd ? s : c;
+  return {q >= 2.0 ? -sin_abs : sin_abs, (q == 1.0 || q == 2.0) ? -cos_abs : cos_abs};
+}
+
+// fmod(x, 2pi) where |x| >= 2pi, x itself below (as sgp4.cpp's wrap_two_pi), without a call.
+[[gnu::always_inline]] inline double wrap_two_pi(double x) {
+  const double t = x * (1.0 / kTwoPi);
+  const double k = t >= 0.0 ? std::floor(t) : -std::floor(-t);
+  const double r = (x - k * kTwoPiHi) - k * kTwoPiLo;
+  return std::fabs(x) < kTwoPi ? x : r;
+}
+
+// sin and cos of (a + d) from those of a; for |d| < 2e-3 the short series sgp4.cpp uses, so that the
+// two agree to rounding where most of the propagator's corrections are.
+[[gnu::always_inline]] inline SinCos add_angle(SinCos a, double d) {
+  const SinCos e = sin_cos(d);
+  const double d2 = d * d;
+  const bool small = std::fabs(d) < 2e-3;
+  const double sd = small ? d * (1.0 - d2 / 6.0 * (1.0 - d2 / 20.0)) : e.s;
+  const double cd = small ? 1.0 - d2 / 2.0 * (1.0 - d2 / 12.0) : e.c;
+  return {a.s * cd + a.c * sd, a.c * cd - a.s * sd};
+}
+
+constexpr std::size_t kBlock = 64;
+
+// One block of at most kBlock times. Stages are separate loops over the lanes so that each is a
+// simple loop the compiler vectorises; Kepler's iteration sweeps the block until all have converged.
+template <bool kDrag>
+[[gnu::always_inline]] inline void near_earth_block(const NearEarthTerms& k, const double* tsince, std::size_t n,
+                                                    Propagation* out) {
+  double am[kBlock], nm[kBlock], axnl[kBlock], aynl[kBlock], u[kBlock], nodep[kBlock];
+  double err[kBlock];  // Sgp4Error as a double: lanes of one width vectorise
+
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = tsince[i];
+    const double xmdf = k.mo + k.mdot * t;
+    const double argpdf = k.argpo + k.argpdot * t;
+    const double nodedf = k.nodeo + k.nodedot * t;
+    const double t2 = t * t;
+    double argpm = argpdf;
+    double mm = xmdf;
+    const double nodem0 = nodedf + k.nodecf * t2;
+    double tempa = 1.0 - k.cc1 * t;
+    double tempe = k.bstar * k.cc4 * t;
+    double templ = k.t2cof * t2;
+    if constexpr (kDrag) {  // !simplified_drag
+      const double delomg = k.omgcof * t;
+      const SinCos xm = sin_cos(xmdf);
+      const double delmtemp = 1.0 + k.eta * xm.c;
+      const double delm = k.xmcof * (delmtemp * delmtemp * delmtemp - k.delmo);
+      const double temp = delomg + delm;
+      mm = xmdf + temp;
+      argpm = argpdf - temp;
+      const double t3 = t2 * t;
+      const double t4 = t3 * t;
+      tempa = tempa - k.d2 * t2 - k.d3 * t3 - k.d4 * t4;
+      tempe = tempe + k.bstar * k.cc5 * (add_angle(xm, temp).s - k.sinmao);
+      templ = templ + k.t3cof * t3 + t4 * (k.t4cof + t * k.t5cof);
+    }
+    const double a = k.ao * tempa * tempa;
+    const double nmv = kXke / (a * std::sqrt(a));
+    double em = k.ecco - tempe;
+    err[i] = (em >= 1.0 || em < -0.001) ? static_cast<double>(Sgp4Error::mean_eccentricity) : 0.0;
+    em = em < 1.0e-6 ? 1.0e-6 : em;
+    mm = mm + k.no_unkozai * templ;
+    double xlm = mm + argpm + nodem0;
+    const double nodem = wrap_two_pi(nodem0);
+    argpm = wrap_two_pi(argpm);
+    xlm = wrap_two_pi(xlm);
+    mm = wrap_two_pi(xlm - argpm - nodem);
+
+    const SinCos argp = sin_cos(argpm);
+    const double ax = em * argp.c;
+    const double temp = 1.0 / (a * (1.0 - em * em));
+    const double ay = em * argp.s + temp * k.aycof;
+    const double xl = mm + argpm + nodem + temp * k.xlcof * ax;
+    am[i] = a;
+    nm[i] = nmv;
+    axnl[i] = ax;
+    aynl[i] = ay;
+    u[i] = wrap_two_pi(xl - nodem);
+    nodep[i] = nodem;
+  }
+
+  // Kepler's equation, Newton steps limited to 0.95 rad; as in sgp4.cpp, the sine and cosine kept are
+  // those of the last iterate evaluated.
+  double eo1[kBlock], es[kBlock], ec[kBlock];
+  double done[kBlock];  // 1: converged
+  for (std::size_t i = 0; i < n; ++i) {
+    const SinCos e = sin_cos(u[i]);
+    eo1[i] = u[i];
+    es[i] = e.s;
+    ec[i] = e.c;
+    done[i] = 0.0;
+  }
+  for (int iteration = 1; iteration <= 10; ++iteration) {
+    for (std::size_t i = 0; i < n; ++i) {
+      double tem5 = 1.0 - ec[i] * axnl[i] - es[i] * aynl[i];
+      tem5 = (u[i] - aynl[i] * ec[i] + axnl[i] * es[i] - eo1[i]) / tem5;
+      tem5 = std::fabs(tem5) >= 0.95 ? (tem5 > 0.0 ? 0.95 : -0.95) : tem5;
+      const bool was_done = done[i] != 0.0;
+      eo1[i] = was_done ? eo1[i] : eo1[i] + tem5;
+      const bool now_done = was_done || std::fabs(tem5) < 1.0e-12 || iteration == 10;
+      const SinCos next = add_angle({es[i], ec[i]}, tem5);
+      es[i] = now_done ? es[i] : next.s;
+      ec[i] = now_done ? ec[i] : next.c;
+      done[i] = now_done ? 1.0 : 0.0;
+    }
+    double open = 0.0;
+    for (std::size_t i = 0; i < n; ++i) open += 1.0 - done[i];
+    if (open == 0.0) break;
+  }
+
+  double rx[kBlock], ry[kBlock], rz[kBlock], vxo[kBlock], vyo[kBlock], vzo[kBlock];
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = am[i];
+    const double ax = axnl[i], ay = aynl[i];
+    const double ecose = ax * ec[i] + ay * es[i];
+    const double esine = ax * es[i] - ay * ec[i];
+    const double el2 = ax * ax + ay * ay;
+    const double pl = a * (1.0 - el2);
+    const double rl = a * (1.0 - ecose);
+    const double rdotl = std::sqrt(a) * esine / rl;
+    const double rvdotl = std::sqrt(pl) / rl;
+    const double betal = std::sqrt(1.0 - el2);
+    double temp = esine / (1.0 + betal);
+    const double sinu = a / rl * (es[i] - ay - ax * temp);
+    const double cosu = a / rl * (ec[i] - ax + ay * temp);
+    const double sin2u = (cosu + cosu) * sinu;
+    const double cos2u = 1.0 - 2.0 * sinu * sinu;
+    temp = 1.0 / pl;
+    const double temp1 = 0.5 * kJ2 * temp;
+    const double temp2 = temp1 * temp;
+    const double mrt = rl * (1.0 - 1.5 * temp2 * betal * k.con41) + 0.5 * temp1 * k.x1mth2 * cos2u;
+    const double xnode = nodep[i] + 1.5 * temp2 * k.cosio * sin2u;
+    const double mvt = rdotl - nm[i] * temp1 * k.x1mth2 * sin2u / kXke;
+    const double rvdot = rvdotl + nm[i] * temp1 * (k.x1mth2 * cos2u + 1.5 * k.con41) / kXke;
+    const double unit = 1.0 / std::sqrt(sinu * sinu + cosu * cosu);
+    const SinCos s = add_angle({sinu * unit, cosu * unit}, -0.25 * temp2 * k.x7thm1 * sin2u);
+    const SinCos node = sin_cos(xnode);
+    const SinCos inc = add_angle({k.sinio, k.cosio}, 1.5 * temp2 * k.cosio * k.sinio * cos2u);
+    const double xmx = -node.s * inc.c;
+    const double xmy = node.c * inc.c;
+    const double ux = xmx * s.s + node.c * s.c;
+    const double uy = xmy * s.s + node.s * s.c;
+    const double uz = inc.s * s.s;
+    const double vx = xmx * s.c - node.c * s.s;
+    const double vy = xmy * s.c - node.s * s.s;
+    const double vz = inc.s * s.c;
+    double e = err[i];
+    e = e != 0.0 ? e : (pl < 0.0 ? static_cast<double>(Sgp4Error::semi_latus_rectum) : 0.0);
+    e = e != 0.0 ? e : (mrt < 1.0 ? static_cast<double>(Sgp4Error::decayed) : 0.0);
+    const bool ok = e == 0.0;
+    err[i] = e;
+    rx[i] = ok ? (mrt * ux) * kEarthRadiusKm : 0.0;
+    ry[i] = ok ? (mrt * uy) * kEarthRadiusKm : 0.0;
+    rz[i] = ok ? (mrt * uz) * kEarthRadiusKm : 0.0;
+    vxo[i] = ok ? (mvt * ux + rvdot * vx) * kKmPerSecPerErPerMin : 0.0;
+    vyo[i] = ok ? (mvt * uy + rvdot * vy) * kKmPerSecPerErPerMin : 0.0;
+    vzo[i] = ok ? (mvt * uz + rvdot * vz) * kKmPerSecPerErPerMin : 0.0;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    Propagation& o = out[i];
+    o.error = static_cast<Sgp4Error>(static_cast<int>(err[i]));
+    o.state.r_km = {rx[i], ry[i], rz[i]};
+    o.state.v_km_s = {vxo[i], vyo[i], vzo[i]};
+  }
+}
+
+[[gnu::always_inline]] inline void near_earth_blocks(const NearEarthTerms& k, const double* t, std::size_t n,
+                                                     Propagation* out) {
+  for (std::size_t b = 0; b < n; b += kBlock) {
+    if (k.simplified_drag)
+      near_earth_block<false>(k, t + b, std::min(kBlock, n - b), out + b);
+    else
+      near_earth_block<true>(k, t + b, std::min(kBlock, n - b), out + b);
+  }
+}
+
+void near_earth_all(const NearEarthTerms& k, const double* t, std::size_t n, Propagation* out) {
+  near_earth_blocks(k, t, n, out);
+}
+
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define TB_BATCH_DISPATCH 1
+[[gnu::target("avx512f,avx512dq,avx512vl")]] void near_earth_avx512(const NearEarthTerms& k, const double* t,
+                                                                     std::size_t n, Propagation* out) {
+  near_earth_blocks(k, t, n, out);
+}
+[[gnu::target("avx2,fma")]] void near_earth_avx2(const NearEarthTerms& k, const double* t, std::size_t n,
+                                                 Propagation* out) {
+  near_earth_blocks(k, t, n, out);
+}
+#endif
+
+using Kernel = void (*)(const NearEarthTerms&, const double*, std::size_t, Propagation*);
+
+struct Chosen {
+  Kernel kernel;
+  const char* isa;
+};
+
+std::vector<Chosen> available() {
+  std::vector<Chosen> out;
+#ifdef TB_BATCH_DISPATCH
+  __builtin_cpu_init();
+  if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512vl"))
+    out.push_back({near_earth_avx512, "avx512f"});
+  if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) out.push_back({near_earth_avx2, "avx2"});
+#endif
+  out.push_back({near_earth_all, "baseline"});
+  return out;
+}
+
+const Chosen& chosen() {
+  static const Chosen c = available().front();
+  return c;
+}
+
+void run(Kernel kernel, const Sgp4& sat, std::span<const double> tsince, std::span<Propagation> out) {
+  if (const auto terms = sat.near_earth_terms()) {
+    kernel(*terms, tsince.data(), tsince.size(), out.data());
+    return;
+  }
+  for (std::size_t j = 0; j < tsince.size(); ++j) out[j] = sat.propagate_minutes(tsince[j]);
+}
+
+}  // namespace
+
+const char* batch_kernel_isa() { return chosen().isa; }
+
+std::vector<const char*> batch_kernels_available() {
+  std::vector<const char*> names;
+  for (const Chosen& c : available()) names.push_back(c.isa);
+  return names;
+}
+
+void propagate_batch(const Sgp4& sat, std::span<const double> tsince, std::span<Propagation> out) {
+  run(chosen().kernel, sat, tsince, out);
+}
+
+bool propagate_batch_with(const char* isa, const Sgp4& sat, std::span<const double> tsince,
+                          std::span<Propagation> out) {
+  for (const Chosen& c : available())
+    if (std::string_view(c.isa) == isa) {
+      run(c.kernel, sat, tsince, out);
+      return true;
+    }
+  return false;
+}
+
+void Sgp4Batch::propagate(std::span<const UtcTime> times, std::span<Propagation> out) const {
+  std::vector<double> tsince(times.size());
+  for (std::size_t s = 0; s < sets_.size(); ++s) {
+    const Sgp4& sat = sets_[s];
+    for (std::size_t j = 0; j < times.size(); ++j) tsince[j] = minutes_between(sat.epoch(), times[j]);
+    propagate_batch(sat, tsince, out.subspan(s * times.size(), times.size()));
+  }
+}
+
+}  // namespace tb::orbit
