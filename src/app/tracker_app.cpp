@@ -270,8 +270,11 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   const std::filesystem::path state_dir = o.value("state") ? std::filesystem::path(*o.value("state"))
                                                            : store::default_state_directory();
   std::error_code ec;
+  const bool state_dir_existed = std::filesystem::exists(state_dir, ec);
   std::filesystem::create_directories(state_dir, ec);
   if (ec) return usage_error("--state " + state_dir.string() + ": cannot create: " + ec.message());
+  if (!state_dir_existed)  // 0700: the state document holds the element downloads' credentials
+    std::filesystem::permissions(state_dir, std::filesystem::perms::owner_all, ec);
 
   auto log = std::make_shared<spdlog::logger>(
       "trakbox", std::make_shared<spdlog::sinks::basic_file_sink_mt>((state_dir / "trakbox.log").string()));
@@ -286,6 +289,10 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   store::Model model;
   bool ram_lost = false;
   std::string kept;
+  // A save killed midway leaves its temporary file; an older trakbox wrote the state readable by all.
+  for (const auto& stale : store::remove_stale_temporaries(state_dir))
+    log->info("removed {}, left by a save that did not finish", stale.string());
+  for (const auto& note : file.tighten_permissions()) log->warn("{}", note);
   const store::LoadOutcome loaded = file.load();
   satrak::Settings satrak_settings;
   nlohmann::json satrak_saved;
@@ -342,7 +349,7 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
     uo.image_dir = state_dir / "images";
     uo.version = kVersion;
     satrak_unit = std::make_unique<satrak::Unit>(app.io(), app.station(), app.model(), app.clock(), satrak_settings, uo,
-                                                 satrak::UnitHooks{[&app] { app.save(); }});
+                                                 satrak::UnitHooks{[&app] { return app.save(); }});
     satrak::ServerOptions so;
     so.address = o.value("satrak-bind").value_or("127.0.0.1");
     so.port = static_cast<unsigned short>(sat_port);

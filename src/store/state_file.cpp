@@ -9,6 +9,8 @@
 #include <fcntl.h>
 #include <fstream>
 #include <sstream>
+#include <csignal>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace tb::store {
@@ -77,6 +79,56 @@ bool write_all(int fd, std::string_view bytes) {
 
 }  // namespace
 
+bool write_file_atomically(const fs::path& target, std::string_view text, std::string& error, unsigned mode) {
+  const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+  const fs::path tmp = dir / ("." + target.filename().string() + kTempInfix + std::to_string(::getpid()));
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, static_cast<mode_t>(mode));
+  if (fd < 0) {
+    error = "cannot write " + tmp.string() + ": " + std::strerror(errno);
+    return false;
+  }
+  // The mode of open() is filtered by the umask; the file gets exactly `mode`.
+  const bool ok = ::fchmod(fd, static_cast<mode_t>(mode)) == 0 && write_all(fd, text) && ::fsync(fd) == 0;
+  const int saved_errno = errno;
+  ::close(fd);
+  if (!ok) {
+    ::unlink(tmp.c_str());
+    error = "cannot write " + tmp.string() + ": " + std::strerror(saved_errno);
+    return false;
+  }
+  if (::rename(tmp.c_str(), target.c_str()) != 0) {
+    error = "cannot replace " + target.string() + ": " + std::strerror(errno);
+    ::unlink(tmp.c_str());
+    return false;
+  }
+  const int dfd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (dfd >= 0) {
+    ::fsync(dfd);
+    ::close(dfd);
+  }
+  return true;
+}
+
+std::vector<fs::path> remove_stale_temporaries(const fs::path& dir) {
+  std::vector<fs::path> removed;
+  std::error_code ec;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    const auto at = name.rfind(kTempInfix);
+    if (name.empty() || name.front() != '.' || at == std::string::npos) continue;
+    const std::string pid_text = name.substr(at + std::string_view(kTempInfix).size());
+    char* end_ptr = nullptr;
+    const long pid = std::strtol(pid_text.c_str(), &end_ptr, 10);
+    if (pid_text.empty() || *end_ptr != '\0' || pid <= 0) continue;
+    // Another live process may be writing it; ours (this pid) cannot be: we have not saved yet.
+    const bool alive = pid != ::getpid() && (::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM);
+    if (alive) continue;
+    std::error_code rm;
+    if (fs::remove(it->path(), rm)) removed.push_back(it->path());
+  }
+  return removed;
+}
+
 StateFile::StateFile(fs::path directory) : dir_(std::move(directory)) {}
 
 LoadOutcome StateFile::load() const {
@@ -100,59 +152,62 @@ LoadOutcome StateFile::load() const {
     return out;
   };
 
+  // Every member is checked for its type before it is read: a document of the wrong shape (say
+  // {"format":{}}) is a corrupt file like any other, never an exception.
   nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
   if (doc.is_discarded() || !doc.is_object()) return corrupt(file.string() + ": not a JSON document");
-  if (doc.value("format", "") != "trakbox-state") return corrupt(file.string() + ": not a trakbox state file");
-  if (!doc.contains("data") || !doc.contains("checksum") || !doc["checksum"].is_string())
+  const auto format = doc.find("format");
+  if (format == doc.end() || !format->is_string() || *format != "trakbox-state")
+    return corrupt(file.string() + ": not a trakbox state file");
+  const auto checksum = doc.find("checksum");
+  const auto data = doc.find("data");
+  if (data == doc.end() || checksum == doc.end() || !checksum->is_string())
     return corrupt(file.string() + ": data or checksum missing");
-  const std::string expected = doc["checksum"].get<std::string>();
-  const std::string found = hex32(crc32(doc["data"].dump()));
+  if (!data->is_object()) return corrupt(file.string() + ": data is not an object");
+  const std::string expected = checksum->get<std::string>();
+  const std::string found = hex32(crc32(data->dump()));
   if (expected != found)
     return corrupt(file.string() + ": checksum " + found + " does not match the stored " + expected);
   out.kind = LoadOutcome::Kind::loaded;
-  out.data = std::move(doc["data"]);
+  out.data = std::move(*data);
   return out;
 }
 
 bool StateFile::save(const nlohmann::json& data, std::string& error) const {
   std::error_code ec;
-  fs::create_directories(dir_, ec);
-  if (ec) {
-    error = "cannot create state directory " + dir_.string() + ": " + ec.message();
-    return false;
+  if (!fs::exists(dir_, ec)) {
+    fs::create_directories(dir_, ec);
+    if (ec) {
+      error = "cannot create state directory " + dir_.string() + ": " + ec.message();
+      return false;
+    }
+    fs::permissions(dir_, fs::perms::owner_all, ec);  // 0700: it holds credentials
   }
   nlohmann::json doc;
   doc["format"] = "trakbox-state";
   doc["version"] = kVersion;
   doc["checksum"] = hex32(crc32(data.dump()));
   doc["data"] = data;
-  const std::string text = doc.dump(2) + "\n";
+  return write_file_atomically(path(), doc.dump(2) + "\n", error, 0600);
+}
 
-  const fs::path tmp = dir_ / (std::string(".") + kFileName + ".tmp-" + std::to_string(::getpid()));
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) {
-    error = "cannot write " + tmp.string() + ": " + std::strerror(errno);
-    return false;
-  }
-  const bool ok = write_all(fd, text) && ::fsync(fd) == 0;
-  const int saved_errno = errno;
-  ::close(fd);
-  if (!ok) {
-    ::unlink(tmp.c_str());
-    error = "cannot write " + tmp.string() + ": " + std::strerror(saved_errno);
-    return false;
-  }
-  if (::rename(tmp.c_str(), path().c_str()) != 0) {
-    error = "cannot replace " + path().string() + ": " + std::strerror(errno);
-    ::unlink(tmp.c_str());
-    return false;
-  }
-  const int dfd = ::open(dir_.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (dfd >= 0) {
-    ::fsync(dfd);
-    ::close(dfd);
-  }
-  return true;
+std::vector<std::string> StateFile::tighten_permissions() const {
+  std::vector<std::string> notes;
+  std::error_code ec;
+  const auto tighten = [&](const fs::path& p, fs::perms wanted) {
+    const fs::file_status st = fs::status(p, ec);
+    if (ec || !fs::exists(st)) return;
+    const fs::perms now = st.permissions() & fs::perms::all;
+    if ((now & ~wanted) == fs::perms::none) return;
+    fs::permissions(p, now & wanted, ec);
+    char buf[96];
+    std::snprintf(buf, sizeof buf, " was readable by others (mode %03o): now %03o",
+                  static_cast<unsigned>(now), static_cast<unsigned>(now & wanted));
+    notes.push_back(p.string() + buf + (ec ? " failed: " + ec.message() : std::string()));
+  };
+  tighten(dir_, fs::perms::owner_all);
+  tighten(path(), fs::perms::owner_read | fs::perms::owner_write);
+  return notes;
 }
 
 fs::path StateFile::keep_aside() const {

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -38,8 +39,13 @@ class StateFile {
   std::filesystem::path path() const { return dir_ / kFileName; }
 
   LoadOutcome load() const;
-  // Returns false with a one-line reason on failure (the old file is then untouched).
+  // Returns false with a one-line reason on failure (the old file is then untouched). The file is
+  // written mode 0600, and a directory this creates 0700: the document holds the credentials of
+  // the element downloads.
   bool save(const nlohmann::json& data, std::string& error) const;
+  // Takes group and other permissions off an existing state directory and document (written by an
+  // older trakbox or by hand); one line for the log for each change made.
+  std::vector<std::string> tighten_permissions() const;
   // Moves the current file aside as NAME.corrupt-TIMESTAMP (never overwriting anything) and returns
   // the new path; empty when there was nothing to move. For a file that passed its checksum but
   // whose content the program refused.
@@ -48,6 +54,16 @@ class StateFile {
  private:
   std::filesystem::path dir_;
 };
+
+// Writes `text` to `target` so that a crash at any point leaves the old file or the new one, never a
+// mix: a temporary file .NAME.tmp-PID beside it, written and flushed, renamed over the target, then
+// the directory flushed. The file gets exactly `mode`. False with a one-line reason on failure.
+bool write_file_atomically(const std::filesystem::path& target, std::string_view text, std::string& error,
+                           unsigned mode = 0600);
+inline constexpr const char* kTempInfix = ".tmp-";
+// Removes the temporary files write_file_atomically leaves when the process is killed mid-save
+// (.NAME.tmp-PID whose process is gone) from `dir`; returns what it removed.
+std::vector<std::filesystem::path> remove_stale_temporaries(const std::filesystem::path& dir);
 
 // Moves `file` aside as FILE.corrupt-YYYYMMDDTHHMMSSZ[-N]; never overwrites anything.
 std::filesystem::path keep_aside(const std::filesystem::path& file);
