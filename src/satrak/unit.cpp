@@ -162,29 +162,6 @@ std::optional<std::pair<std::int64_t, std::uintmax_t>> stat_file(const fs::path&
   return std::make_pair(us, static_cast<std::uintmax_t>(st.st_size));
 }
 
-bool write_atomically(const fs::path& target, std::string_view text, std::string& error) {
-  const fs::path tmp = target.parent_path() / ("." + target.filename().string() + ".tmp-" + std::to_string(::getpid()));
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out.write(text.data(), static_cast<std::streamsize>(text.size()));
-    out.flush();
-    if (!out) {
-      error = "cannot write " + tmp.string();
-      std::error_code ec;
-      fs::remove(tmp, ec);
-      return false;
-    }
-  }
-  std::error_code ec;
-  fs::rename(tmp, target, ec);
-  if (ec) {
-    error = "cannot replace " + target.string() + ": " + ec.message();
-    fs::remove(tmp, ec);
-    return false;
-  }
-  return true;
-}
-
 std::string percent_encode(std::string_view s) {
   static constexpr char kHex[] = "0123456789ABCDEF";
   std::string out;
@@ -295,7 +272,11 @@ void Unit::stop() {
 }
 
 void Unit::changed() {
-  if (hooks_.save) hooks_.save();
+  if (!hooks_.save) return;
+  if (auto err = hooks_.save()) {
+    save_failed_ = true;
+    spdlog::error("satrak: the change is in memory but not on disk: {}", *err);
+  }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -369,7 +350,11 @@ std::string Unit::dispatch(const Command& c) {
   for (const Entry& e : kTable) {
     if (c.word != e.word) continue;
     if ((c.kind == Kind::query && !e.query) || (c.kind == Kind::request && !e.request)) break;
-    return (this->*e.fn)(c);
+    save_failed_ = false;
+    Reply reply = (this->*e.fn)(c);
+    // A setting that could not be stored is not acknowledged: it holds until the next start only.
+    if (save_failed_ && reply == reply_ok(c.head())) return reply_error(c.head(), Error::internal);
+    return reply;
   }
   return reply_error(c.head(), Error::unknown_command);
 }
@@ -818,7 +803,7 @@ void Unit::on_download(TleSource src, std::uint64_t gen, DownloadResult r) {
   }
   const orbit::Elements found = *e;
   std::string err;
-  if (!write_atomically(opt_.tle_dir / file, r.body, err)) spdlog::warn("satrak: {}", err);
+  if (!store::write_file_atomically(opt_.tle_dir / file, r.body, err, 0644)) spdlog::warn("satrak: {}", err);
   const orbit::UtcTime now = clock_.now();
   tle_missing_ = sat_missing_ = download_failed_ = false;
   last_download_ok_ = now;

@@ -4,7 +4,7 @@
 //
 //   satrak::Unit unit(io, station, model, rtc, settings, {.tle_dir = state / "tle",
 //                                                         .image_dir = state / "images"},
-//                     {.save = [&] { app.save(); }});
+//                     {.save = [&] { return app.save(); }});
 //   unit.start();                                  // the periodic check on io's timer
 //   satrak::Server server(io, unit, {.port = 4001});
 //
@@ -54,7 +54,9 @@ struct UnitOptions {
 struct UnitHooks {
   // The Model or the Settings changed: persist them (the program saves the state document with
   // the Model and data["satrak"] = to_json(unit.settings())).
-  std::function<void()> save;
+  // Returns the reason when the state could not be written; the command is then answered
+  // `WORD,ERR,12` (internal) although the change holds in memory.
+  std::function<std::optional<std::string>()> save;
 };
 
 // ERRSTATUS? X1..X12.
@@ -191,6 +193,7 @@ class Unit {
   Settings s_;
   UnitOptions opt_;
   UnitHooks hooks_;
+  bool save_failed_ = false;  // the command being handled could not store its change
   boost::asio::steady_timer timer_;
   bool running_ = false;
 

@@ -94,7 +94,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   o.retry_after = std::chrono::seconds(60);
   o.download_timeout = std::chrono::milliseconds(100);
   int saves = 0;
-  satrak::Unit unit(io, *st.station, st.model, st.clock, {}, o, satrak::UnitHooks{[&saves] { ++saves; }});
+  satrak::Unit unit(io, *st.station, st.model, st.clock, {}, o, satrak::UnitHooks{[&saves]() -> std::optional<std::string> {
+    ++saves;
+    return std::nullopt;
+  }});
 
   auto tick = [&](std::chrono::milliseconds dt) {
     st.step(dt);

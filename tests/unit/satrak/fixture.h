@@ -125,7 +125,10 @@ struct Acu {
     o.file_check = std::chrono::seconds(1);
     o.retry_after = std::chrono::seconds(60);
     o.download_timeout = std::chrono::milliseconds(5000);
-    unit = std::make_unique<satrak::Unit>(io, *loop, model, clock, std::move(settings), o, satrak::UnitHooks{[this] { ++saves; }});
+    unit = std::make_unique<satrak::Unit>(io, *loop, model, clock, std::move(settings), o, satrak::UnitHooks{[this]() -> std::optional<std::string> {
+      ++saves;
+      return save_error;
+    }});
   }
 
   std::string cmd(std::string_view payload) { return unit->handle(payload); }
@@ -163,6 +166,7 @@ struct Acu {
   boost::asio::io_context io;
   std::unique_ptr<satrak::Unit> unit;
   int saves = 0;
+  std::optional<std::string> save_error;  // what the next saves report (nullopt: they succeed)
 };
 
 }  // namespace satrak_test
