@@ -1,4 +1,5 @@
 #include "satrak/server.h"
+#include "satrak/redact.h"
 
 #include <array>
 #include <boost/asio/ip/tcp.hpp>
@@ -83,10 +84,10 @@ class Session : public std::enable_shared_from_this<Session> {
       ++state->stats.frames;
       std::string reply = state->unit.handle(d);
       if (spdlog::should_log(spdlog::level::debug)) {  // --log-level debug: what a client asked, what it got
-        std::string asked = d.payload.substr(0, 200);
+        std::string asked = redact_payload(d.payload.substr(0, 200));
         for (char& c : asked)
           if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F) c = ' ';
-        spdlog::debug("satrak: client {}: '{}' -> '{}'", peer_, asked, reply);
+        spdlog::debug("satrak: client {}: '{}' -> '{}'", peer_, asked, redact_payload(reply));
       }
       queue(encode(reply));
       if (closed_) return;

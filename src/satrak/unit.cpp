@@ -13,6 +13,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "satrak/redact.h"
 #include "store/state_file.h"
 
 namespace tb::satrak {
@@ -210,7 +211,10 @@ double seconds_between(orbit::UtcTime a, orbit::UtcTime b) {
   return std::chrono::duration<double>(b - a).count();
 }
 
-constexpr const char* kMaskedPassword = "***";
+// What SATELLITE_FTP? answers for a stored password: never the password itself (the Satrak protocol has
+// no authentication: anyone who can reach the port would read it), and nothing with '*' or '$',
+// which end or start a frame. Written back, it keeps the stored password (docs/satrak.md).
+constexpr const char* kKeepPassword = "?";
 
 // Why a latitude/longitude field did not parse: a number out of range, or not a coordinate at all.
 Error coordinate_error(std::string_view s, std::string_view letters) {
@@ -760,7 +764,7 @@ void Unit::start_download() {
   const std::uint64_t gen = ++download_generation_;
   const TleSource src = s_.source;
   if (!downloader_) downloader_ = std::make_unique<Downloader>();
-  spdlog::info("satrak: downloading {}", r.url);
+  spdlog::info("satrak: downloading {}", redact_url(r.url));
   std::weak_ptr<int> alive = alive_;
   boost::asio::io_context& io = io_;
   downloader_->submit(std::move(r), [this, alive, &io, src, gen](DownloadResult res) {
@@ -1281,7 +1285,7 @@ Unit::Reply Unit::cmd_satellite_ftp(const Command& c) {
   if (c.kind == Kind::query) {
     if (!c.fields.empty()) return reply_error(c.head(), Error::parameter_count);
     return reply_values(c.head(), {field_text(s_.ftp.host), field_text(s_.ftp.user),
-                                   s_.ftp.password.empty() ? "" : kMaskedPassword, std::to_string(s_.ftp.port),
+                                   s_.ftp.password.empty() ? "" : kKeepPassword, std::to_string(s_.ftp.port),
                                    field_text(s_.ftp.file), field_text(s_.ftp.satellite), num_text(s_.ftp.period_days),
                                    std::to_string(static_cast<int>(s_.ftp.on_error))});
   }
@@ -1293,8 +1297,9 @@ Unit::Reply Unit::cmd_satellite_ftp(const Command& c) {
   f.host = c.fields[0];
   if (f.host.empty() || !valid_text_field(f.host, limits::kUrlMax) || f.host.find(' ') != std::string::npos)
     r.fail(Error::bad_value);
-  // "***" (as SATELLITE_FTP? shows it) or "?" keeps the stored password.
-  const bool keep_password = c.fields[2] == kMaskedPassword || c.fields[2] == "?";
+  // "?" (as SATELLITE_FTP? shows a stored password) keeps it, so a client that reads the settings and
+  // writes them back changes nothing; "***", what trakbox answered before, is read the same way.
+  const bool keep_password = c.fields[2] == kKeepPassword || c.fields[2] == "***";
   if (!valid_text_field(c.fields[1], limits::kNameMax) ||
       (!keep_password && !valid_text_field(c.fields[2], limits::kNameMax)))
     r.fail(Error::bad_value);

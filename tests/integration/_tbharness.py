@@ -7,6 +7,7 @@ import re
 import select
 import shutil
 import signal
+import socket
 import subprocess
 import tempfile
 import termios
@@ -491,3 +492,52 @@ def factory_state():
         return load_state(os.path.join(d, "trakbox-state.json"))
     finally:
         shutil.rmtree(d, ignore_errors=True)
+
+
+# ---------------------------------------------------------------------------------------------
+# A Satrak client of the tests' own (frames and checksums computed here, not by trakbox's code).
+
+def frame(payload):
+    """$PAYLOAD*HH CR LF, HH the XOR of the payload's bytes."""
+    x = 0
+    for b in payload.encode():
+        x ^= b
+    return ("$%s*%02X\r\n" % (payload, x)).encode()
+
+
+class Satrak:
+    """A minimal Satrak client: one request, one checked reply."""
+
+    def __init__(self, port, limit=15):
+        deadline = time.time() + limit
+        while True:
+            try:
+                self.s = socket.create_connection(("127.0.0.1", port), timeout=5)
+                break
+            except OSError:
+                if time.time() > deadline:
+                    raise Failure(f"no Satrak server on {port}")
+                time.sleep(0.1)
+        self.buf = b""
+
+    def ask(self, payload):
+        self.s.sendall(frame(payload))
+        while b"\r\n" not in self.buf:
+            chunk = self.s.recv(4096)
+            if not chunk:
+                raise Failure(f"connection closed after {payload!r}")
+            self.buf += chunk
+        line, self.buf = self.buf.split(b"\r\n", 1)
+        text = line.decode()
+        check(text.startswith("$") and text[-3] == "*", f"malformed reply {text!r}")
+        body = text[1:-3]
+        x = 0
+        for b in body.encode():
+            x ^= b
+        check("%02X" % x == text[-2:].upper(), f"bad checksum in {text!r}")
+        return body
+
+    def close(self):
+        self.s.close()
+
+

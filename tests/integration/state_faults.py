@@ -15,7 +15,6 @@ import json
 import os
 import random
 import shutil
-import socket
 import stat
 import subprocess
 import sys
@@ -24,7 +23,7 @@ import time
 import zlib
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, CLOCK, Failure, check, free_port, run_test  # noqa: E402
+from _tbharness import BIN, CLOCK, Satrak, check, frame, free_port, run_test  # noqa: E402
 
 LOST = "Data in RAM was lost !! Set default parameter !"
 
@@ -42,49 +41,6 @@ def run_once(state, keys=b""):
     p = subprocess.run([BIN, "--state", state, "--clock", CLOCK, "--satrak-port", "0"], input=keys,
                        capture_output=True, timeout=60)
     return p.returncode, p.stdout.decode("latin-1"), p.stderr.decode("latin-1")
-
-
-def frame(payload):
-    x = 0
-    for b in payload.encode():
-        x ^= b
-    return ("$%s*%02X\r\n" % (payload, x)).encode()
-
-
-class Satrak:
-    """A minimal Satrak client: one request, one checked reply."""
-
-    def __init__(self, port, limit=15):
-        deadline = time.time() + limit
-        while True:
-            try:
-                self.s = socket.create_connection(("127.0.0.1", port), timeout=5)
-                break
-            except OSError:
-                if time.time() > deadline:
-                    raise Failure(f"no Satrak server on {port}")
-                time.sleep(0.1)
-        self.buf = b""
-
-    def ask(self, payload):
-        self.s.sendall(frame(payload))
-        while b"\r\n" not in self.buf:
-            chunk = self.s.recv(4096)
-            if not chunk:
-                raise Failure(f"connection closed after {payload!r}")
-            self.buf += chunk
-        line, self.buf = self.buf.split(b"\r\n", 1)
-        text = line.decode()
-        check(text.startswith("$") and text[-3] == "*", f"malformed reply {text!r}")
-        body = text[1:-3]
-        x = 0
-        for b in body.encode():
-            x ^= b
-        check("%02X" % x == text[-2:].upper(), f"bad checksum in {text!r}")
-        return body
-
-    def close(self):
-        self.s.close()
 
 
 def start(state, port):
