@@ -35,6 +35,10 @@ Reply HostProtocol::handle(std::string_view line) {
   return {lines_then_prompt(r.lines), false};
 }
 
+std::string HostProtocol::refusal() const {
+  return "ERROR busy: every host-mode connection is taken and in use; try again later\r\n";
+}
+
 Reply HostProtocol::overlong() const {
   return {lines_then_prompt({"ERROR line too long: at most " + std::to_string(kMaxHostLine) + " characters"}), false};
 }

@@ -25,6 +25,7 @@ class HostProtocol final : public LineHandler {
   Reply handle(std::string_view line) override;
   Reply overlong() const override;
   std::string greeting() const override;
+  std::string refusal() const override;  // "ERROR busy: ..."
 
  private:
   struct Impl;

@@ -109,6 +109,8 @@ Reply LineProtocol::handle(std::string_view line) {
   return {format_reply(*req, req->name, false, Outcome::fail(Error::not_available)), false};
 }
 
+std::string LineProtocol::refusal() const { return rprt(Error::rejected) + "\n"; }
+
 Reply LineProtocol::overlong() const { return {rprt(Error::protocol) + "\n", false}; }
 
 std::optional<double> parse_double(std::string_view s) {

@@ -73,6 +73,8 @@ class LineHandler {
   virtual Reply overlong() const = 0;
   // Sent to each client as it connects (empty: nothing).
   virtual std::string greeting() const { return {}; }
+  // Sent to a client refused because every connection is taken and busy (empty: just closed).
+  virtual std::string refusal() const { return {}; }
 };
 
 // The Hamlib line protocols (rotctld, rigctld).
@@ -80,6 +82,7 @@ class LineProtocol : public LineHandler {
  public:
   // One line without its newline (a trailing '\r' is ignored).
   Reply handle(std::string_view line) override;
+  std::string refusal() const override;  // "RPRT -9": rejected
   // A line longer than kMaxLineLength (the server discards it up to its newline): RPRT -8.
   Reply overlong() const override;
 

@@ -10,6 +10,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include "util/keepalive.h"
+
 namespace tb::netctl {
 
 namespace asio = boost::asio;
@@ -41,6 +43,10 @@ class Session : public std::enable_shared_from_this<Session> {
  public:
   Session(tcp::socket socket, std::shared_ptr<LineServer::Core> core)
       : socket_(std::move(socket)), core_(std::move(core)), peer_(describe(socket_)) {}
+
+  // How long the client has sent nothing.
+  std::chrono::steady_clock::duration silent() const { return std::chrono::steady_clock::now() - last_heard_; }
+  const std::string& peer() const { return peer_; }
 
   void start() {
     spdlog::info("{}: client {} connected", core_->options.name, peer_);
@@ -80,6 +86,7 @@ class Session : public std::enable_shared_from_this<Session> {
       write();
       return;
     }
+    last_heard_ = std::chrono::steady_clock::now();
     feed(buf_.data(), n);
     if (closed_) return;
     if (closing_) {
@@ -176,6 +183,7 @@ class Session : public std::enable_shared_from_this<Session> {
   std::string peer_;
   std::array<char, 4096> buf_{};
   std::string line_;
+  std::chrono::steady_clock::time_point last_heard_ = std::chrono::steady_clock::now();
   bool discarding_ = false;
   bool after_cr_ = false;  // the last line ended with a CR (cr_ends_line)
   std::string out_;      // queued
@@ -225,6 +233,23 @@ void LineServer::close() {
   core_->sessions.clear();
 }
 
+namespace {
+
+// Every connection is taken: closes the one silent longest if it has been silent long enough.
+bool make_room(LineServer::Core& core) {
+  std::shared_ptr<Session> quietest;
+  for (auto& [p, w] : core.sessions)
+    if (auto s = w.lock(); s && (!quietest || s->silent() > quietest->silent())) quietest = std::move(s);
+  if (!quietest || quietest->silent() < core.options.evict_idle_after) return false;
+  const auto secs = std::chrono::duration_cast<std::chrono::seconds>(quietest->silent()).count();
+  spdlog::warn("{}: all {} connections taken; closing {}, silent for {} s, to serve a new client", core.options.name,
+               core.sessions.size(), quietest->peer(), secs);
+  quietest->close("silent longest while the server was full");
+  return true;
+}
+
+}  // namespace
+
 void LineServer::accept() {
   acceptor_.async_accept([this, core = core_](const error_code& ec, tcp::socket socket) {
     if (!core->open) return;
@@ -238,14 +263,16 @@ void LineServer::accept() {
       });
       return;
     }
-    if (core->sessions.size() >= core->options.max_clients) {
-      spdlog::warn("{}: {} clients already; connection from {} refused", core->options.name,
-                   core->sessions.size(), describe(socket));
+    if (core->sessions.size() >= core->options.max_clients && !make_room(*core)) {
+      spdlog::warn("{}: {} clients already, none silent for {} s; connection from {} refused", core->options.name,
+                   core->sessions.size(), core->options.evict_idle_after.count() / 1000.0, describe(socket));
       error_code ignored;
+      if (core->protocol) asio::write(socket, asio::buffer(core->protocol->refusal()), ignored);
       socket.close(ignored);
     } else {
       error_code ignored;
       socket.set_option(tcp::no_delay(true), ignored);
+      net::enable_keepalive(socket.native_handle());
       auto s = std::make_shared<Session>(std::move(socket), core);
       core->sessions.emplace(s.get(), s);
       s->start();

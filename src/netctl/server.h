@@ -10,8 +10,14 @@
 // stops reading, never sends a newline or floods is dealt with without stalling the loop:
 //  * a line longer than max_line is answered "RPRT -8" once and discarded up to its newline;
 //  * a client whose unsent replies exceed max_output (it sends but does not read) is disconnected;
-//  * at most max_clients connections; more are closed as soon as they are accepted.
+//  * at most max_clients connections. When a new client finds them all taken, the connection that
+//    has been silent longest makes room for it if it has been silent for evict_idle_after or more
+//    (idle holders and dead peers cannot lock the port; a client that polls, as Gpredict does, is
+//    never the longest silent); otherwise the newcomer gets the protocol's refusal
+//    (LineHandler::refusal(), e.g. "RPRT -9") and is closed. Every connection has TCP keepalive
+//    (60 s idle, then 3 probes 10 s apart), so a peer that vanished is found and closed.
 #pragma once
+#include <chrono>
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/asio/steady_timer.hpp>
@@ -33,6 +39,7 @@ struct ServerOptions {
   std::size_t max_line = kMaxLineLength;   // bytes a line may have, newline excluded
   std::size_t max_output = 64 * 1024;      // bytes of replies queued for one client
   std::size_t max_clients = 16;
+  std::chrono::milliseconds evict_idle_after{10000};  // see above
   std::string name = "netctl";             // for the log: "rotctld", "rigctld", "host"
   // A CR ends a line as well as a LF (a CR LF pair ends one line): terminal programs send CR.
   bool cr_ends_line = false;

@@ -1,5 +1,6 @@
 #include "satrak/server.h"
 #include "satrak/redact.h"
+#include "util/keepalive.h"
 
 #include <array>
 #include <boost/asio/ip/tcp.hpp>
@@ -40,6 +41,10 @@ class Session : public std::enable_shared_from_this<Session> {
     peer_ = ec ? std::string("?") : ep.address().to_string() + ":" + std::to_string(ep.port());
   }
 
+  // How long the client has sent nothing.
+  std::chrono::steady_clock::duration silent() const { return std::chrono::steady_clock::now() - last_heard_; }
+  const std::string& peer() const { return peer_; }
+
   void start() {
     spdlog::info("satrak: client {} connected", peer_);
     read();
@@ -77,6 +82,7 @@ class Session : public std::enable_shared_from_this<Session> {
       close();
       return;
     }
+    last_heard_ = std::chrono::steady_clock::now();
     events_.clear();
     decoder_.feed(std::string_view(buf_.data(), n), events_);
     for (const Decoded& d : events_) {
@@ -137,7 +143,22 @@ class Session : public std::enable_shared_from_this<Session> {
   bool writing_ = false;
   bool closed_ = false;
   std::string peer_;
+  std::chrono::steady_clock::time_point last_heard_ = std::chrono::steady_clock::now();
 };
+
+// Every connection is taken: closes the one silent longest if it has been silent long enough.
+bool make_room(Server::State& s) {
+  std::shared_ptr<Session> quietest;
+  for (const auto& session : s.sessions)
+    if (!quietest || session->silent() > quietest->silent()) quietest = session;
+  if (!quietest || quietest->silent() < s.opt.evict_idle_after) return false;
+  ++s.stats.evicted;
+  spdlog::warn("satrak: all {} connections taken; closing {}, silent for {} s, to serve a new client",
+               s.sessions.size(), quietest->peer(),
+               std::chrono::duration_cast<std::chrono::seconds>(quietest->silent()).count());
+  quietest->close();
+  return true;
+}
 
 void accept(const std::shared_ptr<Server::State>& state) {
   std::weak_ptr<Server::State> weak = state;
@@ -154,15 +175,18 @@ void accept(const std::shared_ptr<Server::State>& state) {
       });
       return;
     }
-    if (s->sessions.size() >= s->opt.max_clients) {
+    if (s->sessions.size() >= s->opt.max_clients && !make_room(*s)) {
       ++s->stats.refused;
-      spdlog::warn("satrak: more than {} clients: connection refused", s->opt.max_clients);
+      spdlog::warn("satrak: {} clients, none silent for {} s: connection refused", s->opt.max_clients,
+                   s->opt.evict_idle_after.count() / 1000.0);
       boost::system::error_code ignored;
+      asio::write(socket, asio::buffer(encode(reply_error("", Error::not_allowed))), ignored);  // $ERR,8*..
       socket.close(ignored);
     } else {
       ++s->stats.accepted;
       boost::system::error_code ignored;
       socket.set_option(tcp::no_delay(true), ignored);
+      net::enable_keepalive(socket.native_handle());
       if (s->opt.send_buffer > 0) socket.set_option(asio::socket_base::send_buffer_size(s->opt.send_buffer), ignored);
       auto session = std::make_shared<Session>(std::move(socket), weak, s->opt.max_line, s->opt.max_output);
       s->sessions.insert(session);

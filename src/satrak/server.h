@@ -9,7 +9,9 @@
 //   * each frame is answered in order, at once (Unit::handle);
 //   * replies wait in a per-client queue; a client that does not read them and lets the queue pass
 //     max_output bytes is disconnected;
-//   * a client that connects beyond max_clients is closed at once.
+//   * at most max_clients connections: when a new client finds them all taken, the one silent
+//     longest makes room if it has been silent for evict_idle_after or more; otherwise the newcomer
+//     gets an `ERR,8` frame and is closed. TCP keepalive closes connections whose peer vanished.
 #pragma once
 #include <boost/asio/io_context.hpp>
 #include <chrono>
@@ -25,6 +27,7 @@ struct ServerOptions {
   std::string address = "127.0.0.1";  // "0.0.0.0" or "::" to serve other hosts
   unsigned short port = 4001;         // 0: a free port (tests); see Server::port()
   std::size_t max_clients = 16;
+  std::chrono::milliseconds evict_idle_after{10000};
   std::size_t max_line = Decoder::kDefaultMaxLine;
   std::size_t max_output = 64 * 1024;  // bytes of replies queued for one client before it is dropped
   int send_buffer = 0;                 // SO_SNDBUF of client sockets; 0: the system's (tests set it small)
@@ -43,7 +46,8 @@ class Server {
   // Counters for logs and tests.
   struct Stats {
     std::size_t accepted = 0;
-    std::size_t refused = 0;       // beyond max_clients
+    std::size_t refused = 0;       // beyond max_clients, none silent long enough
+    std::size_t evicted = 0;       // closed, silent longest, to make room for a new client
     std::size_t dropped_slow = 0;  // output queue over max_output
     std::size_t frames = 0;        // lines answered
   };

@@ -380,6 +380,7 @@ TEST_CASE("server: connections beyond max_clients are closed; close() drops ever
   CHECK(b.ask("_") == "trakbox rotator (simulated)\n");
   RawClient c(rot.port());
   CHECK(c.closed_by_peer());
+  CHECK(c.received() == "RPRT -9\n");  // both others spoke within evict_idle_after: refused, and told so
   CHECK(a.ask("_") == "trakbox rotator (simulated)\n");
   lt.on_loop([&] {
     rot.close();
@@ -389,6 +390,35 @@ TEST_CASE("server: connections beyond max_clients are closed; close() drops ever
   CHECK(b.closed_by_peer());
   CHECK(lt.on_loop([&] { return rot.client_count(); }) == 0u);
   lt.stop();
+}
+
+TEST_CASE("server: when every connection is taken, the one silent longest makes room (issue 14, defect 2)") {
+  SimStation st;
+  boost::asio::io_context io;
+  netctl::ServerOptions opt = netctl::RotctldServer::named("rotctld");
+  opt.max_clients = 4;
+  opt.evict_idle_after = 0ms;  // any silence is long enough: the order of last traffic decides
+  netctl::RotctldServer rot(io, 0, *st.loop, opt);
+  LoopThread lt(io, st);
+  RawClient idle1(rot.port()), idle2(rot.port()), poller(rot.port()), first(rot.port());
+  REQUIRE(idle1.ok());
+  REQUIRE(idle2.ok());
+  REQUIRE(poller.ok());
+  REQUIRE(eventually(lt, [&] { return rot.client_count() == 4; }, 5s));
+  // idle1 and idle2 never send; the others (Gpredict's way) ask before each newcomer arrives.
+  std::vector<std::unique_ptr<RawClient>> newcomers;
+  for (int round = 0; round < 2; ++round) {
+    CHECK(first.ask("_") == "trakbox rotator (simulated)\n");
+    for (auto& n : newcomers) CHECK(n->ask("_") == "trakbox rotator (simulated)\n");
+    CHECK(poller.ask("p").find('\n') != std::string::npos);
+    newcomers.push_back(std::make_unique<RawClient>(rot.port()));
+    CHECK(newcomers.back()->ask("_") == "trakbox rotator (simulated)\n");
+    CHECK(rot.client_count() == 4);
+  }
+  // The two idle holders made room, oldest first; the poller kept its connection throughout.
+  CHECK(idle1.closed_by_peer());
+  CHECK(idle2.closed_by_peer());
+  CHECK(poller.ask("_") == "trakbox rotator (simulated)\n");
 }
 
 TEST_CASE("host server: the banner and prompt, menu 7's commands over TCP, CR / LF / CR LF lines, Q closes") {

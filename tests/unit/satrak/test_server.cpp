@@ -221,6 +221,8 @@ TEST_CASE("Server: clients beyond the limit are closed at once") {
   RawSocket a(live.port), b(live.port);
   REQUIRE(live.wait_for([&] { return live.server->clients() == 2; }, 5s));
   RawSocket c(live.port);
+  // Both others connected within evict_idle_after: refused with an ERR,8 frame, then closed.
+  CHECK(c.read_until("\n", 5s) == satrak::encode(satrak::reply_error("", satrak::Error::not_allowed)));
   CHECK_FALSE(c.read_for(2s).has_value());  // closed by the server
   a.send(satrak::encode("VERSION?"), 1s);
   CHECK(starts_with(a.read_until("\n", 5s), "$VERSION?,"));
@@ -230,6 +232,26 @@ TEST_CASE("Server: clients beyond the limit are closed at once") {
   RawSocket d(live.port);
   d.send(satrak::encode("VERSION?"), 1s);
   CHECK(starts_with(d.read_until("\n", 5s), "$VERSION?,"));
+}
+
+TEST_CASE("Server: when every connection is taken, the one silent longest makes room (issue 14, defect 2)") {
+  satrak::ServerOptions o;
+  o.max_clients = 3;
+  o.evict_idle_after = 0ms;  // any silence is long enough: the order of last traffic decides
+  Live live(kT0, o);
+  RawSocket idle(live.port), poller(live.port), other(live.port);
+  REQUIRE(live.wait_for([&] { return live.server->clients() == 3; }, 5s));
+  for (RawSocket* s : {&poller, &other}) {  // these two poll, as a monitor-and-control program does
+    s->send(satrak::encode("STATUS?"), 1s);
+    CHECK(starts_with(s->read_until("\n", 5s), "$STATUS?,"));
+  }
+  RawSocket newcomer(live.port);
+  newcomer.send(satrak::encode("VERSION?"), 1s);
+  CHECK(starts_with(newcomer.read_until("\n", 5s), "$VERSION?,"));
+  CHECK_FALSE(idle.read_for(2s).has_value());  // the silent one was closed
+  CHECK(live.on_loop([&] { return live.server->stats().evicted; }) == 1u);
+  poller.send(satrak::encode("TPOS?"), 1s);
+  CHECK(starts_with(poller.read_until("\n", 5s), "$TPOS?,"));
 }
 
 TEST_CASE("trakbox satrak HOST[:PORT] COMMAND...: the command-line client") {
