@@ -14,7 +14,7 @@ void menu_5_realtime_clock(term::Terminal& t, Services& s) {
     const auto now = s.clock.now();
     t.live({"Present Time:UTC " + format_date(now) + " " + format_time(now)});
     const int k = t.read_key(std::chrono::seconds(1));
-    if (k == term::kTimeout || k == '\n') continue;
+    if (k == term::kTimeout) continue;
     t.end_live();
     if (k == term::kEndOfInput) throw InputClosed{};
     if (k == 'y' || k == 'Y') {
@@ -25,7 +25,7 @@ void menu_5_realtime_clock(term::Terminal& t, Services& s) {
       return;
     }
     if (k == 'q' || k == 'Q') return;
-    if (k == '\r') break;
+    if (k == term::kEnter) break;
   }
   t.line("Set realtime Clock.");
   t.line("Present Time: UTC " + format_date(s.clock.now()) + " " + format_time(s.clock.now()));
@@ -47,7 +47,7 @@ void menu_5_realtime_clock(term::Terminal& t, Services& s) {
   for (;;) {
     const int k = t.read_key();
     if (k == term::kEndOfInput) throw InputClosed{};
-    if (k == '\r' || k == '\n') break;
+    if (k == term::kEnter) break;
   }
   s.clock.set(target);  // the moment Enter was pressed
   s.model.clock_offset = s.clock.offset();

@@ -4,6 +4,11 @@
 
 namespace tb::term {
 
+// The one rule for Enter, for every menu, prompt and upload: CR, LF and CR LF are the same key, which
+// read_key returns as kEnter ('\r'), so no menu ever sees '\n'. The LF of a CR LF pair is dropped
+// whenever it comes (a terminal sends either CR, LF or CR LF for Enter; never a CR for one key and a
+// lone LF for the next). And an Enter that follows a single-key answer (read_choice) is taken as
+// that answer's terminator, never as the next answer: "Y" and "Y<Enter>" answer the same.
 int Terminal::read_key(std::optional<Duration> timeout) {
   for (;;) {
     int k;
@@ -13,6 +18,16 @@ int Terminal::read_key(std::optional<Duration> timeout) {
     } else {
       k = next_key(timeout);
     }
+    if (k == kTimeout || k == kEndOfInput) return k;
+    const bool lf_of_crlf = k == '\n' && last_was_cr_;
+    last_was_cr_ = k == '\r';
+    if (lf_of_crlf) continue;
+    if (k == '\n') k = kEnter;
+    if (k == kEnter && enter_ends_choice_) {
+      enter_ends_choice_ = false;
+      continue;
+    }
+    enter_ends_choice_ = false;
     return k;
   }
 }
@@ -22,12 +37,7 @@ std::optional<std::string> Terminal::read_line(std::size_t max_length) {
   for (;;) {
     const int k = read_key();
     if (k == kEndOfInput) return std::nullopt;
-    if (k == '\r' || k == '\n') {
-      // A CRLF pair ends one line: swallow the LF that may follow a CR.
-      if (k == '\r') {
-        const int next = read_key(std::chrono::milliseconds(30));
-        if (next != '\n' && next != kTimeout && next != kEndOfInput) pending_.push_back(next);
-      }
+    if (k == kEnter) {
       if (echo_) write("\n");
       flush();
       return text;
@@ -55,8 +65,7 @@ std::optional<char> Terminal::read_choice(std::string_view accept, bool allow_en
   for (;;) {
     const int k = read_key();
     if (k == kEndOfInput) return std::nullopt;
-    if (k == '\n') continue;  // the tail of a CRLF from the previous answer
-    if (k == '\r') {
+    if (k == kEnter) {
       if (!allow_enter) continue;
       write("\n");
       flush();
@@ -68,13 +77,13 @@ std::optional<char> Terminal::read_choice(std::string_view accept, bool allow_en
     write(std::string_view(&c, 1));
     write("\n");
     flush();
+    enter_ends_choice_ = true;  // an Enter typed after the key ends this answer (see read_key)
     return c;
   }
 }
 
 bool Terminal::read_upload(const std::function<void(std::string_view line)>& on_line, std::size_t max_line) {
   std::string text;
-  bool last_cr = false;
   for (;;) {
     const int k = read_key();
     if (k == kEndOfInput) return false;
@@ -82,12 +91,7 @@ bool Terminal::read_upload(const std::function<void(std::string_view line)>& on_
       if (!text.empty()) on_line(text);
       return true;
     }
-    if (k == '\n' && last_cr) {
-      last_cr = false;
-      continue;
-    }
-    last_cr = (k == '\r');
-    if (k == '\r' || k == '\n') {
+    if (k == kEnter) {
       on_line(text);
       text.clear();
       continue;

@@ -73,6 +73,7 @@ class Terminal {
 
   // ---- input (each pumps the event loop while it waits) ----
   // One key; kTimeout after timeout (none: wait for ever), kEndOfInput when input has closed.
+  // Enter is always kEnter, whether the terminal sent CR, LF or CR LF (terminal.cpp).
   int read_key(std::optional<Duration> timeout = std::nullopt);
   // True when input has closed for good.
   virtual bool closed() const = 0;
@@ -100,8 +101,10 @@ class Terminal {
   virtual int next_key(std::optional<Duration> timeout) = 0;
 
  private:
-  std::vector<int> pending_;  // keys read ahead (the LF after a CR that was not one)
+  std::vector<int> pending_;  // keys read ahead
   bool echo_ = true;
+  bool last_was_cr_ = false;        // the LF of a CR LF pair is dropped
+  bool enter_ends_choice_ = false;  // the last key answered read_choice: an Enter now ends that answer
 };
 
 }  // namespace tb::term

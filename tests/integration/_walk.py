@@ -206,11 +206,9 @@ def walk_menu_3_2(ui, picks, names):
     ui.prompt(UPDATE)
     ui.send("2\r")
     ui.prompt(r"Are you sure \? \[Y/N\] \? ")
-    ui.send("Y")
+    ui.send("Y\r")  # the manual's "Y <ENTER>": the Enter ends the Y answer (issue 18)
     out = ui.prompt(r"Select :")
     must(out, r" 1\. AO-07\s+2\. AO-27", "3-2 lists the database without a mark")
-    ui.send("\r")  # the manual's "Y <ENTER>": the Enter only asks again
-    ui.prompt(r"Select :")
     for k, n in enumerate(picks, 1):
         ui.send(f"{n}\r")
         out = ui.prompt(r"Select :")
@@ -473,7 +471,7 @@ def walk_6_4(ui):
     answer(ui, r"Azimuth Parking value : 0\.0 ", "90\r", "6-4")
     answer(ui, r"Elevation Parking value : 0\.0 ", "45\r", "6-4")
     ui.prompt(r"Set Antenna rotation limit \? \[Y/N\] ")
-    ui.send("Y")
+    ui.send("Y\r")  # "Y <ENTER>": one answer; the next Enter keeps the minimum
     answer(ui, r"Azimuth minmum value : 0\.0 ", "\r", "6-4")
     answer(ui, r"Azimuth maximum value : 360\.0 ", "340\r", "6-4")
     answer(ui, r"Elevation minmum value : 0\.0 ", "\r", "6-4")
@@ -483,11 +481,11 @@ def walk_6_4(ui):
     # A whole that does not hold together is refused, nothing changed.
     ui.send("4\r")
     ui.prompt(r"Set Antenna Parking position \? \[Y/N\] ")
-    ui.send("Y")
+    ui.send("Y\r")
     answer(ui, r"Azimuth Parking value : 90\.0 ", "\r", "6-4")
     answer(ui, r"Elevation Parking value : 45\.0 ", "\r", "6-4")
     ui.prompt(r"Set Antenna rotation limit \? \[Y/N\] ")
-    ui.send("Y")
+    ui.send("Y\r")
     answer(ui, r"Azimuth minmum value : 0\.0 ", "\r", "6-4")
     answer(ui, r"Azimuth maximum value : 340\.0 ", "\r", "6-4")
     answer(ui, r"Elevation minmum value : 0\.0 ", "50\r", "6-4")
@@ -645,7 +643,7 @@ def set_clock(ui, when):
 def start_m(ui, mode_key, marker):
     ui.send("M\r")
     ui.prompt(r"Normal or Priority mode \? \[N/P\] \(Enter = [NP]\) ")
-    ui.send(mode_key)
+    ui.send(mode_key if mode_key == "\r" else mode_key + "\r")  # "N <ENTER>": one answer (issue 18)
     out = ui.prompt(r"Select :")
     must(out, r"\*\*\* LCD display satellite \*\*\*", "M asks for the LCD satellite")
     must(out, rf" 1\.{re.escape(marker)}ISS\s+2\. AO-27\s+3\. FO-29\s*$", f"the three, '{marker}' on the last chosen")

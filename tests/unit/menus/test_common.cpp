@@ -105,17 +105,30 @@ TEST_CASE("Sky plot and world map drawings") {
   CHECK(land < 72 * 18 / 2);
 }
 
-TEST_CASE("Key questions ignore a bare Enter; the Enter after a Y/N answer goes to the next prompt") {
-  // The manual's 6-4: "Set Antenna rotation limit ? [Y/N] Y Azimuth minmum value : 0.0 <ENTER>".
-  term::ScriptTerminal t("Y\r340\r");
-  CHECK(ask_yes_no(t, "Set Antenna rotation limit ? [Y/N] "));
-  CHECK(edit_text(t, "Azimuth minmum value", "0.0") == "0.0");
-  CHECK(edit_text(t, "Azimuth maximum value", "360.0") == "340");
-  // The manual's 3-3: "Are you sure ? [Y/N] ? Y <ENTER>" then "File format NASA/AMSAT (N/A) : N".
-  term::ScriptTerminal u("Y\rA");
-  CHECK(ask_yes_no(u, "Are you sure ? [Y/N] ? "));
-  CHECK(ask_key(u, "File format NASA/AMSAT (N/A) : ", "NA") == 'A');
-  CHECK(u.output() == "Are you sure ? [Y/N] ? Y\nFile format NASA/AMSAT (N/A) : A\n");
+TEST_CASE("Key questions ignore a bare Enter; an Enter after a Y/N answer ends that answer (issue 18)") {
+  // "Y" and "Y<Enter>" answer the same, with CR, LF or CR LF for Enter: the Enter that follows a
+  // single-key answer is never taken as the next answer.
+  for (const char* enter : {"\r", "\n", "\r\n"}) {
+    CAPTURE(enter);
+    const std::string e = enter;
+    term::ScriptTerminal t("Y" + e + e + "340" + e);  // Y<Enter>, <Enter> keeps the minimum
+    CHECK(ask_yes_no(t, "Set Antenna rotation limit ? [Y/N] "));
+    CHECK(edit_text(t, "Azimuth minmum value", "0.0") == "0.0");
+    CHECK(edit_text(t, "Azimuth maximum value", "360.0") == "340");
+    term::ScriptTerminal v("Y" + e + "10" + e + e);  // Y<Enter> 10<Enter>: the first value is 10
+    CHECK(ask_yes_no(v, "Set Antenna rotation limit ? [Y/N] "));
+    CHECK(edit_text(v, "Azimuth minmum value", "0.0") == "10");
+    CHECK(edit_text(v, "Azimuth maximum value", "360.0") == "360.0");
+    term::ScriptTerminal w("Y10" + e + e);  // Y without Enter: the same
+    CHECK(ask_yes_no(w, "Set Antenna rotation limit ? [Y/N] "));
+    CHECK(edit_text(w, "Azimuth minmum value", "0.0") == "10");
+    CHECK(edit_text(w, "Azimuth maximum value", "360.0") == "360.0");
+    // The manual's 3-3: "Are you sure ? [Y/N] ? Y <ENTER>" then "File format NASA/AMSAT (N/A) : N".
+    term::ScriptTerminal u("Y" + e + "A");
+    CHECK(ask_yes_no(u, "Are you sure ? [Y/N] ? "));
+    CHECK(ask_key(u, "File format NASA/AMSAT (N/A) : ", "NA") == 'A');
+    CHECK(u.output() == "Are you sure ? [Y/N] ? Y\nFile format NASA/AMSAT (N/A) : A\n");
+  }
 }
 
 TEST_CASE("Full screen: a live block keeps a row of its own below it for what follows") {

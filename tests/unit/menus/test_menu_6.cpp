@@ -260,7 +260,7 @@ TEST_CASE("6-3 refuses a fractional dead band and asks again") {
 }
 
 TEST_CASE("6-4 sets parking and limits, as in the manual's example") {
-  testing::MenuFixture f("4\rY90\r45\rY\r340\r\r60\rQ\r");
+  testing::MenuFixture f("4\rY90\r45\rY\r\r340\r\r60\rQ\r");  // Y<Enter> ends the answer (issue 18)
   menus::menu_6_configuration(f.term, *f.services);
   const std::string& out = f.term.output();
   CHECK(has(out,
@@ -292,7 +292,7 @@ TEST_CASE("6-4 sets parking and limits, as in the manual's example") {
 
 TEST_CASE("6-4 refuses limits that leave nowhere to go; N switches parking and limits off") {
   SUBCASE("refused") {
-    testing::MenuFixture f("4\rN" "Y\r\r50\r40\rQ\r");
+    testing::MenuFixture f("4\rN" "Y\r\r\r50\r40\rQ\r");
     const auto before = f.model.rotator;
     menus::menu_6_configuration(f.term, *f.services);
     CHECK(has(f.term.output(), "elevation limits 50..40: maximum must not be below minimum"));
@@ -313,6 +313,7 @@ TEST_CASE("6-4 refuses limits that leave nowhere to go; N switches parking and l
 TEST_CASE("6-5 shows the live monitor line until Q") {
   testing::MenuFixture f("5\rQQ\r");
   f.term.timeouts_before_key = 3;
+  f.run(1);  // a first reading, as the program has one before its first prompt
   menus::menu_6_configuration(f.term, *f.services);
   const std::string& out = f.term.output();
   CHECK(has(out, "=== ADC value & Antenna position ===\nAZ=   0 / 180.0deg EL=   0 / 0.0deg.\n"));
@@ -331,6 +332,7 @@ TEST_CASE("The monitor line reproduces the manual's example numbers") {
 TEST_CASE("6-6-1 keyboard control drives the simulated rotator; 5 stops, Enter leaves with motion stopped") {
   testing::MenuFixture f("6\r1\r65\rQ\rQ\r");
   f.station->set_rotor_control(true);
+  f.run(1);  // a first reading, as the program has one before its first prompt
   f.term.timeouts_before_key = 20;  // 10 s before each key
   menus::menu_6_configuration(f.term, *f.services);
   const std::string& out = f.term.output();
@@ -371,6 +373,7 @@ TEST_CASE("6-6-1 keyboard control stops at the rotation limits") {
 TEST_CASE("6-6-2 points the simulated rotator at the value entered, as in the manual's example") {
   testing::MenuFixture f("6\r2\r210\r20\rQ\rQ\r");
   f.station->set_rotor_control(true);
+  f.run(1);  // a first reading, as the program has one before its first prompt
   f.tracker.track_single(0);
   f.term.timeouts_before_key = 4000;  // the live display ends by itself on arrival
   menus::menu_6_configuration(f.term, *f.services);
@@ -597,7 +600,7 @@ TEST_CASE("6-8 sets the mic click values, as in the manual's example") {
 }
 
 TEST_CASE("6-8: a reference equal to the centre is asked again; Reverse polarity") {
-  testing::MenuFixture f("8\rS\r550\r540\r\rNNRQ\r");
+  testing::MenuFixture f("8\rS\r\r550\r540\r\rNNRQ\r");
   menus::menu_6_configuration(f.term, *f.services);
   CHECK(has(f.term.output(), "The reference must differ from the center"));
   const auto& m = f.model.radio.mic_click;

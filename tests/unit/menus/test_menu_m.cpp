@@ -161,7 +161,7 @@ TEST_CASE("Multi tracking: nothing in view, nothing followed; the antenna waits 
 // ---- menu M ----
 
 TEST_CASE("Menu M: sub-mode prompt, LCD satellite, then the live table with '!' on the active one") {
-  testing::MenuFixture f("N\rQ");
+  testing::MenuFixture f("N\r\rQ");
   f.model.db.multi_count = 3;
   f.now = from_civil(2026, 5, 21, 16, 30, 0);  // none of #1-#3 in view
   f.term.timeouts_before_key = 2;
@@ -239,7 +239,7 @@ TEST_CASE("Menu M: the realtime display takes over at AOS and the table is back 
                        Case{1, "AO-07", from_civil(2026, 5, 21, 19, 56, 0)}}) {
     const std::string name = c.name;
     CAPTURE(name);
-    testing::MenuFixture f("N\rQ");
+    testing::MenuFixture f("N\r\rQ");
     f.model.db.multi_count = 2;
     const auto pass = pass_at(f, c.number, c.during);
     f.now = pass.aos - std::chrono::seconds(20);
@@ -293,7 +293,7 @@ TEST_CASE("Menu M: priority mode drops a satellite for a higher-priority one; no
   // 2026-05-22: SO-50 (#5) up from 12:44:39; FO-29 (#3) rises at 12:47:27.
   for (const bool priority : {false, true}) {
     CAPTURE(priority);
-    testing::MenuFixture f(priority ? "P\rQ" : "N\rQ");
+    testing::MenuFixture f(priority ? "P\r\rQ" : "N\r\rQ");
     f.model.db.multi_count = 5;
     const auto fo29 = pass_at(f, 3, from_civil(2026, 5, 22, 12, 50, 0));
     pass_at(f, 5, fo29.aos);
