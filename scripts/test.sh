@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds with -Werror, runs every test through CTest (unit and
-# integration), then builds the unit tests again with AddressSanitizer + UndefinedBehaviorSanitizer
-# and runs them.
+# Installs what is missing, builds with -Werror, runs every test through CTest (unit, integration
+# and the fuzz-corpus replay), then builds the unit tests again with AddressSanitizer +
+# UndefinedBehaviorSanitizer and runs them, then builds, installs, runs and removes the Debian package.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
@@ -21,4 +21,7 @@ cmake --build build-asan -j"$jobs" --target "${unit_targets[@]}"
 echo "== sanitizer build: $((SECONDS - start)) s"
 (cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
    ctest --output-on-failure -j"$jobs" -L unit)
+echo "== sanitizer tests: $((SECONDS - start)) s"
+# The Debian package: built from build/, installed, run from /, removed (issue 13).
+scripts/package-check.sh build
 echo "== all done: $((SECONDS - start)) s"

@@ -10,11 +10,13 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 
 #include <spdlog/sinks/basic_file_sink.h>
+#include <spdlog/sinks/stdout_sinks.h>
 #include <spdlog/spdlog.h>
 
 #include "app/build_info.h"
@@ -40,11 +42,15 @@ std::vector<OptionSpec> tracker_option_specs() {
       {"help", "", "this list"},
       {"version", "", "the program version"},
       {"state", "DIR", "state directory (default $XDG_STATE_HOME/trakbox)"},
-      {"data", "DIR", "shipped data for a fresh start (default: the data/ folder of the source tree)"},
+      {"data", "DIR", "shipped data for a fresh start (default $TRAKBOX_DATA, else PREFIX/share/trakbox of an "
+                      "installed trakbox, else the source tree's data/ for a build that is not installed)"},
       {"tty", "DEVICE", "run the menus as plain lines on this serial port (e.g. /dev/ttyS0)"},
       {"baud", "N", "serial port speed with --tty: 1200, 2400, 4800, 9600 (default) or 19200, 8N1"},
       {"line", "", "plain lines on stdin/stdout even when they are a terminal"},
       {"standalone", "N", "track selector position N (1-15) with no menus: LCD and AOS LED"},
+      {"service", "", "unattended (a system service): no terminal, no standard input; tracks the stored "
+                      "tracking list, serves the enabled ports, logs to standard error too; SIGTERM parks "
+                      "(when parking is on), saves and exits 0; SIGHUP re-reads the data directory's elements"},
       {"clock", "ISO8601", "start the real-time clock at this UTC time (e.g. 2026-05-21T12:00:00Z)"},
       {"clock-rate", "R", "run the clock R times faster than real time (with or without --clock)"},
       {"rotator", "SPEC", "simulated (default), hamlib:MODEL:DEVICE[:BAUD], rotctld:HOST[:PORT]"},
@@ -64,7 +70,16 @@ std::vector<OptionSpec> tracker_option_specs() {
 
 std::string default_data_directory() {
   if (const char* d = std::getenv("TRAKBOX_DATA"); d && *d) return d;
-  return TRAKBOX_DATA_DIR;
+  // Installed: PREFIX/bin/trakbox finds PREFIX/share/trakbox. Only a binary that runs from the build
+  // tree it was built in takes the source tree's data/; an installed one never opens the checkout.
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (ec) return TRAKBOX_DATA_DIR;
+  const std::filesystem::path installed = exe.parent_path().parent_path() / "share" / "trakbox";
+  const std::string build_dir = TRAKBOX_BUILD_DIR;
+  const bool in_build_tree = exe.string().rfind(build_dir + "/", 0) == 0;
+  if (in_build_tree && !std::filesystem::exists(installed / "amateur.tle", ec)) return TRAKBOX_DATA_DIR;
+  return installed.string();
 }
 
 namespace {
@@ -111,12 +126,25 @@ class App {
 
   void start(std::chrono::milliseconds tick) {
     tick_ = tick;
+    arm_signals();
+    schedule_tick();
+  }
+  // SIGTERM, SIGINT and SIGHUP end the wait of the front end (Shutdown); last_signal() says which.
+  void arm_signals() {
     signals_.async_wait([this](const boost::system::error_code& ec, int sig) {
       if (ec) return;
-      log_->info("signal {}: saving and leaving", sig);
+      last_signal_ = sig;
+      log_->info("signal {}: {}", sig, sig == SIGHUP && unattended_ ? "re-reading the elements" : "saving and leaving");
       throw Shutdown{};
     });
-    schedule_tick();
+  }
+  int last_signal() const { return last_signal_; }
+  void set_unattended(bool on) { unattended_ = on; }
+  std::shared_ptr<spdlog::logger> log() { return log_; }
+  // Runs the event loop until `done` holds or `limit` passes (steady time).
+  void run_until(const std::function<bool()>& done, std::chrono::milliseconds limit) {
+    const auto end = std::chrono::steady_clock::now() + limit;
+    while (!done() && std::chrono::steady_clock::now() < end) wait_readable(-1, std::chrono::milliseconds(50));
   }
 
   // The terminal's way of waiting: run the event loop until fd is readable or the timeout passes.
@@ -187,6 +215,8 @@ class App {
   asio::steady_timer timer_{io_};
   std::chrono::milliseconds tick_{1000};
   bool started_ = false;  // the tick timer runs (start() was called)
+  int last_signal_ = 0;
+  bool unattended_ = false;
   store::Model model_;
   store::StateFile file_;
   std::shared_ptr<spdlog::logger> log_;
@@ -203,6 +233,89 @@ class App {
 int usage_error(const std::string& text) {
   std::fprintf(stderr, "trakbox: %s (see trakbox --help)\n", text.c_str());
   return kExitUsage;
+}
+
+}  // namespace
+
+namespace {
+
+// --service: what the stored configuration says to track. The first multi_count satellites of the
+// tracking list in multiple tracking (the stored normal or priority sub-mode) when the list holds
+// two or more; else the satellite marked '*' (or #1) alone.
+void start_stored_tracking(App& app) {
+  const store::Database& db = app.model().db;
+  if (db.selected.size() >= 2 && db.multi_count >= 2) {
+    app.tracker().track_multi(app.model().priority_mode);
+    app.log()->info("service: multiple tracking of the first {} of the tracking list ({} mode)", db.multi_count,
+                    app.model().priority_mode ? "priority" : "normal");
+  } else if (const auto m = db.marked_index()) {
+    app.tracker().track_single(*m);
+    app.log()->info("service: tracking {}", db.satellites[static_cast<std::size_t>(*m)].elements.name);
+  } else if (!db.selected.empty()) {
+    app.tracker().track_single(db.selected.front());
+  } else {
+    app.log()->warn("service: the tracking list is empty: nothing to track");
+  }
+  if (!app.station().rotor_control())
+    app.log()->warn("service: rotor control is off (E key): the antenna will not move");
+}
+
+// SIGHUP: the element sets of the data directory's amateur.tle replace those of the same catalog
+// numbers in the database (the operator refreshed the file); the rest stays as it is.
+void reread_elements(App& app, const std::string& data_dir) {
+  const std::string path = data_dir + "/amateur.tle";
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    app.log()->warn("SIGHUP: cannot read {}", path);
+    return;
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  const orbit::ParseResult parsed = orbit::parse_nasa(text.str(), path);
+  if (!parsed.ok()) {
+    app.log()->warn("SIGHUP: {} not used: {}", path, parsed.problems.empty() ? "no element set" : parsed.problems.front().message());
+    return;
+  }
+  int updated = 0;
+  for (auto& sat : app.model().db.satellites)
+    for (const auto& e : parsed.sets)
+      if (e.catalog_number == sat.elements.catalog_number && !(e.epoch_year == sat.elements.epoch_year && e.epoch_day == sat.elements.epoch_day)) {
+        sat.elements = e;
+        ++updated;
+      }
+  app.log()->info("SIGHUP: {} element set(s) updated from {}", updated, path);
+  if (updated) {
+    app.save();
+  }
+}
+
+// The unattended front end: tracks, serves, and waits for signals.
+int run_service(App& app, const std::string& data_dir) {
+  app.set_unattended(true);
+  start_stored_tracking(app);
+  for (;;) {
+    try {
+      app.run_forever();
+    } catch (const Shutdown&) {
+      if (app.last_signal() == SIGHUP) {
+        reread_elements(app, data_dir);
+        app.arm_signals();
+        continue;
+      }
+    }
+    break;
+  }
+  // SIGTERM: park first when parking is on (within two minutes), then the caller saves.
+  app.arm_signals();
+  if (app.model().rotator.parking_enabled && app.station().rotor_control()) {
+    app.tracker().stop();
+    if (app.station().rotator().park()) {
+      app.log()->info("service: parking the antenna");
+      app.run_until([&app] { return app.station().rotator().status().on_target; }, std::chrono::minutes(2));
+      app.log()->info("service: antenna {}", app.station().rotator().status().on_target ? "parked" : "not parked in time");
+    }
+  }
+  return kExitOk;
 }
 
 }  // namespace
@@ -263,6 +376,10 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
     else r.fail("--log-level", "expected error, warn, info or debug; found '" + *l + "'");
   }
   if (o.has("tty") && o.has("line")) r.fail("--line", "not with --tty (a serial port is always plain lines)");
+  const bool service = o.has("service");
+  for (const char* other : {"tty", "line", "standalone"})
+    if (service && o.has(other)) r.fail("--service", std::string("not with --") + other + " (a service has no terminal)");
+  if (service && front_end == FrontEnd::host) r.fail("--service", "not with trakbox host");
   if (front_end == FrontEnd::host && (o.has("tty") || o.has("standalone")))
     r.fail(o.has("tty") ? "--tty" : "--standalone", "not with trakbox host (host mode talks on stdin/stdout)");
   if (!r.ok()) return usage_error(r.error()->text());
@@ -276,8 +393,14 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   if (!state_dir_existed)  // 0700: the state document holds the element downloads' credentials
     std::filesystem::permissions(state_dir, std::filesystem::perms::owner_all, ec);
 
-  auto log = std::make_shared<spdlog::logger>(
-      "trakbox", std::make_shared<spdlog::sinks::basic_file_sink_mt>((state_dir / "trakbox.log").string()));
+  std::vector<spdlog::sink_ptr> sinks{
+      std::make_shared<spdlog::sinks::basic_file_sink_mt>((state_dir / "trakbox.log").string())};
+  if (service) {  // the journal reads standard error; it stamps the time itself
+    auto err = std::make_shared<spdlog::sinks::stderr_sink_mt>();
+    err->set_pattern("trakbox[%l]: %v");
+    sinks.push_back(std::move(err));
+  }
+  auto log = std::make_shared<spdlog::logger>("trakbox", sinks.begin(), sinks.end());
   log->set_level(log_level);
   log->flush_on(std::min(log_level, spdlog::level::info));  // a debug log is read while it grows
   spdlog::set_default_logger(log);  // drivers and servers log here, never on the terminal the UI owns
@@ -391,6 +514,21 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   app.start(std::chrono::milliseconds(tick_ms.value_or(1000)));
   if (ram_lost || loaded.kind == store::LoadOutcome::Kind::fresh) app.save();
   log->info("trakbox {} started, state {}", kVersion, file.path().string());
+
+  if (service) {
+    for (const auto& n : startup_notes) log->warn("{}", n);
+    if (ram_lost) log->error("Data in RAM was lost !! Set default parameter ! (the damaged state was kept as {})", kept);
+    int code = run_service(app, data_dir);
+    rotctld.reset();
+    rigctld.reset();
+    host_server.reset();
+    satrak_server.reset();
+    if (auto err = app.save()) code = kExitFailure;
+    app.set_satrak(nullptr);
+    satrak_unit.reset();
+    log->info("trakbox stopped");
+    return code;
+  }
 
   auto wait = [&app](int fd, std::optional<term::Duration> t) { return app.wait_readable(fd, t); };
   std::unique_ptr<term::Terminal> terminal;

@@ -17,7 +17,8 @@ enum class FrontEnd {
 };
 int run_tracker(const std::vector<std::string>& args, FrontEnd front_end = FrontEnd::menus);
 
-// Where the shipped data lives: --data, else $TRAKBOX_DATA, else the source tree's data/.
+// Where the shipped data lives: --data, else $TRAKBOX_DATA, else PREFIX/share/trakbox of an installed
+// binary, else (a binary in its own build tree) the source tree's data/.
 std::string default_data_directory();
 
 }  // namespace tb::app

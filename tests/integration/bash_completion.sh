@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# The bash completion of packaging/trakbox.bash-completion (issue 13): commands, options, the forms
+# of --rotator/--radio, and satellite names from the data directory's element file.
+set -euo pipefail
+src=${TRAKBOX_SOURCE_DIR:-.}
+if [ ! -r /usr/share/bash-completion/bash_completion ]; then
+  echo "bash_completion.sh: FAILED: bash-completion is not installed"; exit 1
+fi
+# shellcheck disable=SC1091
+source /usr/share/bash-completion/bash_completion
+# shellcheck disable=SC1091
+source "$src/packaging/trakbox.bash-completion"
+export TRAKBOX_DATA="$src/data"
+complete_of() {  # complete_of WORD... : the candidates for the last word
+  COMP_WORDS=("$@"); COMP_CWORD=$((${#COMP_WORDS[@]} - 1))
+  COMP_LINE="${COMP_WORDS[*]}"; COMP_POINT=${#COMP_LINE}
+  COMPREPLY=(); _trakbox trakbox "${COMP_WORDS[-1]}" "${COMP_WORDS[-2]}"
+  printf '%s\n' "${COMPREPLY[@]}"
+}
+fail() { echo "bash_completion.sh: FAILED: $*"; exit 1; }
+[ "$(complete_of trakbox pa)" = passes ] || fail "commands: $(complete_of trakbox pa)"
+complete_of trakbox --ser | grep -qx -- --service || fail "--service"
+complete_of trakbox --rotator "" | grep -qx 'rotctld:' || fail "--rotator forms"
+complete_of trakbox --radio ri | grep -qx 'rigctld' || fail "--radio forms"
+complete_of trakbox passes x.tle --sat IS | grep -q '^ISS' || fail "satellite names: $(complete_of trakbox passes x.tle --sat IS)"
+complete_of trakbox schedule --du | grep -qx -- --dut1 || fail "schedule options"
+echo "bash_completion.sh: passed"
