@@ -33,6 +33,7 @@
 #include "satrak/unit.h"
 #include "store/state_file.h"
 #include "tracker/station_loop.h"
+#include "util/cidr.h"
 
 namespace tb::app {
 namespace asio = boost::asio;
@@ -63,6 +64,8 @@ std::vector<OptionSpec> tracker_option_specs() {
       {"rigctld-port", "N", "answer the rigctld protocol on TCP port N (4532 by convention; off by default)"},
       {"host-port", "N", "host mode (menu 7's commands) on TCP port N (off by default)"},
       {"listen", "ADDR", "address the host, rotctld and rigctld servers listen on (default 127.0.0.1)"},
+      {"allow", "CIDR", "only clients in this address range may connect to any TCP endpoint (repeatable; "
+                        "e.g. 192.168.1.0/24, 2001:db8::/32, 10.0.0.5); others are refused", true},
       {"log-level", "LEVEL", "what trakbox.log in the state directory keeps: error, warn, info (default) or "
                              "debug (every remote command and its reply)"},
   };
@@ -376,6 +379,11 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
     else r.fail("--log-level", "expected error, warn, info or debug; found '" + *l + "'");
   }
   if (o.has("tty") && o.has("line")) r.fail("--line", "not with --tty (a serial port is always plain lines)");
+  std::vector<net::Cidr> allow;
+  for (const std::string& a : o.values("allow")) {
+    if (const auto c = net::parse_cidr(a)) allow.push_back(*c);
+    else r.fail("--allow", "expected an address or ADDRESS/PREFIX (192.168.1.0/24, ::1); found '" + a + "'");
+  }
   const bool service = o.has("service");
   for (const char* other : {"tty", "line", "standalone"})
     if (service && o.has(other)) r.fail("--service", std::string("not with --") + other + " (a service has no terminal)");
@@ -476,6 +484,7 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
     satrak::ServerOptions so;
     so.address = o.value("satrak-bind").value_or("127.0.0.1");
     so.port = static_cast<unsigned short>(sat_port);
+    so.allow = allow;
     try {
       satrak_server = std::make_unique<satrak::Server>(app.io(), *satrak_unit, so);
       satrak_unit->start();
@@ -492,8 +501,9 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   const std::string listen = o.value("listen").value_or("127.0.0.1");
   const char* starting = "";
   try {
-    auto opts = [&listen](netctl::ServerOptions so) {
+    auto opts = [&listen, &allow](netctl::ServerOptions so) {
       so.address = listen;
+      so.allow = allow;
       return so;
     };
     starting = "--rotctld-port";
@@ -511,6 +521,19 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   } catch (const std::exception& e) {
     return usage_error(std::string(starting) + ": " + e.what());
   }
+  // Beyond loopback with no allow-list, anyone who can reach a port can swing the antenna.
+  const auto open_to_all = [&](const std::string& what, const std::string& address, bool on) {
+    if (!on || !allow.empty() || net::is_loopback(address)) return;
+    const std::string msg = what + " listens on " + address +
+                            " for every address: anyone who can reach it can move the antenna and tune the radio "
+                            "(name the stations with --allow CIDR; docs/security.md)";
+    log->warn("{}", msg);
+    std::fprintf(stderr, "trakbox: WARNING: %s\n", msg.c_str());
+  };
+  open_to_all("the Satrak server", o.value("satrak-bind").value_or("127.0.0.1"), satrak_server != nullptr);
+  open_to_all("the rotctld server", listen, rotctld != nullptr);
+  open_to_all("the rigctld server", listen, rigctld != nullptr);
+  open_to_all("the host-mode server", listen, host_server != nullptr);
   app.start(std::chrono::milliseconds(tick_ms.value_or(1000)));
   if (ram_lost || loaded.kind == store::LoadOutcome::Kind::fresh) app.save();
   log->info("trakbox {} started, state {}", kVersion, file.path().string());

@@ -235,6 +235,12 @@ void LineServer::close() {
 
 namespace {
 
+std::string address_of(const tcp::socket& s) {
+  error_code ec;
+  const tcp::endpoint ep = s.remote_endpoint(ec);
+  return ec ? std::string() : ep.address().to_string();
+}
+
 // Every connection is taken: closes the one silent longest if it has been silent long enough.
 bool make_room(LineServer::Core& core) {
   std::shared_ptr<Session> quietest;
@@ -263,7 +269,12 @@ void LineServer::accept() {
       });
       return;
     }
-    if (core->sessions.size() >= core->options.max_clients && !make_room(*core)) {
+    if (const std::string who = address_of(socket); !net::allowed(core->options.allow, who)) {
+      spdlog::warn("{}: connection from {} refused: not in --allow", core->options.name, who);
+      error_code ignored;
+      if (core->protocol) asio::write(socket, asio::buffer(core->protocol->refusal()), ignored);
+      socket.close(ignored);
+    } else if (core->sessions.size() >= core->options.max_clients && !make_room(*core)) {
       spdlog::warn("{}: {} clients already, none silent for {} s; connection from {} refused", core->options.name,
                    core->sessions.size(), core->options.evict_idle_after.count() / 1000.0, describe(socket));
       error_code ignored;

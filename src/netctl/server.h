@@ -17,6 +17,9 @@
 //    (LineHandler::refusal(), e.g. "RPRT -9") and is closed. Every connection has TCP keepalive
 //    (60 s idle, then 3 probes 10 s apart), so a peer that vanished is found and closed.
 #pragma once
+#include <vector>
+
+#include "util/cidr.h"
 #include <chrono>
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/tcp.hpp>
@@ -40,6 +43,9 @@ struct ServerOptions {
   std::size_t max_output = 64 * 1024;      // bytes of replies queued for one client
   std::size_t max_clients = 16;
   std::chrono::milliseconds evict_idle_after{10000};  // see above
+  // Clients allowed to connect (--allow); empty: everyone. Others are refused at accept with the
+  // protocol's refusal line, and the log names their address.
+  std::vector<net::Cidr> allow;
   std::string name = "netctl";             // for the log: "rotctld", "rigctld", "host"
   // A CR ends a line as well as a LF (a CR LF pair ends one line): terminal programs send CR.
   bool cr_ends_line = false;

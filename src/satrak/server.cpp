@@ -175,7 +175,16 @@ void accept(const std::shared_ptr<Server::State>& state) {
       });
       return;
     }
-    if (s->sessions.size() >= s->opt.max_clients && !make_room(*s)) {
+    boost::system::error_code peer_ec;
+    const auto peer = socket.remote_endpoint(peer_ec);
+    const std::string who = peer_ec ? std::string() : peer.address().to_string();
+    if (!net::allowed(s->opt.allow, who)) {
+      ++s->stats.refused;
+      spdlog::warn("satrak: connection from {} refused: not in --allow", who);
+      boost::system::error_code ignored;
+      asio::write(socket, asio::buffer(encode(reply_error("", Error::not_allowed))), ignored);
+      socket.close(ignored);
+    } else if (s->sessions.size() >= s->opt.max_clients && !make_room(*s)) {
       ++s->stats.refused;
       spdlog::warn("satrak: {} clients, none silent for {} s: connection refused", s->opt.max_clients,
                    s->opt.evict_idle_after.count() / 1000.0);

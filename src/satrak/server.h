@@ -13,6 +13,9 @@
 //     longest makes room if it has been silent for evict_idle_after or more; otherwise the newcomer
 //     gets an `ERR,8` frame and is closed. TCP keepalive closes connections whose peer vanished.
 #pragma once
+#include <vector>
+
+#include "util/cidr.h"
 #include <boost/asio/io_context.hpp>
 #include <chrono>
 #include <cstddef>
@@ -28,6 +31,7 @@ struct ServerOptions {
   unsigned short port = 4001;         // 0: a free port (tests); see Server::port()
   std::size_t max_clients = 16;
   std::chrono::milliseconds evict_idle_after{10000};
+  std::vector<net::Cidr> allow;  // --allow: clients allowed (empty: everyone); others get ERR,8 and are closed
   std::size_t max_line = Decoder::kDefaultMaxLine;
   std::size_t max_output = 64 * 1024;  // bytes of replies queued for one client before it is dropped
   int send_buffer = 0;                 // SO_SNDBUF of client sockets; 0: the system's (tests set it small)
