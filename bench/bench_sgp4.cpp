@@ -55,6 +55,17 @@ void BM_Sgp4ResonantAtAge(benchmark::State& state) {
 }
 BENCHMARK(BM_Sgp4ResonantAtAge)->Arg(0)->Arg(7)->Arg(30)->Arg(365);
 
+// One result into the arrays SatrecArray fills: position, velocity (NaN on failure), error code.
+inline void store(const Propagation& p, std::size_t k, std::vector<double>& r, std::vector<double>& v,
+                  std::vector<std::uint8_t>& errors) {
+  constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+  errors[k] = static_cast<std::uint8_t>(p.error);
+  for (int c = 0; c < 3; ++c) {
+    r[3 * k + c] = p.ok() ? p.state.r_km[c] : kNan;
+    v[3 * k + c] = p.ok() ? p.state.v_km_s[c] : kNan;
+  }
+}
+
 std::vector<Sgp4> gpredict_catalogue() {
   std::ifstream in(TRAKBOX_GPREDICT_SATDATA, std::ios::binary);
   if (!in) throw std::runtime_error("cannot read " TRAKBOX_GPREDICT_SATDATA);
@@ -78,20 +89,13 @@ void BM_Sgp4Gpredict979x1440(benchmark::State& state) {
   const std::size_t n = sats.size() * kTimes;
   std::vector<double> r(3 * n), v(3 * n);
   std::vector<std::uint8_t> errors(n);
-  constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
-
   for (auto _ : state) {
     std::size_t k = 0;
     for (const Sgp4& sat : sats) {
       const JulianDate epoch = sat.epoch_jd();
       for (int j = 0; j < kTimes; ++j, ++k) {
         const double tsince = (jd - epoch.whole) * 1440.0 + (fr[j] - epoch.fraction) * 1440.0;
-        const Propagation p = sat.propagate_minutes(tsince);
-        errors[k] = static_cast<std::uint8_t>(p.error);
-        for (int c = 0; c < 3; ++c) {
-          r[3 * k + c] = p.ok() ? p.state.r_km[c] : kNan;
-          v[3 * k + c] = p.ok() ? p.state.v_km_s[c] : kNan;
-        }
+        store(sat.propagate_minutes(tsince), k, r, v, errors);
       }
     }
     benchmark::ClobberMemory();
@@ -126,22 +130,13 @@ void BM_Sgp4BatchGpredict979x1440(benchmark::State& state) {
   std::vector<Propagation> out(kTimes);
   std::vector<double> r(3 * n), v(3 * n);
   std::vector<std::uint8_t> errors(n);
-  constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
-
   for (auto _ : state) {
     std::size_t k = 0;
     for (const Sgp4& sat : sats) {
       const JulianDate epoch = sat.epoch_jd();
       for (int j = 0; j < kTimes; ++j) tsince[j] = (jd - epoch.whole) * 1440.0 + (fr[j] - epoch.fraction) * 1440.0;
       propagate_batch_with(isa, sat, tsince, out);
-      for (int j = 0; j < kTimes; ++j, ++k) {
-        const Propagation& p = out[j];
-        errors[k] = static_cast<std::uint8_t>(p.error);
-        for (int c = 0; c < 3; ++c) {
-          r[3 * k + c] = p.ok() ? p.state.r_km[c] : kNan;
-          v[3 * k + c] = p.ok() ? p.state.v_km_s[c] : kNan;
-        }
-      }
+      for (int j = 0; j < kTimes; ++j, ++k) store(out[j], k, r, v, errors);
     }
     benchmark::ClobberMemory();
   }

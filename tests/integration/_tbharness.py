@@ -541,3 +541,30 @@ class Satrak:
         self.s.close()
 
 
+
+
+def tcp_exchange(port, data, until, source="127.0.0.1", limit=10):
+    """Connects to 127.0.0.1:port from `source` (retrying while nothing listens, up to `limit` s),
+    sends `data`, and returns the bytes that came back until `until` is among them or the server
+    closed the connection."""
+    deadline = time.time() + limit
+    while True:
+        try:
+            s = socket.create_connection(("127.0.0.1", port), timeout=5, source_address=(source, 0))
+            break
+        except OSError:
+            if time.time() > deadline:
+                raise
+            time.sleep(0.1)
+    with s:
+        s.sendall(data)
+        got = b""
+        try:
+            while until not in got:
+                chunk = s.recv(4096)
+                if not chunk:
+                    break
+                got += chunk
+        except (ConnectionResetError, socket.timeout):
+            pass
+        return got

@@ -5,40 +5,12 @@ served. With --allow 127.0.0.0/8 the 127.0.0.2 client is served too. Listening b
 without --allow draws a warning at start."""
 import os
 import shutil
-import socket
 import subprocess
 import sys
 import tempfile
-import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, CLOCK, check, frame, free_port, run_test  # noqa: E402
-
-
-def exchange(port, data, source, until, limit=10):
-    """Connects from `source`, sends `data`, returns what came back until `until` is in it or the
-    server closed."""
-    deadline = time.time() + limit
-    while True:
-        try:
-            s = socket.create_connection(("127.0.0.1", port), timeout=5, source_address=(source, 0))
-            break
-        except OSError:
-            if time.time() > deadline:
-                raise
-            time.sleep(0.1)
-    with s:
-        s.sendall(data)
-        got = b""
-        try:
-            while until not in got:
-                chunk = s.recv(4096)
-                if not chunk:
-                    break
-                got += chunk
-        except (ConnectionResetError, socket.timeout):
-            pass
-        return got
+from _tbharness import BIN, CLOCK, check, frame, free_port, run_test, tcp_exchange  # noqa: E402
 
 
 def start(state, ports, allow):
@@ -65,9 +37,9 @@ def main():
         p = start(state, ports, ["127.0.0.1/32"])
         try:
             for i, req, served, refused in CASES:
-                got = exchange(ports[i], req, "127.0.0.1", served)
+                got = tcp_exchange(ports[i], req, served, source="127.0.0.1")
                 check(served in got, f"port {i}: 127.0.0.1 is served: {got!r}")
-                got = exchange(ports[i], req, "127.0.0.2", b"\n")
+                got = tcp_exchange(ports[i], req, b"\n", source="127.0.0.2")
                 check(got.startswith(refused), f"port {i}: 127.0.0.2 refused in the protocol's words: {got!r}")
         finally:
             p.terminate()
@@ -79,7 +51,7 @@ def main():
         p = start(state, ports, ["127.0.0.0/8"])
         try:
             for i, req, served, _ in CASES:
-                got = exchange(ports[i], req, "127.0.0.2", served)
+                got = tcp_exchange(ports[i], req, served, source="127.0.0.2")
                 check(served in got, f"port {i}: 127.0.0.2 is served when its range is allowed: {got!r}")
         finally:
             p.terminate()

@@ -13,25 +13,14 @@ import shutil
 import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, CLOCK, Satrak, check, free_port, run_test  # noqa: E402
+from _tbharness import BIN, CLOCK, Satrak, check, free_port, run_test, tcp_exchange  # noqa: E402
 
 HOLDERS = 20
 
 
-def rot_ask(port, line, timeout=5):
+def rot_ask(port, line):
     """One rotctld exchange on a new connection; the reply text, or '' when closed without one."""
-    with socket.create_connection(("127.0.0.1", port), timeout=timeout) as s:
-        s.sendall(line.encode() + b"\n")
-        data = b""
-        try:
-            while b"\n" not in data:
-                chunk = s.recv(4096)
-                if not chunk:
-                    break
-                data += chunk
-        except (ConnectionResetError, socket.timeout):
-            pass
-        return data.decode(errors="replace")
+    return tcp_exchange(port, line.encode() + b"\n", b"\n", limit=0).decode(errors="replace")
 
 
 def until(cond, limit):
