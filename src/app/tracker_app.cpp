@@ -267,16 +267,10 @@ void start_stored_tracking(App& app) {
 // numbers in the database (the operator refreshed the file); the rest stays as it is.
 void reread_elements(App& app, const std::string& data_dir) {
   const std::string path = data_dir + "/amateur.tle";
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    app.log()->warn("SIGHUP: cannot read {}", path);
-    return;
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  const orbit::ParseResult parsed = orbit::parse_nasa(text.str(), path);
-  if (!parsed.ok()) {
-    app.log()->warn("SIGHUP: {} not used: {}", path, parsed.problems.empty() ? "no element set" : parsed.problems.front().message());
+  const orbit::ParseResult parsed = orbit::load_elements_file(path);
+  if (parsed.sets.empty()) {
+    app.log()->warn("SIGHUP: {} not used: {}", path,
+                    parsed.problems.empty() ? "no element set" : parsed.problems.front().message());
     return;
   }
   int updated = 0;
