@@ -51,7 +51,8 @@ std::vector<OptionSpec> tracker_option_specs() {
       {"standalone", "N", "track selector position N (1-15) with no menus: LCD and AOS LED"},
       {"service", "", "unattended (a system service): no terminal, no standard input; tracks the stored "
                       "tracking list, serves the enabled ports, logs to standard error too; SIGTERM parks "
-                      "(when parking is on), saves and exits 0; SIGHUP re-reads the data directory's elements"},
+                      "(when parking is on), saves and exits 0; SIGHUP re-reads the data directory's element and "
+                      "freq/mode files"},
       {"clock", "ISO8601", "start the real-time clock at this UTC time (e.g. 2026-05-21T12:00:00Z)"},
       {"clock-rate", "R", "run the clock R times faster than real time (with or without --clock)"},
       {"rotator", "SPEC", "simulated (default), hamlib:MODEL:DEVICE[:BAUD], rotctld:HOST[:PORT]"},
@@ -281,9 +282,20 @@ void reread_elements(App& app, const std::string& data_dir) {
         ++updated;
       }
   app.log()->info("SIGHUP: {} element set(s) updated from {}", updated, path);
-  if (updated) {
-    app.save();
+  // The freq/mode file: the radio entries of the satellites it names; the operator's tracking list
+  // (which a 3-3 upload would rebuild in the file's order) stays as it is.
+  const std::string fm_path = data_dir + "/freqmode.txt";
+  const auto fm = radio::parse_freqmode(read_text(fm_path));
+  for (const auto& problem : fm.problems) app.log()->warn("SIGHUP: {}: {}", fm_path, problem.message());
+  if (!fm.records.empty()) {
+    store::Database db = app.model().db;
+    const store::FreqModeUpload up = store::apply_freqmode(db, fm.records);
+    db.selected = app.model().db.selected;
+    db.marked = app.model().db.marked;
+    app.model().db = std::move(db);
+    app.log()->info("SIGHUP: radio entries of {} satellite(s) read from {}", up.updated.size(), fm_path);
   }
+  app.save();
 }
 
 // The unattended front end: tracks, serves, and waits for signals.

@@ -60,7 +60,8 @@ def main():
         err = err.decode()
         check(p.returncode == 0, f"exit status {p.returncode}: {err}")
         check(out == b"", "nothing on standard output: there is no terminal")
-        for line in ("service: multiple tracking", "SIGHUP: ", "service: parking the antenna", "service: antenna parked",
+        for line in ("service: multiple tracking", "SIGHUP: ", "SIGHUP: radio entries of", "service: parking the antenna",
+                     "service: antenna parked",
                      "trakbox stopped"):
             check(line in err, f"the journal (stderr) has '{line}': {err}")
         with open(path) as f:
