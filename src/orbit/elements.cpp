@@ -619,9 +619,12 @@ class AmsatBlock {
                                       "checksum " + std::to_string(sum));
     }
     if (checksum_problem) {
-      checksum_problem->warning = !options_.strict_amsat_checksum;
+      // Strict (a serial upload) rejects a wrong checksum; a block without a "Checksum:" line, which
+      // the TrakBox manual never mentions, is accepted with a warning either way.
+      const bool reject = options_.strict_amsat_checksum && c.present;
+      checksum_problem->warning = !reject;
       result.problems.push_back(std::move(*checksum_problem));
-      if (options_.strict_amsat_checksum) return;
+      if (reject) return;
     }
     result.sets.push_back(std::move(e));
   }

@@ -59,7 +59,8 @@ struct ParseResult {
 
 struct ParseOptions {
   bool verify_checksums = true;       // NASA: a wrong checksum rejects the set
-  bool strict_amsat_checksum = false; // AMSAT: a wrong checksum rejects the block (else a warning)
+  bool strict_amsat_checksum = false; // AMSAT: a wrong checksum rejects the block (else a warning);
+                                      // a missing "Checksum:" line is a warning either way
 };
 
 // NASA two-line and three-line text. Blank lines and lines starting with '#' are skipped;
