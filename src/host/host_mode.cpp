@@ -237,6 +237,17 @@ Reply Interpreter::frequency(std::string_view cmd, std::string_view arg) {
     return error(std::string(cmd) + ": '" + std::string(a) +
                  "' is not a frequency: expected 1 to 9 digits in 10 Hz units, not 0, e.g. " + std::string(cmd) +
                  "14595000 for 145.950 MHz");
+  // What a station radio tunes: HF to the 5.8 GHz band (a 10 GHz downlink reaches the radio at
+  // its LNB's IF). Outside, the number was mistyped (FD999999999) or written short (FU14595 is
+  // 145.950 kHz, not MHz): an error, not a radio set to nonsense.
+  constexpr radio::Hz kLowest = 1'000'000, kHighest = 6'000'000'000;
+  if (*hz < kLowest || *hz > kHighest) {
+    char mhz[32];
+    std::snprintf(mhz, sizeof mhz, "%.5f", static_cast<double>(*hz) / 1e6);
+    return error(std::string(cmd) + ": " + std::string(a) + " is " + mhz +
+                 " MHz, which no radio here tunes: expected 1 MHz to 6 GHz in 10 Hz units, e.g. " + std::string(cmd) +
+                 "14595000 for 145.950 MHz");
+  }
   station_.tracker().stop();
   station_.radio().set_frequency(cmd == "FU" ? radio::Link::uplink : radio::Link::downlink, *hz);
   return radio_outcome(cmd);
