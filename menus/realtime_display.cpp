@@ -168,6 +168,8 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
       case 'E':
         s.station.set_rotor_control(!s.model.rotor_control);
         save_or_report(t, s);
+        // Full screen shows it in the status line; a serial terminal gets a line (issue 18, item 6).
+        if (!t.full_screen()) t.line(s.model.rotor_control ? "Rotor control ON" : "Rotor control OFF");
         break;
       case 'y':
       case 'Y':
@@ -175,9 +177,15 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
         s.model.clock_offset = s.clock.offset();
         save_or_report(t, s);
         break;
-      case '+': s.station.tuner().rit_up(); break;
-      case '-': s.station.tuner().rit_down(); break;
-      case '0': s.station.tuner().rit_zero(); break;
+      case '+':
+      case '-':
+      case '0':
+        if (k == '+') s.station.tuner().rit_up();
+        else if (k == '-') s.station.tuner().rit_down();
+        else s.station.tuner().rit_zero();
+        if (!t.full_screen()) t.line("Frequency offset " + std::string(s.station.tuner().rit_hz() > 0 ? "+" : "") +
+                                     std::to_string(s.station.tuner().rit_hz()) + " Hz");
+        break;
       default: break;
     }
   }

@@ -75,3 +75,16 @@ TEST_CASE("The realtime row matches the manual's columns") {
   // Blinking with rotor control off: on one second, off the next.
   CHECK(menus::aos_indicator(true, false, n.obs.time) != menus::aos_indicator(true, false, n.obs.time + std::chrono::seconds(1)));
 }
+
+TEST_CASE("Line mode: the realtime display's E and + / - / 0 say what they changed (issue 18, item 6)") {
+  testing::MenuFixture f("\rE++-0Q");
+  f.term.timeouts_before_key = 1;
+  menus::menu_1_realtime_tracking(f.term, *f.services);
+  const std::string& out = f.term.output();
+  CHECK(out.find("Rotor control ON\n") != std::string::npos);
+  CHECK(out.find("Frequency offset +100 Hz\n") != std::string::npos);
+  CHECK(out.find("Frequency offset +200 Hz\n") != std::string::npos);
+  CHECK(out.find("Frequency offset +100 Hz\n", out.find("+200 Hz")) != std::string::npos);
+  CHECK(out.find("Frequency offset 0 Hz\n") != std::string::npos);
+  CHECK(f.station->tuner().rit_hz() == 0);
+}
