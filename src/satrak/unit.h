@@ -18,8 +18,6 @@
 // with the same orbit engine as the Tracker, adding what the Tracker has no place for: the time
 // and position offsets, north offset, minimum elevation and elevation threshold (docs/satrak.md).
 #pragma once
-#include <boost/asio/io_context.hpp>
-#include <boost/asio/steady_timer.hpp>
 #include <chrono>
 #include <filesystem>
 #include <functional>
@@ -38,6 +36,10 @@
 #include "station/clock.h"
 #include "store/model.h"
 #include "tracker/station_loop.h"
+
+namespace boost::asio {
+class io_context;
+}
 
 namespace tb::satrak {
 
@@ -194,7 +196,8 @@ class Unit {
   UnitOptions opt_;
   UnitHooks hooks_;
   bool save_failed_ = false;  // the command being handled could not store its change
-  boost::asio::steady_timer timer_;
+  struct Timer;  // the periodic check's Asio timer, kept out of this header
+  std::unique_ptr<Timer> timer_;
   bool running_ = false;
 
   // Who drives the antenna.

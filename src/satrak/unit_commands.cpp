@@ -1,0 +1,388 @@
+// The Satrak commands that move the antenna, report its state and set the clock and the unit's
+// settings (docs/satrak.md, one handler per command word of Unit::dispatch's table).
+#include <cmath>
+
+#include <spdlog/spdlog.h>
+
+#include "satrak/unit.h"
+#include "satrak/unit_internal.h"
+#include "util/text.h"
+
+namespace tb::satrak {
+using namespace detail;
+using rotator::AzEl;
+using rotator::RotatorPosition;
+
+Unit::Reply Unit::cmd_version(const Command& c) {
+  if (!c.fields.empty()) return reply_error(c.head(), Error::parameter_count);
+  return reply_values(c.head(), {"TRAKBOX SATRAK CU V" + field_text(opt_.version),
+                                 "DU " + field_text(station_.rotator().driver().description())});
+}
+
+Unit::Reply Unit::cmd_move(const Command& c) {
+  if (c.fields.size() != 2) return reply_error(c.head(), Error::parameter_count);
+  Reader r(c.fields);
+  const double x = r.number(0, -kMaxRateDegS, kMaxRateDegS);
+  const double y = r.number(1, -kMaxRateDegS, kMaxRateDegS);
+  if (!r.ok()) return reply_error(c.head(), r.error());
+  take_control();
+  const auto& st = station_.rotator().status();
+  if (x == 0.0 && y == 0.0) {
+    // Both rates zero: the button released.
+    if (owner_ == Owner::move) {
+      station_.rotator().stop();
+      release();
+    }
+    return reply_ok(c.head());
+  }
+  if (!st.has_position) return reply_error(c.head(), Error::not_allowed);
+  take_antenna();
+  if (tracking_) stop_tracking(false);
+  const rotator::RotatorConfig& cfg = station_.rotator().config();
+  Move m;
+  m.az_rate = std::clamp(x, -cfg.az_rate_deg_s, cfg.az_rate_deg_s);
+  m.el_rate = std::clamp(y, -cfg.el_rate_deg_s, cfg.el_rate_deg_s);
+  m.origin = RotatorPosition{st.az.travel, st.el.travel};
+  m.t0 = clock_.now();
+  move_ = m;
+  owner_ = Owner::move;
+  tick();
+  return reply_ok(c.head());
+}
+
+Unit::Reply Unit::cmd_step(const Command& c) {
+  if (c.fields.size() != 2) return reply_error(c.head(), Error::parameter_count);
+  Reader r(c.fields);
+  const double x = r.number(0, -kMaxStepDeg, kMaxStepDeg);
+  const double y = r.number(1, -kMaxStepDeg, kMaxStepDeg);
+  if (!r.ok()) return reply_error(c.head(), r.error());
+  take_control();
+  const auto& st = station_.rotator().status();
+  if (!st.has_position && !st.target) return reply_error(c.head(), Error::not_allowed);
+  RotatorPosition p = current_position();
+  take_antenna();
+  if (tracking_) stop_tracking(false);
+  move_.reset();
+  p.az_travel += x;
+  if (y != 0.0) p.el = std::max(p.el + y, min_el());
+  command(p);
+  owner_ = Owner::go;
+  return reply_ok(c.head());
+}
+
+Unit::Reply Unit::cmd_goto(const Command& c) {
+  if (c.fields.size() != 2) return reply_error(c.head(), Error::parameter_count);
+  Reader r(c.fields);
+  const bool az_none = text::lower(c.fields[0]) == "none", el_none = text::lower(c.fields[1]) == "none";
+  const double az = az_none ? 0.0 : r.number(0, 0.0, 360.0);
+  const double el = el_none ? 0.0 : r.number(1, -90.0, 180.0);
+  if (!r.ok()) return reply_error(c.head(), r.error());
+  take_control();
+  const auto& st = station_.rotator().status();
+  if ((az_none || el_none) && !st.has_position && !st.target) return reply_error(c.head(), Error::not_allowed);
+  const RotatorPosition base = current_position();
+  take_antenna();
+  if (tracking_) stop_tracking(false);
+  move_.reset();
+  RotatorPosition p = base;
+  if (!az_none) {
+    const double axis_az = rotator::wrap360(az - s_.north_offset_deg);
+    p.az_travel = station_.rotator().model().target_for(AzEl{axis_az, 0.0}, st.has_position ? st.az.travel : base.az_travel).az_travel;
+  }
+  if (!el_none) p.el = std::max(el, min_el());
+  command(p);
+  owner_ = Owner::go;
+  return reply_ok(c.head());
+}
+
+Unit::Reply Unit::cmd_stop(const Command& c) {
+  if (!c.fields.empty()) return reply_error(c.head(), Error::parameter_count);
+  if (tracking_) station_.remote_follow(std::nullopt);
+  tracking_ = false;
+  auto_started_ = false;
+  last_track_target_.reset();
+  release();
+  station_.stop_antenna();
+  return reply_ok(c.head());
+}
+
+Unit::Reply Unit::cmd_status(const Command& c) {
+  if (!c.fields.empty()) return reply_error(c.head(), Error::parameter_count);
+  const auto& st = station_.rotator().status();
+  const Faults f = faults();
+  const double x = st.has_position ? st.az.deg : 0.0, y = st.has_position ? st.el.deg : 0.0;
+  const double true_az = st.has_position ? rotator::wrap360(x + s_.north_offset_deg) : 0.0;
+  return reply_values(c.head(), {b(f.any()), f2(true_az), f2(y), b(st.az.at_high_limit), b(st.az.at_low_limit),
+                                 b(st.el.at_high_limit), b(st.el.at_low_limit), b(tracking_),
+                                 std::to_string(static_cast<int>(track_status())), "0", "0",
+                                 std::to_string(rotator::sign(st.az.motion)), std::to_string(rotator::sign(st.el.motion)),
+                                 f2(x), f2(y), b(s_.auto_track)});
+}
+
+Unit::Reply Unit::cmd_errstatus(const Command& c) {
+  if (!c.fields.empty()) return reply_error(c.head(), Error::parameter_count);
+  const Faults f = faults();
+  return reply_values(c.head(), {b(f.link), b(f.tle_stale), b(f.tle_missing), b(f.sat_missing), b(f.download),
+                                 b(f.tracking_stopped), b(f.setup), b(f.x_motor), b(f.y_motor),
+                                 std::to_string(f.x_sensor), std::to_string(f.y_sensor), b(f.gps)});
+}
+
+Unit::Reply Unit::cmd_time(const Command& c) {
+  if (c.kind == Kind::query) {
+    if (!c.fields.empty()) return reply_error(c.head(), Error::parameter_count);
+    return reply_values(c.head(), civil_fields(clock_.now(), true));
+  }
+  if (c.fields.size() != 6 && c.fields.size() != 7) return reply_error(c.head(), Error::parameter_count);
+  Reader r(c.fields);
+  orbit::UtcTime t = r.civil(0);
+  if (c.fields.size() == 7) t += std::chrono::milliseconds(r.integer(6, 0, 999));
+  if (!r.ok()) return reply_error(c.head(), r.error());
+  clock_.set(t);
+  model_.clock_offset = clock_.offset();
+  pass_cache_ = {};
+  last_file_check_ = {};
+  spdlog::info("satrak: clock set to {}", orbit::format_iso8601(t, 3));
+  changed();
+  return reply_ok(c.head());
+}
+
+Unit::Reply Unit::cmd_start_stop_time(const Command& c) {
+  if (c.kind == Kind::query) {
+    if (!c.fields.empty()) return reply_error(c.head(), Error::parameter_count);
+    if (!s_.window) return reply_values(c.head(), std::vector<std::string>(12, "0"));
+    auto v = civil_fields(s_.window->start, false);
+    const auto w = civil_fields(s_.window->stop, false);
+    v.insert(v.end(), w.begin(), w.end());
+    return reply_values(c.head(), v);
+  }
+  if (c.fields.size() != 12) return reply_error(c.head(), Error::parameter_count);
+  std::optional<TrackWindow> win;
+  const bool clear = std::all_of(c.fields.begin(), c.fields.end(), [](const std::string& f) { return f == "0"; });
+  if (!clear) {
+    Reader r(c.fields);
+    TrackWindow w{r.civil(0), r.civil(6)};
+    if (r.ok() && w.stop <= w.start) r.fail(Error::out_of_range);
+    if (!r.ok()) return reply_error(c.head(), r.error());
+    win = w;
+  }
+  s_.window = win;
+  window_started_ = window_prepositioned_ = false;
+  if (owner_ == Owner::track && !tracking_) {  // prepositioning for the old window
+    station_.rotator().stop();
+    release();
+  }
+  changed();
+  return reply_ok(c.head());
+}
+
+Unit::Reply Unit::cmd_settings(const Command& c) {
+  if (c.kind == Kind::query) {
+    if (!c.fields.empty()) return reply_error(c.head(), Error::parameter_count);
+    return reply_values(c.head(), {b(s_.rtc_auto_update), std::to_string(s_.time_offset_ms), f2(s_.az_offset_deg),
+                                   f2(s_.el_offset_deg), std::to_string(s_.go_to_start_before_ms),
+                                   std::to_string(s_.position_base), f2(s_.min_elevation_deg), f2(s_.north_offset_deg),
+                                   std::to_string(s_.sspa_manual), std::to_string(s_.sspa_auto_option),
+                                   std::to_string(static_cast<int>(s_.source)), f2(s_.el_threshold_deg)});
+  }
+  // 11 fields as the seed's SETTINGS=, or the 12 of SETTINGS? (X11 then is the TLE source).
+  if (c.fields.size() != 11 && c.fields.size() != 12) return reply_error(c.head(), Error::parameter_count);
+  const bool with_source = c.fields.size() == 12;
+  Reader r(c.fields);
+  using namespace limits;
+  Settings n = s_;
+  if (!r.unchanged(0)) n.rtc_auto_update = r.flag(0);
+  if (!r.unchanged(1)) n.time_offset_ms = static_cast<int>(r.integer(1, -kTimeOffsetMs, kTimeOffsetMs));
+  if (!r.unchanged(2)) n.az_offset_deg = r.number(2, -kAzOffsetDeg, kAzOffsetDeg);
+  if (!r.unchanged(3)) n.el_offset_deg = r.number(3, -kElOffsetDeg, kElOffsetDeg);
+  if (!r.unchanged(4)) n.go_to_start_before_ms = static_cast<int>(r.integer(4, 0, kGoToStartBeforeMs));
+  if (!r.unchanged(5)) n.position_base = static_cast<int>(r.integer(5, 0, 1));
+  if (!r.unchanged(6)) n.min_elevation_deg = r.number(6, kMinElevationLo, kMinElevationHi);
+  if (!r.unchanged(7)) n.north_offset_deg = r.number(7, -kNorthOffsetDeg, kNorthOffsetDeg);
+  if (!r.unchanged(8)) n.sspa_manual = static_cast<int>(r.integer(8, 0, 2));
+  if (!r.unchanged(9)) n.sspa_auto_option = static_cast<int>(r.integer(9, 0, 3));
+  std::size_t th = 10;
+  if (with_source) {
+    if (!r.unchanged(10)) n.source = static_cast<TleSource>(r.integer(10, 0, 2));
+    th = 11;
+  }
+  if (!r.unchanged(th)) n.el_threshold_deg = r.number(th, kThresholdLo, kThresholdHi);
+  if (!r.ok()) return reply_error(c.head(), r.error());
+  if (n.source != s_.source) {
+    // The source needs what its own command sets.
+    if ((n.source == TleSource::web && (n.http.url.empty() || n.tle_file.empty() || n.satellite.empty())) ||
+        (n.source == TleSource::ftp && (n.ftp.host.empty() || n.ftp.file.empty() || n.ftp.satellite.empty())) ||
+        (n.source == TleSource::file && (n.tle_file.empty() || n.satellite.empty())))
+      return reply_error(c.head(), Error::not_allowed);
+  }
+  const bool pointing = n.time_offset_ms != s_.time_offset_ms || n.az_offset_deg != s_.az_offset_deg ||
+                        n.el_offset_deg != s_.el_offset_deg || n.min_elevation_deg != s_.min_elevation_deg ||
+                        n.north_offset_deg != s_.north_offset_deg || n.el_threshold_deg != s_.el_threshold_deg;
+  const bool threshold = n.el_threshold_deg != s_.el_threshold_deg;
+  const bool source = n.source != s_.source;
+  s_ = n;
+  if (threshold) pass_cache_ = {};
+  if (pointing) pointing_changed();
+  if (source) {
+    ++download_generation_;
+    download_in_flight_ = false;
+    next_download_.reset();
+    if (s_.source != TleSource::file) next_download_ = clock_.now();
+    apply_load(load_file(active_file(), active_satellite()));
+  }
+  changed();
+  if (tracking_ && pointing) track(clock_.now());
+  return reply_ok(c.head());
+}
+
+Unit::Reply Unit::cmd_angle_settings(const Command& c) {
+  const rotator::AdcModel& m = station_.rotator().model();
+  if (c.kind == Kind::query) {
+    if (!c.fields.empty()) return reply_error(c.head(), Error::parameter_count);
+    return reply_values(c.head(), {std::to_string(s_.az_sensor_ref), f2(m.az_deg_from_raw(s_.az_sensor_ref)),
+                                   std::to_string(s_.el_sensor_ref), f2(m.el_deg_from_raw(s_.el_sensor_ref))});
+  }
+  if (c.fields.size() != 5) return reply_error(c.head(), Error::parameter_count);
+  Reader r(c.fields);
+  const bool automatic = r.flag(0);
+  long long sx = r.integer(1, -100000, 100000);
+  const double ax = r.number(2, -360.0, 360.0);
+  long long sy = r.integer(3, -100000, 100000);
+  const double ay = r.number(4, -90.0, 180.0);
+  if (!r.ok()) return reply_error(c.head(), r.error());
+  if (automatic) {
+    const auto raw = station_.rotator().raw_counts();
+    if (!raw) return reply_error(c.head(), Error::not_allowed);
+    sx = raw->az;
+    sy = raw->el;
+  }
+  // The skew that makes sensor count sx read angle ax (and sy read ay): menu 6-3's skew.
+  rotator::RotatorConfig cfg = model_.rotator;
+  const double start = m.start_deg();
+  const double here = m.az_travel_from_counts(m.corrected(rotator::Axis::az, static_cast<double>(sx)));
+  double travel = rotator::wrap360(ax - start);
+  for (int k = -2; k <= 2; ++k) {
+    const double t = rotator::wrap360(ax - start) + 360.0 * k;
+    if (std::abs(t - here) < std::abs(travel - here)) travel = t;
+  }
+  const double az_skew = std::round(m.counts_from_az_travel(travel) - static_cast<double>(sx));
+  const double el_skew = std::round(m.counts_from_el(ay) - static_cast<double>(sy));
+  if (std::abs(az_skew) > 1023 || std::abs(el_skew) > 1023) return reply_error(c.head(), Error::out_of_range);
+  cfg.az_skew = static_cast<int>(az_skew);
+  cfg.el_skew = static_cast<int>(el_skew);
+  if (!rotator::validate(cfg).empty()) return reply_error(c.head(), Error::out_of_range);
+  model_.rotator = cfg;
+  s_.az_sensor_ref = static_cast<int>(sx);
+  s_.el_sensor_ref = static_cast<int>(sy);
+  station_.reconfigure();
+  if (commanded_) commanded_ = station_.rotator().status().target;
+  pointing_changed();
+  spdlog::info("satrak: angle references set: skew {} / {} counts", cfg.az_skew, cfg.el_skew);
+  changed();
+  return reply_ok(c.head());
+}
+
+Unit::Reply Unit::cmd_gps_data(const Command& c) {
+  if (!c.fields.empty()) return reply_error(c.head(), Error::parameter_count);
+  std::vector<std::string> v = {format_latitude(model_.station.lat_deg), format_longitude(model_.station.lon_deg), "0"};
+  const auto t = civil_fields(clock_.now(), false, true);
+  v.insert(v.end(), t.begin(), t.end());
+  return reply_values(c.head(), v);
+}
+
+Unit::Reply Unit::cmd_tpos(const Command& c) {
+  if (!c.fields.empty()) return reply_error(c.head(), Error::parameter_count);
+  const auto& st = station_.rotator().status();
+  std::vector<std::string> v = {f2(st.has_position ? st.az.deg : 0.0), f2(st.has_position ? st.el.deg : 0.0)};
+  const auto t = civil_fields(clock_.now(), true);
+  v.insert(v.end(), t.begin(), t.end());
+  return reply_values(c.head(), v);
+}
+
+Unit::Reply Unit::cmd_track(const Command& c) {
+  if (c.fields.size() != 1) return reply_error(c.head(), Error::parameter_count);
+  Reader r(c.fields);
+  const bool on = r.flag(0);
+  if (!r.ok()) return reply_error(c.head(), r.error());
+  if (!on) {
+    stop_tracking(false);
+    return reply_ok(c.head());
+  }
+  take_control();
+  if (!sgp4_) return reply_error(c.head(), active_satellite().empty() ? Error::not_allowed : Error::satellite_not_found);
+  spdlog::info("satrak: tracking {}", elements_->label());
+  start_tracking();
+  return reply_ok(c.head());
+}
+
+Unit::Reply Unit::cmd_track_auto(const Command& c) {
+  if (c.fields.size() != 1) return reply_error(c.head(), Error::parameter_count);
+  Reader r(c.fields);
+  const bool on = r.flag(0);
+  if (!r.ok()) return reply_error(c.head(), r.error());
+  s_.auto_track = on;
+  if (!on) {
+    if (auto_started_) stop_tracking(false);
+    if (owner_ == Owner::track && !tracking_) {
+      station_.rotator().stop();
+      release();
+    }
+  }
+  changed();
+  return reply_ok(c.head());
+}
+
+Unit::Reply Unit::cmd_rtc_reupdate(const Command& c) {
+  if (!c.fields.empty()) return reply_error(c.head(), Error::parameter_count);
+  return reply_error(c.head(), Error::not_allowed);  // no GPS receiver: never locked
+}
+
+Unit::Reply Unit::cmd_gps_settings(const Command& c) {
+  if (c.kind == Kind::query) {
+    if (!c.fields.empty()) return reply_error(c.head(), Error::parameter_count);
+    return reply_values(c.head(), {b(s_.gps_auto), format_latitude(model_.station.lat_deg),
+                                   format_longitude(model_.station.lon_deg)});
+  }
+  if (c.fields.size() != 3) return reply_error(c.head(), Error::parameter_count);
+  Reader r(c.fields);
+  const bool automatic = r.flag(0);
+  std::optional<double> lat, lon;
+  if (r.ok() && !r.unchanged(1)) {
+    lat = parse_latitude(c.fields[1]);
+    if (!lat) r.fail(coordinate_error(c.fields[1], "NS"));
+  }
+  if (r.ok() && !r.unchanged(2)) {
+    lon = parse_longitude(c.fields[2]);
+    if (!lon) r.fail(coordinate_error(c.fields[2], "EW"));
+  }
+  if (!r.ok()) return reply_error(c.head(), r.error());
+  s_.gps_auto = automatic;
+  if (lat || lon) {
+    if (lat) model_.station.lat_deg = *lat;
+    if (lon) model_.station.lon_deg = *lon;
+    station_.reconfigure();
+    if (commanded_) commanded_ = station_.rotator().status().target;
+    pass_cache_ = {};
+    pointing_changed();
+  }
+  changed();
+  return reply_ok(c.head());
+}
+
+Unit::Reply Unit::cmd_reduction(const Command& c) {
+  if (c.kind == Kind::query) {
+    if (!c.fields.empty()) return reply_error(c.head(), Error::parameter_count);
+    return reply_values(c.head(), {num_text(s_.reduction_x), num_text(s_.reduction_y)});
+  }
+  if (c.fields.size() != 2) return reply_error(c.head(), Error::parameter_count);
+  Reader r(c.fields);
+  const double x = r.number(0, 0.0, limits::kReductionMax);
+  const double y = r.number(1, 0.0, limits::kReductionMax);
+  if (r.ok() && (x <= 0.0 || y <= 0.0)) r.fail(Error::out_of_range);
+  if (!r.ok()) return reply_error(c.head(), r.error());
+  s_.reduction_x = x;
+  s_.reduction_y = y;
+  changed();
+  return reply_ok(c.head());
+}
+
+}  // namespace tb::satrak
