@@ -1,0 +1,257 @@
+#include "app/station_app.h"
+
+#include <poll.h>
+#include <unistd.h>
+
+#include <boost/asio/executor_work_guard.hpp>
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/signal_set.hpp>
+#include <boost/asio/steady_timer.hpp>
+#include <algorithm>
+#include <csignal>
+#include <fstream>
+#include <sstream>
+
+#include <spdlog/spdlog.h>
+
+#include "radio/freqmode.h"
+#include "satrak/unit.h"
+#include "station/clock.h"
+#include "store/database.h"
+#include "tracker/station_loop.h"
+
+namespace tb::app {
+namespace asio = boost::asio;
+
+namespace {
+std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return {};
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+}  // namespace
+
+store::Model defaults_with_data(const std::string& data_dir, std::vector<std::string>& notes) {
+  store::Model m = store::factory_defaults();
+  const auto sets = orbit::load_elements_file(data_dir + "/amateur.tle");
+  for (const auto& p : sets.problems) notes.push_back(p.message());
+  const auto fm = radio::parse_freqmode(read_text(data_dir + "/freqmode.txt"));
+  for (const auto& p : fm.problems) notes.push_back(data_dir + "/freqmode.txt: " + p.message());
+  m.db = store::make_database(sets.sets, fm.records);
+  return m;
+}
+
+struct StationApp::Impl {
+  Impl(store::Model model, store::StateFile file, std::shared_ptr<spdlog::logger> log)
+      : model(std::move(model)), file(std::move(file)), log(std::move(log)), tracker(this->model, clock) {
+    clock.set_offset(this->model.clock_offset);
+  }
+
+  // SIGTERM, SIGINT and SIGHUP end the wait of the front end (Shutdown).
+  void arm_signals() {
+    signals.async_wait([this](const boost::system::error_code& ec, int sig) {
+      if (ec) return;
+      last_signal = sig;
+      log->info("signal {}: {}", sig, sig == SIGHUP && unattended ? "re-reading the elements" : "saving and leaving");
+      throw Shutdown{};
+    });
+  }
+  void schedule_tick() { arm_tick(std::min(station->next_tick_in(), tick)); }
+  // (Re)arms the tick timer; a wait already pending is cancelled (its handler sees the abort).
+  void arm_tick(std::chrono::milliseconds in) {
+    started = true;
+    timer.expires_after(in);
+    timer.async_wait([this](const boost::system::error_code& ec) {
+      if (ec) return;
+      station->tick();
+      if (terminal) terminal->status(station->status_line());
+      schedule_tick();
+    });
+  }
+  void run_forever() {
+    for (;;) {
+      if (io.stopped()) io.restart();
+      io.run_one();
+    }
+  }
+  // Runs the event loop until `done` holds or `limit` passes (steady time).
+  void run_until(const std::function<bool()>& done, std::chrono::milliseconds limit, StationApp& app) {
+    const auto end = std::chrono::steady_clock::now() + limit;
+    while (!done() && std::chrono::steady_clock::now() < end) app.wait_readable(-1, std::chrono::milliseconds(50));
+  }
+  void start_stored_tracking();
+  bool reread_data(const std::string& data_dir);  // false: the element file was not used
+  void park_before_leaving(StationApp& app);
+
+  asio::io_context io;
+  asio::executor_work_guard<asio::io_context::executor_type> work = asio::make_work_guard(io);
+  asio::signal_set signals{io, SIGTERM, SIGHUP, SIGINT};
+  asio::steady_timer timer{io};
+  std::chrono::milliseconds tick{1000};
+  bool started = false;  // the tick timer runs (start() was called)
+  int last_signal = 0;
+  bool unattended = false;
+  store::Model model;
+  store::StateFile file;
+  std::shared_ptr<spdlog::logger> log;
+  station::RealTimeClock clock;
+  tracker::Tracker tracker;
+  std::unique_ptr<tracker::StationLoop> station;
+  term::Terminal* terminal = nullptr;
+  satrak::Unit* satrak = nullptr;
+  nlohmann::json satrak_saved;  // kept as loaded when the Satrak server is off
+};
+
+StationApp::StationApp(store::Model model, store::StateFile file, std::shared_ptr<spdlog::logger> log)
+    : impl_(std::make_unique<Impl>(std::move(model), std::move(file), std::move(log))) {}
+StationApp::~StationApp() = default;
+
+station::RealTimeClock& StationApp::clock() { return impl_->clock; }
+store::Model& StationApp::model() { return impl_->model; }
+tracker::Tracker& StationApp::tracker() { return impl_->tracker; }
+tracker::StationLoop& StationApp::station() { return *impl_->station; }
+boost::asio::io_context& StationApp::io() { return impl_->io; }
+spdlog::logger& StationApp::log() { return *impl_->log; }
+void StationApp::set_terminal(term::Terminal* t) { impl_->terminal = t; }
+void StationApp::set_satrak(satrak::Unit* unit) { impl_->satrak = unit; }
+void StationApp::set_satrak_saved(const nlohmann::json& saved) { impl_->satrak_saved = saved; }
+
+void StationApp::build_station(std::unique_ptr<rotator::RotatorDriver> rot, std::unique_ptr<radio::RadioDriver> rad) {
+  Impl& m = *impl_;
+  auto controller = std::make_unique<rotator::Controller>(m.model.rotator, m.model.station.rotor_start, std::move(rot));
+  m.station = std::make_unique<tracker::StationLoop>(m.model, m.clock, m.tracker, std::move(controller), std::move(rad));
+  m.station->on_wake([&m] {
+    if (m.started) m.arm_tick(std::chrono::milliseconds(0));
+  });
+}
+
+void StationApp::start(std::chrono::milliseconds tick) {
+  impl_->tick = tick;
+  impl_->arm_signals();
+  impl_->schedule_tick();
+}
+
+bool StationApp::wait_readable(int fd, std::optional<term::Duration> timeout) {
+  asio::io_context& io = impl_->io;
+  const auto deadline = timeout ? std::optional(std::chrono::steady_clock::now() + *timeout) : std::nullopt;
+  for (;;) {
+    if (io.stopped()) io.restart();
+    io.poll();
+    int ms = 20;
+    if (deadline) {
+      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(*deadline - std::chrono::steady_clock::now());
+      ms = static_cast<int>(std::clamp<long long>(left.count(), 0, 20));
+    }
+    if (fd >= 0) {
+      pollfd p{fd, POLLIN, 0};
+      if (::poll(&p, 1, ms) > 0) return true;
+    } else if (ms > 0) {
+      ::usleep(static_cast<useconds_t>(ms) * 1000);
+    }
+    if (deadline && std::chrono::steady_clock::now() >= *deadline) return false;
+  }
+}
+
+std::optional<std::string> StationApp::save() {
+  Impl& m = *impl_;
+  m.model.clock_offset = m.clock.offset();
+  std::string err;
+  nlohmann::json doc = store::to_json(m.model);
+  if (m.satrak) doc["satrak"] = satrak::to_json(m.satrak->settings());
+  else if (!m.satrak_saved.is_null()) doc["satrak"] = m.satrak_saved;
+  if (!m.file.save(doc, err)) {
+    m.log->error("state not saved: {}", err);
+    return err;
+  }
+  return std::nullopt;
+}
+
+// --service: what the stored configuration says to track. The first multi_count satellites of the
+// tracking list in multiple tracking (the stored normal or priority sub-mode) when the list holds
+// two or more; else the satellite marked '*' (or #1) alone.
+void StationApp::Impl::start_stored_tracking() {
+  const store::Database& db = model.db;
+  if (db.selected.size() >= 2 && db.multi_count >= 2) {
+    tracker.track_multi(model.priority_mode);
+    log->info("service: multiple tracking of the first {} of the tracking list ({} mode)", db.multi_count,
+              model.priority_mode ? "priority" : "normal");
+  } else if (const auto marked = db.marked_index()) {
+    tracker.track_single(*marked);
+    log->info("service: tracking {}", db.satellites[static_cast<std::size_t>(*marked)].elements.name);
+  } else if (!db.selected.empty()) {
+    tracker.track_single(db.selected.front());
+  } else {
+    log->warn("service: the tracking list is empty: nothing to track");
+  }
+  if (!station->rotor_control()) log->warn("service: rotor control is off (E key): the antenna will not move");
+}
+
+// SIGHUP: the element sets of the data directory's amateur.tle replace those of the same catalog
+// numbers in the database (the operator refreshed the file); the rest stays as it is. Then the
+// freq/mode file: the radio entries of the satellites it names; the operator's tracking list
+// (which a 3-3 upload would rebuild in the file's order) stays as it is.
+bool StationApp::Impl::reread_data(const std::string& data_dir) {
+  const std::string path = data_dir + "/amateur.tle";
+  const orbit::ParseResult parsed = orbit::load_elements_file(path);
+  if (parsed.sets.empty()) {
+    log->warn("SIGHUP: {} not used: {}", path,
+              parsed.problems.empty() ? "no element set" : parsed.problems.front().message());
+    return false;
+  }
+  int updated = 0;
+  for (auto& sat : model.db.satellites)
+    for (const auto& e : parsed.sets)
+      if (e.catalog_number == sat.elements.catalog_number &&
+          !(e.epoch_year == sat.elements.epoch_year && e.epoch_day == sat.elements.epoch_day)) {
+        sat.elements = e;
+        ++updated;
+      }
+  log->info("SIGHUP: {} element set(s) updated from {}", updated, path);
+  const std::string fm_path = data_dir + "/freqmode.txt";
+  const auto fm = radio::parse_freqmode(read_text(fm_path));
+  for (const auto& problem : fm.problems) log->warn("SIGHUP: {}: {}", fm_path, problem.message());
+  if (!fm.records.empty()) {
+    store::Database db = model.db;
+    const store::FreqModeUpload up = store::apply_freqmode(db, fm.records);
+    db.selected = model.db.selected;
+    db.marked = model.db.marked;
+    model.db = std::move(db);
+    log->info("SIGHUP: radio entries of {} satellite(s) read from {}", up.updated.size(), fm_path);
+  }
+  return true;
+}
+
+// SIGTERM: park first when parking is on (within two minutes), then the caller saves.
+void StationApp::Impl::park_before_leaving(StationApp& app) {
+  if (!model.rotator.parking_enabled || !station->rotor_control()) return;
+  tracker.stop();
+  if (!station->rotator().park()) return;
+  log->info("service: parking the antenna");
+  run_until([this] { return station->rotator().status().on_target; }, std::chrono::minutes(2), app);
+  log->info("service: antenna {}", station->rotator().status().on_target ? "parked" : "not parked in time");
+}
+
+int StationApp::run_service(const std::string& data_dir) {
+  Impl& m = *impl_;
+  m.unattended = true;
+  m.start_stored_tracking();
+  for (;;) {
+    try {
+      m.run_forever();
+    } catch (const Shutdown&) {
+      if (m.last_signal == SIGHUP) {
+        if (m.reread_data(data_dir)) save();
+        m.arm_signals();
+        continue;
+      }
+    }
+    break;
+  }
+  m.arm_signals();
+  m.park_before_leaving(*this);
+  return 0;
+}
+
+}  // namespace tb::app

@@ -1,0 +1,91 @@
+// The running station of `trakbox [options]`: the model and its state file, the clock, the
+// tracker and the StationLoop on one Asio event loop, the tick timer, the signals, and saving.
+// Asio stays behind a pimpl: the menus' terminals wait through wait_readable(), the servers get
+// io(). The unattended front end (--service) is here too (run_service).
+#pragma once
+#include <chrono>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "menus/term/terminal.h"
+#include "store/model.h"
+#include "store/state_file.h"
+
+namespace boost::asio {
+class io_context;
+}
+namespace spdlog {
+class logger;
+}
+namespace tb::radio {
+class RadioDriver;
+}
+namespace tb::rotator {
+class RotatorDriver;
+}
+namespace tb::satrak {
+class Unit;
+}
+namespace tb::station {
+class RealTimeClock;
+}
+namespace tb::tracker {
+class StationLoop;
+class Tracker;
+}
+
+namespace tb::app {
+
+// Thrown out of the event loop by SIGTERM, SIGINT and SIGHUP: it ends the wait of the front end;
+// StationApp::last_signal() says which signal it was.
+struct Shutdown {};
+
+class StationApp {
+ public:
+  StationApp(store::Model model, store::StateFile file, std::shared_ptr<spdlog::logger> log);
+  ~StationApp();
+  StationApp(const StationApp&) = delete;
+  StationApp& operator=(const StationApp&) = delete;
+
+  station::RealTimeClock& clock();
+  store::Model& model();
+  tracker::Tracker& tracker();
+  tracker::StationLoop& station();
+  boost::asio::io_context& io();
+  spdlog::logger& log();
+
+  void build_station(std::unique_ptr<rotator::RotatorDriver> rot, std::unique_ptr<radio::RadioDriver> rad);
+  // Starts the tick timer (every `tick`, sooner when the station asks) and the signal wait.
+  void start(std::chrono::milliseconds tick);
+
+  // The terminal's way of waiting: run the event loop until fd is readable (fd < 0: only the
+  // timeout) or the timeout passes.
+  bool wait_readable(int fd, std::optional<term::Duration> timeout);
+  void set_terminal(term::Terminal* t);  // gets the status line after every tick
+
+  // Settings of the Satrak unit, persisted beside the model (data["satrak"]); `saved` is what the
+  // state held, kept as it was while the Satrak server is off.
+  void set_satrak(satrak::Unit* unit);
+  void set_satrak_saved(const nlohmann::json& saved);
+  // Writes the state document; the reason when it could not.
+  std::optional<std::string> save();
+
+  // --service: tracks what the stored configuration says, serves, re-reads the data directory's
+  // element and freq/mode files on SIGHUP, and on SIGTERM parks (when parking is on). Returns the
+  // exit status; the caller saves.
+  int run_service(const std::string& data_dir);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Factory defaults plus the shipped database of data_dir (what a fresh TrakBox with a loaded
+// database is); problems with the files are added to notes.
+store::Model defaults_with_data(const std::string& data_dir, std::vector<std::string>& notes);
+
+}  // namespace tb::app

@@ -1,0 +1,160 @@
+#include "app/tracker_config.h"
+
+#include <cstdio>
+#include <cstdlib>
+
+#include "app/build_info.h"
+#include "menus/term/line_terminal.h"
+#include "store/state_file.h"
+
+namespace tb::app {
+
+std::vector<OptionSpec> tracker_option_specs() {
+  return {
+      {"help", "", "this list"},
+      {"version", "", "the program version"},
+      {"state", "DIR", "state directory (default $XDG_STATE_HOME/trakbox)"},
+      {"data", "DIR", "shipped data for a fresh start (default $TRAKBOX_DATA, else PREFIX/share/trakbox of an "
+                      "installed trakbox, else the source tree's data/ for a build that is not installed)"},
+      {"tty", "DEVICE", "run the menus as plain lines on this serial port (e.g. /dev/ttyS0)"},
+      {"baud", "N", "serial port speed with --tty: 1200, 2400, 4800, 9600 (default) or 19200, 8N1"},
+      {"line", "", "plain lines on stdin/stdout even when they are a terminal"},
+      {"standalone", "N", "track selector position N (1-15) with no menus: LCD and AOS LED"},
+      {"service", "", "unattended (a system service): no terminal, no standard input; tracks the stored "
+                      "tracking list, serves the enabled ports, logs to standard error too; SIGTERM parks "
+                      "(when parking is on), saves and exits 0; SIGHUP re-reads the data directory's element and "
+                      "freq/mode files"},
+      {"clock", "ISO8601", "start the real-time clock at this UTC time (e.g. 2026-05-21T12:00:00Z)"},
+      {"clock-rate", "R", "run the clock R times faster than real time (with or without --clock)"},
+      {"rotator", "SPEC", "simulated (default), hamlib:MODEL:DEVICE[:BAUD], rotctld:HOST[:PORT]"},
+      {"radio", "SPEC", "simulated (default), icom:DEV, kenwood:DEV, yaesu:DEV, cat:DEV (rig of menu 6-7), "
+                        "hamlib:MODEL:DEV[:BAUD], rigctld[:HOST[:PORT]]"},
+      {"tick-ms", "MS", "tracking interval in milliseconds, 100 to 1000 (default 1000)"},
+      {"satrak-port", "N", "Satrak ACU protocol on TCP port N (default 4001; 0 turns it off)"},
+      {"satrak-bind", "ADDR", "address the Satrak server listens on (default 127.0.0.1)"},
+      {"rotctld-port", "N", "answer the rotctld protocol on TCP port N (4533 by convention; off by default)"},
+      {"rigctld-port", "N", "answer the rigctld protocol on TCP port N (4532 by convention; off by default)"},
+      {"host-port", "N", "host mode (menu 7's commands) on TCP port N (off by default)"},
+      {"listen", "ADDR", "address the host, rotctld and rigctld servers listen on (default 127.0.0.1)"},
+      {"allow", "CIDR", "only clients in this address range may connect to any TCP endpoint (repeatable; "
+                        "e.g. 192.168.1.0/24, 2001:db8::/32, 10.0.0.5); others are refused", true},
+      {"log-level", "LEVEL", "what trakbox.log in the state directory keeps: error, warn, info (default) or "
+                             "debug (every remote command and its reply)"},
+  };
+}
+
+std::string default_data_directory() {
+  if (const char* d = std::getenv("TRAKBOX_DATA"); d && *d) return d;
+  // Installed: PREFIX/bin/trakbox finds PREFIX/share/trakbox. Only a binary that runs from the build
+  // tree it was built in takes the source tree's data/; an installed one never opens the checkout.
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (ec) return TRAKBOX_DATA_DIR;
+  const std::filesystem::path installed = exe.parent_path().parent_path() / "share" / "trakbox";
+  const std::string build_dir = TRAKBOX_BUILD_DIR;
+  const bool in_build_tree = exe.string().rfind(build_dir + "/", 0) == 0;
+  if (in_build_tree && !std::filesystem::exists(installed / "amateur.tle", ec)) return TRAKBOX_DATA_DIR;
+  return installed.string();
+}
+
+namespace {
+
+std::optional<spdlog::level::level_enum> log_level_named(const std::string& l) {
+  if (l == "error") return spdlog::level::err;
+  if (l == "warn") return spdlog::level::warn;
+  if (l == "info") return spdlog::level::info;
+  if (l == "debug") return spdlog::level::debug;
+  return std::nullopt;
+}
+
+// The device specs, checked before anything starts.
+void read_devices(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
+  const std::string rot_text = o.value("rotator").value_or("simulated");
+  if (rot_text.rfind("satrak:", 0) == 0) {
+    std::string err;
+    c.satrak_rotator = satrak::parse_rotator_spec(rot_text, err);
+    if (!c.satrak_rotator) r.fail("--rotator", err);
+  } else {
+    rotator::SpecResult rot_spec = rotator::parse_rotator_spec(rot_text);
+    c.rotator = rot_spec.spec;
+    if (!rot_spec.spec) r.fail("--rotator", rot_spec.error);
+  }
+  const auto radio_spec = radio::parse_radio_spec(o.value("radio").value_or("simulated"));
+  if (radio_spec.spec) c.radio = *radio_spec.spec;
+  else r.fail("--radio", radio_spec.error);
+}
+
+// Front ends that cannot go together.
+void check_front_end(const ParsedOptions& o, OptionReader& r, FrontEnd front_end) {
+  const bool service = o.has("service");
+  for (const char* other : {"tty", "line", "standalone"})
+    if (service && o.has(other)) r.fail("--service", std::string("not with --") + other + " (a service has no terminal)");
+  if (service && front_end == FrontEnd::host) r.fail("--service", "not with trakbox host");
+  if (front_end == FrontEnd::host && (o.has("tty") || o.has("standalone")))
+    r.fail(o.has("tty") ? "--tty" : "--standalone", "not with trakbox host (host mode talks on stdin/stdout)");
+}
+
+}  // namespace
+
+ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEnd front_end) {
+  const auto specs = tracker_option_specs();
+  const ParseOutcome parsed = parse_options(args, specs);
+  if (parsed.error) return ConfigOutcome::refuse(parsed.error->text());
+  const ParsedOptions& o = parsed.options;
+  if (o.has("help"))
+    return ConfigOutcome::text("usage: trakbox [options]                 the TrakBox menus on the simulated station\n"
+                     "       trakbox propagate|schedule|passes ...   non-interactive orbit commands (--help each)\n\n" +
+                     describe_options(specs));
+  if (o.has("version")) return ConfigOutcome::text(std::string("trakbox ") + kVersion + "\n");
+  if (!o.positional().empty()) return ConfigOutcome::refuse("unexpected argument '" + o.positional().front() + "'");
+
+  TrackerConfig c;
+  c.front_end = front_end;
+  OptionReader r(o);
+  const auto baud = r.integer("baud", false, "1200, 2400, 4800, 9600 or 19200");
+  if (baud && !term::valid_terminal_baud(static_cast<int>(*baud)))
+    r.fail("--baud", "expected 1200, 2400, 4800, 9600 or 19200; found '" + *o.value("baud") + "'");
+  if (baud) c.baud = static_cast<int>(*baud);
+  if (const auto v = r.integer("standalone", false, "a selector position 1 to 15", Range{1, 15}))
+    c.standalone = static_cast<int>(*v);
+  c.clock_rate = r.number("clock-rate", false, "a rate > 0 (1 is real time)", Range{0.0, 10000.0, true});
+  if (const auto v = r.integer("tick-ms", false, "milliseconds, 100 to 1000", Range{100, 1000}))
+    c.tick_ms = static_cast<int>(*v);
+  if (const auto v = r.integer("satrak-port", false, "a TCP port 0 to 65535 (0: off)", Range{0, 65535})) {
+    c.satrak_port = static_cast<int>(*v);
+    c.satrak_port_explicit = true;
+  }
+  auto port = [&r](const char* name, std::optional<int>& out) {
+    if (const auto v = r.integer(name, false, "a TCP port 1 to 65535", Range{1, 65535})) out = static_cast<int>(*v);
+  };
+  port("rotctld-port", c.rotctld_port);
+  port("rigctld-port", c.rigctld_port);
+  port("host-port", c.host_port);
+  if (const auto t = o.value("clock")) {
+    c.clock_start = orbit::parse_iso8601(*t);
+    if (!c.clock_start) r.fail("--clock", "expected an ISO 8601 UTC time like 2026-05-21T12:00:00Z; found '" + *t + "'");
+  }
+  read_devices(o, r, c);
+  if (const auto l = o.value("log-level")) {
+    if (const auto level = log_level_named(*l)) c.log_level = *level;
+    else r.fail("--log-level", "expected error, warn, info or debug; found '" + *l + "'");
+  }
+  if (o.has("tty") && o.has("line")) r.fail("--line", "not with --tty (a serial port is always plain lines)");
+  for (const std::string& a : o.values("allow")) {
+    if (const auto cidr = net::parse_cidr(a)) c.allow.push_back(*cidr);
+    else r.fail("--allow", "expected an address or ADDRESS/PREFIX (192.168.1.0/24, ::1); found '" + a + "'");
+  }
+  check_front_end(o, r, front_end);
+  if (!r.ok()) return ConfigOutcome::refuse(r.error()->text());
+
+  c.tty = o.value("tty");
+  c.line = o.has("line");
+  c.service = o.has("service");
+  c.satrak_bind = o.value("satrak-bind").value_or("127.0.0.1");
+  c.listen = o.value("listen").value_or("127.0.0.1");
+  c.state_dir = o.value("state") ? std::filesystem::path(*o.value("state")) : store::default_state_directory();
+  c.data_dir = o.value("data").value_or(default_data_directory());
+  return ConfigOutcome::run(std::move(c));
+}
+
+}  // namespace tb::app

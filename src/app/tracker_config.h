@@ -1,0 +1,73 @@
+// The options of `trakbox [options]` and `trakbox host`, read and checked before anything starts:
+// every value has its type and range, device specs are parsed, combinations that cannot work are
+// refused. Pure: arguments in, a TrackerConfig or a one-line error out (tests/unit/app).
+#pragma once
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <spdlog/common.h>
+
+#include "app/options.h"
+#include "orbit/time.h"
+#include "radio/factory.h"
+#include "rotator/factory.h"
+#include "satrak/client.h"
+#include "util/cidr.h"
+
+namespace tb::app {
+
+std::vector<OptionSpec> tracker_option_specs();
+
+// How the program talks to its operator.
+enum class FrontEnd {
+  menus,  // the TrakBox menus (or standalone with --standalone)
+  host,   // `trakbox host`: host mode (menu 7's command set) on stdin/stdout, no echo; Q ends
+};
+
+struct TrackerConfig {
+  FrontEnd front_end = FrontEnd::menus;
+  std::filesystem::path state_dir;  // --state, else the default state directory
+  std::string data_dir;             // --data, else default_data_directory()
+  std::optional<std::string> tty;   // --tty DEVICE
+  std::optional<int> baud;          // --baud (else the station's COM speed)
+  bool line = false;                // --line
+  bool service = false;             // --service
+  std::optional<int> standalone;    // --standalone N (1..15)
+  std::optional<orbit::UtcTime> clock_start;
+  std::optional<double> clock_rate;
+  int tick_ms = 1000;
+  // The rotator: a Satrak ACU (satrak:HOST[:PORT]) or a rotator driver spec.
+  std::optional<satrak::SatrakRotatorOptions> satrak_rotator;
+  std::optional<rotator::RotatorSpec> rotator;
+  radio::RadioSpec radio;
+  // Endpoints. satrak_port 0 is off; explicit says --satrak-port was given (a busy port is then an
+  // error rather than a note).
+  int satrak_port = 4001;
+  bool satrak_port_explicit = false;
+  std::string satrak_bind = "127.0.0.1";
+  std::optional<int> rotctld_port, rigctld_port, host_port;
+  std::string listen = "127.0.0.1";
+  std::vector<net::Cidr> allow;
+  spdlog::level::level_enum log_level = spdlog::level::info;
+};
+
+// What the command line asks for: run with a configuration, print a text and exit 0 (--help,
+// --version), or refuse with a usage error.
+struct ConfigOutcome {
+  std::optional<TrackerConfig> config;
+  std::string print;                  // --help / --version text (config empty, error empty)
+  std::optional<std::string> error;   // "--baud: expected ..." (exit kExitUsage)
+  static ConfigOutcome run(TrackerConfig c) { return {std::move(c), {}, std::nullopt}; }
+  static ConfigOutcome text(std::string t) { return {std::nullopt, std::move(t), std::nullopt}; }
+  static ConfigOutcome refuse(std::string e) { return {std::nullopt, {}, std::move(e)}; }
+};
+ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEnd front_end);
+
+// Where the shipped data lives: --data, else $TRAKBOX_DATA, else PREFIX/share/trakbox of an installed
+// binary, else (a binary in its own build tree) the source tree's data/.
+std::string default_data_directory();
+
+}  // namespace tb::app

@@ -1,0 +1,82 @@
+// parse_tracker_config (app/tracker_config.h): the options of `trakbox [options]` read and checked
+// before anything starts, as a value the rest of run_tracker takes.
+#include <doctest/doctest.h>
+
+#include "app/tracker_config.h"
+
+using namespace tb::app;
+
+namespace {
+ConfigOutcome parse(std::vector<std::string> args, FrontEnd fe = FrontEnd::menus) {
+  return parse_tracker_config(args, fe);
+}
+std::string error_of(std::vector<std::string> args, FrontEnd fe = FrontEnd::menus) {
+  const auto o = parse(std::move(args), fe);
+  return o.error.value_or("");
+}
+}  // namespace
+
+TEST_CASE("no options: the simulated station on loopback with the default Satrak port") {
+  const auto o = parse({"--state", "/tmp/x", "--data", "/tmp/d"});
+  REQUIRE(o.config);
+  const TrackerConfig& c = *o.config;
+  CHECK(c.state_dir == "/tmp/x");
+  CHECK(c.data_dir == "/tmp/d");
+  CHECK(c.satrak_port == 4001);
+  CHECK_FALSE(c.satrak_port_explicit);
+  CHECK(c.satrak_bind == "127.0.0.1");
+  CHECK(c.listen == "127.0.0.1");
+  CHECK(c.tick_ms == 1000);
+  CHECK(c.rotator);
+  CHECK_FALSE(c.satrak_rotator);
+  CHECK_FALSE(c.rotctld_port);
+  CHECK(c.allow.empty());
+  CHECK(c.log_level == spdlog::level::info);
+  CHECK_FALSE(c.service);
+}
+
+TEST_CASE("values are typed and ranged") {
+  const auto o = parse({"--satrak-port", "0", "--rotctld-port", "4533", "--tick-ms", "250", "--standalone", "3",
+                        "--clock", "2026-05-21T12:00:00Z", "--clock-rate", "20", "--allow", "192.168.1.0/24",
+                        "--allow", "::1", "--log-level", "debug", "--rotator", "satrak:10.0.0.2:4001"});
+  REQUIRE(o.config);
+  CHECK(o.config->satrak_port == 0);
+  CHECK(o.config->satrak_port_explicit);
+  CHECK(o.config->rotctld_port == 4533);
+  CHECK(o.config->tick_ms == 250);
+  CHECK(o.config->standalone == 3);
+  CHECK(o.config->clock_start);
+  CHECK(o.config->clock_rate == 20.0);
+  CHECK(o.config->allow.size() == 2);
+  CHECK(o.config->log_level == spdlog::level::debug);
+  CHECK(o.config->satrak_rotator);
+  CHECK_FALSE(o.config->rotator);
+}
+
+TEST_CASE("the first bad value is named, and nothing is configured") {
+  CHECK(error_of({"--baud", "300"}) == "--baud: expected 1200, 2400, 4800, 9600 or 19200; found '300'");
+  CHECK(error_of({"--log-level", "loud"}) == "--log-level: expected error, warn, info or debug; found 'loud'");
+  CHECK(error_of({"--allow", "10.0.0.0/33"}).rfind("--allow: ", 0) == 0);
+  CHECK(error_of({"--clock", "yesterday"}).rfind("--clock: ", 0) == 0);
+  CHECK(error_of({"--tick-ms", "50"}).rfind("--tick-ms: ", 0) == 0);
+  CHECK(error_of({"extra"}) == "unexpected argument 'extra'");
+  // order: --baud is read before --log-level
+  CHECK(error_of({"--log-level", "loud", "--baud", "300"}).rfind("--baud: ", 0) == 0);
+  CHECK_FALSE(parse({"--baud", "300"}).config);
+}
+
+TEST_CASE("front ends that cannot go together are refused") {
+  CHECK(error_of({"--tty", "/dev/ttyS0", "--line"}) == "--line: not with --tty (a serial port is always plain lines)");
+  CHECK(error_of({"--service", "--line"}) == "--service: not with --line (a service has no terminal)");
+  CHECK(error_of({"--service"}, FrontEnd::host) == "--service: not with trakbox host");
+  CHECK(error_of({"--standalone", "2"}, FrontEnd::host) ==
+        "--standalone: not with trakbox host (host mode talks on stdin/stdout)");
+}
+
+TEST_CASE("--help and --version are text to print, not a configuration") {
+  const auto h = parse({"--help"});
+  CHECK_FALSE(h.config);
+  CHECK_FALSE(h.error);
+  CHECK(h.print.find("--satrak-port N") != std::string::npos);
+  CHECK(parse({"--version"}).print.rfind("trakbox ", 0) == 0);
+}
