@@ -84,115 +84,115 @@ void WorkerRadio::execute(const Job& job) {
   }
 }
 
-void WorkerRadio::run() {
-  using Clock = std::chrono::steady_clock;
-  bool open = false;
-  auto backoff = timing_.backoff_first;
-  Clock::time_point retry_at{};
-  auto fail = [&](const std::string& message) {  // with mu_ held
-    ++status_.failures;
-    if (!status_.fault || status_.message != message)
-      spdlog::warn("radio {}: {}", description_, message);
-    status_.fault = true;
-    status_.message = message;
-    retry_at = Clock::now() + backoff;
-    backoff = std::min(backoff * 2, timing_.backoff_max);
-  };
+void WorkerRadio::fail(const std::string& message) {
+  ++status_.failures;
+  if (!status_.fault || status_.message != message) spdlog::warn("radio {}: {}", description_, message);
+  status_.fault = true;
+  status_.message = message;
+  retry_at_ = std::chrono::steady_clock::now() + backoff_;
+  backoff_ = std::min(backoff_ * 2, timing_.backoff_max);
+}
 
-  std::unique_lock lock(mu_);
+void WorkerRadio::run() {
+  backoff_ = timing_.backoff_first;
+  Lock lock(mu_);
   while (true) {
     if (queue_.empty() && !busy_) idle_cv_.notify_all();
     cv_.wait(lock, [&] { return stop_ || !queue_.empty(); });
     if (stop_) break;
-    if (Clock::now() < retry_at) {
-      cv_.wait_until(lock, retry_at, [&] { return stop_; });
+    if (std::chrono::steady_clock::now() < retry_at_) {
+      cv_.wait_until(lock, retry_at_, [&] { return stop_; });
       if (stop_) break;
     }
-
-    if (!open) {
-      busy_ = true;
-      lock.unlock();
-      std::optional<LinkError> error;
-      try {
-        link_->open();
-      } catch (const LinkError& e) {
-        error = e;
-      }
-      lock.lock();
-      busy_ = false;
-      if (error) {
-        fail(error->what());
-        continue;
-      }
-      open = true;
-      status_.connected = true;
-      ++status_.connects;
-      if (status_.connects > 1) spdlog::info("radio {}: reconnected", description_);
-      // Whatever the radio was told before, tell it again.
-      for (Link l : {Link::downlink, Link::uplink}) {
-        if (want_mode_[index(l)]) enqueue_locked({Job::Kind::mode, l, 0, *want_mode_[index(l)], {}});
-        if (want_hz_[index(l)]) enqueue_locked({Job::Kind::frequency, l, *want_hz_[index(l)], Mode::none, {}});
-      }
-    }
-
-    Job job = std::move(queue_.front());
-    queue_.pop_front();
-    busy_ = true;
-    lock.unlock();
-    std::optional<LinkError> error;
-    std::string other;
-    try {
-      execute(job);
-    } catch (const LinkError& e) {
-      error = e;
-    } catch (const std::exception& e) {  // an encoder refused the value
-      other = e.what();
-    }
-    lock.lock();
-    busy_ = false;
-
-    if (!error && other.empty()) {
-      ++status_.delivered;
-      if (status_.fault) spdlog::info("radio {}: working again", description_);
-      status_.fault = false;
-      status_.message.clear();
-      backoff = timing_.backoff_first;
-      if (job.kind == Job::Kind::frequency)
-        (job.link == Link::downlink ? status_.downlink_hz : status_.uplink_hz) = job.hz;
-      if (job.kind == Job::Kind::mode)
-        (job.link == Link::downlink ? status_.downlink_mode : status_.uplink_mode) = job.mode;
-      continue;
-    }
-    if (!other.empty()) {  // not retried: the same value would fail again
-      fail(other);
-      retry_at = {};
-      continue;
-    }
-    fail(error->what());
-    if (error->action == LinkError::Action::drop) {
-      retry_at = {};
-      continue;
-    }
-    if (error->action == LinkError::Action::reconnect) {
-      lock.unlock();
-      link_->close();
-      lock.lock();
-      open = false;
-      status_.connected = false;
-    }
-    // Retry it, unless a newer value for the same thing arrived meanwhile. A command that failed
-    // on a working link goes to the back, so one silent radio (an Icom pair: RX radio switched
-    // off) does not hold up the commands for the other.
-    const bool superseded = job.kind != Job::Kind::raw &&
-        std::any_of(queue_.begin(), queue_.end(),
-                    [&](const Job& j) { return j.kind == job.kind && j.link == job.link; });
-    if (superseded) continue;
-    if (error->action == LinkError::Action::retry) queue_.push_back(std::move(job));
-    else queue_.push_front(std::move(job));
+    if (!open_ && !connect(lock)) continue;
+    deliver_next(lock);
   }
+  finish(lock);
+}
 
-  // Stopping: one attempt at what is still queued, then leave the radio tidy.
-  if (open) {
+bool WorkerRadio::connect(Lock& lock) {
+  busy_ = true;
+  lock.unlock();
+  std::optional<LinkError> error;
+  try {
+    link_->open();
+  } catch (const LinkError& e) {
+    error = e;
+  }
+  lock.lock();
+  busy_ = false;
+  if (error) {
+    fail(error->what());
+    return false;
+  }
+  open_ = true;
+  status_.connected = true;
+  ++status_.connects;
+  if (status_.connects > 1) spdlog::info("radio {}: reconnected", description_);
+  // Whatever the radio was told before, tell it again.
+  for (Link l : {Link::downlink, Link::uplink}) {
+    if (want_mode_[index(l)]) enqueue_locked({Job::Kind::mode, l, 0, *want_mode_[index(l)], {}});
+    if (want_hz_[index(l)]) enqueue_locked({Job::Kind::frequency, l, *want_hz_[index(l)], Mode::none, {}});
+  }
+  return true;
+}
+
+void WorkerRadio::deliver_next(Lock& lock) {
+  Job job = std::move(queue_.front());
+  queue_.pop_front();
+  busy_ = true;
+  lock.unlock();
+  std::optional<LinkError> error;
+  std::string other;
+  try {
+    execute(job);
+  } catch (const LinkError& e) {
+    error = e;
+  } catch (const std::exception& e) {  // an encoder refused the value
+    other = e.what();
+  }
+  lock.lock();
+  busy_ = false;
+  if (error) return job_failed(lock, std::move(job), *error);
+  if (!other.empty()) {  // not retried: the same value would fail again
+    fail(other);
+    retry_at_ = {};
+    return;
+  }
+  ++status_.delivered;
+  if (status_.fault) spdlog::info("radio {}: working again", description_);
+  status_.fault = false;
+  status_.message.clear();
+  backoff_ = timing_.backoff_first;
+  if (job.kind == Job::Kind::frequency) (job.link == Link::downlink ? status_.downlink_hz : status_.uplink_hz) = job.hz;
+  if (job.kind == Job::Kind::mode) (job.link == Link::downlink ? status_.downlink_mode : status_.uplink_mode) = job.mode;
+}
+
+void WorkerRadio::job_failed(Lock& lock, Job job, const LinkError& error) {
+  fail(error.what());
+  if (error.action == LinkError::Action::drop) {
+    retry_at_ = {};
+    return;
+  }
+  if (error.action == LinkError::Action::reconnect) {
+    lock.unlock();
+    link_->close();
+    lock.lock();
+    open_ = false;
+    status_.connected = false;
+  }
+  // Retry it, unless a newer value for the same thing arrived meanwhile. A command that failed
+  // on a working link goes to the back, so one silent radio (an Icom pair: RX radio switched
+  // off) does not hold up the commands for the other.
+  const bool superseded = job.kind != Job::Kind::raw &&
+      std::any_of(queue_.begin(), queue_.end(), [&](const Job& j) { return j.kind == job.kind && j.link == job.link; });
+  if (superseded) return;
+  if (error.action == LinkError::Action::retry) queue_.push_back(std::move(job));
+  else queue_.push_front(std::move(job));
+}
+
+void WorkerRadio::finish(Lock& lock) {
+  if (open_) {
     while (!queue_.empty()) {
       Job job = std::move(queue_.front());
       queue_.pop_front();

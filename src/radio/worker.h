@@ -65,9 +65,16 @@ class WorkerRadio final : public RadioDriver {
     Mode mode = Mode::none;
     std::string raw;
   };
+  using Lock = std::unique_lock<std::mutex>;
   void enqueue_locked(Job job);
   void run();
   void execute(const Job& job);
+  // The worker thread's steps, each called with mu_ held (lock) and unlocking it around radio I/O.
+  bool connect(Lock& lock);          // opens the link; false (fault recorded) when it did not
+  void deliver_next(Lock& lock);     // runs the job at the head of the queue
+  void job_failed(Lock& lock, Job job, const LinkError& error);
+  void fail(const std::string& message);  // records a fault and the back-off before the next try
+  void finish(Lock& lock);           // stopping: one attempt at what is queued, then close
 
   std::unique_ptr<RadioLink> link_;
   const std::string description_;
@@ -82,6 +89,10 @@ class WorkerRadio final : public RadioDriver {
   std::optional<Hz> want_hz_[2];     // last requested per link (re-sent after a reconnect)
   std::optional<Mode> want_mode_[2];
   RadioStatus status_;
+  // Worker-thread state.
+  bool open_ = false;
+  std::chrono::milliseconds backoff_{};
+  std::chrono::steady_clock::time_point retry_at_{};
   std::thread thread_;
 };
 
