@@ -14,7 +14,6 @@
 // Every answer is checked (format and range); a wrong one says why and the line is asked again.
 // The edit is made on a copy and stored only after the last line. Beyond the manual: the drag
 // term B* (trakbox runs SGP4, which uses it; the 8051's own model did not) follows Decay N1.
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 
@@ -22,6 +21,7 @@
 #include "orbit/sgp4.h"
 #include "store/model.h"
 #include "tracker/station_loop.h"
+#include "util/text.h"
 
 namespace tb::menus {
 
@@ -29,11 +29,6 @@ namespace {
 
 using Accept = std::function<std::optional<std::string>(const std::string&)>;
 using Keep = std::function<std::optional<std::string>()>;
-
-std::string lower(std::string s) {
-  for (auto& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
 
 std::string fmt(const char* f, double v) {
   char buf[64];
@@ -127,25 +122,8 @@ void mode_field(term::Terminal& t, const char* label, radio::Mode& mode) {
   });
 }
 
-}  // namespace
-
-void menu_3_1_edit(term::Terminal& t, Services& s) {
-  const store::Database& db = s.model.db;
-  if (db.satellites.empty()) {
-    t.line("The database is empty: load element data with menu 3-3 first.");
-    return;
-  }
-  std::vector<std::string> names;
-  for (const auto& sat : db.satellites) names.push_back(sat.name());
-  const auto pick = choose_satellite(t, "     *** Select object satellite ***", names, db.marked_index().value_or(-1));
-  if (!pick) return;
-  const std::size_t index = static_cast<std::size_t>(*pick);
-
-  store::Satellite sat = db.satellites[index];  // the copy being edited
-  orbit::Elements& e = sat.elements;
-  radio::SatelliteRadio& r = sat.radio;
-  t.line("====== Satellite data ======");
-
+// Name and epoch: the name must stay unique in the database; the day must exist in the year.
+void edit_identity(term::Terminal& t, const store::Database& db, std::size_t index, orbit::Elements& e) {
   ask_field(t, "Satellite", e.name, "", [&](const std::string& a) -> std::optional<std::string> {
     if (a.size() > 24) return "a name has at most 24 characters";
     if (const auto other = db.find(a); other && static_cast<std::size_t>(*other) != index)
@@ -189,6 +167,10 @@ void menu_3_1_edit(term::Terminal& t, Services& s) {
               return std::nullopt;
             });
 
+}
+
+// The orbit's mean elements, each within its range.
+void edit_orbit(term::Terminal& t, orbit::Elements& e) {
   number_field(t, "Mean Anomaly M0", "M0:", e.mean_anomaly_deg, "%.4f", 0.0, 360.0, true, "deg");
   ask_field(t, "Mean Motion N0", fmt("%.8f", e.mean_motion_rev_per_day), "N0:",
             [&](const std::string& a) -> std::optional<std::string> {
@@ -205,6 +187,10 @@ void menu_3_1_edit(term::Terminal& t, Services& s) {
   number_field(t, "Decay N1", "N1:", e.ndot_over_2, "%.6e", -1.0, 1.0, false, "rev/day^2");
   number_field(t, "Drag term B*", "B*:", e.bstar, "%.6e", -1.0, 1.0, false, "per earth radius");
 
+}
+
+// Frequencies, converter offsets, modes, the Doppler method and the LCD display.
+void edit_radio(term::Terminal& t, radio::SatelliteRadio& r) {
   frequency_field(t, "Downlink Frq.F1", "F1:", r.downlink_hz);
   offset_field(t, "Offset for F1", "F1OFFSET:", r.downlink_hz, r.downlink_offset_hz);
   frequency_field(t, "Uplink Frq.F2", "F2:", r.uplink_hz);
@@ -213,7 +199,7 @@ void menu_3_1_edit(term::Terminal& t, Services& s) {
   mode_field(t, "Uplink mode", r.uplink_mode);
   ask_field(t, "Doppler correct.", radio::to_string(r.doppler), "",
             [&](const std::string& a) -> std::optional<std::string> {
-              const std::string l = lower(a);
+              const std::string l = text::lower(a);
               if (l == "cat" || l == "c") r.doppler = radio::DopplerControl::cat;
               else if (l == "mic-click" || l == "mic" || l == "m" || l == "mic click" || l == "micclick")
                 r.doppler = radio::DopplerControl::mic_click;
@@ -222,12 +208,37 @@ void menu_3_1_edit(term::Terminal& t, Services& s) {
             });
   ask_field(t, "LCD MA display", r.lcd_ma_display ? "Yes" : "No", "",
             [&](const std::string& a) -> std::optional<std::string> {
-              const std::string l = lower(a);
+              const std::string l = text::lower(a);
               if (l == "yes" || l == "y") r.lcd_ma_display = true;
               else if (l == "no" || l == "n") r.lcd_ma_display = false;
               else return "'" + a + "': expected Yes or No";
               return std::nullopt;
             });
+
+}
+
+}  // namespace
+
+void menu_3_1_edit(term::Terminal& t, Services& s) {
+  const store::Database& db = s.model.db;
+  if (db.satellites.empty()) {
+    t.line("The database is empty: load element data with menu 3-3 first.");
+    return;
+  }
+  std::vector<std::string> names;
+  for (const auto& sat : db.satellites) names.push_back(sat.name());
+  const auto pick = choose_satellite(t, "     *** Select object satellite ***", names, db.marked_index().value_or(-1));
+  if (!pick) return;
+  const std::size_t index = static_cast<std::size_t>(*pick);
+
+  store::Satellite sat = db.satellites[index];  // the copy being edited
+  orbit::Elements& e = sat.elements;
+  radio::SatelliteRadio& r = sat.radio;
+  t.line("====== Satellite data ======");
+
+  edit_identity(t, db, index, e);
+  edit_orbit(t, e);
+  edit_radio(t, r);
 
   // Every line was answered: store the satellite.
   const orbit::Sgp4 check(e);
