@@ -99,6 +99,14 @@ struct Station : testing::StationFixture {
   void step(std::chrono::milliseconds dt = 500ms) { StationFixture::step(dt); }
 };
 
+// The protocol targets' station (fuzz_host, fuzz_netctl), set up by the input's first byte: bit 1 set
+// starts with rotor control off, bit 2 set with the tracker following the first satellite.
+struct ProtocolStation : Station {
+  explicit ProtocolStation(std::uint8_t mode) : Station(shipped_model(), (mode & 2) == 0) {
+    if (mode & 4) tracker.track_single(0);
+  }
+};
+
 // The input as lines (split at LF; a CR before it stays, the protocols deal with it), at most
 // max_lines of them: a bound on the work one input can ask for.
 inline std::vector<std::string_view> split_lines(std::string_view data, std::size_t max_lines) {
