@@ -13,11 +13,7 @@
 using namespace tb;
 
 namespace {
-bool clean(std::string_view s) {
-  for (const unsigned char c : s)
-    if (c < 0x20 && c != '\r' && c != '\n') return false;
-  return true;
-}
+bool clean(std::string_view s) { return fuzz::no_control_but(s, "\r\n"); }
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -13,11 +13,7 @@
 using namespace tb;
 
 namespace {
-bool clean(std::string_view s) {
-  for (const unsigned char c : s)
-    if (c < 0x20 && c != '\n' && c != '\t') return false;  // dump_caps has "Key:\tvalue"
-  return true;
-}
+bool clean(std::string_view s) { return fuzz::no_control_but(s, "\n\t"); }  // dump_caps has "Key:\tvalue"
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -120,6 +120,14 @@ inline std::vector<std::string_view> split_lines(std::string_view data, std::siz
   return lines;
 }
 
+// Whether s carries no control character but those in `allowed`: what the protocol targets check of
+// every reply, which goes onto a client's line.
+inline bool no_control_but(std::string_view s, std::string_view allowed) {
+  for (const unsigned char c : s)
+    if (c < 0x20 && allowed.find(static_cast<char>(c)) == std::string_view::npos) return false;
+  return true;
+}
+
 inline std::string_view as_text(const std::uint8_t* data, std::size_t size) {
   return {reinterpret_cast<const char*>(data), size};
 }
