@@ -56,13 +56,7 @@ inline std::string data_file(const char* name) { return read_file(fs::path(TRAKB
 // The shipped database (tests/support/shipped_model.h), Tucson as the station, as the unit tests'
 // fixtures have it. Parsed once; each station gets a copy.
 inline const store::Model& shipped_model() {
-  static const store::Model m = [] {
-    store::Model model = testing::shipped_model();
-    model.station.lat_deg = 32.259;
-    model.station.lon_deg = -110.778;
-    model.station.height_m = 842.0;
-    return model;
-  }();
+  static const store::Model m = testing::shipped_model_in_tucson();
   return m;
 }
 
