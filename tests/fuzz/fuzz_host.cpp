@@ -13,11 +13,7 @@
 using namespace tb;
 
 namespace {
-bool clean(std::string_view s) {
-  for (const unsigned char c : s)
-    if (c < 0x20 && c != '\r' && c != '\n') return false;
-  return true;
-}
+bool clean(std::string_view s) { return fuzz::no_control_but(s, "\r\n"); }
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -25,8 +21,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::uint8_t mode = data[0];
   const std::string_view input = fuzz::as_text(data + 1, size - 1);
 
-  fuzz::Station st(fuzz::shipped_model(), (mode & 2) == 0);
-  if (mode & 4) st.tracker.track_single(0);
+  fuzz::ProtocolStation st(mode);
   host::Interpreter interpreter(*st.station);
   netctl::HostProtocol protocol(*st.station);
   if (mode & 1) TB_FUZZ_CHECK(clean(protocol.greeting()), protocol.greeting());

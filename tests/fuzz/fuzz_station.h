@@ -56,13 +56,7 @@ inline std::string data_file(const char* name) { return read_file(fs::path(TRAKB
 // The shipped database (tests/support/shipped_model.h), Tucson as the station, as the unit tests'
 // fixtures have it. Parsed once; each station gets a copy.
 inline const store::Model& shipped_model() {
-  static const store::Model m = [] {
-    store::Model model = testing::shipped_model();
-    model.station.lat_deg = 32.259;
-    model.station.lon_deg = -110.778;
-    model.station.height_m = 842.0;
-    return model;
-  }();
+  static const store::Model m = testing::shipped_model_in_tucson();
   return m;
 }
 
@@ -99,6 +93,14 @@ struct Station : testing::StationFixture {
   void step(std::chrono::milliseconds dt = 500ms) { StationFixture::step(dt); }
 };
 
+// The protocol targets' station (fuzz_host, fuzz_netctl), set up by the input's first byte: bit 1 set
+// starts with rotor control off, bit 2 set with the tracker following the first satellite.
+struct ProtocolStation : Station {
+  explicit ProtocolStation(std::uint8_t mode) : Station(shipped_model(), (mode & 2) == 0) {
+    if (mode & 4) tracker.track_single(0);
+  }
+};
+
 // The input as lines (split at LF; a CR before it stays, the protocols deal with it), at most
 // max_lines of them: a bound on the work one input can ask for.
 inline std::vector<std::string_view> split_lines(std::string_view data, std::size_t max_lines) {
@@ -110,6 +112,14 @@ inline std::vector<std::string_view> split_lines(std::string_view data, std::siz
     data.remove_prefix(nl + 1);
   }
   return lines;
+}
+
+// Whether s carries no control character but those in `allowed`: what the protocol targets check of
+// every reply, which goes onto a client's line.
+inline bool no_control_but(std::string_view s, std::string_view allowed) {
+  for (const unsigned char c : s)
+    if (c < 0x20 && allowed.find(static_cast<char>(c)) == std::string_view::npos) return false;
+  return true;
 }
 
 inline std::string_view as_text(const std::uint8_t* data, std::size_t size) {

@@ -33,4 +33,13 @@ inline store::Model shipped_model() {
   return m;
 }
 
+// The same with the station in Tucson (32.259 N, 110.778 W, 842 m), the manual's sample station.
+inline store::Model shipped_model_in_tucson() {
+  store::Model m = shipped_model();
+  m.station.lat_deg = 32.259;
+  m.station.lon_deg = -110.778;
+  m.station.height_m = 842.0;
+  return m;
+}
+
 }  // namespace tb::testing

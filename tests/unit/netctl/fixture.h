@@ -253,12 +253,6 @@ inline std::vector<std::string> lines(const std::string& s) {
 namespace nettest {
 
 // The shipped element sets and freq/mode table (data/), as trakbox loads them, in Tucson.
-inline store::Model shipped_model() {
-  store::Model m = tb::testing::shipped_model();
-  m.station.lat_deg = 32.259;
-  m.station.lon_deg = -110.778;
-  m.station.height_m = 842.0;
-  return m;
-}
+inline store::Model shipped_model() { return tb::testing::shipped_model_in_tucson(); }
 
 }  // namespace nettest

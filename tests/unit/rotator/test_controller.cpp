@@ -1,56 +1,19 @@
 // The controller on the simulated rotator: pointing, dead band, the way round, park, presets,
 // keyboard control, the E key, faults, stalls, calibration and the monitor line.
 #include <doctest/doctest.h>
-#include <spdlog/spdlog.h>
 
 #include <cmath>
-#include <functional>
-#include <memory>
 
+#include "fixture.h"  // Rig
 #include "rotator/controller.h"
 #include "rotator/simulated.h"
 
 using namespace tb::rotator;
 using namespace std::chrono_literals;
-using tb::orbit::from_civil;
-using tb::station::ManualClock;
 using tb::station::RotorStart;
+using rotator_test::Rig;
 
 namespace {
-
-struct Rig {
-  ManualClock clock{from_civil(2026, 3, 1, 12)};
-  SimulatedRotator* sim = nullptr;
-  std::unique_ptr<Controller> ctl;
-
-  explicit Rig(RotatorConfig c = {}, RotorStart start = RotorStart::north, RotatorPosition at = {0, 0},
-               SimulatedRotatorParams p = SimulatedRotatorParams{}) {
-    spdlog::set_level(spdlog::level::off);
-    p.start = at;
-    auto s = std::make_unique<SimulatedRotator>(clock, p);
-    sim = s.get();
-    ctl = std::make_unique<Controller>(c, start, std::move(s));
-    ctl->tick(clock.now());
-  }
-  // Ticks every `step` for up to `limit`, calling each(…) after every tick; returns the time taken
-  // to get on target (or limit when it never did).
-  std::chrono::milliseconds run(std::chrono::milliseconds limit, std::chrono::milliseconds step = 100ms,
-                                const std::function<void()>& each = {}) {
-    for (std::chrono::milliseconds t{0}; t < limit; t += step) {
-      clock.advance(step);
-      ctl->tick(clock.now());
-      if (each) each();
-      if (ctl->status().on_target) return t + step;
-    }
-    return limit;
-  }
-  void idle(std::chrono::milliseconds d, std::chrono::milliseconds step = 100ms) {
-    for (std::chrono::milliseconds t{0}; t < d; t += step) {
-      clock.advance(step);
-      ctl->tick(clock.now());
-    }
-  }
-};
 
 bool near(double a, double b, double tol) { return std::abs(a - b) <= tol; }
 bool near(RotatorPosition a, RotatorPosition b, double tol = 0.01) {

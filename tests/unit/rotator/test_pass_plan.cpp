@@ -58,6 +58,15 @@ void check_no_swing(const PassPlan& plan, const std::vector<TrackPoint>& track) 
   }
 }
 
+// A plan that follows the whole pass (flipped or not, as `flip` says): never held at the stop, no
+// pointing error, no swing through the stop.
+void check_follows(const PassPlan& plan, const std::vector<TrackPoint>& track, bool flip) {
+  CHECK(plan.flip == flip);
+  CHECK_FALSE(plan.held_at_stop);
+  CHECK(plan.max_error_deg < 1e-6);
+  check_no_swing(plan, track);
+}
+
 }  // namespace
 
 TEST_CASE("A pass crossing north, North-start rotator, no flip: the antenna waits at the stop") {
@@ -72,10 +81,7 @@ TEST_CASE("A pass crossing north, North-start rotator, no flip: the antenna wait
 TEST_CASE("A pass crossing north, North-start rotator, flip allowed: over the top") {
   auto track = synthetic_pass(300.0, 120.0, 40.0);
   PassPlan plan = plan_pass(track, geometry(RotorStart::north, true));
-  CHECK(plan.flip);
-  CHECK_FALSE(plan.held_at_stop);
-  CHECK(plan.max_error_deg < 1e-6);
-  check_no_swing(plan, track);
+  check_follows(plan, track, /*flip=*/true);
   // AOS at compass 300, el -2 -> flipped az 120, el 182 -> clamped to 180.
   CHECK(plan.aos.az_travel == doctest::Approx(120.0));
   CHECK(plan.aos.el == doctest::Approx(180.0));
@@ -93,10 +99,7 @@ TEST_CASE("A pass crossing south, South-start rotator: held without flip, flippe
   check_no_swing(held, track);
 
   PassPlan flipped = plan_pass(track, geometry(RotorStart::south, true));
-  CHECK(flipped.flip);
-  CHECK_FALSE(flipped.held_at_stop);
-  CHECK(flipped.max_error_deg < 1e-6);
-  check_no_swing(flipped, track);
+  check_follows(flipped, track, /*flip=*/true);
   // Flipped azimuths 300 -> 0 -> 60 are travel 120 -> 180 -> 240 for a South start.
   CHECK(flipped.aos.az_travel == doctest::Approx(120.0));
   CHECK(flipped.map(180.0, 55.0).az_travel == doctest::Approx(180.0));
@@ -106,11 +109,8 @@ TEST_CASE("No flip when the pass does not need it") {
   // Crossing north is no problem for a South-start rotator.
   auto north = synthetic_pass(300.0, 120.0, 70.0);
   PassPlan a = plan_pass(north, geometry(RotorStart::south, true));
-  CHECK_FALSE(a.flip);
-  CHECK_FALSE(a.held_at_stop);
-  CHECK(a.max_error_deg < 1e-6);
+  check_follows(a, north, /*flip=*/false);
   CHECK(a.aos.az_travel == doctest::Approx(120.0));
-  check_no_swing(a, north);
   // Nor crossing south for a North-start one, also going counter-clockwise.
   auto south = synthetic_pass(250.0, -140.0, 30.0);
   PassPlan b = plan_pass(south, geometry(RotorStart::north, true));

@@ -9,6 +9,7 @@
 #include <memory>
 #include <random>
 
+#include "fixture.h"  // Rig
 #include "rotator/controller.h"
 #include "rotator/simulated.h"
 
@@ -122,7 +123,6 @@ void closed_loops(unsigned seed, int count, std::chrono::milliseconds step, doub
     std::uniform_real_distribution<double> uaz(az.lo, az.hi), uel(el.lo, el.hi), ucomp(0.0, 360.0),
         uel_target(-5.0, 185.0);
 
-    ManualClock clock(from_civil(2026, 3, 1) + std::chrono::hours(i));
     SimulatedRotatorParams p = SimulatedRotatorParams::matching(k.config);
     // A real rotator is not its model: rates and coast off by `mismatch`, either way.
     if (mismatch != 1.0) {
@@ -136,10 +136,10 @@ void closed_loops(unsigned seed, int count, std::chrono::milliseconds step, doub
                m.el_from_counts(m.raw(Axis::el, m.counts_from_el(uel(rng))))};
     p.start.az_travel = std::clamp(p.start.az_travel, 0.0, k.config.az_travel_deg);
     p.start.el = std::clamp(p.start.el, 0.0, p.el_max_deg);
-    auto owned = std::make_unique<SimulatedRotator>(clock, p);
-    SimulatedRotator& sim = *owned;
-    Controller ctl(k.config, k.start, std::move(owned));
-    ctl.tick(clock.now());
+    rotator_test::Rig rig(k.config, k.start, p.start, p, from_civil(2026, 3, 1) + std::chrono::hours(i));
+    ManualClock& clock = rig.clock;
+    SimulatedRotator& sim = *rig.sim;
+    Controller& ctl = *rig.ctl;
     RotatorPosition target = ctl.set_target(AzEl{ucomp(rng), uel_target(rng)});
 
     const Range caz = m.counts_range(Axis::az), cel = m.counts_range(Axis::el);

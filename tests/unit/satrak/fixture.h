@@ -56,10 +56,7 @@ struct TempDir {
 };
 
 inline store::Model tucson_model() {
-  store::Model m = testing::shipped_model();
-  m.station.lat_deg = 32.259;
-  m.station.lon_deg = -110.778;
-  m.station.height_m = 842.0;
+  store::Model m = testing::shipped_model_in_tucson();
   m.station.rotor_start = station::RotorStart::north;
   m.rotor_control = true;
   return m;
