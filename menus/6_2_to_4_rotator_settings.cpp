@@ -19,23 +19,25 @@ int whole(double v) { return static_cast<int>(v); }
 
 void menu_6_2_adc_span(term::Terminal& t, Services& s) {
   rotator::RotatorConfig c = s.model.rotator;
-  const double top = rotator::kAdcMaxCount;
+  const double lo = rotator::limits::kSpan.lo, top = rotator::limits::kSpan.hi;
   t.line(span_of("AZ", c.az_span));
-  c.az_span.min = whole(cfg::ask_number(t, "AZ minimum value ? : ", c.az_span.min, 0, top, true));
-  c.az_span.max = whole(cfg::ask_number(t, "AZ maximum value ? : ", c.az_span.max, 0, top, true));
+  c.az_span.min = whole(cfg::ask_number(t, "AZ minimum value ? : ", c.az_span.min, lo, top, true));
+  c.az_span.max = whole(cfg::ask_number(t, "AZ maximum value ? : ", c.az_span.max, lo, top, true));
   t.line(span_of("EL", c.el_span));
-  c.el_span.min = whole(cfg::ask_number(t, "EL minimum value ? : ", c.el_span.min, 0, top, true));
-  c.el_span.max = whole(cfg::ask_number(t, "EL maximum value ? : ", c.el_span.max, 0, top, true));
+  c.el_span.min = whole(cfg::ask_number(t, "EL minimum value ? : ", c.el_span.min, lo, top, true));
+  c.el_span.max = whole(cfg::ask_number(t, "EL maximum value ? : ", c.el_span.max, lo, top, true));
   if (cfg::commit_rotator(t, s, c)) t.line(span_line(c));
 }
 
 void menu_6_3_dead_band_skew(term::Terminal& t, Services& s) {
   rotator::RotatorConfig c = s.model.rotator;
-  auto prompt = [](const char* label, int current) { return std::string(label) + " : " + cfg::fmt1(current) + "  "; };
-  c.az_dead_band = whole(cfg::ask_number(t, prompt("Azimuth Dead Band", c.az_dead_band), c.az_dead_band, 0, 100, true));
-  c.el_dead_band = whole(cfg::ask_number(t, prompt("Elevation Dead Band", c.el_dead_band), c.el_dead_band, 0, 100, true));
-  c.az_skew = whole(cfg::ask_number(t, prompt("Azimuth Skew value", c.az_skew), c.az_skew, -512, 512, true));
-  c.el_skew = whole(cfg::ask_number(t, prompt("Elevation Skew value", c.el_skew), c.el_skew, -512, 512, true));
+  auto ask = [&t](const char* label, int& value, rotator::limits::Counts range) {
+    value = whole(cfg::ask_number(t, std::string(label) + " : " + cfg::fmt1(value) + "  ", value, range.lo, range.hi, true));
+  };
+  ask("Azimuth Dead Band", c.az_dead_band, rotator::limits::kDeadBand);
+  ask("Elevation Dead Band", c.el_dead_band, rotator::limits::kDeadBand);
+  ask("Azimuth Skew value", c.az_skew, rotator::limits::kSkew);
+  ask("Elevation Skew value", c.el_skew, rotator::limits::kSkew);
   cfg::commit_rotator(t, s, c);
 }
 

@@ -9,7 +9,7 @@
 namespace tb::rotator {
 
 namespace {
-constexpr int kMinSpanWidth = 10;
+using limits::kMinSpanWidth;
 
 std::string num(double v) {
   char buf[32];
@@ -19,7 +19,7 @@ std::string num(double v) {
 
 void check_span(std::vector<std::string>& out, const char* axis, const AxisSpan& s) {
   std::string name = std::string(axis) + " ADC span";
-  if (s.min < 0 || s.min > kAdcMaxCount || s.max < 0 || s.max > kAdcMaxCount)
+  if (!limits::kSpan.contains(s.min) || !limits::kSpan.contains(s.max))
     out.push_back(name + " " + std::to_string(s.min) + "-" + std::to_string(s.max) +
                   ": counts must lie in 0..1023 (10-bit ADC)");
   else if (s.max - s.min < kMinSpanWidth)
@@ -33,16 +33,18 @@ std::vector<std::string> validate(const RotatorConfig& c) {
   std::vector<std::string> out;
   check_span(out, "azimuth", c.az_span);
   check_span(out, "elevation", c.el_span);
-  if (!(c.az_travel_deg >= 360.0 && c.az_travel_deg <= 720.0))
-    out.push_back("azimuth travel " + num(c.az_travel_deg) + " deg: expected 360 to 720");
-  if (c.az_dead_band < 0 || c.az_dead_band > 100)
-    out.push_back("azimuth dead band " + std::to_string(c.az_dead_band) + ": expected 0..100 counts");
-  if (c.el_dead_band < 0 || c.el_dead_band > 100)
-    out.push_back("elevation dead band " + std::to_string(c.el_dead_band) + ": expected 0..100 counts");
-  if (std::abs(c.az_skew) > 512)
-    out.push_back("azimuth skew " + std::to_string(c.az_skew) + ": expected -512..512 counts");
-  if (std::abs(c.el_skew) > 512)
-    out.push_back("elevation skew " + std::to_string(c.el_skew) + ": expected -512..512 counts");
+  if (!(c.az_travel_deg >= limits::kTravelMinDeg && c.az_travel_deg <= limits::kTravelMaxDeg))
+    out.push_back("azimuth travel " + num(c.az_travel_deg) + " deg: expected " + num(limits::kTravelMinDeg) + " to " +
+                  num(limits::kTravelMaxDeg));
+  auto check_counts = [&out](const char* what, int v, limits::Counts r) {
+    if (!r.contains(v))
+      out.push_back(std::string(what) + " " + std::to_string(v) + ": expected " + std::to_string(r.lo) + ".." +
+                    std::to_string(r.hi) + " counts");
+  };
+  check_counts("azimuth dead band", c.az_dead_band, limits::kDeadBand);
+  check_counts("elevation dead band", c.el_dead_band, limits::kDeadBand);
+  check_counts("azimuth skew", c.az_skew, limits::kSkew);
+  check_counts("elevation skew", c.el_skew, limits::kSkew);
   const double el_top = c.el_flip_allowed ? 180.0 : 90.0;
   auto az_ok = [](double a) { return std::isfinite(a) && a >= 0.0 && a <= 360.0; };
   auto el_ok = [&](double e) { return std::isfinite(e) && e >= 0.0 && e <= el_top; };
@@ -75,7 +77,8 @@ std::vector<std::string> validate(const RotatorConfig& c) {
                   std::to_string((kAdcMaxCount + c.el_span.min) / 2));
   if (!(c.az_rate_deg_s > 0.0) || !(c.el_rate_deg_s > 0.0))
     out.push_back("motor rates must be positive (deg/s)");
-  if (!(c.coast_s >= 0.0 && c.coast_s <= 5.0)) out.push_back("coast time " + num(c.coast_s) + " s: expected 0..5");
+  if (!(c.coast_s >= 0.0 && c.coast_s <= limits::kCoastMaxS))
+    out.push_back("coast time " + num(c.coast_s) + " s: expected 0.." + num(limits::kCoastMaxS));
   if (!(c.stall_s > 0.0)) out.push_back("stall time " + num(c.stall_s) + " s: expected > 0");
   if (out.empty()) {
     AdcModel m(c, station::RotorStart::north);

@@ -22,6 +22,21 @@ namespace tb::rotator {
 
 inline constexpr int kAdcMaxCount = 1023;  // 10-bit ADC
 
+// The allowed range of each configured number, in one place: validate(), menus 6-2 to 6-4, the
+// station file (menu 6-9) and the state document's reader all take them from here.
+namespace limits {
+struct Counts {
+  int lo, hi;
+  constexpr bool contains(int v) const { return v >= lo && v <= hi; }
+};
+inline constexpr Counts kSpan{0, kAdcMaxCount};  // ADC span ends
+inline constexpr int kMinSpanWidth = 10;         // max - min, counts
+inline constexpr Counts kDeadBand{0, 100};
+inline constexpr Counts kSkew{-512, 512};
+inline constexpr double kTravelMinDeg = 360.0, kTravelMaxDeg = 720.0;  // azimuth travel from the stop
+inline constexpr double kCoastMaxS = 5.0;
+}  // namespace limits
+
 // An azimuth/elevation pair in degrees. Azimuth is from north through east.
 struct AzEl {
   double az = 0.0;

@@ -221,11 +221,14 @@ Model model_from_json(const json& j) {
     auto& c = m.rotator;
     c.az_span = span("az_span");
     c.el_span = span("el_span");
-    c.az_travel_deg = num(r, w, "az_travel_deg", 90, 720);
-    c.az_dead_band = static_cast<int>(integer(r, w, "az_dead_band", 0, 1023));
-    c.el_dead_band = static_cast<int>(integer(r, w, "el_dead_band", 0, 1023));
-    c.az_skew = static_cast<int>(integer(r, w, "az_skew", -1023, 1023));
-    c.el_skew = static_cast<int>(integer(r, w, "el_skew", -1023, 1023));
+    c.az_travel_deg = num(r, w, "az_travel_deg", rotator::limits::kTravelMinDeg, rotator::limits::kTravelMaxDeg);
+    auto counts = [&](const char* key, rotator::limits::Counts range) {
+      return static_cast<int>(integer(r, w, key, range.lo, range.hi));
+    };
+    c.az_dead_band = counts("az_dead_band", rotator::limits::kDeadBand);
+    c.el_dead_band = counts("el_dead_band", rotator::limits::kDeadBand);
+    c.az_skew = counts("az_skew", rotator::limits::kSkew);
+    c.el_skew = counts("el_skew", rotator::limits::kSkew);
     c.parking_enabled = boolean(r, w, "parking_enabled");
     c.parking = azel_from(field(r, w, "parking"), w + ".parking");
     c.limits_enabled = boolean(r, w, "limits_enabled");

@@ -110,9 +110,11 @@ class Parser {
   bool span_ok_[4] = {false, false, false, false};
   bool limit_ok_[4] = {false, false, false, false};
 
-  void counts(int phys, int field, std::string_view s, int lo, int hi, int& out, const char* unit, bool& ok) {
+  void counts(int phys, int field, std::string_view s, rotator::limits::Counts range, int& out, const char* unit,
+              bool& ok) {
+    const int lo = range.lo, hi = range.hi;
     const auto v = to_int(s);
-    ok = v && *v >= lo && *v <= hi;
+    ok = v && range.contains(*v);
     if (ok)
       out = *v;
     else
@@ -180,14 +182,14 @@ class Parser {
         break;
       case 2: {
         int* dst[] = {&f.az_span.min, &f.az_span.max, &f.el_span.min, &f.el_span.max};
-        counts(phys, field, s, 0, rotator::kAdcMaxCount, *dst[field - 2], "ADC counts", span_ok_[field - 2]);
+        counts(phys, field, s, rotator::limits::kSpan, *dst[field - 2], "ADC counts", span_ok_[field - 2]);
         break;
       }
       case 3: {
         if (field <= 3)
-          counts(phys, field, s, 0, 100, field == 2 ? f.az_dead_band : f.el_dead_band, "ADC counts", ok);
+          counts(phys, field, s, rotator::limits::kDeadBand, field == 2 ? f.az_dead_band : f.el_dead_band, "ADC counts", ok);
         else
-          counts(phys, field, s, -512, 512, field == 4 ? f.az_skew : f.el_skew, "ADC counts", ok);
+          counts(phys, field, s, rotator::limits::kSkew, field == 4 ? f.az_skew : f.el_skew, "ADC counts", ok);
         break;
       }
       case 4:
