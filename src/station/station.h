@@ -20,6 +20,7 @@ struct StationConfig {
   int com_baud = 9600;         // 1200, 2400, 4800, 9600 (the manual), up to 19200 here
 
   orbit::Observer observer() const { return {lat_deg, lon_deg, height_m}; }
+  friend bool operator==(const StationConfig&, const StationConfig&) = default;
 };
 
 const char* to_string(RotorStart r);  // "North" / "South"

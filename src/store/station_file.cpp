@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <tuple>
 
 #include "rotator/adc_model.h"
 #include "store/model.h"
@@ -99,7 +100,7 @@ class Parser {
       problem(phys, wanted + 2, std::string(items[static_cast<std::size_t>(wanted + 1)]),
               "the end of line " + std::to_string(number) + " (" + std::to_string(shape.items + 1) + " items)");
     }
-    if (number == 4 && given == 2 && f.rig == radio::Rig::icom && rig_ok_)
+    if (number == 4 && given == 2 && f.radio.rig == radio::Rig::icom && rig_ok_)
       problem(phys, 4, "", "the Icom RX and TX addresses (hex, e.g. 10 14) after the F/A item for ICOM");
     cross_checks(number, phys);
   }
@@ -153,17 +154,17 @@ class Parser {
             for (char c : s)
               if (!std::isalnum(static_cast<unsigned char>(c)) && c != '/' && c != '-') good = false;
             if (good)
-              f.callsign = upper(s);
+              f.station.callsign = upper(s);
             else
               problem(phys, field, std::string(s), "a callsign of 1 to 10 letters, digits, / or -");
             break;
           }
-          case 3: degrees(phys, field, s, -90.0, 90.0, f.lat_deg, ok); break;
-          case 4: degrees(phys, field, s, -180.0, 180.0, f.lon_deg, ok); break;
+          case 3: degrees(phys, field, s, -90.0, 90.0, f.station.lat_deg, ok); break;
+          case 4: degrees(phys, field, s, -180.0, 180.0, f.station.lon_deg, ok); break;
           case 5: {
             const auto v = to_double(s);
             if (v && *v >= -500.0 && *v <= 9000.0)
-              f.height_m = *v;
+              f.station.height_m = *v;
             else
               problem(phys, field, std::string(s), "metres above sea level, -500 to 9000");
             break;
@@ -171,9 +172,9 @@ class Parser {
           case 6: {
             const std::string u = upper(s);
             if (u == "S" || u == "SOUTH")
-              f.rotor_start = station::RotorStart::south;
+              f.station.rotor_start = station::RotorStart::south;
             else if (u == "N" || u == "NORTH")
-              f.rotor_start = station::RotorStart::north;
+              f.station.rotor_start = station::RotorStart::north;
             else
               problem(phys, field, std::string(s), "S (South) or N (North)");
             break;
@@ -181,15 +182,15 @@ class Parser {
         }
         break;
       case 2: {
-        int* dst[] = {&f.az_span.min, &f.az_span.max, &f.el_span.min, &f.el_span.max};
+        int* dst[] = {&f.rotator.az_span.min, &f.rotator.az_span.max, &f.rotator.el_span.min, &f.rotator.el_span.max};
         counts(phys, field, s, rotator::limits::kSpan, *dst[field - 2], "ADC counts", span_ok_[field - 2]);
         break;
       }
       case 3: {
         if (field <= 3)
-          counts(phys, field, s, rotator::limits::kDeadBand, field == 2 ? f.az_dead_band : f.el_dead_band, "ADC counts", ok);
+          counts(phys, field, s, rotator::limits::kDeadBand, field == 2 ? f.rotator.az_dead_band : f.rotator.el_dead_band, "ADC counts", ok);
         else
-          counts(phys, field, s, rotator::limits::kSkew, field == 4 ? f.az_skew : f.el_skew, "ADC counts", ok);
+          counts(phys, field, s, rotator::limits::kSkew, field == 4 ? f.rotator.az_skew : f.rotator.el_skew, "ADC counts", ok);
         break;
       }
       case 4:
@@ -197,13 +198,13 @@ class Parser {
           const std::string u = upper(s);
           rig_ok_ = true;
           if (u == "ICOM" || u == "I")
-            f.rig = radio::Rig::icom;
+            f.radio.rig = radio::Rig::icom;
           else if (u == "KENWOOD" || u == "K")
-            f.rig = radio::Rig::kenwood;
+            f.radio.rig = radio::Rig::kenwood;
           else if (u == "YAESU" || u == "Y")
-            f.rig = radio::Rig::yaesu;
+            f.radio.rig = radio::Rig::yaesu;
           else if (u == "NONE" || u == "N")
-            f.rig = radio::Rig::none;
+            f.radio.rig = radio::Rig::none;
           else {
             rig_ok_ = false;
             problem(phys, field, std::string(s), "ICOM, KENWOOD, YAESU or NONE");
@@ -211,15 +212,15 @@ class Parser {
         } else if (field == 3) {
           const std::string u = upper(s);
           if (u == "F" || u == "FULL")
-            f.cat_policy = radio::CatPolicy::full_orbit;
+            f.radio.cat_policy = radio::CatPolicy::full_orbit;
           else if (u == "A" || u == "AOS")
-            f.cat_policy = radio::CatPolicy::aos_only;
+            f.radio.cat_policy = radio::CatPolicy::aos_only;
           else
             problem(phys, field, std::string(s), "F (full orbit) or A (AOS only)");
         } else {
           const auto v = to_hex_address(s);
           if (v && *v < 0xE0)
-            (field == 4 ? f.icom_rx_address : f.icom_tx_address) = static_cast<std::uint8_t>(*v);
+            (field == 4 ? f.radio.icom_rx_address : f.radio.icom_tx_address) = static_cast<std::uint8_t>(*v);
           else
             problem(phys, field, std::string(s),
                     "a CI-V address in hex, 00 to DF (e.g. 10 for an IC-275, 14 for an IC-475; E0 is TrakBox's own)");
@@ -227,14 +228,14 @@ class Parser {
         break;
       case 5:
         switch (field) {
-          case 2: flag(phys, field, s, f.parking_enabled); break;
-          case 3: degrees(phys, field, s, 0.0, 360.0, f.parking.az, ok); break;
-          case 4: degrees(phys, field, s, 0.0, 90.0, f.parking.el, ok); break;
-          case 5: flag(phys, field, s, f.limits_enabled); break;
-          case 6: degrees(phys, field, s, 0.0, 360.0, f.az_limit_min, limit_ok_[0]); break;
-          case 7: degrees(phys, field, s, 0.0, 360.0, f.az_limit_max, limit_ok_[1]); break;
-          case 8: degrees(phys, field, s, 0.0, 90.0, f.el_limit_min, limit_ok_[2]); break;
-          case 9: degrees(phys, field, s, 0.0, 90.0, f.el_limit_max, limit_ok_[3]); break;
+          case 2: flag(phys, field, s, f.rotator.parking_enabled); break;
+          case 3: degrees(phys, field, s, 0.0, 360.0, f.rotator.parking.az, ok); break;
+          case 4: degrees(phys, field, s, 0.0, 90.0, f.rotator.parking.el, ok); break;
+          case 5: flag(phys, field, s, f.rotator.limits_enabled); break;
+          case 6: degrees(phys, field, s, 0.0, 360.0, f.rotator.az_limit_min, limit_ok_[0]); break;
+          case 7: degrees(phys, field, s, 0.0, 360.0, f.rotator.az_limit_max, limit_ok_[1]); break;
+          case 8: degrees(phys, field, s, 0.0, 90.0, f.rotator.el_limit_min, limit_ok_[2]); break;
+          case 9: degrees(phys, field, s, 0.0, 90.0, f.rotator.el_limit_max, limit_ok_[3]); break;
         }
         break;
     }
@@ -244,23 +245,23 @@ class Parser {
   void cross_checks(int number, int phys) {
     if (number == 2) {
       constexpr int kMinWidth = 10;  // as rotator::validate
-      if (span_ok_[0] && span_ok_[1] && f.az_span.max - f.az_span.min < kMinWidth)
-        problem(phys, 3, std::to_string(f.az_span.max),
-                "at least " + std::to_string(f.az_span.min + kMinWidth) + ": the maximum must exceed the minimum (" +
-                    std::to_string(f.az_span.min) + ") by " + std::to_string(kMinWidth) + " counts or more");
-      if (span_ok_[2] && span_ok_[3] && f.el_span.max - f.el_span.min < kMinWidth)
-        problem(phys, 5, std::to_string(f.el_span.max),
-                "at least " + std::to_string(f.el_span.min + kMinWidth) + ": the maximum must exceed the minimum (" +
-                    std::to_string(f.el_span.min) + ") by " + std::to_string(kMinWidth) + " counts or more");
+      if (span_ok_[0] && span_ok_[1] && f.rotator.az_span.max - f.rotator.az_span.min < kMinWidth)
+        problem(phys, 3, std::to_string(f.rotator.az_span.max),
+                "at least " + std::to_string(f.rotator.az_span.min + kMinWidth) + ": the maximum must exceed the minimum (" +
+                    std::to_string(f.rotator.az_span.min) + ") by " + std::to_string(kMinWidth) + " counts or more");
+      if (span_ok_[2] && span_ok_[3] && f.rotator.el_span.max - f.rotator.el_span.min < kMinWidth)
+        problem(phys, 5, std::to_string(f.rotator.el_span.max),
+                "at least " + std::to_string(f.rotator.el_span.min + kMinWidth) + ": the maximum must exceed the minimum (" +
+                    std::to_string(f.rotator.el_span.min) + ") by " + std::to_string(kMinWidth) + " counts or more");
     }
     if (number == 5) {
-      if (limit_ok_[0] && limit_ok_[1] && f.az_limit_max - f.az_limit_min < 360.0 &&
-          rotator::wrap360(f.az_limit_max - f.az_limit_min) == 0.0)
-        problem(phys, 7, num(f.az_limit_max),
-                "an azimuth other than the minimum (" + num(f.az_limit_min) +
+      if (limit_ok_[0] && limit_ok_[1] && f.rotator.az_limit_max - f.rotator.az_limit_min < 360.0 &&
+          rotator::wrap360(f.rotator.az_limit_max - f.rotator.az_limit_min) == 0.0)
+        problem(phys, 7, num(f.rotator.az_limit_max),
+                "an azimuth other than the minimum (" + num(f.rotator.az_limit_min) +
                     "): the sector runs clockwise from minimum to maximum; 0 and 360 mean no limit");
-      if (limit_ok_[2] && limit_ok_[3] && f.el_limit_max < f.el_limit_min)
-        problem(phys, 9, num(f.el_limit_max), "at least the elevation minimum (" + num(f.el_limit_min) + ")");
+      if (limit_ok_[2] && limit_ok_[3] && f.rotator.el_limit_max < f.rotator.el_limit_min)
+        problem(phys, 9, num(f.rotator.el_limit_max), "at least the elevation minimum (" + num(f.rotator.el_limit_min) + ")");
     }
   }
 };
@@ -357,32 +358,24 @@ StationFileParse parse_station_file(std::string_view text) {
 }
 
 std::vector<std::string> apply_station_file(const StationFile& f, Model& m) {
+  // What the five lines carry, line by line; the rest of each configuration keeps its value.
   Model next = m;
   station::StationConfig& st = next.station;
-  st.callsign = f.callsign;
-  st.lat_deg = f.lat_deg;
-  st.lon_deg = f.lon_deg;
-  st.height_m = f.height_m;
-  st.rotor_start = f.rotor_start;
+  const station::StationConfig& fs = f.station;
+  std::tie(st.callsign, st.lat_deg, st.lon_deg, st.height_m, st.rotor_start) =
+      std::tie(fs.callsign, fs.lat_deg, fs.lon_deg, fs.height_m, fs.rotor_start);
   rotator::RotatorConfig& r = next.rotator;
-  r.az_span = f.az_span;
-  r.el_span = f.el_span;
-  r.az_dead_band = f.az_dead_band;
-  r.el_dead_band = f.el_dead_band;
-  r.az_skew = f.az_skew;
-  r.el_skew = f.el_skew;
-  r.parking_enabled = f.parking_enabled;
-  r.parking = f.parking;
-  r.limits_enabled = f.limits_enabled;
-  r.az_limit_min = f.az_limit_min;
-  r.az_limit_max = f.az_limit_max;
-  r.el_limit_min = f.el_limit_min;
-  r.el_limit_max = f.el_limit_max;
+  const rotator::RotatorConfig& fr = f.rotator;
+  std::tie(r.az_span, r.el_span) = std::tie(fr.az_span, fr.el_span);
+  std::tie(r.az_dead_band, r.el_dead_band, r.az_skew, r.el_skew) =
+      std::tie(fr.az_dead_band, fr.el_dead_band, fr.az_skew, fr.el_skew);
+  std::tie(r.parking_enabled, r.parking, r.limits_enabled, r.az_limit_min, r.az_limit_max, r.el_limit_min,
+           r.el_limit_max) = std::tie(fr.parking_enabled, fr.parking, fr.limits_enabled, fr.az_limit_min,
+                                      fr.az_limit_max, fr.el_limit_min, fr.el_limit_max);
   radio::RadioConfig& rc = next.radio;
-  rc.rig = f.rig;
-  rc.cat_policy = f.cat_policy;
-  rc.icom_rx_address = f.icom_rx_address;
-  rc.icom_tx_address = f.icom_tx_address;
+  const radio::RadioConfig& frc = f.radio;
+  std::tie(rc.rig, rc.cat_policy, rc.icom_rx_address, rc.icom_tx_address) =
+      std::tie(frc.rig, frc.cat_policy, frc.icom_rx_address, frc.icom_tx_address);
   auto problems = rotator::validate(r);
   if (problems.empty()) m = std::move(next);
   return problems;

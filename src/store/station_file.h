@@ -29,28 +29,14 @@ namespace tb::store {
 
 struct Model;
 
-// What the five lines carry, nothing more: everything else keeps its value when applied.
+// What the five lines carry, in the configurations they belong to. Only the fields the lines name
+// are read (the others keep their defaults here) and only those are applied: line 1 is the station's
+// callsign, position and rotor start; lines 2, 3 and 5 the rotator's span, dead band, skew, parking
+// and limits; line 4 the radio's rig, F/A policy and Icom addresses.
 struct StationFile {
-  // Line 1.
-  std::string callsign;
-  double lat_deg = 0.0;
-  double lon_deg = 0.0;
-  double height_m = 0.0;
-  station::RotorStart rotor_start = station::RotorStart::south;
-  // Line 2 (ADC counts).
-  rotator::AxisSpan az_span, el_span;
-  // Line 3 (ADC counts).
-  int az_dead_band = 0, el_dead_band = 0, az_skew = 0, el_skew = 0;
-  // Line 4.
-  radio::Rig rig = radio::Rig::none;
-  radio::CatPolicy cat_policy = radio::CatPolicy::aos_only;
-  std::uint8_t icom_rx_address = 0x00;
-  std::uint8_t icom_tx_address = 0x00;
-  // Line 5 (degrees).
-  bool parking_enabled = false;
-  rotator::AzEl parking;
-  bool limits_enabled = false;
-  double az_limit_min = 0.0, az_limit_max = 360.0, el_limit_min = 0.0, el_limit_max = 90.0;
+  station::StationConfig station;
+  rotator::RotatorConfig rotator;
+  radio::RadioConfig radio;
 
   bool operator==(const StationFile&) const = default;
 };

@@ -31,28 +31,28 @@ TEST_CASE("The manual's sample station file") {
   INFO(problems_text(r));
   REQUIRE(r.ok());
   const store::StationFile& f = *r.file;
-  CHECK(f.callsign == "WA7GXD");
-  CHECK(f.lat_deg == 32.259);
-  CHECK(f.lon_deg == -110.778);
-  CHECK(f.height_m == 842.0);
-  CHECK(f.rotor_start == station::RotorStart::south);
-  CHECK(f.az_span == rotator::AxisSpan{3, 1017});
-  CHECK(f.el_span == rotator::AxisSpan{5, 454});
-  CHECK(f.az_dead_band == 5);
-  CHECK(f.el_dead_band == 3);
-  CHECK(f.az_skew == 0);
-  CHECK(f.el_skew == 0);
-  CHECK(f.rig == radio::Rig::icom);
-  CHECK(f.cat_policy == radio::CatPolicy::aos_only);
-  CHECK(f.icom_rx_address == 0x10);
-  CHECK(f.icom_tx_address == 0x14);
-  CHECK(f.parking_enabled);
-  CHECK(f.parking == rotator::AzEl{90.0, 0.0});
-  CHECK(f.limits_enabled);
-  CHECK(f.az_limit_min == 270.0);
-  CHECK(f.az_limit_max == 90.0);
-  CHECK(f.el_limit_min == 0.0);
-  CHECK(f.el_limit_max == 45.0);
+  CHECK(f.station.callsign == "WA7GXD");
+  CHECK(f.station.lat_deg == 32.259);
+  CHECK(f.station.lon_deg == -110.778);
+  CHECK(f.station.height_m == 842.0);
+  CHECK(f.station.rotor_start == station::RotorStart::south);
+  CHECK(f.rotator.az_span == rotator::AxisSpan{3, 1017});
+  CHECK(f.rotator.el_span == rotator::AxisSpan{5, 454});
+  CHECK(f.rotator.az_dead_band == 5);
+  CHECK(f.rotator.el_dead_band == 3);
+  CHECK(f.rotator.az_skew == 0);
+  CHECK(f.rotator.el_skew == 0);
+  CHECK(f.radio.rig == radio::Rig::icom);
+  CHECK(f.radio.cat_policy == radio::CatPolicy::aos_only);
+  CHECK(f.radio.icom_rx_address == 0x10);
+  CHECK(f.radio.icom_tx_address == 0x14);
+  CHECK(f.rotator.parking_enabled);
+  CHECK(f.rotator.parking == rotator::AzEl{90.0, 0.0});
+  CHECK(f.rotator.limits_enabled);
+  CHECK(f.rotator.az_limit_min == 270.0);
+  CHECK(f.rotator.az_limit_max == 90.0);
+  CHECK(f.rotator.el_limit_min == 0.0);
+  CHECK(f.rotator.el_limit_max == 45.0);
 }
 
 TEST_CASE("The shipped data/station.txt is the manual's sample") {
@@ -116,18 +116,18 @@ TEST_CASE("Separators, line ends, blank lines, Ctrl-Z and other spellings") {
       "5 0 0 0 OFF 0 360 0 90\n\x1agarbage after the end");
   INFO(problems_text(r));
   REQUIRE(r.ok());
-  CHECK(r.file->callsign == "WA7GXD");
-  CHECK(r.file->az_skew == -4);
-  CHECK(r.file->el_skew == 2);
-  CHECK(r.file->rig == radio::Rig::kenwood);
-  CHECK(r.file->cat_policy == radio::CatPolicy::full_orbit);
-  CHECK(!r.file->limits_enabled);
+  CHECK(r.file->station.callsign == "WA7GXD");
+  CHECK(r.file->rotator.az_skew == -4);
+  CHECK(r.file->rotator.el_skew == 2);
+  CHECK(r.file->radio.rig == radio::Rig::kenwood);
+  CHECK(r.file->radio.cat_policy == radio::CatPolicy::full_orbit);
+  CHECK(!r.file->rotator.limits_enabled);
   // Icom addresses may carry the manual's H.
   const auto h = parse_station_file("1 N0CALL 0 0 0 N\n2 0 1023 0 511\n3 3 1 0 0\n4 I A 2EH 14h\n5 0 0 0 0 0 360 0 90\n");
   REQUIRE(h.ok());
-  CHECK(h.file->icom_rx_address == 0x2E);
-  CHECK(h.file->icom_tx_address == 0x14);
-  CHECK(h.file->rotor_start == station::RotorStart::north);
+  CHECK(h.file->radio.icom_rx_address == 0x2E);
+  CHECK(h.file->radio.icom_tx_address == 0x14);
+  CHECK(h.file->station.rotor_start == station::RotorStart::north);
 }
 
 TEST_CASE("An error on line 4 is reported with line, item, found and expected") {
