@@ -1,4 +1,5 @@
 #include "menus/common.h"
+#include "util/text.h"
 
 #include <cctype>
 #include <charconv>
@@ -29,11 +30,7 @@ char ask_key(term::Terminal& t, std::string_view prompt, std::string_view keys, 
   return *c;
 }
 
-std::string trim(std::string_view s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-  return std::string(s);
-}
+std::string trim(std::string_view s) { return std::string(text::trim(s, text::kWhitespace)); }
 
 void run_menu(term::Terminal& t, const std::function<void()>& show, std::string_view prompt,
               const std::function<MenuStep(char key)>& choose) {
@@ -50,24 +47,10 @@ void run_menu(term::Terminal& t, const std::function<void()>& show, std::string_
   }
 }
 
-std::optional<double> parse_number(std::string_view text) {
-  std::string s = trim(text);
-  if (s.empty()) return std::nullopt;
-  if (s[0] == '+') s.erase(0, 1);
-  double v = 0.0;
-  const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-  if (ec != std::errc() || p != s.data() + s.size()) return std::nullopt;
-  return v;
-}
+std::optional<double> parse_number(std::string_view s) { return text::parse_double(text::trim(s, text::kWhitespace)); }
 
-std::optional<long> parse_integer(std::string_view text) {
-  std::string s = trim(text);
-  if (s.empty()) return std::nullopt;
-  if (s[0] == '+') s.erase(0, 1);
-  long v = 0;
-  const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-  if (ec != std::errc() || p != s.data() + s.size()) return std::nullopt;
-  return v;
+std::optional<long> parse_integer(std::string_view s) {
+  return text::parse_integer<long>(text::trim(s, text::kWhitespace));
 }
 
 std::string edit_text(term::Terminal& t, std::string_view label, std::string_view current,

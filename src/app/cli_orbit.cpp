@@ -17,6 +17,7 @@
 #include "orbit/observe.h"
 #include "orbit/passes.h"
 #include "orbit/sgp4.h"
+#include "util/text.h"
 
 namespace tb::app {
 namespace {
@@ -73,18 +74,8 @@ std::string csv_field(std::string_view s) {
   return r + "\"";
 }
 
-std::string lower(std::string_view s) {
-  std::string r(s);
-  for (char& c : r) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return r;
-}
-
-std::string trim(std::string_view s) {
-  const auto b = s.find_first_not_of(" \t");
-  if (b == std::string_view::npos) return {};
-  const auto e = s.find_last_not_of(" \t");
-  return std::string(s.substr(b, e - b + 1));
-}
+using text::lower;
+std::string trim(std::string_view s) { return std::string(text::trim(s)); }
 
 // "ISS (ZARYA) (25544)" or "25544".
 std::string choice_label(const Elements& e) {

@@ -1,4 +1,5 @@
 #include "app/options.h"
+#include "util/text.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -100,14 +101,7 @@ std::optional<double> to_double(std::string_view text) {
   if (text.empty() || text.size() > 64) return std::nullopt;
   const char c0 = text[0];
   if (!(c0 == '-' || c0 == '+' || c0 == '.' || (c0 >= '0' && c0 <= '9'))) return std::nullopt;
-  const std::string s(text);
-  char* end = nullptr;
-  errno = 0;
-  const double v = std::strtod(s.c_str(), &end);
-  if (end != s.c_str() + s.size() || errno == ERANGE || !std::isfinite(v)) return std::nullopt;
-  // strtod accepts hexadecimal and "inf"/"nan": only plain decimal numbers are meant here.
-  if (s.find_first_of("xXnN") != std::string::npos) return std::nullopt;
-  return v;
+  return tb::text::parse_double(text);  // plain decimal: no hexadecimal, no "inf"/"nan"
 }
 
 std::optional<std::int64_t> to_int64(std::string_view text) {

@@ -7,22 +7,14 @@
 
 #include "rotator/adc_model.h"
 #include "tracker/station_loop.h"
+#include "util/text.h"
 
 namespace tb::host {
 
 namespace {
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
-  return s;
-}
-
-std::string upper(std::string_view s) {
-  std::string u(s);
-  for (auto& c : u) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return u;
-}
+std::string_view trim(std::string_view s) { return text::trim(s, text::kWhitespace); }
+using text::upper;
 
 bool blank(char c) { return c == ' ' || c == '\t'; }
 

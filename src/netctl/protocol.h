@@ -3,6 +3,7 @@
 // (a '+' or other punctuation before the command: "set_pos: 90 45", "Key: value" lines, "RPRT n").
 // Transport-free: a line in, reply text out. docs/hamlib-endpoints.md has the formats.
 #pragma once
+#include "util/text.h"
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -99,8 +100,8 @@ class LineProtocol : public LineHandler {
 };
 
 // Strict number parsing for arguments: the whole token, finite.
-std::optional<double> parse_double(std::string_view s);
-std::optional<long long> parse_integer(std::string_view s);
+using text::parse_double;
+using text::parse_integer;
 // printf("%.2f")
 std::string fixed2(double v);
 // Control characters replaced by spaces, so a value always fits on its line.

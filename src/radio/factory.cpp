@@ -5,6 +5,7 @@
 
 #include "radio/cat_links.h"
 #include "radio/simulated.h"
+#include "util/text.h"
 
 namespace tb::radio {
 
@@ -26,11 +27,10 @@ std::vector<std::string> split(std::string_view s, char sep) {
   return out;
 }
 
+// Digits only, as the spec forms print them ("+9600" is not a speed).
 std::optional<int> to_int(std::string_view s) {
-  int v = 0;
-  auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-  if (ec != std::errc() || p != s.data() + s.size()) return std::nullopt;
-  return v;
+  if (!s.empty() && s.front() == '+') return std::nullopt;
+  return text::parse_integer<int>(s);
 }
 
 bool is_baud(int v) {

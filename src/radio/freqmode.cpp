@@ -1,4 +1,5 @@
 #include "radio/freqmode.h"
+#include "util/text.h"
 
 #include <cstdlib>
 #include <map>
@@ -25,11 +26,7 @@ std::vector<std::string_view> split_fields(std::string_view line) {
   return out;
 }
 
-std::string lower(std::string_view s) {
-  std::string out;
-  for (char c : s) out.push_back(c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c);
-  return out;
-}
+using text::lower;
 
 constexpr const char* kExpectFrequency =
     "a frequency in MHz such as 435.120, optionally with a converter offset as in "

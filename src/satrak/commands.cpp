@@ -1,4 +1,5 @@
 #include "satrak/commands.h"
+#include "util/text.h"
 
 #include <charconv>
 #include <cmath>
@@ -9,15 +10,8 @@ namespace tb::satrak {
 
 namespace {
 
-bool blank(char c) { return c == ' ' || c == '\t'; }
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && blank(s.front())) s.remove_prefix(1);
-  while (!s.empty() && blank(s.back())) s.remove_suffix(1);
-  return s;
-}
-
-char upper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
+using text::trim;
+constexpr char upper(char c) { return text::to_upper(c); }
 
 bool word_char(char c) {
   return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
@@ -122,22 +116,12 @@ std::optional<double> parse_number(std::string_view s) {
   if (s.empty() || s.size() > 40) return std::nullopt;
   for (char c : s)
     if (!((c >= '0' && c <= '9') || c == '.' || c == '-' || c == '+')) return std::nullopt;  // no exponents, no "inf"
-  std::string text(s);
-  if (text.front() == '+') text.erase(0, 1);
-  if (text.empty() || text.front() == '+') return std::nullopt;
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (end != text.c_str() + text.size() || !std::isfinite(v)) return std::nullopt;
-  return v;
+  return text::parse_double(s);
 }
 
 std::optional<long long> parse_integer(std::string_view s) {
-  if (!s.empty() && s.front() == '+') s.remove_prefix(1);
-  if (s.empty() || s.size() > 18) return std::nullopt;
-  long long v = 0;
-  const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-  if (ec != std::errc() || p != s.data() + s.size()) return std::nullopt;
-  return v;
+  if (s.size() > (!s.empty() && s.front() == '+' ? 19u : 18u)) return std::nullopt;
+  return text::parse_integer(s);
 }
 
 std::optional<double> parse_latitude(std::string_view s) { return angle_with_hemisphere(s, 'N', 'S', 90.0); }

@@ -9,6 +9,7 @@
 
 #include "rotator/adc_model.h"
 #include "store/model.h"
+#include "util/text.h"
 
 namespace tb::store {
 
@@ -28,29 +29,9 @@ struct LineShape {
 };
 const LineShape kShapes[5] = {{kNames1, 5}, {kNames2, 4}, {kNames3, 4}, {kNames4, 4}, {kNames5, 8}};
 
-std::string upper(std::string_view s) {
-  std::string u(s);
-  for (auto& c : u) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return u;
-}
-
-std::optional<double> to_double(std::string_view s) {
-  if (s.empty()) return std::nullopt;
-  if (s[0] == '+') s.remove_prefix(1);
-  double v = 0.0;
-  const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-  if (ec != std::errc() || p != s.data() + s.size() || !std::isfinite(v)) return std::nullopt;
-  return v;
-}
-
-std::optional<int> to_int(std::string_view s) {
-  if (s.empty()) return std::nullopt;
-  if (s[0] == '+') s.remove_prefix(1);
-  int v = 0;
-  const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-  if (ec != std::errc() || p != s.data() + s.size()) return std::nullopt;
-  return v;
-}
+using text::upper;
+std::optional<double> to_double(std::string_view s) { return text::parse_double(s); }
+std::optional<int> to_int(std::string_view s) { return text::parse_integer<int>(s); }
 
 // "10", "2E", "2eH": one or two hex digits, an optional trailing H. Digits only: from_chars takes a
 // '-', and "-4" would wrap to FC (the CI-V jam code) in the address byte.
