@@ -1,4 +1,5 @@
-// Menu 3-1: Edit. Choose a satellite of the database (Enter: the one marked '*', Q: back), then
+// Menu 3-1: Edit. Choose a satellite of the tracking list by its number (Enter: the one marked '*',
+// Q: back; the whole database when the tracking list is empty), then
 // its data line by line in the manual's order, each line showing the stored value; Enter keeps it:
 //
 //   ====== Satellite data ======
@@ -225,11 +226,19 @@ void menu_3_1_edit(term::Terminal& t, Services& s) {
     t.line("The database is empty: load element data with menu 3-3 first.");
     return;
   }
+  // The manual lists the tracking list (up to 15, the '*' on the one last chosen) and takes its
+  // number; with an empty tracking list, the whole database.
+  std::vector<int> candidates = db.selected;
+  int marked = db.marked;
+  if (candidates.empty()) {
+    for (std::size_t i = 0; i < db.satellites.size(); ++i) candidates.push_back(static_cast<int>(i));
+    marked = db.marked_index().value_or(-1);
+  }
   std::vector<std::string> names;
-  for (const auto& sat : db.satellites) names.push_back(sat.name());
-  const auto pick = choose_satellite(t, "     *** Select object satellite ***", names, db.marked_index().value_or(-1));
+  for (const int i : candidates) names.push_back(db.satellites[static_cast<std::size_t>(i)].name());
+  const auto pick = choose_satellite(t, "     *** Select object satellite ***", names, marked);
   if (!pick) return;
-  const std::size_t index = static_cast<std::size_t>(*pick);
+  const std::size_t index = static_cast<std::size_t>(candidates[static_cast<std::size_t>(*pick)]);
 
   store::Satellite sat = db.satellites[index];  // the copy being edited
   orbit::Elements& e = sat.elements;

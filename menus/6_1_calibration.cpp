@@ -56,9 +56,8 @@ void menu_6_1_calibration(term::Terminal& t, Services& s) {
     return rotator::format_monitor_line(st.az.counts, old.az_deg_from_raw(st.az.counts), st.el.counts,
                                         old.el_deg_from_raw(st.el.counts));
   };
-  const bool keys = cfg::offer_rotor_control(t, s, "keys 4/6/8/2/5 will not move the antenna.");
-  t.line(keys ? "Left(4),Right(6),Up(8),Dwn(2),Stop(5) move the antenna; Y when it is there."
-              : "Move the antenna with its own control box; Y when it is there.");
+  cfg::take_rotor_control(t, s);
+  t.line("Left(4),Right(6),Up(8),Dwn(2),Stop(5) move the antenna (or its own control box); Y when it is there.");
   struct Point {
     const char* where;
     const char* prompt;

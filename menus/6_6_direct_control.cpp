@@ -14,7 +14,6 @@ namespace tb::menus {
 
 namespace {
 
-const char* kWhy = "direct control cannot move the antenna.";
 
 // Points at a compass position and watches it go there; says so when the limits moved the target.
 void go_to(term::Terminal& t, Services& s, rotator::AzEl where) {
@@ -49,7 +48,7 @@ void menu_6_6_direct_control(term::Terminal& t, Services& s) {
 }
 
 void menu_6_6_1_keyboard(term::Terminal& t, Services& s) {
-  if (!cfg::offer_rotor_control(t, s, kWhy)) return;
+  cfg::take_rotor_control(t, s);
   s.station.stop_antenna();  // tracking stops; nothing moves until a key says so
   t.line("Left(4),Right(6),Up(8),Dwn(2),Stop(5)or Ret");
   cfg::LiveMonitor m(t, s);
@@ -64,7 +63,7 @@ void menu_6_6_1_keyboard(term::Terminal& t, Services& s) {
 }
 
 void menu_6_6_2_enter_value(term::Terminal& t, Services& s) {
-  if (!cfg::offer_rotor_control(t, s, kWhy)) return;
+  cfg::take_rotor_control(t, s);
   const auto now = s.station.antenna();
   const double el_top = 90.0;
   const auto az = cfg::ask_number(t, "Azimuth: " + (now ? cfg::fmt1(now->az) : std::string("---.-")) + "  ",
@@ -93,7 +92,8 @@ void menu_6_6_3_presets(term::Terminal& t, Services& s) {
       return MenuStep::again;
     }
     if (key < '1' || key > '5') return MenuStep::unknown;
-    if (cfg::offer_rotor_control(t, s, kWhy)) go_to(t, s, s.model.rotator.presets[static_cast<std::size_t>(key - '1')]);
+    cfg::take_rotor_control(t, s);
+    go_to(t, s, s.model.rotator.presets[static_cast<std::size_t>(key - '1')]);
     return MenuStep::again;
   });
 }

@@ -211,13 +211,11 @@ bool commit_rotator(term::Terminal& t, Services& s, const rotator::RotatorConfig
   return true;
 }
 
-bool offer_rotor_control(term::Terminal& t, Services& s, std::string_view why) {
-  if (s.station.rotor_control()) return true;
-  t.line("Rotor control is OFF (E key): " + std::string(why));
-  if (!ask_yes_no(t, "Switch rotor control ON ? [Y/N] ")) return false;
+void take_rotor_control(term::Terminal& t, Services& s) {
+  if (s.station.rotor_control()) return;
   s.station.set_rotor_control(true);
+  t.line("Rotor control switched ON (E key in the realtime display switches it OFF).");
   save_or_report(t, s);
-  return true;
 }
 
 LiveMonitor::LiveMonitor(term::Terminal& t, Services& s, std::vector<std::string> below,

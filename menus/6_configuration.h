@@ -62,9 +62,10 @@ char ask_choice(term::Terminal& t, std::string_view prompt, std::string_view key
 // and saves. Otherwise shows every problem and "Not changed." and leaves everything as it was.
 bool commit_rotator(term::Terminal& t, Services& s, const rotator::RotatorConfig& next);
 
-// Direct control moves the antenna only with rotor control (the E switch) on: when it is off, says
-// so and asks to switch it on (as E would, saved). True when it is on.
-bool offer_rotor_control(term::Terminal& t, Services& s, std::string_view why);
+// Direct control (6-1, 6-6-1, 6-6-2, 6-6-3) is the operator moving the antenna: it takes rotor
+// control (the E switch) as the manual's examples assume, with one line saying so when it was off
+// (saved, as E would be). No question: the manual's keystrokes work on a fresh unit (issue 18).
+void take_rotor_control(term::Terminal& t, Services& s);
 
 // The live "AZ= 519 / 32.8deg EL= 462 / 90.0deg." line, redrawn when it changes, with any
 // rotator message (stall, fault) printed once above it.

@@ -427,10 +427,10 @@ def walk_6_6(ui):
     must(out, r"1\.Direct rotor control from key board\.\n2\.Enter direction value\.\n3\.Preset Control\.",
          "the 6-6 sub-menu")
     ui.send("2\r")
-    out = ui.prompt(r"Switch rotor control ON \? \[Y/N\] ")
-    must(out, r"Rotor control is OFF \(E key\): direct control cannot move the antenna\.", "rotor control is off")
-    ui.send("Y")
-    answer(ui, r"Azimuth: 180\.0 ", "210\r", "6-6-2")
+    out = ui.prompt(r"Azimuth: 180\.0 ")
+    must(out, r"Rotor control switched ON \(E key in the realtime display switches it OFF\)\.",
+         "6-6-2 on a fresh unit takes rotor control without a question")
+    ui.send("210\r")
     answer(ui, r"Elevation: 0\.0 ", "20\r", "6-6-2")
     wait_arrived(ui, DIRECT, 210, 20)
 
@@ -789,7 +789,7 @@ def group_6_7_8(s):
     walk_6_6(ui)
     ui.prompt(UPDATE)
     data = load_state(s.state_file)
-    check(data["rotor_control"] is True, "Y to 'Switch rotor control ON' is stored")
+    check(data["rotor_control"] is True, "rotor control taken by 6-6-2 is stored")
     check(data["rotator"]["presets"] == [[float(a), float(e)] for a, e in PRESETS], "presets stored")
 
     ui.send("Q\r")

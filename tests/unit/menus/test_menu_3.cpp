@@ -78,7 +78,7 @@ TEST_CASE("Menu 3-1: the manual's transcript — pick #7, Enter on every line ke
   menus::menu_3_update_elements(f.term, *f.services);
   const std::string& out = f.term.output();
   CHECK(has(out, " Select: 1\n     *** Select object satellite ***\n 1.*AO-07"));
-  CHECK(has(out, "17. AO-123"));  // the whole database, not the tracking list
+  CHECK(!has(out, "17. AO-123"));  // the tracking list (up to 15), as the manual, not the whole database
   CHECK(has(out, "     Select :7\n====== Satellite data ======\n"));
   CHECK(has(out, "Satellite       : AO-73        \n"));
   CHECK(has(out, "Epoch Year Y0   : 26           Y0:\n"));
@@ -474,4 +474,28 @@ TEST_CASE("Menu 3-3: lines may end in CR, LF or CR LF; each is echoed once") {
   CHECK(count(out, "1 25544U") == 1);
   CHECK(has(out, "Satellite (ISS) updated and selected as # 1\nSatellite (AO-07) updated and selected as # 2\n"));
   CHECK(f.model.db.selected == std::vector<int>{1, 0});
+}
+
+TEST_CASE("Menu 3-1 numbers the tracking list, not the database: #1 is the first satellite selected") {
+  testing::MenuFixture f("1\r1\rNEWNAME\r" + enters(19) + "q\r");
+  auto& db = f.model.db;
+  REQUIRE(db.satellites.size() > 16);
+  db.selected = {16, 3};
+  db.marked = 1;
+  const std::string first = db.satellites[16].name(), second = db.satellites[3].name();
+  menus::menu_3_update_elements(f.term, *f.services);
+  const std::string& out = f.term.output();
+  CHECK(has(out, " 1. " + first));
+  CHECK(has(out, " 2.*" + second));
+  CHECK(db.satellites[16].name() == "NEWNAME");
+  CHECK(db.satellites[3].name() == second);
+}
+
+TEST_CASE("Menu 3-1 with an empty tracking list offers the whole database") {
+  testing::MenuFixture f("1\r17\r" + enters(20) + "q\r");
+  f.model.db.selected.clear();
+  f.model.db.marked = -1;
+  menus::menu_3_update_elements(f.term, *f.services);
+  CHECK(has(f.term.output(), "17. AO-123"));
+  CHECK(has(f.term.output(), "Satellite (AO-123) updated."));
 }

@@ -142,15 +142,14 @@ TEST_CASE("Menu 6 scripts: the keys typed, what the screen shows, what the model
          CHECK(f.station->rotator().config() == was.rotator);
        }},
 
-      {.name = "6-1: rotor control off: asked, and the keys do nothing when the answer is N",
-       .keys = "1\rN6NQ\r",
+      {.name = "6-1 on a fresh unit (rotor control off) takes rotor control: no question, the keys move",
+       .keys = "1\r6NQ\r",
        .setup = [](Fixture& f) { f.term.timeouts_before_key = 20; },
-       .shown = {"Rotor control is OFF (E key): keys 4/6/8/2/5 will not move the antenna.\n"
-                 "Switch rotor control ON ? [Y/N] N\n",
-                 "Rotor control is OFF: the keys do not move the antenna.\n"},
+       .shown = {"Rotor control switched ON (E key in the realtime display switches it OFF).\n"},
+       .saves = 1,
        .then = [](Fixture& f, const store::Model&) {
-         CHECK(f.rotator_sim->true_position().az_travel == 0.0);
-         CHECK(!f.model.rotor_control);
+         CHECK(!has(f.term.output(), "Switch rotor control ON"));
+         CHECK(f.model.rotor_control);
        }},
 
       {.name = "6-2 sets the ADC span by hand, as in the manual's example",
@@ -317,19 +316,11 @@ TEST_CASE("Menu 6 scripts: the keys typed, what the screen shows, what the model
          CHECK(std::abs(f.truth().el - 10) <= kElTol);
        }},
 
-      // 6-6 with rotor control off asks first; N moves nothing, Y switches it on.
-      {.name = "6-6 with rotor control off asks first: N moves nothing",
-       .keys = "6\r2\rNQ\rQ\r",
-       .shown = {"Rotor control is OFF (E key): direct control cannot move the antenna.\n"
-                 "Switch rotor control ON ? [Y/N] N\n"},
-       .then = [](Fixture& f, const store::Model&) {
-         CHECK(!has(f.term.output(), "Azimuth:"));
-         CHECK(!f.model.rotor_control);
-       }},
-
-      {.name = "6-6 with rotor control off asks first: Y switches it on",
-       .keys = "6\r2\rY30\r10\rQ\rQ\r",
+      // 6-6 with rotor control off (a fresh unit): the manual's keystrokes work, control is taken.
+      {.name = "6-6-2 on a fresh unit takes rotor control and goes where the manual's keystrokes say",
+       .keys = "6\r2\r30\r10\rQ\rQ\r",
        .setup = [](Fixture& f) { f.term.timeouts_before_key = 4000; },
+       .shown = {"Rotor control switched ON (E key in the realtime display switches it OFF).\n", "Azimuth:"},
        .saves = 1,
        .then = [](Fixture& f, const store::Model&) {
          CHECK(f.model.rotor_control);
