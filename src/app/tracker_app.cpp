@@ -175,9 +175,11 @@ std::optional<std::string> start_satrak(StationApp& app, const TrackerConfig& c,
 }
 
 std::optional<std::string> start_netctl(StationApp& app, const TrackerConfig& c, Servers& out) {
-  auto opts = [&c](netctl::ServerOptions so) {
+  auto opts = [&c](netctl::ServerOptions so, const std::string& secret) {
     so.address = c.listen;
     so.allow = c.allow;
+    so.secret = secret;
+    so.auth_deadline = std::chrono::seconds(c.auth_timeout_s);
     return so;
   };
   auto port = [](int p) { return static_cast<std::uint16_t>(p); };
@@ -186,15 +188,15 @@ std::optional<std::string> start_netctl(StationApp& app, const TrackerConfig& c,
     starting = "--rotctld-port";
     if (c.rotctld_port)
       out.rotctld = std::make_unique<netctl::RotctldServer>(app.io(), port(*c.rotctld_port), app.station(),
-                                                             opts(netctl::RotctldServer::named("rotctld")));
+                                                             opts(netctl::RotctldServer::named("rotctld"), c.rotctld_secret));
     starting = "--rigctld-port";
     if (c.rigctld_port)
       out.rigctld = std::make_unique<netctl::RigctldServer>(app.io(), port(*c.rigctld_port), app.station(),
-                                                             opts(netctl::RotctldServer::named("rigctld")));
+                                                             opts(netctl::RotctldServer::named("rigctld"), c.rigctld_secret));
     starting = "--host-port";
     if (c.host_port)
       out.host = std::make_unique<netctl::HostServer>(app.io(), port(*c.host_port), app.station(),
-                                                       opts(netctl::HostServer::defaults()));
+                                                       opts(netctl::HostServer::defaults(), c.host_secret));
   } catch (const std::exception& e) {
     return std::string(starting) + ": " + e.what();
   }
@@ -282,6 +284,10 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   if (auto err = start_satrak(app, c, startup, servers)) return usage_error(*err);
   if (auto err = start_netctl(app, c, servers)) return usage_error(*err);
   warn_open_endpoints(c, servers, *log);
+  for (const auto& w : c.warnings) {
+    log->warn("{}", w);
+    std::fprintf(stderr, "trakbox: WARNING: %s\n", w.c_str());
+  }
   app.start(std::chrono::milliseconds(c.tick_ms));
   if (startup.ram_lost || startup.fresh) app.save();
   log->info("trakbox {} started, state {}", kVersion, file.path().string());

@@ -6,6 +6,7 @@
 #include "app/build_info.h"
 #include "menus/term/line_terminal.h"
 #include "store/state_file.h"
+#include "util/secret.h"
 
 namespace tb::app {
 
@@ -36,6 +37,11 @@ std::vector<OptionSpec> tracker_option_specs() {
       {"rigctld-port", "N", "answer the rigctld protocol on TCP port N (4532 by convention; off by default)"},
       {"host-port", "N", "host mode (menu 7's commands) on TCP port N (off by default)"},
       {"listen", "ADDR", "address the host, rotctld and rigctld servers listen on (default 127.0.0.1)"},
+      {"rotctld-secret-file", "FILE", "rotctld clients must first send \\password with the secret on this file's "
+                                      "first line (never on the command line)"},
+      {"rigctld-secret-file", "FILE", "rigctld clients must first send \\password with the secret in FILE"},
+      {"host-secret-file", "FILE", "host-mode clients must first send PASS with the secret in FILE"},
+      {"auth-timeout", "S", "seconds a client of a port with a secret has to give it, 1 to 600 (default 10)"},
       {"allow", "CIDR", "only clients in this address range may connect to any TCP endpoint (repeatable; "
                         "e.g. 192.168.1.0/24, 2001:db8::/32, 10.0.0.5); others are refused", true},
       {"log-level", "LEVEL", "what trakbox.log in the state directory keeps: error, warn, info (default) or "
@@ -82,6 +88,33 @@ void read_devices(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
   const auto radio_spec = radio::parse_radio_spec(o.value("radio").value_or("simulated"));
   if (radio_spec.spec) c.radio = *radio_spec.spec;
   else r.fail("--radio", radio_spec.error);
+}
+
+// The endpoints' secrets, each for a server that is on.
+void read_secrets(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
+  if (const auto v = r.integer("auth-timeout", false, "seconds, 1 to 600", Range{1, 600})) c.auth_timeout_s = static_cast<int>(*v);
+  struct Endpoint {
+    const char* option;
+    const char* port_option;
+    bool on;
+    std::string& secret;
+  };
+  const Endpoint endpoints[] = {{"rotctld-secret-file", "rotctld-port", c.rotctld_port.has_value(), c.rotctld_secret},
+                                {"rigctld-secret-file", "rigctld-port", c.rigctld_port.has_value(), c.rigctld_secret},
+                                {"host-secret-file", "host-port", c.host_port.has_value(), c.host_secret}};
+  for (const Endpoint& e : endpoints) {
+    const auto path = o.value(e.option);
+    if (!path) continue;
+    const std::string label = std::string("--") + e.option;
+    if (!e.on) {
+      r.fail(label, std::string("the server is off (give --") + e.port_option + ")");
+      continue;
+    }
+    std::string error, warning;
+    if (const auto s = secret::read_file(*path, error, warning)) e.secret = *s;
+    else r.fail(label, error);
+    if (!warning.empty()) c.warnings.push_back(warning);
+  }
 }
 
 // Front ends that cannot go together.
@@ -145,6 +178,7 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
     else r.fail("--allow", "expected an address or ADDRESS/PREFIX (192.168.1.0/24, ::1); found '" + a + "'");
   }
   check_front_end(o, r, front_end);
+  read_secrets(o, r, c);
   if (!r.ok()) return ConfigOutcome::refuse(r.error()->text());
 
   c.tty = o.value("tty");

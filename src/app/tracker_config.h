@@ -51,6 +51,11 @@ struct TrackerConfig {
   std::optional<int> rotctld_port, rigctld_port, host_port;
   std::string listen = "127.0.0.1";
   std::vector<net::Cidr> allow;
+  // Shared secrets of the rotctld, rigctld and host-mode servers (read from --*-secret-file; empty:
+  // none) and how long a client has to give one.
+  std::string rotctld_secret, rigctld_secret, host_secret;
+  int auth_timeout_s = 10;
+  std::vector<std::string> warnings;  // e.g. a secret file others can read: said at start
   spdlog::level::level_enum log_level = spdlog::level::info;
 };
 

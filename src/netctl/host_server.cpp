@@ -1,6 +1,7 @@
 #include "netctl/host_server.h"
 
 #include "host/host_mode.h"
+#include "util/text.h"
 
 namespace tb::netctl {
 
@@ -37,6 +38,22 @@ Reply HostProtocol::handle(std::string_view line) {
 
 std::string HostProtocol::refusal() const {
   return "ERROR busy: every host-mode connection is taken and in use; try again later\r\n";
+}
+
+LineHandler::Gate HostProtocol::gate(std::string_view line) const {
+  const std::string_view t = text::trim(line, text::kWhitespace);
+  if (t.size() >= 4 && text::iequals(t.substr(0, 4), "PASS") && (t.size() == 4 || t[4] == ' ' || t[4] == '\t'))
+    return {Gate::Kind::password, std::string(text::trim(t.substr(4), text::kWhitespace))};
+  if (text::iequals(t, "Q")) return {Gate::Kind::allowed, {}};
+  return {};
+}
+
+std::string HostProtocol::auth_reply(bool ok) const {
+  return lines_then_prompt({ok ? "OK authenticated" : "ERROR wrong secret"});
+}
+
+std::string HostProtocol::auth_required() const {
+  return lines_then_prompt({"ERROR this port wants its secret first: PASS <secret>"});
 }
 
 Reply HostProtocol::overlong() const {

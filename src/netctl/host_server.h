@@ -26,6 +26,10 @@ class HostProtocol final : public LineHandler {
   Reply overlong() const override;
   std::string greeting() const override;
   std::string refusal() const override;  // "ERROR busy: ..."
+  // With a secret (--host-secret-file): "PASS SECRET" first; before it only Q works.
+  Gate gate(std::string_view line) const override;
+  std::string auth_reply(bool ok) const override;
+  std::string auth_required() const override;
 
  private:
   struct Impl;

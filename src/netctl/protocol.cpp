@@ -111,6 +111,19 @@ Reply LineProtocol::handle(std::string_view line) {
 
 std::string LineProtocol::refusal() const { return rprt(Error::rejected) + "\n"; }
 
+LineHandler::Gate LineProtocol::gate(std::string_view line) const {
+  const std::optional<Request> req = parse_request(line);
+  if (!req) return {Gate::Kind::allowed, {}};  // a blank line or a comment: nothing happens
+  if (req->long_name && req->name == "password") return {Gate::Kind::password, req->args.empty() ? "" : req->args[0]};
+  const bool quit = req->long_name ? req->name == "quit" : (req->name == "q" || req->name == "Q");
+  const bool handshake = req->long_name && (req->name == "chk_vfo" || req->name == "dump_state");
+  return {quit || handshake ? Gate::Kind::allowed : Gate::Kind::refused, {}};
+}
+
+std::string LineProtocol::auth_reply(bool ok) const { return rprt(ok ? Error::none : Error::invalid) + "\n"; }
+
+std::string LineProtocol::auth_required() const { return rprt(Error::security) + "\n"; }
+
 Reply LineProtocol::overlong() const { return {rprt(Error::protocol) + "\n", false}; }
 
 std::string fixed2(double v) {

@@ -23,6 +23,7 @@ enum class Error : int {
   rejected = 9,        // RIG_ERJCTED: trakbox refuses now (rotor control off, parking off, tracking)
   not_available = 11,  // RIG_ENAVAIL: a command trakbox does not offer
   bad_vfo = 16,        // RIG_EVFO: a VFO trakbox has no link for
+  security = 19,       // RIG_ESECURITY: the endpoint wants its secret first (\password)
 };
 // "RPRT -1"
 std::string rprt(Error e);
@@ -76,6 +77,22 @@ class LineHandler {
   virtual std::string greeting() const { return {}; }
   // Sent to a client refused because every connection is taken and busy (empty: just closed).
   virtual std::string refusal() const { return {}; }
+
+  // Authentication, when the endpoint has a shared secret (ServerOptions::secret): until a client
+  // has given it, each line goes to gate() instead of handle(). A line is the protocol's password
+  // command (with the secret it carries), a line allowed without it (the handshake a client sends
+  // first, quitting), or refused.
+  struct Gate {
+    enum class Kind { refused, allowed, password } kind = Kind::refused;
+    std::string password;
+  };
+  virtual Gate gate(std::string_view line) const {
+    (void)line;
+    return {};
+  }
+  // The reply to the password command (right or wrong), and to a refused line.
+  virtual std::string auth_reply(bool ok) const { return ok ? "OK\n" : "ERROR\n"; }
+  virtual std::string auth_required() const { return "ERROR\n"; }
 };
 
 // The Hamlib line protocols (rotctld, rigctld).
@@ -84,6 +101,11 @@ class LineProtocol : public LineHandler {
   // One line without its newline (a trailing '\r' is ignored).
   Reply handle(std::string_view line) override;
   std::string refusal() const override;  // "RPRT -9": rejected
+  // Hamlib's rigctld: "\password SECRET" answers RPRT 0, or RPRT -1 when wrong; before it only
+  // \chk_vfo, \dump_state and quitting work, anything else is answered RPRT -19 (RIG_ESECURITY).
+  Gate gate(std::string_view line) const override;
+  std::string auth_reply(bool ok) const override;
+  std::string auth_required() const override;
   // A line longer than kMaxLineLength (the server discards it up to its newline): RPRT -8.
   Reply overlong() const override;
 

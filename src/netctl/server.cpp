@@ -1,5 +1,7 @@
 #include "netctl/server.h"
 
+#include "util/secret.h"
+
 #include <spdlog/spdlog.h>
 
 #include <array>
@@ -42,7 +44,11 @@ std::string describe(const tcp::socket& s) {
 class Session : public std::enable_shared_from_this<Session> {
  public:
   Session(tcp::socket socket, std::shared_ptr<LineServer::Core> core)
-      : socket_(std::move(socket)), core_(std::move(core)), peer_(describe(socket_)) {}
+      : socket_(std::move(socket)),
+        core_(std::move(core)),
+        peer_(describe(socket_)),
+        authenticated_(core_->options.secret.empty()),
+        auth_timer_(socket_.get_executor()) {}
 
   // How long the client has sent nothing.
   std::chrono::steady_clock::duration silent() const { return std::chrono::steady_clock::now() - last_heard_; }
@@ -52,12 +58,14 @@ class Session : public std::enable_shared_from_this<Session> {
     spdlog::info("{}: client {} connected", core_->options.name, peer_);
     if (core_->protocol) queue(core_->protocol->greeting());
     if (closed_) return;
+    if (!authenticated_) arm_auth_deadline();
     read();
   }
 
   void close(const char* why) {
     if (closed_) return;
     closed_ = true;
+    auth_timer_.cancel();
     error_code ec;
     socket_.shutdown(tcp::socket::shutdown_both, ec);
     socket_.close(ec);
@@ -139,8 +147,47 @@ class Session : public std::enable_shared_from_this<Session> {
     return nullptr;
   }
 
+  // A client that has not given the secret in time is closed.
+  void arm_auth_deadline() {
+    auth_timer_.expires_after(core_->options.auth_deadline);
+    auth_timer_.async_wait([self = shared_from_this()](const error_code& ec) {
+      if (ec || self->closed_ || self->authenticated_) return;
+      spdlog::warn("{}: client {} did not give the secret within {} s; closed", self->core_->options.name, self->peer_,
+                   std::chrono::duration_cast<std::chrono::seconds>(self->core_->options.auth_deadline).count());
+      self->queue(self->core_->protocol ? self->core_->protocol->auth_required() : std::string());
+      self->closing_ = true;
+      self->write();
+    });
+  }
+
+  // Before the secret: the password command is checked (never logged), the handshake lines pass,
+  // the rest is refused. True when the line has been dealt with here.
+  bool gate_line() {
+    const LineHandler::Gate g = core_->protocol->gate(line_);
+    if (g.kind == LineHandler::Gate::Kind::allowed) return false;
+    if (g.kind == LineHandler::Gate::Kind::refused) {
+      spdlog::debug("{}: client {}: a command before the secret: refused", core_->options.name, peer_);
+      queue(core_->protocol->auth_required());
+      return true;
+    }
+    const bool ok = secret::equal(g.password, core_->options.secret);
+    queue(core_->protocol->auth_reply(ok));
+    if (ok) {
+      authenticated_ = true;
+      auth_timer_.cancel();
+      spdlog::info("{}: client {} authenticated", core_->options.name, peer_);
+    } else if (++auth_failures_ >= core_->options.max_auth_failures) {
+      spdlog::warn("{}: client {} gave a wrong secret {} times; closed", core_->options.name, peer_, auth_failures_);
+      closing_ = true;
+    } else {
+      spdlog::warn("{}: client {} gave a wrong secret", core_->options.name, peer_);
+    }
+    return true;
+  }
+
   void handle_line() {
     if (!core_->protocol) return;
+    if (!authenticated_ && gate_line()) return;
     const Reply r = core_->protocol->handle(line_);
     if (spdlog::should_log(spdlog::level::debug))  // --log-level debug: what a client asked, what it got
       spdlog::debug("{}: client {}: '{}' -> '{}'", core_->options.name, peer_, one_line(line_.substr(0, 200)),
@@ -190,6 +237,9 @@ class Session : public std::enable_shared_from_this<Session> {
   std::string writing_;  // handed to async_write
   bool closing_ = false; // close once out_ and writing_ are sent
   bool closed_ = false;
+  bool authenticated_;   // no secret, or the client gave it
+  int auth_failures_ = 0;
+  asio::steady_timer auth_timer_;
 };
 
 }  // namespace

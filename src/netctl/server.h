@@ -49,6 +49,12 @@ struct ServerOptions {
   std::string name = "netctl";             // for the log: "rotctld", "rigctld", "host"
   // A CR ends a line as well as a LF (a CR LF pair ends one line): terminal programs send CR.
   bool cr_ends_line = false;
+  // A shared secret (--rotctld-secret-file, ...): a client must give it with the protocol's
+  // password command (LineHandler::gate) before anything else works; it has auth_deadline to do so
+  // and max_auth_failures tries, then it is closed. Empty: no authentication (Gpredict's way).
+  std::string secret;
+  std::chrono::milliseconds auth_deadline{10000};
+  int max_auth_failures = 3;
 };
 
 // A TCP server handing each line of each client to one LineHandler, in order of arrival; the
