@@ -32,18 +32,16 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <utility>
+
+#include "orbit/constants.h"
 
 namespace tb::orbit {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kTwoPi = 2.0 * kPi;
-constexpr double kDeg = kPi / 180.0;
-constexpr double kMu = 398600.8;            // WGS-72 (SGP4's own), km^3/s^2
-constexpr double kReSgp4 = 6378.135;        // WGS-72 equatorial radius, km
-constexpr double kJ2 = 0.001082616;
+using wgs72::kJ2;
+using wgs72::kMu;                           // SGP4's own, km^3/s^2
+constexpr double kReSgp4 = wgs72::kRadiusKm;  // SGP4's equatorial radius, km
 constexpr double kOmega = kEarthRotationRadS * 1.000001;  // Earth rate with a hair of margin, rad/s
 
 // Margins. The geometry is exact; these cover what the state at the window start and the mean elements
@@ -308,7 +306,7 @@ Searcher::Searcher(const Sgp4& sat, const Observer& o, UtcTime start, UtcTime st
   gmst_rate_ = sec_per_century / (36525.0 * kSecondsPerDay) * (kPi / 43200.0);
 
   site_ = observer_ecef_km(o);
-  const double lat = o.lat_deg * kDeg, lon = o.lon_deg * kDeg;
+  const double lat = o.lat_deg * kDegToRad, lon = o.lon_deg * kDegToRad;
   sl_ = std::sin(lat);
   cl_ = std::cos(lat);
   so_ = std::sin(lon);
@@ -319,7 +317,7 @@ Searcher::Searcher(const Sgp4& sat, const Observer& o, UtcTime start, UtcTime st
   cos_phi_ = std::hypot(us_[0], us_[1]);
   // Elevations above planes whose normals differ by delta differ by at most delta.
   const double delta = std::acos(std::clamp(dot(up_, us_), -1.0, 1.0));
-  const double h = std::clamp(opt_.horizon_deg, -89.0, 89.0) * kDeg;
+  const double h = std::clamp(opt_.horizon_deg, -89.0, 89.0) * kDegToRad;
   sin_h_ = std::sin(h);
   e_low_ = h - delta - kAngleMargin;
   e_high_ = std::min(h + delta + kAngleMargin, 0.5 * kPi);
@@ -383,13 +381,13 @@ LookAngles Searcher::look(const StateVector& ecef, bool all) const {
   LookAngles la;
   la.range_km = norm(rho);
   if (la.range_km <= 0.0) return la;
-  double az = (east == 0.0 && south == 0.0) ? 0.0 : std::atan2(east, -south) / kDeg;
+  double az = (east == 0.0 && south == 0.0) ? 0.0 : std::atan2(east, -south) / kDegToRad;
   az = std::fmod(az, 360.0);
   if (az < 0.0) az += 360.0;
   if (az >= 360.0) az = 0.0;
   la.az_deg = az;
   if (!all) return la;
-  la.el_deg = std::atan2(zen, std::hypot(south, east)) / kDeg;
+  la.el_deg = std::atan2(zen, std::hypot(south, east)) / kDegToRad;
   la.range_rate_km_s = dot(rho, ecef.v_km_s) / la.range_km;
   return la;
 }

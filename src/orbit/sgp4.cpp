@@ -12,30 +12,22 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <numbers>
 #include <vector>
+
+#include "orbit/constants.h"
 
 namespace tb::orbit {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kTwoPi = 2.0 * kPi;
-constexpr double kDegToRad = kPi / 180.0;
+using wgs72::kJ2;
+using wgs72::kJ3;
+using wgs72::kJ4;
+using wgs72::kKmPerSecPerErPerMin;  // velocity unit
+using wgs72::kXke;
+constexpr double kEarthRadiusKm = wgs72::kRadiusKm;
 constexpr double kTwoThirds = 2.0 / 3.0;
-
-// WGS-72 as used by SGP4 ("wgs72", not the older "wgs72old" with a rounded xke):
-// mu = 398600.8 km^3/s^2, equatorial radius 6378.135 km.
-constexpr double kEarthRadiusKm = 6378.135;
-// xke = 60 / sqrt(R^3 / mu), sqrt(earth radii^3 / mu) per minute. std::sqrt is not constexpr in
-// C++20, so this is the value that expression gives in double arithmetic (as the reference computes
-// it at run time): 60.0 / std::sqrt(6378.135 * 6378.135 * 6378.135 / 398600.8).
-constexpr double kXke = 0x1.309b5d0b2444cp-4;  // 0.07436691613317342
 constexpr double kMinutesPerTimeUnit = 1.0 / kXke;  // tumin
-constexpr double kJ2 = 0.001082616;
-constexpr double kJ3 = -0.00000253881;
-constexpr double kJ4 = -0.00000165597;
 constexpr double kJ3OverJ2 = kJ3 / kJ2;
-constexpr double kKmPerSecPerErPerMin = kEarthRadiusKm * kXke / 60.0;  // velocity unit
 
 // Element-set units: rev/day -> rad/min.
 constexpr double kRevPerDayPerRadPerMin = 1440.0 / kTwoPi;  // xpdotp

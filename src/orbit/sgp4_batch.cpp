@@ -4,16 +4,16 @@
 #include <cmath>
 #include <string_view>
 
+#include "orbit/constants.h"
+
 namespace tb::orbit {
 namespace {
 
-// The constants of sgp4.cpp (WGS-72, improved mode), repeated bit for bit where the kernel needs
-// them: 60 / sqrt(R^3 / mu) and the velocity unit.
-constexpr double kXke = 0x1.309b5d0b2444cp-4;
-constexpr double kEarthRadiusKm = 6378.135;
-constexpr double kJ2 = 0.001082616;
-constexpr double kKmPerSecPerErPerMin = kEarthRadiusKm * kXke / 60.0;
-constexpr double kTwoPi = 6.28318530717958647693;
+using wgs72::kJ2;
+using wgs72::kKmPerSecPerErPerMin;
+using wgs72::kXke;
+constexpr double kEarthRadiusKm = wgs72::kRadiusKm;
+static_assert(kTwoPi == 6.28318530717958647693);  // the literal this file used to spell out
 
 // 2/pi and pi/2 in two parts (fdlibm's pio2_1, pio2_1t: the first has 33 bits, so n * it is exact
 // for |n| < 2^20, i.e. |x| < 1.6e6 rad), and 2pi the same way.

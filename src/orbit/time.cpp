@@ -2,7 +2,8 @@
 
 #include <cmath>
 #include <cstdio>
-#include <numbers>
+
+#include "orbit/constants.h"
 
 namespace tb::orbit {
 namespace {
@@ -123,12 +124,11 @@ int expand_two_digit_year(int yy) { return yy < 57 ? 2000 + yy : 1900 + yy; }
 
 double gmst82(JulianDate jd_ut1) {
   // Vallado, "Fundamentals of Astrodynamics and Applications", eq. 3-47 (IAU-82), as in SGP4's gstime.
-  constexpr double twopi = 2.0 * std::numbers::pi;
   const double tut1 = ((jd_ut1.whole - kJdJ2000) + jd_ut1.fraction) / 36525.0;
   double temp = -6.2e-6 * tut1 * tut1 * tut1 + 0.093104 * tut1 * tut1 +
                 (876600.0 * 3600.0 + 8640184.812866) * tut1 + 67310.54841;  // seconds
-  temp = std::fmod(temp * (std::numbers::pi / 180.0) / 240.0, twopi);
-  if (temp < 0.0) temp += twopi;
+  temp = std::fmod(temp * kDegToRad / 240.0, kTwoPi);
+  if (temp < 0.0) temp += kTwoPi;
   return temp;
 }
 
