@@ -6,23 +6,17 @@
 #include <cmath>
 
 #include "orbit/constants.h"
+#include "orbit/geometry.h"
 
 namespace tb::orbit {
 namespace {
 
+using detail::dot;
+using detail::norm;
+using detail::sub;
+using detail::wrap360;
+
 constexpr double kE2 = kWgs84Flattening * (2.0 - kWgs84Flattening);  // first eccentricity squared
-
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-
-// Angle in degrees reduced to [0, 360).
-double wrap360(double deg) {
-  double r = std::fmod(deg, 360.0);
-  if (r < 0.0) r += 360.0;
-  if (r >= 360.0) r = 0.0;  // fmod of a tiny negative can round up to exactly 360
-  return r;
-}
 
 }  // namespace
 
@@ -73,23 +67,8 @@ Geodetic ecef_to_geodetic(const Vec3& r) {
 
 LookAngles look_angles(const StateVector& ecef, const Observer& o) {
   const Vec3 site = observer_ecef_km(o);
-  const Vec3 rho = sub(ecef.r_km, site);
-  const Vec3& rho_dot = ecef.v_km_s;  // the station is fixed in this frame
-  const double lat = o.lat_deg * kDegToRad, lon = o.lon_deg * kDegToRad;
-  const double sl = std::sin(lat), cl = std::cos(lat), so = std::sin(lon), co = std::cos(lon);
-  // Topocentric south-east-zenith components.
-  const double s = sl * co * rho[0] + sl * so * rho[1] - cl * rho[2];
-  const double e = -so * rho[0] + co * rho[1];
-  const double z = cl * co * rho[0] + cl * so * rho[1] + sl * rho[2];
-  LookAngles la;
-  la.range_km = norm(rho);
-  if (la.range_km <= 0.0) return la;
-  la.az_deg = (e == 0.0 && s == 0.0) ? 0.0 : wrap360(std::atan2(e, -s) / kDegToRad);
-  // asin(Z / range) written as atan2: the same angle, without asin's loss of precision near the
-  // zenith (asin(1 - 1e-16) is 8e-7 deg short of 90).
-  la.el_deg = std::atan2(z, std::hypot(s, e)) / kDegToRad;
-  la.range_rate_km_s = dot(rho, rho_dot) / la.range_km;
-  return la;
+  // The station is fixed in this frame: the line of sight changes at the satellite's velocity.
+  return detail::look_from(sub(ecef.r_km, site), ecef.v_km_s, detail::station_frame(o));
 }
 
 double phase256(const Elements& e, UtcTime t) {
