@@ -1,0 +1,67 @@
+// Field parsers and writers that the element-set formats share: lines of text, problems, numbers,
+// epochs. The NASA (elements_tle.cpp), AMSAT (elements_amsat.cpp) and gpredict
+// (elements_gpredict.cpp) readers use them, and a reader of another format (OMM) can: none of them
+// knows a format's layout. Private to src/orbit.
+#pragma once
+#include <algorithm>
+#include <charconv>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "orbit/elements.h"
+
+namespace tb::orbit::detail {
+
+// ---------------------------------------------------------------------------------------------
+// Text
+
+struct TextLine {
+  std::string_view text;  // without its line break
+  int number = 0;         // 1-based
+};
+
+// Splits on LF, CRLF or a lone CR. A UTF-8 byte-order mark is skipped; a Ctrl-Z (the end of an
+// ASCII upload) ends the text.
+std::vector<TextLine> split_lines(std::string_view text);
+
+inline bool is_space(char c) { return c == ' ' || c == '\t'; }
+inline bool is_digit(char c) { return c >= '0' && c <= '9'; }
+inline bool is_upper(char c) { return c >= 'A' && c <= 'Z'; }
+inline char to_lower(char c) { return is_upper(c) ? static_cast<char>(c - 'A' + 'a') : c; }
+
+std::string_view trim_left(std::string_view s);
+std::string_view trim_right(std::string_view s);
+std::string_view trim(std::string_view s);
+inline bool is_blank(std::string_view s) { return trim(s).empty(); }
+inline bool all_digits(std::string_view s) { return !s.empty() && std::all_of(s.begin(), s.end(), is_digit); }
+
+inline bool is_leap_year(int y) { return (y % 4 == 0 && y % 100 != 0) || y % 400 == 0; }
+
+ParseProblem make_problem(std::string_view file, int line, int column, std::string field, std::string found,
+                          std::string expected, bool warning = false);
+
+// ---------------------------------------------------------------------------------------------
+// Numbers
+
+// Parses all of s (no blanks) as a double with std::from_chars; s may not start with '+'.
+std::optional<double> whole_double(std::string_view s, std::chars_format format);
+// A decimal number without exponent: optional sign (+ or -), digits with at most one point.
+// Leading and trailing blanks are allowed, blanks inside are not.
+std::optional<double> parse_fixed(std::string_view s);
+// A free-form number: optional sign, digits with at most one point, optional exponent.
+std::optional<double> parse_general(std::string_view s);
+// Digits only (blanks around allowed), at most 9 of them.
+std::optional<long> parse_unsigned(std::string_view s);
+
+// ---------------------------------------------------------------------------------------------
+// Writers
+
+std::string printf_string(const char* format, ...) __attribute__((format(printf, 1, 2)));
+// Fixed-point text with at least `decimals` decimals, more when needed to give back the value.
+std::string round_trip_fixed(double v, int decimals);
+// "YYDDD.DDDDDDDD" (also columns 19-32 of line 1).
+std::string epoch_text(int year, double day, bool round_trip);
+
+}  // namespace tb::orbit::detail
