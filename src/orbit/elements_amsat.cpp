@@ -64,9 +64,7 @@ LabelledLine split_label(std::string_view line) {
 
 int amsat_field_of(const std::string& label) {
   for (int f = 0; f < kAmsatFieldCount; ++f) {
-    std::string folded;
-    for (const char* c = kAmsatLabels[f]; *c; ++c) folded += to_lower(*c);
-    if (folded == label) return f;
+    if (text::lower(kAmsatLabels[f]) == label) return f;
   }
   return -1;
 }
@@ -90,7 +88,7 @@ class AmsatBlock {
     AmsatValue& v = values_[field];
     const std::string_view text = lines_[index].text;
     std::string_view value = l.value_begin < text.size() ? text.substr(l.value_begin) : std::string_view{};
-    const auto blank = value.find_first_of(" \t");
+    const auto blank = value.find_first_of(text::kBlanks);
     AmsatValue nv{true, index, lines_[index].number, static_cast<int>(l.value_begin) + 1,
                   value.substr(0, blank), trim(value)};
     if (v.present) {
@@ -186,7 +184,7 @@ class AmsatBlock {
     const long yyddd = *parse_unsigned(whole);
     e.epoch_year = expand_two_digit_year(static_cast<int>(yyddd / 1000));
     const std::string day_text = std::to_string(yyddd % 1000) + "." + (fraction.empty() ? "0" : std::string(fraction));
-    e.epoch_day = *whole_double(day_text, std::chars_format::fixed);
+    e.epoch_day = *text::parse_double(day_text);
     const double day_limit = is_leap_year(e.epoch_year) ? 367.0 : 366.0;
     if (e.epoch_day < 1.0 || e.epoch_day >= day_limit)
       return problem(kEpochTime, "day of year in [1, " + std::to_string(int(day_limit)) + ")");

@@ -27,23 +27,6 @@ std::vector<TextLine> split_lines(std::string_view text) {
   return lines;
 }
 
-std::string_view trim_left(std::string_view s) {
-  while (!s.empty() && is_space(s.front())) s.remove_prefix(1);
-  return s;
-}
-std::string_view trim_right(std::string_view s) {
-  while (!s.empty() && is_space(s.back())) s.remove_suffix(1);
-  return s;
-}
-std::string_view trim(std::string_view s) { return trim_left(trim_right(s)); }
-
-std::optional<double> whole_double(std::string_view s, std::chars_format format) {
-  double v = 0.0;
-  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v, format);
-  if (ec != std::errc() || end != s.data() + s.size() || !std::isfinite(v)) return std::nullopt;
-  return v;
-}
-
 // A decimal number without exponent: optional sign (+ or -), digits with at most one point.
 // Leading and trailing blanks are allowed, blanks inside are not.
 std::optional<double> parse_fixed(std::string_view s) {
@@ -60,7 +43,7 @@ std::optional<double> parse_fixed(std::string_view s) {
     else return std::nullopt;
   }
   if (digits == 0 || points > 1) return std::nullopt;
-  const auto v = whole_double(s, std::chars_format::fixed);
+  const auto v = text::parse_double(s);  // s: digits and one point, no sign
   if (!v) return std::nullopt;
   return negative ? -*v : *v;
 }
@@ -85,7 +68,7 @@ std::optional<double> parse_general(std::string_view s) {
     if (j < s.size() && (s[j] == '+' || s[j] == '-')) ++j;
     if (!all_digits(s.substr(j))) return std::nullopt;
   }
-  const auto v = whole_double(s, std::chars_format::general);
+  const auto v = text::parse_double(s);  // s: checked above, no sign
   if (!v) return std::nullopt;
   return negative ? -*v : *v;
 }
@@ -94,9 +77,7 @@ std::optional<double> parse_general(std::string_view s) {
 std::optional<long> parse_unsigned(std::string_view s) {
   s = trim(s);
   if (!all_digits(s) || s.size() > 9) return std::nullopt;
-  long v = 0;
-  for (const char c : s) v = v * 10 + (c - '0');
-  return v;
+  return text::parse_integer<long>(s);
 }
 
 ParseProblem make_problem(std::string_view file, int line, int column, std::string field, std::string found,

@@ -4,13 +4,13 @@
 // knows a format's layout. Private to src/orbit.
 #pragma once
 #include <algorithm>
-#include <charconv>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "orbit/elements.h"
+#include "util/text.h"
 
 namespace tb::orbit::detail {
 
@@ -26,18 +26,17 @@ struct TextLine {
 // ASCII upload) ends the text.
 std::vector<TextLine> split_lines(std::string_view text);
 
-inline bool is_space(char c) { return c == ' ' || c == '\t'; }
-inline bool is_digit(char c) { return c >= '0' && c <= '9'; }
+// Blanks are what pads the formats' fields: ' ' and '\t' (text::kBlanks, trim's default), never a
+// line break or another control character.
+using text::is_digit;
+using text::to_lower;
+using text::trim;
+using text::trim_left;
+using text::trim_right;
+inline bool is_space(char c) { return text::kBlanks.find(c) != std::string_view::npos; }
 inline bool is_upper(char c) { return c >= 'A' && c <= 'Z'; }
-inline char to_lower(char c) { return is_upper(c) ? static_cast<char>(c - 'A' + 'a') : c; }
-
-std::string_view trim_left(std::string_view s);
-std::string_view trim_right(std::string_view s);
-std::string_view trim(std::string_view s);
 inline bool is_blank(std::string_view s) { return trim(s).empty(); }
 inline bool all_digits(std::string_view s) { return !s.empty() && std::all_of(s.begin(), s.end(), is_digit); }
-
-inline bool is_leap_year(int y) { return (y % 4 == 0 && y % 100 != 0) || y % 400 == 0; }
 
 ParseProblem make_problem(std::string_view file, int line, int column, std::string field, std::string found,
                           std::string expected, bool warning = false);
@@ -45,14 +44,16 @@ ParseProblem make_problem(std::string_view file, int line, int column, std::stri
 // ---------------------------------------------------------------------------------------------
 // Numbers
 
-// Parses all of s (no blanks) as a double with std::from_chars; s may not start with '+'.
-std::optional<double> whole_double(std::string_view s, std::chars_format format);
+// The formats' numbers are stricter than text::parse_double and text::parse_integer (which take a sign
+// and an exponent wherever std::from_chars does, and no blanks around): these check the format's
+// syntax first, then convert with text.h.
+//
 // A decimal number without exponent: optional sign (+ or -), digits with at most one point.
 // Leading and trailing blanks are allowed, blanks inside are not.
 std::optional<double> parse_fixed(std::string_view s);
 // A free-form number: optional sign, digits with at most one point, optional exponent.
 std::optional<double> parse_general(std::string_view s);
-// Digits only (blanks around allowed), at most 9 of them.
+// Digits only (blanks around allowed), at most 9 of them: no sign.
 std::optional<long> parse_unsigned(std::string_view s);
 
 // ---------------------------------------------------------------------------------------------

@@ -21,12 +21,12 @@ std::optional<double> parse_implied_exponent(std::string_view f) {
   if (sign != ' ' && sign != '+' && sign != '-') return std::nullopt;
   const std::string_view mantissa = f.substr(1, 5);
   if (!all_digits(mantissa) || (f[6] != '+' && f[6] != '-') || !is_digit(f[7])) return std::nullopt;
-  std::string text = "0.";
-  text += mantissa;
-  text += 'e';
-  if (f[6] == '-') text += '-';
-  text += f[7];
-  const auto v = whole_double(text, std::chars_format::general);
+  std::string number = "0.";
+  number += mantissa;
+  number += 'e';
+  if (f[6] == '-') number += '-';
+  number += f[7];
+  const auto v = text::parse_double(number);
   if (!v) return std::nullopt;
   return sign == '-' ? -*v : *v;
 }
@@ -195,7 +195,7 @@ std::optional<ParseProblem> parse_line2(const ElementLine& l, const ParseOptions
   const auto first_digit = digits.find_first_not_of(' ');
   if (first_digit != std::string::npos) std::fill_n(digits.begin(), first_digit, '0');
   if (!all_digits(digits)) return l.problem(27, 33, F[4].name, "7 digits (implied leading decimal point)");
-  e.eccentricity = *whole_double("0." + digits, std::chars_format::fixed);
+  e.eccentricity = *text::parse_double("0." + digits);
   if (auto p = check_blank(l, 34)) return p;
 
   if (auto p = parse_decimal_field(l, F[5], 0.0, 360.0, false, e.arg_perigee_deg)) return p;

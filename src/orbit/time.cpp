@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "orbit/constants.h"
+#include "util/text.h"
 
 namespace tb::orbit {
 namespace {
@@ -155,7 +156,7 @@ std::optional<UtcTime> parse_iso8601(std::string_view s) {
     if (pos + n > s.size()) return false;
     int v = 0;
     for (std::size_t i = pos; i < pos + n; ++i) {
-      if (s[i] < '0' || s[i] > '9') return false;
+      if (!text::is_digit(s[i])) return false;
       v = v * 10 + (s[i] - '0');
     }
     out = v;
@@ -179,7 +180,7 @@ std::optional<UtcTime> parse_iso8601(std::string_view s) {
       if (pos < s.size() && s[pos] == '.') {
         ++pos;
         const std::size_t start = pos;
-        while (pos < s.size() && s[pos] >= '0' && s[pos] <= '9') {
+        while (pos < s.size() && text::is_digit(s[pos])) {
           frac += (s[pos] - '0') * scale;
           scale /= 10.0;
           ++pos;
@@ -195,8 +196,7 @@ std::optional<UtcTime> parse_iso8601(std::string_view s) {
   }
   auto days_in_month = [](int y, int m) {
     static constexpr int d[] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
-    const bool leap = (y % 4 == 0 && y % 100 != 0) || y % 400 == 0;
-    return m == 2 && leap ? 29 : d[m - 1];
+    return m == 2 && is_leap_year(y) ? 29 : d[m - 1];
   };
   if (c.month < 1 || c.month > 12 || c.day < 1 || c.day > days_in_month(c.year, c.month) || c.hour > 23 ||
       c.minute > 59 || c.second >= 60.0)
