@@ -141,11 +141,7 @@ class AmsatBlock {
   std::optional<ParseProblem> number(int field, double low, double high, bool high_inclusive, double& out) const {
     const auto v = parse_general(values_[field].token);
     if (!v) return problem(field, "decimal number");
-    if (*v < low || *v > high || (!high_inclusive && *v == high)) {
-      char range[64];
-      std::snprintf(range, sizeof range, "number in [%g, %g%c", low, high, high_inclusive ? ']' : ')');
-      return problem(field, range);
-    }
+    if (auto range = out_of_range(*v, low, high, high_inclusive)) return problem(field, std::move(*range));
     out = *v;
     return std::nullopt;
   }

@@ -80,6 +80,13 @@ std::optional<long> parse_unsigned(std::string_view s) {
   return text::parse_integer<long>(s);
 }
 
+std::optional<std::string> out_of_range(double v, double low, double high, bool high_inclusive) {
+  if (!(v < low || v > high || (!high_inclusive && v == high))) return std::nullopt;
+  char range[64];
+  std::snprintf(range, sizeof range, "number in [%g, %g%c", low, high, high_inclusive ? ']' : ')');
+  return std::string(range);
+}
+
 ParseProblem make_problem(std::string_view file, int line, int column, std::string field, std::string found,
                           std::string expected, bool warning) {
   ParseProblem p;

@@ -55,6 +55,9 @@ std::optional<double> parse_fixed(std::string_view s);
 std::optional<double> parse_general(std::string_view s);
 // Digits only (blanks around allowed), at most 9 of them: no sign.
 std::optional<long> parse_unsigned(std::string_view s);
+// Nothing when v lies in [low, high] (high_inclusive) or [low, high); otherwise what a problem says
+// was expected: "number in [0, 360)".
+std::optional<std::string> out_of_range(double v, double low, double high, bool high_inclusive);
 
 // ---------------------------------------------------------------------------------------------
 // Writers

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
+#include <utility>
 
 #include "orbit/elements.h"
 #include "orbit/elements_internal.h"
@@ -87,39 +88,35 @@ std::optional<ParseProblem> parse_decimal_field(const ElementLine& l, const Fiel
                                                 bool high_inclusive, double& out) {
   const auto v = parse_fixed(l.raw(f.first, f.last));
   if (!v) return l.problem(f.first, f.last, f.name, "decimal number");
-  if (*v < low || *v > high || (!high_inclusive && *v == high)) {
-    char range[64];
-    std::snprintf(range, sizeof range, "number in [%g, %g%c", low, high, high_inclusive ? ']' : ')');
-    return l.problem(f.first, f.last, f.name, range);
+  if (auto range = out_of_range(*v, low, high, high_inclusive))
+    return l.problem(f.first, f.last, f.name, std::move(*range));
+  out = *v;
+  return std::nullopt;
+}
+
+// A field that may be all blank, read as 0; otherwise `parse` reads it, `expected` naming what it takes.
+template <class T, class Parse>
+std::optional<ParseProblem> parse_blank_or(const ElementLine& l, const FieldSpec& f, T& out, Parse parse,
+                                           const char* expected) {
+  const std::string_view raw = l.raw(f.first, f.last);
+  if (is_blank(raw)) {
+    out = T{};
+    return std::nullopt;
   }
+  const auto v = parse(raw);
+  if (!v) return l.problem(f.first, f.last, f.name, expected);
   out = *v;
   return std::nullopt;
 }
 
 // Unsigned integer field, blank allowed (0).
 std::optional<ParseProblem> parse_count_field(const ElementLine& l, const FieldSpec& f, long& out) {
-  const std::string_view raw = l.raw(f.first, f.last);
-  if (is_blank(raw)) {
-    out = 0;
-    return std::nullopt;
-  }
-  const auto v = parse_unsigned(raw);
-  if (!v) return l.problem(f.first, f.last, f.name, "digits 0-9");
-  out = *v;
-  return std::nullopt;
+  return parse_blank_or(l, f, out, parse_unsigned, "digits 0-9");
 }
 
 // Implied-decimal exponent field; all blank is read as 0.
 std::optional<ParseProblem> parse_exponent_field(const ElementLine& l, const FieldSpec& f, double& out) {
-  const std::string_view raw = l.raw(f.first, f.last);
-  if (is_blank(raw)) {
-    out = 0.0;
-    return std::nullopt;
-  }
-  const auto v = parse_implied_exponent(raw);
-  if (!v) return l.problem(f.first, f.last, f.name, "implied-decimal exponent field such as -11606-4");
-  out = *v;
-  return std::nullopt;
+  return parse_blank_or(l, f, out, parse_implied_exponent, "implied-decimal exponent field such as -11606-4");
 }
 
 }  // namespace
