@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "orbit/constants.h"
+#include "orbit/sgp4_common.h"
 
 namespace tb::orbit {
 namespace {
@@ -61,9 +62,7 @@ constexpr std::size_t kCheckpointSteps = 732;
 // fmod is exact, so it returns x itself when |x| < 2pi: skipping the call there changes nothing.
 inline double wrap_two_pi(double x) { return std::fabs(x) < kTwoPi ? x : std::fmod(x, kTwoPi); }
 
-struct SinCos {
-  double s, c;
-};
+using detail::SinCos;
 inline SinCos sin_cos(double x) { return {std::sin(x), std::cos(x)}; }
 
 // sin and cos of (a + d) from those of a. The propagator's corrections are mostly tiny, and then a
@@ -940,22 +939,15 @@ Propagation Sgp4::Model::propagate(double t) const {
   const SinCos s = add_angle({sinu * unit, cosu * unit}, -0.25 * temp2 * x7thm1_t * sin2u);
   const SinCos node = sin_cos(xnode);
   const SinCos inc = add_angle({p.sinip, p.cosip}, 1.5 * temp2 * p.cosip * p.sinip * cos2u);
-  const double xmx = -node.s * inc.c;
-  const double xmy = node.c * inc.c;
-  const double ux = xmx * s.s + node.c * s.c;
-  const double uy = xmy * s.s + node.s * s.c;
-  const double uz = inc.s * s.s;
-  const double vx = xmx * s.c - node.c * s.s;
-  const double vy = xmy * s.c - node.s * s.s;
-  const double vz = inc.s * s.c;
+  const detail::Orientation o = detail::orientation(s, node, inc);
 
   if (mrt < 1.0) return failure(Sgp4Error::decayed);
 
   Propagation out;
-  out.state.r_km = {(mrt * ux) * kEarthRadiusKm, (mrt * uy) * kEarthRadiusKm, (mrt * uz) * kEarthRadiusKm};
-  out.state.v_km_s = {(mvt * ux + rvdot * vx) * kKmPerSecPerErPerMin,
-                      (mvt * uy + rvdot * vy) * kKmPerSecPerErPerMin,
-                      (mvt * uz + rvdot * vz) * kKmPerSecPerErPerMin};
+  out.state.r_km = {(mrt * o.ux) * kEarthRadiusKm, (mrt * o.uy) * kEarthRadiusKm, (mrt * o.uz) * kEarthRadiusKm};
+  out.state.v_km_s = {(mvt * o.ux + rvdot * o.vx) * kKmPerSecPerErPerMin,
+                      (mvt * o.uy + rvdot * o.vy) * kKmPerSecPerErPerMin,
+                      (mvt * o.uz + rvdot * o.vz) * kKmPerSecPerErPerMin};
   return out;
 }
 
