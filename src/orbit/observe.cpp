@@ -4,27 +4,19 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
+
+#include "orbit/constants.h"
+#include "orbit/geometry.h"
 
 namespace tb::orbit {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
-constexpr double kDeg = kPi / 180.0;
+using detail::dot;
+using detail::norm;
+using detail::sub;
+using detail::wrap360;
+
 constexpr double kE2 = kWgs84Flattening * (2.0 - kWgs84Flattening);  // first eccentricity squared
-
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-
-// Angle in degrees reduced to [0, 360).
-double wrap360(double deg) {
-  double r = std::fmod(deg, 360.0);
-  if (r < 0.0) r += 360.0;
-  if (r >= 360.0) r = 0.0;  // fmod of a tiny negative can round up to exactly 360
-  return r;
-}
 
 }  // namespace
 
@@ -42,7 +34,7 @@ StateVector teme_to_ecef(const StateVector& teme, UtcTime t, const EarthOrientat
 }
 
 Vec3 observer_ecef_km(const Observer& o) {
-  const double lat = o.lat_deg * kDeg, lon = o.lon_deg * kDeg;
+  const double lat = o.lat_deg * kDegToRad, lon = o.lon_deg * kDegToRad;
   const double h = o.height_m / 1000.0;
   const double sl = std::sin(lat), cl = std::cos(lat);
   const double n = kWgs84A_km / std::sqrt(1.0 - kE2 * sl * sl);  // prime-vertical radius of curvature
@@ -67,31 +59,16 @@ Geodetic ecef_to_geodetic(const Vec3& r) {
   const double sl = std::sin(lat), cl = std::cos(lat);
   // Height along the normal; valid at every latitude, the poles included.
   g.alt_km = p * cl + r[2] * sl - kWgs84A_km * std::sqrt(1.0 - kE2 * sl * sl);
-  g.lat_deg = lat / kDeg;
-  g.lon_deg = lon / kDeg;
+  g.lat_deg = lat / kDegToRad;
+  g.lon_deg = lon / kDegToRad;
   if (g.lon_deg <= -180.0) g.lon_deg += 360.0;
   return g;
 }
 
 LookAngles look_angles(const StateVector& ecef, const Observer& o) {
   const Vec3 site = observer_ecef_km(o);
-  const Vec3 rho = sub(ecef.r_km, site);
-  const Vec3& rho_dot = ecef.v_km_s;  // the station is fixed in this frame
-  const double lat = o.lat_deg * kDeg, lon = o.lon_deg * kDeg;
-  const double sl = std::sin(lat), cl = std::cos(lat), so = std::sin(lon), co = std::cos(lon);
-  // Topocentric south-east-zenith components.
-  const double s = sl * co * rho[0] + sl * so * rho[1] - cl * rho[2];
-  const double e = -so * rho[0] + co * rho[1];
-  const double z = cl * co * rho[0] + cl * so * rho[1] + sl * rho[2];
-  LookAngles la;
-  la.range_km = norm(rho);
-  if (la.range_km <= 0.0) return la;
-  la.az_deg = (e == 0.0 && s == 0.0) ? 0.0 : wrap360(std::atan2(e, -s) / kDeg);
-  // asin(Z / range) written as atan2: the same angle, without asin's loss of precision near the
-  // zenith (asin(1 - 1e-16) is 8e-7 deg short of 90).
-  la.el_deg = std::atan2(z, std::hypot(s, e)) / kDeg;
-  la.range_rate_km_s = dot(rho, rho_dot) / la.range_km;
-  return la;
+  // The station is fixed in this frame: the line of sight changes at the satellite's velocity.
+  return detail::look_from(sub(ecef.r_km, site), ecef.v_km_s, detail::station_frame(o));
 }
 
 double phase256(const Elements& e, UtcTime t) {
@@ -133,10 +110,10 @@ Vec3 sun_position_km(UtcTime t) {
   const JulianDate jd = julian_date(t);
   const double tut1 = ((jd.whole - kJdJ2000) + jd.fraction) / 36525.0;
   const double mean_long = wrap360(280.460 + 36000.77 * tut1);
-  const double mean_anomaly = wrap360(357.5291092 + 35999.05034 * tut1) * kDeg;
+  const double mean_anomaly = wrap360(357.5291092 + 35999.05034 * tut1) * kDegToRad;
   const double ecl_long = wrap360(mean_long + 1.914666471 * std::sin(mean_anomaly) +
-                                  0.019994643 * std::sin(2.0 * mean_anomaly)) * kDeg;
-  const double obliquity = (23.439291 - 0.0130042 * tut1) * kDeg;
+                                  0.019994643 * std::sin(2.0 * mean_anomaly)) * kDegToRad;
+  const double obliquity = (23.439291 - 0.0130042 * tut1) * kDegToRad;
   const double r_au = 1.000140612 - 0.016708617 * std::cos(mean_anomaly) -
                       0.000139589 * std::cos(2.0 * mean_anomaly);
   const double r_km = r_au * kAstronomicalUnitKm;

@@ -12,30 +12,23 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <numbers>
 #include <vector>
+
+#include "orbit/constants.h"
+#include "orbit/sgp4_common.h"
 
 namespace tb::orbit {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kTwoPi = 2.0 * kPi;
-constexpr double kDegToRad = kPi / 180.0;
+using wgs72::kJ2;
+using wgs72::kJ3;
+using wgs72::kJ4;
+using wgs72::kKmPerSecPerErPerMin;  // velocity unit
+using wgs72::kXke;
+constexpr double kEarthRadiusKm = wgs72::kRadiusKm;
 constexpr double kTwoThirds = 2.0 / 3.0;
-
-// WGS-72 as used by SGP4 ("wgs72", not the older "wgs72old" with a rounded xke):
-// mu = 398600.8 km^3/s^2, equatorial radius 6378.135 km.
-constexpr double kEarthRadiusKm = 6378.135;
-// xke = 60 / sqrt(R^3 / mu), sqrt(earth radii^3 / mu) per minute. std::sqrt is not constexpr in
-// C++20, so this is the value that expression gives in double arithmetic (as the reference computes
-// it at run time): 60.0 / std::sqrt(6378.135 * 6378.135 * 6378.135 / 398600.8).
-constexpr double kXke = 0x1.309b5d0b2444cp-4;  // 0.07436691613317342
 constexpr double kMinutesPerTimeUnit = 1.0 / kXke;  // tumin
-constexpr double kJ2 = 0.001082616;
-constexpr double kJ3 = -0.00000253881;
-constexpr double kJ4 = -0.00000165597;
 constexpr double kJ3OverJ2 = kJ3 / kJ2;
-constexpr double kKmPerSecPerErPerMin = kEarthRadiusKm * kXke / 60.0;  // velocity unit
 
 // Element-set units: rev/day -> rad/min.
 constexpr double kRevPerDayPerRadPerMin = 1440.0 / kTwoPi;  // xpdotp
@@ -69,9 +62,7 @@ constexpr std::size_t kCheckpointSteps = 732;
 // fmod is exact, so it returns x itself when |x| < 2pi: skipping the call there changes nothing.
 inline double wrap_two_pi(double x) { return std::fabs(x) < kTwoPi ? x : std::fmod(x, kTwoPi); }
 
-struct SinCos {
-  double s, c;
-};
+using detail::SinCos;
 inline SinCos sin_cos(double x) { return {std::sin(x), std::cos(x)}; }
 
 // sin and cos of (a + d) from those of a. The propagator's corrections are mostly tiny, and then a
@@ -136,21 +127,47 @@ JulianDate element_epoch(int year, double day_of_year) {
 
 enum class Resonance { none, one_day, half_day };
 
-// Coefficients of the lunar-solar long-period periodics (zero at epoch by construction).
+// One third body's terms at epoch: the paper's s1 ... s7 and z1 ... z33 for the Moon, the same
+// quantities for the Sun under the names ss1 ... ss7 and sz1 ... sz33.
+struct BodyTerms {
+  double s1, s2, s3, s4, s5, s6, s7;
+  double z1, z2, z3, z11, z12, z13, z21, z22, z23, z31, z32, z33;
+};
+
+// Coefficients of one body's long-period periodics: the paper's se2, se3, si2, si3, sl2, sl3, sl4,
+// sgh2, sgh3, sgh4, sh2, sh3 for the Sun and ee2, e3, xi2, xi3, xl2, xl3, xl4, xgh2, xgh3, xgh4, xh2,
+// xh3 for the Moon (zero at epoch by construction).
+struct BodyPeriodics {
+  double e2 = 0, e3 = 0, i2 = 0, i3 = 0, l2 = 0, l3 = 0, l4 = 0, gh2 = 0, gh3 = 0, gh4 = 0, h2 = 0, h3 = 0;
+};
+
+// The same formulas for either body, from its terms and its eccentricity (zes, zel).
+BodyPeriodics body_periodics(const BodyTerms& b, double emsq, double eccentricity) {
+  BodyPeriodics p;
+  p.e2 = 2.0 * b.s1 * b.s6;
+  p.e3 = 2.0 * b.s1 * b.s7;
+  p.i2 = 2.0 * b.s2 * b.z12;
+  p.i3 = 2.0 * b.s2 * (b.z13 - b.z11);
+  p.l2 = -2.0 * b.s3 * b.z2;
+  p.l3 = -2.0 * b.s3 * (b.z3 - b.z1);
+  p.l4 = -2.0 * b.s3 * (-21.0 - 9.0 * emsq) * eccentricity;
+  p.gh2 = 2.0 * b.s4 * b.z32;
+  p.gh3 = 2.0 * b.s4 * (b.z33 - b.z31);
+  p.gh4 = -18.0 * b.s4 * eccentricity;
+  p.h2 = -2.0 * b.s2 * b.z22;
+  p.h3 = -2.0 * b.s2 * (b.z23 - b.z21);
+  return p;
+}
+
 struct LunarSolarPeriodics {
-  double e3 = 0, ee2 = 0, se2 = 0, se3 = 0, sgh2 = 0, sgh3 = 0, sgh4 = 0, sh2 = 0, sh3 = 0;
-  double si2 = 0, si3 = 0, sl2 = 0, sl3 = 0, sl4 = 0;
-  double xgh2 = 0, xgh3 = 0, xgh4 = 0, xh2 = 0, xh3 = 0, xi2 = 0, xi3 = 0, xl2 = 0, xl3 = 0, xl4 = 0;
+  BodyPeriodics solar, lunar;
   double zmol = 0, zmos = 0;  // lunar and solar mean anomalies at epoch
 };
 
 // Everything of the deep-space common terms that the secular-rate and resonance set-up needs.
 struct DeepSpaceCommon {
   double sinim, cosim, emsq;
-  double s1, s2, s3, s4, s5;         // lunar
-  double ss1, ss2, ss3, ss4, ss5;    // solar
-  double z1, z3, z11, z13, z21, z23, z31, z33;
-  double sz1, sz3, sz11, sz13, sz21, sz23, sz31, sz33;
+  BodyTerms moon, sun;  // the paper's s*, z* and ss*, sz*
 };
 
 // The deep-space (SDP4) part of the model.
@@ -229,9 +246,6 @@ DeepSpaceCommon deep_space_common(double epoch, double ep, double argpp, double 
   double s1 = 0, s2 = 0, s3 = 0, s4 = 0, s5 = 0, s6 = 0, s7 = 0;
   double z1 = 0, z2 = 0, z3 = 0, z11 = 0, z12 = 0, z13 = 0, z21 = 0, z22 = 0, z23 = 0;
   double z31 = 0, z32 = 0, z33 = 0;
-  double ss1 = 0, ss2 = 0, ss3 = 0, ss4 = 0, ss6 = 0, ss7 = 0;
-  double sz1 = 0, sz2 = 0, sz3 = 0, sz11 = 0, sz12 = 0, sz13 = 0, sz21 = 0, sz22 = 0, sz23 = 0;
-  double sz31 = 0, sz32 = 0, sz33 = 0;
   for (int body = 0; body < 2; ++body) {
     const double a1 = zcosg * zcosh + zsing * zcosi * zsinh;
     const double a3 = -zsing * zcosh + zcosg * zcosi * zsinh;
@@ -279,11 +293,7 @@ DeepSpaceCommon deep_space_common(double epoch, double ep, double argpp, double 
     s7 = x2 * x4 - x1 * x3;
 
     if (body == 0) {  // keep the solar terms, set up the lunar pass
-      ss1 = s1; ss2 = s2; ss3 = s3; ss4 = s4; c.ss5 = s5; ss6 = s6; ss7 = s7;
-      sz1 = z1; sz2 = z2; sz3 = z3;
-      sz11 = z11; sz12 = z12; sz13 = z13;
-      sz21 = z21; sz22 = z22; sz23 = z23;
-      sz31 = z31; sz32 = z32; sz33 = z33;
+      c.sun = {s1, s2, s3, s4, s5, s6, s7, z1, z2, z3, z11, z12, z13, z21, z22, z23, z31, z32, z33};
       zcosg = zcosgl;
       zsing = zsingl;
       zcosi = zcosil;
@@ -298,37 +308,9 @@ DeepSpaceCommon deep_space_common(double epoch, double ep, double argpp, double 
   p.zmol = std::fmod(4.7199672 + 0.22997150 * day - gam, kTwoPi);
   p.zmos = std::fmod(6.2565837 + 0.017201977 * day, kTwoPi);
 
-  p.se2 = 2.0 * ss1 * ss6;
-  p.se3 = 2.0 * ss1 * ss7;
-  p.si2 = 2.0 * ss2 * sz12;
-  p.si3 = 2.0 * ss2 * (sz13 - sz11);
-  p.sl2 = -2.0 * ss3 * sz2;
-  p.sl3 = -2.0 * ss3 * (sz3 - sz1);
-  p.sl4 = -2.0 * ss3 * (-21.0 - 9.0 * c.emsq) * kSolarEccentricity;
-  p.sgh2 = 2.0 * ss4 * sz32;
-  p.sgh3 = 2.0 * ss4 * (sz33 - sz31);
-  p.sgh4 = -18.0 * ss4 * kSolarEccentricity;
-  p.sh2 = -2.0 * ss2 * sz22;
-  p.sh3 = -2.0 * ss2 * (sz23 - sz21);
-
-  p.ee2 = 2.0 * s1 * s6;
-  p.e3 = 2.0 * s1 * s7;
-  p.xi2 = 2.0 * s2 * z12;
-  p.xi3 = 2.0 * s2 * (z13 - z11);
-  p.xl2 = -2.0 * s3 * z2;
-  p.xl3 = -2.0 * s3 * (z3 - z1);
-  p.xl4 = -2.0 * s3 * (-21.0 - 9.0 * c.emsq) * kLunarEccentricity;
-  p.xgh2 = 2.0 * s4 * z32;
-  p.xgh3 = 2.0 * s4 * (z33 - z31);
-  p.xgh4 = -18.0 * s4 * kLunarEccentricity;
-  p.xh2 = -2.0 * s2 * z22;
-  p.xh3 = -2.0 * s2 * (z23 - z21);
-
-  c.s1 = s1; c.s2 = s2; c.s3 = s3; c.s4 = s4; c.s5 = s5;
-  c.ss1 = ss1; c.ss2 = ss2; c.ss3 = ss3; c.ss4 = ss4;
-  c.z1 = z1; c.z3 = z3; c.z11 = z11; c.z13 = z13; c.z21 = z21; c.z23 = z23; c.z31 = z31; c.z33 = z33;
-  c.sz1 = sz1; c.sz3 = sz3; c.sz11 = sz11; c.sz13 = sz13; c.sz21 = sz21; c.sz23 = sz23;
-  c.sz31 = sz31; c.sz33 = sz33;
+  c.moon = {s1, s2, s3, s4, s5, s6, s7, z1, z2, z3, z11, z12, z13, z21, z22, z23, z31, z32, z33};
+  p.solar = body_periodics(c.sun, c.emsq, kSolarEccentricity);
+  p.lunar = body_periodics(c.moon, c.emsq, kLunarEccentricity);
   return c;
 }
 
@@ -363,21 +345,21 @@ void deep_space_secular(const DeepSpaceInputs& in, const DeepSpaceCommon& c, Dee
   const bool near_equatorial = in.inclo < kNearEquatorial || in.inclo > kPi - kNearEquatorial;
 
   // Solar.
-  const double ses = c.ss1 * kSolarMeanMotion * c.ss5;
-  const double sis = c.ss2 * kSolarMeanMotion * (c.sz11 + c.sz13);
-  const double sls = -kSolarMeanMotion * c.ss3 * (c.sz1 + c.sz3 - 14.0 - 6.0 * emsq);
-  const double sghs = c.ss4 * kSolarMeanMotion * (c.sz31 + c.sz33 - 6.0);
-  double shs = -kSolarMeanMotion * c.ss2 * (c.sz21 + c.sz23);
+  const double ses = c.sun.s1 * kSolarMeanMotion * c.sun.s5;
+  const double sis = c.sun.s2 * kSolarMeanMotion * (c.sun.z11 + c.sun.z13);
+  const double sls = -kSolarMeanMotion * c.sun.s3 * (c.sun.z1 + c.sun.z3 - 14.0 - 6.0 * emsq);
+  const double sghs = c.sun.s4 * kSolarMeanMotion * (c.sun.z31 + c.sun.z33 - 6.0);
+  double shs = -kSolarMeanMotion * c.sun.s2 * (c.sun.z21 + c.sun.z23);
   if (near_equatorial) shs = 0.0;
   if (sinim != 0.0) shs = shs / sinim;
   const double sgs = sghs - cosim * shs;
 
   // Lunar.
-  ds.dedt = ses + c.s1 * kLunarMeanMotion * c.s5;
-  ds.didt = sis + c.s2 * kLunarMeanMotion * (c.z11 + c.z13);
-  ds.dmdt = sls - kLunarMeanMotion * c.s3 * (c.z1 + c.z3 - 14.0 - 6.0 * emsq);
-  const double sghl = c.s4 * kLunarMeanMotion * (c.z31 + c.z33 - 6.0);
-  double shll = -kLunarMeanMotion * c.s2 * (c.z21 + c.z23);
+  ds.dedt = ses + c.moon.s1 * kLunarMeanMotion * c.moon.s5;
+  ds.didt = sis + c.moon.s2 * kLunarMeanMotion * (c.moon.z11 + c.moon.z13);
+  ds.dmdt = sls - kLunarMeanMotion * c.moon.s3 * (c.moon.z1 + c.moon.z3 - 14.0 - 6.0 * emsq);
+  const double sghl = c.moon.s4 * kLunarMeanMotion * (c.moon.z31 + c.moon.z33 - 6.0);
+  double shll = -kLunarMeanMotion * c.moon.s2 * (c.moon.z21 + c.moon.z23);
   if (near_equatorial) shll = 0.0;
   ds.domdt = sgs + sghl;
   ds.dnodt = shs;
@@ -615,32 +597,27 @@ struct PerturbedElements {
   double sinip, cosip;  // of inclp
 };
 
+// One body's share of the periodics at t: offsets of e, i, l, gh (argument of perigee + node) and h.
+struct BodyOffsets {
+  double e, i, l, gh, h;
+};
+BodyOffsets body_offsets(const BodyPeriodics& b, double zm, double eccentricity) {
+  const double zf = zm + 2.0 * eccentricity * std::sin(zm);
+  const SinCos z = sin_cos(zf);
+  const double f2 = 0.5 * z.s * z.s - 0.25;
+  const double f3 = -0.5 * z.s * z.c;
+  return {b.e2 * f2 + b.e3 * f3, b.i2 * f2 + b.i3 * f3, b.l2 * f2 + b.l3 * f3 + b.l4 * z.s,
+          b.gh2 * f2 + b.gh3 * f3 + b.gh4 * z.s, b.h2 * f2 + b.h3 * f3};
+}
+
 void lunar_solar_periodics(const LunarSolarPeriodics& p, double t, PerturbedElements& x) {
-  double zm = p.zmos + kSolarMeanMotion * t;
-  double zf = zm + 2.0 * kSolarEccentricity * std::sin(zm);
-  SinCos z = sin_cos(zf);
-  double f2 = 0.5 * z.s * z.s - 0.25;
-  double f3 = -0.5 * z.s * z.c;
-  const double ses = p.se2 * f2 + p.se3 * f3;
-  const double sis = p.si2 * f2 + p.si3 * f3;
-  const double sls = p.sl2 * f2 + p.sl3 * f3 + p.sl4 * z.s;
-  const double sghs = p.sgh2 * f2 + p.sgh3 * f3 + p.sgh4 * z.s;
-  const double shs = p.sh2 * f2 + p.sh3 * f3;
-  zm = p.zmol + kLunarMeanMotion * t;
-  zf = zm + 2.0 * kLunarEccentricity * std::sin(zm);
-  z = sin_cos(zf);
-  f2 = 0.5 * z.s * z.s - 0.25;
-  f3 = -0.5 * z.s * z.c;
-  const double sel = p.ee2 * f2 + p.e3 * f3;
-  const double sil = p.xi2 * f2 + p.xi3 * f3;
-  const double sll = p.xl2 * f2 + p.xl3 * f3 + p.xl4 * z.s;
-  const double sghl = p.xgh2 * f2 + p.xgh3 * f3 + p.xgh4 * z.s;
-  const double shll = p.xh2 * f2 + p.xh3 * f3;
-  const double pe = ses + sel;
-  const double pinc = sis + sil;
-  const double pl = sls + sll;
-  double pgh = sghs + sghl;
-  double ph = shs + shll;
+  const BodyOffsets sun = body_offsets(p.solar, p.zmos + kSolarMeanMotion * t, kSolarEccentricity);  // ses ... shs
+  const BodyOffsets moon = body_offsets(p.lunar, p.zmol + kLunarMeanMotion * t, kLunarEccentricity);  // sel ... shll
+  const double pe = sun.e + moon.e;
+  const double pinc = sun.i + moon.i;
+  const double pl = sun.l + moon.l;
+  double pgh = sun.gh + moon.gh;
+  double ph = sun.h + moon.h;
 
   x.inclp = x.inclp + pinc;
   x.ep = x.ep + pe;
@@ -962,22 +939,15 @@ Propagation Sgp4::Model::propagate(double t) const {
   const SinCos s = add_angle({sinu * unit, cosu * unit}, -0.25 * temp2 * x7thm1_t * sin2u);
   const SinCos node = sin_cos(xnode);
   const SinCos inc = add_angle({p.sinip, p.cosip}, 1.5 * temp2 * p.cosip * p.sinip * cos2u);
-  const double xmx = -node.s * inc.c;
-  const double xmy = node.c * inc.c;
-  const double ux = xmx * s.s + node.c * s.c;
-  const double uy = xmy * s.s + node.s * s.c;
-  const double uz = inc.s * s.s;
-  const double vx = xmx * s.c - node.c * s.s;
-  const double vy = xmy * s.c - node.s * s.s;
-  const double vz = inc.s * s.c;
+  const detail::Orientation o = detail::orientation(s, node, inc);
 
   if (mrt < 1.0) return failure(Sgp4Error::decayed);
 
   Propagation out;
-  out.state.r_km = {(mrt * ux) * kEarthRadiusKm, (mrt * uy) * kEarthRadiusKm, (mrt * uz) * kEarthRadiusKm};
-  out.state.v_km_s = {(mvt * ux + rvdot * vx) * kKmPerSecPerErPerMin,
-                      (mvt * uy + rvdot * vy) * kKmPerSecPerErPerMin,
-                      (mvt * uz + rvdot * vz) * kKmPerSecPerErPerMin};
+  out.state.r_km = {(mrt * o.ux) * kEarthRadiusKm, (mrt * o.uy) * kEarthRadiusKm, (mrt * o.uz) * kEarthRadiusKm};
+  out.state.v_km_s = {(mvt * o.ux + rvdot * o.vx) * kKmPerSecPerErPerMin,
+                      (mvt * o.uy + rvdot * o.vy) * kKmPerSecPerErPerMin,
+                      (mvt * o.uz + rvdot * o.vz) * kKmPerSecPerErPerMin};
   return out;
 }
 

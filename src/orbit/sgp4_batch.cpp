@@ -4,16 +4,17 @@
 #include <cmath>
 #include <string_view>
 
+#include "orbit/constants.h"
+#include "orbit/sgp4_common.h"
+
 namespace tb::orbit {
 namespace {
 
-// The constants of sgp4.cpp (WGS-72, improved mode), repeated bit for bit where the kernel needs
-// them: 60 / sqrt(R^3 / mu) and the velocity unit.
-constexpr double kXke = 0x1.309b5d0b2444cp-4;
-constexpr double kEarthRadiusKm = 6378.135;
-constexpr double kJ2 = 0.001082616;
-constexpr double kKmPerSecPerErPerMin = kEarthRadiusKm * kXke / 60.0;
-constexpr double kTwoPi = 6.28318530717958647693;
+using wgs72::kJ2;
+using wgs72::kKmPerSecPerErPerMin;
+using wgs72::kXke;
+constexpr double kEarthRadiusKm = wgs72::kRadiusKm;
+static_assert(kTwoPi == 6.28318530717958647693);  // the literal this file used to spell out
 
 // 2/pi and pi/2 in two parts (fdlibm's pio2_1, pio2_1t: the first has 33 bits, so n * it is exact
 // for |n| < 2^20, i.e. |x| < 1.6e6 rad), and 2pi the same way.
@@ -24,9 +25,7 @@ constexpr double kTwoPiHi = 2.0 * kPio2Hi * 2.0;
 constexpr double kTwoPiLo = 2.0 * kPio2Lo * 2.0;
 constexpr double kRoundMagic = 0x1.8p52;  // (x + magic) - magic rounds to an integer, |x| < 2^51
 
-struct SinCos {
-  double s, c;
-};
+using detail::SinCos;
 
 // sin and cos without a branch or a library call, so that a loop over lanes vectorises: Cody-Waite
 // reduction to [-pi/4, pi/4] and fdlibm's kernel polynomials (error below 1 ulp there), then the
@@ -76,14 +75,27 @@ struct SinCos {
 
 constexpr std::size_t kBlock = 64;
 
-// One block of at most kBlock times. Stages are separate loops over the lanes so that each is a
-// simple loop the compiler vectorises; Kepler's iteration sweeps the block until all have converged.
-template <bool kDrag>
-[[gnu::always_inline]] inline void near_earth_block(const NearEarthTerms& k, const double* tsince, std::size_t n,
-                                                    Propagation* out) {
+// The lanes of one block of at most kBlock times, stage by stage. Each stage is a separate loop over
+// the lanes so that each is a simple loop the compiler vectorises; the stages are always inline, so
+// that near_earth_block compiles to the same loops over the same local arrays as one function would.
+struct Block {
+  // Secular stage: semi-major axis, mean motion, the long-period axn/ayn, the argument Kepler's
+  // equation is solved for, the node; the error so far (Sgp4Error as a double: lanes of one width
+  // vectorise).
   double am[kBlock], nm[kBlock], axnl[kBlock], aynl[kBlock], u[kBlock], nodep[kBlock];
-  double err[kBlock];  // Sgp4Error as a double: lanes of one width vectorise
+  double err[kBlock];
+  // Kepler stage: the eccentric longitude (its first iterate u, set by the secular stage) and its sine
+  // and cosine; 1 where converged.
+  double eo1[kBlock], es[kBlock], ec[kBlock];
+  double done[kBlock];
+  // Short-period stage: position (km) and velocity (km/s), 0 where the lane failed.
+  double rx[kBlock], ry[kBlock], rz[kBlock], vxo[kBlock], vyo[kBlock], vzo[kBlock];
+};
 
+// Secular gravity and drag, the long-period periodics: sgp4.cpp's near-earth update up to Kepler.
+template <bool kDrag>
+[[gnu::always_inline]] inline void secular_stage(const NearEarthTerms& k, const double* tsince, std::size_t n,
+                                                 Block& b) {
   for (std::size_t i = 0; i < n; ++i) {
     const double t = tsince[i];
     const double xmdf = k.mo + k.mdot * t;
@@ -113,7 +125,7 @@ template <bool kDrag>
     const double a = k.ao * tempa * tempa;
     const double nmv = kXke / (a * std::sqrt(a));
     double em = k.ecco - tempe;
-    err[i] = (em >= 1.0 || em < -0.001) ? static_cast<double>(Sgp4Error::mean_eccentricity) : 0.0;
+    b.err[i] = (em >= 1.0 || em < -0.001) ? static_cast<double>(Sgp4Error::mean_eccentricity) : 0.0;
     em = em < 1.0e-6 ? 1.0e-6 : em;
     mm = mm + k.no_unkozai * templ;
     double xlm = mm + argpm + nodem0;
@@ -127,49 +139,51 @@ template <bool kDrag>
     const double temp = 1.0 / (a * (1.0 - em * em));
     const double ay = em * argp.s + temp * k.aycof;
     const double xl = mm + argpm + nodem + temp * k.xlcof * ax;
-    am[i] = a;
-    nm[i] = nmv;
-    axnl[i] = ax;
-    aynl[i] = ay;
-    u[i] = wrap_two_pi(xl - nodem);
-    nodep[i] = nodem;
+    b.am[i] = a;
+    b.nm[i] = nmv;
+    b.axnl[i] = ax;
+    b.aynl[i] = ay;
+    b.u[i] = wrap_two_pi(xl - nodem);
+    b.eo1[i] = b.u[i];  // Kepler's first iterate
+    b.nodep[i] = nodem;
   }
+}
 
-  // Kepler's equation, Newton steps limited to 0.95 rad; as in sgp4.cpp, the sine and cosine kept are
-  // those of the last iterate evaluated.
-  double eo1[kBlock], es[kBlock], ec[kBlock];
-  double done[kBlock];  // 1: converged
+// Kepler's equation, Newton steps limited to 0.95 rad; as in sgp4.cpp, the sine and cosine kept are
+// those of the last iterate evaluated. The block is swept until every lane has converged.
+[[gnu::always_inline]] inline void kepler_stage(std::size_t n, Block& b) {
   for (std::size_t i = 0; i < n; ++i) {
-    const SinCos e = sin_cos(u[i]);
-    eo1[i] = u[i];
-    es[i] = e.s;
-    ec[i] = e.c;
-    done[i] = 0.0;
+    const SinCos e = sin_cos(b.eo1[i]);
+    b.es[i] = e.s;
+    b.ec[i] = e.c;
+    b.done[i] = 0.0;
   }
   for (int iteration = 1; iteration <= 10; ++iteration) {
     for (std::size_t i = 0; i < n; ++i) {
-      double tem5 = 1.0 - ec[i] * axnl[i] - es[i] * aynl[i];
-      tem5 = (u[i] - aynl[i] * ec[i] + axnl[i] * es[i] - eo1[i]) / tem5;
+      double tem5 = 1.0 - b.ec[i] * b.axnl[i] - b.es[i] * b.aynl[i];
+      tem5 = (b.u[i] - b.aynl[i] * b.ec[i] + b.axnl[i] * b.es[i] - b.eo1[i]) / tem5;
       tem5 = std::fabs(tem5) >= 0.95 ? (tem5 > 0.0 ? 0.95 : -0.95) : tem5;
-      const bool was_done = done[i] != 0.0;
-      eo1[i] = was_done ? eo1[i] : eo1[i] + tem5;
+      const bool was_done = b.done[i] != 0.0;
+      b.eo1[i] = was_done ? b.eo1[i] : b.eo1[i] + tem5;
       const bool now_done = was_done || std::fabs(tem5) < 1.0e-12 || iteration == 10;
-      const SinCos next = add_angle({es[i], ec[i]}, tem5);
-      es[i] = now_done ? es[i] : next.s;
-      ec[i] = now_done ? ec[i] : next.c;
-      done[i] = now_done ? 1.0 : 0.0;
+      const SinCos next = add_angle({b.es[i], b.ec[i]}, tem5);
+      b.es[i] = now_done ? b.es[i] : next.s;
+      b.ec[i] = now_done ? b.ec[i] : next.c;
+      b.done[i] = now_done ? 1.0 : 0.0;
     }
     double open = 0.0;
-    for (std::size_t i = 0; i < n; ++i) open += 1.0 - done[i];
+    for (std::size_t i = 0; i < n; ++i) open += 1.0 - b.done[i];
     if (open == 0.0) break;
   }
+}
 
-  double rx[kBlock], ry[kBlock], rz[kBlock], vxo[kBlock], vyo[kBlock], vzo[kBlock];
+// Short-period periodics and the orientation vectors: position and velocity, or the lane's error.
+[[gnu::always_inline]] inline void short_period_stage(const NearEarthTerms& k, std::size_t n, Block& b) {
   for (std::size_t i = 0; i < n; ++i) {
-    const double a = am[i];
-    const double ax = axnl[i], ay = aynl[i];
-    const double ecose = ax * ec[i] + ay * es[i];
-    const double esine = ax * es[i] - ay * ec[i];
+    const double a = b.am[i];
+    const double ax = b.axnl[i], ay = b.aynl[i];
+    const double ecose = ax * b.ec[i] + ay * b.es[i];
+    const double esine = ax * b.es[i] - ay * b.ec[i];
     const double el2 = ax * ax + ay * ay;
     const double pl = a * (1.0 - el2);
     const double rl = a * (1.0 - ecose);
@@ -177,47 +191,54 @@ template <bool kDrag>
     const double rvdotl = std::sqrt(pl) / rl;
     const double betal = std::sqrt(1.0 - el2);
     double temp = esine / (1.0 + betal);
-    const double sinu = a / rl * (es[i] - ay - ax * temp);
-    const double cosu = a / rl * (ec[i] - ax + ay * temp);
+    const double sinu = a / rl * (b.es[i] - ay - ax * temp);
+    const double cosu = a / rl * (b.ec[i] - ax + ay * temp);
     const double sin2u = (cosu + cosu) * sinu;
     const double cos2u = 1.0 - 2.0 * sinu * sinu;
     temp = 1.0 / pl;
     const double temp1 = 0.5 * kJ2 * temp;
     const double temp2 = temp1 * temp;
     const double mrt = rl * (1.0 - 1.5 * temp2 * betal * k.con41) + 0.5 * temp1 * k.x1mth2 * cos2u;
-    const double xnode = nodep[i] + 1.5 * temp2 * k.cosio * sin2u;
-    const double mvt = rdotl - nm[i] * temp1 * k.x1mth2 * sin2u / kXke;
-    const double rvdot = rvdotl + nm[i] * temp1 * (k.x1mth2 * cos2u + 1.5 * k.con41) / kXke;
+    const double xnode = b.nodep[i] + 1.5 * temp2 * k.cosio * sin2u;
+    const double mvt = rdotl - b.nm[i] * temp1 * k.x1mth2 * sin2u / kXke;
+    const double rvdot = rvdotl + b.nm[i] * temp1 * (k.x1mth2 * cos2u + 1.5 * k.con41) / kXke;
     const double unit = 1.0 / std::sqrt(sinu * sinu + cosu * cosu);
     const SinCos s = add_angle({sinu * unit, cosu * unit}, -0.25 * temp2 * k.x7thm1 * sin2u);
     const SinCos node = sin_cos(xnode);
     const SinCos inc = add_angle({k.sinio, k.cosio}, 1.5 * temp2 * k.cosio * k.sinio * cos2u);
-    const double xmx = -node.s * inc.c;
-    const double xmy = node.c * inc.c;
-    const double ux = xmx * s.s + node.c * s.c;
-    const double uy = xmy * s.s + node.s * s.c;
-    const double uz = inc.s * s.s;
-    const double vx = xmx * s.c - node.c * s.s;
-    const double vy = xmy * s.c - node.s * s.s;
-    const double vz = inc.s * s.c;
-    double e = err[i];
+    const detail::Orientation o = detail::orientation(s, node, inc);
+    double e = b.err[i];
     e = e != 0.0 ? e : (pl < 0.0 ? static_cast<double>(Sgp4Error::semi_latus_rectum) : 0.0);
     e = e != 0.0 ? e : (mrt < 1.0 ? static_cast<double>(Sgp4Error::decayed) : 0.0);
     const bool ok = e == 0.0;
-    err[i] = e;
-    rx[i] = ok ? (mrt * ux) * kEarthRadiusKm : 0.0;
-    ry[i] = ok ? (mrt * uy) * kEarthRadiusKm : 0.0;
-    rz[i] = ok ? (mrt * uz) * kEarthRadiusKm : 0.0;
-    vxo[i] = ok ? (mvt * ux + rvdot * vx) * kKmPerSecPerErPerMin : 0.0;
-    vyo[i] = ok ? (mvt * uy + rvdot * vy) * kKmPerSecPerErPerMin : 0.0;
-    vzo[i] = ok ? (mvt * uz + rvdot * vz) * kKmPerSecPerErPerMin : 0.0;
+    b.err[i] = e;
+    b.rx[i] = ok ? (mrt * o.ux) * kEarthRadiusKm : 0.0;
+    b.ry[i] = ok ? (mrt * o.uy) * kEarthRadiusKm : 0.0;
+    b.rz[i] = ok ? (mrt * o.uz) * kEarthRadiusKm : 0.0;
+    b.vxo[i] = ok ? (mvt * o.ux + rvdot * o.vx) * kKmPerSecPerErPerMin : 0.0;
+    b.vyo[i] = ok ? (mvt * o.uy + rvdot * o.vy) * kKmPerSecPerErPerMin : 0.0;
+    b.vzo[i] = ok ? (mvt * o.uz + rvdot * o.vz) * kKmPerSecPerErPerMin : 0.0;
   }
+}
+
+[[gnu::always_inline]] inline void store_stage(const Block& b, std::size_t n, Propagation* out) {
   for (std::size_t i = 0; i < n; ++i) {
-    Propagation& o = out[i];
-    o.error = static_cast<Sgp4Error>(static_cast<int>(err[i]));
-    o.state.r_km = {rx[i], ry[i], rz[i]};
-    o.state.v_km_s = {vxo[i], vyo[i], vzo[i]};
+    Propagation& p = out[i];
+    p.error = static_cast<Sgp4Error>(static_cast<int>(b.err[i]));
+    p.state.r_km = {b.rx[i], b.ry[i], b.rz[i]};
+    p.state.v_km_s = {b.vxo[i], b.vyo[i], b.vzo[i]};
   }
+}
+
+// One block of at most kBlock times.
+template <bool kDrag>
+[[gnu::always_inline]] inline void near_earth_block(const NearEarthTerms& k, const double* tsince, std::size_t n,
+                                                    Propagation* out) {
+  Block b;
+  secular_stage<kDrag>(k, tsince, n, b);
+  kepler_stage(n, b);
+  short_period_stage(k, n, b);
+  store_stage(b, n, out);
 }
 
 [[gnu::always_inline]] inline void near_earth_blocks(const NearEarthTerms& k, const double* t, std::size_t n,

@@ -2,7 +2,9 @@
 
 #include <cmath>
 #include <cstdio>
-#include <numbers>
+
+#include "orbit/constants.h"
+#include "util/text.h"
 
 namespace tb::orbit {
 namespace {
@@ -123,12 +125,11 @@ int expand_two_digit_year(int yy) { return yy < 57 ? 2000 + yy : 1900 + yy; }
 
 double gmst82(JulianDate jd_ut1) {
   // Vallado, "Fundamentals of Astrodynamics and Applications", eq. 3-47 (IAU-82), as in SGP4's gstime.
-  constexpr double twopi = 2.0 * std::numbers::pi;
   const double tut1 = ((jd_ut1.whole - kJdJ2000) + jd_ut1.fraction) / 36525.0;
   double temp = -6.2e-6 * tut1 * tut1 * tut1 + 0.093104 * tut1 * tut1 +
                 (876600.0 * 3600.0 + 8640184.812866) * tut1 + 67310.54841;  // seconds
-  temp = std::fmod(temp * (std::numbers::pi / 180.0) / 240.0, twopi);
-  if (temp < 0.0) temp += twopi;
+  temp = std::fmod(temp * kDegToRad / 240.0, kTwoPi);
+  if (temp < 0.0) temp += kTwoPi;
   return temp;
 }
 
@@ -155,7 +156,7 @@ std::optional<UtcTime> parse_iso8601(std::string_view s) {
     if (pos + n > s.size()) return false;
     int v = 0;
     for (std::size_t i = pos; i < pos + n; ++i) {
-      if (s[i] < '0' || s[i] > '9') return false;
+      if (!text::is_digit(s[i])) return false;
       v = v * 10 + (s[i] - '0');
     }
     out = v;
@@ -179,7 +180,7 @@ std::optional<UtcTime> parse_iso8601(std::string_view s) {
       if (pos < s.size() && s[pos] == '.') {
         ++pos;
         const std::size_t start = pos;
-        while (pos < s.size() && s[pos] >= '0' && s[pos] <= '9') {
+        while (pos < s.size() && text::is_digit(s[pos])) {
           frac += (s[pos] - '0') * scale;
           scale /= 10.0;
           ++pos;
@@ -195,8 +196,7 @@ std::optional<UtcTime> parse_iso8601(std::string_view s) {
   }
   auto days_in_month = [](int y, int m) {
     static constexpr int d[] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
-    const bool leap = (y % 4 == 0 && y % 100 != 0) || y % 400 == 0;
-    return m == 2 && leap ? 29 : d[m - 1];
+    return m == 2 && is_leap_year(y) ? 29 : d[m - 1];
   };
   if (c.month < 1 || c.month > 12 || c.day < 1 || c.day > days_in_month(c.year, c.month) || c.hour > 23 ||
       c.minute > 59 || c.second >= 60.0)

@@ -43,6 +43,8 @@ UtcTime from_civil(const CivilTime& c);
 UtcTime from_civil(int year, int month, int day, int hour = 0, int minute = 0, double second = 0.0);
 CivilTime to_civil(UtcTime t);
 int day_of_year(UtcTime t);  // 1 = January 1
+// Gregorian leap years (2000 is one, 1900 is not).
+constexpr bool is_leap_year(int year) { return (year % 4 == 0 && year % 100 != 0) || year % 400 == 0; }
 
 // An element-set epoch: four-digit year and day of year with fraction (1.0 = Jan 1 00:00:00).
 UtcTime from_year_day(int year, double day_of_year);

@@ -1,48 +1,49 @@
-// Two element sets of Debian gpredict's satellites.dat, written out field by field (no parser
+// Two element sets of Debian gpredict's satellites.dat, written out value by value (no parser
 // involved), for the SGP4 tests and benchmarks. Header-only; needs tb_orbit.
 #pragma once
+#include <string>
+#include <utility>
+
 #include "orbit/elements.h"
 
 namespace tb::testing {
+
+// An element set from the values SGP4 reads, in the order of the two lines; the other fields keep
+// their defaults.
+inline orbit::Elements make_elements(std::string name, int catalog_number, int epoch_year, double epoch_day,
+                                     double ndot_over_2, double bstar, double inclination_deg, double raan_deg,
+                                     double eccentricity, double arg_perigee_deg, double mean_anomaly_deg,
+                                     double mean_motion_rev_per_day) {
+  orbit::Elements e;
+  e.name = std::move(name);
+  e.catalog_number = catalog_number;
+  e.epoch_year = epoch_year;
+  e.epoch_day = epoch_day;
+  e.ndot_over_2 = ndot_over_2;
+  e.bstar = bstar;
+  e.inclination_deg = inclination_deg;
+  e.raan_deg = raan_deg;
+  e.eccentricity = eccentricity;
+  e.arg_perigee_deg = arg_perigee_deg;
+  e.mean_anomaly_deg = mean_anomaly_deg;
+  e.mean_motion_rev_per_day = mean_motion_rev_per_day;
+  return e;
+}
 
 // ISS (ZARYA): near earth, drag terms active.
 // 1 25544U 98067A   18020.89808844  .00002078  00000-0  38550-4 0  9992
 // 2 25544  51.6424  32.9776 0003646  28.7227  39.5332 15.54190080 95614
 inline orbit::Elements iss_2018() {
-  orbit::Elements e;
-  e.name = "ISS (ZARYA)";
-  e.catalog_number = 25544;
-  e.epoch_year = 2018;
-  e.epoch_day = 20.89808844;
-  e.ndot_over_2 = 0.00002078;
-  e.bstar = 0.38550e-4;
-  e.inclination_deg = 51.6424;
-  e.raan_deg = 32.9776;
-  e.eccentricity = 0.0003646;
-  e.arg_perigee_deg = 28.7227;
-  e.mean_anomaly_deg = 39.5332;
-  e.mean_motion_rev_per_day = 15.54190080;
-  return e;
+  return make_elements("ISS (ZARYA)", 25544, 2018, 20.89808844, 0.00002078, 0.38550e-4, 51.6424, 32.9776,
+                       0.0003646, 28.7227, 39.5332, 15.54190080);
 }
 
 // MOLNIYA 1-53: deep space, half-day resonance (SGP4's most expensive case), negative BSTAR.
 // 1 13070U 82015A   18019.33649993  .00000405  00000-0 -24669-3 0  9992
 // 2 13070  62.4528 108.1401 7349782 265.0722  44.8738  2.00563378262951
 inline orbit::Elements molniya_2018() {
-  orbit::Elements e;
-  e.name = "MOLNIYA 1-53";
-  e.catalog_number = 13070;
-  e.epoch_year = 2018;
-  e.epoch_day = 19.33649993;
-  e.ndot_over_2 = 0.00000405;
-  e.bstar = -0.24669e-3;
-  e.inclination_deg = 62.4528;
-  e.raan_deg = 108.1401;
-  e.eccentricity = 0.7349782;
-  e.arg_perigee_deg = 265.0722;
-  e.mean_anomaly_deg = 44.8738;
-  e.mean_motion_rev_per_day = 2.00563378;
-  return e;
+  return make_elements("MOLNIYA 1-53", 13070, 2018, 19.33649993, 0.00000405, -0.24669e-3, 62.4528, 108.1401,
+                       0.7349782, 265.0722, 44.8738, 2.00563378);
 }
 
 }  // namespace tb::testing

@@ -732,29 +732,8 @@ TEST_CASE("gpredict problems carry the file's line and column") {
 namespace {
 
 // Every field a NASA set carries, compared exactly.
-void check_same_nasa_values(const Elements& a, const Elements& b) {
-  CHECK(a.name == b.name);
-  CHECK(a.catalog_number == b.catalog_number);
-  CHECK(a.classification == b.classification);
-  CHECK(a.international_designator == b.international_designator);
-  CHECK(a.epoch_year == b.epoch_year);
-  CHECK(a.epoch_day == b.epoch_day);
-  CHECK(a.ndot_over_2 == b.ndot_over_2);
-  CHECK(std::signbit(a.ndot_over_2) == std::signbit(b.ndot_over_2));
-  CHECK(a.nddot_over_6 == b.nddot_over_6);
-  CHECK(a.bstar == b.bstar);
-  CHECK(a.ephemeris_type == b.ephemeris_type);
-  CHECK(a.element_set_number == b.element_set_number);
-  CHECK(a.inclination_deg == b.inclination_deg);
-  CHECK(a.raan_deg == b.raan_deg);
-  CHECK(a.eccentricity == b.eccentricity);
-  CHECK(a.arg_perigee_deg == b.arg_perigee_deg);
-  CHECK(a.mean_anomaly_deg == b.mean_anomaly_deg);
-  CHECK(a.mean_motion_rev_per_day == b.mean_motion_rev_per_day);
-  CHECK(a.revolution_number == b.revolution_number);
-}
-
-// The fields the AMSAT format carries (no designator, classification, nddot, BSTAR, type).
+// The fields the AMSAT format carries (no designator, classification, nddot, BSTAR, type); the NASA
+// format carries them too.
 void check_same_amsat_values(const Elements& a, const Elements& b) {
   CHECK(a.name == b.name);
   CHECK(a.catalog_number == b.catalog_number);
@@ -769,6 +748,16 @@ void check_same_amsat_values(const Elements& a, const Elements& b) {
   CHECK(a.mean_anomaly_deg == b.mean_anomaly_deg);
   CHECK(a.mean_motion_rev_per_day == b.mean_motion_rev_per_day);
   CHECK(a.revolution_number == b.revolution_number);
+}
+
+void check_same_nasa_values(const Elements& a, const Elements& b) {
+  check_same_amsat_values(a, b);
+  CHECK(a.classification == b.classification);
+  CHECK(a.international_designator == b.international_designator);
+  CHECK(std::signbit(a.ndot_over_2) == std::signbit(b.ndot_over_2));
+  CHECK(a.nddot_over_6 == b.nddot_over_6);
+  CHECK(a.bstar == b.bstar);
+  CHECK(a.ephemeris_type == b.ephemeris_type);
 }
 
 Elements only_set(const ParseResult& r) {

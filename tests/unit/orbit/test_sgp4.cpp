@@ -18,6 +18,7 @@
 
 using namespace tb::orbit;
 using tb::testing::iss_2018;
+using tb::testing::make_elements;
 using tb::testing::molniya_2018;
 
 namespace {
@@ -320,17 +321,8 @@ TEST_CASE("Element sets SGP4 cannot use are refused at construction") {
     }
   }
   SUBCASE("perturbed eccentricity out of range at epoch (Vallado's 33334)") {
-    Elements e = molniya_2018();
-    e.epoch_year = 2006;
-    e.epoch_day = 174.85818871;
-    e.ndot_over_2 = 0.00000620;
-    e.bstar = 0.1e-3;
-    e.inclination_deg = 68.4714;
-    e.raan_deg = 236.1303;
-    e.eccentricity = 0.5602877;
-    e.arg_perigee_deg = 123.7484;
-    e.mean_anomaly_deg = 302.5767;
-    e.mean_motion_rev_per_day = 0.00001000;
+    const Elements e = make_elements("MOLNIYA 1-53", 13070, 2006, 174.85818871, 0.00000620, 0.1e-3, 68.4714,
+                                      236.1303, 0.5602877, 123.7484, 302.5767, 0.00001000);
     const Sgp4 sat(e);
     CHECK(sat.init_error() == Sgp4Error::perturbed_eccentricity);
     CHECK(sat.propagate_minutes(100.0).error == Sgp4Error::perturbed_eccentricity);
