@@ -163,7 +163,12 @@ std::optional<std::string> StationApp::save() {
   else if (!m.satrak_saved.is_null()) doc["satrak"] = m.satrak_saved;
   if (!m.file.save(doc, err)) {
     m.log->error("state not saved: {}", err);
+    if (m.station) m.station->set_save_failure(err);
     return err;
+  }
+  if (m.station && m.station->save_failure()) {
+    m.log->info("state saved again: memory and disk agree");
+    m.station->set_save_failure(std::nullopt);
   }
   return std::nullopt;
 }

@@ -67,8 +67,12 @@ class StationLoop {
 
   // Compass azimuth/elevation the antenna points at now, if known.
   std::optional<rotator::AzEl> antenna() const;
-  // One line for the full-screen status bar: time, satellite, rotator and radio state.
+  // One line for the full-screen status bar: time, satellite, rotator and radio state, and
+  // "STATE NOT SAVED" while the last save failed (memory and disk differ).
   std::string status_line() const;
+  // The program's last save of the state: failed (with the reason) or succeeded (nothing).
+  void set_save_failure(std::optional<std::string> reason) { save_failure_ = std::move(reason); }
+  const std::optional<std::string>& save_failure() const { return save_failure_; }
 
  private:
   store::Model& model_;
@@ -79,6 +83,7 @@ class StationLoop {
   radio::Tuner tuner_;
   std::optional<int> tuned_;  // db index the tuner is set up for
   std::optional<RemoteFollow> remote_;
+  std::optional<std::string> save_failure_;
   std::optional<int> remote_db_;  // remote_'s satellite in the database
   std::function<void()> wake_;
   void wake() {

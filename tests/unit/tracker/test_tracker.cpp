@@ -221,3 +221,13 @@ TEST_CASE("A command that changes what the antenna should do wakes the event loo
   st.station->stop_antenna();
   CHECK(wakes == 3);
 }
+
+TEST_CASE("The status line says STATE NOT SAVED while the last save failed, until one succeeds") {
+  testing::StationFixture f;
+  f.build_station();
+  CHECK(f.station->status_line().find("STATE NOT SAVED") == std::string::npos);
+  f.station->set_save_failure(std::string("no space left on device"));
+  CHECK(f.station->status_line().find(" | STATE NOT SAVED") != std::string::npos);
+  f.station->set_save_failure(std::nullopt);
+  CHECK(f.station->status_line().find("STATE NOT SAVED") == std::string::npos);
+}
