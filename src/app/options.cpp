@@ -20,7 +20,7 @@ bool looks_like_number(std::string_view word) {
          ((word[1] >= '0' && word[1] <= '9') || word[1] == '.');
 }
 
-std::string quoted(std::string_view s) { return "'" + std::string(s) + "'"; }
+std::string quote_value(std::string_view s) { return "'" + std::string(s) + "'"; }
 
 }  // namespace
 
@@ -71,7 +71,7 @@ ParseOutcome parse_options(const std::vector<std::string>& args, const std::vect
     std::vector<std::string>& slot = out.options.values_[spec->name];
     if (!slot.empty() && !spec->repeatable) return fail(label, "given more than once");
     if (!spec->takes_value()) {
-      if (inline_value) return fail(label, "takes no value, found " + quoted(*inline_value));
+      if (inline_value) return fail(label, "takes no value, found " + quote_value(*inline_value));
       slot.emplace_back();
       continue;
     }
@@ -154,7 +154,7 @@ std::optional<double> OptionReader::number(std::string_view name, bool required,
   if (!t) return std::nullopt;
   const auto v = to_double(*t);
   if (!v || !range.contains(*v)) {
-    fail(option_label(name), "expected " + std::string(expected) + ", found " + quoted(*t));
+    fail(option_label(name), "expected " + std::string(expected) + ", found " + quote_value(*t));
     return std::nullopt;
   }
   return v;
@@ -166,7 +166,7 @@ std::optional<std::int64_t> OptionReader::integer(std::string_view name, bool re
   if (!t) return std::nullopt;
   const auto v = to_int64(*t);
   if (!v || !range.contains(static_cast<double>(*v))) {
-    fail(option_label(name), "expected " + std::string(expected) + ", found " + quoted(*t));
+    fail(option_label(name), "expected " + std::string(expected) + ", found " + quote_value(*t));
     return std::nullopt;
   }
   return v;

@@ -1,5 +1,7 @@
 #include "satrak/settings.h"
 
+#include <nlohmann/json.hpp>
+
 #include "store/json_fields.h"
 
 namespace tb::satrak {

@@ -1,5 +1,7 @@
 #include "store/model.h"
 
+#include <nlohmann/json.hpp>
+
 #include "store/json_fields.h"
 
 namespace tb::store {

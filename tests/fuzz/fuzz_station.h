@@ -5,6 +5,8 @@
 // always does the same thing (libFuzzer needs that to minimise and to replay a crash).
 #pragma once
 #include <unistd.h>
+
+#include <nlohmann/json.hpp>
 #include "test_paths.h"  // TRAKBOX_SOURCE_DIR, ...
 
 #include <chrono>

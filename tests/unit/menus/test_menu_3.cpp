@@ -1,5 +1,7 @@
 // Menu 3 and 3-1 to 3-4: the manual's transcripts on the shipped satellites, and the model after.
 #include <doctest/doctest.h>
+
+#include <nlohmann/json.hpp>
 #include "test_paths.h"  // TRAKBOX_SOURCE_DIR, ...
 
 #include <sstream>

@@ -8,6 +8,8 @@
 //   screen: a piece of the output, in the order shown (blanks at the ends are kept)
 //   state: /json/pointer = JSON value
 #include <doctest/doctest.h>
+
+#include <nlohmann/json.hpp>
 #include "test_paths.h"  // TRAKBOX_SOURCE_DIR
 
 #include <filesystem>
