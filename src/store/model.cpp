@@ -198,103 +198,123 @@ json to_json(const Model& m) {
   return j;
 }
 
+namespace {
+
+// The parts of the document, each validated as it is read (store/json_fields.h: a problem throws,
+// naming the field).
+station::StationConfig station_from(const json& j) {
+  station::StationConfig st;
+  const std::string w = "station";
+  const json& s = field(j, "", "station");
+  st.callsign = text(s, w, "callsign", 10);
+  st.lat_deg = num(s, w, "lat_deg", -90, 90);
+  st.lon_deg = num(s, w, "lon_deg", -180, 180);
+  st.height_m = num(s, w, "height_m", -500, 9000);
+  st.rotor_start = named(s, w, "rotor_start", kRotorStart);
+  st.com_baud = static_cast<int>(integer(s, w, "com_baud", 1200, 19200));
+  return st;
+}
+
+rotator::RotatorConfig rotator_from(const json& j) {
+  rotator::RotatorConfig c;
+  const std::string w = "rotator";
+  const json& r = field(j, "", "rotator");
+  auto span = [&](const char* key) {
+    const json& v = field(r, w, key);
+    if (!v.is_array() || v.size() != 2 || !v[0].is_number_integer() || !v[1].is_number_integer())
+      bad(w + "." + key, "expected [min, max] counts");
+    return rotator::AxisSpan{v[0].get<int>(), v[1].get<int>()};
+  };
+  c.az_span = span("az_span");
+  c.el_span = span("el_span");
+  c.az_travel_deg = num(r, w, "az_travel_deg", rotator::limits::kTravelMinDeg, rotator::limits::kTravelMaxDeg);
+  auto counts = [&](const char* key, rotator::limits::Counts range) {
+    return static_cast<int>(integer(r, w, key, range.lo, range.hi));
+  };
+  c.az_dead_band = counts("az_dead_band", rotator::limits::kDeadBand);
+  c.el_dead_band = counts("el_dead_band", rotator::limits::kDeadBand);
+  c.az_skew = counts("az_skew", rotator::limits::kSkew);
+  c.el_skew = counts("el_skew", rotator::limits::kSkew);
+  c.parking_enabled = boolean(r, w, "parking_enabled");
+  c.parking = azel_from(field(r, w, "parking"), w + ".parking");
+  c.limits_enabled = boolean(r, w, "limits_enabled");
+  c.az_limit_min = num(r, w, "az_limit_min", -360, 720);
+  c.az_limit_max = num(r, w, "az_limit_max", -360, 720);
+  c.el_limit_min = num(r, w, "el_limit_min", -90, 180);
+  c.el_limit_max = num(r, w, "el_limit_max", -90, 180);
+  const json& p = field(r, w, "presets");
+  if (!p.is_array() || p.size() != c.presets.size()) bad(w + ".presets", "expected 5 positions");
+  for (std::size_t i = 0; i < c.presets.size(); ++i)
+    c.presets[i] = azel_from(p[i], w + ".presets[" + std::to_string(i) + "]");
+  c.el_flip_allowed = boolean(r, w, "el_flip_allowed");
+  c.az_rate_deg_s = num(r, w, "az_rate_deg_s", 0.01, 100);
+  c.el_rate_deg_s = num(r, w, "el_rate_deg_s", 0.01, 100);
+  c.coast_s = num(r, w, "coast_s", 0, 10);
+  c.stall_s = num(r, w, "stall_s", 0.1, 600);
+  if (const auto problems = rotator::validate(c); !problems.empty()) bad(w, problems.front());
+  return c;
+}
+
+radio::RadioConfig radio_from(const json& j) {
+  radio::RadioConfig c;
+  const std::string w = "radio";
+  const json& r = field(j, "", "radio");
+  c.rig = named(r, w, "rig", kRig);
+  c.icom_rx_address = static_cast<std::uint8_t>(integer(r, w, "icom_rx_address", 0, 255));
+  c.icom_tx_address = static_cast<std::uint8_t>(integer(r, w, "icom_tx_address", 0, 255));
+  c.icom_band_select = named(r, w, "icom_band_select", kBand);
+  c.icom_four_byte_frequency = boolean(r, w, "icom_four_byte_frequency");
+  c.uplink_correction = boolean(r, w, "uplink_correction");
+  c.downlink_correction = named(r, w, "downlink_correction", kDown);
+  c.cat_policy = named(r, w, "cat_policy", kPolicy);
+  c.ft736_wide_fm = boolean(r, w, "ft736_wide_fm");
+  const std::string wm = w + ".mic_click";
+  const json& mc = field(r, w, "mic_click");
+  c.mic_click.centre_adc = static_cast<int>(integer(mc, wm, "centre_adc", 0, 1023));
+  c.mic_click.reference_adc = static_cast<int>(integer(mc, wm, "reference_adc", 0, 1023));
+  c.mic_click.step_hz = integer(mc, wm, "step_hz", 1, 100000);
+  c.mic_click.cat_at_aos = boolean(mc, wm, "cat_at_aos");
+  c.mic_click.auto_up_at_aos = boolean(mc, wm, "auto_up_at_aos");
+  c.mic_click.polarity = named(mc, wm, "polarity", kPolarity);
+  return c;
+}
+
+Database database_from(const json& j) {
+  Database db;
+  const json& d = field(j, "", "db");
+  const json& sats = field(d, "db", "satellites");
+  if (!sats.is_array()) bad("db.satellites", "expected a list");
+  if (sats.size() > static_cast<std::size_t>(kMaxDatabase)) bad("db.satellites", "more than 32 satellites");
+  for (std::size_t i = 0; i < sats.size(); ++i) {
+    const std::string w = "db.satellites[" + std::to_string(i) + "]";
+    Satellite s;
+    s.elements = elements_from(field(sats[i], w, "elements"), w + ".elements");
+    s.radio = radio_entry_from(field(sats[i], w, "radio"), w + ".radio");
+    db.satellites.push_back(std::move(s));
+  }
+  const json& sel = field(d, "db", "selected");
+  if (!sel.is_array() || sel.size() > static_cast<std::size_t>(kMaxSelected)) bad("db.selected", "expected up to 15 numbers");
+  for (std::size_t i = 0; i < sel.size(); ++i) {
+    if (!sel[i].is_number_integer()) bad("db.selected", "expected whole numbers");
+    const int v = sel[i].get<int>();
+    if (v < 0 || v >= static_cast<int>(db.satellites.size())) bad("db.selected", "entry " + std::to_string(v) + " is not in the database");
+    db.selected.push_back(v);
+  }
+  db.marked = static_cast<int>(integer(d, "db", "marked", -1, kMaxSelected - 1));
+  db.multi_count = static_cast<int>(integer(d, "db", "multi_count", kMinMultiTrack, kMaxMultiTrack));
+  db.normalise();
+  return db;
+}
+
+}  // namespace
+
 Model model_from_json(const json& j) {
   if (!j.is_object()) bad("state", "expected an object");
   Model m;
-  {
-    const std::string w = "station";
-    const json& s = field(j, "", "station");
-    m.station.callsign = text(s, w, "callsign", 10);
-    m.station.lat_deg = num(s, w, "lat_deg", -90, 90);
-    m.station.lon_deg = num(s, w, "lon_deg", -180, 180);
-    m.station.height_m = num(s, w, "height_m", -500, 9000);
-    m.station.rotor_start = named(s, w, "rotor_start", kRotorStart);
-    m.station.com_baud = static_cast<int>(integer(s, w, "com_baud", 1200, 19200));
-  }
-  {
-    const std::string w = "rotator";
-    const json& r = field(j, "", "rotator");
-    auto span = [&](const char* key) {
-      const json& v = field(r, w, key);
-      if (!v.is_array() || v.size() != 2 || !v[0].is_number_integer() || !v[1].is_number_integer())
-        bad(w + "." + key, "expected [min, max] counts");
-      return rotator::AxisSpan{v[0].get<int>(), v[1].get<int>()};
-    };
-    auto& c = m.rotator;
-    c.az_span = span("az_span");
-    c.el_span = span("el_span");
-    c.az_travel_deg = num(r, w, "az_travel_deg", rotator::limits::kTravelMinDeg, rotator::limits::kTravelMaxDeg);
-    auto counts = [&](const char* key, rotator::limits::Counts range) {
-      return static_cast<int>(integer(r, w, key, range.lo, range.hi));
-    };
-    c.az_dead_band = counts("az_dead_band", rotator::limits::kDeadBand);
-    c.el_dead_band = counts("el_dead_band", rotator::limits::kDeadBand);
-    c.az_skew = counts("az_skew", rotator::limits::kSkew);
-    c.el_skew = counts("el_skew", rotator::limits::kSkew);
-    c.parking_enabled = boolean(r, w, "parking_enabled");
-    c.parking = azel_from(field(r, w, "parking"), w + ".parking");
-    c.limits_enabled = boolean(r, w, "limits_enabled");
-    c.az_limit_min = num(r, w, "az_limit_min", -360, 720);
-    c.az_limit_max = num(r, w, "az_limit_max", -360, 720);
-    c.el_limit_min = num(r, w, "el_limit_min", -90, 180);
-    c.el_limit_max = num(r, w, "el_limit_max", -90, 180);
-    const json& p = field(r, w, "presets");
-    if (!p.is_array() || p.size() != c.presets.size()) bad(w + ".presets", "expected 5 positions");
-    for (std::size_t i = 0; i < c.presets.size(); ++i)
-      c.presets[i] = azel_from(p[i], w + ".presets[" + std::to_string(i) + "]");
-    c.el_flip_allowed = boolean(r, w, "el_flip_allowed");
-    c.az_rate_deg_s = num(r, w, "az_rate_deg_s", 0.01, 100);
-    c.el_rate_deg_s = num(r, w, "el_rate_deg_s", 0.01, 100);
-    c.coast_s = num(r, w, "coast_s", 0, 10);
-    c.stall_s = num(r, w, "stall_s", 0.1, 600);
-    if (const auto problems = rotator::validate(c); !problems.empty()) bad(w, problems.front());
-  }
-  {
-    const std::string w = "radio";
-    const json& r = field(j, "", "radio");
-    auto& c = m.radio;
-    c.rig = named(r, w, "rig", kRig);
-    c.icom_rx_address = static_cast<std::uint8_t>(integer(r, w, "icom_rx_address", 0, 255));
-    c.icom_tx_address = static_cast<std::uint8_t>(integer(r, w, "icom_tx_address", 0, 255));
-    c.icom_band_select = named(r, w, "icom_band_select", kBand);
-    c.icom_four_byte_frequency = boolean(r, w, "icom_four_byte_frequency");
-    c.uplink_correction = boolean(r, w, "uplink_correction");
-    c.downlink_correction = named(r, w, "downlink_correction", kDown);
-    c.cat_policy = named(r, w, "cat_policy", kPolicy);
-    c.ft736_wide_fm = boolean(r, w, "ft736_wide_fm");
-    const std::string wm = w + ".mic_click";
-    const json& mc = field(r, w, "mic_click");
-    c.mic_click.centre_adc = static_cast<int>(integer(mc, wm, "centre_adc", 0, 1023));
-    c.mic_click.reference_adc = static_cast<int>(integer(mc, wm, "reference_adc", 0, 1023));
-    c.mic_click.step_hz = integer(mc, wm, "step_hz", 1, 100000);
-    c.mic_click.cat_at_aos = boolean(mc, wm, "cat_at_aos");
-    c.mic_click.auto_up_at_aos = boolean(mc, wm, "auto_up_at_aos");
-    c.mic_click.polarity = named(mc, wm, "polarity", kPolarity);
-  }
-  {
-    const json& d = field(j, "", "db");
-    const json& sats = field(d, "db", "satellites");
-    if (!sats.is_array()) bad("db.satellites", "expected a list");
-    if (sats.size() > static_cast<std::size_t>(kMaxDatabase)) bad("db.satellites", "more than 32 satellites");
-    for (std::size_t i = 0; i < sats.size(); ++i) {
-      const std::string w = "db.satellites[" + std::to_string(i) + "]";
-      Satellite s;
-      s.elements = elements_from(field(sats[i], w, "elements"), w + ".elements");
-      s.radio = radio_entry_from(field(sats[i], w, "radio"), w + ".radio");
-      m.db.satellites.push_back(std::move(s));
-    }
-    const json& sel = field(d, "db", "selected");
-    if (!sel.is_array() || sel.size() > static_cast<std::size_t>(kMaxSelected)) bad("db.selected", "expected up to 15 numbers");
-    for (std::size_t i = 0; i < sel.size(); ++i) {
-      if (!sel[i].is_number_integer()) bad("db.selected", "expected whole numbers");
-      const int v = sel[i].get<int>();
-      if (v < 0 || v >= static_cast<int>(m.db.satellites.size())) bad("db.selected", "entry " + std::to_string(v) + " is not in the database");
-      m.db.selected.push_back(v);
-    }
-    m.db.marked = static_cast<int>(integer(d, "db", "marked", -1, kMaxSelected - 1));
-    m.db.multi_count = static_cast<int>(integer(d, "db", "multi_count", kMinMultiTrack, kMaxMultiTrack));
-    m.db.normalise();
-  }
+  m.station = station_from(j);
+  m.rotator = rotator_from(j);
+  m.radio = radio_from(j);
+  m.db = database_from(j);
   m.clock_offset = std::chrono::microseconds(integer(j, "", "clock_offset_us", -(100LL * 365 * 86400 * 1000000),
                                                      100LL * 365 * 86400 * 1000000));
   m.rotor_control = boolean(j, "", "rotor_control");

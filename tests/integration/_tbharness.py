@@ -160,6 +160,14 @@ def sh(*args, timeout=20):
     return p.returncode, p.stdout, p.stderr
 
 
+def stop_and_read_log(proc, state):
+    """Ends a trakbox started on `state` (SIGTERM, as a service stop) and returns its trakbox.log."""
+    proc.terminate()
+    proc.wait(20)
+    with open(os.path.join(state, "trakbox.log")) as f:
+        return f.read()
+
+
 def reap(procs):
     """Kills and waits for every process still running (a test's finally)."""
     for p in procs:

@@ -13,7 +13,7 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, CLOCK, check, free_port, run_test  # noqa: E402
+from _tbharness import BIN, CLOCK, check, free_port, run_test, stop_and_read_log  # noqa: E402
 
 SECRET = "Tr4kB0x-s3cret"
 
@@ -131,10 +131,7 @@ def main():
             check(got.strip().isdigit(), f"rigctld without a secret answers at once: {got!r}")
             c.close()
         finally:
-            p.terminate()
-            p.wait(20)
-        with open(os.path.join(state, "trakbox.log")) as f:
-            log = f.read()
+            log = stop_and_read_log(p, state)
         check(SECRET not in log, "the secret never reaches the log")
         check("gave a wrong secret 3 times; closed" in log, "too many attempts are logged")
         check("did not give the secret within 2 s; closed" in log, "the deadline is logged")

@@ -13,6 +13,7 @@
 #include "menus/6_configuration.h"
 #include "rotator/adc_model.h"
 #include "store/station_file.h"
+#include "support/manual_samples.h"
 
 using namespace tb;
 
@@ -29,12 +30,7 @@ void rebuild(testing::MenuFixture& f, rotator::SimulatedRotatorParams p) {
 using testing::kAzTol;
 using testing::kElTol;
 
-const char* kSample =
-    "1 WA7GXD 32.259 -110.778 842 S\r\n"
-    "2 3 1017 5 454\r\n"
-    "3 5 3 0 0\r\n"
-    "4 ICOM A 10 14\r\n"
-    "5 1 90 0 1 270 90 0 45\r\n";
+const char* const kSample = testing::kManualStationFile;
 
 using Fixture = testing::MenuFixture;
 

@@ -7,17 +7,13 @@
 #include "rotator/adc_model.h"
 #include "store/model.h"
 #include "store/station_file.h"
+#include "support/manual_samples.h"
 
 using namespace tb;
 using store::parse_station_file;
 
 namespace {
-const char* kSample =
-    "1 WA7GXD 32.259 -110.778 842 S\r\n"
-    "2 3 1017 5 454\r\n"
-    "3 5 3 0 0\r\n"
-    "4 ICOM A 10 14\r\n"
-    "5 1 90 0 1 270 90 0 45\r\n";
+const char* const kSample = testing::kManualStationFile;
 
 std::string problems_text(const store::StationFileParse& r) {
   std::string s;
