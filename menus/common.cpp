@@ -39,9 +39,14 @@ void run_menu(term::Terminal& t, const std::function<void()>& show, std::string_
     if (!skip_menu) show();
     t.write(prompt);
     t.flush();
-    const std::string a = trim(read_line(t));
-    const MenuStep step =
-        a.size() == 1 ? choose(static_cast<char>(std::toupper(static_cast<unsigned char>(a[0])))) : MenuStep::unknown;
+    // A menu choice is one key, as on the TrakBox: "7" opens 6-7 with or without an Enter after it
+    // (the Enter that follows ends the answer; Terminal's rule for Enter). Blanks are passed over.
+    std::optional<char> key;
+    do {
+      key = t.read_choice();
+      if (!key) throw InputClosed{};
+    } while (*key == ' ');
+    const MenuStep step = *key == '\r' ? MenuStep::unknown : choose(*key);
     if (step == MenuStep::back) return;
     skip_menu = step == MenuStep::unknown;
   }
