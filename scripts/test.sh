@@ -14,7 +14,7 @@ echo "== build: $((SECONDS - start)) s"
 echo "== tests: $((SECONDS - start)) s"
 
 cmake -S . -B build-asan -G Ninja -DTRAKBOX_WERROR=ON -DTRAKBOX_SANITIZE=ON -DTRAKBOX_BENCH=OFF \
-      -DCMAKE_BUILD_TYPE=Debug >/dev/null
+      -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-g1 >/dev/null
 # Only the unit-test programs: the sanitizer pass runs the unit tests.
 mapfile -t unit_targets < <(cmake --build build-asan --target help | sed -n 's/^\(unit_[a-z_]*\):.*/\1/p')
 cmake --build build-asan -j"$jobs" --target "${unit_targets[@]}"
