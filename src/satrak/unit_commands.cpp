@@ -276,10 +276,18 @@ Unit::Reply Unit::cmd_angle_settings(const Command& c) {
   rotator::RotatorConfig cfg = model_.rotator;
   const double start = m.start_deg();
   const double here = m.az_travel_from_counts(m.corrected(rotator::Axis::az, adc_x));
+  // The travel nearest what the count reads now, among those a skew can reach (a second reference
+  // after the document's first example would otherwise pick a travel 360 degrees off the sensor).
   double travel = rotator::wrap360(ax - start);
+  bool reachable = false;
   for (int k = -2; k <= 2; ++k) {
     const double t = rotator::wrap360(ax - start) + 360.0 * k;
-    if (std::abs(t - here) < std::abs(travel - here)) travel = t;
+    const double skew = std::round(m.counts_from_az_travel(t) - adc_x);
+    const bool ok = rotator::limits::kSkew.contains(static_cast<int>(skew));
+    if ((ok && !reachable) || (ok == reachable && std::abs(t - here) < std::abs(travel - here))) {
+      travel = t;
+      reachable = ok;
+    }
   }
   const double az_skew = std::round(m.counts_from_az_travel(travel) - adc_x);
   const double el_skew = std::round(m.counts_from_el(ay) - adc_y);

@@ -184,3 +184,18 @@ TEST_CASE("LOAD_IMAGE: a state document written by the program loads (item 8)") 
   CHECK(acu.cmd("REDUCTION?") == "REDUCTION?,4000,4000");
   CHECK(acu.cmd("GPS_SETTINGS?") == "GPS_SETTINGS?,0,41.02N,29.17E");
 }
+
+TEST_CASE("ANGLE_SETTINGS after the document's first example: the travel a skew can reach") {
+  store::Model m = tucson_model();
+  m.station.rotor_start = station::RotorStart::south;  // the factory rotor, as a fresh trakbox has it
+  Acu acu(kT0, {}, m);
+  CHECK(acu.cmd("ANGLE_SETTINGS=0,39049,160.0,36838,40.0") == "ANGLE_SETTINGS=,OK");
+  CHECK(acu.model.rotator.az_skew == 357);  // 160 is travel 340 from the south stop
+  CHECK(acu.cmd("ANGLE_SETTINGS?") == "ANGLE_SETTINGS?,39049,160.0,36838,40.0");
+  // Count 36408 (ADC 568.3, travel 200 from the stop) to read 210 (travel 30): the travel nearest
+  // what the count reads now (with +357) would be 390, a skew of +540, past the +-512 of menu 6-3;
+  // travel 30 is a skew of -483.
+  CHECK(acu.cmd("ANGLE_SETTINGS=0,36408,210.0,36838,40.0") == "ANGLE_SETTINGS=,OK");
+  CHECK(acu.model.rotator.az_skew == -483);
+  CHECK(acu.cmd("ANGLE_SETTINGS?") == "ANGLE_SETTINGS?,36408,210.0,36838,40.0");
+}
