@@ -335,7 +335,20 @@ Unit::Reply Unit::cmd_track(const Command& c) {
     return reply_ok(c.head());
   }
   take_control();
-  if (!sgp4_) return reply_error(c.head(), active_satellite().empty() ? Error::not_allowed : Error::satellite_not_found);
+  if (!sgp4_ && active_satellite().empty() && s_.source == TleSource::file) {
+    // No SATELLITE= yet (the document's example on a fresh unit): the station's database and its
+    // first satellite, as SATELLITE_HTTP= and SATELLITE_FTP= take them.
+    if (const auto d = default_source()) {
+      s_.tle_file = d->file;
+      s_.satellite = d->satellite;
+      apply_load(load_file(s_.tle_file, s_.satellite));
+      changed();
+    }
+  }
+  if (!sgp4_) {
+    if (active_satellite().empty()) return reply_error(c.head(), Error::not_allowed, "NO SATELLITE: SATELLITE= FIRST");
+    return reply_error(c.head(), Error::satellite_not_found);
+  }
   spdlog::info("satrak: tracking {}", elements_->label());
   start_tracking();
   return reply_ok(c.head());
@@ -360,7 +373,7 @@ Unit::Reply Unit::cmd_track_auto(const Command& c) {
 
 Unit::Reply Unit::cmd_rtc_reupdate(const Command& c) {
   if (!c.fields.empty()) return reply_error(c.head(), Error::parameter_count);
-  return reply_error(c.head(), Error::not_allowed);  // no GPS receiver: never locked
+  return reply_error(c.head(), Error::not_allowed, "NO GPS RECEIVER");  // never locked
 }
 
 Unit::Reply Unit::cmd_gps_settings(const Command& c) {

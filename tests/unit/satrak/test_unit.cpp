@@ -269,7 +269,7 @@ TEST_CASE("GPS: no receiver; GPS_DATA? reports the station, GPS_SETTINGS sets it
   CHECK(acu.cmd("GPS_SETTINGS=,0,41N,29N") == err("GPS_SETTINGS=", Error::bad_value));
   CHECK(acu.cmd("GPS_SETTINGS=,0,41N") == err("GPS_SETTINGS=", Error::parameter_count));
   CHECK(acu.cmd("GPS_SETTINGS?") == "GPS_SETTINGS?,1,41.02N,29.17E");  // as written (issue 19, item 5)
-  CHECK(acu.cmd("RTC_REUPDATE=") == err("RTC_REUPDATE=", Error::not_allowed));
+  CHECK(acu.cmd("RTC_REUPDATE=") == "RTC_REUPDATE=,ERR,8,NO GPS RECEIVER");
   CHECK(acu.status(10) == "0");
   CHECK(acu.status(11) == "0");
 }
@@ -777,9 +777,14 @@ TEST_CASE("Bad requests are answered with their error code and change nothing") 
     CHECK(acu.cmd("GOTO=,10,10") == "GOTO=,OK");
     CHECK(acu.model.rotor_control);
   }
-  SUBCASE("TRACK=,1 without a satellite") {
+  SUBCASE("TRACK=,1 without a satellite: the station's database and its first satellite") {
     Acu fresh(kT0);
-    CHECK(fresh.cmd("TRACK=,1") == "TRACK=,ERR,8");
+    CHECK(fresh.cmd("TRACK=,1") == "TRACK=,OK");
+    CHECK(fresh.cmd("SATELLITE?").rfind("SATELLITE?,database.tle,AO-07,0,7530,", 0) == 0);
+    CHECK(fresh.status(8) == "1");
+    Acu empty(kT0);
+    empty.model.db = {};
+    CHECK(empty.cmd("TRACK=,1") == "TRACK=,ERR,8,NO SATELLITE: SATELLITE= FIRST");
   }
 }
 
