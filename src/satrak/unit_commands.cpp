@@ -402,10 +402,11 @@ Unit::Reply Unit::cmd_gps_settings(const Command& c) {
   }
   if (!r.ok()) return reply_error(c.head(), r.error());
   s_.gps_auto = automatic;
-  // Kept as written for GPS_SETTINGS? (a form longer than the state file keeps reads back in four
-  // decimals).
-  if (lat) s_.gps_lat_text = c.fields[1].size() <= 40 ? c.fields[1] : std::string();
-  if (lon) s_.gps_lon_text = c.fields[2].size() <= 40 ? c.fields[2] : std::string();
+  // Kept as written for GPS_SETTINGS?. A form the state file would not keep or a reply could not
+  // carry (over 40 bytes, a tab between number and letter) reads back in four decimals.
+  auto as_written = [](const std::string& f) { return valid_text_field(f, 40) ? f : std::string(); };
+  if (lat) s_.gps_lat_text = as_written(c.fields[1]);
+  if (lon) s_.gps_lon_text = as_written(c.fields[2]);
   if (lat || lon) {
     if (lat) model_.station.lat_deg = *lat;
     if (lon) model_.station.lon_deg = *lon;

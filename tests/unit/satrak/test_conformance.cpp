@@ -107,6 +107,12 @@ TEST_CASE("GPS_SETTINGS reads back in the form it was written (item 5)") {
   // The station moved since (menu 4): the position it has now, in four decimals.
   acu.model.station.lat_deg = 10.0;
   CHECK(acu.cmd("GPS_SETTINGS?") == "GPS_SETTINGS?,0,10.0000N,151.2100e");
+  CHECK(acu.cmd("GPS_SETTINGS=,0,12.5s,?") == "GPS_SETTINGS=,OK");
+  // A form a reply could not carry back is not kept: four decimals.
+  CHECK(acu.cmd("GPS_SETTINGS=,0,12.5\tS,?") == "GPS_SETTINGS=,OK");
+  CHECK(acu.cmd("GPS_SETTINGS?") == "GPS_SETTINGS?,0,12.5000S,151.2100e");
+  CHECK(tb::satrak::settings_from_json(tb::satrak::to_json(acu.unit->settings())) == acu.unit->settings());
+  acu.model.station.lat_deg = 10.0;
   // A refused request keeps what was written.
   CHECK(acu.cmd("GPS_SETTINGS=,0,91N,29E") == "GPS_SETTINGS=,ERR,7");
   CHECK(acu.cmd("GPS_SETTINGS?") == "GPS_SETTINGS?,0,10.0000N,151.2100e");
