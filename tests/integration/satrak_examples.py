@@ -11,8 +11,10 @@ free, and its checksum is still verified. Where trakbox's reply differs from the
 design, the comment says why (docs/satrak.md, "Commands: status").
 
 The document's HTTP and FTP examples name hosts on the Internet and in a private network
-(mockapi.io, 10.0.1.2): trakbox answers at once and tries the download on its worker thread; the
-outcome (ERRSTATUS X5) is not checked, so the test passes with or without a network.
+(mockapi.io, 10.0.1.2): trakbox answers at once and tries the download on its worker thread. The
+test reaches no network: CTest gives it proxy variables that send libcurl to a closed loopback
+port (tests/CMakeLists.txt, TB_NO_INTERNET), so the download fails at once; its outcome (ERRSTATUS
+X5) is not what these examples check.
 """
 import json
 import os

@@ -125,8 +125,8 @@ TEST_CASE("SATELLITE_HTTP= and the six-field SATELLITE_FTP= on a fresh unit (ite
   const fs::path db_file = acu.dir.path / "tle" / "database.tle";
   REQUIRE_FALSE(fs::exists(db_file));
   SUBCASE("HTTP: the station's database and its first satellite") {
-    // The document's example (nothing listens on the address: the download's failure shows in
-    // ERRSTATUS, the reply does not wait for it).
+    // The document's example. The download goes nowhere (doctest_main.cpp sends libcurl to a closed
+    // loopback port); its failure shows in ERRSTATUS, the reply does not wait for it.
     CHECK(acu.cmd("SATELLITE_HTTP=, https://62bb0cca7bdbe01d529645e6.mockapi.io/Satellite,1,1,0") ==
           "SATELLITE_HTTP=,OK");
     CHECK(acu.cmd("SATELLITE_HTTP?") == "SATELLITE_HTTP?,https://62bb0cca7bdbe01d529645e6.mockapi.io/Satellite,1,1");
