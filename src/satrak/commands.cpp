@@ -103,6 +103,17 @@ std::string reply_error(std::string_view head, Error e) {
   return out;
 }
 
+std::string reply_error(std::string_view head, Error e, std::string_view reason) {
+  std::string out = reply_error(head, e);
+  std::string why;
+  for (char ch : reason) {
+    const auto u = static_cast<unsigned char>(ch);
+    why += (u < 0x20 || u >= 0x7F || ch == ',' || ch == '*' || ch == '$') ? ' ' : upper(ch);
+  }
+  if (!trim(why).empty()) out += "," + std::string(trim(why));
+  return out;
+}
+
 std::string reply_values(std::string_view head, const std::vector<std::string>& values) {
   std::string out(head);
   for (const auto& v : values) {

@@ -55,6 +55,10 @@ std::string sanitize_word(std::string_view word);
 // Replies. `head` is "MOVE=" or "STATUS?".
 std::string reply_ok(std::string_view head);                      // "MOVE=,OK"
 std::string reply_error(std::string_view head, Error e);          // "MOVE=,ERR,5"; "ERR,3" without head
+// A refusal that says why, in a field after the code: "RTC_REUPDATE=,ERR,8,NO GPS RECEIVER". The
+// reason is upper-cased and anything that would break the frame (`,` `*` `$`,
+// control bytes, non-ASCII) becomes a blank; an empty reason gives the plain form.
+std::string reply_error(std::string_view head, Error e, std::string_view reason);
 std::string reply_values(std::string_view head, const std::vector<std::string>& values);  // "TPOS?,1,2"
 
 // Field readers: nothing when the text is not exactly that (blanks already trimmed by the parser).

@@ -1,7 +1,12 @@
 #include "satrak/settings.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <nlohmann/json.hpp>
 
+#include "rotator/config.h"
+#include "satrak/commands.h"
 #include "store/json_fields.h"
 
 namespace tb::satrak {
@@ -36,7 +41,22 @@ orbit::UtcTime time_of(const json& j, const std::string& where, const char* key)
   return *t;
 }
 
+// A text field that may be absent (state files written before it existed): "" then.
+std::string optional_text(const json& j, const std::string& where, const char* key, std::size_t max_len) {
+  if (!j.is_object() || !j.contains(key)) return {};
+  return text(j, where, key, max_len);
+}
+
 }  // namespace
+
+double adc_from_sensor(double sensor_counts) {
+  return sensor_counts * rotator::kAdcMaxCount / limits::kSensorMaxCount;
+}
+
+int sensor_from_adc(double adc_counts) {
+  const double s = std::round(adc_counts * limits::kSensorMaxCount / rotator::kAdcMaxCount);
+  return static_cast<int>(std::clamp(s, 0.0, static_cast<double>(limits::kSensorMaxCount)));
+}
 
 bool frame_text(std::string_view s) {
   for (unsigned char c : s)
@@ -76,8 +96,15 @@ json to_json(const Settings& s) {
               {"file", s.ftp.file},           {"satellite", s.ftp.satellite},
               {"period_days", s.ftp.period_days}, {"on_error", static_cast<int>(s.ftp.on_error)}};
   j["gps_auto"] = s.gps_auto;
+  j["gps_lat_text"] = s.gps_lat_text;
+  j["gps_lon_text"] = s.gps_lon_text;
+  // 16: the sensor references are the protocol's 16-bit counts. Files without the key (written
+  // before) hold 10-bit ADC counts there.
+  j["sensor_ref_bits"] = 16;
   j["az_sensor_ref"] = s.az_sensor_ref;
   j["el_sensor_ref"] = s.el_sensor_ref;
+  j["az_angle_ref"] = s.az_angle_ref;
+  j["el_angle_ref"] = s.el_angle_ref;
   j["reduction_x"] = s.reduction_x;
   j["reduction_y"] = s.reduction_y;
   return j;
@@ -128,8 +155,33 @@ Settings settings_from_json(const json& j, const std::string& w) {
     s.ftp.on_error = static_cast<ErrorAction>(integer(f, wf, "on_error", 0, 1));
   }
   s.gps_auto = boolean(j, w, "gps_auto");
-  s.az_sensor_ref = static_cast<int>(integer(j, w, "az_sensor_ref", -100000, 100000));
-  s.el_sensor_ref = static_cast<int>(integer(j, w, "el_sensor_ref", -100000, 100000));
+  s.gps_lat_text = optional_text(j, w, "gps_lat_text", 40);
+  if (!s.gps_lat_text.empty() && !parse_latitude(s.gps_lat_text))
+    bad(path(w, "gps_lat_text"), "expected a latitude like 41.02N, found '" + s.gps_lat_text + "'");
+  s.gps_lon_text = optional_text(j, w, "gps_lon_text", 40);
+  if (!s.gps_lon_text.empty() && !parse_longitude(s.gps_lon_text))
+    bad(path(w, "gps_lon_text"), "expected a longitude like 29.17E, found '" + s.gps_lon_text + "'");
+  if (j.contains("sensor_ref_bits")) {
+    if (integer(j, w, "sensor_ref_bits", 16, 16) != 16) bad(path(w, "sensor_ref_bits"), "expected 16");
+    s.az_sensor_ref = static_cast<int>(integer(j, w, "az_sensor_ref", 0, kSensorMaxCount));
+    s.el_sensor_ref = static_cast<int>(integer(j, w, "el_sensor_ref", 0, kSensorMaxCount));
+  } else {
+    // Written before the references were 16-bit: 10-bit ADC counts, scaled up (the skews in the
+    // Model, which are what point the antenna, are not touched).
+    s.az_sensor_ref = sensor_from_adc(static_cast<double>(integer(j, w, "az_sensor_ref", -100000, 100000)));
+    s.el_sensor_ref = sensor_from_adc(static_cast<double>(integer(j, w, "el_sensor_ref", -100000, 100000)));
+  }
+  auto angle = [&](const char* key, double lo, double hi) {
+    std::string t = optional_text(j, w, key, 40);
+    if (t.empty()) return t;
+    const auto v = parse_number(t);
+    if (!v || *v < lo || *v > hi)
+      bad(path(w, key), "expected a number of degrees in " + format_fixed(lo, 0) + " .. " + format_fixed(hi, 0) +
+                            ", found '" + t + "'");
+    return t;
+  };
+  s.az_angle_ref = angle("az_angle_ref", -kAzAngleRefDeg, kAzAngleRefDeg);
+  s.el_angle_ref = angle("el_angle_ref", kElAngleRefLo, kElAngleRefHi);
   s.reduction_x = num(j, w, "reduction_x", 1e-6, kReductionMax);
   s.reduction_y = num(j, w, "reduction_y", 1e-6, kReductionMax);
   return s;

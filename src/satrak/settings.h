@@ -74,10 +74,20 @@ struct Settings {
 
   // GPS_SETTINGS X1 (the position itself is the station's, in the Model).
   bool gps_auto = false;
+  // GPS_SETTINGS X2/X3 as they were written ("41.02N", "-33.9"; "" when none was). GPS_SETTINGS?
+  // answers them while they still name the station's position (menu 4 may have changed it since).
+  std::string gps_lat_text;
+  std::string gps_lon_text;
 
-  // ANGLE_SETTINGS: the raw sensor counts the angle references are given for.
+  // ANGLE_SETTINGS: the sensor counts the angle references are given for, in the protocol's 16-bit
+  // sensor range (0..65535; the document's example is 39049), scaled to the 10-bit ADC when the
+  // skew is computed (adc_from_sensor).
   int az_sensor_ref = 0;
   int el_sensor_ref = 0;
+  // The angle references as they were given ("160.0"; "" when none was). ANGLE_SETTINGS? answers
+  // them while the skew in force still makes the sensor reference read them.
+  std::string az_angle_ref;
+  std::string el_angle_ref;
 
   // REDUCTION: gear reduction per axis, kept and reported.
   double reduction_x = 1.0;
@@ -99,7 +109,15 @@ inline constexpr double kPeriodDays = 365.0;
 inline constexpr double kReductionMax = 1e6;
 inline constexpr std::size_t kNameMax = 128;           // file, satellite, user, password
 inline constexpr std::size_t kUrlMax = 400;
+inline constexpr int kSensorMaxCount = 65535;          // ANGLE_SETTINGS sensor counts: 16 bits
+inline constexpr double kAzAngleRefDeg = 360.0;        // ANGLE_SETTINGS X angle: -360 .. 360
+inline constexpr double kElAngleRefLo = -90.0, kElAngleRefHi = 180.0;
 }  // namespace limits
+
+// ANGLE_SETTINGS' 16-bit sensor counts <-> the 10-bit ADC counts of trakbox's rotator interface,
+// full scale to full scale (0 -> 0, 65535 -> 1023). sensor_from_adc rounds and clamps.
+double adc_from_sensor(double sensor_counts);
+int sensor_from_adc(double adc_counts);
 
 nlohmann::json to_json(const Settings& s);
 // Throws std::runtime_error naming the field when anything is missing, of the wrong type or out of

@@ -184,6 +184,13 @@ class Unit {
   void download_failed();
   std::string active_file() const;
   std::string active_satellite() const;
+  // For a unit that has had no SATELLITE=: the station's database as a TLE file (written to the TLE
+  // directory as database.tle unless a file of that name is there) and the first satellite of the
+  // tracking list (of the database when the list is empty). Nothing when the database is empty.
+  struct Source {
+    std::string file, satellite;
+  };
+  std::optional<Source> default_source();
   double active_period_days() const;
 
   void changed();  // settings or model changed: persist

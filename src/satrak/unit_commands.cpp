@@ -209,10 +209,12 @@ Unit::Reply Unit::cmd_settings(const Command& c) {
   if (!r.ok()) return reply_error(c.head(), r.error());
   if (n.source != s_.source) {
     // The source needs what its own command sets.
-    if ((n.source == TleSource::web && (n.http.url.empty() || n.tle_file.empty() || n.satellite.empty())) ||
-        (n.source == TleSource::ftp && (n.ftp.host.empty() || n.ftp.file.empty() || n.ftp.satellite.empty())) ||
-        (n.source == TleSource::file && (n.tle_file.empty() || n.satellite.empty())))
-      return reply_error(c.head(), Error::not_allowed);
+    if (n.source == TleSource::web && (n.http.url.empty() || n.tle_file.empty() || n.satellite.empty()))
+      return reply_error(c.head(), Error::not_allowed, "NO HTTP SETTINGS: SATELLITE_HTTP= FIRST");
+    if (n.source == TleSource::ftp && (n.ftp.host.empty() || n.ftp.file.empty() || n.ftp.satellite.empty()))
+      return reply_error(c.head(), Error::not_allowed, "NO FTP SETTINGS: SATELLITE_FTP= FIRST");
+    if (n.source == TleSource::file && (n.tle_file.empty() || n.satellite.empty()))
+      return reply_error(c.head(), Error::not_allowed, "NO SATELLITE: SATELLITE= FIRST");
   }
   const bool pointing = n.time_offset_ms != s_.time_offset_ms || n.az_offset_deg != s_.az_offset_deg ||
                         n.el_offset_deg != s_.el_offset_deg || n.min_elevation_deg != s_.min_elevation_deg ||
@@ -238,34 +240,57 @@ Unit::Reply Unit::cmd_angle_settings(const Command& c) {
   const rotator::AdcModel& m = station_.rotator().model();
   if (c.kind == Kind::query) {
     if (!c.fields.empty()) return reply_error(c.head(), Error::parameter_count);
-    return reply_values(c.head(), {std::to_string(s_.az_sensor_ref), f2(m.az_deg_from_raw(s_.az_sensor_ref)),
-                                   std::to_string(s_.el_sensor_ref), f2(m.el_deg_from_raw(s_.el_sensor_ref))});
+    // The angle each sensor reference reads now; the angle as it was given while the skew in force
+    // still makes the reference read it (to the half count the skew is rounded to), so a client
+    // reads back what it wrote, not 159.94 for 160.0. Changed since (menu 6-3, an image): the reading.
+    const double ax = m.az_deg_from_raw(adc_from_sensor(s_.az_sensor_ref));
+    const double ay = m.el_deg_from_raw(adc_from_sensor(s_.el_sensor_ref));
+    const double tol_az = 0.51 * m.deg_per_count(rotator::Axis::az), tol_el = 0.51 * m.deg_per_count(rotator::Axis::el);
+    const auto given_az = s_.az_angle_ref.empty() ? std::nullopt : parse_number(s_.az_angle_ref);
+    const auto given_el = s_.el_angle_ref.empty() ? std::nullopt : parse_number(s_.el_angle_ref);
+    const bool az_holds = given_az && rotator::azimuth_distance(rotator::wrap360(*given_az), ax) <= tol_az;
+    const bool el_holds = given_el && std::abs(*given_el - ay) <= tol_el;
+    return reply_values(c.head(), {std::to_string(s_.az_sensor_ref), az_holds ? s_.az_angle_ref : f2(ax),
+                                   std::to_string(s_.el_sensor_ref), el_holds ? s_.el_angle_ref : f2(ay)});
   }
   if (c.fields.size() != 5) return reply_error(c.head(), Error::parameter_count);
   Reader r(c.fields);
   const bool automatic = r.flag(0);
-  long long sx = r.integer(1, -100000, 100000);
-  const double ax = r.number(2, -360.0, 360.0);
-  long long sy = r.integer(3, -100000, 100000);
-  const double ay = r.number(4, -90.0, 180.0);
+  // The document's sensor counts are 16-bit (its example: 39049, 36838); trakbox's sensor is the
+  // 10-bit ADC: the counts are scaled to it (adc_from_sensor), full scale to full scale.
+  long long sx = r.integer(1, 0, limits::kSensorMaxCount);
+  const double ax = r.number(2, -limits::kAzAngleRefDeg, limits::kAzAngleRefDeg);
+  long long sy = r.integer(3, 0, limits::kSensorMaxCount);
+  const double ay = r.number(4, limits::kElAngleRefLo, limits::kElAngleRefHi);
   if (!r.ok()) return reply_error(c.head(), r.error());
+  double adc_x = adc_from_sensor(static_cast<double>(sx)), adc_y = adc_from_sensor(static_cast<double>(sy));
   if (automatic) {
     const auto raw = station_.rotator().raw_counts();
-    if (!raw) return reply_error(c.head(), Error::not_allowed);
-    sx = raw->az;
-    sy = raw->el;
+    if (!raw) return reply_error(c.head(), Error::not_allowed, "NO SENSOR READING");
+    adc_x = raw->az;
+    adc_y = raw->el;
+    sx = sensor_from_adc(adc_x);
+    sy = sensor_from_adc(adc_y);
   }
-  // The skew that makes sensor count sx read angle ax (and sy read ay): menu 6-3's skew.
+  // The skew that makes ADC count adc_x read angle ax (and adc_y read ay): menu 6-3's skew.
   rotator::RotatorConfig cfg = model_.rotator;
   const double start = m.start_deg();
-  const double here = m.az_travel_from_counts(m.corrected(rotator::Axis::az, static_cast<double>(sx)));
+  const double here = m.az_travel_from_counts(m.corrected(rotator::Axis::az, adc_x));
+  // The travel nearest what the count reads now, among those a skew can reach (a second reference
+  // after the document's first example would otherwise pick a travel 360 degrees off the sensor).
   double travel = rotator::wrap360(ax - start);
+  bool reachable = false;
   for (int k = -2; k <= 2; ++k) {
     const double t = rotator::wrap360(ax - start) + 360.0 * k;
-    if (std::abs(t - here) < std::abs(travel - here)) travel = t;
+    const double skew = std::round(m.counts_from_az_travel(t) - adc_x);
+    const bool ok = rotator::limits::kSkew.contains(static_cast<int>(skew));
+    if ((ok && !reachable) || (ok == reachable && std::abs(t - here) < std::abs(travel - here))) {
+      travel = t;
+      reachable = ok;
+    }
   }
-  const double az_skew = std::round(m.counts_from_az_travel(travel) - static_cast<double>(sx));
-  const double el_skew = std::round(m.counts_from_el(ay) - static_cast<double>(sy));
+  const double az_skew = std::round(m.counts_from_az_travel(travel) - adc_x);
+  const double el_skew = std::round(m.counts_from_el(ay) - adc_y);
   if (std::abs(az_skew) > 1023 || std::abs(el_skew) > 1023) return reply_error(c.head(), Error::out_of_range);
   cfg.az_skew = static_cast<int>(az_skew);
   cfg.el_skew = static_cast<int>(el_skew);
@@ -273,6 +298,8 @@ Unit::Reply Unit::cmd_angle_settings(const Command& c) {
   model_.rotator = cfg;
   s_.az_sensor_ref = static_cast<int>(sx);
   s_.el_sensor_ref = static_cast<int>(sy);
+  s_.az_angle_ref = c.fields[2];
+  s_.el_angle_ref = c.fields[4];
   station_.reconfigure();
   if (commanded_) commanded_ = station_.rotator().status().target;
   pointing_changed();
@@ -308,7 +335,20 @@ Unit::Reply Unit::cmd_track(const Command& c) {
     return reply_ok(c.head());
   }
   take_control();
-  if (!sgp4_) return reply_error(c.head(), active_satellite().empty() ? Error::not_allowed : Error::satellite_not_found);
+  if (!sgp4_ && active_satellite().empty() && s_.source == TleSource::file) {
+    // No SATELLITE= yet (the document's example on a fresh unit): the station's database and its
+    // first satellite, as SATELLITE_HTTP= and SATELLITE_FTP= take them.
+    if (const auto d = default_source()) {
+      s_.tle_file = d->file;
+      s_.satellite = d->satellite;
+      apply_load(load_file(s_.tle_file, s_.satellite));
+      changed();
+    }
+  }
+  if (!sgp4_) {
+    if (active_satellite().empty()) return reply_error(c.head(), Error::not_allowed, "NO SATELLITE: SATELLITE= FIRST");
+    return reply_error(c.head(), Error::satellite_not_found);
+  }
   spdlog::info("satrak: tracking {}", elements_->label());
   start_tracking();
   return reply_ok(c.head());
@@ -333,14 +373,20 @@ Unit::Reply Unit::cmd_track_auto(const Command& c) {
 
 Unit::Reply Unit::cmd_rtc_reupdate(const Command& c) {
   if (!c.fields.empty()) return reply_error(c.head(), Error::parameter_count);
-  return reply_error(c.head(), Error::not_allowed);  // no GPS receiver: never locked
+  return reply_error(c.head(), Error::not_allowed, "NO GPS RECEIVER");  // never locked
 }
 
 Unit::Reply Unit::cmd_gps_settings(const Command& c) {
   if (c.kind == Kind::query) {
     if (!c.fields.empty()) return reply_error(c.head(), Error::parameter_count);
-    return reply_values(c.head(), {b(s_.gps_auto), format_latitude(model_.station.lat_deg),
-                                   format_longitude(model_.station.lon_deg)});
+    // As written (GPS_SETTINGS=,0,41.02N,...) while it still is the station's position; else (menu 4
+    // changed it, or it was never written) four decimals.
+    const auto lat_given = s_.gps_lat_text.empty() ? std::nullopt : parse_latitude(s_.gps_lat_text);
+    const auto lon_given = s_.gps_lon_text.empty() ? std::nullopt : parse_longitude(s_.gps_lon_text);
+    const bool lat_holds = lat_given && std::abs(*lat_given - model_.station.lat_deg) < 1e-9;
+    const bool lon_holds = lon_given && std::abs(*lon_given - model_.station.lon_deg) < 1e-9;
+    return reply_values(c.head(), {b(s_.gps_auto), lat_holds ? s_.gps_lat_text : format_latitude(model_.station.lat_deg),
+                                   lon_holds ? s_.gps_lon_text : format_longitude(model_.station.lon_deg)});
   }
   if (c.fields.size() != 3) return reply_error(c.head(), Error::parameter_count);
   Reader r(c.fields);
@@ -356,6 +402,11 @@ Unit::Reply Unit::cmd_gps_settings(const Command& c) {
   }
   if (!r.ok()) return reply_error(c.head(), r.error());
   s_.gps_auto = automatic;
+  // Kept as written for GPS_SETTINGS?. A form the state file would not keep or a reply could not
+  // carry (over 40 bytes, a tab between number and letter) reads back in four decimals.
+  auto as_written = [](const std::string& f) { return valid_text_field(f, 40) ? f : std::string(); };
+  if (lat) s_.gps_lat_text = as_written(c.fields[1]);
+  if (lon) s_.gps_lon_text = as_written(c.fields[2]);
   if (lat || lon) {
     if (lat) model_.station.lat_deg = *lat;
     if (lon) model_.station.lon_deg = *lon;

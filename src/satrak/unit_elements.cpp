@@ -26,6 +26,27 @@ double Unit::active_period_days() const {
   }
 }
 
+std::optional<Unit::Source> Unit::default_source() {
+  const store::Database& db = model_.db;
+  const store::Satellite* first = db.listed(1);
+  if (!first && !db.satellites.empty()) first = &db.satellites.front();
+  if (!first) return std::nullopt;
+  const orbit::Elements& e = first->elements;
+  // The name as SATELLITE= would take it; a name the frame cannot carry is looked up by number.
+  const std::string name = !e.name.empty() && valid_text_field(e.name, limits::kNameMax) && e.name == text::trim(e.name)
+                               ? e.name
+                               : std::to_string(e.catalog_number);
+  const fs::path path = opt_.tle_dir / kDatabaseTleFile;
+  if (!stat_file(path)) {
+    std::string text;
+    for (const auto& s : db.satellites) text += orbit::format_nasa(s.elements);
+    std::string err;
+    if (!store::write_file_atomically(path, text, err, 0644)) spdlog::warn("satrak: {}", err);
+    else spdlog::info("satrak: no satellite chosen yet: the station's database is {}", path.string());
+  }
+  return Source{kDatabaseTleFile, name};
+}
+
 namespace {
 const orbit::Elements* find_satellite(const std::vector<orbit::Elements>& sets, const std::string& name) {
   for (const auto& e : sets)

@@ -19,6 +19,9 @@ inline constexpr double kMaxRateDegS = 90.0;   // MOVE: faster requests are out 
 inline constexpr double kMaxStepDeg = 360.0;   // STEP
 inline constexpr double kMoveLeadS = 1.0;      // MOVE: the moving target runs this far ahead of the clock
 inline constexpr double kPassSearchDays = 1.0;
+// The TLE file a unit that has had no SATELLITE= uses: the station's database, written to the TLE
+// directory under this name (Unit::default_source, docs/satrak.md).
+inline constexpr const char* kDatabaseTleFile = "database.tle";
 
 // What SATELLITE_FTP? answers for a stored password: never the password itself (the Satrak
 // protocol has no authentication: anyone who can reach the port would read it), and nothing with

@@ -69,10 +69,21 @@ Unit::Reply Unit::cmd_satellite_http(const Command& c) {
   const bool cont = r.flag(2);
   const bool keep_tracking = r.flag(3);
   if (!r.ok()) return reply_error(c.head(), r.error());
-  // The HTTP settings name no file or satellite: those of SATELLITE= are used.
-  if (s_.tle_file.empty() || s_.satellite.empty()) return reply_error(c.head(), Error::not_allowed);
+  // The HTTP settings name no file or satellite: those of SATELLITE= are used; on a unit that has
+  // had none (the document's example on a fresh unit), the station's database and its first satellite.
+  std::optional<Source> fallback;
+  if (s_.tle_file.empty() || s_.satellite.empty()) {
+    fallback = default_source();
+    if (!fallback) return reply_error(c.head(), Error::not_allowed, "NO SATELLITE: SATELLITE= FIRST");
+  }
   s_.http = HttpSource{c.fields[0], period, cont ? ErrorAction::continue_last_data : ErrorAction::stop_tracking};
+  if (fallback) {
+    s_.tle_file = fallback->file;
+    s_.satellite = fallback->satellite;
+  }
   s_.source = TleSource::web;
+  // The database file serves until the download arrives.
+  if (fallback) apply_load(load_file(s_.tle_file, s_.satellite));
   if (!keep_tracking && tracking_) stop_tracking(false);
   download_failed_ = false;
   ++download_generation_;
@@ -118,7 +129,20 @@ Unit::Reply Unit::cmd_satellite_ftp(const Command& c) {
   f.period_days = r.number(i, 0.0, limits::kPeriodDays);
   f.on_error = r.flag(i + 1) ? ErrorAction::continue_last_data : ErrorAction::stop_tracking;
   if (!r.ok()) return reply_error(c.head(), r.error());
-  if (f.file.empty() || f.satellite.empty()) return reply_error(c.head(), Error::not_allowed);
+  if (f.file.empty() || f.satellite.empty()) {
+    // The six-field form (the document's example) names no file or satellite and none is in force
+    // for FTP: those of SATELLITE=, as SATELLITE_HTTP= uses them; on a unit that has had none, the
+    // station's database and its first satellite.
+    if (!s_.tle_file.empty() && !s_.satellite.empty()) {
+      f.file = s_.tle_file;
+      f.satellite = s_.satellite;
+    } else if (const auto d = default_source()) {
+      f.file = d->file;
+      f.satellite = d->satellite;
+    } else {
+      return reply_error(c.head(), Error::not_allowed, "NO SATELLITE: SATELLITE= FIRST");
+    }
+  }
   const bool new_satellite = f.file != s_.ftp.file || f.satellite != s_.ftp.satellite || s_.source != TleSource::ftp;
   s_.ftp = f;
   s_.source = TleSource::ftp;

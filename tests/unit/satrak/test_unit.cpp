@@ -218,7 +218,8 @@ TEST_CASE("SETTINGS= takes ? for unchanged, 11 or 12 fields, and checks every fi
   CHECK(acu.cmd("SETTINGS=,0,0,0,0,0,0,0,0,0,0,91") == err("SETTINGS=", Error::out_of_range));   // threshold
   CHECK(acu.cmd("SETTINGS=,0,0,0,0,0,0,0,0,0,0,0,1,0") == err("SETTINGS=", Error::parameter_count));
   // 12 fields (what SETTINGS? returns): X11 is the TLE source; web needs SATELLITE_HTTP first.
-  CHECK(acu.cmd("SETTINGS=,0,0,0,0,0,0,0,0,0,0,1,0") == err("SETTINGS=", Error::not_allowed));
+  CHECK(acu.cmd("SETTINGS=,0,0,0,0,0,0,0,0,0,0,1,0") ==
+        tb::satrak::reply_error("SETTINGS=", Error::not_allowed, "NO HTTP SETTINGS: SATELLITE_HTTP= FIRST"));
   CHECK(acu.cmd("SETTINGS?") == good);
   CHECK(acu.saves == saves);
   CHECK(acu.cmd("SETTINGS=,?,?,?,?,?,?,?,?,?,?,?,5") == "SETTINGS=,OK");
@@ -267,8 +268,8 @@ TEST_CASE("GPS: no receiver; GPS_DATA? reports the station, GPS_SETTINGS sets it
   CHECK(acu.cmd("GPS_SETTINGS=,0,91N,29E") == err("GPS_SETTINGS=", Error::out_of_range));
   CHECK(acu.cmd("GPS_SETTINGS=,0,41N,29N") == err("GPS_SETTINGS=", Error::bad_value));
   CHECK(acu.cmd("GPS_SETTINGS=,0,41N") == err("GPS_SETTINGS=", Error::parameter_count));
-  CHECK(acu.cmd("GPS_SETTINGS?") == "GPS_SETTINGS?,1,41.0200N,29.1700E");
-  CHECK(acu.cmd("RTC_REUPDATE=") == err("RTC_REUPDATE=", Error::not_allowed));
+  CHECK(acu.cmd("GPS_SETTINGS?") == "GPS_SETTINGS?,1,41.02N,29.17E");  // as written (issue 19, item 5)
+  CHECK(acu.cmd("RTC_REUPDATE=") == "RTC_REUPDATE=,ERR,8,NO GPS RECEIVER");
   CHECK(acu.status(10) == "0");
   CHECK(acu.status(11) == "0");
 }
@@ -276,19 +277,14 @@ TEST_CASE("GPS: no receiver; GPS_DATA? reports the station, GPS_SETTINGS sets it
 TEST_CASE("ANGLE_SETTINGS: sensor and angle references become the rotator's skew") {
   Acu acu(kT0);
   CHECK(acu.cmd("ANGLE_SETTINGS?") == "ANGLE_SETTINGS?,0,0.00,0,0.00");
-  // The seed's example speaks of a 16-bit resolver; the TrakBox ADC has 10 bits.
-  CHECK(acu.cmd("ANGLE_SETTINGS=0,39049,160.0,36838,40.0") == err("ANGLE_SETTINGS=", Error::out_of_range));
-  CHECK(acu.model.rotator.az_skew == 0);
-  // Count 512 is to read 185 degrees (it reads 180.18 with no skew): +14 counts of skew.
-  CHECK(acu.cmd("ANGLE_SETTINGS=0,512,185.0,256,46.0") == "ANGLE_SETTINGS=,OK");
+  // Sensor counts are the document's 16 bits (0..65535), scaled to the 10-bit ADC: 32768 is ADC
+  // count 511.5, which reads 180.00 with no skew; to read 185 it takes +14 counts of skew.
+  CHECK(acu.cmd("ANGLE_SETTINGS=0,32768,185.0,16384,46.0") == "ANGLE_SETTINGS=,OK");
   CHECK(acu.model.rotator.az_skew == 14);
   CHECK(acu.model.rotator.el_skew == 5);
   CHECK(acu.loop->rotator().config().az_skew == 14);  // the station was reconfigured
-  const auto q = acu.fields("ANGLE_SETTINGS?");
-  CHECK(q[0] == "512");
-  CHECK(std::stod(q[1]) == doctest::Approx(185.0).epsilon(0.002));
-  CHECK(q[2] == "256");
-  CHECK(std::stod(q[3]) == doctest::Approx(46.0).epsilon(0.005));
+  // Read back as given, not as the whole-count skew makes the count read (185.18, 46.07).
+  CHECK(acu.cmd("ANGLE_SETTINGS?") == "ANGLE_SETTINGS?,32768,185.0,16384,46.0");
   SUBCASE("automatic: the antenna's present counts read the angles given") {
     acu.run(1s);
     const auto raw = acu.loop->rotator().raw_counts();
@@ -297,8 +293,24 @@ TEST_CASE("ANGLE_SETTINGS: sensor and angle references become the rotator's skew
     acu.run(1s);
     CHECK(acu.status_num(14) == doctest::Approx(10.0).epsilon(0.04));
     CHECK(acu.status_num(15) == doctest::Approx(5.0).epsilon(0.04));
-    CHECK(acu.fields("ANGLE_SETTINGS?")[0] == std::to_string(raw->az));
+    CHECK(acu.cmd("ANGLE_SETTINGS?") == "ANGLE_SETTINGS?," + std::to_string(tb::satrak::sensor_from_adc(raw->az)) +
+                                            ",10.0," + std::to_string(tb::satrak::sensor_from_adc(raw->el)) + ",5.0");
   }
+  SUBCASE("a skew changed since (menu 6-3): the query answers what the reference reads now") {
+    acu.model.rotator.az_skew = 20;
+    acu.loop->reconfigure();
+    const auto q = acu.fields("ANGLE_SETTINGS?");
+    CHECK(q[1] == "187.04");  // ADC 511.5 + 20 through 1023 counts for 360 degrees
+    CHECK(q[3] == "46.0");
+  }
+  SUBCASE("the document's example: 16-bit counts") {
+    CHECK(acu.cmd("ANGLE_SETTINGS=0,39049,160.0,36838,40.0") == "ANGLE_SETTINGS=,OK");
+    CHECK(acu.model.rotator.az_skew == -155);  // 39049 -> ADC 609.55; 160 deg is ADC 454.67
+    CHECK(acu.model.rotator.el_skew == -348);  // 36838 -> ADC 575.04; 40 deg is ADC 227.11 (511 for 90)
+    CHECK(acu.cmd("ANGLE_SETTINGS?") == "ANGLE_SETTINGS?,39049,160.0,36838,40.0");
+  }
+  CHECK(acu.cmd("ANGLE_SETTINGS=0,65536,160.0,0,40.0") == err("ANGLE_SETTINGS=", Error::out_of_range));
+  CHECK(acu.cmd("ANGLE_SETTINGS=0,-1,160.0,0,40.0") == err("ANGLE_SETTINGS=", Error::out_of_range));
   CHECK(acu.cmd("ANGLE_SETTINGS=,2,0,1,0,1") == err("ANGLE_SETTINGS=", Error::out_of_range));
   CHECK(acu.cmd("ANGLE_SETTINGS=,0,0,1,0") == err("ANGLE_SETTINGS=", Error::parameter_count));
 }
@@ -765,9 +777,14 @@ TEST_CASE("Bad requests are answered with their error code and change nothing") 
     CHECK(acu.cmd("GOTO=,10,10") == "GOTO=,OK");
     CHECK(acu.model.rotor_control);
   }
-  SUBCASE("TRACK=,1 without a satellite") {
+  SUBCASE("TRACK=,1 without a satellite: the station's database and its first satellite") {
     Acu fresh(kT0);
-    CHECK(fresh.cmd("TRACK=,1") == "TRACK=,ERR,8");
+    CHECK(fresh.cmd("TRACK=,1") == "TRACK=,OK");
+    CHECK(fresh.cmd("SATELLITE?").rfind("SATELLITE?,database.tle,AO-07,0,7530,", 0) == 0);
+    CHECK(fresh.status(8) == "1");
+    Acu empty(kT0);
+    empty.model.db = {};
+    CHECK(empty.cmd("TRACK=,1") == "TRACK=,ERR,8,NO SATELLITE: SATELLITE= FIRST");
   }
 }
 
