@@ -359,6 +359,10 @@ void Controller::tick_adc(AdcRotator& adc, orbit::UtcTime now, double dt) {
       in.dead_band = band(a);
       in.range = model_.counts_range(a);
       in.driving = l.cmd;
+      // A jog under way is driving between its pulses: it goes on to the centre of the dead band
+      // at its end, as a key does, rather than stopping at the band's edge.
+      const bool jogging = status_.mode == ControlMode::manual && l.manual_goal && l.duty < 1.0 && l.jog_started;
+      if (jogging) in.driving = *l.manual_goal > 0 ? Drive::increase : Drive::decrease;
       // The coast ends where friction stops the motor (kMotorStopFraction of its rate), a little
       // short of where the first-order model alone would put it.
       const double v_stop = kMotorStopFraction * rate_cps(a);
@@ -372,16 +376,18 @@ void Controller::tick_adc(AdcRotator& adc, orbit::UtcTime now, double dt) {
         else
           l.exact = false;  // nothing to do, or arrived
       }
-      // A jog slower than the motor: pulses whose share of the time is the duty, counted from the
-      // jog's start so that late or early ticks do not change the rate; each pulse covers the
-      // time to the next tick (100 ms while moving, next_tick_in). A loop that stalled does not
-      // make up for the lost time in one burst.
       // A jog never drives against its own direction (its end may lie behind the axis).
       if (cmd.drive != Drive::stop && status_.mode == ControlMode::manual && l.manual_goal &&
           sign(cmd.drive) * *l.manual_goal < 0.0)
         cmd = {};
+      // A jog slower than the motor: pulses whose share of the time is the duty, counted from the
+      // jog's start so that late or early ticks do not change the rate; each pulse covers the
+      // time to the next tick, taken to be as long as the last interval (100 ms while moving,
+      // next_tick_in, in the clock's time: longer under a fast clock). A loop that stalled does
+      // not make up for the lost time in one burst.
+      if (jogging && cmd.drive == Drive::stop) l.jog_started = false;  // at its end: held there
       if (cmd.drive != Drive::stop && status_.mode == ControlMode::manual && l.manual_goal && l.duty < 1.0) {
-        constexpr double kPeriod = 0.1;
+        const double kPeriod = dt > 0.0 ? std::clamp(dt, 0.02, 1.0) : 0.1;
         if (!l.jog_started) {
           l.jog_started = true;
           l.jog_t0 = now;
