@@ -128,6 +128,10 @@ struct MotorState {
 };
 // Advances by dt seconds with the motor commanded to velocity v_cmd.
 MotorState motor_advance(MotorState s, double v_cmd, double tau_s, double dt_s);
+// A coasting motor whose speed has fallen below this share of its full rate is at rest: friction
+// holds it (the simulated rotator stops it there; the controller reports the axis still from
+// then). At 6 deg/s and coast 0.15 s the last 0.018 deg of the coast, 0.05 of a count.
+inline constexpr double kMotorStopFraction = 0.02;
 
 // One axis of the per-tick control decision.
 struct AxisLoopInput {

@@ -78,15 +78,21 @@ RotatorPosition Controller::set_target(AzEl compass) {
   return set_target(model_.target_for(compass, current));
 }
 
-RotatorPosition Controller::set_target(RotatorPosition p) {
+RotatorPosition Controller::set_target(RotatorPosition p, Approach how) {
   p = model_.clamp(p);
   if (status_.mode != ControlMode::target || !status_.target || !(*status_.target == p)) {
     for (Axis a : kAxes) loop(a).stalled = false;
   }
   status_.target = p;
   status_.mode = ControlMode::target;
-  az_.manual_goal.reset();
-  el_.manual_goal.reset();
+  for (Axis a : kAxes) {
+    AxisLoop& l = loop(a);
+    l.manual_goal.reset();
+    l.manual_end.reset();
+    l.duty = 1.0;
+    l.exact = how == Approach::exact;
+    l.exact_driven = false;
+  }
   // The status describes the new target at once (goal counts, on target from the last reading),
   // not the previous one until the next tick: a display or a remote client asking "arrived?"
   // right after a GOTO must not see the previous arrival.
@@ -122,12 +128,32 @@ void Controller::stop() {
   status_.mode = ControlMode::idle;
   status_.target.reset();
   status_.on_target = false;
+  const bool adc = driver_->as_adc() != nullptr;
   for (Axis a : kAxes) {
-    loop(a).manual_goal.reset();
-    loop(a).stalled = false;
+    AxisLoop& l = loop(a);
+    l.manual_goal.reset();
+    l.manual_end.reset();
+    l.duty = 1.0;
+    l.exact = false;
+    l.stalled = false;
     axis_status(a).goal_counts.reset();
     axis_status(a).motion = Drive::stop;
+    // The lines are off; an axis still coasting says so until it is at rest (ADC rotators; a
+    // degree rotator reports its own motion at the next tick).
+    axis_status(a).moving = adc && status_.has_position ? motion_of(a) : Drive::stop;
   }
+}
+
+Drive Controller::motion_of(Axis a) const {
+  const AxisLoop& l = a == Axis::az ? az_ : el_;
+  if (l.cmd != Drive::stop) return l.cmd;
+  if (std::abs(l.velocity) > kMotorStopFraction * rate_cps(a)) return l.velocity > 0.0 ? Drive::increase : Drive::decrease;
+  return Drive::stop;
+}
+
+int Controller::band(Axis a) const {
+  const AxisLoop& l = a == Axis::az ? az_ : el_;
+  return l.exact ? 0 : model_.dead_band(a);
 }
 
 void Controller::manual(Axis a, Drive d) {
@@ -137,9 +163,17 @@ void Controller::manual(Axis a, Drive d) {
     status_.target.reset();
     az_.manual_goal.reset();
     el_.manual_goal.reset();
+    for (Axis x : kAxes) {
+      loop(x).manual_end.reset();
+      loop(x).duty = 1.0;
+      loop(x).exact = false;
+    }
     status_.mode = ControlMode::manual;
   }
   l.stalled = false;
+  l.manual_end.reset();
+  l.duty = 1.0;
+  l.jog_started = false;
   if (d == Drive::stop) {
     l.manual_goal.reset();
     if (AdcRotator* adc = driver_->as_adc()) {
@@ -153,6 +187,18 @@ void Controller::manual(Axis a, Drive d) {
   }
   // The goal is the end of travel that way; tick() recomputes it from the range each time.
   l.manual_goal = static_cast<double>(sign(d));
+}
+
+void Controller::jog(Axis a, double rate_deg_s, std::optional<double> end) {
+  if (rate_deg_s == 0.0 || !std::isfinite(rate_deg_s)) {
+    manual(a, Drive::stop);
+    return;
+  }
+  manual(a, rate_deg_s > 0.0 ? Drive::increase : Drive::decrease);
+  AxisLoop& l = loop(a);
+  const double full = a == Axis::az ? model_.config().az_rate_deg_s : model_.config().el_rate_deg_s;
+  l.duty = full > 0.0 ? std::min(1.0, std::abs(rate_deg_s) / full) : 1.0;
+  if (end) l.manual_end = a == Axis::az ? model_.counts_from_az_travel(*end) : model_.counts_from_el(*end);
 }
 
 bool Controller::manual_key(char key) {
@@ -177,7 +223,8 @@ std::optional<double> Controller::goal_counts(Axis a) const {
   if (status_.mode == ControlMode::manual && l.manual_goal) {
     Range r = model_.counts_range(a);
     if (r.empty()) return std::nullopt;
-    return *l.manual_goal > 0 ? std::floor(r.hi) : std::ceil(r.lo);
+    if (*l.manual_goal > 0) return l.manual_end ? std::clamp(std::floor(*l.manual_end), std::ceil(r.lo), std::floor(r.hi)) : std::floor(r.hi);
+    return l.manual_end ? std::clamp(std::ceil(*l.manual_end), std::ceil(r.lo), std::floor(r.hi)) : std::ceil(r.lo);
   }
   return std::nullopt;
 }
@@ -219,7 +266,13 @@ void Controller::tick(orbit::UtcTime now) {
       last_tick_ = now;
     }
     dt = seconds(*last_tick_, now);
-    for (Axis a : kAxes) driven_full[a == Axis::az ? 0 : 1] = loop(a).cmd != Drive::stop && loop(a).cmd_until >= now;
+    for (Axis a : kAxes) {
+      AxisLoop& l = loop(a);
+      driven_full[a == Axis::az ? 0 : 1] = l.cmd != Drive::stop && l.cmd_until >= now;
+      // A jog's drive time delivered since the last tick.
+      if (l.jog_started && l.cmd != Drive::stop)
+        l.jog_on_s += std::clamp(seconds(*last_tick_, std::min(now, l.cmd_until)), 0.0, dt);
+    }
     advance_model(now);
   }
   last_tick_ = now;
@@ -237,7 +290,7 @@ void Controller::tick(orbit::UtcTime now) {
     lines_off();
     status_.has_position = false;
     status_.on_target = false;
-    for (Axis a : kAxes) axis_status(a).motion = Drive::stop;
+    for (Axis a : kAxes) axis_status(a).motion = axis_status(a).moving = Drive::stop;
     return;
   }
   if (AdcRotator* adc = driver_->as_adc()) {
@@ -258,7 +311,7 @@ void Controller::update_on_target() {
   for (Axis a : kAxes) {
     const AxisStatus& s = axis_status(a);
     const double corr = loop(a).last_reading;
-    if (!s.goal_counts || std::abs(*s.goal_counts - corr) > model_.dead_band(a) || s.motion != Drive::stop)
+    if (!s.goal_counts || std::abs(*s.goal_counts - corr) > band(a) || s.motion != Drive::stop)
       status_.on_target = false;
   }
 }
@@ -297,17 +350,57 @@ void Controller::tick_adc(AdcRotator& adc, orbit::UtcTime now, double dt) {
     if (!status_.control_enabled) continue;
 
     AxisCommand cmd;
+    // An exact approach is over once its drive has ended: the dead band holds the axis from then.
+    if (l.exact && l.exact_driven && l.cmd == Drive::stop) l.exact = false;
     if (s.goal_counts && !l.stalled) {
       AxisLoopInput in;
       in.reading = corr;
       in.target = *s.goal_counts;
-      in.dead_band = model_.dead_band(a);
+      in.dead_band = band(a);
       in.range = model_.counts_range(a);
       in.driving = l.cmd;
-      in.velocity = l.velocity;
+      // A jog under way is driving between its pulses: it goes on to the centre of the dead band
+      // at its end, as a key does, rather than stopping at the band's edge.
+      const bool jogging = status_.mode == ControlMode::manual && l.manual_goal && l.duty < 1.0 && l.jog_started;
+      if (jogging) in.driving = *l.manual_goal > 0 ? Drive::increase : Drive::decrease;
+      // The coast ends where friction stops the motor (kMotorStopFraction of its rate), a little
+      // short of where the first-order model alone would put it.
+      const double v_stop = kMotorStopFraction * rate_cps(a);
+      in.velocity = std::abs(l.velocity) <= v_stop ? 0.0 : l.velocity - std::copysign(v_stop, l.velocity);
       in.rate = rate_cps(a);
       in.coast_s = c.coast_s;
       cmd = decide(in);
+      if (l.exact) {
+        if (cmd.drive != Drive::stop)
+          l.exact_driven = true;
+        else
+          l.exact = false;  // nothing to do, or arrived
+      }
+      // A jog never drives against its own direction (its end may lie behind the axis).
+      if (cmd.drive != Drive::stop && status_.mode == ControlMode::manual && l.manual_goal &&
+          sign(cmd.drive) * *l.manual_goal < 0.0)
+        cmd = {};
+      // A jog slower than the motor: pulses whose share of the time is the duty, counted from the
+      // jog's start so that late or early ticks do not change the rate; each pulse covers the
+      // time to the next tick, taken to be as long as the last interval (100 ms while moving,
+      // next_tick_in, in the clock's time: longer under a fast clock). A loop that stalled does
+      // not make up for the lost time in one burst.
+      if (jogging && cmd.drive == Drive::stop) l.jog_started = false;  // at its end: held there
+      if (cmd.drive != Drive::stop && status_.mode == ControlMode::manual && l.manual_goal && l.duty < 1.0) {
+        const double kPeriod = dt > 0.0 ? std::clamp(dt, 0.02, 1.0) : 0.1;
+        if (!l.jog_started) {
+          l.jog_started = true;
+          l.jog_t0 = now;
+          l.jog_on_s = 0.0;
+        }
+        const double want = l.duty * (seconds(l.jog_t0, now) + kPeriod);
+        l.jog_on_s = std::max(l.jog_on_s, want - 3.0 * l.duty * kPeriod);
+        const double run = want - l.jog_on_s;
+        if (run < 1e-4)
+          cmd = {};
+        else
+          cmd.run_for_s = std::min(cmd.run_for_s, run);
+      }
     }
     if (cmd.drive != Drive::stop && l.cmd != Drive::stop && l.driven_still_s >= c.stall_s &&
         rate_cps(a) * c.stall_s >= 3.0) {
@@ -330,6 +423,7 @@ void Controller::tick_adc(AdcRotator& adc, orbit::UtcTime now, double dt) {
   }
   for (Axis a : kAxes) {
     axis_status(a).motion = loop(a).cmd;
+    axis_status(a).moving = motion_of(a);
     axis_status(a).stalled = loop(a).stalled;
   }
   if (!status_.control_enabled) lines_off();
@@ -370,6 +464,7 @@ void Controller::tick_degrees(DegreeRotator& dr, orbit::UtcTime now) {
     s.travel = a == Axis::az ? model_.az_travel_from_counts(corr[i]) : model_.el_from_counts(corr[i]);
     s.deg = a == Axis::az ? model_.compass_from_travel(s.travel) : s.travel;
     s.motion = motion[a];
+    s.moving = motion[a];
     s.stalled = false;
     update_limits(a, corr[i], reported);
     s.goal_counts.reset();
@@ -384,7 +479,9 @@ void Controller::tick_degrees(DegreeRotator& dr, orbit::UtcTime now) {
     const int i = a == Axis::az ? 0 : 1;
     const AxisStatus& s = axis_status(a);
     want_raw[i] = raw_c[i];
-    if (s.goal_counts && std::abs(*s.goal_counts - corr[i]) > model_.dead_band(a)) {
+    // An exact target is sent when it is more than half a count away; the rotator positions itself.
+    const double b = loop(a).exact ? 0.5 : static_cast<double>(model_.dead_band(a));
+    if (s.goal_counts && std::abs(*s.goal_counts - corr[i]) > b) {
       want_raw[i] = model_.raw(a, *s.goal_counts);
       outside = true;
     }
@@ -416,7 +513,7 @@ void Controller::tick_degrees(DegreeRotator& dr, orbit::UtcTime now) {
 }
 
 std::chrono::milliseconds Controller::next_tick_in() const {
-  bool busy = status_.az.motion != Drive::stop || status_.el.motion != Drive::stop ||
+  bool busy = status_.az.moving != Drive::stop || status_.el.moving != Drive::stop ||
               (status_.mode == ControlMode::target && !status_.on_target) || status_.mode == ControlMode::manual;
   return busy ? std::chrono::milliseconds(100) : std::chrono::milliseconds(1000);
 }

@@ -33,7 +33,11 @@ struct AxisStatus {
   int counts = 0;        // raw ADC counts (degree rotators: their position through the span)
   double deg = 0.0;      // skew applied; azimuth as a compass bearing [0, 360), elevation degrees
   double travel = 0.0;   // azimuth: degrees from the rotor stop; elevation: same as deg
-  Drive motion = Drive::stop;
+  Drive motion = Drive::stop;  // the drive in force (degree rotators: the motion they report)
+  // What the axis does: `motion`, or after the drive ends the way it still coasts until the
+  // modelled motor is at rest (below kMotorStopFraction of its rate: the simulated rotator stops
+  // there too). The Satrak STATUS? motion flags and the status line's "moving".
+  Drive moving = Drive::stop;
   bool at_low_limit = false;   // at the CCW / DOWN end of where it may go (limits, span, switches)
   bool at_high_limit = false;  // at the CW / UP end
   bool stalled = false;        // driven without moving for stall_s: stopped, waits for a new command
@@ -85,8 +89,17 @@ class Controller {
   // Point at a compass az/el (degrees), clamped to the limits. Where the azimuth can be reached two
   // ways, the way nearest the antenna. Returns the target as it will be commanded.
   RotatorPosition set_target(AzEl compass);
+  // How a target is approached.
+  //   dead_band: the configured dead band (tracking, park, presets, the menus): an axis within it
+  //              of the target does not move.
+  //   exact:     an explicit move (a Satrak STEP or GOTO): each axis is brought to the target count
+  //              once, however small the move (to the sensor's resolution, not the dead band's);
+  //              once it has been driven there (or had nothing to do) the dead band holds it as
+  //              for any target. Degree rotators are sent the target when it is a count or more
+  //              away.
+  enum class Approach { dead_band, exact };
   // Point at a position in rotator coordinates (what a PassPlan maps targets to), clamped.
-  RotatorPosition set_target(RotatorPosition p);
+  RotatorPosition set_target(RotatorPosition p, Approach how = Approach::dead_band);
   // To the parking position; false (and nothing changes) when parking is disabled.
   bool park();
   // To preset 1..5 (menu 6-6-3); false for another number.
@@ -98,6 +111,12 @@ class Controller {
   void manual(Axis axis, Drive d);
   // 4/6/8/2/5 as in the manual; false for any other key.
   bool manual_key(char key);
+  // Drives an axis steadily at rate_deg_s (signed, capped at the axis's motor rate) until stop(),
+  // a target, a key, or `end` (azimuth travel / elevation degrees; clamped into the axis's range,
+  // whose end is the default) is reached. Rate 0 stops the axis. A rate below the motor's is made
+  // of drive pulses every tick whose share of the time is rate / motor rate (the motor's inertia,
+  // coast_s, smooths them into steady motion); docs/rotator.md "Jogging".
+  void jog(Axis axis, double rate_deg_s, std::optional<double> end = std::nullopt);
 
   // The E key: when off nothing moves (tracking, park, presets and keyboard control alike); the
   // target is kept and resumed when control is switched on again.
@@ -118,7 +137,14 @@ class Controller {
 
  private:
   struct AxisLoop {
-    std::optional<double> manual_goal;  // counts: the range end the axis is being driven to
+    std::optional<double> manual_goal;  // the sign of the range end the axis is being driven to
+    std::optional<double> manual_end;   // counts: where a jog stops short of that end
+    double duty = 1.0;                  // jog: share of the time the drive is on (1: keys)
+    bool jog_started = false;           // jog: the pulse accounting below has begun
+    orbit::UtcTime jog_t0{};
+    double jog_on_s = 0.0;              // jog: drive time delivered since jog_t0
+    bool exact = false;                 // Approach::exact: not yet driven to the target count
+    bool exact_driven = false;          // ... and a drive towards it has been issued
     Drive cmd = Drive::stop;            // the drive in force (ADC rotators)
     orbit::UtcTime cmd_until{};
     double velocity = 0.0;              // modelled, counts/s
@@ -136,6 +162,10 @@ class Controller {
   void tick_adc(AdcRotator& adc, orbit::UtcTime now, double dt);
   void tick_degrees(DegreeRotator& dr, orbit::UtcTime now);
   void update_on_target();  // status_.on_target from the goals, the last readings and the motion
+  int band(Axis a) const;   // the dead band in force: 0 while an exact approach is pending
+  // What an axis does: driven, or still coasting (the modelled motor faster than kMotorStopFraction
+  // of its rate); ADC rotators.
+  Drive motion_of(Axis a) const;
   void update_limits(Axis a, double corrected, const LimitFlags& reported);
 
   AdcModel model_;

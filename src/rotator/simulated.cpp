@@ -22,6 +22,7 @@ SimulatedRotatorParams SimulatedRotatorParams::matching(const RotatorConfig& c) 
   p.az_rate_deg_s = c.az_rate_deg_s;
   p.el_rate_deg_s = c.el_rate_deg_s;
   p.coast_s = c.coast_s;
+  p.stop_fraction = kMotorStopFraction;
   return p;
 }
 
@@ -39,7 +40,17 @@ SimulatedRotator::SimulatedRotator(const station::Clock& clock, SimulatedRotator
 
 void SimulatedRotator::advance_axis(AxisSim& s, orbit::UtcTime to) {
   auto step = [&](double v_cmd, double dt) {
-    MotorState m = motor_advance({s.x, s.v}, v_cmd, p_.coast_s, dt);
+    const double v_stop = p_.stop_fraction * s.rate;
+    MotorState m;
+    if (v_cmd == 0.0 && v_stop > 0.0 && dt > 0.0 && std::abs(s.v) <= v_stop) {
+      m = {s.x, 0.0};  // at rest: friction holds it
+    } else if (v_cmd == 0.0 && v_stop > 0.0 && dt > 0.0 && p_.coast_s > 0.0 &&
+               dt >= p_.coast_s * std::log(std::abs(s.v) / v_stop)) {
+      // Coasts down to the stopping speed within dt, and stops there.
+      m = {s.x + (s.v - std::copysign(v_stop, s.v)) * p_.coast_s, 0.0};
+    } else {
+      m = motor_advance({s.x, s.v}, v_cmd, p_.coast_s, dt);
+    }
     s.x = m.x;
     s.v = m.v;
     if (s.x <= s.lo) {  // against the end stop

@@ -29,6 +29,10 @@ struct SimulatedRotatorParams {
   double az_rate_deg_s = 6.0;
   double el_rate_deg_s = 3.0;
   double coast_s = 0.15;
+  // Friction: a coasting motor slower than this share of its rate stops dead (0: it coasts on,
+  // exponentially, for ever). matching() gives kMotorStopFraction, the controller's own figure,
+  // so that the controller reports an axis still exactly when it is.
+  double stop_fraction = 0.0;
   // Where the antenna is at power-on (azimuth travel from the stop, elevation).
   RotatorPosition start{0.0, 0.0};
 

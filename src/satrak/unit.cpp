@@ -165,7 +165,9 @@ void Unit::take_antenna() {
   if (station_.tracker().mode() != tracker::Mode::off) station_.tracker().stop();
 }
 
-void Unit::command(RotatorPosition p) { commanded_ = station_.rotator().set_target(p); }
+void Unit::command(RotatorPosition p, rotator::Controller::Approach how) {
+  commanded_ = station_.rotator().set_target(p, how);
+}
 
 void Unit::release() {
   owner_ = Owner::none;
@@ -190,6 +192,8 @@ void Unit::check_takeover() {
     if (commanded_)
       lost = st.mode != rotator::ControlMode::target || !st.target ||
              std::abs(st.target->az_travel - commanded_->az_travel) > 0.01 || std::abs(st.target->el - commanded_->el) > 0.01;
+    else if (owner_ == Owner::move)
+      lost = st.mode != rotator::ControlMode::manual;  // MOVE jogs: keyboard-control mode
     else
       lost = st.mode != rotator::ControlMode::idle;
   }

@@ -151,7 +151,11 @@ class Unit {
   // E would: a remote client has no other way to do it.
   void take_control();
   void take_antenna();                      // stops the station's Tracker when it runs
-  void command(rotator::RotatorPosition p);  // set a target and remember it as Satrak's
+  // Set a target and remember it as Satrak's.
+  void command(rotator::RotatorPosition p,
+               rotator::Controller::Approach how = rotator::Controller::Approach::dead_band);
+  // MOVE/STEP/GOTO while tracking (or going to the window's start): refused, logged.
+  bool refused_while_tracking(const Command& c);
   void release();                           // Satrak no longer drives the antenna
   void check_takeover();
   rotator::RotatorPosition current_position() const;  // the target in force, else the reading
@@ -212,9 +216,7 @@ class Unit {
   Owner owner_ = Owner::none;
   std::optional<rotator::RotatorPosition> commanded_;
   struct Move {
-    double az_rate = 0.0, el_rate = 0.0;  // deg/s, capped at the axis speeds
-    rotator::RotatorPosition origin;
-    orbit::UtcTime t0{};
+    double az_rate = 0.0, el_rate = 0.0;  // deg/s, capped at the axis speeds; the controller jogs
   };
   std::optional<Move> move_;
 

@@ -25,29 +25,48 @@ Unit::Reply Unit::cmd_move(const Command& c) {
   const double x = r.number(0, -kMaxRateDegS, kMaxRateDegS);
   const double y = r.number(1, -kMaxRateDegS, kMaxRateDegS);
   if (!r.ok()) return reply_error(c.head(), r.error());
-  take_control();
-  const auto& st = station_.rotator().status();
   if (x == 0.0 && y == 0.0) {
     // Both rates zero: the button released.
     if (owner_ == Owner::move) {
       station_.rotator().stop();
+      station_.antenna_changed();
       release();
     }
     return reply_ok(c.head());
   }
+  if (refused_while_tracking(c)) return reply_error(c.head(), Error::not_allowed);
+  take_control();
+  const auto& st = station_.rotator().status();
   if (!st.has_position) return reply_error(c.head(), Error::not_allowed);
   take_antenna();
-  if (tracking_) stop_tracking(false);
-  const rotator::RotatorConfig& cfg = station_.rotator().config();
+  rotator::Controller& rot = station_.rotator();
+  const rotator::RotatorConfig& cfg = rot.config();
   Move m;
   m.az_rate = std::clamp(x, -cfg.az_rate_deg_s, cfg.az_rate_deg_s);
   m.el_rate = std::clamp(y, -cfg.el_rate_deg_s, cfg.el_rate_deg_s);
-  m.origin = RotatorPosition{st.az.travel, st.el.travel};
-  m.t0 = clock_.now();
+  // Down stops at the minimum elevation; an antenna already at or below it does not go down.
+  const double floor_el = std::max(rot.model().el_range().lo, min_el());
+  if (m.el_rate < 0.0 && st.el.travel <= floor_el) m.el_rate = 0.0;
+  // The controller jogs each axis steadily at its rate (drive pulses for a rate below the motor's)
+  // until STOP=, MOVE=,0,0 or the end of its range; an axis at rate 0 stops.
+  if (m.az_rate != 0.0) rot.jog(rotator::Axis::az, m.az_rate);
+  if (m.el_rate != 0.0) rot.jog(rotator::Axis::el, m.el_rate, m.el_rate < 0.0 ? std::optional(floor_el) : std::nullopt);
+  if (m.az_rate == 0.0) rot.manual(rotator::Axis::az, rotator::Drive::stop);
+  if (m.el_rate == 0.0) rot.manual(rotator::Axis::el, rotator::Drive::stop);
+  station_.antenna_changed();
+  commanded_.reset();
   move_ = m;
-  owner_ = Owner::move;
-  tick();
+  owner_ = m.az_rate != 0.0 || m.el_rate != 0.0 ? Owner::move : Owner::none;
+  spdlog::info("satrak: MOVE at {} / {} deg/s", m.az_rate, m.el_rate);
   return reply_ok(c.head());
+}
+
+bool Unit::refused_while_tracking(const Command& c) {
+  if (owner_ != Owner::track) return false;
+  spdlog::info("satrak: {} refused: the antenna is {} (STOP= or TRACK=,0 first)", c.word,
+               tracking_ ? "tracking " + (elements_ ? elements_->label() : std::string("?"))
+                         : std::string("going to the track window's start"));
+  return true;
 }
 
 Unit::Reply Unit::cmd_step(const Command& c) {
@@ -56,16 +75,18 @@ Unit::Reply Unit::cmd_step(const Command& c) {
   const double x = r.number(0, -kMaxStepDeg, kMaxStepDeg);
   const double y = r.number(1, -kMaxStepDeg, kMaxStepDeg);
   if (!r.ok()) return reply_error(c.head(), r.error());
+  if (refused_while_tracking(c)) return reply_error(c.head(), Error::not_allowed);
   take_control();
   const auto& st = station_.rotator().status();
   if (!st.has_position && !st.target) return reply_error(c.head(), Error::not_allowed);
   RotatorPosition p = current_position();
   take_antenna();
-  if (tracking_) stop_tracking(false);
   move_.reset();
   p.az_travel += x;
   if (y != 0.0) p.el = std::max(p.el + y, min_el());
-  command(p);
+  // Exact: a step smaller than the dead band still moves (docs/satrak.md, "Motion").
+  command(p, rotator::Controller::Approach::exact);
+  station_.antenna_changed();
   owner_ = Owner::go;
   return reply_ok(c.head());
 }
@@ -77,12 +98,12 @@ Unit::Reply Unit::cmd_goto(const Command& c) {
   const double az = az_none ? 0.0 : r.number(0, 0.0, 360.0);
   const double el = el_none ? 0.0 : r.number(1, -90.0, 180.0);
   if (!r.ok()) return reply_error(c.head(), r.error());
+  if (refused_while_tracking(c)) return reply_error(c.head(), Error::not_allowed);
   take_control();
   const auto& st = station_.rotator().status();
   if ((az_none || el_none) && !st.has_position && !st.target) return reply_error(c.head(), Error::not_allowed);
   const RotatorPosition base = current_position();
   take_antenna();
-  if (tracking_) stop_tracking(false);
   move_.reset();
   RotatorPosition p = base;
   if (!az_none) {
@@ -90,7 +111,8 @@ Unit::Reply Unit::cmd_goto(const Command& c) {
     p.az_travel = station_.rotator().model().target_for(AzEl{axis_az, 0.0}, st.has_position ? st.az.travel : base.az_travel).az_travel;
   }
   if (!el_none) p.el = std::max(el, min_el());
-  command(p);
+  command(p, rotator::Controller::Approach::exact);
+  station_.antenna_changed();
   owner_ = Owner::go;
   return reply_ok(c.head());
 }
@@ -115,7 +137,7 @@ Unit::Reply Unit::cmd_status(const Command& c) {
   return reply_values(c.head(), {b(f.any()), f2(true_az), f2(y), b(st.az.at_high_limit), b(st.az.at_low_limit),
                                  b(st.el.at_high_limit), b(st.el.at_low_limit), b(tracking_),
                                  std::to_string(static_cast<int>(track_status())), "0", "0",
-                                 std::to_string(rotator::sign(st.az.motion)), std::to_string(rotator::sign(st.el.motion)),
+                                 std::to_string(rotator::sign(st.az.moving)), std::to_string(rotator::sign(st.el.moving)),
                                  f2(x), f2(y), b(s_.auto_track)});
 }
 

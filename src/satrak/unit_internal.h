@@ -17,7 +17,6 @@ namespace tb::satrak::detail {
 
 inline constexpr double kMaxRateDegS = 90.0;   // MOVE: faster requests are out of range
 inline constexpr double kMaxStepDeg = 360.0;   // STEP
-inline constexpr double kMoveLeadS = 1.0;      // MOVE: the moving target runs this far ahead of the clock
 inline constexpr double kPassSearchDays = 1.0;
 // The TLE file a unit that has had no SATELLITE= uses: the station's database, written to the TLE
 // directory under this name (Unit::default_source, docs/satrak.md).

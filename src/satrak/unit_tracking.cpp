@@ -213,18 +213,6 @@ void Unit::tick() {
   const orbit::UtcTime now = clock_.now();
   check_takeover();
   update_window(now);
-  if (owner_ == Owner::move && move_) {
-    const double dt = std::max(0.0, seconds_between(move_->t0, now)) + kMoveLeadS;
-    const rotator::AdcModel& m = station_.rotator().model();
-    RotatorPosition p = move_->origin;
-    if (move_->az_rate != 0.0) p.az_travel = m.az_travel_range().clamp(p.az_travel + move_->az_rate * dt);
-    if (move_->el_rate != 0.0) {
-      rotator::Range r = m.el_range();
-      r.lo = std::min(std::max(r.lo, min_el()), r.hi);
-      p.el = r.clamp(p.el + move_->el_rate * dt);
-    }
-    command(p);
-  }
   if (tracking_) track(now);
   check_file(now);
   schedule_download(now);

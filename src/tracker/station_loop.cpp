@@ -151,7 +151,7 @@ std::string StationLoop::status_line() const {
   } else if (rs.has_position) {
     char r[64];
     std::snprintf(r, sizeof r, "%5.1f/%4.1f%s", rs.az.deg, rs.el.deg,
-                  (rs.az.motion != rotator::Drive::stop || rs.el.motion != rotator::Drive::stop) ? " moving" : "");
+                  (rs.az.moving != rotator::Drive::stop || rs.el.moving != rotator::Drive::stop) ? " moving" : "");
     rot = r;
   }
   const radio::RadioStatus radio = radio_->status();

@@ -34,6 +34,9 @@ class StationLoop {
   // goes where it is told (still inside the limits). Returns the commanded compass position.
   rotator::AzEl point(rotator::AzEl compass);
   void stop_antenna();
+  // Someone moved the antenna through rotator() directly (the Satrak unit's targets and jogs):
+  // tick now rather than at the end of the interval being waited out (see on_wake).
+  void antenna_changed() { wake(); }
 
   // After the operator changed station, rotator or radio settings in the model.
   void reconfigure();
