@@ -34,10 +34,10 @@ Unit::Reply Unit::cmd_move(const Command& c) {
     }
     return reply_ok(c.head());
   }
-  if (refused_while_tracking(c)) return reply_error(c.head(), Error::not_allowed);
+  if (refused_while_tracking(c)) return reply_error(c.head(), Error::not_allowed, kTrackingReason);
   take_control();
   const auto& st = station_.rotator().status();
-  if (!st.has_position) return reply_error(c.head(), Error::not_allowed);
+  if (!st.has_position) return reply_error(c.head(), Error::not_allowed, kNoPositionReason);
   take_antenna();
   rotator::Controller& rot = station_.rotator();
   const rotator::RotatorConfig& cfg = rot.config();
@@ -75,10 +75,10 @@ Unit::Reply Unit::cmd_step(const Command& c) {
   const double x = r.number(0, -kMaxStepDeg, kMaxStepDeg);
   const double y = r.number(1, -kMaxStepDeg, kMaxStepDeg);
   if (!r.ok()) return reply_error(c.head(), r.error());
-  if (refused_while_tracking(c)) return reply_error(c.head(), Error::not_allowed);
+  if (refused_while_tracking(c)) return reply_error(c.head(), Error::not_allowed, kTrackingReason);
   take_control();
   const auto& st = station_.rotator().status();
-  if (!st.has_position && !st.target) return reply_error(c.head(), Error::not_allowed);
+  if (!st.has_position && !st.target) return reply_error(c.head(), Error::not_allowed, kNoPositionReason);
   RotatorPosition p = current_position();
   take_antenna();
   move_.reset();
@@ -98,10 +98,11 @@ Unit::Reply Unit::cmd_goto(const Command& c) {
   const double az = az_none ? 0.0 : r.number(0, 0.0, 360.0);
   const double el = el_none ? 0.0 : r.number(1, -90.0, 180.0);
   if (!r.ok()) return reply_error(c.head(), r.error());
-  if (refused_while_tracking(c)) return reply_error(c.head(), Error::not_allowed);
+  if (refused_while_tracking(c)) return reply_error(c.head(), Error::not_allowed, kTrackingReason);
   take_control();
   const auto& st = station_.rotator().status();
-  if ((az_none || el_none) && !st.has_position && !st.target) return reply_error(c.head(), Error::not_allowed);
+  if ((az_none || el_none) && !st.has_position && !st.target)
+    return reply_error(c.head(), Error::not_allowed, kNoPositionReason);
   const RotatorPosition base = current_position();
   take_antenna();
   move_.reset();

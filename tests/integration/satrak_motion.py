@@ -216,10 +216,10 @@ def item_7_owner(a, b, log_path):
     a.exact("SATELLITE=,amateur.txt,ISS,1,1", "SATELLITE=,OK")
     a.exact("TRACK=,1", "TRACK=,OK")
     check(a.status()[4] == 1 and b.status()[4] == 1, "X8 = 1 on both clients")
-    b.exact("GOTO=,10,10", "GOTO=,ERR,8")
-    b.exact("MOVE=,1,0", "MOVE=,ERR,8")
-    b.exact("STEP=,1,0", "STEP=,ERR,8")
-    a.exact("GOTO=,10,10", "GOTO=,ERR,8")  # the rule is the same for the client that tracks
+    b.exact("GOTO=,10,10", "GOTO=,ERR,8,TRACKING: STOP= FIRST")
+    b.exact("MOVE=,1,0", "MOVE=,ERR,8,TRACKING: STOP= FIRST")
+    b.exact("STEP=,1,0", "STEP=,ERR,8,TRACKING: STOP= FIRST")
+    a.exact("GOTO=,10,10", "GOTO=,ERR,8,TRACKING: STOP= FIRST")  # the rule is the same for the client that tracks
     b.exact("MOVE=,0,0", "MOVE=,OK")      # a button release moves nothing: harmless
     check(a.status()[4] == 1 and b.status()[4] == 1, "still tracking after the refusals")
     b.exact("STOP=", "STOP=,OK")
