@@ -5,7 +5,7 @@
 
 #include "fixture.h"
 #include "net.h"
-#include "satrak/download.h"
+#include "net/download.h"
 
 using namespace satrak_test;
 using namespace std::chrono_literals;
@@ -25,8 +25,8 @@ print(s.server_address[1], flush=True)
 s.serve_forever()
 )";
 
-satrak::DownloadRequest get(std::string url) {
-  satrak::DownloadRequest r;
+net::DownloadRequest get(std::string url) {
+  net::DownloadRequest r;
   r.url = std::move(url);
   return r;
 }
@@ -76,20 +76,20 @@ TEST_CASE("download(): HTTP body, HTTP 404, a refused connection, a size bound, 
   Child http({kPython, "-c", kHttpServer, www.path.string()});
   REQUIRE(http.port() != 0);
   const std::string base = "http://127.0.0.1:" + std::to_string(http.port());
-  auto r = satrak::download(get(base + "/iss.tle"));
+  auto r = net::download(get(base + "/iss.tle"));
   CHECK(r.ok);
   CHECK(r.body == iss_file(777));
-  r = satrak::download(get(base + "/missing.tle"));
+  r = net::download(get(base + "/missing.tle"));
   CHECK_FALSE(r.ok);
   CHECK(r.error.find("404") != std::string::npos);
-  r = satrak::download(get("http://127.0.0.1:" + std::to_string(unused_port()) + "/x"));
+  r = net::download(get("http://127.0.0.1:" + std::to_string(unused_port()) + "/x"));
   CHECK_FALSE(r.ok);
-  satrak::DownloadRequest small = get(base + "/iss.tle");
+  net::DownloadRequest small = get(base + "/iss.tle");
   small.max_bytes = 50;
-  r = satrak::download(small);
+  r = net::download(small);
   CHECK_FALSE(r.ok);
   CHECK(r.error.find("larger than 50 bytes") != std::string::npos);
-  r = satrak::download(get("file:///etc/passwd"));
+  r = net::download(get("file:///etc/passwd"));
   CHECK_FALSE(r.ok);  // only http(s), ftp(s) and sftp
 
   // A server that accepts and never answers: the destructor aborts the transfer at once.
@@ -104,8 +104,8 @@ TEST_CASE("download(): HTTP body, HTTP 404, a refused connection, a size bound, 
   std::atomic<bool> called{false};
   const auto t0 = std::chrono::steady_clock::now();
   {
-    satrak::Downloader d;
-    d.submit(get("http://127.0.0.1:" + std::to_string(ntohs(a.sin_port)) + "/slow"), [&](satrak::DownloadResult) { called = true; });
+    net::Downloader d;
+    d.submit(get("http://127.0.0.1:" + std::to_string(ntohs(a.sin_port)) + "/slow"), [&](net::DownloadResult) { called = true; });
     std::this_thread::sleep_for(300ms);
     CHECK(d.busy() == 1);
   }

@@ -1,4 +1,6 @@
 // Element-set downloads over HTTP(S) and FTP(S)/SFTP with libcurl, on a worker thread of their own.
+// The Satrak unit's SATELLITE_HTTP/SATELLITE_FTP and the scheduled element refresh
+// (tracker/elements_refresh.h) use them.
 // libcurl blocks, so no transfer ever runs on the event loop: submit() queues a job and returns at
 // once; the worker runs the jobs one at a time and hands each result to the job's callback **on
 // the worker thread** (the Satrak unit posts it to its io_context). The destructor aborts a
@@ -14,7 +16,7 @@
 #include <string>
 #include <thread>
 
-namespace tb::satrak {
+namespace tb::net {
 
 struct DownloadRequest {
   std::string url;           // http://, https://, ftp://, ftps:// or sftp://
@@ -23,12 +25,23 @@ struct DownloadRequest {
   std::chrono::milliseconds connect_timeout{10000};
   std::chrono::milliseconds total_timeout{60000};
   std::size_t max_bytes = 1 << 20;  // element files are small; anything bigger is refused
+  // HTTP conditional request: the validators of the last good answer ("" = none). A server that
+  // has nothing newer answers 304, which is ok and not_modified.
+  std::string if_none_match;       // the ETag, sent as If-None-Match
+  std::string if_modified_since;   // the Last-Modified date, sent as If-Modified-Since
+  std::string user_agent = "trakbox";
+  bool allow_file = false;         // file:// too (the operator's own sources; never a Satrak client's)
 };
 
 struct DownloadResult {
   bool ok = false;
+  bool not_modified = false; // HTTP 304 to a conditional request (ok, empty body)
+  long status = 0;           // the last HTTP status (after redirects); 0 for other protocols / no answer
   std::string body;          // the file (when ok)
   std::string error;         // one line: what went wrong (when not ok)
+  std::string etag;          // the validators of the answer, for the next conditional request
+  std::string last_modified;
+  std::string final_url;     // where the redirects ended
 };
 
 class Downloader {
@@ -60,4 +73,4 @@ class Downloader {
 // The transfer itself (blocking; what the worker runs). `abort` is polled during the transfer.
 DownloadResult download(const DownloadRequest& request, const std::function<bool()>& abort = {});
 
-}  // namespace tb::satrak
+}  // namespace tb::net

@@ -1,10 +1,13 @@
-#include "satrak/download.h"
+#include "net/download.h"
 
 #include <curl/curl.h>
 
 #include <memory>
+#include <string_view>
 
-namespace tb::satrak {
+#include "util/text.h"
+
+namespace tb::net {
 
 namespace {
 
@@ -15,6 +18,7 @@ void global_init() {
 
 struct Transfer {
   std::string body;
+  std::string etag, last_modified;
   std::size_t max_bytes = 0;
   bool too_big = false;
   const std::function<bool()>* abort = nullptr;
@@ -28,6 +32,24 @@ std::size_t on_data(char* ptr, std::size_t size, std::size_t n, void* user) {
     return 0;  // makes libcurl fail the transfer with CURLE_WRITE_ERROR
   }
   t->body.append(ptr, bytes);
+  return bytes;
+}
+
+// Response headers: the validators of the last response (a redirect's are forgotten at the next
+// status line).
+std::size_t on_header(char* ptr, std::size_t size, std::size_t n, void* user) {
+  auto* t = static_cast<Transfer*>(user);
+  const std::size_t bytes = size * n;
+  const std::string_view line(ptr, bytes);
+  if (line.starts_with("HTTP/")) {
+    t->etag.clear();
+    t->last_modified.clear();
+  } else if (const auto colon = line.find(':'); colon != std::string_view::npos) {
+    const std::string name = text::lower(text::trim(line.substr(0, colon)));
+    const std::string value(text::trim(line.substr(colon + 1), " \t\r\n"));
+    if (name == "etag") t->etag = value;
+    else if (name == "last-modified") t->last_modified = value;
+  }
   return bytes;
 }
 
@@ -52,7 +74,7 @@ DownloadResult download(const DownloadRequest& r, const std::function<bool()>& a
   char errbuf[CURL_ERROR_SIZE] = {0};
   CURL* c = curl.get();
   curl_easy_setopt(c, CURLOPT_URL, r.url.c_str());
-  curl_easy_setopt(c, CURLOPT_PROTOCOLS_STR, "http,https,ftp,ftps,sftp");
+  curl_easy_setopt(c, CURLOPT_PROTOCOLS_STR, r.allow_file ? "http,https,ftp,ftps,sftp,file" : "http,https,ftp,ftps,sftp");
   curl_easy_setopt(c, CURLOPT_REDIR_PROTOCOLS_STR, "http,https");
   curl_easy_setopt(c, CURLOPT_FOLLOWLOCATION, 1L);
   curl_easy_setopt(c, CURLOPT_MAXREDIRS, 5L);
@@ -67,15 +89,28 @@ DownloadResult download(const DownloadRequest& r, const std::function<bool()>& a
   curl_easy_setopt(c, CURLOPT_XFERINFOFUNCTION, on_progress);
   curl_easy_setopt(c, CURLOPT_XFERINFODATA, &t);
   curl_easy_setopt(c, CURLOPT_ERRORBUFFER, errbuf);
-  curl_easy_setopt(c, CURLOPT_USERAGENT, "trakbox-satrak");
+  curl_easy_setopt(c, CURLOPT_USERAGENT, r.user_agent.c_str());
+  curl_easy_setopt(c, CURLOPT_HEADERFUNCTION, on_header);
+  curl_easy_setopt(c, CURLOPT_HEADERDATA, &t);
+  std::unique_ptr<curl_slist, void (*)(curl_slist*)> headers(nullptr, curl_slist_free_all);
+  auto add_header = [&](const std::string& h) { headers.reset(curl_slist_append(headers.release(), h.c_str())); };
+  if (!r.if_none_match.empty()) add_header("If-None-Match: " + r.if_none_match);
+  if (!r.if_modified_since.empty()) add_header("If-Modified-Since: " + r.if_modified_since);
+  if (headers) curl_easy_setopt(c, CURLOPT_HTTPHEADER, headers.get());
   if (!r.user.empty()) {
     curl_easy_setopt(c, CURLOPT_USERNAME, r.user.c_str());
     curl_easy_setopt(c, CURLOPT_PASSWORD, r.password.c_str());
   }
   const CURLcode rc = curl_easy_perform(c);
+  curl_easy_getinfo(c, CURLINFO_RESPONSE_CODE, &out.status);
+  if (char* final_url = nullptr; curl_easy_getinfo(c, CURLINFO_EFFECTIVE_URL, &final_url) == CURLE_OK && final_url)
+    out.final_url = final_url;
   if (rc == CURLE_OK) {
     out.ok = true;
+    out.not_modified = out.status == 304;
     out.body = std::move(t.body);
+    out.etag = std::move(t.etag);
+    out.last_modified = std::move(t.last_modified);
     return out;
   }
   if (t.too_big || rc == CURLE_FILESIZE_EXCEEDED) {
@@ -139,4 +174,4 @@ void Downloader::run() {
   }
 }
 
-}  // namespace tb::satrak
+}  // namespace tb::net
