@@ -5,6 +5,7 @@
 
 #include <boost/asio/executor_work_guard.hpp>
 #include <boost/asio/io_context.hpp>
+#include <boost/asio/post.hpp>
 #include <boost/asio/signal_set.hpp>
 #include <boost/asio/steady_timer.hpp>
 #include <algorithm>
@@ -18,9 +19,11 @@
 #include "satrak/unit.h"
 #include "station/clock.h"
 #include "store/database.h"
+#include "tracker/elements_refresh.h"
 #include "tracker/station_loop.h"
 
 namespace tb::app {
+
 namespace asio = boost::asio;
 
 namespace {
@@ -66,6 +69,10 @@ struct StationApp::Impl {
     timer.async_wait([this](const boost::system::error_code& ec) {
       if (ec) return;
       station->tick();
+      if (refresh) {
+        refresh->poll(tracker::ElementsRefresh::wall_now());
+        station->set_notice(refresh->status_word());
+      }
       if (terminal) terminal->status(station->status_line());
       schedule_tick();
     });
@@ -99,19 +106,25 @@ struct StationApp::Impl {
   station::RealTimeClock clock;
   tracker::Tracker tracker;
   std::unique_ptr<tracker::StationLoop> station;
+  std::unique_ptr<tracker::ElementsRefresh> refresh;
   term::Terminal* terminal = nullptr;
   satrak::Unit* satrak = nullptr;
   nlohmann::json satrak_saved;  // kept as loaded when the Satrak server is off
 };
 
 StationApp::StationApp(store::Model model, store::StateFile file, std::shared_ptr<spdlog::logger> log)
-    : impl_(std::make_unique<Impl>(std::move(model), std::move(file), std::move(log))) {}
+    : impl_(std::make_unique<Impl>(std::move(model), std::move(file), std::move(log))) {
+  impl_->refresh = std::make_unique<tracker::ElementsRefresh>(
+      impl_->model, [this](std::function<void()> f) { asio::post(impl_->io, std::move(f)); },
+      [this] { save(); });
+}
 StationApp::~StationApp() = default;
 
 station::RealTimeClock& StationApp::clock() { return impl_->clock; }
 store::Model& StationApp::model() { return impl_->model; }
 tracker::Tracker& StationApp::tracker() { return impl_->tracker; }
 tracker::StationLoop& StationApp::station() { return *impl_->station; }
+tracker::ElementsRefresh& StationApp::refresh() { return *impl_->refresh; }
 boost::asio::io_context& StationApp::io() { return impl_->io; }
 spdlog::logger& StationApp::log() { return *impl_->log; }
 void StationApp::set_terminal(term::Terminal* t) { impl_->terminal = t; }
@@ -122,6 +135,7 @@ void StationApp::build_station(std::unique_ptr<rotator::RotatorDriver> rot, std:
   Impl& m = *impl_;
   auto controller = std::make_unique<rotator::Controller>(m.model.rotator, m.model.station.rotor_start, std::move(rot));
   m.station = std::make_unique<tracker::StationLoop>(m.model, m.clock, m.tracker, std::move(controller), std::move(rad));
+  m.station->set_refresh(m.refresh.get());
   m.station->on_wake([&m] {
     if (m.started) m.arm_tick(std::chrono::milliseconds(0));
   });
@@ -193,7 +207,7 @@ void StationApp::Impl::start_stored_tracking() {
   if (!station->rotor_control()) log->warn("service: rotor control is off (E key): the antenna will not move");
 }
 
-// SIGHUP: the element sets of the data directory's amateur.tle replace those of the same catalog
+// SIGHUP: the newer element sets of the data directory's amateur.tle replace those of the same catalog
 // numbers in the database (the operator refreshed the file); the rest stays as it is. Then the
 // freq/mode file: the radio entries of the satellites it names; the operator's tracking list
 // (which a 3-3 upload would rebuild in the file's order) stays as it is.
@@ -205,15 +219,9 @@ bool StationApp::Impl::reread_data(const std::string& data_dir) {
               parsed.problems.empty() ? "no element set" : parsed.problems.front().message());
     return false;
   }
-  int updated = 0;
-  for (auto& sat : model.db.satellites)
-    for (const auto& e : parsed.sets)
-      if (e.catalog_number == sat.elements.catalog_number &&
-          !(e.epoch_year == sat.elements.epoch_year && e.epoch_day == sat.elements.epoch_day)) {
-        sat.elements = e;
-        ++updated;
-      }
-  log->info("SIGHUP: {} element set(s) updated from {}", updated, path);
+  // As the scheduled refresh does: newer sets of the same catalog numbers, the database's names kept.
+  const store::RefreshReport report = store::apply_refresh(model.db, parsed.sets);
+  log->info("SIGHUP: {} element set(s) updated from {} ({})", report.updated.size(), path, report.summary());
   const std::string fm_path = data_dir + "/freqmode.txt";
   const auto fm = radio::parse_freqmode(read_text(fm_path));
   for (const auto& problem : fm.problems) log->warn("SIGHUP: {}: {}", fm_path, problem.message());

@@ -92,7 +92,8 @@ json elements_json(const orbit::Elements& e) {
 orbit::Elements elements_from(const json& j, const std::string& w) {
   orbit::Elements e;
   e.name = text(j, w, "name", 64);
-  e.catalog_number = static_cast<int>(integer(j, w, "catalog", 0, 339999));
+  // Up to 9 digits: OMM numbers beyond Alpha-5's 339999 exist since 2026.
+  e.catalog_number = static_cast<int>(integer(j, w, "catalog", 0, 999999999));
   const std::string cls = text(j, w, "classification", 1);
   e.classification = cls.empty() ? 'U' : cls[0];
   e.international_designator = text(j, w, "designator", 16);
@@ -195,6 +196,7 @@ json to_json(const Model& m) {
   j["clock_offset_us"] = m.clock_offset.count();
   j["rotor_control"] = m.rotor_control;
   j["priority_mode"] = m.priority_mode;
+  j["refresh"] = to_json(m.refresh);
   return j;
 }
 
@@ -319,6 +321,8 @@ Model model_from_json(const json& j) {
                                                      100LL * 365 * 86400 * 1000000));
   m.rotor_control = boolean(j, "", "rotor_control");
   m.priority_mode = boolean(j, "", "priority_mode");
+  // Absent in state files written before the scheduled refresh existed.
+  if (j.contains("refresh")) m.refresh = refresh_settings_from_json(j["refresh"], "refresh");
   return m;
 }
 

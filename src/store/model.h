@@ -12,6 +12,7 @@
 #include "rotator/config.h"
 #include "station/station.h"
 #include "store/database.h"
+#include "store/refresh.h"
 
 namespace tb::store {
 
@@ -23,6 +24,7 @@ struct Model {
   std::chrono::microseconds clock_offset{0};  // menu 5: RTC = system time + offset
   bool rotor_control = false;                 // the E key
   bool priority_mode = false;                 // M: priority sub-mode
+  RefreshSettings refresh;                    // menu 3-5: scheduled element refresh
 };
 
 // The factory defaults (menu 6-9 without a station file), with the shipped database when given.
