@@ -36,6 +36,7 @@ void menu_3_1_edit(term::Terminal& t, Services& s);
 void menu_3_2_select(term::Terminal& t, Services& s);
 void menu_3_3_upload(term::Terminal& t, Services& s);
 void menu_3_4_multi_track(term::Terminal& t, Services& s);
+void menu_3_5_refresh(term::Terminal& t, Services& s);
 void menu_4_station_elements(term::Terminal& t, Services& s);
 void menu_5_realtime_clock(term::Terminal& t, Services& s);
 void menu_6_configuration(term::Terminal& t, Services& s);

@@ -34,6 +34,7 @@ namespace tb::station {
 class RealTimeClock;
 }
 namespace tb::tracker {
+class ElementsRefresh;
 class StationLoop;
 class Tracker;
 }
@@ -55,6 +56,7 @@ class StationApp {
   store::Model& model();
   tracker::Tracker& tracker();
   tracker::StationLoop& station();
+  tracker::ElementsRefresh& refresh();  // the scheduled element refresh (polled on every tick)
   boost::asio::io_context& io();
   spdlog::logger& log();
 

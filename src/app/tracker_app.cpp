@@ -25,6 +25,7 @@
 #include "satrak/server.h"
 #include "satrak/unit.h"
 #include "station/clock.h"
+#include "tracker/elements_refresh.h"
 #include "tracker/station_loop.h"
 
 namespace tb::app {
@@ -264,6 +265,24 @@ int run_service(StationApp& app, const TrackerConfig& c, const Startup& s) {
 
 }  // namespace
 
+// The element refresh of the command line: --elements-url replaces the stored sources (keeping the
+// validators of a URL that stays), --elements-refresh-hours the interval.
+void configure_refresh(StationApp& app, const TrackerConfig& c) {
+  store::RefreshSettings& r = app.model().refresh;
+  if (!c.elements_urls.empty()) {
+    std::vector<store::RefreshSource> sources;
+    for (const std::string& url : c.elements_urls) {
+      store::RefreshSource src{url, "", ""};
+      for (const auto& old : r.sources)
+        if (old.url == url) src = old;
+      sources.push_back(src);
+    }
+    r.sources = std::move(sources);
+  }
+  if (c.elements_refresh_hours) r.interval_hours = *c.elements_refresh_hours;
+  app.refresh().set_timeout(std::chrono::seconds(c.elements_timeout_s));
+}
+
 int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   const ConfigOutcome outcome = parse_tracker_config(args, front_end);
   if (outcome.error) return usage_error(*outcome.error);
@@ -279,6 +298,7 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
 
   StationApp app(startup.model, file, log);
   if (auto err = build_station(app, c)) return usage_error(*err);
+  configure_refresh(app, c);
   app.set_satrak_saved(startup.satrak_saved);
   Servers servers;
   if (auto err = start_satrak(app, c, startup, servers)) return usage_error(*err);

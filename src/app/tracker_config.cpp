@@ -5,6 +5,7 @@
 
 #include "app/build_info.h"
 #include "menus/term/line_terminal.h"
+#include "store/refresh.h"
 #include "store/state_file.h"
 #include "util/secret.h"
 
@@ -44,6 +45,11 @@ std::vector<OptionSpec> tracker_option_specs() {
       {"auth-timeout", "S", "seconds a client of a port with a secret has to give it, 1 to 600 (default 10)"},
       {"allow", "CIDR", "only clients in this address range may connect to any TCP endpoint (repeatable; "
                         "e.g. 192.168.1.0/24, 2001:db8::/32, 10.0.0.5); others are refused", true},
+      {"elements-url", "URL", "refresh the menu-3 database from this URL or file (repeatable; e.g. CelesTrak's "
+                              "gp.php?GROUP=amateur&FORMAT=json): sets of the same catalog number are updated. "
+                              "Replaces the sources stored by menu 3-5", true},
+      {"elements-refresh-hours", "H", "hours between element refreshes, 2 to 720 (default 12, or as stored)"},
+      {"elements-timeout", "S", "seconds one element download may take, 1 to 600 (default 60)"},
       {"log-level", "LEVEL", "what trakbox.log in the state directory keeps: error, warn, info (default) or "
                              "debug (every remote command and its reply)"},
   };
@@ -117,6 +123,20 @@ void read_secrets(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
   }
 }
 
+// The scheduled element refresh: its sources and interval, checked as menu 3-5 checks them.
+void read_refresh(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
+  store::RefreshSettings probe;
+  for (const std::string& url : o.values("elements-url")) {
+    if (const auto why = store::add_refresh_source(probe, url)) r.fail("--elements-url", *why);
+    else c.elements_urls.push_back(url);
+  }
+  if (const auto h = r.number("elements-refresh-hours", false, "hours, 2 to 720",
+                              Range{store::kRefreshMinHours, store::kRefreshMaxHours}))
+    c.elements_refresh_hours = *h;
+  if (const auto v = r.integer("elements-timeout", false, "seconds, 1 to 600", Range{1, 600}))
+    c.elements_timeout_s = static_cast<int>(*v);
+}
+
 // Front ends that cannot go together.
 void check_front_end(const ParsedOptions& o, OptionReader& r, FrontEnd front_end) {
   const bool service = o.has("service");
@@ -179,6 +199,7 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
   }
   check_front_end(o, r, front_end);
   read_secrets(o, r, c);
+  read_refresh(o, r, c);
   if (!r.ok()) return ConfigOutcome::refuse(r.error()->text());
 
   c.tty = o.value("tty");

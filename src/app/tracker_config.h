@@ -55,6 +55,11 @@ struct TrackerConfig {
   // none) and how long a client has to give one.
   std::string rotctld_secret, rigctld_secret, host_secret;
   int auth_timeout_s = 10;
+  // The scheduled element refresh: --elements-url (replaces the stored sources when given),
+  // --elements-refresh-hours, --elements-timeout.
+  std::vector<std::string> elements_urls;
+  std::optional<double> elements_refresh_hours;
+  int elements_timeout_s = 60;
   std::vector<std::string> warnings;  // e.g. a secret file others can read: said at start
   spdlog::level::level_enum log_level = spdlog::level::info;
 };

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "rotator/adc_model.h"
+#include "tracker/elements_refresh.h"
 #include "tracker/station_loop.h"
 #include "util/text.h"
 
@@ -168,6 +169,8 @@ std::vector<std::string> Interpreter::help() {
       "FDxxxxxxxx   downlink frequency, 10 Hz units   FD43590000 = 435.900 MHz",
       "Sxxx         send the string to the radio      STX;   (\\xHH sends byte HH)",
       "?A           present antenna position          reply AZ220.0 EL45.0",
+      "RF           refresh the elements now          (menu 3-5's sources)",
+      "?R           the last element refresh          reply REFRESH ...",
       "?            this list",
       "Q            quit to the main menu",
   };
@@ -184,6 +187,8 @@ Reply Interpreter::execute(std::string_view line) {
   }
   if (u == "?") return Reply{help(), true, false};
   if (u == "?A") return antenna();
+  if (u == "RF") return refresh_now();
+  if (u == "?R") return refresh_status();
   if (u.rfind("AZ", 0) == 0) return az_el(s);
   if (u.rfind("MU", 0) == 0 || u.rfind("MD", 0) == 0) return mode(u.substr(0, 2), s.substr(2));
   if (u.rfind("FU", 0) == 0 || u.rfind("FD", 0) == 0) return frequency(u.substr(0, 2), s.substr(2));
@@ -195,6 +200,22 @@ Reply Interpreter::execute(std::string_view line) {
   std::string shown(s.substr(0, 20));
   if (s.size() > 20) shown += "...";
   return error("unknown command '" + shown + "': expected AZxxx ELxxx, MUxxx, MDxxx, FUxxx, FDxxx, Sxxx, ?A, ? or Q");
+}
+
+// RF / ?R: trakbox's own commands (the manual's set has no element refresh), answered with one line.
+Reply Interpreter::refresh_now() {
+  tracker::ElementsRefresh* r = station_.refresh();
+  if (!r) return error("RF: this trakbox has no element refresh (it runs only with the station)");
+  if (const auto why = r->refresh_now(tracker::ElementsRefresh::wall_now())) return error("RF: " + *why);
+  return Reply{{"REFRESH STARTED"}, true, false};
+}
+
+Reply Interpreter::refresh_status() {
+  tracker::ElementsRefresh* r = station_.refresh();
+  if (!r) return error("?R: this trakbox has no element refresh (it runs only with the station)");
+  if (r->running()) return Reply{{"REFRESH RUNNING"}, true, false};
+  if (r->last_result().empty()) return Reply{{"REFRESH NONE YET"}, true, false};
+  return Reply{{std::string(r->last_failed() ? "REFRESH FAILED " : "REFRESH OK ") + r->last_result()}, true, false};
 }
 
 Reply Interpreter::az_el(std::string_view line) {

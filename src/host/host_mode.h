@@ -11,6 +11,8 @@
 //   ?A            where the antenna points                                    "AZ220.0 EL45.0"
 //   ?             the command list                                            lines
 //   Q             quit (back to the main menu)                                no reply, quit
+//   RF            refresh the elements now (trakbox's own; menu 3-5)         "REFRESH STARTED"
+//   ?R            the last element refresh (trakbox's own)                    "REFRESH OK 3 updated ..."
 //
 // A command that cannot be carried out is answered by one line "ERROR <command>: <what was wrong,
 // what is expected>" and changes nothing. Commands are case-insensitive (the string of S is sent as
@@ -77,6 +79,8 @@ class Interpreter {
   Reply frequency(std::string_view cmd, std::string_view arg);
   Reply raw(std::string_view arg);
   Reply antenna();
+  Reply refresh_now();
+  Reply refresh_status();
   Reply radio_outcome(std::string_view cmd);
 
   tracker::StationLoop& station_;

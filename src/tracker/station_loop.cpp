@@ -167,8 +167,10 @@ std::string StationLoop::status_line() const {
   std::snprintf(buf, sizeof buf, " %04d/%02d/%02d %02d:%02d:%02d UTC | %s | Rotor %s %s | Radio %s", c.year, c.month,
                 c.day, c.hour, c.minute, static_cast<int>(c.second), sat.c_str(),
                 model_.rotor_control ? "ON " : "OFF", rot.c_str(), rig.c_str());
-  if (save_failure_) return std::string(buf) + " | STATE NOT SAVED";
-  return buf;
+  std::string line = buf;
+  if (!notice_.empty()) line += " | " + notice_;
+  if (save_failure_) line += " | STATE NOT SAVED";
+  return line;
 }
 
 }  // namespace tb::tracker

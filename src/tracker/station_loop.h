@@ -17,6 +17,8 @@
 
 namespace tb::tracker {
 
+class ElementsRefresh;
+
 class StationLoop {
  public:
   StationLoop(store::Model& model, const station::Clock& clock, Tracker& tracker,
@@ -76,6 +78,11 @@ class StationLoop {
   // The program's last save of the state: failed (with the reason) or succeeded (nothing).
   void set_save_failure(std::optional<std::string> reason) { save_failure_ = std::move(reason); }
   const std::optional<std::string>& save_failure() const { return save_failure_; }
+  // The scheduled element refresh, when the program has one (menu 3-5 and host mode use it).
+  void set_refresh(ElementsRefresh* r) { refresh_ = r; }
+  ElementsRefresh* refresh() const { return refresh_; }
+  // A word for the end of the status line ("ELEMENTS 3 UPDATED"); "" for none.
+  void set_notice(std::string notice) { notice_ = std::move(notice); }
 
  private:
   store::Model& model_;
@@ -87,6 +94,8 @@ class StationLoop {
   std::optional<int> tuned_;  // db index the tuner is set up for
   std::optional<RemoteFollow> remote_;
   std::optional<std::string> save_failure_;
+  std::string notice_;
+  ElementsRefresh* refresh_ = nullptr;
   std::optional<int> remote_db_;  // remote_'s satellite in the database
   std::function<void()> wake_;
   void wake() {

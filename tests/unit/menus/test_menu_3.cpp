@@ -67,6 +67,7 @@ TEST_CASE("Menu 3 shows the UPDATE MENU; Q returns; other answers ask again") {
                  "2. SELECT: Select Satellite for list.\n"
                  "3. UPDATE: Clear database & read new Element\n"
                  "4. MULTI TRACK: Configure multi tracking sat\n"
+                 "5. REFRESH: Element sources and schedule\n"
                  " Select: 9\n Select: Q\n"));
   CHECK(count(out, "UPDATE MENU") == 1);
 }
@@ -500,4 +501,33 @@ TEST_CASE("Menu 3-1 with an empty tracking list offers the whole database") {
   menus::menu_3_update_elements(f.term, *f.services);
   CHECK(has(f.term.output(), "17. AO-123"));
   CHECK(has(f.term.output(), "Satellite (AO-123) updated."));
+}
+
+// ---------------------------------------------------------------------------------------------
+// 3-5 Refresh (trakbox's own)
+
+TEST_CASE("3-5 adds and deletes element sources, sets the interval, and refuses what cannot be used") {
+  testing::MenuFixture f(
+      "A\rceletrak.tle\r"                                                       // not a URL: refused
+      "A\rhttps://celestrak.org/NORAD/elements/gp.php?GROUP=amateur&FORMAT=json\r"
+      "A\r/srv/elements/extra.tle\r"
+      "I\r1\r6\r"                                                               // 1 h refused, then 6
+      "D\r3\rD\r1\r"                                                            // 3 is not listed; delete 1
+      "R\rQ\r");
+  menus::menu_3_5_refresh(f.term, *f.services);
+  const std::string& out = f.term.output();
+  CHECK(has(out, "======= ELEMENT REFRESH =======\n No element source: the database is refreshed only by hand (3-3).\n"
+                 " Every 12.0 hours (at least 2).\n"));
+  CHECK(has(out, "  Not added: 'celetrak.tle' is neither an http(s)://, ftp(s):// or file:/// URL nor an absolute file name"));
+  CHECK(has(out, "  1 is out of range: expected 2 to 720"));
+  CHECK(has(out, "  '3': enter a number from 1 to 2"));
+  CHECK(has(out, " 1. /srv/elements/extra.tle\n Every 6.0 hours (at least 2).\n"));
+  const store::RefreshSettings& r = f.model.refresh;
+  REQUIRE(r.sources.size() == 1);
+  CHECK(r.sources[0].url == "/srv/elements/extra.tle");
+  CHECK(r.interval_hours == 6.0);
+  // What was saved reads back the same.
+  const auto back = store::model_from_json(store::to_json(f.model));
+  CHECK(back.refresh.sources.size() == 1);
+  CHECK(back.refresh.interval_hours == 6.0);
 }

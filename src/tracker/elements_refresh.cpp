@@ -1,0 +1,136 @@
+#include "tracker/elements_refresh.h"
+
+#include <spdlog/spdlog.h>
+
+#include "net/download.h"
+#include "orbit/elements.h"
+#include "store/model.h"
+#include "store/refresh.h"
+
+namespace tb::tracker {
+
+struct ElementsRefresh::Outcome {
+  std::string url;
+  net::DownloadResult result;
+};
+
+namespace {
+
+// An absolute file name is read through libcurl too, as file://.
+std::string transfer_url(const std::string& url) { return url.starts_with("/") ? "file://" + url : url; }
+
+// The first line of a body that is not element data, for the message.
+std::string first_line(const std::string& body) {
+  std::string line = body.substr(0, std::min<std::size_t>(body.find_first_of("\r\n"), 60));
+  for (char& c : line)
+    if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7F) c = '?';
+  return line;
+}
+
+}  // namespace
+
+ElementsRefresh::ElementsRefresh(store::Model& model, Post post, std::function<void()> changed)
+    : model_(model), post_(std::move(post)), changed_(std::move(changed)) {}
+
+ElementsRefresh::~ElementsRefresh() = default;
+
+std::int64_t ElementsRefresh::wall_now() {
+  return std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch()).count();
+}
+
+void ElementsRefresh::poll(std::int64_t now_unix) {
+  if (pending_ == 0 && store::refresh_due(model_.refresh, now_unix)) start(now_unix);
+}
+
+std::optional<std::string> ElementsRefresh::refresh_now(std::int64_t now_unix) {
+  if (model_.refresh.sources.empty()) return std::string("no element source is configured (menu 3-5 or --elements-url)");
+  if (pending_ > 0) return std::string("a refresh is running");
+  start(now_unix);
+  return std::nullopt;
+}
+
+std::string ElementsRefresh::status_word() const {
+  if (last_result_.empty() || pending_ > 0) return "";
+  if (last_failed_) return "ELEMENTS NOT REFRESHED";
+  if (last_updated_ > 0) return "ELEMENTS " + std::to_string(last_updated_) + " UPDATED";
+  return "";
+}
+
+void ElementsRefresh::start(std::int64_t now_unix) {
+  if (!downloader_) downloader_ = std::make_unique<net::Downloader>();
+  model_.refresh.last_attempt_unix = now_unix;
+  outcomes_.clear();
+  pending_ = static_cast<int>(model_.refresh.sources.size());
+  for (const store::RefreshSource& src : model_.refresh.sources) {
+    net::DownloadRequest r;
+    r.url = transfer_url(src.url);
+    r.allow_file = true;
+    r.if_none_match = src.etag;
+    r.if_modified_since = src.last_modified;
+    r.total_timeout = timeout_;
+    r.connect_timeout = std::min(timeout_, std::chrono::milliseconds(10000));
+    r.max_bytes = 8u << 20;  // a whole CelesTrak group as XML is a few MB at most
+    spdlog::info("elements: refreshing from {}", src.url);
+    std::weak_ptr<int> alive = alive_;
+    downloader_->submit(std::move(r), [this, alive, url = src.url](net::DownloadResult res) {
+      post_([this, alive, url, res = std::move(res)]() mutable {
+        if (alive.expired()) return;
+        finished(url, std::move(res));
+      });
+    });
+  }
+  changed_();  // the attempt's time is kept across restarts
+}
+
+void ElementsRefresh::finished(const std::string& url, net::DownloadResult r) {
+  outcomes_.push_back(Outcome{url, std::move(r)});
+  if (--pending_ == 0) complete();
+}
+
+void ElementsRefresh::complete() {
+  std::vector<orbit::Elements> sets;
+  std::vector<std::string> failures;
+  int not_modified = 0;
+  for (Outcome& o : outcomes_) {
+    const net::DownloadResult& r = o.result;
+    store::RefreshSource* src = nullptr;
+    for (auto& s : model_.refresh.sources)
+      if (s.url == o.url) src = &s;
+    if (!r.ok) {
+      failures.push_back(r.error);
+      continue;
+    }
+    if (r.not_modified) {
+      ++not_modified;
+      spdlog::info("elements: {}: not modified since the last refresh", o.url);
+      continue;
+    }
+    const orbit::ParseResult parsed = orbit::parse_elements(r.body, o.url);
+    if (parsed.sets.empty() || !parsed.ok()) {
+      // "No GP data found" and any other body that is not element data: a failed update.
+      std::string why = parsed.sets.empty() ? "no element sets in the answer ('" + first_line(r.body) + "')"
+                                            : parsed.problems.front().message();
+      failures.push_back(o.url + ": " + why);
+      continue;
+    }
+    sets.insert(sets.end(), parsed.sets.begin(), parsed.sets.end());
+    if (src) {
+      src->etag = r.etag;
+      src->last_modified = r.last_modified;
+    }
+  }
+  const store::RefreshReport report = store::apply_refresh(model_.db, sets);
+  for (const auto& c : report.updated)
+    spdlog::info("elements: {} ({}) updated: epoch {} -> {}", c.name, c.catalog_number, orbit::format_iso8601(c.old_epoch),
+                 orbit::format_iso8601(c.new_epoch));
+  for (const auto& f : failures) spdlog::warn("elements: refresh failed: {}; the last good sets are kept", f);
+  last_updated_ = static_cast<int>(report.updated.size());
+  last_failed_ = !failures.empty();
+  last_result_ = report.summary();
+  if (not_modified) last_result_ += ", " + std::to_string(not_modified) + " source(s) not modified";
+  if (!failures.empty()) last_result_ += "; " + std::to_string(failures.size()) + " source(s) failed: " + failures.front();
+  spdlog::info("elements: refresh done: {}", last_result_);
+  changed_();
+}
+
+}  // namespace tb::tracker

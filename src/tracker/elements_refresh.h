@@ -1,0 +1,80 @@
+// The scheduled refresh of the menu-3 database (issue 12, "Keeping the database current"): every
+// RefreshSettings::interval_hours of wall time (never more often than every 2 hours) and on
+// "refresh now" (menu 3-5, host mode RF), each configured source is downloaded on a worker thread
+// (net::Downloader: redirects followed, conditional requests with the last answer's validators)
+// and the sets it holds replace older sets of the same catalog number (store::apply_refresh).
+//
+// Nothing here blocks the event loop: downloads run on the worker, their results are posted back
+// and applied there. A source whose download fails, times out, answers an HTTP error or a body
+// that is not element data (CelesTrak's plain-text "No GP data found") changes nothing: the
+// database keeps its last good sets. What happened goes to the log and to last_result() (the
+// status line, host mode ?R, menu 3-5).
+#pragma once
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tb::net {
+class Downloader;
+struct DownloadResult;
+}  // namespace tb::net
+namespace tb::store {
+struct Model;
+}
+
+namespace tb::tracker {
+
+class ElementsRefresh {
+ public:
+  // post: runs a function on the event-loop thread (download results arrive on the worker).
+  // changed: the database or the refresh settings changed (save; the tracker sees new elements).
+  using Post = std::function<void(std::function<void()>)>;
+  ElementsRefresh(store::Model& model, Post post, std::function<void()> changed);
+  ~ElementsRefresh();
+  ElementsRefresh(const ElementsRefresh&) = delete;
+  ElementsRefresh& operator=(const ElementsRefresh&) = delete;
+
+  // The wall clock (unix seconds), which the schedule counts in: servers count real hours, whatever
+  // the station's clock (--clock, --clock-rate) says.
+  static std::int64_t wall_now();
+
+  // Every tick, with the wall clock (unix seconds): starts the scheduled refresh when it is due.
+  void poll(std::int64_t now_unix);
+  // Starts a refresh now (the interval does not apply to a refresh the operator asks for).
+  // The reason when it cannot: no source configured, or one is running.
+  std::optional<std::string> refresh_now(std::int64_t now_unix);
+  bool running() const { return pending_ > 0; }
+
+  // The outcome of the last refresh, one line ("" before the first); whether it failed (any source).
+  const std::string& last_result() const { return last_result_; }
+  bool last_failed() const { return last_failed_; }
+  // A short form for the status line: "" (nothing to say), "ELEMENTS 3 UPDATED", "ELEMENTS NOT REFRESHED".
+  std::string status_word() const;
+
+  // Bounds of one download (default 60 s; `--elements-timeout`).
+  void set_timeout(std::chrono::milliseconds t) { timeout_ = t; }
+
+ private:
+  struct Outcome;
+  void start(std::int64_t now_unix);
+  void finished(const std::string& url, net::DownloadResult r);
+  void complete();
+
+  store::Model& model_;
+  Post post_;
+  std::function<void()> changed_;
+  std::unique_ptr<net::Downloader> downloader_;
+  std::shared_ptr<int> alive_ = std::make_shared<int>(0);
+  std::chrono::milliseconds timeout_{60000};
+  int pending_ = 0;
+  std::vector<Outcome> outcomes_;
+  std::string last_result_;
+  bool last_failed_ = false;
+  int last_updated_ = 0;
+};
+
+}  // namespace tb::tracker
