@@ -65,7 +65,12 @@ bool is_omm_csv_header(std::string_view line) {
 Detected detect(std::string_view text) {
   if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);  // UTF-8 byte-order mark
   const std::string_view start = text::trim_left(text, text::kWhitespace);
-  if (start.starts_with('[') || start.starts_with('{')) return Detected::omm_json;
+  // '{', or '[' then '{' or ']': an INI section such as gpredict's "[25544]" is not JSON.
+  if (start.starts_with('{')) return Detected::omm_json;
+  if (start.starts_with('[')) {
+    const std::string_view inside = text::trim_left(start.substr(1), text::kWhitespace);
+    if (inside.starts_with('{') || inside.starts_with(']')) return Detected::omm_json;
+  }
   if (start.starts_with('<')) return Detected::omm_xml;
   bool first = true;
   for (const detail::TextLine& l : detail::split_lines(text)) {

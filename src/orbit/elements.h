@@ -92,7 +92,7 @@ ParseResult parse_omm_xml(std::string_view text, std::string_view file_name = "<
 ParseResult parse_omm_csv(std::string_view text, std::string_view file_name = "<text>");
 ParseResult parse_omm_kvn(std::string_view text, std::string_view file_name = "<text>");
 
-// Detects the format from the content and parses it: '[' or '{' JSON, '<' XML, a CCSDS_OMM_VERS
+// Detects the format from the content and parses it: '{' or '[' then '{' JSON, '<' XML, a CCSDS_OMM_VERS
 // line KVN, a header line holding NORAD_CAT_ID and EPOCH CSV, "Satellite:" blocks AMSAT, TLE1= keys
 // gpredict, else NASA lines. An empty text, or one that is not text (NUL bytes, mostly binary), is
 // one problem saying so.
