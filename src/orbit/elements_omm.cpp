@@ -55,7 +55,10 @@ std::optional<Epoch> parse_epoch(std::string_view s) {
   const int minute = static_cast<int>(*parse_unsigned(time.substr(3, 2)));
   const auto second = parse_fixed(second_text);
   if (hour > 23 || minute > 59 || !second || *second >= 60.0) return std::nullopt;
-  return Epoch{year, doy + (hour * 3600.0 + minute * 60.0 + *second) / 86400.0};
+  const Epoch epoch{year, doy + (hour * 3600.0 + minute * 60.0 + *second) / 86400.0};
+  // The last moments of the last year would be written back (to the microsecond) in the next one.
+  if (year == kLastYear && to_civil(from_year_day(year, epoch.day)).year != year) return std::nullopt;
+  return epoch;
 }
 
 bool is_designator_piece(char c) { return is_upper(c); }

@@ -58,7 +58,7 @@ OmmObject json_object(const nlohmann::json& j, std::string_view text, std::size_
   o.line = detail::line_of_offset(text, start);
   const std::string_view span = text.substr(std::min(start, text.size()), end - std::min(start, end));
   if (!j.is_object()) {
-    o.structural = detail::make_problem(file, o.line, 0, "JSON object", j.dump().substr(0, 40),
+    o.structural = detail::make_problem(file, o.line, 0, "JSON object", std::string("a JSON ") + j.type_name(),
                                         "an object of OMM keywords such as {\"OBJECT_NAME\": ...}");
     return o;
   }
@@ -68,7 +68,8 @@ OmmObject json_object(const nlohmann::json& j, std::string_view text, std::size_
     bool bad = false;
     o.fields.push_back({key, json_value_text(value, bad), line});
     if (bad && o.structural.field.empty())
-      o.structural = detail::make_problem(file, line, 0, key, value.dump().substr(0, 40), "a number or a string");
+      o.structural = detail::make_problem(file, line, 0, key, std::string("a JSON ") + value.type_name(),
+                                          "a number or a string");
   }
   return o;
 }
@@ -172,7 +173,7 @@ ParseResult parse_omm_json(std::string_view text, std::string_view file_name) {
                              ElementFormat::omm_json, r);
     }
   } else {
-    r.problems.push_back(detail::make_problem(file_name, 1, 0, "JSON", doc.dump().substr(0, 40),
+    r.problems.push_back(detail::make_problem(file_name, 1, 0, "JSON", std::string("a JSON ") + doc.type_name(),
                                               "an array of OMM objects, or one object"));
   }
   return r;

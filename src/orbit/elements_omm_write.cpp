@@ -4,6 +4,8 @@
 #include <charconv>
 #include <cstdint>
 
+#include <nlohmann/json.hpp>
+
 #include "orbit/elements_fields.h"
 #include "orbit/elements_omm_internal.h"
 
@@ -53,19 +55,9 @@ std::vector<Value> values(const Elements& e, bool with_metadata) {
   return v;
 }
 
+// A JSON string; bytes that are not UTF-8 become U+FFFD, so the output is always valid JSON.
 std::string json_quoted(std::string_view s) {
-  std::string r = "\"";
-  for (const char c : s) {
-    if (c == '"' || c == '\\') {
-      r += '\\';
-      r += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      r += detail::printf_string("\\u%04x", static_cast<unsigned>(static_cast<unsigned char>(c)));
-    } else {
-      r += c;
-    }
-  }
-  return r + "\"";
+  return nlohmann::json(std::string(s)).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 std::string xml_escaped(std::string_view s) {
