@@ -87,11 +87,12 @@ class ObjectReader {
     return p;
   }
 
-  // The first keyword given twice, if any.
+  // The first keyword given twice, if any (an empty key, e.g. an empty CSV header cell, is no
+  // keyword and is ignored).
   std::optional<ParseProblem> duplicate() const {
     for (std::size_t i = 0; i < o_.fields.size(); ++i)
       for (std::size_t j = 0; j < i; ++j)
-        if (text::iequals(o_.fields[i].key, o_.fields[j].key))
+        if (!o_.fields[i].key.empty() && text::iequals(o_.fields[i].key, o_.fields[j].key))
           return problem(&o_.fields[i], o_.fields[i].key, "the keyword once per object (also on line " +
                                                               std::to_string(o_.fields[j].line) + ")");
     return std::nullopt;

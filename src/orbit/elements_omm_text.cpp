@@ -156,6 +156,11 @@ ParseResult parse_omm_json(std::string_view text, std::string_view file_name) {
                                               std::string(text.substr(std::min(at, text.size()), 20)),
                                               "JSON text (" + what + ")"));
     return r;
+  } catch (const nlohmann::json::exception& e) {  // e.g. a number beyond double: out_of_range
+    std::string what = e.what();
+    if (const auto colon = what.rfind("] "); colon != std::string::npos) what = what.substr(colon + 2);
+    r.problems.push_back(detail::make_problem(file_name, 0, 0, "JSON", "", "JSON text (" + what + ")"));
+    return r;
   }
   const std::vector<std::size_t> offsets = json_object_offsets(text);
   auto span_of = [&](std::size_t i) {
