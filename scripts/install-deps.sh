@@ -4,7 +4,7 @@ set -euo pipefail
 pkgs=(
   cmake ninja-build g++ pkg-config python3
   libncurses-dev libboost-dev libspdlog-dev libfmt-dev nlohmann-json3-dev doctest-dev
-  libcurl4-openssl-dev libhamlib-dev libbenchmark-dev
+  libcurl4-openssl-dev libhamlib-dev libbenchmark-dev libpugixml-dev
   # test peers and independent references
   libhamlib-utils python3-sgp4 python3-skyfield gpredict socat tmux python3-pyftpdlib
   # the Debian package and its checks (scripts/package-check.sh), the completion test

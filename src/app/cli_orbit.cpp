@@ -12,6 +12,7 @@
 #include <iterator>
 #include <optional>
 
+#include "app/cli_elements.h"
 #include "app/options.h"
 #include "orbit/elements.h"
 #include "orbit/observe.h"
@@ -107,14 +108,15 @@ enum class OutputFormat { table, csv, json };
 // ---------------------------------------------------------------------------------------------
 // Element files and satellite selection
 
-const char* const kElementsHelp = "an element file (NASA 2/3-line, AMSAT verbose or gpredict .sat/satellites.dat)";
+const char* const kElementsHelp =
+    "an element file (NASA 2/3-line, AMSAT verbose, gpredict .sat/satellites.dat, or OMM JSON/XML/CSV/KVN)";
 
 struct LoadedElements {
   std::vector<Elements> sets;
   std::optional<ArgError> error;
 };
 
-LoadedElements load_elements(const std::string& path) {
+LoadedElements load_elements(const std::string& path, bool verify_checksums) {
   LoadedElements r;
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) {
@@ -131,10 +133,10 @@ LoadedElements load_elements(const std::string& path) {
     r.error = ArgError{"ELEMENTS", "cannot read '" + path + "'"};
     return r;
   }
-  // parse_elements recognises the format: AMSAT "Satellite:" blocks, gpredict keys, NASA lines.
-  orbit::ParseResult parsed = orbit::parse_elements(text, path);
-  for (const orbit::ParseProblem& p : parsed.problems)
-    std::fprintf(stderr, "trakbox: warning: %s\n", p.message().c_str());
+  // parse_elements recognises the format (OMM encodings, AMSAT blocks, gpredict keys, NASA lines).
+  orbit::ParseResult parsed = orbit::parse_elements(text, path, checked_options(verify_checksums));
+  report_problems(parsed.problems, stderr);
+  if (!verify_checksums) report_accepted_checksums(text, path, stderr);
   if (parsed.sets.empty()) {
     r.error = ArgError{"ELEMENTS", "no usable element set in '" + path + "'; expected " + kElementsHelp};
     return r;
@@ -220,6 +222,7 @@ std::vector<Elements> select_sats(const std::vector<Elements>& sets, const std::
 // The options several commands share, described once; each is read by the function below it.
 const OptionSpec kSatOption{"sat", "NAME|NUMBER", "satellite by name (exact, then any case) or catalog number"};
 const OptionSpec kHelpOption{"help", "", "show this help"};
+const OptionSpec kNoChecksumOption = no_checksum_option();
 OptionSpec repeatable(OptionSpec spec) {
   spec.repeatable = true;
   return spec;
@@ -313,7 +316,7 @@ struct CommandRun {
   // the command cannot go on.
   std::optional<int> load_sats(bool allow_all, std::vector<Elements>& sats) {
     if (!in.ok()) return error(*in.error());
-    const LoadedElements loaded = load_elements(path);
+    const LoadedElements loaded = load_elements(path, !parsed.has("no-checksum"));
     if (loaded.error) return error(*loaded.error);
     sats = select_sats(loaded.sets, parsed.values("sat"), allow_all, path, in);
     if (!in.ok()) return error(*in.error());
@@ -321,7 +324,7 @@ struct CommandRun {
   }
 
   const Command& command;
-  ParsedOptions parsed;
+  ParsedOptions parsed;  // --no-checksum is read from here by load_sats
   std::string path;  // ELEMENTS
   OptionReader in{parsed};
   std::optional<int> done;
@@ -331,7 +334,7 @@ struct CommandRun {
 // propagate
 
 const Command kPropagate{
-    "propagate", "ELEMENTS [--sat NAME|NUMBER] --start MIN --stop MIN --step MIN",
+    "propagate", "ELEMENTS [--sat NAME|NUMBER] --start MIN --stop MIN --step MIN [--no-checksum]",
     "Prints SGP4/SDP4 state vectors in the TEME frame, one line per time: minutes from epoch, x y z\n"
     "(km) and xdot ydot zdot (km/s), as Vallado's tcppver.out. The last line is --stop itself when\n"
     "the steps do not land on it. When propagation fails, a line '# sgp4 error N at tsince T min\n"
@@ -340,6 +343,7 @@ const Command kPropagate{
      {"start", "MIN", "first time, minutes from the element-set epoch (may be negative)"},
      {"stop", "MIN", "last time, minutes from epoch (>= --start)"},
      {"step", "MIN", "minutes between lines (> 0)"},
+     kNoChecksumOption,
      kHelpOption}};
 
 }  // namespace
@@ -392,7 +396,7 @@ namespace {
 const Command kSchedule{
     "schedule",
     "ELEMENTS [--sat NAME|NUMBER] --station LAT,LON,HEIGHT_M --start ISO8601 --step SECONDS --count N\n"
-    "                        [--freq HZ] [--dut1 S] [--csv|--json]",
+    "                        [--freq HZ] [--dut1 S] [--csv|--json] [--no-checksum]",
     "The TrakBox menu-2 schedule: where one satellite is, seen from the station, at --count times\n"
     "--step seconds apart. Azimuth/elevation (deg), phase (256ths of an orbit), Doppler shift at\n"
     "--freq (Hz, + approaching), range (km), range rate (km/s, + receding), and the sub-satellite\n"
@@ -407,6 +411,7 @@ const Command kSchedule{
      kDut1Option,
      kCsvOption,
      {"json", "", "a JSON array of row objects"},
+     kNoChecksumOption,
      kHelpOption}};
 
 }  // namespace
@@ -493,7 +498,7 @@ namespace {
 const Command kPasses{
     "passes",
     "ELEMENTS [--sat NAME|NUMBER]... --station LAT,LON,HEIGHT_M --start ISO8601 --hours H\n"
-    "                      [--min-el DEG] [--dut1 S] [--csv|--json]",
+    "                      [--min-el DEG] [--dut1 S] [--csv|--json] [--no-checksum]",
     "Passes over the station between --start and --start + --hours, sorted by AOS: AOS and LOS are\n"
     "the crossings of -2.0 deg elevation (the manual's AOS rule), TCA the time of maximum elevation.\n"
     "Without --sat, every satellite of the file. CSV and JSON columns: sat, aos_utc, tca_utc, los_utc,\n"
@@ -507,6 +512,7 @@ const Command kPasses{
      kDut1Option,
      kCsvOption,
      {"json", "", "a JSON array of pass objects"},
+     kNoChecksumOption,
      kHelpOption}};
 
 struct SatPass {
@@ -589,7 +595,8 @@ int run_passes(std::vector<std::string> args) {
 std::string orbit_commands_summary() {
   return "  propagate   SGP4 state vectors (TEME) from minutes after epoch, as Vallado's tcppver.out\n"
          "  schedule    the menu-2 table: look angles, phase, Doppler, range and sub-point at fixed steps\n"
-         "  passes      AOS, TCA and LOS of passes over the station\n";
+         "  passes      AOS, TCA and LOS of passes over the station\n"
+         "  elements    list the element sets of files (age, format, orbit), or convert them (--to)\n";
 }
 
 }  // namespace tb::app

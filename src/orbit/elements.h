@@ -1,8 +1,10 @@
-// Element sets: the mean orbital elements of one satellite at one epoch, and the two file formats
-// they travel in (NASA two/three-line, AMSAT verbose). Parsing never throws for bad input: it
-// returns the good sets and a list of problems, each naming file, line, column/field, what was
-// found and what was expected. The caller decides what to do with them.
+// Element sets: the mean orbital elements of one satellite at one epoch, and the file formats they
+// travel in (NASA two/three-line, AMSAT verbose, gpredict, CCSDS OMM in JSON, XML, CSV and KVN).
+// Parsing never throws for bad input: it returns the good sets and a list of problems, each naming
+// file, line, column/field (an OMM object and keyword), what was found and what was expected. The
+// caller decides what to do with them.
 #pragma once
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -11,11 +13,19 @@
 
 namespace tb::orbit {
 
-enum class ElementFormat { nasa, amsat };
+// Where a set came from. The OMM encodings (CCSDS 502.0 Orbit Mean-Elements Message) carry the same
+// SGP4 mean elements as a TLE, with catalog numbers of up to 9 digits.
+enum class ElementFormat { nasa, amsat, omm_json, omm_xml, omm_csv, omm_kvn };
+// "NASA TLE", "AMSAT", "OMM JSON", "OMM XML", "OMM CSV", "OMM KVN".
+const char* describe(ElementFormat format);
+
+// The largest catalog number any format here holds (OMM: 9 digits); a TLE holds up to 339999 (Z9999).
+inline constexpr int kMaxCatalogNumber = 999'999'999;
+inline constexpr int kMaxTleCatalogNumber = 339'999;
 
 struct Elements {
   std::string name;                   // name line (3LE) or AMSAT "Satellite:"; may be empty
-  int catalog_number = 0;             // NORAD number, Alpha-5 decoded (A0000 = 100000)
+  int catalog_number = 0;             // NORAD number, Alpha-5 decoded (A0000 = 100000); OMM up to 999999999
   char classification = 'U';
   std::string international_designator;  // columns 10-17, trimmed ("98067A")
   int epoch_year = 2000;              // four digits
@@ -43,7 +53,8 @@ struct ParseProblem {
   std::string file;       // as given by the caller ("<upload>" for an upload)
   int line = 0;           // 1-based line number in the text
   int column = 0;         // 1-based column, 0 when the problem is a whole line or block
-  std::string field;      // "checksum", "eccentricity", "Mean motion", ...
+  std::string object;     // OMM: which object of the file, "object 2 (ISS (ZARYA) 25544)"; else empty
+  std::string field;      // "checksum", "eccentricity", "Mean motion", an OMM keyword ...
   std::string found;      // what the text had
   std::string expected;   // what would have been accepted
   bool warning = false;   // true: the set was still accepted (e.g. AMSAT checksum when not strict)
@@ -70,7 +81,21 @@ ParseResult parse_nasa(std::string_view text, std::string_view file_name = "<tex
 // AMSAT verbose blocks, with any free text around them (bulletin headers, "/EX").
 ParseResult parse_amsat(std::string_view text, std::string_view file_name = "<text>",
                         const ParseOptions& options = {});
-// Looks for "Satellite:" blocks, else NASA lines.
+// CCSDS OMM (elements_omm*.cpp). JSON: CelesTrak's (an array of flat objects, or one object, numbers
+// as numbers) or Space-Track's (every value a quoted string). XML: an `ndm` root of `omm` elements or
+// one `omm` root. CSV: a header line of keywords, one row per object. KVN: `KEY = value` lines, each
+// object starting at CCSDS_OMM_VERS. Only SGP4 mean elements (TEME, EARTH, UTC, SGP4, ephemeris
+// type 0) are accepted; every other object is a problem naming it and the keyword, and the other
+// objects still load.
+ParseResult parse_omm_json(std::string_view text, std::string_view file_name = "<text>");
+ParseResult parse_omm_xml(std::string_view text, std::string_view file_name = "<text>");
+ParseResult parse_omm_csv(std::string_view text, std::string_view file_name = "<text>");
+ParseResult parse_omm_kvn(std::string_view text, std::string_view file_name = "<text>");
+
+// Detects the format from the content and parses it: '{' or '[' then '{' JSON, '<' XML, a CCSDS_OMM_VERS
+// line KVN, a header line holding NORAD_CAT_ID and EPOCH CSV, "Satellite:" blocks AMSAT, TLE1= keys
+// gpredict, else NASA lines. An empty text, or one that is not text (NUL bytes, mostly binary), is
+// one problem saying so.
 ParseResult parse_elements(std::string_view text, std::string_view file_name = "<text>",
                            const ParseOptions& options = {});
 // Reads a file and parses it; an unreadable file is one problem with line 0.
@@ -78,8 +103,19 @@ ParseResult load_elements_file(const std::string& path, const ParseOptions& opti
 
 // Writers. format_nasa emits the name line first when with_name and the name is non-empty,
 // lines end in "\n", checksums are computed. Parsing the output gives back the same values.
+// A set whose catalog number no TLE holds (above 339999, Alpha-5's Z9999) is not written: the
+// result is empty, and nasa_unwritable() says why.
 std::string format_nasa(const Elements& e, bool with_name = true);
+// Why e cannot be written as a TLE ("catalog number 800123456 is beyond ..."), or nothing.
+std::optional<std::string> nasa_unwritable(const Elements& e);
 std::string format_amsat(const Elements& e);
+
+// OMM writers (elements_omm_write.cpp): JSON as CelesTrak publishes it (an array, numbers as
+// numbers), XML (an NDM of OMMs), CSV (CelesTrak's header and columns), KVN (one object after
+// another). Every number is written so that it reads back to the same double; the epoch to the
+// microsecond. Reading the output gives back the same sets.
+enum class OmmEncoding { json, xml, csv, kvn };
+std::string format_omm(const std::vector<Elements>& sets, OmmEncoding encoding);
 
 // Checksums as the formats define them.
 int nasa_checksum(std::string_view line);          // digits of columns 1-68, '-' counts 1, mod 10
@@ -92,6 +128,7 @@ ParseResult parse_gpredict_satdata(std::string_view text, std::string_view file_
 
 // Alpha-5 catalog numbers: "25544" -> 25544, "A0000" -> 100000. -1 when invalid.
 int decode_catalog_number(std::string_view five_chars);
-std::string encode_catalog_number(int number);  // 5 characters; Alpha-5 above 99999
+// 5 characters, Alpha-5 above 99999; empty for a number no TLE holds (negative, above 339999).
+std::string encode_catalog_number(int number);
 
 }  // namespace tb::orbit

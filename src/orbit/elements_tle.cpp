@@ -389,9 +389,18 @@ std::string name_line(const std::string& name) {
 
 }  // namespace
 
+std::optional<std::string> nasa_unwritable(const Elements& e) {
+  if (e.catalog_number < 0 || e.catalog_number > kMaxTleCatalogNumber)
+    return "catalog number " + std::to_string(e.catalog_number) +
+           " does not fit a TLE (at most 339999, Alpha-5 Z9999); write it as OMM";
+  if (e.epoch_year < 1957 || e.epoch_year > 2056)
+    return "epoch year " + std::to_string(e.epoch_year) + " does not fit a TLE's two digits (1957-2056)";
+  return std::nullopt;
+}
+
 std::string format_nasa(const Elements& e, bool with_name) {
-  std::string catalog = encode_catalog_number(e.catalog_number);
-  if (catalog.empty()) catalog = "*****";  // not representable: the output will not parse
+  if (nasa_unwritable(e)) return {};  // never a truncated number or a wrong century
+  const std::string catalog = encode_catalog_number(e.catalog_number);
 
   std::string l1 = "1 " + catalog;
   l1 += is_upper(e.classification) ? e.classification : 'U';

@@ -54,8 +54,10 @@ constexpr std::pair<radio::Mode, const char*> kMode[] = {{radio::Mode::none, "no
                                                          {radio::Mode::cw, "cw"}};
 constexpr std::pair<radio::DopplerControl, const char*> kDoppler[] = {{radio::DopplerControl::cat, "cat"},
                                                                       {radio::DopplerControl::mic_click, "mic"}};
-constexpr std::pair<orbit::ElementFormat, const char*> kFormat[] = {{orbit::ElementFormat::nasa, "nasa"},
-                                                                    {orbit::ElementFormat::amsat, "amsat"}};
+constexpr std::pair<orbit::ElementFormat, const char*> kFormat[] = {
+    {orbit::ElementFormat::nasa, "nasa"},         {orbit::ElementFormat::amsat, "amsat"},
+    {orbit::ElementFormat::omm_json, "omm_json"}, {orbit::ElementFormat::omm_xml, "omm_xml"},
+    {orbit::ElementFormat::omm_csv, "omm_csv"},   {orbit::ElementFormat::omm_kvn, "omm_kvn"}};
 
 constexpr long long kMaxHz = 1'000'000'000'000LL;  // 1 THz: beyond any radio
 

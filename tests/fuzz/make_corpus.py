@@ -71,6 +71,18 @@ Checksum:           313
         b"TLE1=" + lines(tle, 1, 1) + b"TLE2=" + lines(tle, 1, 2))
 
     # --- freq/mode and station files.
+    # --- omm: first byte = reader (0 JSON, 1 XML, 2 CSV, 3 KVN, 4 parse_elements); the files
+    # python-sgp4 wrote (scripts/make-omm-fixtures.py), and what trakbox must refuse.
+    omm = os.path.join(ROOT, "tests", "data", "omm")
+    for i, (name, suffix) in enumerate([("celestrak", ".json"), ("xml", ".xml"), ("csv", ".csv"), ("kvn", ".kvn")]):
+        put("omm", name, bytes([i]) + read(os.path.join(omm, "sources" + suffix)))
+        put("omm", name + "_detect", b"\x04" + read(os.path.join(omm, "n800123456" + suffix)))
+    put("omm", "spacetrack", b"\x00" + read(os.path.join(omm, "n100123-spacetrack.json")))
+    kvn = read(os.path.join(omm, "sources.kvn"))
+    put("omm", "sgp4_xp", b"\x03" + kvn.replace(b"THEORY = SGP4\n", b"THEORY = SGP4-XP\n", 1))
+    put("omm", "gcrf_bad_epoch", b"\x03" + kvn.replace(b"= TEME", b"= GCRF", 1).replace(b"2026-05-21T05", b"2026-13-21T05"))
+    put("omm", "broken_json", b"\x00[{\"OBJECT_NAME\": \"A\", \"NORAD_CAT_ID\": [1]}, 5, {\"EPOCH\": null}")
+    put("omm", "not_text", b"\x04\x7fELF\x02\x01\x01\x00\x00\x00")
     put("freqmode", "shipped", freqmode)
     put("freqmode", "upload", lines(freqmode, 3).replace(b"\n", b"\r") + b"\x1a")
     put("freqmode", "offsets", b"AO-13S 2400.730/-2256.000 435.620 usb lsb mic ma\nRS-44 435.640 145.965 usb lsb cat no\n")

@@ -287,8 +287,8 @@ TEST_CASE("An orbit command prints one line for a usage error and exits with kEx
         std::pair<int, std::string>{kExitUsage, "trakbox propagate: --start: missing; expected MIN, minutes from epoch "
                                                 "(see trakbox propagate --help)\n"});
   CHECK(run({"--start", "0", "--stop", "1", "--step", "1"}).second ==
-        "trakbox propagate: ELEMENTS: missing; expected an element file (NASA 2/3-line, AMSAT verbose or gpredict "
-        ".sat/satellites.dat) (see trakbox propagate --help)\n");
+        "trakbox propagate: ELEMENTS: missing; expected an element file (NASA 2/3-line, AMSAT verbose, gpredict "
+        ".sat/satellites.dat, or OMM JSON/XML/CSV/KVN) (see trakbox propagate --help)\n");
   CHECK(run({"a.tle", "b.tle"}).second ==
         "trakbox propagate: b.tle: unexpected argument (ELEMENTS is given once) (see trakbox propagate --help)\n");
   CHECK(run({"x.tle", "--start", "5", "--stop=1", "--step", "1"}).second ==
