@@ -64,13 +64,35 @@ std::vector<std::string> database_names(const store::Database& db) {
   return names;
 }
 
+// O: the OMM encodings, told apart by their content; a NASA or AMSAT text is not taken for OMM.
+orbit::ParseResult parse_omm_upload(const std::string& text) {
+  orbit::ParseResult r = orbit::parse_elements(text, "<upload>");
+  const auto not_omm = [](const orbit::Elements& e) {
+    return e.source == orbit::ElementFormat::nasa || e.source == orbit::ElementFormat::amsat;
+  };
+  if (!r.sets.empty() && not_omm(r.sets.front())) {
+    orbit::ParseProblem p;
+    p.file = "<upload>";
+    p.line = 1;
+    p.field = "format";
+    p.found = orbit::describe(r.sets.front().source);
+    p.expected = "OMM (JSON, XML, CSV or KVN); answer N or A for NASA or AMSAT text";
+    return orbit::ParseResult{{}, {p}};
+  }
+  return r;
+}
+
 }  // namespace
 
 void menu_3_3_upload(term::Terminal& t, Services& s) {
   t.line("Stored data in memory will be lost.");
   if (!ask_yes_no(t, "Are you sure ? [Y/N] ? ")) return;
-  const bool nasa = ask_key(t, "File format NASA/AMSAT (N/A) : ", "NA") == 'N';
-  const char* format = nasa ? "NASA" : "AMSAT";
+  // The manual's prompt, and trakbox's third format (said on the line before): OMM, in which
+  // CelesTrak publishes the satellites numbered beyond what a TLE holds.
+  t.line("(or O: OMM - JSON, XML, CSV or KVN, detected)");
+  const char key = ask_key(t, "File format NASA/AMSAT (N/A) : ", "NAO");
+  const bool nasa = key == 'N', omm = key == 'O';
+  const char* format = nasa ? "NASA" : omm ? "OMM" : "AMSAT";
 
   // ---- step 1: the element sets ----
   t.line("Upload Kepeledata file. (EOF:ctrl+Z)");
@@ -79,8 +101,9 @@ void menu_3_3_upload(term::Terminal& t, Services& s) {
 
   orbit::ParseOptions options;
   options.strict_amsat_checksum = true;  // a serial upload: a wrong checksum is a damaged set
-  orbit::ParseResult parsed = nasa ? orbit::parse_nasa(kepele, "<upload>", options)
-                                   : orbit::parse_amsat(kepele, "<upload>", options);
+  orbit::ParseResult parsed = nasa  ? orbit::parse_nasa(kepele, "<upload>", options)
+                              : omm ? parse_omm_upload(kepele)
+                                    : orbit::parse_amsat(kepele, "<upload>", options);
   const std::vector<orbit::ParseProblem> problems = std::move(parsed.problems);
   parsed.problems.clear();  // reported here, with their lines, rather than by build_elements_upload
   store::ElementsUpload up = store::build_elements_upload(s.model.db, parsed);

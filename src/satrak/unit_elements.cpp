@@ -1,5 +1,7 @@
 // The Satrak unit's element sources: the TLE file in the unit's directory (watched for changes),
 // the HTTP and FTP downloads, and the faults ERRSTATUS? reports.
+#include <algorithm>
+
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/post.hpp>
 
@@ -36,15 +38,26 @@ std::optional<Unit::Source> Unit::default_source() {
   const std::string name = !e.name.empty() && valid_text_field(e.name, limits::kNameMax) && e.name == text::trim(e.name)
                                ? e.name
                                : std::to_string(e.catalog_number);
-  const fs::path path = opt_.tle_dir / kDatabaseTleFile;
+  // A TLE file, unless a satellite's number is beyond what a TLE holds (OMM only, since 2026):
+  // then the whole database as OMM JSON, which the unit reads as well.
+  const bool tle = std::none_of(db.satellites.begin(), db.satellites.end(),
+                                [](const store::Satellite& s) { return orbit::nasa_unwritable(s.elements); });
+  const char* file = tle ? kDatabaseTleFile : kDatabaseOmmFile;
+  const fs::path path = opt_.tle_dir / file;
   if (!stat_file(path)) {
     std::string text;
-    for (const auto& s : db.satellites) text += orbit::format_nasa(s.elements);
+    if (tle) {
+      for (const auto& s : db.satellites) text += orbit::format_nasa(s.elements);
+    } else {
+      std::vector<orbit::Elements> sets;
+      for (const auto& s : db.satellites) sets.push_back(s.elements);
+      text = orbit::format_omm(sets, orbit::OmmEncoding::json);
+    }
     std::string err;
     if (!store::write_file_atomically(path, text, err, 0644)) spdlog::warn("satrak: {}", err);
     else spdlog::info("satrak: no satellite chosen yet: the station's database is {}", path.string());
   }
-  return Source{kDatabaseTleFile, name};
+  return Source{file, name};
 }
 
 namespace {

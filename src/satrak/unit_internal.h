@@ -21,6 +21,7 @@ inline constexpr double kPassSearchDays = 1.0;
 // The TLE file a unit that has had no SATELLITE= uses: the station's database, written to the TLE
 // directory under this name (Unit::default_source, docs/satrak.md).
 inline constexpr const char* kDatabaseTleFile = "database.tle";
+inline constexpr const char* kDatabaseOmmFile = "database.json";  // when a number is beyond a TLE's
 // The reasons of ERR,8 for motion (MOVE, STEP, GOTO): the unit tracks (or goes to the track
 // window's start) and keeps the antenna; the rotator has not reported a position yet.
 inline constexpr const char* kTrackingReason = "TRACKING: STOP= FIRST";

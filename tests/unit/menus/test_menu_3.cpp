@@ -531,3 +531,29 @@ TEST_CASE("3-5 adds and deletes element sources, sets the interval, and refuses 
   CHECK(back.refresh.sources.size() == 1);
   CHECK(back.refresh.interval_hours == 6.0);
 }
+
+TEST_CASE("Menu 3-3: O takes OMM in every encoding (numbers beyond a TLE's too), and refuses NASA text for it") {
+  for (const char* file : {"n800123456.json", "n800123456-spacetrack.json", "n800123456.xml", "n800123456.csv",
+                           "n800123456.kvn"}) {
+    CAPTURE(file);
+    testing::MenuFixture f;
+    const std::string omm = testing::read_file(std::string(TRAKBOX_SOURCE_DIR) + "/tests/data/omm/" + file);
+    f.term.feed("Y\rO" + crlf(omm) + "\x1a" + "\x1a");
+    menus::menu_3_3_upload(f.term, *f.services);
+    const std::string& out = f.term.output();
+    CHECK(has(out, "(or O: OMM - JSON, XML, CSV or KVN, detected)\nFile format NASA/AMSAT (N/A) : O"));
+    CHECK(has(out, "3 satellite(s) accepted, 0 record(s) skipped."));
+    REQUIRE(f.model.db.satellites.size() == 3);
+    CHECK(f.model.db.satellites[0].elements.catalog_number == 800123456);
+    CHECK(f.model.db.satellites[0].elements.source != orbit::ElementFormat::nasa);
+    // The state keeps the nine-digit number.
+    CHECK(store::model_from_json(store::to_json(f.model)).db.satellites[0].elements.catalog_number == 800123456);
+  }
+  testing::MenuFixture f;
+  const std::string before = db_json(f.model);
+  f.term.feed("Y\rO" + crlf(nasa_text(f.model.db, {{"AO-07", "AO-07"}})) + "\x1a");
+  menus::menu_3_3_upload(f.term, *f.services);
+  CHECK(has(f.term.output(), "expected OMM (JSON, XML, CSV or KVN); answer N or A for NASA or AMSAT text"));
+  CHECK(has(f.term.output(), "the stored database is unchanged"));
+  CHECK(db_json(f.model) == before);
+}

@@ -205,3 +205,17 @@ TEST_CASE("ANGLE_SETTINGS after the document's first example: the travel a skew 
   CHECK(acu.model.rotator.az_skew == -483);
   CHECK(acu.cmd("ANGLE_SETTINGS?") == "ANGLE_SETTINGS?,36408,210.0,36838,40.0");
 }
+
+TEST_CASE("On a fresh unit, a database holding a number no TLE can is written as OMM JSON and tracked") {
+  Acu acu(kT0);
+  const int first = acu.model.db.selected.front();
+  acu.model.db.satellites[static_cast<std::size_t>(first)].elements.catalog_number = 800123456;
+  CHECK(acu.cmd("TRACK=,1") == "TRACK=,OK");
+  CHECK(fs::exists(acu.dir.path / "tle" / "database.json"));
+  CHECK_FALSE(fs::exists(acu.dir.path / "tle" / "database.tle"));
+  REQUIRE(acu.unit->elements());
+  CHECK(acu.unit->elements()->catalog_number == 800123456);
+  const std::string sat = acu.cmd("SATELLITE?");
+  CAPTURE(sat);
+  CHECK(sat.rfind("SATELLITE?,database.json,AO-07,0,800123456,", 0) == 0);
+}
