@@ -1,8 +1,10 @@
 #include "menus/realtime_display.h"
 
+
 #include <cmath>
 #include <cstdio>
 
+#include "orbit/element_age.h"
 #include "station/clock.h"
 #include "store/model.h"
 #include "tracker/station_loop.h"
@@ -107,6 +109,16 @@ std::string control_line(Services& s) {
   return buf;
 }
 
+// The shown satellite's elements: epoch and age now, and a warning past its orbit's limit
+// (trakbox's line; the manual's display has none).
+std::string elements_age_line(Services& s, int db_index) {
+  const orbit::Elements& e = s.model.db.satellites[static_cast<std::size_t>(db_index)].elements;
+  const orbit::ElementAge age = orbit::element_age(e, s.clock.now());
+  std::string line = "Elements: epoch " + format_date(e.epoch()) + " " + format_time(e.epoch()) + " UTC, age " + age.text();
+  if (age.stale()) line += "  WARNING: " + age.warning();
+  return line;
+}
+
 }  // namespace
 
 RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, bool exit_on_change) {
@@ -133,6 +145,7 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
     if (f && (!shown || *shown != f->db_index)) {
       t.end_live();
       t.line(std::string("[Satellite:") + marker + f->name + "]");
+      t.line(elements_age_line(s, f->db_index));
       t.line(kHeader1);
       t.line(kHeader2);
       shown = f->db_index;

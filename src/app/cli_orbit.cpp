@@ -14,6 +14,7 @@
 
 #include "app/cli_elements.h"
 #include "app/options.h"
+#include "orbit/element_age.h"
 #include "orbit/elements.h"
 #include "orbit/observe.h"
 #include "orbit/passes.h"
@@ -82,6 +83,18 @@ std::string trim(std::string_view s) { return std::string(text::trim(s)); }
 std::string choice_label(const Elements& e) {
   const std::string name = trim(e.name);
   return name.empty() ? std::to_string(e.catalog_number) : name + " (" + std::to_string(e.catalog_number) + ")";
+}
+
+// A warning on stderr when the set is past the age its orbit allows at `first` or `last` (the span
+// a command computes over).
+void warn_stale(const char* command, const Elements& e, UtcTime first, UtcTime last) {
+  for (const UtcTime t : {first, last}) {
+    const std::string w = orbit::element_age(e, t).warning();
+    if (w.empty()) continue;
+    std::fprintf(stderr, "trakbox %s: warning: %s: %s at %s\n", command, choice_label(e).c_str(), w.c_str(),
+                 orbit::format_iso8601(t, 0).c_str());
+    return;
+  }
 }
 
 // "2018/01/21 03:37:10" (the manual's date and time), with `decimals` digits of seconds.
@@ -437,6 +450,7 @@ int run_schedule(std::vector<std::string> args) {
   if (sats.size() > 1) return run.error({"--sat", "expected one satellite for a schedule"});
 
   const orbit::Sgp4 sat(sats.front());
+  warn_stale("schedule", sats.front(), *start, *start + step * (*count - 1));
   const int decimals = seconds_decimals(*start, step);
   const double f = freq ? static_cast<double>(*freq) : 0.0;
 
@@ -444,9 +458,10 @@ int run_schedule(std::vector<std::string> args) {
     out("utc,az_deg,el_deg,range_km,range_rate_km_s,alt_km,lat_deg,lon_deg,phase256,doppler_hz\n");
   if (format == OutputFormat::json) out("[");
   if (format == OutputFormat::table) {
-    out(strprintf("%s  station %.4f, %.4f, %.0f m  elements epoch %s%s\n", choice_label(sats.front()).c_str(),
+    out(strprintf("%s  station %.4f, %.4f, %.0f m  elements epoch %s, age %s%s\n", choice_label(sats.front()).c_str(),
                   station->lat_deg, station->lon_deg, station->height_m,
                   orbit::format_iso8601(sats.front().epoch(), 0).c_str(),
+                  orbit::element_age(sats.front(), *start).text().c_str(),
                   freq ? strprintf("  Doppler at %lld Hz", static_cast<long long>(*freq)).c_str() : ""));
     const int time_width = static_cast<int>(manual_time(*start, decimals).size());
     out(strprintf("%-*s  %-11s  %6s  %8s  %10s  %10s  %8s  %8s\n", time_width,
@@ -520,6 +535,57 @@ struct SatPass {
   orbit::Pass pass;
 };
 
+// The header line(s) with the sets' ages at the window's start: one per set for a few, else the range.
+std::string elements_ages(const std::vector<Elements>& sats, UtcTime at) {
+  if (sats.size() <= 4) {
+    std::string out;
+    for (const Elements& e : sats)
+      out += strprintf("elements %s epoch %s, age %s\n", choice_label(e).c_str(),
+                       orbit::format_iso8601(e.epoch(), 0).c_str(), orbit::element_age(e, at).text().c_str());
+    return out;
+  }
+  double lo = 1e300, hi = -1e300;
+  for (const Elements& e : sats) {
+    lo = std::min(lo, orbit::element_age(e, at).days);
+    hi = std::max(hi, orbit::element_age(e, at).days);
+  }
+  return strprintf("elements of %zu satellites, age %.1f to %.1f days at the start\n", sats.size(), lo, hi);
+}
+
+// What `passes` owes its reader about one set over the window: its age at the window's start and
+// end when past the limit of its orbit (a warning), and where SGP4 stops working (an error: the
+// passes after it are not known, and the command exits 1). False when SGP4 fails.
+bool check_window(const Elements& e, const orbit::Sgp4& sat, UtcTime start, UtcTime stop) {
+  const std::string label = choice_label(e);
+  warn_stale("passes", e, start, stop);
+  if (sat.init_error() != orbit::Sgp4Error::none) {
+    std::fprintf(stderr, "trakbox passes: %s: sgp4 error %d: %s; no passes\n", label.c_str(),
+                 static_cast<int>(sat.init_error()), orbit::describe(sat.init_error()));
+    return false;
+  }
+  // The first moment it fails: every 10 minutes through the window (a decay may fail for a while
+  // and then propagate again, so the ends are not enough), then to the second.
+  UtcTime good = start, bad = start;
+  bool failed = !sat.propagate(start).ok();
+  for (UtcTime t = start; !failed && t < stop;) {
+    good = t;
+    t = std::min(stop, t + std::chrono::minutes(10));
+    if (!sat.propagate(t).ok()) {
+      failed = true;
+      bad = t;
+    }
+  }
+  if (!failed) return true;
+  while (bad != start && std::chrono::duration_cast<std::chrono::seconds>(bad - good).count() > 1) {
+    const UtcTime mid = good + (bad - good) / 2;
+    (sat.propagate(mid).ok() ? good : bad) = mid;
+  }
+  const orbit::Sgp4Error err = sat.propagate(bad).error;
+  std::fprintf(stderr, "trakbox passes: %s: sgp4 error %d at %s: %s; no passes from then on\n", label.c_str(),
+               static_cast<int>(err), orbit::format_iso8601(bad, 0).c_str(), orbit::describe(err));
+  return false;
+}
+
 }  // namespace
 
 int run_passes(std::vector<std::string> args) {
@@ -540,8 +606,11 @@ int run_passes(std::vector<std::string> args) {
   options.horizon_deg = orbit::kAosThresholdDeg;
   if (min_el) options.min_max_elevation_deg = *min_el;
   std::vector<SatPass> passes;
+  int status = kExitOk;
   for (const Elements& e : sats) {
     const orbit::Sgp4 sat(e);
+    if (!check_window(e, sat, *start, stop)) status = kExitFailure;
+    if (sat.init_error() != orbit::Sgp4Error::none) continue;
     const std::string label = trim(e.name).empty() ? std::to_string(e.catalog_number) : trim(e.name);
     for (const orbit::Pass& p : orbit::find_passes(sat, *station, *start, stop, options, eo))
       passes.push_back({label, p});
@@ -574,6 +643,7 @@ int run_passes(std::vector<std::string> args) {
       out(strprintf("station %.4f, %.4f, %.0f m  from %s for %g h  AOS/LOS at %.1f deg\n", station->lat_deg,
                     station->lon_deg, station->height_m, orbit::format_iso8601(*start, 0).c_str(), *hours,
                     orbit::kAosThresholdDeg));
+      out(elements_ages(sats, *start));
       out(strprintf("%-24s  %-20s  %-9s  %-9s  %6s  %6s  %6s  %8s\n", "SAT", "AOS (UTC)", "TCA", "LOS", "MAX EL",
                     "AOS AZ", "LOS AZ", "DURATION"));
       for (const SatPass& s : passes) {
@@ -589,7 +659,7 @@ int run_passes(std::vector<std::string> args) {
       break;
     }
   }
-  return kExitOk;
+  return status;
 }
 
 std::string orbit_commands_summary() {

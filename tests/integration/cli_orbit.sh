@@ -161,6 +161,25 @@ badarg --csv "${S[@]}" --station 1,2,3 --csv=yes
 badarg --hours passes "$TLE" --sat 5 --station 1,2,3 --start 2000-06-28 --hours 0
 badarg --min-el passes "$TLE" --sat 5 --station 1,2,3 --start 2000-06-28 --hours 1 --min-el 91
 badarg frobnicate frobnicate
+# Honest answers (issue 12): the sets' ages in the headers, a warning past the orbit's limit, and
+# passes that stop where SGP4 fails say so and exit 1.
+ISS=${TRAKBOX_SOURCE_DIR:-.}/data/amateur.tle
+"$BIN" passes "$ISS" --sat ISS --station 27.391,128.657,50 --start 2031-05-21T00:00:00Z --hours 3 >"$TMP/old.out" 2>"$TMP/old.err"; rc=$?
+expect "passes 5 years on: exit 0 (got $rc)" '[ $rc -eq 0 ]'
+expect "passes header gives the age: $(sed -n 2p "$TMP/old.out")" 'grep -qx "elements ISS (25544) epoch 2026-05-21T03:57:45Z, age 1825.8 days" "$TMP/old.out"'
+expect "passes 5 years on warns: $(cat "$TMP/old.err")" 'grep -qx "trakbox passes: warning: ISS (25544): elements 1825.8 days old (more than 14 for a low orbit): positions are unreliable at 2031-05-21T00:00:00Z" "$TMP/old.err"'
+"$BIN" passes "$ISS" --sat ISS --station 27.391,128.657,50 --start 2026-05-21T06:00:00Z --hours 3 >"$TMP/fresh.out" 2>"$TMP/fresh.err"
+expect "passes on fresh elements: no warning: $(cat "$TMP/fresh.err")" '[ ! -s "$TMP/fresh.err" ]'
+"$BIN" schedule "$ISS" --sat ISS --station 27.391,128.657,50 --start 2031-05-21T00:00:00Z --step 60 --count 2 >"$TMP/sold.out" 2>"$TMP/sold.err"
+expect "schedule header gives the age: $(head -n 1 "$TMP/sold.out")" 'head -n 1 "$TMP/sold.out" | grep -q "elements epoch 2026-05-21T03:57:45Z, age 1825.8 days"'
+expect "schedule 5 years on warns" 'grep -q "trakbox schedule: warning: ISS (25544): elements 1825.8 days old" "$TMP/sold.err"'
+# 28872 decays 50-55 minutes after its epoch (Vallado: error 6 at 55 min in tcppver.out).
+"$BIN" passes "$TLE" --no-checksum --sat 28872 --station 27.391,128.657,50 --start 2005-11-29T00:30:00Z --hours 3 >"$TMP/pdecay.out" 2>"$TMP/pdecay.err"; rc=$?
+expect "passes of a decaying set: exit 1 (got $rc)" '[ $rc -eq 1 ]'
+expect "passes says where SGP4 stops: $(grep 28872 "$TMP/pdecay.err" | tail -1)" 'grep -q "^trakbox passes: 28872: sgp4 error [0-9]* at 2005-11-29T01:[0-9:]*Z: .*; no passes from then on$" "$TMP/pdecay.err"'
+"$BIN" passes "$TLE" --no-checksum --sat 33334 --station 27.391,128.657,50 --start 2005-11-29T00:00:00Z --hours 3 >/dev/null 2>"$TMP/pinit.err"; rc=$?
+expect "passes of a set SGP4 refuses: exit 1, said: $(tail -1 "$TMP/pinit.err")" '[ $rc -eq 1 ] && grep -q "^trakbox passes: 33334: sgp4 error 3: .*; no passes$" "$TMP/pinit.err"'
+
 expect "trakbox --help exits 0" '"$BIN" --help | grep -q propagate'
 expect "trakbox propagate --help exits 0" '"$BIN" propagate --help | grep -q -- --step'
 

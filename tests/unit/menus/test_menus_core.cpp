@@ -55,11 +55,21 @@ TEST_CASE("Menu 1 tracks the marked satellite live; E switches rotor control; Q 
   CHECK(out.find("*** Tracking object satellite ***") != std::string::npos);
   CHECK(out.find(" 1.*AO-07") != std::string::npos);
   CHECK(out.find("[Satellite:*AO-07]") != std::string::npos);
+  // The elements' age at the clock (2026-05-21 12:00; AO-07's epoch 26141.31992461 = 07:40:41).
+  CHECK(out.find("[Satellite:*AO-07]\nElements: epoch 2026/05/21 07:40:41 UTC, age 0.2 days\n") != std::string::npos);
   CHECK(out.find("HH:MM:SS     deg     deg       Km       Km    deg    deg  <256>       Hz") != std::string::npos);
   CHECK(f.model.rotor_control);  // E turned it on
   CHECK(f.tracker.mode() == tracker::Mode::single);
   REQUIRE(f.tracker.followed() != nullptr);
   CHECK(f.tracker.followed()->name == "AO-07");
+}
+
+TEST_CASE("The realtime display warns when the elements are past their orbit's limit") {
+  testing::MenuFixture f("\rQ", orbit::from_civil(2031, 5, 21, 12, 0, 0));
+  f.term.timeouts_before_key = 1;
+  menus::menu_1_realtime_tracking(f.term, *f.services);
+  CHECK(f.term.output().find("Elements: epoch 2026/05/21 07:40:41 UTC, age 1826.2 days  WARNING: elements 1826.2 days "
+                             "old (more than 14 for a low orbit): positions are unreliable\n") != std::string::npos);
 }
 
 TEST_CASE("The realtime row matches the manual's columns") {
