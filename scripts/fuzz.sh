@@ -22,14 +22,17 @@ build=${FUZZ_BUILD:-build-fuzz}
 # Longest input per target: enough for the seeds and a session, small enough to mutate quickly.
 declare -A max_len=(
   [elements]=4096 [freqmode]=2048 [station_file]=1024 [state]=32768 [satrak_frame]=2048
-  [satrak_unit]=2048 [host]=2048 [rotctl]=1024 [rigctl]=1024 [cat]=1024 [menus]=2048 [cli]=512
+  [satrak_unit]=2048 [host]=2048 [rotctl]=1024 [rigctl]=1024 [cat]=1024 [menus]=2048 [cli]=512 [omm]=8192
 )
 if [ $# -gt 0 ]; then targets=("$@"); else targets=("${!max_len[@]}"); fi
 IFS=$'\n' targets=($(sort <<<"${targets[*]}")); unset IFS
 
-CC=clang CXX=clang++ cmake -S . -B "$build" -G Ninja -DTRAKBOX_FUZZ=ON -DTRAKBOX_BENCH=OFF \
-  -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-nice -n 10 cmake --build "$build" -j"$(nproc)" --target "${targets[@]/#/fuzz_}"
+# FUZZ_SKIP_BUILD=1: the targets are built already (several fuzz.sh running side by side).
+if [ -z "${FUZZ_SKIP_BUILD:-}" ]; then
+  CC=clang CXX=clang++ cmake -S . -B "$build" -G Ninja -DTRAKBOX_FUZZ=ON -DTRAKBOX_BENCH=OFF \
+    -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+  nice -n 10 cmake --build "$build" -j"$(nproc)" --target "${targets[@]/#/fuzz_}"
+fi
 
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
