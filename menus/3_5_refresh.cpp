@@ -4,9 +4,16 @@
 // background (tracker::ElementsRefresh), so nothing here waits for the network.
 #include <cstdio>
 
+#include <atomic>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
 #include "menus/menus.h"
+#include "net/download.h"
 #include "store/model.h"
 #include "store/refresh.h"
+#include "store/satnogs.h"
 #include "tracker/elements_refresh.h"
 #include "tracker/station_loop.h"
 
@@ -27,7 +34,8 @@ void show_refresh(term::Terminal& t, const store::RefreshSettings& r, const trac
       t.line(std::string(" Last refresh: ") + (live->last_failed() ? "FAILED " : "ok ") + live->last_result());
     else t.line(" Last refresh: none since start");
   }
-  t.line("A. Add a source (URL or file)   D. Delete a source   I. Interval   R. Refresh now   Q. Quit");
+  t.line("A. Add a source (URL or file)   D. Delete a source   I. Interval   R. Refresh now");
+  t.line("S. Frequencies from the SatNOGS DB (file or URL)   Q. Quit");
 }
 
 void add_source(term::Terminal& t, Services& s) {
@@ -76,6 +84,69 @@ void refresh_now(term::Terminal& t, Services& s) {
   else t.line("  Refresh started: the result shows here, in the status line and in the log.");
 }
 
+// The text of a file or a URL. A download runs on a worker while the terminal keeps the station
+// going (its key wait runs the event loop); any key cancels. The reason when there is no text.
+std::optional<std::string> fetch(term::Terminal& t, const std::string& where, std::string& text) {
+  if (where.starts_with("/")) {
+    std::ifstream in(where, std::ios::binary);
+    if (!in) return "cannot read " + where;
+    std::stringstream ss;
+    ss << in.rdbuf();
+    text = ss.str();
+    return std::nullopt;
+  }
+  struct Shared {
+    std::atomic<bool> done{false};
+    net::DownloadResult result;
+  };
+  auto shared = std::make_shared<Shared>();
+  net::Downloader worker;
+  net::DownloadRequest r;
+  r.url = where;
+  r.total_timeout = std::chrono::seconds(60);
+  r.max_bytes = 16u << 20;  // the whole transmitter list is a few MB
+  worker.submit(r, [shared](net::DownloadResult res) {
+    shared->result = std::move(res);
+    shared->done = true;
+  });
+  t.line("  Downloading (any key cancels) ...");
+  while (!shared->done) {
+    const int k = t.read_key(std::chrono::milliseconds(200));
+    if (k == term::kEndOfInput) throw InputClosed{};
+    if (k != term::kTimeout) return std::string("cancelled");
+  }
+  if (!shared->result.ok) return shared->result.error;
+  text = std::move(shared->result.body);
+  return std::nullopt;
+}
+
+void satnogs(term::Terminal& t, Services& s) {
+  t.write("SatNOGS transmitters, file or URL (Enter: db.satnogs.org): ");
+  t.flush();
+  std::string where = trim(read_line(t, 400));
+  if (where.empty()) where = "https://db.satnogs.org/api/transmitters/?format=json";
+  const bool replace = ask_yes_no(t, "Replace the records you entered yourself too ? [Y/N] ? ");
+  std::string text;
+  if (const auto why = fetch(t, where, text)) {
+    t.line("  Nothing changed: " + *why);
+    return;
+  }
+  store::Database db = s.model.db;
+  const store::SatnogsImport r = store::import_satnogs(db, text, replace);
+  if (!r.ok()) {
+    t.line("  Nothing changed: " + where + ": " + r.error);
+    return;
+  }
+  for (const auto& line : r.updated) t.line("  " + line);
+  for (const auto& name : r.kept) t.line("  " + name + ": your own record kept");
+  t.line("  " + std::to_string(r.updated.size()) + " updated, " + std::to_string(r.kept.size()) + " kept, " +
+         std::to_string(r.without_transmitter) + " without an active transmitter.");
+  if (r.updated.empty()) return;
+  s.model.db = std::move(db);
+  s.station.reconfigure();
+  save_or_report(t, s);
+}
+
 }  // namespace
 
 void menu_3_5_refresh(term::Terminal& t, Services& s) {
@@ -85,6 +156,7 @@ void menu_3_5_refresh(term::Terminal& t, Services& s) {
       case 'D': delete_source(t, s); break;
       case 'I': set_interval(t, s); break;
       case 'R': refresh_now(t, s); break;
+      case 'S': satnogs(t, s); break;
       case 'Q': return MenuStep::back;
       default: return MenuStep::unknown;
     }

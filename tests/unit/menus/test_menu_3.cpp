@@ -4,6 +4,10 @@
 #include <nlohmann/json.hpp>
 #include "test_paths.h"  // TRAKBOX_SOURCE_DIR, ...
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 
 #include "fixture.h"
@@ -556,4 +560,39 @@ TEST_CASE("Menu 3-3: O takes OMM in every encoding (numbers beyond a TLE's too),
   CHECK(has(f.term.output(), "expected OMM (JSON, XML, CSV or KVN); answer N or A for NASA or AMSAT text"));
   CHECK(has(f.term.output(), "the stored database is unchanged"));
   CHECK(db_json(f.model) == before);
+}
+
+TEST_CASE("3-5 S takes the SatNOGS transmitters from a file into the records the operator left empty") {
+  const std::string list =
+      (std::filesystem::temp_directory_path() / ("trakbox-satnogs-" + std::to_string(::getpid()) + ".json")).string();
+  {
+    std::ofstream out(list);
+    out << R"([{"description":"Mode U/V linear","alive":true,"status":"active","type":"Transponder",
+               "uplink_low":145935000,"uplink_high":145995000,"downlink_low":435610000,"downlink_high":435670000,
+               "mode":"SSB","invert":true,"norad_cat_id":44909},
+              {"description":"FM voice","alive":true,"status":"active","type":"Transceiver",
+               "uplink_low":145990000,"downlink_low":437800000,"mode":"FM","invert":false,"norad_cat_id":25544}])";
+  }
+  testing::MenuFixture f;
+  const int rs44 = *f.model.db.find("RS-44");
+  f.model.db.satellites[static_cast<std::size_t>(rs44)].radio = {};  // the operator has nothing for RS-44
+  const radio::SatelliteRadio iss_before = f.model.db.satellites[static_cast<std::size_t>(*f.model.db.find("ISS"))].radio;
+  f.term.feed("S\r" + list + "\rN\rQ\r");
+  menus::menu_3_5_refresh(f.term, *f.services);
+  const std::string& out = f.term.output();
+  CHECK(has(out, "  RS-44: downlink 435.640 USB, uplink 145.965 LSB (inverting transponder) (Mode U/V linear)\n"));
+  CHECK(has(out, "  ISS: your own record kept\n"));
+  const radio::SatelliteRadio& r = f.model.db.satellites[static_cast<std::size_t>(rs44)].radio;
+  CHECK(r.downlink_hz == 435'640'000);
+  CHECK(r.uplink_mode == radio::Mode::lsb);
+  CHECK(f.model.db.satellites[static_cast<std::size_t>(*f.model.db.find("ISS"))].radio == iss_before);
+  CHECK(f.saves > 0);
+  std::filesystem::remove(list);
+
+  testing::MenuFixture g;
+  const std::string before = db_json(g.model);
+  g.term.feed("S\r/nonexistent/transmitters.json\rY\rQ\r");
+  menus::menu_3_5_refresh(g.term, *g.services);
+  CHECK(has(g.term.output(), "  Nothing changed: cannot read /nonexistent/transmitters.json\n"));
+  CHECK(db_json(g.model) == before);
 }
