@@ -98,16 +98,67 @@ void WorkerRadio::run() {
   Lock lock(mu_);
   while (true) {
     if (queue_.empty() && !busy_) idle_cv_.notify_all();
-    cv_.wait(lock, [&] { return stop_ || !queue_.empty(); });
+    wait_for_work(lock);
     if (stop_) break;
     if (std::chrono::steady_clock::now() < retry_at_) {
       cv_.wait_until(lock, retry_at_, [&] { return stop_; });
       if (stop_) break;
     }
     if (!open_ && !connect(lock)) continue;
+    if (queue_.empty()) {
+      check_link(lock);
+      continue;
+    }
     deliver_next(lock);
   }
   finish(lock);
+}
+
+void WorkerRadio::wait_for_work(Lock& lock) {
+  // A lost link is reopened whether or not anything waits to be sent; an open one is checked
+  // every check_every while idle (wait_until returns at the check time with the queue empty).
+  auto ready = [&] { return stop_ || !queue_.empty() || (!open_ && lost_); };
+  if (open_)
+    cv_.wait_until(lock, next_check_, ready);
+  else
+    cv_.wait(lock, ready);
+}
+
+void WorkerRadio::check_link(Lock& lock) {
+  const auto now = std::chrono::steady_clock::now();
+  if (now < next_check_) return;
+  next_check_ = now + timing_.check_every;
+  lock.unlock();
+  std::optional<LinkError> error;
+  try {
+    link_->check();
+  } catch (const LinkError& e) {
+    error = e;
+  }
+  lock.lock();
+  if (error) {
+    fail(error->what());
+    link_fault_ = true;
+    return lose_link(lock);
+  }
+  // Open and answering with nothing to send (a reopen with nothing to re-send): the link fault
+  // is over. A refused command's fault stays until the next delivery.
+  if (link_fault_) {
+    spdlog::info("radio {}: working again", description_);
+    link_fault_ = false;
+    status_.fault = false;
+    status_.message.clear();
+    backoff_ = timing_.backoff_first;
+  }
+}
+
+void WorkerRadio::lose_link(Lock& lock) {
+  lock.unlock();
+  link_->close();
+  lock.lock();
+  open_ = false;
+  lost_ = true;
+  status_.connected = false;
 }
 
 bool WorkerRadio::connect(Lock& lock) {
@@ -123,9 +174,12 @@ bool WorkerRadio::connect(Lock& lock) {
   busy_ = false;
   if (error) {
     fail(error->what());
+    link_fault_ = true;
     return false;
   }
   open_ = true;
+  lost_ = false;
+  next_check_ = std::chrono::steady_clock::now() + timing_.check_every;
   status_.connected = true;
   ++status_.connects;
   if (status_.connects > 1) spdlog::info("radio {}: reconnected", description_);
@@ -161,6 +215,7 @@ void WorkerRadio::deliver_next(Lock& lock) {
   }
   ++status_.delivered;
   if (status_.fault) spdlog::info("radio {}: working again", description_);
+  link_fault_ = false;
   status_.fault = false;
   status_.message.clear();
   backoff_ = timing_.backoff_first;
@@ -175,11 +230,8 @@ void WorkerRadio::job_failed(Lock& lock, Job job, const LinkError& error) {
     return;
   }
   if (error.action == LinkError::Action::reconnect) {
-    lock.unlock();
-    link_->close();
-    lock.lock();
-    open_ = false;
-    status_.connected = false;
+    link_fault_ = true;
+    lose_link(lock);
   }
   // Retry it, unless a newer value for the same thing arrived meanwhile. A command that failed
   // on a working link goes to the back, so one silent radio (an Icom pair: RX radio switched

@@ -36,11 +36,16 @@ class RadioLink {
   virtual void set_frequency(Link link, Hz hz) = 0;
   virtual void set_mode(Link link, Mode mode) = 0;
   virtual void send_raw(const std::string& bytes) = 0;
+  // Called every WorkerTiming::check_every while the link is open and idle: throws
+  // LinkError(reconnect) when the port or connection is gone (a serial adapter unplugged, the pty's
+  // other end closed), so a loss is seen and reported without waiting for the next command.
+  virtual void check() {}
 };
 
 struct WorkerTiming {
   std::chrono::milliseconds backoff_first{200};    // wait after the first failure
   std::chrono::milliseconds backoff_max{5000};     // doubling up to this
+  std::chrono::milliseconds check_every{500};      // RadioLink::check() while open and idle
 };
 
 class WorkerRadio final : public RadioDriver {
@@ -75,6 +80,9 @@ class WorkerRadio final : public RadioDriver {
   void job_failed(Lock& lock, Job job, const LinkError& error);
   void fail(const std::string& message);  // records a fault and the back-off before the next try
   void finish(Lock& lock);           // stopping: one attempt at what is queued, then close
+  void wait_for_work(Lock& lock);    // until stop, a job, a reconnect due, or a check due
+  void check_link(Lock& lock);       // the idle check; a lost link is closed for reconnecting
+  void lose_link(Lock& lock);        // closes a broken link; the worker reopens it with backoff
 
   std::unique_ptr<RadioLink> link_;
   const std::string description_;
@@ -91,6 +99,9 @@ class WorkerRadio final : public RadioDriver {
   RadioStatus status_;
   // Worker-thread state.
   bool open_ = false;
+  bool lost_ = false;                // the open link broke: reopen even with nothing queued
+  bool link_fault_ = false;          // the fault is the port's (open failed, lost), not a command's
+  std::chrono::steady_clock::time_point next_check_{};
   std::chrono::milliseconds backoff_{};
   std::chrono::steady_clock::time_point retry_at_{};
   std::thread thread_;
