@@ -8,9 +8,9 @@ b. the CAT port: a socat pty pair, trakbox's Kenwood driver on one end and a Ken
    links are removed as udev removes a USB adapter's node) and started again with the same names,
    twice. Frequencies are set through trakbox's rigctld endpoint.
 
-Each outage must be reported (trakbox.log, and the endpoints: Satrak STATUS?/ERRSTATUS?, rigctld
-get_powerstat and set_freq), cost almost no CPU (no busy loop: utime + stime from /proc/PID/stat),
-and end by itself when the peer returns: trakbox reconnects and drives the peer again, without a
+Each outage must be reported (trakbox.log, and the endpoints: Satrak STATUS?/ERRSTATUS?, rotctld
+p, rigctld get_powerstat and set_freq), cost almost no CPU (no busy loop: utime + stime from
+/proc/PID/stat), and end by itself when the peer returns: trakbox reconnects and drives the peer again, without a
 restart. Every wait waits for a condition, with a bound. Skipped (exit 77) without rotctld/socat.
 """
 import os
@@ -26,7 +26,7 @@ import time
 
 sys.path.insert(0, os.path.dirname(__file__))
 from _tbharness import (BIN, CLOCK, Failure, Satrak, check, free_port, reap, run_test, sh,  # noqa: E402
-                        skip)
+                        skip, tcp_exchange)
 
 # CPU trakbox may spend over an outage of OUTAGE_S seconds: its one-second tick and the polls of
 # this script cost a few tens of milliseconds; a loop spinning on a dead link costs the whole time.
@@ -115,7 +115,7 @@ def satrak_fields(port, query):
     return body.split(",")[1:]
 
 
-def rotator_faults(tb, log, satrak_port, rotctld):
+def rotator_faults(tb, log, satrak_port, rotctld, endpoint):
     target = (40.0, 20.0)
     wait_for("trakbox to connect to rotctld", lambda: log.count(r"rotator: connected to rotctld") >= 1, 15)
     c = Satrak(satrak_port)
@@ -146,6 +146,8 @@ def rotator_faults(tb, log, satrak_port, rotctld):
         st = satrak_fields(satrak_port, "STATUS?")
         check(st[0] == "1", f"round {rnd}: STATUS? X1 reports the fault: {st}")
         check(st[11] == "0" and st[12] == "0", f"round {rnd}: STATUS? shows no motion while the link is down: {st}")
+        got = tcp_exchange(endpoint, b"p\n", b"\n")
+        check(got == b"RPRT -6\n", f"round {rnd}: trakbox's rotctld endpoint: p -> I/O error: {got!r}")
         check(tb.poll() is None, f"round {rnd}: trakbox is still running after the loss")
 
         # The outage: trakbox retries with backoff, not in a spin.
@@ -306,7 +308,7 @@ def radio_faults(tb, log, rig, cable):
                  lambda: log.count(label + r": (?!reconnected|working again)") > faults_before, 10)
         wait_for(f"round {rnd}: get_powerstat 0", lambda: rig.powerstat() == "0", 5)
         reply = rig.set_freq(hz + 10_000 * rnd)
-        check(reply.startswith("RPRT -"), f"round {rnd}: F refused while the port is gone: {reply!r}")
+        check(reply == "RPRT -6", f"round {rnd}: F refused (I/O error) while the port is gone: {reply!r}")
         check(tb.poll() is None, f"round {rnd}: trakbox is still running after the loss")
 
         cpu0, t0 = cpu_seconds(tb.pid), time.time()
@@ -336,7 +338,7 @@ def main():
         skip(f"link_faults: skipped: {', '.join(missing)} not installed (Hamlib's utilities and socat)")
     state = tempfile.mkdtemp(prefix="trakbox-links-")
     folder = tempfile.mkdtemp(prefix="trakbox-cable-")
-    satrak_port, rot_port, rig_port = free_port(), free_port(), free_port()
+    satrak_port, rot_port, rig_port, rot_endpoint = free_port(), free_port(), free_port(), free_port()
     rotctld = Rotctld(rot_port)
     cable = CatCable(folder)
     procs = []
@@ -347,12 +349,13 @@ def main():
         cable.plug()
         tb = subprocess.Popen([BIN, "--state", state, "--line", "--clock", CLOCK,
                                "--satrak-port", str(satrak_port), "--rigctld-port", str(rig_port),
+                               "--rotctld-port", str(rot_endpoint),
                                "--rotator", f"rotctld:127.0.0.1:{rot_port}", "--radio", f"kenwood:{cable.radio}"],
                               stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
         procs.append(tb)
         log = Log(state)
         t0 = time.time()
-        rotator_faults(tb, log, satrak_port, rotctld)
+        rotator_faults(tb, log, satrak_port, rotctld, rot_endpoint)
         rig = Rigctl(rig_port)
         radio_faults(tb, log, rig, cable)
         rig.close()
