@@ -9,6 +9,9 @@
 #
 #   nice scripts/soak.sh [MINUTES]          TRAKBOX_BIN (default build/trakbox), SOAK_CSV (where
 #                                           the samples go; default a temporary folder, kept)
+#   SOAK_DRIVERS=hamlib nice scripts/soak.sh   the station's rotator and radio are Hamlib's dummies
+#                                           behind rotctld -m 1 and rigctld -m 1 (driver worker
+#                                           threads and Hamlib in the process), not the simulated ones
 set -uo pipefail
 cd "$(dirname "$0")/.."
 
@@ -27,19 +30,34 @@ done
 
 WORK=$(mktemp -d /tmp/trakbox-soak.XXXXXX)
 CSV=${SOAK_CSV:-$WORK/soak.csv}
-read -r SATRAK ROTCTLD RIGCTLD HOSTP < <(python3 -c '
+read -r SATRAK ROTCTLD RIGCTLD HOSTP PEER_ROT PEER_RIG < <(python3 -c '
 import socket
-ss = [socket.socket() for _ in range(4)]
+ss = [socket.socket() for _ in range(6)]
 for s in ss: s.bind(("127.0.0.1", 0))
 print(*[s.getsockname()[1] for s in ss])')
 
-"$BIN" --service --state "$WORK/state" --clock-rate 10 --satrak-port "$SATRAK" --rotctld-port "$ROTCTLD" \
+DRIVERS=()
+PEERS=()
+case ${SOAK_DRIVERS:-simulated} in
+  simulated) ;;
+  hamlib)
+    rotctld -m 1 -T 127.0.0.1 -t "$PEER_ROT" >/dev/null 2>&1 & PEERS+=($!)
+    rigctld -m 1 -T 127.0.0.1 -t "$PEER_RIG" >/dev/null 2>&1 & PEERS+=($!)
+    for port in "$PEER_ROT" "$PEER_RIG"; do  # listening within 10 s
+      for _ in $(seq 100); do (exec 3<>"/dev/tcp/127.0.0.1/$port") 2>/dev/null && break; sleep 0.1; done
+    done
+    DRIVERS=(--rotator "rotctld:127.0.0.1:$PEER_ROT" --radio "rigctld:127.0.0.1:$PEER_RIG") ;;
+  *) echo "soak: SOAK_DRIVERS is simulated or hamlib, not '$SOAK_DRIVERS'" >&2; exit 2 ;;
+esac
+
+"$BIN" --service "${DRIVERS[@]}" --state "$WORK/state" --clock-rate 10 --satrak-port "$SATRAK" --rotctld-port "$ROTCTLD" \
   --rigctld-port "$RIGCTLD" --host-port "$HOSTP" 2>"$WORK/stderr.log" &
 PID=$!
 CLIENTS=
 cleanup() {
   [[ -n $CLIENTS ]] && kill "$CLIENTS" 2>/dev/null
   kill "$PID" 2>/dev/null && wait "$PID" 2>/dev/null
+  for p in "${PEERS[@]}"; do kill "$p" 2>/dev/null; done
 }
 trap cleanup EXIT
 
@@ -63,7 +81,7 @@ for _ in $(seq 20); do
   (( n < FDS_BEFORE )) && FDS_BEFORE=$n
 done
 echo "soak: trakbox pid $PID, ports satrak $SATRAK rotctld $ROTCTLD rigctld $RIGCTLD host $HOSTP;" \
-     "$MINUTES min; samples in $CSV"
+     "drivers ${SOAK_DRIVERS:-simulated}; $MINUTES min; samples in $CSV"
 python3 scripts/soak_clients.py --seconds $((MINUTES * 60)) --satrak "$SATRAK" --rotctld "$ROTCTLD" \
   --rigctld "$RIGCTLD" --host "$HOSTP" >"$WORK/clients.txt" 2>&1 &
 CLIENTS=$!

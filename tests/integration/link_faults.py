@@ -10,8 +10,9 @@ b. the CAT port: a socat pty pair, trakbox's Kenwood driver on one end and a Ken
 
 Each outage must be reported (trakbox.log, and the endpoints: Satrak STATUS?/ERRSTATUS?, rotctld
 p, rigctld get_powerstat and set_freq), cost almost no CPU (no busy loop: utime + stime from
-/proc/PID/stat), and end by itself when the peer returns: trakbox reconnects and drives the peer again, without a
-restart. Every wait waits for a condition, with a bound. Skipped (exit 77) without rotctld/socat.
+/proc/PID/stat), and end by itself when the peer returns: trakbox reconnects and drives the peer
+again, without a restart. Every wait waits for a condition, with a bound. Skipped (exit 77)
+without rotctld/socat.
 """
 import os
 import re
