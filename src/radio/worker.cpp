@@ -115,9 +115,10 @@ void WorkerRadio::run() {
 }
 
 void WorkerRadio::wait_for_work(Lock& lock) {
-  // A lost link is reopened whether or not anything waits to be sent; an open one is checked
-  // every check_every while idle (wait_until returns at the check time with the queue empty).
-  auto ready = [&] { return stop_ || !queue_.empty() || (!open_ && lost_); };
+  // The link is opened at start (a wrong or missing port is reported at once, not at the first
+  // pass) and reopened after a loss, whether or not anything waits to be sent; an open one is
+  // checked every check_every while idle (wait_until returns at the check time, queue empty).
+  auto ready = [&] { return stop_ || !queue_.empty() || (!open_ && want_open_); };
   if (open_)
     cv_.wait_until(lock, next_check_, ready);
   else
@@ -157,7 +158,7 @@ void WorkerRadio::lose_link(Lock& lock) {
   link_->close();
   lock.lock();
   open_ = false;
-  lost_ = true;
+  want_open_ = true;
   status_.connected = false;
 }
 
@@ -178,7 +179,7 @@ bool WorkerRadio::connect(Lock& lock) {
     return false;
   }
   open_ = true;
-  lost_ = false;
+  want_open_ = false;
   next_check_ = std::chrono::steady_clock::now() + timing_.check_every;
   status_.connected = true;
   ++status_.connects;

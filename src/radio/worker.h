@@ -99,7 +99,7 @@ class WorkerRadio final : public RadioDriver {
   RadioStatus status_;
   // Worker-thread state.
   bool open_ = false;
-  bool lost_ = false;                // the open link broke: reopen even with nothing queued
+  bool want_open_ = true;            // opened at start, reopened after a loss, with or without jobs
   bool link_fault_ = false;          // the fault is the port's (open failed, lost), not a command's
   std::chrono::steady_clock::time_point next_check_{};
   std::chrono::milliseconds backoff_{};

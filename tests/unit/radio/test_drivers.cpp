@@ -248,6 +248,17 @@ TEST_CASE("Worker: an idle link that goes away is noticed, reported and reopened
   CHECK(log_of(s) == std::vector<std::string>{"close", "downlink USB", "downlink 435000000"});
 }
 
+TEST_CASE("Worker: the link is opened at start, and a failed open is reported with nothing sent") {
+  Script s;
+  s.fail_opens = 1;
+  WorkerRadio radio(std::make_unique<ScriptedLink>(s), WorkerTiming{10ms, 40ms, 20ms});
+  CHECK(eventually([&] { return radio.status().failures == 1; }));
+  CHECK(eventually([&] { const auto st = radio.status(); return st.connected && !st.fault; }));
+  CHECK(radio.status().connects == 1);
+  CHECK(radio.status().delivered == 0);
+  CHECK(log_of(s).empty());
+}
+
 TEST_CASE("Worker: a reopened link with nothing to re-send clears its fault at the next check") {
   Script s;
   s.fail_opens = 1;
@@ -372,6 +383,10 @@ TEST_CASE("make_radio builds drivers without blocking; errors are clear") {
   CHECK(y.driver->describe() == "Yaesu FT-736 CAT on /nonexistent/tty");
   auto k = make_radio("kenwood:/nonexistent/tty", cfg);
   CHECK(k.driver->describe() == "Kenwood CAT on /nonexistent/tty");
+  // Opened at start: a wrong port is reported before anything is sent.
+  CHECK(eventually([&] { return k.driver->status().fault; }));
+  CHECK(k.driver->status().message == "cannot open /nonexistent/tty: No such file or directory");
+  CHECK(k.driver->status().pending == 0);
 
   auto bad_model = make_radio("hamlib:999999:/dev/null", cfg);
   CHECK_FALSE(bad_model.driver);
