@@ -86,7 +86,8 @@ void WorkerRadio::execute(const Job& job) {
 
 void WorkerRadio::fail(const std::string& message) {
   ++status_.failures;
-  if (!status_.fault || status_.message != message) spdlog::warn("radio {}: {}", description_, message);
+  if (message != logged_) spdlog::warn("radio {}: {}", description_, message);  // once, until it works
+  logged_ = message;
   status_.fault = true;
   status_.message = message;
   retry_at_ = std::chrono::steady_clock::now() + backoff_;
@@ -142,13 +143,12 @@ void WorkerRadio::check_link(Lock& lock) {
     link_fault_ = true;
     return lose_link(lock);
   }
-  // Open and answering with nothing to send (a reopen with nothing to re-send): the link fault
-  // is over. A refused command's fault stays until the next delivery.
+  // Reopened and still there with nothing to send: the port works again (the fault shown was
+  // cleared at the reopen; a refused command's fault stays until the next delivery).
   if (link_fault_) {
     spdlog::info("radio {}: working again", description_);
     link_fault_ = false;
-    status_.fault = false;
-    status_.message.clear();
+    logged_.clear();
     backoff_ = timing_.backoff_first;
   }
 }
@@ -183,7 +183,12 @@ bool WorkerRadio::connect(Lock& lock) {
   next_check_ = std::chrono::steady_clock::now() + timing_.check_every;
   status_.connected = true;
   ++status_.connects;
-  if (status_.connects > 1) spdlog::info("radio {}: reconnected", description_);
+  spdlog::info("radio {}: {}", description_, status_.connects > 1 ? "reconnected" : "connected");
+  // The port is open: no fault to show (the endpoints take commands again). The backoff and the
+  // log's memory of the failure stay until a command is delivered or a check passes, so a port
+  // that opens but fails every write neither retries fast nor logs every round.
+  status_.fault = false;
+  status_.message.clear();
   // Whatever the radio was told before, tell it again.
   for (Link l : {Link::downlink, Link::uplink}) {
     if (want_mode_[index(l)]) enqueue_locked({Job::Kind::mode, l, 0, *want_mode_[index(l)], {}});
@@ -215,8 +220,9 @@ void WorkerRadio::deliver_next(Lock& lock) {
     return;
   }
   ++status_.delivered;
-  if (status_.fault) spdlog::info("radio {}: working again", description_);
+  if (status_.fault || link_fault_) spdlog::info("radio {}: working again", description_);
   link_fault_ = false;
+  logged_.clear();
   status_.fault = false;
   status_.message.clear();
   backoff_ = timing_.backoff_first;

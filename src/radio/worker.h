@@ -100,7 +100,8 @@ class WorkerRadio final : public RadioDriver {
   // Worker-thread state.
   bool open_ = false;
   bool want_open_ = true;            // opened at start, reopened after a loss, with or without jobs
-  bool link_fault_ = false;          // the fault is the port's (open failed, lost), not a command's
+  bool link_fault_ = false;          // the port failed (open, lost) and has not worked since
+  std::string logged_;               // the failure last logged (not again until something works)
   std::chrono::steady_clock::time_point next_check_{};
   std::chrono::milliseconds backoff_{};
   std::chrono::steady_clock::time_point retry_at_{};

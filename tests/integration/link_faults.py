@@ -4,7 +4,8 @@ a. the remote rotator: Hamlib's `rotctld -m 1` (dummy rotator) as `--rotator rot
    is sent to a position through its Satrak port, then rotctld is killed (SIGKILL) and started again
    on the same port, twice;
 b. the CAT port: a socat pty pair, trakbox's Kenwood driver on one end and a Kenwood peer (this
-   script) on the other, recording the frequencies set; socat is killed (the device disappears, its
+   script) on the other, recording the frequencies set; the pair is missing when trakbox starts
+   and plugged in later; then socat is killed (the device disappears, its
    links are removed as udev removes a USB adapter's node) and started again with the same names,
    twice. Frequencies are set through trakbox's rigctld endpoint.
 
@@ -68,7 +69,7 @@ class Log:
             return ""
 
     def count(self, pattern):
-        return len(re.findall(pattern, self.text()))
+        return len(re.findall(pattern, self.text(), re.M))
 
 
 # ---------------------------------------------------------------------------------------------
@@ -295,6 +296,12 @@ class Rigctl:
 
 def radio_faults(tb, log, rig, cable):
     label = re.escape(f"radio Kenwood CAT on {cable.radio}")
+    # trakbox started before the cable was there: said so at once, and keeps trying.
+    wait_for("the missing CAT port reported at start",
+             lambda: log.count(label + ": cannot open " + re.escape(cable.radio) + ": No such file or directory"), 10)
+    check(rig.powerstat() == "0", "get_powerstat: 0 while the port is missing")
+    cable.plug()
+    wait_for("trakbox to open the port once it exists", lambda: log.count(label + r": connected$"), 15)
     hz = 145_950_000
     check(rig.set_freq(hz) == "RPRT 0", "F accepted while the radio is there")
     wait_for("the peer to receive FA00145950000;", lambda: cable.peer.seen("A", hz), 10)
@@ -347,7 +354,6 @@ def main():
     try:
         rotctld.start()
         procs.append(rotctld.proc)
-        cable.plug()
         tb = subprocess.Popen([BIN, "--state", state, "--line", "--clock", CLOCK,
                                "--satrak-port", str(satrak_port), "--rigctld-port", str(rig_port),
                                "--rotctld-port", str(rot_endpoint),
