@@ -73,12 +73,19 @@ fds() { ls "/proc/$PID/fd" | wc -l; }
 threads() { awk '/^Threads:/ {print $2}' "/proc/$PID/status"; }
 cpu_s() { awk -v tck="$(getconf CLK_TCK)" '{ sub(/.*\) /, ""); printf "%.2f", ($12 + $13) / tck }' "/proc/$PID/stat"; }
 
-# Descriptors at rest: the readiness probe's connection may take a moment to be closed.
+# Descriptors at rest: the count unchanged for 2 s (the readiness probe's connection closing, the
+# drivers' links opening), within 15 s.
 FDS_BEFORE=$(fds)
-for _ in $(seq 20); do
+stable=0
+for _ in $(seq 150); do
   sleep 0.1
   n=$(fds)
-  (( n < FDS_BEFORE )) && FDS_BEFORE=$n
+  if (( n == FDS_BEFORE )); then
+    (( ++stable >= 20 )) && break
+  else
+    FDS_BEFORE=$n
+    stable=0
+  fi
 done
 echo "soak: trakbox pid $PID, ports satrak $SATRAK rotctld $ROTCTLD rigctld $RIGCTLD host $HOSTP;" \
      "drivers ${SOAK_DRIVERS:-simulated}; $MINUTES min; samples in $CSV"
