@@ -142,8 +142,10 @@ def rotator_faults(tb, log, satrak_port, rotctld, endpoint):
         wait_for(f"round {rnd}: the loss in trakbox.log",
                  lambda: log.count(r"rotator: lost rotctld 127\.0\.0\.1:%d: .*motion stopped, reconnecting"
                                    % rotctld.port) > lost_before, 10)
-        err = wait_for(f"round {rnd}: ERRSTATUS? X1 (communication error) = 1",
-                       lambda: (lambda f: f if f[0] == "1" else None)(satrak_fields(satrak_port, "ERRSTATUS?")), 5)
+        def link_error():
+            fields = satrak_fields(satrak_port, "ERRSTATUS?")
+            return fields if fields[0] == "1" else None
+        err = wait_for(f"round {rnd}: ERRSTATUS? X1 (communication error) = 1", link_error, 5)
         check(err[9] == "2" and err[10] == "2", f"round {rnd}: no position: X/Y sensor connection error: {err}")
         st = satrak_fields(satrak_port, "STATUS?")
         check(st[0] == "1", f"round {rnd}: STATUS? X1 reports the fault: {st}")
