@@ -103,9 +103,12 @@ std::string control_line(Services& s) {
     if (hz) std::snprintf(b, sizeof b, "%.5f", static_cast<double>(*hz) / 1e6);
     return std::string(b);
   };
-  std::snprintf(buf, sizeof buf, "Rotor control %s  antenna %s%s | RIT %+ld Hz | RX %s TX %s MHz",
+  // The frequencies are the last ones the radio took: while it fails, the fault is shown instead.
+  const std::string rig = rad.fault ? "RADIO FAULT: " + rad.message
+                                    : "RX " + mhz(rad.downlink_hz) + " TX " + mhz(rad.uplink_hz) + " MHz";
+  std::snprintf(buf, sizeof buf, "Rotor control %s  antenna %s%s | RIT %+ld Hz | %s",
                 s.model.rotor_control ? "ON " : "OFF", antenna, motion.c_str(),
-                static_cast<long>(s.station.tuner().rit_hz()), mhz(rad.downlink_hz).c_str(), mhz(rad.uplink_hz).c_str());
+                static_cast<long>(s.station.tuner().rit_hz()), rig.c_str());
   return buf;
 }
 
@@ -121,6 +124,16 @@ std::string elements_age_line(Services& s, int db_index) {
 
 }  // namespace
 
+std::vector<std::string> LinkNotices::update(const rotator::Health& rotator, const radio::RadioStatus& radio) {
+  std::vector<std::string> out;
+  const bool rot_fault = rotator.state == rotator::LinkState::fault;
+  if (rot_fault != rotator_fault_) out.push_back(rot_fault ? "Rotator FAULT: " + rotator.message : "Rotator link restored");
+  if (radio.fault != radio_fault_) out.push_back(radio.fault ? "Radio FAULT: " + radio.message : "Radio working again");
+  rotator_fault_ = rot_fault;
+  radio_fault_ = radio.fault;
+  return out;
+}
+
 RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, bool exit_on_change) {
   const orbit::UtcTime start = s.clock.now();
   t.clear();
@@ -130,8 +143,11 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
   std::optional<int> shown;
   bool was_in_range = false;       // the shown satellite was AOS on the last update
   orbit::UtcTime graphics_pass{};  // AOS of the pass last drawn (epoch: none)
+  LinkNotices notices;             // full screen has the status line instead
   for (;;) {
     s.station.tick();  // fresh numbers at once, not a second late
+    if (!t.full_screen())
+      for (const auto& n : notices.update(s.station.rotator().status().link, s.station.radio().status())) t.line(n);
     const tracker::SatNow* followed = s.tracker.followed();
     const tracker::SatNow* f = followed;
     if (!f && !s.tracker.candidates().empty()) f = &s.tracker.candidates().front();

@@ -9,8 +9,11 @@
 //   04:06:58  28.54  -33.61  22101.6  12938.7   33.1   36.3    9.0    +2226  AOS
 #pragma once
 #include <string>
+#include <vector>
 
 #include "menus/menus.h"
+#include "radio/driver.h"
+#include "rotator/driver.h"
 #include "tracker/tracker.h"
 
 namespace tb::menus {
@@ -20,6 +23,21 @@ std::string format_realtime_row(const tracker::SatNow& n);
 // The AOS indicator: "AOS" steady when rotor control is on, blinking (every other second)
 // when off; blank when the satellite is below -2.0 deg.
 std::string aos_indicator(bool in_range, bool rotor_control, orbit::UtcTime now);
+
+// A serial terminal has no status line: the realtime display prints a line when the rotator's or
+// the radio's link fails and when it works again, once per change (not for every retry):
+//   Rotator FAULT: lost rotctld 127.0.0.1:4533: IO error; motion stopped, reconnecting
+//   Rotator link restored
+//   Radio FAULT: /dev/ttyUSB0 went away (the port hung up)
+//   Radio working again
+class LinkNotices {
+ public:
+  std::vector<std::string> update(const rotator::Health& rotator, const radio::RadioStatus& radio);
+
+ private:
+  bool rotator_fault_ = false;
+  bool radio_fault_ = false;
+};
 
 // What ends a realtime display.
 enum class RealtimeExit { quit, followed_changed };

@@ -40,6 +40,7 @@ class IcomLink final : public RadioLink {
   void set_frequency(Link link, Hz hz) override;
   void set_mode(Link link, Mode mode) override;
   void send_raw(const std::string& bytes) override;
+  void check() override { port_.check(); }
 
   // One CI-V transaction: write, read the echo back (collision: wait and retry), then the reply
   // when the radio is addressed directly. Throws LinkError.
@@ -71,6 +72,7 @@ class KenwoodLink final : public RadioLink {
   void set_frequency(Link link, Hz hz) override;
   void set_mode(Link link, Mode mode) override;
   void send_raw(const std::string& bytes) override;
+  void check() override { port_.check(); }
 
  private:
   void send(const std::string& command);
@@ -94,6 +96,7 @@ class YaesuLink final : public RadioLink {
   void set_frequency(Link link, Hz hz) override;
   void set_mode(Link link, Mode mode) override;
   void send_raw(const std::string& bytes) override;
+  void check() override { port_.check(); }
 
  private:
   void send(std::span<const std::uint8_t> bytes);

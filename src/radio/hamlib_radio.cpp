@@ -1,6 +1,7 @@
 #include "radio/hamlib_radio.h"
 
 #include <hamlib/rig.h>
+#include <poll.h>
 #include <signal.h>
 
 #include <mutex>
@@ -115,7 +116,18 @@ void HamlibLink::close() noexcept {
   impl_->rig = nullptr;
 }
 
-void HamlibLink::check(int rc, const std::string& what) {
+void HamlibLink::check() {
+  if (!impl_->rig) throw LinkError(Action::reconnect, describe() + " is not open");
+  const hamlib_port_t& port = impl_->rig->state.rigport;
+  // Only a port of its own has a descriptor to watch (not the dummy's RIG_PORT_NONE).
+  if ((port.type.rig != RIG_PORT_SERIAL && port.type.rig != RIG_PORT_NETWORK) || port.fd < 0) return;
+  const int fd = port.fd;
+  pollfd p{fd, POLLRDHUP, 0};
+  if (::poll(&p, 1, 0) > 0 && (p.revents & (POLLHUP | POLLERR | POLLNVAL | POLLRDHUP)) != 0)
+    throw LinkError(Action::reconnect, describe() + ": the connection was closed (the port went away)");
+}
+
+void HamlibLink::require(int rc, const std::string& what) {
   if (rc == RIG_OK) return;
   const int code = rc < 0 ? -rc : rc;
   const std::string msg = describe() + ": " + what + " failed: " + error_text(rc);
@@ -124,7 +136,7 @@ void HamlibLink::check(int rc, const std::string& what) {
 
 void HamlibLink::ensure_split() {
   if (split_on_) return;
-  check(rig_set_split_vfo(impl_->rig, RIG_VFO_CURR, RIG_SPLIT_ON, RIG_VFO_B), "split on (VFO B)");
+  require(rig_set_split_vfo(impl_->rig, RIG_VFO_CURR, RIG_SPLIT_ON, RIG_VFO_B), "split on (VFO B)");
   split_on_ = true;
 }
 
@@ -132,15 +144,15 @@ void HamlibLink::set_frequency(Link l, Hz hz) {
   if (!impl_->rig) throw LinkError(Action::reconnect, describe() + " is not open");
   const freq_t f = static_cast<freq_t>(hz);
   if (scheme_ == HamlibVfoScheme::main_sub) {
-    check(rig_set_freq(impl_->rig, l == Link::downlink ? RIG_VFO_SUB : RIG_VFO_MAIN, f),
+    require(rig_set_freq(impl_->rig, l == Link::downlink ? RIG_VFO_SUB : RIG_VFO_MAIN, f),
           l == Link::downlink ? "set Sub frequency" : "set Main frequency");
     return;
   }
   if (l == Link::downlink) {
-    check(rig_set_freq(impl_->rig, RIG_VFO_CURR, f), "set frequency");
+    require(rig_set_freq(impl_->rig, RIG_VFO_CURR, f), "set frequency");
   } else {
     ensure_split();
-    check(rig_set_split_freq(impl_->rig, RIG_VFO_CURR, f), "set split frequency");
+    require(rig_set_split_freq(impl_->rig, RIG_VFO_CURR, f), "set split frequency");
   }
 }
 
@@ -149,16 +161,16 @@ void HamlibLink::set_mode(Link l, Mode mode) {
   const rmode_t m = to_hamlib(mode);
   if (m == RIG_MODE_NONE) return;
   if (scheme_ == HamlibVfoScheme::main_sub) {
-    check(rig_set_mode(impl_->rig, l == Link::downlink ? RIG_VFO_SUB : RIG_VFO_MAIN, m,
+    require(rig_set_mode(impl_->rig, l == Link::downlink ? RIG_VFO_SUB : RIG_VFO_MAIN, m,
                        RIG_PASSBAND_NOCHANGE),
           "set mode");
     return;
   }
   if (l == Link::downlink) {
-    check(rig_set_mode(impl_->rig, RIG_VFO_CURR, m, RIG_PASSBAND_NOCHANGE), "set mode");
+    require(rig_set_mode(impl_->rig, RIG_VFO_CURR, m, RIG_PASSBAND_NOCHANGE), "set mode");
   } else {
     ensure_split();
-    check(rig_set_split_mode(impl_->rig, RIG_VFO_CURR, m, RIG_PASSBAND_NOCHANGE), "set split mode");
+    require(rig_set_split_mode(impl_->rig, RIG_VFO_CURR, m, RIG_PASSBAND_NOCHANGE), "set split mode");
   }
 }
 
@@ -167,7 +179,7 @@ void HamlibLink::send_raw(const std::string& bytes) {
   unsigned char reply[256];
   const int rc = rig_send_raw(impl_->rig, reinterpret_cast<const unsigned char*>(bytes.data()),
                               static_cast<int>(bytes.size()), reply, sizeof reply, nullptr);
-  if (rc < 0) check(rc, "send raw bytes");
+  if (rc < 0) require(rc, "send raw bytes");
 }
 
 std::unique_ptr<RadioDriver> make_hamlib_radio(const HamlibOptions& options, WorkerTiming timing) {

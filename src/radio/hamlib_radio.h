@@ -39,12 +39,15 @@ class HamlibLink final : public RadioLink {
   void set_frequency(Link link, Hz hz) override;
   void set_mode(Link link, Mode mode) override;
   void send_raw(const std::string& bytes) override;
+  // The port's descriptor hung up (a serial adapter unplugged) or the peer closed the connection
+  // (rigctld gone): no traffic, so it may run often.
+  void check() override;
 
   // The scheme in use once open (automatic resolved).
   HamlibVfoScheme scheme() const { return scheme_; }
 
  private:
-  void check(int rc, const std::string& what);
+  void require(int rc, const std::string& what);
   void ensure_split();
   struct Impl;
   HamlibOptions opt_;

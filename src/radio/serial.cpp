@@ -1,6 +1,11 @@
 #include "radio/serial.h"
 
+#include <poll.h>
+#include <sys/stat.h>
 #include <termios.h>
+
+#include <cerrno>
+#include <system_error>
 
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/read.hpp>
@@ -102,6 +107,23 @@ std::size_t SerialPort::read_some(std::span<std::uint8_t> out, std::chrono::mill
 
 void SerialPort::discard_input() noexcept {
   if (is_open()) ::tcflush(impl_->port.native_handle(), TCIFLUSH);
+}
+
+void SerialPort::check() const {
+  if (!is_open()) throw LinkError(Action::reconnect, device_ + " is not open");
+  const int fd = impl_->port.native_handle();
+  pollfd p{fd, 0, 0};  // no events asked: POLLHUP, POLLERR and POLLNVAL are reported anyway
+  if (::poll(&p, 1, 0) > 0 && (p.revents & (POLLHUP | POLLERR | POLLNVAL)) != 0)
+    throw LinkError(Action::reconnect, device_ + " went away (the port hung up)");
+  struct stat opened {}, named {};
+  if (::fstat(fd, &opened) != 0) return;
+  if (::stat(device_.c_str(), &named) != 0) {
+    if (errno == ENOENT || errno == ENOTDIR)
+      throw LinkError(Action::reconnect, device_ + " went away (" + std::generic_category().message(errno) + ")");
+    return;
+  }
+  if (S_ISCHR(opened.st_mode) && named.st_rdev != opened.st_rdev)
+    throw LinkError(Action::reconnect, device_ + " went away (now another device)");
 }
 
 std::chrono::milliseconds SerialPort::wire_time(std::size_t n) const {

@@ -45,6 +45,9 @@ class SerialPort {
   std::size_t read_some(std::span<std::uint8_t> out, std::chrono::milliseconds timeout);
   // Drops whatever is waiting in the input buffer.
   void discard_input() noexcept;
+  // LinkError(reconnect) when the port is gone: hung up (a USB adapter unplugged, a pty whose other
+  // end closed), or its device node removed or replaced by another device. Never blocks.
+  void check() const;
 
   // How long n bytes take on the wire at these settings.
   std::chrono::milliseconds wire_time(std::size_t n) const;

@@ -86,7 +86,8 @@ void WorkerRadio::execute(const Job& job) {
 
 void WorkerRadio::fail(const std::string& message) {
   ++status_.failures;
-  if (!status_.fault || status_.message != message) spdlog::warn("radio {}: {}", description_, message);
+  if (message != logged_) spdlog::warn("radio {}: {}", description_, message);  // once, until it works
+  logged_ = message;
   status_.fault = true;
   status_.message = message;
   retry_at_ = std::chrono::steady_clock::now() + backoff_;
@@ -98,16 +99,67 @@ void WorkerRadio::run() {
   Lock lock(mu_);
   while (true) {
     if (queue_.empty() && !busy_) idle_cv_.notify_all();
-    cv_.wait(lock, [&] { return stop_ || !queue_.empty(); });
+    wait_for_work(lock);
     if (stop_) break;
     if (std::chrono::steady_clock::now() < retry_at_) {
       cv_.wait_until(lock, retry_at_, [&] { return stop_; });
       if (stop_) break;
     }
     if (!open_ && !connect(lock)) continue;
+    if (queue_.empty()) {
+      check_link(lock);
+      continue;
+    }
     deliver_next(lock);
   }
   finish(lock);
+}
+
+void WorkerRadio::wait_for_work(Lock& lock) {
+  // The link is opened at start (a wrong or missing port is reported at once, not at the first
+  // pass) and reopened after a loss, whether or not anything waits to be sent; an open one is
+  // checked every check_every while idle (wait_until returns at the check time, queue empty).
+  auto ready = [&] { return stop_ || !queue_.empty() || (!open_ && want_open_); };
+  if (open_)
+    cv_.wait_until(lock, next_check_, ready);
+  else
+    cv_.wait(lock, ready);
+}
+
+void WorkerRadio::check_link(Lock& lock) {
+  const auto now = std::chrono::steady_clock::now();
+  if (now < next_check_) return;
+  next_check_ = now + timing_.check_every;
+  lock.unlock();
+  std::optional<LinkError> error;
+  try {
+    link_->check();
+  } catch (const LinkError& e) {
+    error = e;
+  }
+  lock.lock();
+  if (error) {
+    fail(error->what());
+    link_fault_ = true;
+    return lose_link(lock);
+  }
+  // Reopened and still there with nothing to send: the port works again (the fault shown was
+  // cleared at the reopen; a refused command's fault stays until the next delivery).
+  if (link_fault_) {
+    spdlog::info("radio {}: working again", description_);
+    link_fault_ = false;
+    logged_.clear();
+    backoff_ = timing_.backoff_first;
+  }
+}
+
+void WorkerRadio::lose_link(Lock& lock) {
+  lock.unlock();
+  link_->close();
+  lock.lock();
+  open_ = false;
+  want_open_ = true;
+  status_.connected = false;
 }
 
 bool WorkerRadio::connect(Lock& lock) {
@@ -123,12 +175,20 @@ bool WorkerRadio::connect(Lock& lock) {
   busy_ = false;
   if (error) {
     fail(error->what());
+    link_fault_ = true;
     return false;
   }
   open_ = true;
+  want_open_ = false;
+  next_check_ = std::chrono::steady_clock::now() + timing_.check_every;
   status_.connected = true;
   ++status_.connects;
-  if (status_.connects > 1) spdlog::info("radio {}: reconnected", description_);
+  spdlog::info("radio {}: {}", description_, status_.connects > 1 ? "reconnected" : "connected");
+  // The port is open: no fault to show (the endpoints take commands again). The backoff and the
+  // log's memory of the failure stay until a command is delivered or a check passes, so a port
+  // that opens but fails every write neither retries fast nor logs every round.
+  status_.fault = false;
+  status_.message.clear();
   // Whatever the radio was told before, tell it again.
   for (Link l : {Link::downlink, Link::uplink}) {
     if (want_mode_[index(l)]) enqueue_locked({Job::Kind::mode, l, 0, *want_mode_[index(l)], {}});
@@ -160,7 +220,9 @@ void WorkerRadio::deliver_next(Lock& lock) {
     return;
   }
   ++status_.delivered;
-  if (status_.fault) spdlog::info("radio {}: working again", description_);
+  if (status_.fault || link_fault_) spdlog::info("radio {}: working again", description_);
+  link_fault_ = false;
+  logged_.clear();
   status_.fault = false;
   status_.message.clear();
   backoff_ = timing_.backoff_first;
@@ -175,11 +237,8 @@ void WorkerRadio::job_failed(Lock& lock, Job job, const LinkError& error) {
     return;
   }
   if (error.action == LinkError::Action::reconnect) {
-    lock.unlock();
-    link_->close();
-    lock.lock();
-    open_ = false;
-    status_.connected = false;
+    link_fault_ = true;
+    lose_link(lock);
   }
   // Retry it, unless a newer value for the same thing arrived meanwhile. A command that failed
   // on a working link goes to the back, so one silent radio (an Icom pair: RX radio switched

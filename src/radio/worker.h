@@ -36,11 +36,16 @@ class RadioLink {
   virtual void set_frequency(Link link, Hz hz) = 0;
   virtual void set_mode(Link link, Mode mode) = 0;
   virtual void send_raw(const std::string& bytes) = 0;
+  // Called every WorkerTiming::check_every while the link is open and idle: throws
+  // LinkError(reconnect) when the port or connection is gone (a serial adapter unplugged, the pty's
+  // other end closed), so a loss is seen and reported without waiting for the next command.
+  virtual void check() {}
 };
 
 struct WorkerTiming {
   std::chrono::milliseconds backoff_first{200};    // wait after the first failure
   std::chrono::milliseconds backoff_max{5000};     // doubling up to this
+  std::chrono::milliseconds check_every{500};      // RadioLink::check() while open and idle
 };
 
 class WorkerRadio final : public RadioDriver {
@@ -75,6 +80,9 @@ class WorkerRadio final : public RadioDriver {
   void job_failed(Lock& lock, Job job, const LinkError& error);
   void fail(const std::string& message);  // records a fault and the back-off before the next try
   void finish(Lock& lock);           // stopping: one attempt at what is queued, then close
+  void wait_for_work(Lock& lock);    // until stop, a job, a reconnect due, or a check due
+  void check_link(Lock& lock);       // the idle check; a lost link is closed for reconnecting
+  void lose_link(Lock& lock);        // closes a broken link; the worker reopens it with backoff
 
   std::unique_ptr<RadioLink> link_;
   const std::string description_;
@@ -91,6 +99,10 @@ class WorkerRadio final : public RadioDriver {
   RadioStatus status_;
   // Worker-thread state.
   bool open_ = false;
+  bool want_open_ = true;            // opened at start, reopened after a loss, with or without jobs
+  bool link_fault_ = false;          // the port failed (open, lost) and has not worked since
+  std::string logged_;               // the failure last logged (not again until something works)
+  std::chrono::steady_clock::time_point next_check_{};
   std::chrono::milliseconds backoff_{};
   std::chrono::steady_clock::time_point retry_at_{};
   std::thread thread_;

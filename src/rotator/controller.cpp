@@ -380,46 +380,12 @@ void Controller::tick_adc(AdcRotator& adc, orbit::UtcTime now, double dt) {
       if (cmd.drive != Drive::stop && status_.mode == ControlMode::manual && l.manual_goal &&
           sign(cmd.drive) * *l.manual_goal < 0.0)
         cmd = {};
-      // A jog slower than the motor: pulses whose share of the time is the duty, counted from the
-      // jog's start so that late or early ticks do not change the rate; each pulse covers the
-      // time to the next tick, taken to be as long as the last interval (100 ms while moving,
-      // next_tick_in, in the clock's time: longer under a fast clock). A loop that stalled does
-      // not make up for the lost time in one burst.
+      // A jog slower than the motor: pulses (jog_pulse).
       if (jogging && cmd.drive == Drive::stop) l.jog_started = false;  // at its end: held there
-      if (cmd.drive != Drive::stop && status_.mode == ControlMode::manual && l.manual_goal && l.duty < 1.0) {
-        const double kPeriod = dt > 0.0 ? std::clamp(dt, 0.02, 1.0) : 0.1;
-        if (!l.jog_started) {
-          l.jog_started = true;
-          l.jog_t0 = now;
-          l.jog_on_s = 0.0;
-        }
-        const double want = l.duty * (seconds(l.jog_t0, now) + kPeriod);
-        l.jog_on_s = std::max(l.jog_on_s, want - 3.0 * l.duty * kPeriod);
-        const double run = want - l.jog_on_s;
-        if (run < 1e-4)
-          cmd = {};
-        else
-          cmd.run_for_s = std::min(cmd.run_for_s, run);
-      }
+      if (cmd.drive != Drive::stop && status_.mode == ControlMode::manual && l.manual_goal && l.duty < 1.0)
+        jog_pulse(l, cmd, now, dt);
     }
-    if (cmd.drive != Drive::stop && l.cmd != Drive::stop && l.driven_still_s >= c.stall_s &&
-        rate_cps(a) * c.stall_s >= 3.0) {
-      l.stalled = true;
-      cmd = {};
-      note(std::string(axis_name(a)) + " stalled at " + std::to_string(raw) + " counts: driven " +
-               std::to_string(static_cast<int>(c.stall_s)) + " s without moving, drive stopped",
-           true);
-    }
-    if (cmd.drive == Drive::stop) {
-      if (l.cmd != Drive::stop) adc.drive(a, Drive::stop, {});
-      l.cmd = Drive::stop;
-    } else {
-      const double max_s = std::chrono::duration<double>(opt_.watchdog).count();
-      const double run = std::clamp(cmd.run_for_s, 1e-6, max_s);
-      adc.drive(a, cmd.drive, micros(run));
-      l.cmd = cmd.drive;
-      l.cmd_until = now + micros(run);
-    }
+    apply_adc(adc, a, cmd, raw, now);
   }
   for (Axis a : kAxes) {
     axis_status(a).motion = loop(a).cmd;
@@ -427,6 +393,52 @@ void Controller::tick_adc(AdcRotator& adc, orbit::UtcTime now, double dt) {
     axis_status(a).stalled = loop(a).stalled;
   }
   if (!status_.control_enabled) lines_off();
+}
+
+// A jog slower than the motor: pulses whose share of the time is the duty, counted from the jog's
+// start so that late or early ticks do not change the rate; each pulse covers the time to the next
+// tick, taken to be as long as the last interval (100 ms while moving, next_tick_in, in the
+// clock's time: longer under a fast clock). A loop that stalled does not make up for the lost time
+// in one burst.
+void Controller::jog_pulse(AxisLoop& l, AxisCommand& cmd, orbit::UtcTime now, double dt) {
+  const double kPeriod = dt > 0.0 ? std::clamp(dt, 0.02, 1.0) : 0.1;
+  if (!l.jog_started) {
+    l.jog_started = true;
+    l.jog_t0 = now;
+    l.jog_on_s = 0.0;
+  }
+  const double want = l.duty * (seconds(l.jog_t0, now) + kPeriod);
+  l.jog_on_s = std::max(l.jog_on_s, want - 3.0 * l.duty * kPeriod);
+  const double run = want - l.jog_on_s;
+  if (run < 1e-4)
+    cmd = {};
+  else
+    cmd.run_for_s = std::min(cmd.run_for_s, run);
+}
+
+// Sends one axis's decision to an ADC rotator: the stall watch first (driven stall_s without the
+// reading changing: stopped and reported), then the drive with its run-for capped by the watchdog.
+void Controller::apply_adc(AdcRotator& adc, Axis a, AxisCommand cmd, int raw, orbit::UtcTime now) {
+  AxisLoop& l = loop(a);
+  const RotatorConfig& c = model_.config();
+  if (cmd.drive != Drive::stop && l.cmd != Drive::stop && l.driven_still_s >= c.stall_s &&
+      rate_cps(a) * c.stall_s >= 3.0) {
+    l.stalled = true;
+    cmd = {};
+    note(std::string(axis_name(a)) + " stalled at " + std::to_string(raw) + " counts: driven " +
+             std::to_string(static_cast<int>(c.stall_s)) + " s without moving, drive stopped",
+         true);
+  }
+  if (cmd.drive == Drive::stop) {
+    if (l.cmd != Drive::stop) adc.drive(a, Drive::stop, {});
+    l.cmd = Drive::stop;
+  } else {
+    const double max_s = std::chrono::duration<double>(opt_.watchdog).count();
+    const double run = std::clamp(cmd.run_for_s, 1e-6, max_s);
+    adc.drive(a, cmd.drive, micros(run));
+    l.cmd = cmd.drive;
+    l.cmd_until = now + micros(run);
+  }
 }
 
 void Controller::tick_degrees(DegreeRotator& dr, orbit::UtcTime now) {

@@ -160,6 +160,8 @@ class Controller {
   void note(std::string message, bool warn);
   std::optional<double> goal_counts(Axis a) const;
   void tick_adc(AdcRotator& adc, orbit::UtcTime now, double dt);
+  void jog_pulse(AxisLoop& l, AxisCommand& cmd, orbit::UtcTime now, double dt);
+  void apply_adc(AdcRotator& adc, Axis a, AxisCommand cmd, int raw, orbit::UtcTime now);
   void tick_degrees(DegreeRotator& dr, orbit::UtcTime now);
   void update_on_target();  // status_.on_target from the goals, the last readings and the motion
   int band(Axis a) const;   // the dead band in force: 0 while an exact approach is pending

@@ -30,6 +30,15 @@ def check(cond, message):
         raise Failure(message)
 
 
+SKIP = 77  # CTest's SKIP_RETURN_CODE for tests/integration (tests/CMakeLists.txt)
+
+
+def skip(message):
+    """Ends the test as skipped (a tool it needs is missing), saying why."""
+    print(message)
+    raise SystemExit(SKIP)
+
+
 class SerialPair:
     """Two connected pseudo-terminals from socat: one for trakbox, one for the 'terminal'."""
 

@@ -98,3 +98,41 @@ TEST_CASE("Line mode: the realtime display's E and + / - / 0 say what they chang
   CHECK(out.find("Frequency offset 0 Hz\n") != std::string::npos);
   CHECK(f.station->tuner().rit_hz() == 0);
 }
+
+TEST_CASE("LinkNotices: one line when a link fails and one when it is back, not one per retry") {
+  menus::LinkNotices n;
+  rotator::Health rot_ok{rotator::LinkState::ok, "", 1};
+  rotator::Health connecting{rotator::LinkState::connecting, "connecting to rotctld 127.0.0.1:4533", 0};
+  radio::RadioStatus rad_ok;
+  CHECK(n.update(connecting, rad_ok).empty());  // not yet connected is no fault
+  CHECK(n.update(rot_ok, rad_ok).empty());
+  rotator::Health lost{rotator::LinkState::fault, "lost rotctld 127.0.0.1:4533: IO error; motion stopped, reconnecting", 1};
+  CHECK(n.update(lost, rad_ok) ==
+        std::vector<std::string>{"Rotator FAULT: lost rotctld 127.0.0.1:4533: IO error; motion stopped, reconnecting"});
+  lost.message = "cannot connect to rotctld 127.0.0.1:4533: IO error; retrying in 500 ms";
+  CHECK(n.update(lost, rad_ok).empty());  // the retries say nothing new
+  radio::RadioStatus gone;
+  gone.fault = true;
+  gone.message = "/dev/ttyUSB0 went away (the port hung up)";
+  CHECK(n.update(rot_ok, gone) ==
+        std::vector<std::string>{"Rotator link restored", "Radio FAULT: /dev/ttyUSB0 went away (the port hung up)"});
+  CHECK(n.update(rot_ok, gone).empty());
+  CHECK(n.update(rot_ok, rad_ok) == std::vector<std::string>{"Radio working again"});
+}
+
+TEST_CASE("Line mode: the realtime display reports a rotator or radio fault and its end") {
+  testing::MenuFixture f("\rQ");
+  f.term.timeouts_before_key = 3;
+  f.rotator_sim->set_fault("ADC not answering");
+  f.radio_sim->simulate_fault("interface not echoing");
+  menus::menu_1_realtime_tracking(f.term, *f.services);
+  const std::string& out = f.term.output();
+  CHECK(out.find("Rotator FAULT: ") != std::string::npos);
+  CHECK(out.find("ADC not answering") != std::string::npos);
+  CHECK(out.find("Radio FAULT: interface not echoing\n") != std::string::npos);
+
+  testing::MenuFixture g("\rQ");
+  g.term.timeouts_before_key = 3;
+  menus::menu_1_realtime_tracking(g.term, *g.services);
+  CHECK(g.term.output().find("FAULT") == std::string::npos);  // nothing to report, nothing said
+}

@@ -76,6 +76,8 @@ struct Script {
   LinkError::Action action = LinkError::Action::retry;
   std::vector<std::string> log;  // what reached the "radio"
   int opens = 0, closes = 0;
+  bool gone = false;             // the port has gone away: check() and open() fail
+  int checks = 0;
 };
 
 class ScriptedLink final : public RadioLink {
@@ -84,11 +86,16 @@ class ScriptedLink final : public RadioLink {
   std::string describe() const override { return "scripted"; }
   void open() override {
     std::lock_guard lock(s_.mu);
-    if (s_.fail_opens > 0) {
-      --s_.fail_opens;
+    if (s_.fail_opens > 0 || s_.gone) {
+      if (s_.fail_opens > 0) --s_.fail_opens;
       throw LinkError(LinkError::Action::reconnect, "cannot open scripted");
     }
     ++s_.opens;
+  }
+  void check() override {
+    std::lock_guard lock(s_.mu);
+    ++s_.checks;
+    if (s_.gone) throw LinkError(LinkError::Action::reconnect, "scripted went away");
   }
   void close() noexcept override {
     std::lock_guard lock(s_.mu);
@@ -210,6 +217,80 @@ TEST_CASE("Worker: open failures back off; a broken link reconnects and sends ev
   CHECK(log[3] == "downlink 435000000");
 }
 
+TEST_CASE("Worker: an idle link that goes away is noticed, reported and reopened by itself") {
+  Script s;
+  const WorkerTiming timing{10ms, 40ms, 20ms};
+  WorkerRadio radio(std::make_unique<ScriptedLink>(s), timing);
+  radio.set_downlink_mode(Mode::usb);
+  radio.set_downlink_frequency(435'000'000);
+  REQUIRE(radio.wait_idle(2000ms));
+  CHECK(eventually([&] { std::lock_guard lock(s.mu); return s.checks >= 2; }));  // checked while idle
+  CHECK_FALSE(radio.status().fault);
+  {
+    std::lock_guard lock(s.mu);
+    s.log.clear();
+    s.gone = true;
+  }
+  // Nothing is sent, yet the loss shows: fault, not connected, the link closed.
+  REQUIRE(eventually([&] { const auto st = radio.status(); return st.fault && !st.connected; }));
+  const auto down = radio.status();
+  CHECK((down.message == "scripted went away" || down.message == "cannot open scripted"));
+  CHECK(log_of(s) == std::vector<std::string>{"close"});
+  CHECK(eventually([&] { return radio.status().message == "cannot open scripted"; }));  // reopening, backing off
+  {
+    std::lock_guard lock(s.mu);
+    s.gone = false;
+  }
+  // Back by itself, nothing queued by the caller: the remembered mode and frequency go out again.
+  REQUIRE(eventually([&] { const auto st = radio.status(); return st.connected && !st.fault; }));
+  CHECK(radio.status().connects == 2);
+  CHECK(eventually([&] { return log_of(s).size() == 3; }));
+  CHECK(log_of(s) == std::vector<std::string>{"close", "downlink USB", "downlink 435000000"});
+}
+
+TEST_CASE("Worker: the link is opened at start, and a failed open is reported with nothing sent") {
+  Script s;
+  s.fail_opens = 1;
+  WorkerRadio radio(std::make_unique<ScriptedLink>(s), WorkerTiming{10ms, 40ms, 20ms});
+  CHECK(eventually([&] { return radio.status().failures == 1; }));
+  CHECK(eventually([&] { const auto st = radio.status(); return st.connected && !st.fault; }));
+  CHECK(radio.status().connects == 1);
+  CHECK(radio.status().delivered == 0);
+  CHECK(log_of(s).empty());
+}
+
+TEST_CASE("Worker: a reopened link with nothing to re-send shows no fault") {
+  Script s;
+  s.fail_opens = 1;
+  WorkerRadio radio(std::make_unique<ScriptedLink>(s), WorkerTiming{10ms, 40ms, 20ms});
+  radio.send_raw("A;");
+  REQUIRE(radio.wait_idle(2000ms));
+  {
+    std::lock_guard lock(s.mu);
+    s.gone = true;
+  }
+  REQUIRE(eventually([&] { return !radio.status().connected; }));
+  {
+    std::lock_guard lock(s.mu);
+    s.gone = false;
+  }
+  REQUIRE(eventually([&] { const auto st = radio.status(); return st.connected && !st.fault && st.message.empty(); }));
+  CHECK(log_of(s) == std::vector<std::string>{"raw A;", "close"});  // raw strings are never replayed
+}
+
+TEST_CASE("Worker: a refused command's fault is not cleared by the idle check") {
+  Script s;
+  s.fail_commands = 1;
+  s.action = LinkError::Action::drop;
+  WorkerRadio radio(std::make_unique<ScriptedLink>(s), WorkerTiming{10ms, 40ms, 10ms});
+  radio.send_raw("XX;");
+  REQUIRE(radio.wait_idle(2000ms));
+  const int checks = [&] { std::lock_guard lock(s.mu); return s.checks; }();
+  CHECK(eventually([&] { std::lock_guard lock(s.mu); return s.checks >= checks + 3; }));
+  CHECK(radio.status().fault);
+  CHECK(radio.status().message == "scripted failure");
+}
+
 TEST_CASE("Worker: a refused command is dropped, reported, not retried") {
   Script s;
   s.fail_commands = 1;
@@ -302,6 +383,10 @@ TEST_CASE("make_radio builds drivers without blocking; errors are clear") {
   CHECK(y.driver->describe() == "Yaesu FT-736 CAT on /nonexistent/tty");
   auto k = make_radio("kenwood:/nonexistent/tty", cfg);
   CHECK(k.driver->describe() == "Kenwood CAT on /nonexistent/tty");
+  // Opened at start: a wrong port is reported before anything is sent.
+  CHECK(eventually([&] { return k.driver->status().fault; }));
+  CHECK(k.driver->status().message == "cannot open /nonexistent/tty: No such file or directory");
+  CHECK(k.driver->status().pending == 0);
 
   auto bad_model = make_radio("hamlib:999999:/dev/null", cfg);
   CHECK_FALSE(bad_model.driver);

@@ -309,3 +309,25 @@ TEST_CASE("Serial driver: the cable goes away, the driver reports it and reopens
   CHECK(eventually([&] { return radio->status().pending >= 1; }));  // kept, to be sent when it is back
   radio.reset();   // shutting down with the port gone is bounded
 }
+
+TEST_CASE("Serial driver: an idle port that goes away is reported without a command being sent") {
+  if (!have_socat()) return;
+  const WorkerTiming timing{20ms, 100ms, 50ms};
+  std::string device;
+  std::unique_ptr<RadioDriver> radio;
+  {
+    PtyPair pair;
+    REQUIRE(pair.ok());
+    PtyEnd peer(pair.test_side());
+    device = pair.radio_side();
+    radio = make_kenwood_radio(device, {}, timing);
+    radio->set_downlink_frequency(435'000'000);
+    REQUIRE(radio->wait_idle(5000ms));
+    CHECK(radio->status().connected);
+  }  // socat ends: both ptys and their links disappear
+  // Nothing more is sent: the idle check sees the hang-up (or the missing link) by itself.
+  REQUIRE(eventually([&] { const auto s = radio->status(); return s.fault && !s.connected; }));
+  CHECK(radio->status().message.find(device) != std::string::npos);
+  CHECK(radio->status().pending == 0);
+  radio.reset();  // shutting down while it retries is bounded
+}
