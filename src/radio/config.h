@@ -13,7 +13,7 @@ namespace tb::radio {
 using Hz = std::int64_t;
 
 // Radio modes (not satellite modes). The manual offers FM, LSB, USB and None; CW is there for
-// Hamlib radios and host-mode commands (the CAT encoders map it too).
+// Hamlib radios, host-mode commands and the later firmware's FREQ.DAT (the CAT encoders map it too).
 enum class Mode { none, fm, lsb, usb, cw };
 
 const char* to_string(Mode m);                      // "FM", "LSB", "USB", "CW", "None"
