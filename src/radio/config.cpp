@@ -40,4 +40,24 @@ const char* to_string(Rig r) {
   return "NONE";
 }
 
+const char* to_string(RigModel m) {
+  switch (m) {
+    case RigModel::kenwood_711: return "TS-711";
+    case RigModel::yaesu_other: return "other";
+    case RigModel::yaesu_847: return "FT-847";
+    case RigModel::yaesu_736: return "FT-736";
+    case RigModel::generic: break;
+  }
+  return "";
+}
+
+const char* to_string(ReverseAssignment r) {
+  switch (r) {
+    case ReverseAssignment::icom_main_sub: return "ir";
+    case ReverseAssignment::kenwood_vfo: return "kr";
+    case ReverseAssignment::none: break;
+  }
+  return "";
+}
+
 }  // namespace tb::radio

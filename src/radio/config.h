@@ -6,13 +6,14 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace tb::radio {
 
 using Hz = std::int64_t;
 
 // Radio modes (not satellite modes). The manual offers FM, LSB, USB and None; CW is there for
-// Hamlib radios and host-mode commands (the CAT encoders map it too).
+// Hamlib radios, host-mode commands and the later firmware's FREQ.DAT (the CAT encoders map it too).
 enum class Mode { none, fm, lsb, usb, cw };
 
 const char* to_string(Mode m);                      // "FM", "LSB", "USB", "CW", "None"
@@ -22,6 +23,14 @@ std::optional<Mode> parse_mode(std::string_view text);
 // How Doppler reaches the radio for one satellite (menu 3-1 "Doppler correct.").
 enum class DopplerControl { cat, mic_click };
 const char* to_string(DopplerControl d);            // "CAT", "Mic-click"
+
+// The later firmware's FREQ.DAT `ir` / `kr` flag: for this satellite the two radios (Icom main/sub)
+// or VFOs (Kenwood) swap their downlink/uplink roles. Stored; the CAT drivers do not act on it yet.
+enum class ReverseAssignment { none, icom_main_sub, kenwood_vfo };
+const char* to_string(ReverseAssignment r);         // "", "ir", "kr"
+
+// At most this many uplinks in one FREQ.DAT record: the default and three alternatives.
+inline constexpr int kMaxUplinkChannels = 4;
 
 // The per-satellite radio entry (menu 3-1: F1, F1OFFSET, F2, F2OFFSET, modes, Doppler, LCD MA).
 // A frequency of 0 means "not configured": no Doppler is computed and nothing is sent for that link
@@ -37,6 +46,10 @@ struct SatelliteRadio {
   Mode uplink_mode = Mode::none;
   DopplerControl doppler = DopplerControl::cat;
   bool lcd_ma_display = false;
+  // The later firmware's FREQ.DAT: further uplink channels (RF Hz, same offset and mode as F2) the
+  // operator may step through, after the default uplink_hz; at most kMaxUplinkChannels - 1.
+  std::vector<Hz> alternate_uplinks_hz;
+  ReverseAssignment reverse = ReverseAssignment::none;
 
   bool has_downlink() const { return downlink_hz > 0; }
   bool has_uplink() const { return uplink_hz > 0; }
@@ -46,6 +59,12 @@ struct SatelliteRadio {
 // Menu 6-7.
 enum class Rig { none, kenwood, yaesu, icom };
 const char* to_string(Rig r);                       // "NONE", "KENWOOD", "YAESU", "ICOM"
+
+// The radio model within a rig family, as the later firmware's STATION.DAT line 4 names it
+// (KENWOOD711, YAESU_847, YAESU_736, YAESU_o ...). Stored and shown; the CAT drivers speak the
+// family's protocol for every model.
+enum class RigModel { generic, kenwood_711, yaesu_other, yaesu_847, yaesu_736 };
+const char* to_string(RigModel m);                  // "", "TS-711", "other", "FT-847", "FT-736"
 
 // Downlink correction Y / N / R. Reverse is for a down-converter with a high-side local
 // oscillator: the Doppler correction is applied in the opposite direction at the radio.
@@ -69,10 +88,25 @@ struct MicClickConfig {
   bool cat_at_aos = true;      // "Frequency set CAT command at AOS"
   bool auto_up_at_aos = true;  // "Automatic up pulse generation at AOS"
   PulsePolarity polarity = PulsePolarity::normal;
+  // STATION.DAT line 5 of the later firmware, "PARK[m][n]": the mic-click pulse width (m) and
+  // interval (n) digits, 0 to 9; -1 when not given. Stored as written; their timing is not used.
+  int park_pulse_width_digit = -1;
+  int park_pulse_interval_digit = -1;
 
   int span() const { return reference_adc > centre_adc ? reference_adc - centre_adc
                                                        : centre_adc - reference_adc; }
   bool operator==(const MicClickConfig&) const = default;
+};
+
+// The later firmware's STATION.DAT line 6: after LOS the radios are tuned to these frequencies and
+// modes. Stored; nothing tunes them yet (the station loop does not park radios).
+struct RadioParking {
+  bool enabled = false;
+  Hz rx_hz = 0;
+  Hz tx_hz = 0;
+  Mode rx_mode = Mode::none;
+  Mode tx_mode = Mode::none;
+  bool operator==(const RadioParking&) const = default;
 };
 
 // Menu 6-7 and 6-8 together. Factory values: no CAT rig (trakbox's simulated radio answers),
@@ -88,8 +122,11 @@ struct RadioConfig {
   bool uplink_correction = true;
   DownlinkCorrection downlink_correction = DownlinkCorrection::on;
   CatPolicy cat_policy = CatPolicy::aos_only;
-  bool ft736_wide_fm = false;            // FM filter changed for a wider one (UO-22)
+  bool ft736_wide_fm = false;            // FM filter changed for a wider one (UO-22); YAESUw847 too
+  RigModel rig_model = RigModel::generic;
+  int cat_baud = 9600;                   // STATION.DAT line 4: 1200, 2400, 4800, 9600 or 19200
   MicClickConfig mic_click;
+  RadioParking parking;
 
   bool operator==(const RadioConfig&) const = default;
 };

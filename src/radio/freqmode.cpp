@@ -32,6 +32,10 @@ constexpr const char* kExpectFrequency =
     "a frequency in MHz such as 435.120, optionally with a converter offset as in "
     "2400.730/-2256.000";
 
+constexpr const char* kExpectUplink =
+    "a frequency in MHz such as 145.900, up to 4 separated by commas (no spaces), optionally with a "
+    "converter offset after the last as in 1268.100,1268.200/-1124.000";
+
 }  // namespace
 
 const char* freqmode_field_name(int field) {
@@ -43,6 +47,7 @@ const char* freqmode_field_name(int field) {
     case 5: return "uplink mode";
     case 6: return "Doppler mode";
     case 7: return "phase display";
+    case 8: return "reverse flag";
     default: return "line";
   }
 }
@@ -103,6 +108,24 @@ std::optional<FrequencyField> parse_frequency_field(std::string_view t) {
   return f;
 }
 
+std::optional<UplinkField> parse_uplink_field(std::string_view t) {
+  const std::size_t slash = t.find('/');
+  UplinkField u;
+  if (slash != std::string_view::npos) {
+    const auto o = parse_mhz(t.substr(slash + 1));
+    if (!o) return std::nullopt;
+    u.offset_hz = *o;
+  }
+  for (std::string_view channel : text::split(t.substr(0, slash), ',')) {
+    if (channel.empty() || channel.front() == '-' || u.rf_hz.size() == kMaxUplinkChannels) return std::nullopt;
+    const auto v = parse_mhz(channel);
+    if (!v) return std::nullopt;
+    u.rf_hz.push_back(*v);
+  }
+  if (u.rf_hz.empty()) return std::nullopt;
+  return u;
+}
+
 std::string format_mhz(Hz hz) {
   const bool negative = hz < 0;
   const Hz a = negative ? -hz : hz;
@@ -122,11 +145,15 @@ std::string format_freqmode_line(const FreqModeRecord& r) {
   const SatelliteRadio& s = r.radio;
   std::string line = r.name;
   line += " " + format_frequency_field(s.downlink_hz, s.downlink_offset_hz);
-  line += " " + format_frequency_field(s.uplink_hz, s.uplink_offset_hz);
+  std::string up = format_mhz(s.uplink_hz);
+  for (Hz alt : s.alternate_uplinks_hz) up += "," + format_mhz(alt);
+  if (s.uplink_offset_hz != 0) up += "/" + format_mhz(s.uplink_offset_hz);
+  line += " " + up;
   line += " " + lower(to_string(s.downlink_mode));
   line += " " + lower(to_string(s.uplink_mode));
   line += s.doppler == DopplerControl::mic_click ? " mic" : " cat";
   line += s.lcd_ma_display ? " ma" : " no";
+  if (s.reverse != ReverseAssignment::none) line += std::string(" ") + to_string(s.reverse);
   return line;
 }
 
@@ -158,14 +185,14 @@ FreqModeParse parse_freqmode(std::string_view text) {
     ++line_no;
 
     auto fields = split_fields(line);
-    if (fields.empty()) continue;
+    if (fields.empty() || fields.front().front() == ';') continue;  // blank, or a comment
     auto problem = [&](int field, std::string_view found, std::string expected) {
       result.problems.push_back({line_no, field, std::string(found), std::move(expected)});
     };
-    if (fields.size() != kFields) {
+    if (fields.size() != kFields && fields.size() != kFields + 1) {
       std::string expected = "7 fields (name, downlink MHz, uplink MHz, downlink mode, uplink mode, "
-                             "cat/mic, ma/no)";
-      if (fields.size() > kFields && fields.size() % kFields == 0)
+                             "cat/mic, ma/no) and an optional 8th, ir or kr";
+      if (fields.size() > kFields + 1 && fields.size() % kFields == 0)
         expected += "; this line looks like " + std::to_string(fields.size() / kFields) +
                     " records: put each on its own line";
       problem(0, std::to_string(fields.size()) + " fields", expected);
@@ -188,16 +215,17 @@ FreqModeParse parse_freqmode(std::string_view text) {
     } else {
       problem(2, fields[1], kExpectFrequency);
     }
-    if (auto f = parse_frequency_field(fields[2])) {
-      rec.radio.uplink_hz = f->rf_hz;
+    if (auto f = parse_uplink_field(fields[2])) {
+      rec.radio.uplink_hz = f->rf_hz.front();
+      rec.radio.alternate_uplinks_hz.assign(f->rf_hz.begin() + 1, f->rf_hz.end());
       rec.radio.uplink_offset_hz = f->offset_hz;
     } else {
-      problem(3, fields[2], kExpectFrequency);
+      problem(3, fields[2], kExpectUplink);
     }
     for (int k : {3, 4}) {
       auto m = parse_mode(fields[k]);
-      if (!m || *m == Mode::cw) {  // the file knows the manual's four modes only
-        problem(k + 1, fields[k], "usb, lsb, fm or none");
+      if (!m) {  // the 1994 manual's four modes, and cw of the later firmware
+        problem(k + 1, fields[k], "usb, lsb, fm, cw or none");
         continue;
       }
       (k == 3 ? rec.radio.downlink_mode : rec.radio.uplink_mode) = *m;
@@ -210,6 +238,12 @@ FreqModeParse parse_freqmode(std::string_view text) {
     if (phase == "ma") rec.radio.lcd_ma_display = true;
     else if (phase == "no") rec.radio.lcd_ma_display = false;
     else problem(7, fields[6], "ma or no");
+    if (fields.size() > kFields) {
+      const std::string flag = lower(fields[7]);
+      if (flag == "ir") rec.radio.reverse = ReverseAssignment::icom_main_sub;
+      else if (flag == "kr") rec.radio.reverse = ReverseAssignment::kenwood_vfo;
+      else problem(8, fields[7], "ir (Icom main/sub reversed), kr (Kenwood VFOs reversed) or nothing");
+    }
 
     if (result.problems.size() == before) result.records.push_back(std::move(rec));
   }

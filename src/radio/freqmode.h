@@ -1,14 +1,22 @@
 // The freq/mode file of menu 3-3: after a kepele upload TrakBox asks for one line per satellite,
 //
-//   NAME DOWN_MHZ UP_MHZ DOWN_MODE UP_MODE DOPPLER PHASE
+//   NAME DOWN_MHZ UP_MHZ DOWN_MODE UP_MODE DOPPLER PHASE [REVERSE]
 //   AO-13S 2400.730/-2256.000 435.620 usb lsb mic ma
 //
 // seven fields separated by spaces (tabs accepted), the name case-sensitive, a frequency with an
-// optional converter offset after '/', modes usb/lsb/fm/none, Doppler cat/mic, phase ma/no.
+// optional converter offset after '/', modes usb/lsb/fm/cw/none, Doppler cat/mic, phase ma/no.
 // Frequencies are converted from the decimal text exactly (no floating point).
 //
+// The same parser reads the later firmware's FREQ.DAT (v3.20d-3.50b), a superset:
+//   ; a comment line (blank lines are skipped too)
+//   FO-29 435.850 145.950,145.960,145.970,145.980 usb lsb cat no kr
+// up to four uplinks separated by commas (the first the default, the others kept as alternatives
+// in SatelliteRadio::alternate_uplinks_hz; an offset after the last applies to all), `cw` as a
+// mode, and an optional 8th field `ir`/`kr` (SatelliteRadio::reverse). A 1994 file reads as before.
+//
 // The parser reads the whole text and returns every record and every problem; it applies
-// nothing. The caller commits the records only when there are no problems (or chooses to).
+// nothing. A line with a problem gives no record; the other lines do. The callers (3-3, --data,
+// SIGHUP) apply the good records and report the problems with their line numbers.
 // One record per line: the manual's printed sample was flattened onto one line by OCR, which this
 // parser reports as a line of 112 fields rather than guessing where records end.
 #pragma once
@@ -30,7 +38,7 @@ struct FreqModeRecord {
 
 struct FreqModeProblem {
   int line = 0;            // 1-based
-  int field = 0;           // 1..7, 0 for the line as a whole
+  int field = 0;           // 1..8, 0 for the line as a whole
   std::string found;
   std::string expected;
   // "line 3, field 2 (downlink frequency): found "43x.1", expected ..."
@@ -59,6 +67,13 @@ struct FrequencyField {
 };
 // "2400.730/-2256.000" or "435.620". The RF part must not be negative; the offset may be.
 std::optional<FrequencyField> parse_frequency_field(std::string_view text);
+struct UplinkField {
+  std::vector<Hz> rf_hz;  // 1 to kMaxUplinkChannels, the default first
+  Hz offset_hz = 0;
+};
+// "145.900", "145.950,145.960,145.970,145.980" or "1268.100,1268.200/-1124.000": the FREQ.DAT
+// uplink field. nullopt when a channel is empty, negative or not a number, or there are more than 4.
+std::optional<UplinkField> parse_uplink_field(std::string_view text);
 
 // Hz to MHz text with at least three decimals and as many more as needed (up to six):
 // 435120000 -> "435.120", 435123450 -> "435.12345", -2256000000 -> "-2256.000".
@@ -66,7 +81,8 @@ std::string format_mhz(Hz hz);
 // "2400.730/-2256.000", or just "435.620" when the offset is zero.
 std::string format_frequency_field(Hz rf_hz, Hz offset_hz);
 
-// One line (without a line end) and a whole file ("\n" after each line, no Ctrl-Z).
+// One line (without a line end) and a whole file ("\n" after each line, no Ctrl-Z); alternative
+// uplinks and the ir/kr flag are written in the later firmware's form.
 std::string format_freqmode_line(const FreqModeRecord& r);
 std::string write_freqmode(const std::vector<FreqModeRecord>& records);
 

@@ -1,5 +1,8 @@
 #include "store/model.h"
 
+#include <algorithm>
+#include <iterator>
+
 #include <nlohmann/json.hpp>
 
 #include "store/json_fields.h"
@@ -117,11 +120,23 @@ orbit::Elements elements_from(const json& j, const std::string& w) {
   return e;
 }
 
+constexpr std::pair<radio::ReverseAssignment, const char*> kReverse[] = {
+    {radio::ReverseAssignment::none, "none"},
+    {radio::ReverseAssignment::icom_main_sub, "icom_main_sub"},
+    {radio::ReverseAssignment::kenwood_vfo, "kenwood_vfo"}};
+constexpr std::pair<radio::RigModel, const char*> kRigModel[] = {{radio::RigModel::generic, "generic"},
+                                                                 {radio::RigModel::kenwood_711, "kenwood_711"},
+                                                                 {radio::RigModel::yaesu_other, "yaesu_other"},
+                                                                 {radio::RigModel::yaesu_847, "yaesu_847"},
+                                                                 {radio::RigModel::yaesu_736, "yaesu_736"}};
+constexpr int kBauds[] = {1200, 2400, 4800, 9600, 19200};
+
 json radio_entry_json(const radio::SatelliteRadio& r) {
   return {{"downlink_hz", r.downlink_hz},     {"downlink_offset_hz", r.downlink_offset_hz},
           {"uplink_hz", r.uplink_hz},         {"uplink_offset_hz", r.uplink_offset_hz},
           {"downlink_mode", name_of(r.downlink_mode, kMode)}, {"uplink_mode", name_of(r.uplink_mode, kMode)},
-          {"doppler", name_of(r.doppler, kDoppler)},          {"lcd_ma_display", r.lcd_ma_display}};
+          {"doppler", name_of(r.doppler, kDoppler)},          {"lcd_ma_display", r.lcd_ma_display},
+          {"alternate_uplinks_hz", r.alternate_uplinks_hz},   {"reverse", name_of(r.reverse, kReverse)}};
 }
 
 radio::SatelliteRadio radio_entry_from(const json& j, const std::string& w) {
@@ -134,6 +149,19 @@ radio::SatelliteRadio radio_entry_from(const json& j, const std::string& w) {
   r.uplink_mode = named(j, w, "uplink_mode", kMode);
   r.doppler = named(j, w, "doppler", kDoppler);
   r.lcd_ma_display = boolean(j, w, "lcd_ma_display");
+  // The later firmware's FREQ.DAT fields: absent in state files written before them.
+  if (j.contains("alternate_uplinks_hz")) {
+    const json& a = j["alternate_uplinks_hz"];
+    const std::string wa = path(w, "alternate_uplinks_hz");
+    if (!a.is_array() || a.size() > static_cast<std::size_t>(radio::kMaxUplinkChannels - 1))
+      bad(wa, "expected a list of up to " + std::to_string(radio::kMaxUplinkChannels - 1) + " frequencies");
+    for (const auto& v : a) {
+      if (!v.is_number_integer() || v.get<long long>() < 0 || v.get<long long>() > kMaxHz)
+        bad(wa, "expected frequencies in Hz, 0 to " + std::to_string(kMaxHz));
+      r.alternate_uplinks_hz.push_back(v.get<long long>());
+    }
+  }
+  if (j.contains("reverse")) r.reverse = named(j, w, "reverse", kReverse);
   return r;
 }
 
@@ -183,13 +211,23 @@ json to_json(const Model& m) {
                 {"downlink_correction", name_of(rc.downlink_correction, kDown)},
                 {"cat_policy", name_of(rc.cat_policy, kPolicy)},
                 {"ft736_wide_fm", rc.ft736_wide_fm},
+                {"rig_model", name_of(rc.rig_model, kRigModel)},
+                {"cat_baud", rc.cat_baud},
+                {"parking",
+                 {{"enabled", rc.parking.enabled},
+                  {"rx_hz", rc.parking.rx_hz},
+                  {"tx_hz", rc.parking.tx_hz},
+                  {"rx_mode", name_of(rc.parking.rx_mode, kMode)},
+                  {"tx_mode", name_of(rc.parking.tx_mode, kMode)}}},
                 {"mic_click",
                  {{"centre_adc", rc.mic_click.centre_adc},
                   {"reference_adc", rc.mic_click.reference_adc},
                   {"step_hz", rc.mic_click.step_hz},
                   {"cat_at_aos", rc.mic_click.cat_at_aos},
                   {"auto_up_at_aos", rc.mic_click.auto_up_at_aos},
-                  {"polarity", name_of(rc.mic_click.polarity, kPolarity)}}}};
+                  {"polarity", name_of(rc.mic_click.polarity, kPolarity)},
+                  {"park_pulse_width_digit", rc.mic_click.park_pulse_width_digit},
+                  {"park_pulse_interval_digit", rc.mic_click.park_pulse_interval_digit}}}};
   json sats = json::array();
   for (const auto& s : m.db.satellites)
     sats.push_back({{"elements", elements_json(s.elements)}, {"radio", radio_entry_json(s.radio)}});
@@ -199,6 +237,10 @@ json to_json(const Model& m) {
   j["rotor_control"] = m.rotor_control;
   j["priority_mode"] = m.priority_mode;
   j["refresh"] = to_json(m.refresh);
+  j["pass_events"] = {{"rotor_start_el_deg", m.pass_events.rotor_start_el_deg},
+                      {"output_on_el_deg", m.pass_events.output_on_el_deg},
+                      {"output_off_el_deg", m.pass_events.output_off_el_deg}};
+  j["rotator_error_detection"] = m.rotator_error_detection;
   return j;
 }
 
@@ -280,6 +322,26 @@ radio::RadioConfig radio_from(const json& j) {
   c.mic_click.cat_at_aos = boolean(mc, wm, "cat_at_aos");
   c.mic_click.auto_up_at_aos = boolean(mc, wm, "auto_up_at_aos");
   c.mic_click.polarity = named(mc, wm, "polarity", kPolarity);
+  // The later firmware's STATION.DAT items: absent in state files written before them.
+  if (mc.contains("park_pulse_width_digit"))
+    c.mic_click.park_pulse_width_digit = static_cast<int>(integer(mc, wm, "park_pulse_width_digit", -1, 9));
+  if (mc.contains("park_pulse_interval_digit"))
+    c.mic_click.park_pulse_interval_digit = static_cast<int>(integer(mc, wm, "park_pulse_interval_digit", -1, 9));
+  if (r.contains("rig_model")) c.rig_model = named(r, w, "rig_model", kRigModel);
+  if (r.contains("cat_baud")) {
+    c.cat_baud = static_cast<int>(integer(r, w, "cat_baud", 1200, 19200));
+    if (std::find(std::begin(kBauds), std::end(kBauds), c.cat_baud) == std::end(kBauds))
+      bad(path(w, "cat_baud"), std::to_string(c.cat_baud) + " is not one of 1200, 2400, 4800, 9600, 19200");
+  }
+  if (r.contains("parking")) {
+    const std::string wp = w + ".parking";
+    const json& p = field(r, w, "parking");
+    c.parking.enabled = boolean(p, wp, "enabled");
+    c.parking.rx_hz = integer(p, wp, "rx_hz", 0, kMaxHz);
+    c.parking.tx_hz = integer(p, wp, "tx_hz", 0, kMaxHz);
+    c.parking.rx_mode = named(p, wp, "rx_mode", kMode);
+    c.parking.tx_mode = named(p, wp, "tx_mode", kMode);
+  }
   return c;
 }
 
@@ -325,6 +387,14 @@ Model model_from_json(const json& j) {
   m.priority_mode = boolean(j, "", "priority_mode");
   // Absent in state files written before the scheduled refresh existed.
   if (j.contains("refresh")) m.refresh = refresh_settings_from_json(j["refresh"], "refresh");
+  // Absent in state files written before the later firmware's STATION.DAT was read.
+  if (j.contains("pass_events")) {
+    const json& p = j["pass_events"];
+    m.pass_events.rotor_start_el_deg = num(p, "pass_events", "rotor_start_el_deg", -90, 90);
+    m.pass_events.output_on_el_deg = num(p, "pass_events", "output_on_el_deg", -90, 90);
+    m.pass_events.output_off_el_deg = num(p, "pass_events", "output_off_el_deg", -90, 90);
+  }
+  if (j.contains("rotator_error_detection")) m.rotator_error_detection = boolean(j, "", "rotator_error_detection");
   return m;
 }
 

@@ -16,6 +16,16 @@
 
 namespace tb::store {
 
+// Elevations at which things happen around a pass, from the later firmware's STATION.DAT line 5.
+// Stored; the tracker still starts the rotor and reports AOS at its fixed -2.0 deg and has no
+// output line (docs/menus/6-7-8.md, "STATION.DAT of the later firmware").
+struct PassEvents {
+  double rotor_start_el_deg = -2.0;  // the rotor starts following the satellite above this
+  double output_on_el_deg = -2.0;    // the AOS/LOS output line ("P16") goes active at AOS above this
+  double output_off_el_deg = -2.0;   // and inactive at LOS below this
+  bool operator==(const PassEvents&) const = default;
+};
+
 struct Model {
   station::StationConfig station;
   rotator::RotatorConfig rotator;
@@ -25,6 +35,10 @@ struct Model {
   bool rotor_control = false;                 // the E key
   bool priority_mode = false;                 // M: priority sub-mode
   RefreshSettings refresh;                    // menu 3-5: scheduled element refresh
+  PassEvents pass_events;                     // STATION.DAT line 5 of the later firmware
+  // STATION.DAT line 6 of the later firmware: a stalled rotator is declared in error (after
+  // rotator.stall_s). Stored; the controller's stall watch is always on.
+  bool rotator_error_detection = true;
 };
 
 // The factory defaults (menu 6-9 without a station file), with the shipped database when given.

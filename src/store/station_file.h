@@ -11,6 +11,24 @@
 // order. Lines 2 and 3 are ADC counts; line 5 is degrees although the manual's note says counts
 // (its own sample, "5 1 90 0 1 270 90 0 45", only makes sense in degrees: docs/menus/6-7-8.md).
 //
+// The later firmware (v3.20d-3.50b) reads seven lines, `;` comment lines and blank lines allowed:
+//
+//   1 CALL LAT LON HEIGHT S|N [BAUD]        + the COM port speed (station.com_baud)
+//   2 AZMIN AZMAX ELMIN ELMAX [F]           + F: flip mode (rotator.el_flip_allowed)
+//   3 AZ_DB EL_DB AZ_SKEW EL_SKEW           as 1994
+//   4 RIG FULL|AOS RXADDR TXADDR [BAUD]     RIG also KENWOOD711, YAESU_o, YAESU_847, YAESU_736,
+//                                           YAESUw736, YAESUw847 (radio.rig_model, ft736_wide_fm);
+//                                           + CAT baud (radio.cat_baud)
+//   5 PARK[m][n] PARK_AZ PARK_EL ROTOR_START_EL P16_ON_EL P16_OFF_EL
+//                                           parking, mic-click digits (radio.mic_click.park_*),
+//                                           park position, Model::pass_events
+//   6 PF RX_MHZ TX_MHZ RX_MODE TX_MODE TIMEOUT_S
+//                                           radio.parking, Model::rotator_error_detection,
+//                                           rotator.stall_s
+//   7 LIMIT AZMIN AZMAX ELMIN ELMAX         rotator limits (degrees; azimuth may wrap through North)
+//
+// The form is told by line 5 (7 items: later, 9: 1994), or else by lines numbered 6 or 7.
+//
 // The parser reads the whole text and reports every problem with its line and field, what it found
 // and what was expected; it applies nothing. apply_station_file() commits to a model only when the
 // result is a valid configuration as a whole.
@@ -24,10 +42,9 @@
 #include "radio/config.h"
 #include "rotator/config.h"
 #include "station/station.h"
+#include "store/model.h"
 
 namespace tb::store {
-
-struct Model;
 
 // What the five lines carry, in the configurations they belong to. Only the fields the lines name
 // are read (the others keep their defaults here) and only those are applied: line 1 is the station's
@@ -37,6 +54,13 @@ struct StationFile {
   station::StationConfig station;
   rotator::RotatorConfig rotator;
   radio::RadioConfig radio;
+  // The later firmware's seven-line file: what it carries beyond the 1994 lines.
+  bool later_firmware = false;
+  bool com_baud_given = false;   // line 1's optional BAUD
+  bool cat_baud_given = false;   // line 4's optional BAUD
+  bool wide_fm_given = false;    // line 4 named a Yaesu model (YAESU_736: standard filter, YAESUw736: wide)
+  PassEvents pass_events;        // line 5
+  bool rotator_error_detection = true;  // line 6
 
   bool operator==(const StationFile&) const = default;
 };
@@ -62,15 +86,18 @@ struct StationFileParse {
 StationFileParse parse_station_file(std::string_view text);
 
 // The name of item `field` of line `line` ("callsign", "Icom RX address", ...).
-std::string station_file_item_name(int line, int field);
+std::string station_file_item_name(int line, int field, bool later_firmware = false);
 
 // Applies the file to the model (station, rotator span/dead band/skew/parking/limits, radio rig,
-// F/A and Icom addresses) when the resulting rotator configuration passes rotator::validate; returns
-// its complaints otherwise, and then the model is unchanged. The COM port speed, presets, Doppler
-// corrections, mic-click values and the database are not in the file and are left as they are.
+// F/A and Icom addresses; from a later-firmware file also what its extra items set, above) when
+// the resulting rotator configuration passes rotator::validate; returns its complaints otherwise,
+// and then the model is unchanged. What the file does not carry (presets, Doppler corrections,
+// the mic-click ADC values, the database; the bauds when not given) is left as it is.
 std::vector<std::string> apply_station_file(const StationFile& f, Model& m);
 
 // The model's values as a station file (five lines, each ending in "\n"): what parse reads back.
 std::string write_station_file(const Model& m);
+// The same in the later firmware's seven-line form (a `;` comment first), with every item it has.
+std::string write_station_file_later(const Model& m);
 
 }  // namespace tb::store

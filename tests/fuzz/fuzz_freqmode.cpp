@@ -1,4 +1,5 @@
-// The freq/mode file of menu 3-3 (radio::parse_freqmode) and its field readers.
+// The freq/mode file of menu 3-3 (radio::parse_freqmode) and its field readers, the 1994 file and
+// the later firmware's FREQ.DAT (comments, up to four uplinks, ir/kr).
 // Properties: every problem names a field and has a message; the records of a clean parse come
 // back unchanged through write_freqmode (the file trakbox writes is one it reads); the MHz reader
 // and writer agree.
@@ -11,7 +12,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const auto r = radio::parse_freqmode(text);
   for (const auto& p : r.problems) {
     const std::string m = p.message();
-    TB_FUZZ_CHECK(!m.empty() && p.line >= 1 && p.field >= 0 && p.field <= 7, m);
+    TB_FUZZ_CHECK(!m.empty() && p.line >= 1 && p.field >= 0 && p.field <= 8, m);
     (void)radio::freqmode_field_name(p.field);
   }
   if (r.ok() && !r.records.empty()) {
@@ -41,6 +42,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const std::string back = radio::format_frequency_field(f->rf_hz, f->offset_hz);
         const auto g = radio::parse_frequency_field(back);
         TB_FUZZ_CHECK(g && g->rf_hz == f->rf_hz && g->offset_hz == f->offset_hz, std::string(w) + " -> " + back);
+      }
+      if (const auto u = radio::parse_uplink_field(w)) {
+        TB_FUZZ_CHECK(!u->rf_hz.empty() && u->rf_hz.size() <= radio::kMaxUplinkChannels, std::string(w));
+        for (const radio::Hz hz : u->rf_hz) TB_FUZZ_CHECK(hz >= 0, std::string(w));
       }
     }
     if (end == std::string_view::npos) break;

@@ -1,6 +1,7 @@
 // The station information file of menu 6-9 (store::parse_station_file, apply_station_file).
 // Properties: every problem has a message; a refused apply changes nothing; what
-// write_station_file makes of an applied file parses clean and applies (it rounds: %.3f, %g).
+// write_station_file makes of an applied file parses clean and applies (it rounds: %.3f, %g); so does
+// what write_station_file_later makes of an applied later-firmware (seven-line) file.
 #include "fuzz_station.h"
 #include "store/station_file.h"
 
@@ -19,6 +20,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string m = p.message();
     TB_FUZZ_CHECK(!m.empty(), m);
     (void)store::station_file_item_name(p.line, p.field);
+    (void)store::station_file_item_name(p.line, p.field, true);
   }
   TB_FUZZ_CHECK(r.ok() == r.file.has_value(), std::string(text));
   if (!r.file) return 0;
@@ -37,5 +39,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   TB_FUZZ_CHECK(again.ok(), why);
   store::Model m2 = store::factory_defaults();
   TB_FUZZ_CHECK(store::apply_station_file(*again.file, m2).empty(), why);
+  if (r.file->later_firmware) {
+    const std::string later = store::write_station_file_later(m);
+    const auto back = store::parse_station_file(later);
+    std::string why_later = later;
+    for (const auto& p : back.problems) why_later += p.message() + "\n";
+    TB_FUZZ_CHECK(back.ok() && back.file->later_firmware, why_later);
+    store::Model m3 = store::factory_defaults();
+    TB_FUZZ_CHECK(store::apply_station_file(*back.file, m3).empty(), why_later);
+  }
   return 0;
 }

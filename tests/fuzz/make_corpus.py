@@ -86,6 +86,14 @@ Checksum:           313
     put("freqmode", "shipped", freqmode)
     put("freqmode", "upload", lines(freqmode, 3).replace(b"\n", b"\r") + b"\x1a")
     put("freqmode", "offsets", b"AO-13S 2400.730/-2256.000 435.620 usb lsb mic ma\nRS-44 435.640 145.965 usb lsb cat no\n")
+    # The later firmware's files (issue 12), written from the format description.
+    firmware = os.path.join(ROOT, "tests", "data", "firmware")
+    put("freqmode", "firmware", read(os.path.join(firmware, "FREQ.DAT")))
+    put("freqmode", "firmware_bad", read(os.path.join(firmware, "FREQ_BAD.DAT")))
+    put("station_file", "firmware", read(os.path.join(firmware, "STATION.DAT")))
+    put("station_file", "firmware_bad", read(os.path.join(firmware, "STATION_BAD.DAT")))
+    put("station_file", "firmware_icom", b"1 W1AW 41.714 -72.727 30 S\n2 0 1023 0 511 F\n3 3 1 0 0\n"
+        b"4 ICOM FULL 2E 60 19200\n5 0 0 0 -2 -2 -2\n6 00 0 0 none none 3\n7 0 0 360 0 90\n")
     put("station_file", "shipped", station)
     put("station_file", "upload", station.replace(b"\n", b"\r\n") + b"\x1a")
     put("station_file", "north_kenwood", b"1 JA6FTL 33.5 130.4 10 N\n2 0 1023 0 1023\n3 2 2 -5 4\n4 KENWOOD F 00 00\n5 0 0 0 0 0 360 0 90\n")

@@ -154,7 +154,7 @@ TEST_CASE("Problems name the line, the field, what was found and what is expecte
       "LO-19 437.125 145.840 usb fm mic yes\n"     // phase
       "FO-20 435.910 145.850 usb fm cat\n"         // six fields
       "UO-22A 435.120 145.975 fm fm cat no\n"      // name again
-      "AO-13S 2400.730/-2256.0000001 435.620 cw lsb mic ma\n";  // two problems
+      "AO-13S 2400.730/-2256.0000001 435.620 am lsb mic ma\n";  // two problems
   auto p = parse_freqmode(text);
   REQUIRE(p.records.size() == 1);   // only the good line
   CHECK(p.records[0].name == "UO-22A");
@@ -167,7 +167,7 @@ TEST_CASE("Problems name the line, the field, what was found and what is expecte
         "as 435.120, optionally with a converter offset as in 2400.730/-2256.000");
   CHECK(p.problems[1].line == 3);
   CHECK(p.problems[1].field == 5);
-  CHECK(p.problems[1].expected == "usb, lsb, fm or none");
+  CHECK(p.problems[1].expected == "usb, lsb, fm, cw or none");  // cw: the later firmware's FREQ.DAT
   CHECK(p.problems[2].field == 6);
   CHECK(p.problems[2].expected == "cat or mic");
   CHECK(p.problems[3].field == 7);
@@ -181,7 +181,7 @@ TEST_CASE("Problems name the line, the field, what was found and what is expecte
   CHECK(p.problems[6].line == 8);
   CHECK(p.problems[6].field == 2);
   CHECK(p.problems[7].field == 4);
-  CHECK(p.problems[7].found == "cw");
+  CHECK(p.problems[7].found == "am");
 }
 
 TEST_CASE("Names are case-sensitive") {
