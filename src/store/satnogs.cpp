@@ -100,6 +100,7 @@ SatnogsImport import_satnogs(Database& db, std::string_view json_text, bool repl
     radio.downlink_offset_hz = 0;
     radio.uplink_hz = pick->up_low ? centre(*pick->up_low, pick->up_high) : 0;
     radio.uplink_offset_hz = 0;
+    radio.alternate_uplinks_hz.clear();  // the list has one uplink per transmitter
     const bool linear = pick->type == "Transponder" && pick->down_high && pick->up_high;
     if (linear) {
       radio.downlink_mode = radio::Mode::usb;
