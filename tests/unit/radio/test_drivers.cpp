@@ -78,6 +78,7 @@ struct Script {
   int opens = 0, closes = 0;
   bool gone = false;             // the port has gone away: check() and open() fail
   int checks = 0;
+  int at_gate = 0;               // set_frequency calls waiting for the gate
 };
 
 class ScriptedLink final : public RadioLink {
@@ -104,7 +105,9 @@ class ScriptedLink final : public RadioLink {
   }
   void set_frequency(Link l, Hz hz) override {
     std::unique_lock lock(s_.mu);
+    ++s_.at_gate;
     s_.cv.wait(lock, [&] { return s_.gate_open; });
+    --s_.at_gate;
     maybe_fail();
     if (hz < 0) throw std::invalid_argument("negative");
     s_.log.push_back(std::string(to_string(l)) + " " + std::to_string(hz));
@@ -148,7 +151,14 @@ TEST_CASE("Worker: calls return at once; an unsent frequency is replaced by a ne
   s.gate_open = false;
   auto radio = std::make_unique<WorkerRadio>(std::make_unique<ScriptedLink>(s), kFast);
   radio->set_downlink_frequency(1000);        // the worker takes this one and blocks in the link
-  CHECK(eventually([&] { return radio->status().pending == 1 && radio->status().connected; }));
+  // Wait until the worker is inside the link with 1000 (pending == 1 alone holds while it is still
+  // queued, and a newer frequency would then replace it: a busy machine made that race visible).
+  CHECK(eventually([&] {
+    std::lock_guard lock(s.mu);
+    return s.at_gate == 1;
+  }));
+  CHECK(radio->status().pending == 1);
+  CHECK(radio->status().connected);
   for (Hz f = 1010; f <= 1100; f += 10) radio->set_downlink_frequency(f);   // queue: one entry
   radio->set_uplink_frequency(2000);
   radio->send_raw("A;");
