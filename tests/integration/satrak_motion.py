@@ -164,11 +164,15 @@ def item_3_move_stop(c):
     rate = az_diff(azs[-1][1], azs[0][1]) / (azs[-1][0] - azs[0][0])
     # Steady: every 0.5 s window advances by 0.5 deg to within a count and a half; no pause, no
     # burst (the defect: held 0.8 s, then 1.8 deg in 0.5 s).
+    # A window in which this client was not scheduled for over 0.15 s between two samples says
+    # nothing about the antenna (a busy machine; the test suite runs beside other work): skipped.
     worst = (1e9, -1e9)
     for i, (t, a) in enumerate(azs):
         j = next((k for k in range(i, len(azs)) if azs[k][0] >= t + 0.5), None)
         if j is None:
             break
+        if any(azs[k + 1][0] - azs[k][0] > 0.15 for k in range(i, j)):
+            continue
         d = az_diff(azs[j][1], a) * 0.5 / (azs[j][0] - t)
         worst = (min(worst[0], d), max(worst[1], d))
     print(f"  MOVE=,1,0: {rate:.3f} deg/s over {azs[-1][0] - azs[0][0]:.1f} s; every 0.5 s window "
