@@ -139,7 +139,7 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
   t.clear();
   t.line("============ Realtime Tracking [" + format_date(start) + "] ============");
   t.line("'E' Toggle rotor control  'Y' RTC zero adjust  'Q' Return to main menu");
-  t.line("'+/-/0' Doppler compensation");
+  t.line("'+/-/0' Doppler compensation  'U' next uplink channel");
   std::optional<int> shown;
   bool was_in_range = false;       // the shown satellite was AOS on the last update
   orbit::UtcTime graphics_pass{};  // AOS of the pass last drawn (epoch: none)
@@ -205,6 +205,16 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
         s.clock.zero_seconds();
         s.model.clock_offset = s.clock.offset();
         save_or_report(t, s);
+        break;
+      case 'u':
+      case 'U':
+        // The later firmware's alternative uplinks (FREQ.DAT): the next channel, kept.
+        if (const auto up = s.station.next_uplink()) {
+          save_or_report(t, s);
+          t.line("Uplink " + radio::format_mhz(*up) + " MHz");
+        } else {
+          t.line("No other uplink for this satellite (FREQ.DAT lists up to four)");
+        }
         break;
       case '+':
       case '-':

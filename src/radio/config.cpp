@@ -60,4 +60,12 @@ const char* to_string(ReverseAssignment r) {
   return "";
 }
 
+bool SatelliteRadio::next_uplink() {
+  if (alternate_uplinks_hz.empty() || !has_uplink()) return false;
+  alternate_uplinks_hz.push_back(uplink_hz);
+  uplink_hz = alternate_uplinks_hz.front();
+  alternate_uplinks_hz.erase(alternate_uplinks_hz.begin());
+  return true;
+}
+
 }  // namespace tb::radio

@@ -53,6 +53,9 @@ struct SatelliteRadio {
 
   bool has_downlink() const { return downlink_hz > 0; }
   bool has_uplink() const { return uplink_hz > 0; }
+  // Steps to the next uplink channel: uplink_hz becomes the first alternative and goes to the end
+  // of the list, so repeated steps go round all of them. False (nothing changed) without any.
+  bool next_uplink();
   bool operator==(const SatelliteRadio&) const = default;
 };
 

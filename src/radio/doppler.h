@@ -102,6 +102,13 @@ class Tuner {
   void select(const SatelliteRadio& sat);
   const SatelliteRadio& satellite() const { return sat_; }
 
+  // The operator stepped to another uplink channel of the same satellite: the uplink is sent
+  // again on the next update; the downlink and the RIT stay.
+  void set_uplink(Hz uplink_hz) {
+    sat_.uplink_hz = uplink_hz;
+    sent_up_.reset();
+  }
+
   void rit_up() { rit_hz_ += kRitStepHz; }
   void rit_down() { rit_hz_ -= kRitStepHz; }
   void rit_zero() { rit_hz_ = 0; }

@@ -56,6 +56,14 @@ void StationLoop::follow_radio(int db_index, const orbit::Observation& obs) {
   if (obs.ok()) radio::apply(*radio_, tuner_.update(obs.look.el_deg, obs.look.range_rate_km_s));
 }
 
+std::optional<radio::Hz> StationLoop::next_uplink() {
+  if (!tuned_) return std::nullopt;
+  radio::SatelliteRadio& r = model_.db.satellites[static_cast<std::size_t>(*tuned_)].radio;
+  if (!r.next_uplink()) return std::nullopt;
+  tuner_.set_uplink(r.uplink_hz);
+  return r.uplink_hz;
+}
+
 rotator::AzEl StationLoop::point(rotator::AzEl compass) {
   tracker_.stop();
   const rotator::RotatorPosition p = rotator_->set_target(compass);

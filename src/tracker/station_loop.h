@@ -78,6 +78,11 @@ class StationLoop {
   // The program's last save of the state: failed (with the reason) or succeeded (nothing).
   void set_save_failure(std::optional<std::string> reason) { save_failure_ = std::move(reason); }
   const std::optional<std::string>& save_failure() const { return save_failure_; }
+  // The realtime display's U key (the later firmware's alternative uplinks): the satellite whose
+  // radio is tuned steps to its next uplink channel (stored, so it stays chosen). The new uplink
+  // frequency, or nothing when it has no alternatives or nothing is tuned.
+  std::optional<radio::Hz> next_uplink();
+
   // The scheduled element refresh, when the program has one (menu 3-5 and host mode use it).
   void set_refresh(ElementsRefresh* r) { refresh_ = r; }
   ElementsRefresh* refresh() const { return refresh_; }

@@ -72,6 +72,23 @@ TEST_CASE("The realtime display warns when the elements are past their orbit's l
                              "old (more than 14 for a low orbit): positions are unreliable\n") != std::string::npos);
 }
 
+TEST_CASE("Line mode: U steps the followed satellite's uplink through its FREQ.DAT channels") {
+  testing::MenuFixture f("\rUUQ");
+  f.term.timeouts_before_key = 2;
+  const int ao07 = *f.model.db.find("AO-07");
+  auto& radio = f.model.db.satellites[static_cast<std::size_t>(ao07)].radio;
+  const radio::Hz first = radio.uplink_hz;
+  radio.alternate_uplinks_hz = {first + 10'000, first + 20'000};
+  menus::menu_1_realtime_tracking(f.term, *f.services);
+  const std::string& out = f.term.output();
+  CHECK(out.find("'U' next uplink channel") != std::string::npos);
+  CHECK(out.find("Uplink " + radio::format_mhz(first + 10'000) + " MHz\n") != std::string::npos);
+  CHECK(out.find("Uplink " + radio::format_mhz(first + 20'000) + " MHz\n") != std::string::npos);
+  CHECK(radio.uplink_hz == first + 20'000);  // kept, and saved
+  CHECK(f.saves >= 2);
+  CHECK(f.station->tuner().satellite().uplink_hz == first + 20'000);
+}
+
 TEST_CASE("The realtime row matches the manual's columns") {
   tracker::SatNow n;
   n.obs.time = orbit::from_civil(1993, 7, 17, 4, 6, 58);

@@ -168,3 +168,20 @@ TEST_CASE("The writer gives the later form back: alternatives, offset after the 
     CHECK(again.records[i].radio == p.records[i].radio);
   }
 }
+
+TEST_CASE("Alternative uplinks: each step takes the next channel and goes round all of them") {
+  SatelliteRadio r;
+  r.uplink_hz = 145'935'000;
+  r.alternate_uplinks_hz = {145'945'000, 145'955'000};
+  CHECK(r.next_uplink());
+  CHECK(r.uplink_hz == 145'945'000);
+  CHECK(r.alternate_uplinks_hz == std::vector<Hz>{145'955'000, 145'935'000});
+  CHECK(r.next_uplink());
+  CHECK(r.uplink_hz == 145'955'000);
+  CHECK(r.next_uplink());
+  CHECK(r.uplink_hz == 145'935'000);  // round again
+  SatelliteRadio one;
+  one.uplink_hz = 145'990'000;
+  CHECK_FALSE(one.next_uplink());
+  CHECK(one.uplink_hz == 145'990'000);
+}
