@@ -2,10 +2,8 @@
 // The files in tests/data/firmware/ were written from the format description
 // (/work/shared/reference/element-data-2026.md, "TrakBox files of the later firmware").
 #include <doctest/doctest.h>
-#include "test_paths.h"  // TRAKBOX_SOURCE_DIR
+#include "support/data_files.h"
 
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "radio/freqmode.h"
@@ -14,13 +12,7 @@ using namespace tb::radio;
 
 namespace {
 
-std::string read_data(const char* name) {
-  std::ifstream in(std::string(TRAKBOX_SOURCE_DIR "/tests/data/firmware/") + name, std::ios::binary);
-  REQUIRE(in);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+std::string read_data(const char* name) { return tb::testing::read_test_data(std::string("firmware/") + name); }
 
 std::string problems_text(const FreqModeParse& p) {
   std::string s;
