@@ -546,8 +546,9 @@ std::string elements_ages(const std::vector<Elements>& sats, UtcTime at) {
   }
   double lo = 1e300, hi = -1e300;
   for (const Elements& e : sats) {
-    lo = std::min(lo, orbit::element_age(e, at).days);
-    hi = std::max(hi, orbit::element_age(e, at).days);
+    const double days = orbit::element_age(e, at).days;
+    lo = std::min(lo, days);
+    hi = std::max(hi, days);
   }
   return strprintf("elements of %zu satellites, age %.1f to %.1f days at the start\n", sats.size(), lo, hi);
 }
