@@ -18,6 +18,12 @@ std::string hexaddr(std::uint8_t a) {
 
 constexpr milliseconds kWriteSlack{1000};
 
+// A rig's standard serial settings at the configured speed (STATION.DAT line 4), when one is set.
+SerialSettings at_baud(SerialSettings s, int baud) {
+  if (baud > 0) s.baud = static_cast<unsigned>(baud);
+  return s;
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
@@ -28,6 +34,7 @@ IcomOptions IcomOptions::from(const RadioConfig& c) {
   o.band_select = c.icom_band_select;
   o.width = c.icom_four_byte_frequency ? icom::FrequencyWidth::four_bytes
                                        : icom::FrequencyWidth::five_bytes;
+  o.baud = c.cat_baud;
   return o;
 }
 
@@ -164,6 +171,7 @@ void KenwoodLink::send_raw(const std::string& bytes) { send(bytes); }
 YaesuOptions YaesuOptions::from(const RadioConfig& c) {
   YaesuOptions o;
   o.wide_fm = c.ft736_wide_fm;
+  o.baud = c.cat_baud;
   return o;
 }
 
@@ -219,16 +227,16 @@ void YaesuLink::send_raw(const std::string& raw) {
 
 // ---------------------------------------------------------------------------------------------
 std::unique_ptr<RadioDriver> make_icom_radio(const std::string& device, const IcomOptions& o, WorkerTiming t) {
-  return std::make_unique<WorkerRadio>(std::make_unique<IcomLink>(device, o), t);
+  return std::make_unique<WorkerRadio>(std::make_unique<IcomLink>(device, o, at_baud(icom_serial(), o.baud)), t);
 }
 
 std::unique_ptr<RadioDriver> make_kenwood_radio(const std::string& device, const KenwoodOptions& o,
                                                 WorkerTiming t) {
-  return std::make_unique<WorkerRadio>(std::make_unique<KenwoodLink>(device, o), t);
+  return std::make_unique<WorkerRadio>(std::make_unique<KenwoodLink>(device, o, at_baud(kenwood_serial(), o.baud)), t);
 }
 
 std::unique_ptr<RadioDriver> make_yaesu_radio(const std::string& device, const YaesuOptions& o, WorkerTiming t) {
-  return std::make_unique<WorkerRadio>(std::make_unique<YaesuLink>(device, o), t);
+  return std::make_unique<WorkerRadio>(std::make_unique<YaesuLink>(device, o, at_baud(yaesu_serial(), o.baud)), t);
 }
 
 }  // namespace tb::radio

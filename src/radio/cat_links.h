@@ -28,6 +28,7 @@ struct IcomOptions {
   bool expect_reply = true;      // (never for the broadcast address 00)
   int max_attempts = 4;          // collisions: tries before giving up
   milliseconds collision_wait{60};   // times the attempt number
+  int baud = 0;                  // the port's speed; 0: CI-V's standard 1200 (icom_serial)
   static IcomOptions from(const RadioConfig& c);
 };
 
@@ -60,7 +61,12 @@ struct KenwoodOptions {
   // Downlink on VFO A (FA), uplink on VFO B (FB). A mode is set on its VFO with FN, then FN0
   // selects the receive VFO again.
   milliseconds command_gap{0};    // pause after each command
-  static KenwoodOptions from(const RadioConfig&) { return {}; }
+  int baud = 0;                   // the port's speed; 0: the standard 4800 (kenwood_serial)
+  static KenwoodOptions from(const RadioConfig& c) {
+    KenwoodOptions o;
+    o.baud = c.cat_baud;
+    return o;
+  }
 };
 
 class KenwoodLink final : public RadioLink {
@@ -84,6 +90,7 @@ struct YaesuOptions {
   milliseconds byte_gap{50};      // between the bytes of a command (and after each command)
   bool satellite_mode = true;     // full duplex: downlink = satellite RX, uplink = satellite TX
   bool wide_fm = false;           // menu 6-7: FM filter changed for a wider one -> downlink FM-N (88)
+  int baud = 0;                   // the port's speed; 0: the standard 4800 (yaesu_serial)
   static YaesuOptions from(const RadioConfig& c);
 };
 

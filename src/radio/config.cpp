@@ -40,6 +40,18 @@ const char* to_string(Rig r) {
   return "NONE";
 }
 
+int standard_cat_baud(Rig r) {
+  switch (r) {
+    case Rig::icom: return 1200;
+    case Rig::kenwood:
+    case Rig::yaesu: return 4800;
+    case Rig::none: break;
+  }
+  return 0;
+}
+
+int effective_cat_baud(const RadioConfig& c) { return c.cat_baud > 0 ? c.cat_baud : standard_cat_baud(c.rig); }
+
 const char* to_string(RigModel m) {
   switch (m) {
     case RigModel::kenwood_711: return "TS-711";

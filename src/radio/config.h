@@ -25,7 +25,8 @@ enum class DopplerControl { cat, mic_click };
 const char* to_string(DopplerControl d);            // "CAT", "Mic-click"
 
 // The later firmware's FREQ.DAT `ir` / `kr` flag: for this satellite the two radios (Icom main/sub)
-// or VFOs (Kenwood) swap their downlink/uplink roles. Stored; the CAT drivers do not act on it yet.
+// or VFOs (Kenwood) swap their downlink/uplink roles: Tuner::update swaps the two links' commands
+// when menu 6-7's rig is the family the flag names (an Icom for `ir`, a Kenwood for `kr`).
 enum class ReverseAssignment { none, icom_main_sub, kenwood_vfo };
 const char* to_string(ReverseAssignment r);         // "", "ir", "kr"
 
@@ -69,6 +70,12 @@ const char* to_string(Rig r);                       // "NONE", "KENWOOD", "YAESU
 enum class RigModel { generic, kenwood_711, yaesu_other, yaesu_847, yaesu_736 };
 const char* to_string(RigModel m);                  // "", "TS-711", "other", "FT-847", "FT-736"
 
+// The speed TrakBox's CAT port runs at for a rig unless told otherwise: Icom CI-V 1200, Kenwood and
+// Yaesu 4800 (0 for none). effective_cat_baud: the configured speed, or else the standard one.
+int standard_cat_baud(Rig r);
+struct RadioConfig;
+int effective_cat_baud(const RadioConfig& c);
+
 // Downlink correction Y / N / R. Reverse is for a down-converter with a high-side local
 // oscillator: the Doppler correction is applied in the opposite direction at the radio.
 enum class DownlinkCorrection { off, on, reverse };
@@ -101,8 +108,8 @@ struct MicClickConfig {
   bool operator==(const MicClickConfig&) const = default;
 };
 
-// The later firmware's STATION.DAT line 6: after LOS the radios are tuned to these frequencies and
-// modes. Stored; nothing tunes them yet (the station loop does not park radios).
+// The later firmware's STATION.DAT line 6: after LOS the radios are tuned to these frequencies
+// (radio frequencies: no converter offset) and modes, until the next AOS (Tuner::update).
 struct RadioParking {
   bool enabled = false;
   Hz rx_hz = 0;
@@ -127,7 +134,9 @@ struct RadioConfig {
   CatPolicy cat_policy = CatPolicy::aos_only;
   bool ft736_wide_fm = false;            // FM filter changed for a wider one (UO-22); YAESUw847 too
   RigModel rig_model = RigModel::generic;
-  int cat_baud = 9600;                   // STATION.DAT line 4: 1200, 2400, 4800, 9600 or 19200
+  // The native CAT port's speed (STATION.DAT line 4): 1200, 2400, 4800, 9600 or 19200, or 0 for the
+  // rig's standard speed (standard_cat_baud).
+  int cat_baud = 0;
   MicClickConfig mic_click;
   RadioParking parking;
 

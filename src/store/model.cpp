@@ -329,9 +329,10 @@ radio::RadioConfig radio_from(const json& j) {
     c.mic_click.park_pulse_interval_digit = static_cast<int>(integer(mc, wm, "park_pulse_interval_digit", -1, 9));
   if (r.contains("rig_model")) c.rig_model = named(r, w, "rig_model", kRigModel);
   if (r.contains("cat_baud")) {
-    c.cat_baud = static_cast<int>(integer(r, w, "cat_baud", 1200, 19200));
-    if (std::find(std::begin(kBauds), std::end(kBauds), c.cat_baud) == std::end(kBauds))
-      bad(path(w, "cat_baud"), std::to_string(c.cat_baud) + " is not one of 1200, 2400, 4800, 9600, 19200");
+    c.cat_baud = static_cast<int>(integer(r, w, "cat_baud", 0, 19200));
+    if (c.cat_baud != 0 && std::find(std::begin(kBauds), std::end(kBauds), c.cat_baud) == std::end(kBauds))
+      bad(path(w, "cat_baud"),
+          std::to_string(c.cat_baud) + " is not one of 1200, 2400, 4800, 9600, 19200 (0: the rig's standard)");
   }
   if (r.contains("parking")) {
     const std::string wp = w + ".parking";

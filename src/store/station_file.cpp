@@ -656,7 +656,8 @@ std::string write_station_file_later(const Model& m) {
   std::snprintf(buf, sizeof buf, "3 %d %d %d %d\n", r.az_dead_band, r.el_dead_band, r.az_skew, r.el_skew);
   out += buf;
   out += "4 " + rig_name(rc) + (rc.cat_policy == radio::CatPolicy::full_orbit ? " FULL" : " AOS");
-  std::snprintf(buf, sizeof buf, " %02X %02X %d\n", rc.icom_rx_address, rc.icom_tx_address, rc.cat_baud);
+  const int baud = radio::effective_cat_baud(rc);
+  std::snprintf(buf, sizeof buf, " %02X %02X %d\n", rc.icom_rx_address, rc.icom_tx_address, baud > 0 ? baud : 9600);
   out += buf;
   std::string park = r.parking_enabled ? "1" : "0";
   if (rc.mic_click.park_pulse_width_digit >= 0) {
