@@ -1,6 +1,7 @@
 #include "radio/doppler.h"
 
 #include <cmath>
+#include <utility>
 
 namespace tb::radio {
 
@@ -72,7 +73,7 @@ void Tuner::resend() {
   sent_up_mode_.reset();
 }
 
-TuneCommands Tuner::update(double elevation_deg, double rr) {
+TuneCommands Tuner::compute(double elevation_deg, double rr) {
   const Corrections corr = Corrections::from(config_);
   tuning_ = compute_tuning(sat_, corr, rr, rit_hz_);
 
@@ -127,6 +128,39 @@ TuneCommands Tuner::update(double elevation_deg, double rr) {
            cmd.uplink_mode);
   }
   return cmd;
+}
+
+// The later firmware's additions around compute(): the radio parking of STATION.DAT line 6 and the
+// FREQ.DAT `ir`/`kr` swap of the two radios (Icom main/sub) or VFOs (Kenwood).
+TuneCommands Tuner::update(double elevation_deg, double rr) {
+  const bool was_up = was_aos_.value_or(true);  // the first tick below the horizon parks too
+  TuneCommands cmd = compute(elevation_deg, rr);
+  const RadioParking& park = config_.parking;
+  if (park.enabled && !at_aos(elevation_deg)) {
+    // From LOS to the next AOS the radios sit on the parking frequencies: one set of commands at
+    // the LOS edge, nothing after it (the AOS edge sends the satellite's frequencies and modes again).
+    TuneCommands out;
+    if (was_up) {
+      if (park.rx_mode != Mode::none) out.downlink_mode = park.rx_mode;
+      if (park.rx_hz > 0) out.downlink_hz = park.rx_hz;
+      if (park.tx_mode != Mode::none) out.uplink_mode = park.tx_mode;
+      if (park.tx_hz > 0) out.uplink_hz = park.tx_hz;
+      resend();
+    }
+    parked_ = true;
+    return out;
+  }
+  parked_ = false;
+  if (reversed()) {
+    std::swap(cmd.downlink_hz, cmd.uplink_hz);
+    std::swap(cmd.downlink_mode, cmd.uplink_mode);
+  }
+  return cmd;
+}
+
+bool Tuner::reversed() const {
+  return (sat_.reverse == ReverseAssignment::icom_main_sub && config_.rig == Rig::icom) ||
+         (sat_.reverse == ReverseAssignment::kenwood_vfo && config_.rig == Rig::kenwood);
 }
 
 }  // namespace tb::radio

@@ -114,7 +114,14 @@ class Tuner {
   void rit_zero() { rit_hz_ = 0; }
   Hz rit_hz() const { return rit_hz_; }
 
+  // The commands of one tick. With radio parking on (RadioConfig::parking, the later firmware's
+  // STATION.DAT line 6), from LOS (or a first tick below the horizon) to the next AOS the radios get
+  // the parking frequencies and modes once and nothing else. With the satellite's FREQ.DAT `ir` on
+  // an Icom rig, or `kr` on a Kenwood rig (menu 6-7), the two links swap radios (main/sub) or VFOs:
+  // the downlink's commands go to the uplink's radio and the other way round.
   TuneCommands update(double elevation_deg, double range_rate_km_s);
+  bool parked() const { return parked_; }    // the last update was between LOS and AOS, parking on
+  bool reversed() const;                     // the links swap radios for this satellite and rig
 
   // Forget what was sent, e.g. after the radio link reconnected: the next update sends again.
   void resend();
@@ -124,8 +131,11 @@ class Tuner {
   std::optional<Hz> last_sent_uplink_hz() const { return sent_up_; }
 
  private:
+  TuneCommands compute(double elevation_deg, double range_rate_km_s);  // update() without the two above
+
   RadioConfig config_;
   SatelliteRadio sat_;
+  bool parked_ = false;
   Hz rit_hz_ = 0;
   Tuning tuning_;
   std::optional<bool> was_aos_;
