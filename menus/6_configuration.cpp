@@ -116,6 +116,9 @@ std::vector<std::string> configuration_lines(const store::Model& m) {
                     (rc.cat_policy == radio::CatPolicy::aos_only ? " AOS" : " Full");
   if (rc.rig == radio::Rig::icom) cat += fmt("  RX:%02XH TX:%02XH", rc.icom_rx_address, rc.icom_tx_address);
   if (rc.rig == radio::Rig::yaesu && rc.ft736_wide_fm) cat += "  FT-736 wide FM";
+  // The later firmware's STATION.DAT items: shown only when set, so the manual's screen is unchanged.
+  if (rc.rig_model != radio::RigModel::generic) cat += std::string("  ") + radio::to_string(rc.rig_model);
+  if (rc.cat_baud > 0) cat += fmt("  %d Bd", rc.cat_baud);
   out.push_back(label("CAT Rig") + cat);
   const char* down = rc.downlink_correction == radio::DownlinkCorrection::on        ? "Y"
                      : rc.downlink_correction == radio::DownlinkCorrection::reverse ? "R"
@@ -126,8 +129,23 @@ std::vector<std::string> configuration_lines(const store::Model& m) {
   out.push_back(label("Frequency step") + fmt("%lld Hz", static_cast<long long>(mc.step_hz)));
   out.push_back(label("Mic click at AOS") + "CAT:" + yn(mc.cat_at_aos) + " Up pulse:" + yn(mc.auto_up_at_aos) +
                 " Polarity:" + (mc.polarity == radio::PulsePolarity::normal ? "Normal" : "Reverse"));
-  out.push_back(label("Rotor start") + station::to_string(st.rotor_start));
+  const store::PassEvents& pe = m.pass_events;
+  const store::PassEvents factory;
+  out.push_back(label("Rotor start") + station::to_string(st.rotor_start) +
+                (pe.rotor_start_el_deg != factory.rotor_start_el_deg ? "  above EL:" + cfg::fmt1(pe.rotor_start_el_deg)
+                                                                     : ""));
   out.push_back(label("COM port") + fmt("%d Baud 8-N-1", st.com_baud));
+  if (rc.parking.enabled) {
+    auto link = [](radio::Hz hz, radio::Mode mode) {
+      return (hz > 0 ? fmt("%.3f", static_cast<double>(hz) / 1e6) : std::string("-")) + " " + radio::to_string(mode);
+    };
+    out.push_back(label("Radio parking") + "On  RX:" + link(rc.parking.rx_hz, rc.parking.rx_mode) +
+                  " TX:" + link(rc.parking.tx_hz, rc.parking.tx_mode));
+  }
+  if (pe.output_on_el_deg != factory.output_on_el_deg || pe.output_off_el_deg != factory.output_off_el_deg)
+    out.push_back(label("AOS/LOS line") + "On above EL:" + cfg::fmt1(pe.output_on_el_deg) +
+                  "  Off below EL:" + cfg::fmt1(pe.output_off_el_deg));
+  if (!m.rotator_error_detection) out.push_back(label("Rotator error") + "Detection off");
   return out;
 }
 

@@ -730,3 +730,22 @@ TEST_CASE("6-9 the station file round trip through the menu") {
   CHECK(f.model.radio == m.radio);
   CHECK(f.model.station.callsign == "WA7GXD");
 }
+
+TEST_CASE("6-0 shows the later firmware's items only when they differ from the factory values") {
+  store::Model m = store::factory_defaults();
+  const auto factory = menus::configuration_lines(m);
+  CHECK(factory.size() == 13);   // the manual's screen
+  m.radio.rig = radio::Rig::yaesu;
+  m.radio.rig_model = radio::RigModel::yaesu_847;
+  m.radio.cat_baud = 9600;
+  m.pass_events = {-1.5, 0.5, -0.5};
+  m.radio.parking = {true, 145'800'000, 0, radio::Mode::fm, radio::Mode::none};
+  m.rotator_error_detection = false;
+  const auto lines = menus::configuration_lines(m);
+  REQUIRE(lines.size() == 16);
+  CHECK(lines[6] == "CAT Rig          YAESU AOS  FT-847  9600 Bd");
+  CHECK(lines[11] == "Rotor start      " + std::string(station::to_string(m.station.rotor_start)) + "  above EL:-1.5");
+  CHECK(lines[13] == "Radio parking    On  RX:145.800 FM TX:- None");
+  CHECK(lines[14] == "AOS/LOS line     On above EL:0.5  Off below EL:-0.5");
+  CHECK(lines[15] == "Rotator error    Detection off");
+}
