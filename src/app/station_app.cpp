@@ -10,7 +10,9 @@
 #include <boost/asio/steady_timer.hpp>
 #include <algorithm>
 #include <csignal>
+#include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <sstream>
 
 #include <spdlog/spdlog.h>
@@ -19,6 +21,7 @@
 #include "satrak/unit.h"
 #include "station/clock.h"
 #include "store/database.h"
+#include "store/station_file.h"
 #include "tracker/elements_refresh.h"
 #include "tracker/station_loop.h"
 
@@ -34,15 +37,44 @@ std::string read_text(const std::string& path) {
   ss << in.rdbuf();
   return ss.str();
 }
+
+// The first of `names` that exists in data_dir ("" when none does).
+std::string data_file(const std::string& data_dir, std::initializer_list<const char*> names) {
+  for (const char* name : names) {
+    const std::string path = data_dir + "/" + name;
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(path, ec)) return path;
+  }
+  return {};
+}
+
+// The freq/mode file: freqmode.txt, else the later firmware's FREQ.DAT (either form reads).
+std::string freqmode_file(const std::string& data_dir) {
+  const std::string found = data_file(data_dir, {"freqmode.txt", "FREQ.DAT", "freq.dat"});
+  return found.empty() ? data_dir + "/freqmode.txt" : found;
+}
+
 }  // namespace
 
 store::Model defaults_with_data(const std::string& data_dir, std::vector<std::string>& notes) {
   store::Model m = store::factory_defaults();
   const auto sets = orbit::load_elements_file(data_dir + "/amateur.tle");
   for (const auto& p : sets.problems) notes.push_back(p.message());
-  const auto fm = radio::parse_freqmode(read_text(data_dir + "/freqmode.txt"));
-  for (const auto& p : fm.problems) notes.push_back(data_dir + "/freqmode.txt: " + p.message());
+  const std::string fm_path = freqmode_file(data_dir);
+  const auto fm = radio::parse_freqmode(read_text(fm_path));
+  for (const auto& p : fm.problems) notes.push_back(fm_path + ": " + p.message());
   m.db = store::make_database(sets.sets, fm.records);
+  // The operator's station file as the firmware named it (1994 or later form), as a 6-9 upload
+  // would apply it: all of it or, when it has a problem, none of it. (The shipped station.txt is
+  // the manual's sample for 6-9, not a station: it is not read here.)
+  if (const std::string path = data_file(data_dir, {"STATION.DAT", "station.dat"}); !path.empty()) {
+    const store::StationFileParse parsed = store::parse_station_file(read_text(path));
+    std::vector<std::string> problems;
+    if (parsed.ok()) problems = store::apply_station_file(*parsed.file, m);
+    for (const auto& p : parsed.problems) problems.push_back(p.message());
+    for (const auto& p : problems) notes.push_back(path + ": " + p);
+    if (!problems.empty()) notes.push_back(path + ": not used; the station keeps the factory settings");
+  }
   return m;
 }
 
@@ -222,7 +254,7 @@ bool StationApp::Impl::reread_data(const std::string& data_dir) {
   // As the scheduled refresh does: newer sets of the same catalog numbers, the database's names kept.
   const store::RefreshReport report = store::apply_refresh(model.db, parsed.sets);
   log->info("SIGHUP: {} element set(s) updated from {} ({})", report.updated.size(), path, report.summary());
-  const std::string fm_path = data_dir + "/freqmode.txt";
+  const std::string fm_path = freqmode_file(data_dir);
   const auto fm = radio::parse_freqmode(read_text(fm_path));
   for (const auto& problem : fm.problems) log->warn("SIGHUP: {}: {}", fm_path, problem.message());
   if (!fm.records.empty()) {

@@ -112,28 +112,50 @@ def freq_3_3(ui, state_file):
     check(data["station"]["callsign"] == "JA6FTL", "3-3 left the station of 6-9 alone")
 
 
-def freq_data_dir():
-    """FREQ.DAT as the freqmode.txt of a --data directory, on a fresh start."""
+def fresh_start(files):
+    """A fresh start on a --data directory holding amateur.tle and `files` ({name in the
+    directory: test file}); returns (the saved state, what trakbox printed)."""
     data_dir = tempfile.mkdtemp(prefix="trakbox-fwdata-")
     state_dir = tempfile.mkdtemp(prefix="trakbox-fwstate-")
     try:
         shutil.copy(os.path.join(w.DATA, "amateur.tle"), data_dir)
-        shutil.copy(os.path.join(FW, "FREQ.DAT"), os.path.join(data_dir, "freqmode.txt"))
+        for name, source in files.items():
+            shutil.copy(os.path.join(FW, source), os.path.join(data_dir, name))
         r = subprocess.run([BIN, "--state", state_dir, "--data", data_dir, "--line", "--satrak-port", "0",
                             "--clock", CLOCK], stdin=subprocess.DEVNULL, capture_output=True, timeout=60)
         check(r.returncode == 0, f"trakbox --data: exit {r.returncode} {r.stderr[-500:]!r}")
-        data = load_state(os.path.join(state_dir, "trakbox-state.json"))
-        iss = radio_of(data, "ISS")
-        check(iss["alternate_uplinks_hz"] == [145_825_000, 145_800_000, 437_800_000] and
-              iss["reverse"] == "icom_main_sub", f"--data: ISS {iss}")
-        ao91 = radio_of(data, "AO-91")
-        check((ao91["uplink_hz"], ao91["alternate_uplinks_hz"], ao91["uplink_offset_hz"]) ==
-              (1_268_100_000, [1_268_200_000], -1_124_000_000), f"--data: AO-91 {ao91}")
-        names = [data["db"]["satellites"][i]["elements"]["name"] for i in data["db"]["selected"]]
-        check(names[:3] == ["ISS", "FO-29", "QO-100"], f"--data: the tracking list in the file's order {names}")
+        return load_state(os.path.join(state_dir, "trakbox-state.json")), (r.stdout + r.stderr).decode(errors="replace")
     finally:
         shutil.rmtree(data_dir, ignore_errors=True)
         shutil.rmtree(state_dir, ignore_errors=True)
+
+
+def freq_data_dir():
+    """FREQ.DAT as the freqmode.txt of a --data directory, on a fresh start."""
+    data, _ = fresh_start({"freqmode.txt": "FREQ.DAT"})
+    iss = radio_of(data, "ISS")
+    check(iss["alternate_uplinks_hz"] == [145_825_000, 145_800_000, 437_800_000] and
+          iss["reverse"] == "icom_main_sub", f"--data: ISS {iss}")
+    ao91 = radio_of(data, "AO-91")
+    check((ao91["uplink_hz"], ao91["alternate_uplinks_hz"], ao91["uplink_offset_hz"]) ==
+          (1_268_100_000, [1_268_200_000], -1_124_000_000), f"--data: AO-91 {ao91}")
+    names = [data["db"]["satellites"][i]["elements"]["name"] for i in data["db"]["selected"]]
+    check(names[:3] == ["ISS", "FO-29", "QO-100"], f"--data: the tracking list in the file's order {names}")
+
+
+def firmware_names_data_dir():
+    """The firmware's own file names in a --data directory: FREQ.DAT (no freqmode.txt) and
+    STATION.DAT, applied on a fresh start; a STATION.DAT with a problem is not used and said so."""
+    data, _ = fresh_start({"FREQ.DAT": "FREQ.DAT", "STATION.DAT": "STATION.DAT"})
+    check(radio_of(data, "ISS")["reverse"] == "icom_main_sub", "--data: FREQ.DAT read under its own name")
+    st, rc = data["station"], data["radio"]
+    check((st["callsign"], st["lat_deg"], st["rotor_start"], rc["rig_model"], rc["cat_baud"]) ==
+          ("JA6FTL", 33.59, "north", "yaesu_847", 4800), f"--data: STATION.DAT applied {st} {rc}")
+    check(data["pass_events"]["rotor_start_el_deg"] == -1.5, f"--data: line 5 {data['pass_events']}")
+    bad, err = fresh_start({"STATION.DAT": "STATION_BAD.DAT"})
+    check(bad["station"]["callsign"] != "JA6FTL" and bad["radio"]["cat_baud"] == 0,
+          f"--data: a bad STATION.DAT changes nothing {bad['station']}")
+    check("STATION.DAT: not used" in err, f"--data: the bad STATION.DAT is reported: {err[-800:]!r}")
 
 
 def main():
@@ -149,6 +171,7 @@ def main():
     finally:
         s.close()
     freq_data_dir()
+    firmware_names_data_dir()
 
 
 if __name__ == "__main__":
