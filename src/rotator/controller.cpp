@@ -416,12 +416,12 @@ void Controller::jog_pulse(AxisLoop& l, AxisCommand& cmd, orbit::UtcTime now, do
     cmd.run_for_s = std::min(cmd.run_for_s, run);
 }
 
-// Sends one axis's decision to an ADC rotator: the stall watch first (driven stall_s without the
-// reading changing: stopped and reported), then the drive with its run-for capped by the watchdog.
+// Sends one axis's decision to an ADC rotator: the stall watch first when error detection is on
+// (driven stall_s without the reading changing: stopped and reported), then the drive with its run-for capped by the watchdog.
 void Controller::apply_adc(AdcRotator& adc, Axis a, AxisCommand cmd, int raw, orbit::UtcTime now) {
   AxisLoop& l = loop(a);
   const RotatorConfig& c = model_.config();
-  if (cmd.drive != Drive::stop && l.cmd != Drive::stop && l.driven_still_s >= c.stall_s &&
+  if (error_detection_ && cmd.drive != Drive::stop && l.cmd != Drive::stop && l.driven_still_s >= c.stall_s &&
       rate_cps(a) * c.stall_s >= 3.0) {
     l.stalled = true;
     cmd = {};

@@ -124,6 +124,12 @@ class Controller {
   bool control_enabled() const { return status_.control_enabled; }
   void toggle_control() { set_control_enabled(!control_enabled()); }
 
+  // Rotator error detection (the later firmware's STATION.DAT line 6, second digit): on, an axis
+  // driven stall_s without its reading changing is stopped and reported; off, it is driven on (for a
+  // rotator whose sensor lags or sticks) and only the drive watchdog bounds each pulse.
+  void set_error_detection(bool on) { error_detection_ = on; }
+  bool error_detection() const { return error_detection_; }
+
   // The control step. Call from the event loop once a second or faster; `now` only moves forward
   // (a step back counts as no time passed).
   void tick(orbit::UtcTime now);
@@ -174,6 +180,7 @@ class Controller {
   std::unique_ptr<RotatorDriver> driver_;
   ControllerOptions opt_;
   Status status_;
+  bool error_detection_ = true;
   AxisLoop az_, el_;
   std::optional<Counts> raw_;
   std::optional<orbit::UtcTime> last_tick_;

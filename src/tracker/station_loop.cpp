@@ -14,6 +14,7 @@ StationLoop::StationLoop(store::Model& model, const station::Clock& clock, Track
       radio_(std::move(radio)),
       tuner_(model.radio) {
   rotator_->set_control_enabled(model_.rotor_control);
+  rotator_->set_error_detection(model_.rotator_error_detection);
 }
 
 void StationLoop::set_rotor_control(bool on) {
@@ -27,6 +28,7 @@ void StationLoop::reconfigure() {
   find_remote_in_database();  // the database may have changed too
   rotator_->set_config(model_.rotator, model_.station.rotor_start);
   rotator_->set_control_enabled(model_.rotor_control);
+  rotator_->set_error_detection(model_.rotator_error_detection);
   tuner_.set_config(model_.radio);
   tuned_.reset();  // frequencies may have changed: select the satellite again
 }

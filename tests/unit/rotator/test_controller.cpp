@@ -259,6 +259,24 @@ TEST_CASE("An axis that cannot reach its count is stopped and reported stalled")
   CHECK_FALSE(rig.ctl->status().az.stalled);
 }
 
+TEST_CASE("Rotator error detection off (STATION.DAT line 6): an axis that cannot reach its count is driven on, never declared stalled") {
+  RotatorConfig c;
+  SimulatedRotatorParams p = SimulatedRotatorParams::matching(c);
+  p.az_counts_at_cw = 1000.0;
+  Rig rig(c, RotorStart::north, {340.0, 0.0}, p);
+  rig.ctl->set_error_detection(false);
+  rig.ctl->set_target(RotatorPosition{359.0, 0.0});
+  rig.idle(15s);
+  const Status& s = rig.ctl->status();
+  CHECK_FALSE(s.az.stalled);
+  CHECK(s.az.motion != Drive::stop);  // still driven against the stop, pulse by pulse
+  CHECK(s.message.find("stalled") == std::string::npos);
+  // Switched back on, the stall watch takes it from there.
+  rig.ctl->set_error_detection(true);
+  rig.idle(15s);
+  CHECK(rig.ctl->status().az.stalled);
+}
+
 TEST_CASE("Monitor line in the manual's format") {
   CHECK(format_monitor_line(519, 32.8, 462, 90.0) == "AZ= 519 / 32.8deg EL= 462 / 90.0deg.");
   CHECK(format_monitor_line(926, 199.7, 431, 84.0) == "AZ= 926 / 199.7deg EL= 431 / 84.0deg.");
