@@ -17,8 +17,9 @@
 namespace tb::store {
 
 // Elevations at which things happen around a pass, from the later firmware's STATION.DAT line 5.
-// Stored; the tracker still starts the rotor and reports AOS at its fixed -2.0 deg and has no
-// output line (docs/menus/6-7-8.md, "STATION.DAT of the later firmware").
+// The tracker starts the rotor at rotor_start_el_deg; AOS is still reported at the manual's -2.0 deg,
+// and the output line's elevations are stored and shown only: trakbox has no such line to drive
+// (docs/menus/6-7-8.md, "STATION.DAT of the later firmware").
 struct PassEvents {
   double rotor_start_el_deg = -2.0;  // the rotor starts following the satellite above this
   double output_on_el_deg = -2.0;    // the AOS/LOS output line ("P16") goes active at AOS above this
@@ -37,7 +38,7 @@ struct Model {
   RefreshSettings refresh;                    // menu 3-5: scheduled element refresh
   PassEvents pass_events;                     // STATION.DAT line 5 of the later firmware
   // STATION.DAT line 6 of the later firmware: a stalled rotator is declared in error (after
-  // rotator.stall_s). Stored; the controller's stall watch is always on.
+  // rotator.stall_s): the controller's stall watch (off: Controller::set_error_detection).
   bool rotator_error_detection = true;
 };
 

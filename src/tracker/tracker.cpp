@@ -139,10 +139,20 @@ Decision Tracker::tick() {
   for (const auto& c : candidates_)
     if (d.followed && c.db_index == *d.followed) f = &c;
 
-  if (f && f->in_range) {
+  // The rotor follows above the rotor start elevation (the later firmware's STATION.DAT line 5;
+  // factory -2.0, the AOS rule). Up but below it, the antenna waits where the pass rises while the
+  // satellite climbs, and stays where it is once it sets.
+  const double rotor_start_el = model_.pass_events.rotor_start_el_deg;
+  if (f && f->in_range && f->obs.look.el_deg >= rotor_start_el) {
     d.antenna = Decision::Antenna::point;
     d.az_deg = f->obs.look.az_deg;
     d.el_deg = f->obs.look.el_deg;
+  } else if (f && f->in_range) {
+    if (f->pass && t < f->pass->tca) {
+      d.antenna = Decision::Antenna::preposition;
+      d.az_deg = f->pass->aos_az_deg;
+      d.el_deg = 0.0;
+    }
   } else {
     // Nobody up: move ahead of time to the soonest AOS among the candidates, else park.
     const SatNow* next = nullptr;

@@ -60,6 +60,56 @@ TEST_CASE("Single tracking decides point / pre-position / park from the satellit
   CHECK(t.tick().antenna == tracker::Decision::Antenna::park);
 }
 
+TEST_CASE("The rotor follows above the rotor start elevation: waits at AOS while the satellite climbs, stays once it sets") {
+  store::Model m = shipped(station::RotorStart::south, 27.391, 128.657, 50.0);
+  const auto iss = m.db.find("ISS");
+  REQUIRE(iss);
+  station::ManualClock clock(orbit::from_civil(2026, 5, 21, 12, 0, 0));
+  tracker::Tracker t(m, clock);
+  t.track_single(*iss);
+  // The first pass of the day that climbs above 20 deg.
+  std::optional<orbit::Pass> found;
+  for (int k = 0; k < 12 && !found; ++k) {
+    t.tick();
+    REQUIRE(t.followed());
+    REQUIRE(t.followed()->pass);
+    const orbit::Pass p = *t.followed()->pass;
+    if (p.max_el_deg > 20.0) found = p;
+    clock.set(orbit::add_minutes(p.los, 1.0));
+  }
+  REQUIRE(found);
+  const orbit::Pass pass = *found;
+  // The later firmware's STATION.DAT line 5: start the rotor at half the pass's height (10 deg at most).
+  m.pass_events.rotor_start_el_deg = std::min(10.0, pass.max_el_deg / 2.0);
+  using A = tracker::Decision::Antenna;
+  int waited = 0, pointed = 0, held = 0;
+  for (orbit::UtcTime when = orbit::add_minutes(pass.aos, 0.1); when < pass.los; when = orbit::add_minutes(when, 0.25)) {
+    clock.set(when);
+    const auto d = t.tick();
+    const auto look = t.followed()->obs.look;
+    CAPTURE(look.el_deg);
+    if (look.el_deg >= m.pass_events.rotor_start_el_deg) {
+      CHECK(d.antenna == A::point);
+      CHECK(d.az_deg == doctest::Approx(look.az_deg));
+      ++pointed;
+    } else if (when < pass.tca) {
+      CHECK(d.antenna == A::preposition);  // climbing to the start elevation: waits where the pass rises
+      CHECK(d.az_deg == doctest::Approx(pass.aos_az_deg));
+      ++waited;
+    } else {
+      CHECK(d.antenna == A::hold);  // set below it: the antenna stays where it was
+      ++held;
+    }
+  }
+  CHECK(waited > 0);
+  CHECK(pointed > 0);
+  CHECK(held > 0);
+  // The factory value -2.0 is the AOS rule: the whole pass is followed.
+  m.pass_events.rotor_start_el_deg = -2.0;
+  clock.set(orbit::add_minutes(pass.aos, 0.1));
+  CHECK(t.tick().antenna == A::point);
+}
+
 TEST_CASE("The clock set back (menu 5): the pass shown is the one then, not the one found from later") {
   store::Model m = shipped(station::RotorStart::south, 27.391, 128.657, 50.0);
   const auto iss = m.db.find("ISS");
