@@ -91,4 +91,16 @@ std::optional<T> parse_integer(std::string_view s) {
   return v;
 }
 
+// Appends `value` as printf's "%W.Pf" would write it (right-aligned in `width` columns, `precision`
+// decimals), without printf: std::to_chars is specified to give printf's characters in the C
+// locale (exact value, rounded to nearest), so output does not change, only its cost (the
+// propagate command writes seven numbers per line).
+inline void append_fixed(std::string& out, double value, int width, int precision) {
+  char buf[400];  // DBL_MAX has 309 integer digits; with a sign, the point and 40 decimals it fits
+  const auto r = std::to_chars(buf, buf + sizeof buf, value, std::chars_format::fixed, precision);
+  const std::size_t n = r.ec == std::errc() ? static_cast<std::size_t>(r.ptr - buf) : 0;
+  if (static_cast<int>(n) < width) out.append(static_cast<std::size_t>(width) - n, ' ');
+  out.append(buf, n);
+}
+
 }  // namespace tb::text
