@@ -10,8 +10,16 @@
 
 namespace tb::orbit::detail {
 
+namespace {
+// A UTF-8 byte-order mark opens a file; files joined with `cat` carry one at the start of a line
+// inside, where it is as meaningless (a name that began with one would not be the same name).
+std::string_view without_bom(std::string_view line) {
+  if (line.starts_with("\xEF\xBB\xBF")) line.remove_prefix(3);
+  return line;
+}
+}  // namespace
+
 std::vector<TextLine> split_lines(std::string_view text) {
-  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
   if (const auto z = text.find('\x1a'); z != std::string_view::npos) text = text.substr(0, z);
   std::vector<TextLine> lines;
   std::size_t start = 0;
@@ -19,11 +27,11 @@ std::vector<TextLine> split_lines(std::string_view text) {
   for (std::size_t i = 0; i < text.size(); ++i) {
     const char c = text[i];
     if (c != '\n' && c != '\r') continue;
-    lines.push_back({text.substr(start, i - start), number++});
+    lines.push_back({without_bom(text.substr(start, i - start)), number++});
     if (c == '\r' && i + 1 < text.size() && text[i + 1] == '\n') ++i;
     start = i + 1;
   }
-  if (start < text.size()) lines.push_back({text.substr(start), number});
+  if (start < text.size()) lines.push_back({without_bom(text.substr(start)), number});
   return lines;
 }
 

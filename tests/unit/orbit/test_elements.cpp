@@ -122,6 +122,27 @@ TEST_CASE("NASA: three-line forms, CRLF, trailing blanks, comments and text afte
   CHECK(noaa.epoch_year == 2018);
 }
 
+TEST_CASE("NASA: files joined with cat keep a byte-order mark inside; it is dropped from every line, never part of a name") {
+  const std::string bom = "\xEF\xBB\xBF";
+  const std::string text = bom + "ISS (ZARYA)\n" + kIss1 + "\n" + kIss2 + "\n" + bom + "ISS AGAIN\n" + kIss1 + "\n" + kIss2 +
+                           "\n" + bom + kIss1 + "\n" + kIss2 + "\n";
+  const ParseResult r = parse_nasa(text, "joined.txt");
+  CHECK(r.problems.empty());
+  REQUIRE(r.sets.size() == 3);
+  CHECK(r.sets[0].name == "ISS (ZARYA)");
+  CHECK(r.sets[1].name == "ISS AGAIN");
+  CHECK(r.sets[2].name.empty());
+  // Found by fuzz_elements: a name line "<BOM>1 07530..." was a name on reading but, written first
+  // in a file, its mark became the file's and the line read back as a line 1. Now it is a line 1 on
+  // reading too (a broken one, reported), and the set after it is read unnamed.
+  const ParseResult odd = parse_nasa("# x\n" + bom + "1 07530oderate drag case\n" + kIss1 + "\n" + kIss2 + "\n", "odd.txt");
+  REQUIRE(odd.sets.size() == 1);
+  CHECK(odd.sets[0].name.empty());
+  REQUIRE(odd.problems.size() == 1);
+  CHECK(odd.problems[0].line == 2);
+  MESSAGE(odd.problems[0].message());
+}
+
 TEST_CASE("NASA: implied-decimal exponent fields") {
   // The same ISS line with other nddot/6 and BSTAR texts; checksums recomputed.
   auto with = [](std::string_view nddot, std::string_view bstar) {
