@@ -433,7 +433,7 @@ void Controller::apply_adc(AdcRotator& adc, Axis a, AxisCommand cmd, int raw, or
     if (l.cmd != Drive::stop) adc.drive(a, Drive::stop, {});
     l.cmd = Drive::stop;
   } else {
-    const double max_s = std::chrono::duration<double>(opt_.watchdog).count();
+    const double max_s = std::chrono::duration<double>(opt_.watchdog).count() * std::max(1.0, opt_.clock_rate);
     const double run = std::clamp(cmd.run_for_s, 1e-6, max_s);
     adc.drive(a, cmd.drive, micros(run));
     l.cmd = cmd.drive;

@@ -67,6 +67,11 @@ struct ControllerOptions {
   // Longest a drive line stays on without a tick renewing it (a watchdog: if the event loop stalls
   // the motors stop). Must exceed the tick interval.
   std::chrono::milliseconds watchdog{2500};
+  // The clock's rate (--clock-rate): the event loop ticks in clock time, but the watchdog guards
+  // against a loop stalled in wall time, so a drive may last watchdog * clock_rate of clock time
+  // (at 100x a 120-degree slew is one 20 s pulse, renewed each tick, never cut short by a tick
+  // that came a few wall milliseconds late).
+  double clock_rate = 1.0;
   // Degree rotators: an unchanged target is sent again this often while the rotator sits idle
   // outside the dead band (a command lost on the way).
   std::chrono::milliseconds resend{2000};
