@@ -66,7 +66,7 @@ std::optional<radio::Hz> StationLoop::next_uplink() {
 
 rotator::AzEl StationLoop::point(rotator::AzEl compass) {
   tracker_.stop();
-  const rotator::RotatorPosition p = rotator_->set_target(compass);
+  const rotator::RotatorPosition p = rotator_->set_target(compass, rotator::Controller::Piece::containing);
   wake();
   return rotator::AzEl{rotator_->model().compass_from_travel(p.az_travel), p.el};
 }
@@ -92,8 +92,12 @@ const rotator::PassPlan* StationLoop::plan_for(const SatNow& s) {
   }
   const auto& st = rotator_->status();
   const std::optional<double> travel = st.has_position ? std::optional(st.az.travel) : std::nullopt;
-  planned_ = PlannedPass{s.db_index, s.pass->aos,
-                         rotator::plan_pass(track, rotator::PassGeometry::from(rotator_->model()), travel)};
+  // Limits that split the travel and may be crossed: the planner may choose the other piece only
+  // between passes (this one has not begun); the antenna crosses while it pre-positions.
+  const bool before_aos = clock_.now() < s.pass->aos;
+  const auto g = rotator::PassGeometry::from(rotator_->model(), before_aos, model_.pass_events.rotor_start_el_deg);
+  planned_ = PlannedPass{s.db_index, s.pass->aos, rotator::plan_pass(track, g, travel)};
+  if (planned_->plan.geometry.piece != rotator_->model().az_piece()) rotator_->select_az_piece(planned_->plan.geometry.piece);
   return &planned_->plan;
 }
 
