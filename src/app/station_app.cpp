@@ -18,6 +18,7 @@
 #include <spdlog/spdlog.h>
 
 #include "radio/freqmode.h"
+#include "rotator/split_travel.h"
 #include "satrak/unit.h"
 #include "station/clock.h"
 #include "store/database.h"
@@ -74,6 +75,8 @@ store::Model defaults_with_data(const std::string& data_dir, std::vector<std::st
     for (const auto& p : parsed.problems) problems.push_back(p.message());
     for (const auto& p : problems) notes.push_back(path + ": " + p);
     if (!problems.empty()) notes.push_back(path + ": not used; the station keeps the factory settings");
+    else if (const auto w = rotator::split_travel_warning(m.rotator, m.station.rotor_start))
+      notes.push_back(path + ": " + *w);
   }
   return m;
 }

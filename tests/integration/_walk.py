@@ -477,7 +477,11 @@ def walk_6_4(ui):
     answer(ui, r"Azimuth maximum value : 360\.0 ", "340\r", "6-4")
     answer(ui, r"Elevation minmum value : 0\.0 ", "\r", "6-4")
     answer(ui, r"Elevation maximum value : 90\.0 ", "60\r", "6-4")
+    # The factory South start: 0..340 holds the rotor stop, the limits split the travel (issue 21).
+    ui.prompt(r"Limits split the travel: cross them between passes \? \[Y/N\] ")
+    ui.send("N\r")
     out = ui.prompt(UPDATE)
+    must(out, r"keeps to the one it is in", "6-4 says what is reachable when limits split the travel")
     must_not(since(out, "Set Antenna Parking position"), r"Not changed", "the manual's 6-4 example is valid")
     # A whole that does not hold together is refused, nothing changed.
     ui.send("4\r")
