@@ -517,6 +517,21 @@ TEST_CASE("Menu 6 scripts: the keys typed, what the screen shows, what the model
          CHECK(f.station->tuner().config() == f.model.radio);
        }},
 
+      {.name = "6-9 with limits that split the travel: loaded, and the warning says what is reachable",
+       .keys = std::string("9\rYY") +
+               "1 WA7GXD 32.259 -110.778 842 S\r2 3 1017 5 454\r3 5 3 0 0\r4 ICOM A 10 14\r"
+               "5 1 90 0 1 10 350 0 80\r\x1aQ\r",
+       .shown = {"Station file loaded. Verify it with 6-0 (Display all configured value).\n"
+                 "Limits split the travel: with the rotor stop at 180.0 (South start) the\n"
+                 "  antenna can reach 180.0-350.0 or 10.0-180.0, and keeps to the one it is in,\n"
+                 "  as the limits bar the excluded 350.0-10.0 between them. A pass is followed\n"
+                 "  as far as that piece allows; the schedule says how much.\n"},
+       .saves = 2,
+       .then = [](Fixture& f, const store::Model&) {
+         CHECK(f.model.rotator.az_limit_min == 10);
+         CHECK_FALSE(f.model.rotator.cross_limit_sector);
+       }},
+
       {.name = "6-9 with an error on line 4 applies nothing of the file",
        .keys = std::string("9\rYY") +
                "1 WA7GXD 32.259 -110.778 842 S\r2 3 1017 5 454\r3 5 3 0 0\r4 ICOM X 10 14\r"
