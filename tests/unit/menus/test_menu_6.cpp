@@ -242,26 +242,6 @@ TEST_CASE("Menu 6 scripts: the keys typed, what the screen shows, what the model
          CHECK(std::abs(f.truth().el - 45) <= kElTol);
        }},
 
-      {.name = "6-4 with limits that split the travel, as barriers: the warning says what is reachable",
-       .keys = "4\rN" "Y\r10\r350\r\r\rN\rQ\r",
-       .shown = {"Limits split the travel: cross them between passes ? [Y/N] N\n"
-                 "Limits split the travel: with the rotor stop at 180.0 (South start) the\n"
-                 "  antenna can reach 180.0-350.0 or 10.0-180.0, and keeps to the one it is in,\n"
-                 "  as the limits bar the excluded 350.0-10.0 between them. A pass is followed\n"
-                 "  as far as that piece allows; the schedule says how much.\n"},
-       .saves = 1,
-       .then = [](Fixture& f, const store::Model&) {
-         CHECK_FALSE(f.model.rotator.cross_limit_sector);
-         CHECK(menus::configuration_lines(f.model)[4] == "Rotator limit    On  AZ:10.0-350.0 EL:0.0-90.0");
-       }},
-      {.name = "6-4 does not ask about crossing when the limits leave one piece",
-       .keys = "4\rN" "Y\r270\r90\r\r\rQ\r",
-       .saves = 1,
-       .then = [](Fixture& f, const store::Model&) {
-         CHECK(f.term.output().find("Limits split") == std::string::npos);
-         CHECK(f.model.rotator.az_limit_min == 270);
-       }},
-
       // 6-4 refuses limits that leave nowhere to go; N switches parking and limits off.
       {.name = "6-4 refuses limits that leave nowhere to go",
        .keys = "4\rN" "Y\r\r\r50\r40\rQ\r",
@@ -515,21 +495,6 @@ TEST_CASE("Menu 6 scripts: the keys typed, what the screen shows, what the model
          CHECK(f.model.clock_offset == std::chrono::seconds(42));
          CHECK(f.station->rotator().config() == f.model.rotator);
          CHECK(f.station->tuner().config() == f.model.radio);
-       }},
-
-      {.name = "6-9 with limits that split the travel: loaded, and the warning says what is reachable",
-       .keys = std::string("9\rYY") +
-               "1 WA7GXD 32.259 -110.778 842 S\r2 3 1017 5 454\r3 5 3 0 0\r4 ICOM A 10 14\r"
-               "5 1 90 0 1 10 350 0 80\r\x1aQ\r",
-       .shown = {"Station file loaded. Verify it with 6-0 (Display all configured value).\n"
-                 "Limits split the travel: with the rotor stop at 180.0 (South start) the\n"
-                 "  antenna can reach 180.0-350.0 or 10.0-180.0, and keeps to the one it is in,\n"
-                 "  as the limits bar the excluded 350.0-10.0 between them. A pass is followed\n"
-                 "  as far as that piece allows; the schedule says how much.\n"},
-       .saves = 2,
-       .then = [](Fixture& f, const store::Model&) {
-         CHECK(f.model.rotator.az_limit_min == 10);
-         CHECK_FALSE(f.model.rotator.cross_limit_sector);
        }},
 
       {.name = "6-9 with an error on line 4 applies nothing of the file",
