@@ -342,6 +342,7 @@ def main():
     passes = {}  # (sat, pass start) -> [worst error, time, sat az/el, antenna az/el, samples, max el]
     prev_followed, switch_at, pass_start = None, None, {}
     rows = []
+    beyond = []  # inside the limits and the piece, yet beyond the dead band plus the slew lag
     for t, a, e in samples:
         followed = None
         for k, tr in enumerate(tracks):
@@ -361,6 +362,14 @@ def main():
         if sel < 10.0:
             continue
         err_deg = pointing_error(a, e, saz, sel)
+        # What the dead band and the slew lag allow: the factory dead band plus the ADC's flooring
+        # (4 counts of azimuth at 0.352 deg, 2 of elevation at 0.176 deg), and the satellite's
+        # motion in 2.2 s: the tracker re-targets every second of clock time while the antenna is on
+        # target, rotctld's `p` reports the position of the controller's last tick (up to 1 s old),
+        # and 0.2 s for the motor's spin-up and the reading's time.
+        saz2, sel2 = tracks[k].at(t + datetime.timedelta(seconds=1))
+        rate = pointing_error(saz, sel, saz2, sel2)
+        allowed = math.hypot(4 * 360.0 / 1023 * math.cos(math.radians(sel)), 2 * 90.0 / 511) + 2.2 * rate
         if not (in_sector(saz, lo, hi) and sel <= ehi):
             cat = "satellite outside the limits"
         elif len(pieces) > 1 and piece_index(pieces, saz) != piece_index(pieces, a):
@@ -370,6 +379,8 @@ def main():
         else:
             cat = "inside limits, same piece"
         cats[cat].append(err_deg)
+        if cat == "inside limits, same piece" and err_deg > allowed:
+            beyond.append((t, tracks[k].name, saz, sel, a, e, err_deg, allowed))
         key = (tracks[k].name, pass_start[k])
         p = passes.setdefault(key, [0.0, None, None, None, 0, 0.0, cat])
         p[4] += 1
@@ -377,7 +388,7 @@ def main():
         if err_deg > p[0]:
             p[0], p[1], p[2], p[3], p[6] = err_deg, t, (saz, sel), (a, e), cat
         rows.append((t.isoformat(), tracks[k].name, f"{saz:.2f}", f"{sel:.2f}", f"{a:.2f}", f"{e:.2f}",
-                     f"{err_deg:.3f}", cat))
+                     f"{err_deg:.3f}", f"{allowed:.3f}", cat))
 
     # parking: the antenna at rest within 1 deg of the parking position, counted once per arrival
     parks, at_park = 0, False
@@ -419,6 +430,12 @@ def main():
     for (name, start), p in sorted(passes.items(), key=lambda kv: -kv[1][0])[:12]:
         print(f"    {name:7s} pass from {start:%H:%M:%S} (max el {p[5]:4.1f}, {p[4]} samples): worst {p[0]:6.2f} at "
               f"{p[1]:%H:%M:%S} satellite {p[2][0]:.1f}/{p[2][1]:.1f} antenna {p[3][0]:.1f}/{p[3][1]:.1f} ({p[6]})")
+    n_inside = len(cats["inside limits, same piece"])
+    print(f"  inside the limits and the piece: {n_inside - len(beyond)} of {n_inside} samples within the dead band "
+          f"plus the slew lag (dead band and ADC flooring, 4 az / 2 el counts, + 2.2 s of the satellite's motion)")
+    for b in beyond[:10]:
+        print(f"    beyond: {b[0]:%H:%M:%S} {b[1]} satellite {b[2]:.1f}/{b[3]:.1f} antenna {b[4]:.1f}/{b[5]:.1f}: "
+              f"{b[6]:.2f} > {b[7]:.2f} deg")
     inside = [p for p in passes.values() if p[6] == "inside limits, same piece"]
     print(f"  passes whose worst sample is inside the limits and the same piece: {len(inside)}, their worst "
           f"{max((p[0] for p in inside), default=0):.2f} deg")
@@ -429,7 +446,7 @@ def main():
     if args.keep:
         with open(os.path.join(work, "samples.csv"), "w", newline="") as f:
             w = csv.writer(f)
-            w.writerow(["utc", "sat", "sat_az", "sat_el", "ant_az", "ant_el", "error_deg", "category"])
+            w.writerow(["utc", "sat", "sat_az", "sat_el", "ant_az", "ant_el", "error_deg", "allowed_deg", "category"])
             w.writerows(rows)
         print(f"  kept {work} (state/, samples.csv)")
     else:
