@@ -341,9 +341,14 @@ def main():
             "within 60 s after a switch of satellite": []}
     passes = {}  # (sat, pass start) -> [worst error, time, sat az/el, antenna az/el, samples, max el]
     prev_followed, switch_at, pass_start = None, None, {}
+    ant_piece = None  # the antenna's piece: at the rotor stop (a piece boundary) the one it was in
+
     rows = []
     beyond = []  # inside the limits and the piece, yet beyond the dead band plus the slew lag
+    stop = 0.0 if args.start == "north" else 180.0
     for t, a, e in samples:
+        if len(pieces) > 1 and min(abs(a - stop), 360.0 - abs(a - stop)) > 0.5:
+            ant_piece = piece_index(pieces, a)
         followed = None
         for k, tr in enumerate(tracks):
             saz, sel = tr.at(t)
@@ -372,7 +377,7 @@ def main():
         allowed = math.hypot(4 * 360.0 / 1023 * math.cos(math.radians(sel)), 2 * 90.0 / 511) + 2.2 * rate
         if not (in_sector(saz, lo, hi) and sel <= ehi):
             cat = "satellite outside the limits"
-        elif len(pieces) > 1 and piece_index(pieces, saz) != piece_index(pieces, a):
+        elif len(pieces) > 1 and piece_index(pieces, saz) != ant_piece:
             cat = "other piece of a split travel"
         elif switch_at is not None and (t - switch_at).total_seconds() <= 60.0:
             cat = "within 60 s after a switch of satellite"
