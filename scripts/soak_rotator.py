@@ -5,7 +5,8 @@ the antenna polled through rotctld ~4 times a second and the radio through rigct
 for a number of SIMULATED hours. It reports:
 
   * RSS and open descriptors of trakbox over time (every 30 s of wall time);
-  * antenna readings outside the limits;
+  * antenna readings outside the limits (with --cross, those in the excluded azimuth sector are
+    counted apart: the antenna crosses it between passes);
   * the pointing error against `trakbox schedule` while the satellite the tracker follows is above
     10 deg (median, 95th percentile, worst with its pass), split by why an error can be large:
     the satellite outside the limits (azimuth in the excluded sector, elevation above the maximum),
@@ -337,6 +338,12 @@ def main():
     pieces = pieces_of(args.start, lo, hi)
     outside = [(t, a, e) for t, a, e in samples
                if not (in_sector(a, lo - 0.5, hi + 0.5) and elo - 0.2 <= e <= ehi + 0.2)]
+    # With --cross the limits are pointing limits only: the antenna passes through the excluded
+    # azimuth sector when it moves to the other piece between passes (elevation is still a limit).
+    transit = []
+    if args.cross and len(pieces) > 1:
+        transit = [x for x in outside if elo - 0.2 <= x[2] <= ehi + 0.2]
+        outside = [x for x in outside if x not in transit]
     cats = {"inside limits, same piece": [], "satellite outside the limits": [], "other piece of a split travel": [],
             "within 60 s after a switch of satellite": []}
     passes = {}  # (sat, pass start) -> [worst error, time, sat az/el, antenna az/el, samples, max el]
@@ -424,6 +431,9 @@ def main():
           + (f" (first {outside[0]})" if outside else ""))
     if outside:
         failed.append(f"{len(outside)} readings outside the limits")
+    if args.cross and len(pieces) > 1:
+        print(f"  readings in the excluded azimuth sector while crossing between pieces: {len(transit)}"
+              + "".join(f"\n    {t:%H:%M:%S} {a:.1f}/{e:.1f}" for t, a, e in transit[:10]))
     print(f"  pieces of travel: {', '.join(f'{a:g}-{b:g}' for a, b in pieces)}")
     print("  pointing error while the followed satellite is above 10 deg (deg):")
     allv = [v for vs in cats.values() for v in vs]
