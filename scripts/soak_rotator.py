@@ -65,8 +65,8 @@ def parse_iso(text):
 # way store::StateFile does (CRC-32 of the compact, key-sorted data).
 
 def make_state(state_dir, args):
-    p = subprocess.Popen([BIN, "--service", "--state", state_dir, "--data", os.path.join(SOURCE, "data"), "--satrak-port", "0"],
-                         stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    p = subprocess.Popen([BIN, "--service", "--state", state_dir, "--data", os.path.join(SOURCE, "data"),
+                          "--satrak-port", "0"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     path = os.path.join(state_dir, "trakbox-state.json")
     time.sleep(1.0)
     p.terminate()
@@ -259,9 +259,9 @@ def main():
     tracks = [reference(n, station, t0, sim_seconds + 600) for n in sats]
 
     ports = {k: free_port() for k in ("satrak", "rotctld", "rigctld")}
-    cmd = [BIN, "--service", "--state", state, "--data", os.path.join(SOURCE, "data"), "--clock", args.clock, "--clock-rate", str(args.rate),
-           "--satrak-port", str(ports["satrak"]), "--rotctld-port", str(ports["rotctld"]),
-           "--rigctld-port", str(ports["rigctld"])]
+    cmd = [BIN, "--service", "--state", state, "--data", os.path.join(SOURCE, "data"), "--clock", args.clock,
+           "--clock-rate", str(args.rate), "--satrak-port", str(ports["satrak"]),
+           "--rotctld-port", str(ports["rotctld"]), "--rigctld-port", str(ports["rigctld"])]
     err = open(os.path.join(work, "stderr.log"), "w")
     proc = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=err)
     failed = []

@@ -204,7 +204,8 @@ bool StationApp::wait_readable(int fd, std::optional<term::Duration> timeout) {
     // Wake for the tick timer rather than up to 20 ms after it: under a fast --clock-rate the
     // station ticks every few milliseconds of wall time (schedule_tick).
     if (impl_->started) {
-      const auto to_tick = std::chrono::ceil<std::chrono::milliseconds>(impl_->timer.expiry() - std::chrono::steady_clock::now());
+      const auto to_tick =
+          std::chrono::ceil<std::chrono::milliseconds>(impl_->timer.expiry() - std::chrono::steady_clock::now());
       ms = static_cast<int>(std::clamp<long long>(to_tick.count(), 0, ms));
     }
     if (fd >= 0) {

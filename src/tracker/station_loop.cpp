@@ -99,9 +99,11 @@ const rotator::PassPlan* StationLoop::plan_for(const SatNow& s) {
   const bool before_aos = clock_.now() < s.pass->aos;
   const auto g = rotator::PassGeometry::from(rotator_->model(), before_aos, model_.pass_events.rotor_start_el_deg);
   planned_ = PlannedPass{s.db_index, s.pass->aos, rotator::plan_pass(track, g, travel)};
-  if (planned_->plan.geometry.piece != rotator_->model().az_piece()) rotator_->select_az_piece(planned_->plan.geometry.piece);
+  if (planned_->plan.geometry.piece != rotator_->model().az_piece())
+    rotator_->select_az_piece(planned_->plan.geometry.piece);
   if (!planned_->plan.coverage.full()) {
-    const std::string what = s.name + " pass at " + orbit::format_iso8601(s.pass->aos) + ": " + planned_->plan.coverage_text();
+    const std::string what =
+        s.name + " pass at " + orbit::format_iso8601(s.pass->aos) + ": " + planned_->plan.coverage_text();
     if (planned_->plan.coverage.followed == 0)
       spdlog::warn("tracker: {}", what);
     else
