@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "menus/6_configuration.h"
+#include "rotator/split_travel.h"
 #include "store/model.h"
 
 namespace tb::menus {
@@ -57,8 +58,15 @@ void menu_6_4_parking_limits(term::Terminal& t, Services& s) {
     c.az_limit_max = cfg::ask_number(t, prompt("Azimuth maximum value", c.az_limit_max), c.az_limit_max, 0, 360);
     c.el_limit_min = cfg::ask_number(t, prompt("Elevation minmum value", c.el_limit_min), c.el_limit_min, 0, el_top);
     c.el_limit_max = cfg::ask_number(t, prompt("Elevation maximum value", c.el_limit_max), c.el_limit_max, 0, el_top);
+    // Limits that leave two pieces of travel (the rotor stop inside them): barriers, or pointing
+    // limits the antenna may cross between passes (docs/rotator.md).
+    if (rotator::validate(c).empty() && rotator::AdcModel(c, s.model.station.rotor_start).travel_split())
+      c.cross_limit_sector =
+          cfg::ask_choice(t, "Limits split the travel: cross them between passes ? [Y/N] ", "YN") == 'Y';
   }
-  cfg::commit_rotator(t, s, c);
+  if (cfg::commit_rotator(t, s, c))
+    if (const auto w = rotator::split_travel_warning(c, s.model.station.rotor_start))
+      for (const auto& line : cfg::wrap_words(*w)) t.line(line);
 }
 
 }  // namespace tb::menus

@@ -4,6 +4,7 @@
 // is read whole first and applied only when every line is valid.
 #include "menus/6_configuration.h"
 #include "store/model.h"
+#include "rotator/split_travel.h"
 #include "store/station_file.h"
 #include "tracker/station_loop.h"
 
@@ -40,6 +41,8 @@ void menu_6_9_default_parameter(term::Terminal& t, Services& s) {
   s.station.reconfigure();
   save_or_report(t, s);
   t.line("Station file loaded. Verify it with 6-0 (Display all configured value).");
+  if (const auto w = rotator::split_travel_warning(s.model.rotator, s.model.station.rotor_start))
+    for (const auto& line : cfg::wrap_words(*w)) t.line(line);
 }
 
 }  // namespace tb::menus

@@ -106,9 +106,12 @@ std::vector<std::string> configuration_lines(const store::Model& m) {
                 "  Skew AZ:" + cfg::fmt1(r.az_skew) + " EL:" + cfg::fmt1(r.el_skew));
   out.push_back(label("Antenna parking") +
                 (r.parking_enabled ? "On  AZ:" + cfg::fmt1(r.parking.az) + " EL:" + cfg::fmt1(r.parking.el) : "Off"));
+  // "cross": limits that split the travel may be crossed between passes (shown only when on, so
+  // the manual's screen is unchanged otherwise).
   out.push_back(label("Rotator limit") +
                 (r.limits_enabled ? "On  AZ:" + cfg::fmt1(r.az_limit_min) + "-" + cfg::fmt1(r.az_limit_max) +
-                                        " EL:" + cfg::fmt1(r.el_limit_min) + "-" + cfg::fmt1(r.el_limit_max)
+                                        " EL:" + cfg::fmt1(r.el_limit_min) + "-" + cfg::fmt1(r.el_limit_max) +
+                                        (r.cross_limit_sector ? "  cross between passes" : "")
                                   : "Off"));
   out.push_back(label("Preset position") + trim(preset_lines(r).front()) +
                 (preset_lines(r).size() > 1 ? " " + trim(preset_lines(r).back()) : ""));
@@ -213,6 +216,28 @@ char ask_choice(term::Terminal& t, std::string_view prompt, std::string_view key
     if (*c == 'Q') throw Quit{};
     if (*c != '\r' && keys.find(*c) != std::string_view::npos) return *c;
   }
+}
+
+std::vector<std::string> wrap_words(std::string_view text, std::size_t width, std::string_view indent) {
+  std::vector<std::string> out;
+  std::string line;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    while (i < text.size() && text[i] == ' ') ++i;
+    std::size_t j = text.find(' ', i);
+    if (j == std::string_view::npos) j = text.size();
+    if (j == i) break;
+    const std::string_view word = text.substr(i, j - i);
+    const std::string lead = out.empty() ? "" : std::string(indent);
+    if (!line.empty() && lead.size() + line.size() + 1 + word.size() > width) {
+      out.push_back(lead + line);
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + std::string(word);
+    i = j;
+  }
+  if (!line.empty()) out.push_back((out.empty() ? "" : std::string(indent)) + line);
+  return out;
 }
 
 bool commit_rotator(term::Terminal& t, Services& s, const rotator::RotatorConfig& next) {

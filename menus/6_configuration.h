@@ -62,6 +62,10 @@ char ask_choice(term::Terminal& t, std::string_view prompt, std::string_view key
 // and saves. Otherwise shows every problem and "Not changed." and leaves everything as it was.
 bool commit_rotator(term::Terminal& t, Services& s, const rotator::RotatorConfig& next);
 
+// A long message as lines of at most `width` characters, broken between words; lines after the
+// first are indented by `indent`.
+std::vector<std::string> wrap_words(std::string_view text, std::size_t width = 78, std::string_view indent = "  ");
+
 // Direct control (6-1, 6-6-1, 6-6-2, 6-6-3) is the operator moving the antenna: it takes rotor
 // control (the E switch) as the manual's examples assume, with one line saying so when it was off
 // (saved, as E would be). No question: the manual's keystrokes work on a fresh unit (issue 18).

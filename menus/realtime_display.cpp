@@ -144,6 +144,7 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
   bool was_in_range = false;       // the shown satellite was AOS on the last update
   orbit::UtcTime graphics_pass{};  // AOS of the pass last drawn (epoch: none)
   LinkNotices notices;             // full screen has the status line instead
+  std::string coverage_said;       // serial terminal: the coverage note last printed
   for (;;) {
     s.station.tick();  // fresh numbers at once, not a second late
     if (!t.full_screen())
@@ -171,8 +172,10 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
     if (f) {
       std::string row = format_realtime_row(*f) + "  " + aos_indicator(f->in_range, s.model.rotor_control, f->obs.time);
       while (row.back() == ' ') row.pop_back();
+      // A pass the antenna cannot follow whole (limits, a split travel): how much it follows.
+      const std::optional<std::string> coverage = s.station.coverage_note(f->db_index);
       if (t.full_screen()) {
-        t.live({row, "", control_line(s)});
+        t.live({row, coverage.value_or(""), control_line(s)});
         // Redraw the pictures every few seconds and when the pass changes.
         const auto secs = std::chrono::duration_cast<std::chrono::seconds>(f->obs.time.time_since_epoch()).count();
         const orbit::UtcTime pass_aos = f->pass ? f->pass->aos : orbit::UtcTime{};
@@ -181,8 +184,13 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
           graphics_pass = pass_aos;
         }
       } else {
+        if (coverage && *coverage != coverage_said) {
+          t.end_live();
+          t.line(*coverage);
+        }
         t.live({row});
       }
+      coverage_said = coverage.value_or("");
     }
     // Wait for a key until the next whole second of the (possibly accelerated) clock.
     const int k = t.read_key(std::chrono::milliseconds(1000));

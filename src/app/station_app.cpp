@@ -18,6 +18,7 @@
 #include <spdlog/spdlog.h>
 
 #include "radio/freqmode.h"
+#include "rotator/split_travel.h"
 #include "satrak/unit.h"
 #include "station/clock.h"
 #include "store/database.h"
@@ -74,6 +75,8 @@ store::Model defaults_with_data(const std::string& data_dir, std::vector<std::st
     for (const auto& p : parsed.problems) problems.push_back(p.message());
     for (const auto& p : problems) notes.push_back(path + ": " + p);
     if (!problems.empty()) notes.push_back(path + ": not used; the station keeps the factory settings");
+    else if (const auto w = rotator::split_travel_warning(m.rotator, m.station.rotor_start))
+      notes.push_back(path + ": " + *w);
   }
   return m;
 }
@@ -93,9 +96,14 @@ struct StationApp::Impl {
       throw Shutdown{};
     });
   }
-  void schedule_tick() { arm_tick(std::min(station->next_tick_in(), tick)); }
+  // The station says how soon to tick in simulated time (100 ms while the antenna moves, else the
+  // --tick-ms interval); under --clock-rate R that is 1/R of it in wall time, at least
+  // station::kMinWallTick: motion and tracking follow simulated time at any supported rate.
+  void schedule_tick() {
+    arm_tick(tb::station::wall_wait(std::min(station->next_tick_in(), tick), clock.rate()));
+  }
   // (Re)arms the tick timer; a wait already pending is cancelled (its handler sees the abort).
-  void arm_tick(std::chrono::milliseconds in) {
+  void arm_tick(std::chrono::microseconds in) {
     started = true;
     timer.expires_after(in);
     timer.async_wait([this](const boost::system::error_code& ec) {
@@ -165,11 +173,14 @@ void StationApp::set_satrak_saved(const nlohmann::json& saved) { impl_->satrak_s
 
 void StationApp::build_station(std::unique_ptr<rotator::RotatorDriver> rot, std::unique_ptr<radio::RadioDriver> rad) {
   Impl& m = *impl_;
-  auto controller = std::make_unique<rotator::Controller>(m.model.rotator, m.model.station.rotor_start, std::move(rot));
+  rotator::ControllerOptions opt;
+  opt.clock_rate = m.clock.rate();
+  auto controller =
+      std::make_unique<rotator::Controller>(m.model.rotator, m.model.station.rotor_start, std::move(rot), opt);
   m.station = std::make_unique<tracker::StationLoop>(m.model, m.clock, m.tracker, std::move(controller), std::move(rad));
   m.station->set_refresh(m.refresh.get());
   m.station->on_wake([&m] {
-    if (m.started) m.arm_tick(std::chrono::milliseconds(0));
+    if (m.started) m.arm_tick(std::chrono::microseconds(0));
   });
 }
 
@@ -189,6 +200,13 @@ bool StationApp::wait_readable(int fd, std::optional<term::Duration> timeout) {
     if (deadline) {
       const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(*deadline - std::chrono::steady_clock::now());
       ms = static_cast<int>(std::clamp<long long>(left.count(), 0, 20));
+    }
+    // Wake for the tick timer rather than up to 20 ms after it: under a fast --clock-rate the
+    // station ticks every few milliseconds of wall time (schedule_tick).
+    if (impl_->started) {
+      const auto to_tick =
+          std::chrono::ceil<std::chrono::milliseconds>(impl_->timer.expiry() - std::chrono::steady_clock::now());
+      ms = static_cast<int>(std::clamp<long long>(to_tick.count(), 0, ms));
     }
     if (fd >= 0) {
       pollfd p{fd, POLLIN, 0};

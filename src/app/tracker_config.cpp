@@ -4,6 +4,7 @@
 #include <cstdlib>
 
 #include "app/build_info.h"
+#include "station/clock.h"
 #include "menus/term/line_terminal.h"
 #include "store/refresh.h"
 #include "store/state_file.h"
@@ -27,7 +28,7 @@ std::vector<OptionSpec> tracker_option_specs() {
                       "(when parking is on), saves and exits 0; SIGHUP re-reads the data directory's element and "
                       "freq/mode files"},
       {"clock", "ISO8601", "start the real-time clock at this UTC time (e.g. 2026-05-21T12:00:00Z)"},
-      {"clock-rate", "R", "run the clock R times faster than real time (with or without --clock)"},
+      {"clock-rate", "R", "run the clock R times faster than real time, R at most 200 (with or without --clock)"},
       {"rotator", "SPEC", "simulated (default), hamlib:MODEL:DEVICE[:BAUD], rotctld:HOST[:PORT]"},
       {"radio", "SPEC", "simulated (default), icom:DEV, kenwood:DEV, yaesu:DEV, cat:DEV (rig of menu 6-7), "
                         "hamlib:MODEL:DEV[:BAUD], rigctld[:HOST[:PORT]]"},
@@ -170,7 +171,10 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
   if (baud) c.baud = static_cast<int>(*baud);
   if (const auto v = r.integer("standalone", false, "a selector position 1 to 15", Range{1, 15}))
     c.standalone = static_cast<int>(*v);
-  c.clock_rate = r.number("clock-rate", false, "a rate > 0 (1 is real time)", Range{0.0, 10000.0, true});
+  // The simulated rotator and the tracker follow simulated time up to this rate (the event loop
+  // ticks every 100 ms of simulated time, at least every few ms of wall time: docs/rotator.md).
+  c.clock_rate = r.number("clock-rate", false, "a rate > 0 and at most 200 (1 is real time; 200 is the fastest "
+                          "the tracker and the simulated rotator follow)", Range{0.0, station::kMaxClockRate, true});
   if (const auto v = r.integer("tick-ms", false, "milliseconds, 100 to 1000", Range{100, 1000}))
     c.tick_ms = static_cast<int>(*v);
   if (const auto v = r.integer("satrak-port", false, "a TCP port 0 to 65535 (0: off)", Range{0, 65535})) {

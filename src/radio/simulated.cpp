@@ -1,5 +1,7 @@
 #include "radio/simulated.h"
 
+#include <utility>
+
 namespace tb::radio {
 
 SimulatedRadio::SimulatedRadio() {
@@ -15,7 +17,7 @@ void SimulatedRadio::set_frequency(Link link, Hz hz) {
   }
   (link == Link::downlink ? status_.downlink_hz : status_.uplink_hz) = hz;
   ++status_.delivered;
-  history_.push_back({RadioEvent::Kind::frequency, link, hz, Mode::none, {}});
+  record({RadioEvent::Kind::frequency, link, hz, Mode::none, {}});
 }
 
 void SimulatedRadio::set_mode(Link link, Mode mode) {
@@ -27,7 +29,7 @@ void SimulatedRadio::set_mode(Link link, Mode mode) {
   }
   (link == Link::downlink ? status_.downlink_mode : status_.uplink_mode) = mode;
   ++status_.delivered;
-  history_.push_back({RadioEvent::Kind::mode, link, 0, mode, {}});
+  record({RadioEvent::Kind::mode, link, 0, mode, {}});
 }
 
 void SimulatedRadio::send_raw(std::string bytes) {
@@ -37,14 +39,14 @@ void SimulatedRadio::send_raw(std::string bytes) {
     return;
   }
   ++status_.delivered;
-  history_.push_back({RadioEvent::Kind::raw, Link::downlink, 0, Mode::none, std::move(bytes)});
+  record({RadioEvent::Kind::raw, Link::downlink, 0, Mode::none, std::move(bytes)});
 }
 
 void SimulatedRadio::step(Link link, Hz delta) {
   std::lock_guard lock(mu_);
   auto& f = link == Link::downlink ? status_.downlink_hz : status_.uplink_hz;
   f = f.value_or(0) + delta;
-  history_.push_back({RadioEvent::Kind::step, link, delta, Mode::none, {}});
+  record({RadioEvent::Kind::step, link, delta, Mode::none, {}});
 }
 
 RadioStatus SimulatedRadio::status() const {
@@ -52,9 +54,14 @@ RadioStatus SimulatedRadio::status() const {
   return status_;
 }
 
+void SimulatedRadio::record(RadioEvent e) {
+  if (history_.size() >= kHistoryLimit) history_.pop_front();
+  history_.push_back(std::move(e));
+}
+
 std::vector<RadioEvent> SimulatedRadio::history() const {
   std::lock_guard lock(mu_);
-  return history_;
+  return {history_.begin(), history_.end()};
 }
 
 void SimulatedRadio::clear_history() {

@@ -1,6 +1,8 @@
 // The simulated radio (trakbox's default): it does what it is told at once and records everything,
 // so displays can show the radio and tests can read back what the tracker sent.
 #pragma once
+#include <cstddef>
+#include <deque>
 #include <mutex>
 #include <vector>
 
@@ -32,6 +34,9 @@ class SimulatedRadio final : public RadioDriver {
   // The operator's dial, or a mic-click pulse: moves the link by delta (recorded as a step).
   void step(Link link, Hz delta_hz);
 
+  // The latest kHistoryLimit events, oldest first (older ones are dropped: a radio tuned with
+  // Doppler every second for days must not grow without bound).
+  static constexpr std::size_t kHistoryLimit = 4096;
   std::vector<RadioEvent> history() const;
   void clear_history();
   std::optional<Hz> frequency(Link link) const;
@@ -44,7 +49,8 @@ class SimulatedRadio final : public RadioDriver {
  private:
   mutable std::mutex mu_;
   RadioStatus status_;
-  std::vector<RadioEvent> history_;
+  std::deque<RadioEvent> history_;
+  void record(RadioEvent e);  // under mu_
 };
 
 }  // namespace tb::radio

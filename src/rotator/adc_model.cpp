@@ -57,29 +57,81 @@ double AdcModel::el_from_counts(double counts) const { return (counts - c_.el_sp
 double AdcModel::counts_from_el(double el) const { return c_.el_span.min + el * span_width(c_.el_span) / 90.0; }
 double AdcModel::compass_from_travel(double travel) const { return wrap360(travel + start_deg()); }
 
-Range AdcModel::az_limit_travel() const {
+std::vector<Range> AdcModel::limit_pieces() const {
   const double T = c_.az_travel_deg;
   const double width = c_.az_limit_max - c_.az_limit_min;
-  if (!c_.limits_enabled || width >= 360.0 - kEps) return {0.0, T};
+  if (!c_.limits_enabled || width >= 360.0 - kEps) return {{0.0, T}};
   const double w = wrap360(width);
   const double s0 = wrap360(c_.az_limit_min - start_deg());
-  Range best{1.0, 0.0};  // empty
+  std::vector<Range> out;
   for (int n = -1; n <= 2; ++n) {
     Range piece = intersect({s0 + 360.0 * n, s0 + 360.0 * n + w}, {0.0, T});
-    if (piece.empty()) continue;
-    if (best.empty() || piece.width() > best.width() + kEps) best = piece;
+    if (piece.empty() || piece.width() <= kEps) continue;
+    out.push_back(piece);
+  }
+  if (out.empty()) out.push_back({1.0, 0.0});  // empty: validate() reports it
+  return out;
+}
+
+Range AdcModel::mech_travel() const {
+  // The pot's calibrated ends are the mechanical stops: raw min..max, seen through the skew.
+  Range mech{az_travel_from_counts(corrected(Axis::az, c_.az_span.min)),
+             az_travel_from_counts(corrected(Axis::az, c_.az_span.max))};
+  return intersect(mech, {0.0, c_.az_travel_deg});
+}
+
+std::vector<Range> AdcModel::az_pieces() const {
+  std::vector<Range> out;
+  const Range mech = mech_travel();
+  for (const Range& p : limit_pieces()) out.push_back(intersect(p, mech));  // same indices, maybe empty
+  return out;
+}
+
+bool AdcModel::travel_split() const {
+  const std::vector<Range> pieces = az_pieces();
+  return std::count_if(pieces.begin(), pieces.end(), [](const Range& r) { return !r.empty(); }) > 1;
+}
+
+int AdcModel::az_piece() const {
+  const std::vector<Range> pieces = limit_pieces();
+  if (piece_ >= 0 && piece_ < static_cast<int>(pieces.size())) return piece_;
+  int best = 0;
+  for (int i = 1; i < static_cast<int>(pieces.size()); ++i)
+    if (pieces[static_cast<std::size_t>(i)].width() > pieces[static_cast<std::size_t>(best)].width() + kEps) best = i;
+  return best;
+}
+
+int AdcModel::az_piece_of(double travel) const {
+  const std::vector<Range> pieces = az_pieces();
+  int best = 0;
+  double best_d = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < static_cast<int>(pieces.size()); ++i) {
+    const Range& p = pieces[static_cast<std::size_t>(i)];
+    if (p.empty()) continue;
+    const double d = p.contains(travel) ? 0.0 : std::min(std::abs(travel - p.lo), std::abs(travel - p.hi));
+    if (d < best_d) {
+      best_d = d;
+      best = i;
+    }
   }
   return best;
 }
 
-Range AdcModel::az_travel_range() const {
-  Range r = az_limit_travel();
-  // The pot's calibrated ends are the mechanical stops: raw min..max, seen through the skew.
-  Range mech{az_travel_from_counts(corrected(Axis::az, c_.az_span.min)),
-             az_travel_from_counts(corrected(Axis::az, c_.az_span.max))};
-  r = intersect(r, {0.0, c_.az_travel_deg});
-  return intersect(r, mech);
+std::optional<int> AdcModel::az_piece_for_compass(double compass_az) const {
+  const std::vector<Range> pieces = az_pieces();
+  const double base = wrap360(compass_az - start_deg());
+  for (int i = 0; i < static_cast<int>(pieces.size()); ++i)
+    for (int n = -1; n <= 2; ++n)
+      if (pieces[static_cast<std::size_t>(i)].contains(base + 360.0 * n)) return i;
+  return std::nullopt;
 }
+
+Range AdcModel::az_limit_travel() const {
+  const std::vector<Range> pieces = limit_pieces();
+  return pieces[static_cast<std::size_t>(az_piece())];
+}
+
+Range AdcModel::az_travel_range() const { return intersect(az_limit_travel(), mech_travel()); }
 
 Range AdcModel::el_range() const {
   Range r{0.0, c_.el_flip_allowed ? 180.0 : 90.0};

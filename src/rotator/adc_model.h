@@ -17,6 +17,8 @@
 // with c the corrected count. See docs/rotator.md.
 #pragma once
 #include <limits>
+#include <optional>
+#include <vector>
 
 #include "rotator/config.h"
 #include "station/station.h"
@@ -97,9 +99,26 @@ class AdcModel {
   Range counts_range(Axis a) const;
 
   // Azimuth limit sector converted to travel (before span and skew are applied): the sector
-  // az_limit_min -> az_limit_max clockwise, as the longest piece of travel it covers. A sector that
-  // contains the rotor stop falls in two pieces; the longer one is kept.
+  // az_limit_min -> az_limit_max clockwise, as the piece of travel in force. A sector that contains
+  // the rotor stop falls in two pieces (South start, limits 10..350: travel 0..170 = compass
+  // 180..350 and travel 190..360 = compass 10..180, the excluded 350..10 between them); the
+  // antenna is in one of them at a time: az_piece().
   Range az_limit_travel() const;
+  // Every piece of travel the limit sector covers, in travel order (one, or two when the limits
+  // split the travel), each seen through the span and skew as az_travel_range() is (a piece the
+  // span leaves nothing of is empty, keeping the indices).
+  std::vector<Range> az_pieces() const;
+  // The limits leave two pieces of travel the antenna cannot pass between within them.
+  bool travel_split() const;
+  // The piece in force (an index into az_pieces()): by default the longest (the first of equal
+  // ones); the controller sets it to the piece the antenna is in (limits as barriers) or the one a
+  // pass plan chose (crossing between passes, RotatorConfig::cross_limit_sector).
+  int az_piece() const;
+  void set_az_piece(int index) { piece_ = index; }
+  // The piece containing a travel position, else the nearest one.
+  int az_piece_of(double travel) const;
+  // The piece of az_pieces() containing a compass azimuth, if any.
+  std::optional<int> az_piece_for_compass(double compass_az) const;
 
   // The travel that points at a compass azimuth, inside az_travel_range(). Where the azimuth can be
   // reached more than one way (0/360 at the stop, or the overlap of a 450-degree rotator), the way
@@ -115,6 +134,9 @@ class AdcModel {
  private:
   RotatorConfig c_;
   station::RotorStart start_ = station::RotorStart::north;
+  int piece_ = -1;  // -1: the default piece
+  std::vector<Range> limit_pieces() const;  // az_pieces() before span and skew
+  Range mech_travel() const;                // the calibrated span seen through the skew, as travel
 };
 
 // ---------------------------------------------------------------------------------------------

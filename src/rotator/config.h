@@ -80,6 +80,14 @@ struct RotatorConfig {
   double el_limit_min = 0.0;
   double el_limit_max = 90.0;
 
+  // When the limits split the travel into two pieces (the rotor stop inside the allowed sector:
+  // a South start with limits 10..350), whether the excluded sector between them may be crossed.
+  // false (the default): the limits are barriers, and the antenna keeps to the piece it is in
+  // (driving across the excluded sector would take the rotator outside its limits). true: they are
+  // pointing limits only, and the pass planner may move the antenna to the other piece between
+  // passes, never during one (menu 6-4 asks; docs/rotator.md "Limits that split the travel").
+  bool cross_limit_sector = false;
+
   // 6-6-3: five preset positions.
   std::array<AzEl, 5> presets{};
 

@@ -55,7 +55,13 @@ Controller::~Controller() {
 }
 
 void Controller::set_config(const RotatorConfig& config, station::RotorStart start) {
+  const int piece = model_.az_piece();
   model_ = AdcModel(config, start);
+  if (model_.travel_split()) {
+    // Limits as barriers: the piece the antenna is in; crossing: the piece chosen before.
+    model_.set_az_piece(!config.cross_limit_sector && status_.has_position ? model_.az_piece_of(status_.az.travel)
+                                                                            : piece);
+  }
   if (status_.target) status_.target = model_.clamp(*status_.target);
   sent_.reset();
 }
@@ -73,7 +79,29 @@ void Controller::note(std::string message, bool warn) {
   status_.message = std::move(message);
 }
 
-RotatorPosition Controller::set_target(AzEl compass) {
+void Controller::keep_to_piece(double travel) {
+  if (model_.config().cross_limit_sector || !model_.travel_split()) return;
+  const int p = model_.az_piece_of(travel);
+  if (p == model_.az_piece()) return;
+  model_.set_az_piece(p);
+  if (status_.target) status_.target = model_.clamp(*status_.target);
+}
+
+bool Controller::select_az_piece(int index) {
+  if (!model_.config().cross_limit_sector || !model_.travel_split()) return index == model_.az_piece();
+  const std::vector<Range> pieces = model_.az_pieces();
+  if (index < 0 || index >= static_cast<int>(pieces.size()) || pieces[static_cast<std::size_t>(index)].empty())
+    return false;
+  if (index != model_.az_piece()) {
+    model_.set_az_piece(index);
+    if (status_.target) status_.target = model_.clamp(*status_.target);
+  }
+  return true;
+}
+
+RotatorPosition Controller::set_target(AzEl compass, Piece piece) {
+  if (piece == Piece::containing && model_.config().cross_limit_sector)
+    if (const auto i = model_.az_piece_for_compass(compass.az)) select_az_piece(*i);
   double current = status_.has_position ? status_.az.travel : (status_.target ? status_.target->az_travel : 0.0);
   return set_target(model_.target_for(compass, current));
 }
@@ -107,13 +135,13 @@ RotatorPosition Controller::set_target(RotatorPosition p, Approach how) {
 
 bool Controller::park() {
   if (!model_.config().parking_enabled) return false;
-  set_target(model_.config().parking);
+  set_target(model_.config().parking, Piece::containing);
   return true;
 }
 
 bool Controller::preset(int n) {
   if (n < 1 || n > static_cast<int>(model_.config().presets.size())) return false;
-  set_target(model_.config().presets[static_cast<std::size_t>(n - 1)]);
+  set_target(model_.config().presets[static_cast<std::size_t>(n - 1)], Piece::containing);
   return true;
 }
 
@@ -328,6 +356,7 @@ void Controller::tick_adc(AdcRotator& adc, orbit::UtcTime now, double dt) {
   status_.has_position = true;
   const LimitFlags reported = adc.limits();
   const RotatorConfig& c = model_.config();
+  keep_to_piece(model_.az_travel_from_counts(model_.corrected(Axis::az, r->az)));
   for (Axis a : kAxes) {
     AxisLoop& l = loop(a);
     AxisStatus& s = axis_status(a);
@@ -433,7 +462,7 @@ void Controller::apply_adc(AdcRotator& adc, Axis a, AxisCommand cmd, int raw, or
     if (l.cmd != Drive::stop) adc.drive(a, Drive::stop, {});
     l.cmd = Drive::stop;
   } else {
-    const double max_s = std::chrono::duration<double>(opt_.watchdog).count();
+    const double max_s = std::chrono::duration<double>(opt_.watchdog).count() * std::max(1.0, opt_.clock_rate);
     const double run = std::clamp(cmd.run_for_s, 1e-6, max_s);
     adc.drive(a, cmd.drive, micros(run));
     l.cmd = cmd.drive;
@@ -467,6 +496,7 @@ void Controller::tick_degrees(DegreeRotator& dr, orbit::UtcTime now) {
   const LimitFlags reported = dr.limits();
   status_.has_position = true;
   raw_ = Counts{static_cast<int>(std::lround(raw_c[0])), static_cast<int>(std::lround(raw_c[1]))};
+  keep_to_piece(model_.az_travel_from_counts(model_.corrected(Axis::az, raw_c[0])));
   for (Axis a : kAxes) {
     const int i = a == Axis::az ? 0 : 1;
     AxisStatus& s = axis_status(a);

@@ -67,6 +67,11 @@ struct ControllerOptions {
   // Longest a drive line stays on without a tick renewing it (a watchdog: if the event loop stalls
   // the motors stop). Must exceed the tick interval.
   std::chrono::milliseconds watchdog{2500};
+  // The clock's rate (--clock-rate): the event loop ticks in clock time, but the watchdog guards
+  // against a loop stalled in wall time, so a drive may last watchdog * clock_rate of clock time
+  // (at 100x a 120-degree slew is one 20 s pulse, renewed each tick, never cut short by a tick
+  // that came a few wall milliseconds late).
+  double clock_rate = 1.0;
   // Degree rotators: an unchanged target is sent again this often while the rotator sits idle
   // outside the dead band (a command lost on the way).
   std::chrono::milliseconds resend{2000};
@@ -88,7 +93,16 @@ class Controller {
 
   // Point at a compass az/el (degrees), clamped to the limits. Where the azimuth can be reached two
   // ways, the way nearest the antenna. Returns the target as it will be commanded.
-  RotatorPosition set_target(AzEl compass);
+  //   Piece::in_force: inside the piece of travel in force (limits that split the travel).
+  //   Piece::containing: an explicit move (park, presets, the operator's GOTO): when the limits are
+  //                      pointing limits only (cross_limit_sector), into the piece that contains
+  //                      the azimuth, crossing the excluded sector; barriers keep the piece.
+  enum class Piece { in_force, containing };
+  RotatorPosition set_target(AzEl compass, Piece piece = Piece::in_force);
+  // Limits that split the travel and may be crossed (cross_limit_sector): make a piece of
+  // AdcModel::az_pieces() the one in force (the pass planner, between passes); the target is
+  // clamped into it. With barriers only the piece the antenna is in: false for another.
+  bool select_az_piece(int index);
   // How a target is approached.
   //   dead_band: the configured dead band (tracking, park, presets, the menus): an axis within it
   //              of the target does not move.
@@ -175,6 +189,9 @@ class Controller {
   // of its rate); ADC rotators.
   Drive motion_of(Axis a) const;
   void update_limits(Axis a, double corrected, const LimitFlags& reported);
+  // Limits that split the travel, as barriers: the piece in force is the one the antenna is in
+  // (or nearest, when it is outside the limits), the target clamped into it.
+  void keep_to_piece(double travel);
 
   AdcModel model_;
   std::unique_ptr<RotatorDriver> driver_;

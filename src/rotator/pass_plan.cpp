@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <vector>
+
+#include "rotator/split_travel.h"
 
 namespace tb::rotator {
 
@@ -36,12 +39,19 @@ struct Candidate {
 };
 }  // namespace
 
-PassGeometry PassGeometry::from(const AdcModel& m) {
+PassGeometry PassGeometry::from(const AdcModel& m, bool may_cross, double start_el) {
   PassGeometry g;
   g.start = m.rotor_start();
   g.az_travel = m.az_travel_range();
   g.el = m.el_range();
   g.flip_allowed = m.config().el_flip_allowed && g.el.hi > 90.0;
+  g.pieces = m.az_pieces();
+  g.piece = m.az_piece();
+  g.choices = {g.piece};
+  if (may_cross && m.config().cross_limit_sector && m.travel_split())
+    for (int i = 0; i < static_cast<int>(g.pieces.size()); ++i)
+      if (i != g.piece && !g.pieces[static_cast<std::size_t>(i)].empty()) g.choices.push_back(i);
+  g.start_el = start_el;
   return g;
 }
 
@@ -70,7 +80,82 @@ RotatorPosition PassPlan::map(double az_deg, double el_deg) const {
   return p;
 }
 
+namespace {
+PassPlan plan_in_piece(std::span<const TrackPoint> track, const PassGeometry& g,
+                       std::optional<double> current_travel);
+
+PassCoverage coverage_of(const PassPlan& plan, std::span<const TrackPoint> track) {
+  PassCoverage c;
+  for (const TrackPoint& s : track) {
+    if (s.el_deg < plan.geometry.start_el) continue;
+    ++c.samples;
+    const AzEl at = pointing(plan.geometry, plan.map(s.az_deg, s.el_deg));
+    // Followed: the azimuth is reached (near the zenith any azimuth points at the satellite).
+    if (azimuth_distance(at.az, s.az_deg) > 0.05 && s.el_deg < 89.5) continue;
+    ++c.followed;
+    if (!c.from) c.from = s.time;
+    c.to = s.time;
+  }
+  c.fraction = c.samples ? static_cast<double>(c.followed) / c.samples : 1.0;
+  return c;
+}
+
+// The highest elevation among the samples a plan follows (-inf when none).
+double highest_followed(const PassPlan& plan, std::span<const TrackPoint> track) {
+  double best = -1e300;
+  for (const TrackPoint& s : track) {
+    if (s.el_deg < plan.geometry.start_el) continue;
+    const AzEl at = pointing(plan.geometry, plan.map(s.az_deg, s.el_deg));
+    if (azimuth_distance(at.az, s.az_deg) <= 0.05 || s.el_deg >= 89.5) best = std::max(best, s.el_deg);
+  }
+  return best;
+}
+}  // namespace
+
+std::string PassPlan::coverage_text() const {
+  const std::string piece = compass_sector_text(geometry.start, geometry.az_travel);
+  if (coverage.followed == 0) return "PASS OUTSIDE LIMITS (antenna keeps to " + piece + ")";
+  auto hms = [](orbit::UtcTime t) {
+    const auto c = orbit::to_civil(t);
+    char b[16];
+    std::snprintf(b, sizeof b, "%02d:%02d:%02d", c.hour, c.minute, static_cast<int>(c.second));
+    return std::string(b);
+  };
+  char pct[16];
+  std::snprintf(pct, sizeof pct, "%d%%", static_cast<int>(std::floor(coverage.fraction * 100.0 + 1e-9)));
+  return std::string("antenna follows ") + pct + " (" + hms(*coverage.from) + "-" + hms(*coverage.to) + ") in " + piece;
+}
+
 PassPlan plan_pass(std::span<const TrackPoint> track, const PassGeometry& g, std::optional<double> current_travel) {
+  std::optional<PassPlan> best;
+  double best_high = 0.0;
+  const std::vector<int> choices = g.choices.empty() ? std::vector<int>{g.piece} : g.choices;
+  for (int i : choices) {
+    PassGeometry gi = g;
+    if (i != g.piece && i >= 0 && i < static_cast<int>(g.pieces.size())) {
+      gi.piece = i;
+      gi.az_travel = g.pieces[static_cast<std::size_t>(i)];
+    }
+    PassPlan plan = plan_in_piece(track, gi, current_travel);
+    plan.coverage = coverage_of(plan, track);
+    const double high = highest_followed(plan, track);
+    // The most of the pass, then its highest part, then the piece in force (listed first).
+    bool better = !best;
+    if (best) {
+      if (plan.coverage.followed != best->coverage.followed) better = plan.coverage.followed > best->coverage.followed;
+      else if (high != best_high) better = high > best_high;
+    }
+    if (better) {
+      best = plan;
+      best_high = high;
+    }
+  }
+  return *best;
+}
+
+namespace {
+PassPlan plan_in_piece(std::span<const TrackPoint> track, const PassGeometry& g,
+                       std::optional<double> current_travel) {
   PassPlan plain;
   plain.geometry = g;
   plain.window_center = g.az_travel.empty() ? 180.0 : 0.5 * (g.az_travel.lo + g.az_travel.hi);
@@ -143,6 +228,7 @@ PassPlan plan_pass(std::span<const TrackPoint> track, const PassGeometry& g, std
   }
   return best->plan;
 }
+}  // namespace
 
 double slew_seconds(const RotatorPosition& from, const RotatorPosition& to, const RotatorConfig& c) {
   const double az = std::abs(to.az_travel - from.az_travel) / c.az_rate_deg_s;

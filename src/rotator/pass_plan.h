@@ -15,6 +15,8 @@
 #pragma once
 #include <optional>
 #include <span>
+#include <string>
+#include <vector>
 
 #include "orbit/time.h"
 #include "rotator/adc_model.h"
@@ -33,8 +35,27 @@ struct PassGeometry {
   Range az_travel{0.0, 360.0};  // where the azimuth may go, degrees of travel from the stop
   Range el{0.0, 90.0};          // where the elevation may go (to 180 on a flip rotator)
   bool flip_allowed = false;
-  // The rotator as the controller's model sees it: limits, span, skew, flip.
-  static PassGeometry from(const AdcModel& m);
+  // Limits that split the travel (AdcModel::az_pieces): az_travel is piece `piece`; the planner
+  // may choose among `choices` (indices into pieces: the piece in force alone when the limits are
+  // barriers or the pass has begun, both when they may be crossed between passes).
+  std::vector<Range> pieces;
+  int piece = 0;
+  std::vector<int> choices;
+  // Coverage counts the samples at or above the rotor start elevation (STATION.DAT line 5).
+  double start_el = -2.0;
+  // The rotator as the controller's model sees it: limits, span, skew, flip, the piece in force;
+  // may_cross: the planner may choose the other piece of a split travel.
+  static PassGeometry from(const AdcModel& m, bool may_cross = false, double start_el = -2.0);
+};
+
+// How much of a pass the antenna follows: the samples at or above the rotor start elevation whose
+// azimuth the plan reaches (not held at a limit or the stop).
+struct PassCoverage {
+  double fraction = 1.0;  // 0..1 (1 for an empty track)
+  std::optional<orbit::UtcTime> from, to;  // the first and last sample followed
+  int samples = 0;        // samples counted
+  int followed = 0;       // of which followed
+  bool full() const { return followed == samples; }
 };
 
 struct PassPlan {
@@ -45,14 +66,21 @@ struct PassPlan {
   bool held_at_stop = false;    // part of the pass lies beyond the travel: the antenna waits there
   double max_error_deg = 0.0;   // largest pointing error over the samples (0 when it all fits)
   double mean_error_deg = 0.0;
+  PassCoverage coverage;
 
   // A target during the pass, in rotator coordinates for Controller::set_target.
   RotatorPosition map(double az_deg, double el_deg) const;
+  // What the antenna does of the pass, for the displays and status:
+  //   "antenna follows 13% (10:00:00-10:02:30) in 180.0-350.0", or
+  //   "PASS OUTSIDE LIMITS (antenna keeps to 180.0-350.0)" when it follows none of it.
+  std::string coverage_text() const;
 };
 
 // Plans a pass sampled at even steps (AOS first). current_travel, when given, breaks ties between
 // equally good ways round (the one with the shorter slew to AOS wins); otherwise the way that keeps
 // furthest from the ends of travel does. An empty track gives the plain mapping.
+// With a split travel and more than one choice: the piece that covers the most of the pass above
+// the start elevation, then the one covering its highest sample, then the piece in force.
 PassPlan plan_pass(std::span<const TrackPoint> track, const PassGeometry& g,
                    std::optional<double> current_travel = std::nullopt);
 

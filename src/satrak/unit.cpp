@@ -50,7 +50,8 @@ void Unit::start() {
   running_ = true;
   struct Loop {
     static void arm(Unit* u, std::weak_ptr<int> alive) {
-      u->timer_->t.expires_after(u->opt_.period);
+      // The period is simulated time: under --clock-rate R the check runs R times as often.
+      u->timer_->t.expires_after(station::wall_wait(u->opt_.period, u->clock_.rate()));
       u->timer_->t.async_wait([u, alive](const boost::system::error_code& ec) {
         if (ec || alive.expired() || !u->running_) return;
         u->tick();

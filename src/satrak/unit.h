@@ -47,7 +47,7 @@ struct UnitOptions {
   std::filesystem::path tle_dir;    // SATELLITE= file names live here (created if missing)
   std::filesystem::path image_dir;  // LOAD_IMAGE= file names live here
   std::string version = "0.1.0";    // VERSION?
-  std::chrono::milliseconds period{200};      // the periodic check (wall time, on the io timer)
+  std::chrono::milliseconds period{200};      // the periodic check (clock time, on the io timer)
   std::chrono::seconds file_check{5};         // RTC time between checks of the TLE file for changes
   std::chrono::seconds retry_after{300};      // RTC time before a failed download is tried again
   std::chrono::milliseconds download_timeout{60000};

@@ -2,6 +2,7 @@
 // offset (menu 5 sets the offset, never the system clock). Everything that needs "now" takes a
 // Clock, so tests and demonstrations can run on a fixed or accelerated time base.
 #pragma once
+#include <algorithm>
 #include <chrono>
 #include <functional>
 
@@ -14,6 +15,20 @@ class Clock {
   virtual ~Clock() = default;
   virtual orbit::UtcTime now() const = 0;
 };
+
+// The fastest --clock-rate: up to it the tracker and the simulated rotator follow simulated time
+// (the event loop ticks in simulated time, at least kMinWallTick of wall time apart).
+inline constexpr double kMaxClockRate = 200.0;
+inline constexpr std::chrono::microseconds kMinWallTick{5000};
+
+// A wait of `simulated` clock time as wall time on a clock running `rate` times faster than real
+// time, never shorter than kMinWallTick (a zero wait stays zero: "at once").
+inline std::chrono::microseconds wall_wait(std::chrono::microseconds simulated, double rate) {
+  if (simulated.count() <= 0) return std::chrono::microseconds(0);
+  if (!(rate > 1.0)) return simulated;
+  const auto w = std::chrono::microseconds(static_cast<long long>(static_cast<double>(simulated.count()) / rate));
+  return std::max(w, kMinWallTick);
+}
 
 // The source of "system time": the real clock in the program, a function in tests.
 using TimeSource = std::function<orbit::UtcTime()>;

@@ -195,6 +195,7 @@ json to_json(const Model& m) {
                   {"az_limit_max", r.az_limit_max},
                   {"el_limit_min", r.el_limit_min},
                   {"el_limit_max", r.el_limit_max},
+                  {"cross_limit_sector", r.cross_limit_sector},
                   {"presets", presets},
                   {"el_flip_allowed", r.el_flip_allowed},
                   {"az_rate_deg_s", r.az_rate_deg_s},
@@ -288,6 +289,8 @@ rotator::RotatorConfig rotator_from(const json& j) {
   c.az_limit_max = num(r, w, "az_limit_max", -360, 720);
   c.el_limit_min = num(r, w, "el_limit_min", -90, 180);
   c.el_limit_max = num(r, w, "el_limit_max", -90, 180);
+  // Absent in state files written before it: the limits are barriers.
+  if (r.contains("cross_limit_sector")) c.cross_limit_sector = boolean(r, w, "cross_limit_sector");
   const json& p = field(r, w, "presets");
   if (!p.is_array() || p.size() != c.presets.size()) bad(w + ".presets", "expected 5 positions");
   for (std::size_t i = 0; i < c.presets.size(); ++i)

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 
+#include <spdlog/spdlog.h>
+
 namespace tb::tracker {
 
 StationLoop::StationLoop(store::Model& model, const station::Clock& clock, Tracker& tracker,
@@ -68,7 +70,7 @@ std::optional<radio::Hz> StationLoop::next_uplink() {
 
 rotator::AzEl StationLoop::point(rotator::AzEl compass) {
   tracker_.stop();
-  const rotator::RotatorPosition p = rotator_->set_target(compass);
+  const rotator::RotatorPosition p = rotator_->set_target(compass, rotator::Controller::Piece::containing);
   wake();
   return rotator::AzEl{rotator_->model().compass_from_travel(p.az_travel), p.el};
 }
@@ -94,8 +96,21 @@ const rotator::PassPlan* StationLoop::plan_for(const SatNow& s) {
   }
   const auto& st = rotator_->status();
   const std::optional<double> travel = st.has_position ? std::optional(st.az.travel) : std::nullopt;
-  planned_ = PlannedPass{s.db_index, s.pass->aos,
-                         rotator::plan_pass(track, rotator::PassGeometry::from(rotator_->model()), travel)};
+  // Limits that split the travel and may be crossed: the planner may choose the other piece only
+  // between passes (this one has not begun); the antenna crosses while it pre-positions.
+  const bool before_aos = clock_.now() < s.pass->aos;
+  const auto g = rotator::PassGeometry::from(rotator_->model(), before_aos, model_.pass_events.rotor_start_el_deg);
+  planned_ = PlannedPass{s.db_index, s.pass->aos, rotator::plan_pass(track, g, travel)};
+  if (planned_->plan.geometry.piece != rotator_->model().az_piece())
+    rotator_->select_az_piece(planned_->plan.geometry.piece);
+  if (!planned_->plan.coverage.full()) {
+    const std::string what =
+        s.name + " pass at " + orbit::format_iso8601(s.pass->aos) + ": " + planned_->plan.coverage_text();
+    if (planned_->plan.coverage.followed == 0)
+      spdlog::warn("tracker: {}", what);
+    else
+      spdlog::info("tracker: {}", what);
+  }
   return &planned_->plan;
 }
 
@@ -132,6 +147,11 @@ void StationLoop::tick() {
 }
 
 std::chrono::milliseconds StationLoop::next_tick_in() const { return std::min(rotator_->next_tick_in(), std::chrono::milliseconds(1000)); }
+
+std::optional<std::string> StationLoop::coverage_note(int db_index) const {
+  if (!planned_ || planned_->db_index != db_index || planned_->plan.coverage.full()) return std::nullopt;
+  return planned_->plan.coverage_text();
+}
 
 std::optional<rotator::AzEl> StationLoop::antenna() const {
   const auto& s = rotator_->status();
@@ -178,6 +198,8 @@ std::string StationLoop::status_line() const {
                 c.day, c.hour, c.minute, static_cast<int>(c.second), sat.c_str(),
                 model_.rotor_control ? "ON " : "OFF", rot.c_str(), rig.c_str());
   std::string line = buf;
+  if (const SatNow* f = tracker_.followed(); f && tracker_.mode() != Mode::off)
+    if (const auto note = coverage_note(f->db_index)) line += " | " + *note;
   if (!notice_.empty()) line += " | " + notice_;
   if (save_failure_) line += " | STATE NOT SAVED";
   return line;

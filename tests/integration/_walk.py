@@ -477,7 +477,12 @@ def walk_6_4(ui):
     answer(ui, r"Azimuth maximum value : 360\.0 ", "340\r", "6-4")
     answer(ui, r"Elevation minmum value : 0\.0 ", "\r", "6-4")
     answer(ui, r"Elevation maximum value : 90\.0 ", "60\r", "6-4")
+    # The factory South start: 0..340 holds the rotor stop, the limits split the travel (issue 21).
+    # Y: pointing limits the antenna may cross (the walk's later AZ/EL commands point on both sides).
+    ui.prompt(r"Limits split the travel: cross them between passes \? \[Y/N\] ")
+    ui.send("Y\r")
     out = ui.prompt(UPDATE)
+    must(out, r"may cross between passes", "6-4 says what is reachable when limits split the travel")
     must_not(since(out, "Set Antenna Parking position"), r"Not changed", "the manual's 6-4 example is valid")
     # A whole that does not hold together is refused, nothing changed.
     ui.send("4\r")
@@ -502,13 +507,14 @@ def check_rotator_after_6(rot):
     check(rot["presets"] == [[float(a), float(e)] for a, e in PRESETS], f"6-6-3 presets: {rot['presets']}")
     check(rot["parking_enabled"] is True and rot["parking"] == [90.0, 45.0], f"6-4 parking: {rot}")
     check(rot["limits_enabled"] is True and (rot["az_limit_min"], rot["az_limit_max"]) == (0.0, 340.0) and
-          (rot["el_limit_min"], rot["el_limit_max"]) == (0.0, 60.0), f"6-4 limits: {rot}")
+          (rot["el_limit_min"], rot["el_limit_max"]) == (0.0, 60.0) and rot["cross_limit_sector"] is True,
+          f"6-4 limits: {rot}")
 
 
 AFTER_6_4 = [
     r"^Dead band        AZ:5\.0 EL:3\.0  Skew AZ:0\.0 EL:0\.0$",
     r"^Antenna parking  On  AZ:90\.0 EL:45\.0$",
-    r"^Rotator limit    On  AZ:0\.0-340\.0 EL:0\.0-60\.0$",
+    r"^Rotator limit    On  AZ:0\.0-340\.0 EL:0\.0-60\.0  cross between passes$",
     r"^Preset position  1:125\.0/15\.0 2:90\.0/22\.0 3:0\.0/45\.0 4:270\.0/10\.0 5:165\.0/0\.0$",
 ]
 

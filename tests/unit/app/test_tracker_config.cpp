@@ -59,6 +59,11 @@ TEST_CASE("the first bad value is named, and nothing is configured") {
   CHECK(error_of({"--allow", "10.0.0.0/33"}).rfind("--allow: ", 0) == 0);
   CHECK(error_of({"--clock", "yesterday"}).rfind("--clock: ", 0) == 0);
   CHECK(error_of({"--tick-ms", "50"}).rfind("--tick-ms: ", 0) == 0);
+  // The fastest clock the tracker and the simulated rotator follow is stated and enforced.
+  CHECK(error_of({"--clock-rate", "201"}) ==
+        "--clock-rate: expected a rate > 0 and at most 200 (1 is real time; 200 is the fastest the tracker and "
+        "the simulated rotator follow), found '201'");
+  CHECK(parse({"--clock-rate", "200"}).config->clock_rate == 200.0);
   CHECK(error_of({"extra"}) == "unexpected argument 'extra'");
   // order: --baud is read before --log-level
   CHECK(error_of({"--log-level", "loud", "--baud", "300"}).rfind("--baud: ", 0) == 0);

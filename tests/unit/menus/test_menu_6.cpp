@@ -203,7 +203,9 @@ TEST_CASE("Menu 6 scripts: the keys typed, what the screen shows, what the model
        .then = [](Fixture& f, const store::Model&) { CHECK(f.model.rotator.az_dead_band == 4); }},
 
       {.name = "6-4 sets parking and limits, as in the manual's example",
-       .keys = "4\rY90\r45\rY\r\r340\r\r60\rQ\r",  // Y<Enter> ends the answer (issue 18)
+       // With the factory South start, 0..340 holds the rotor stop (180): the limits split the
+       // travel, and 6-4 asks whether they may be crossed (N: they are barriers).
+       .keys = "4\rY90\r45\rY\r\r340\r\r60\rY\rQ\r",  // Y<Enter> ends the answer (issue 18)
        .shown = {"Set Antenna Parking position ? [Y/N] Y\n"
                  "Azimuth Parking value : 0.0  90\n"
                  "Elevation Parking value : 0.0  45\n"
@@ -211,7 +213,13 @@ TEST_CASE("Menu 6 scripts: the keys typed, what the screen shows, what the model
                  "Azimuth minmum value : 0.0  \n"
                  "Azimuth maximum value : 360.0  340\n"
                  "Elevation minmum value : 0.0  \n"
-                 "Elevation maximum value : 90.0  60\n"},
+                 "Elevation maximum value : 90.0  60\n"
+                 "Limits split the travel: cross them between passes ? [Y/N] Y\n",
+                 "Limits split the travel: with the rotor stop at 180.0 (South start) the\n"
+                 "  antenna can reach 180.0-340.0 or 0.0-180.0, and may cross between passes\n"
+                 "  (never during one), as the limits are pointing limits only. A pass is\n"
+                 "  followed in the piece that covers the most of it; the schedule says how\n"
+                 "  much.\n"},
        .saves = 1,
        .then = [](Fixture& f, const store::Model&) {
          const auto& r = f.model.rotator;
@@ -222,6 +230,9 @@ TEST_CASE("Menu 6 scripts: the keys typed, what the screen shows, what the model
          CHECK(r.az_limit_max == 340);
          CHECK(r.el_limit_min == 0);
          CHECK(r.el_limit_max == 60);
+         CHECK(r.cross_limit_sector);
+         CHECK(menus::configuration_lines(f.model)[4] ==
+               "Rotator limit    On  AZ:0.0-340.0 EL:0.0-60.0  cross between passes");
          CHECK(f.station->rotator().config() == r);
          // Parking now works: the controller goes there.
          f.station->set_rotor_control(true);

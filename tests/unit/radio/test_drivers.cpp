@@ -47,6 +47,17 @@ TEST_CASE("Simulated radio records what it is told") {
   CHECK(r.wait_idle(0ms));
 }
 
+TEST_CASE("Simulated radio keeps the latest 4096 events, not an unbounded history") {
+  SimulatedRadio r;
+  for (Hz hz = 1; hz <= 10'000; ++hz) r.set_downlink_frequency(hz);
+  const auto h = r.history();
+  REQUIRE(h.size() == 4096);
+  CHECK(h.front().hz == 10'000 - 4096 + 1);
+  CHECK(h.back().hz == 10'000);
+  CHECK(r.status().delivered == 10'000);
+  CHECK(r.frequency(Link::downlink) == 10'000);
+}
+
 TEST_CASE("apply() sends each link's mode before its frequency") {
   SimulatedRadio r;
   TuneCommands c;

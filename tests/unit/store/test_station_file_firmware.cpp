@@ -279,3 +279,18 @@ TEST_CASE("FREQ.DAT's alternative uplinks and ir/kr flag live in the database an
   j["db"]["satellites"][0]["radio"]["alternate_uplinks_hz"] = {1, 2, 3, 4};
   CHECK_THROWS_WITH(store::model_from_json(j), doctest::Contains("db.satellites[0].radio.alternate_uplinks_hz"));
 }
+
+TEST_CASE("rotator.cross_limit_sector: stored, optional (older states load as barriers), type-checked") {
+  store::Model m = store::factory_defaults();
+  m.rotator.limits_enabled = true;
+  m.rotator.az_limit_min = 10;
+  m.rotator.az_limit_max = 350;
+  m.rotator.cross_limit_sector = true;
+  nlohmann::json j = store::to_json(m);
+  CHECK(j["rotator"]["cross_limit_sector"] == true);
+  CHECK(store::model_from_json(j).rotator.cross_limit_sector);
+  j["rotator"].erase("cross_limit_sector");
+  CHECK_FALSE(store::model_from_json(j).rotator.cross_limit_sector);
+  j["rotator"]["cross_limit_sector"] = "yes";
+  CHECK_THROWS_WITH(store::model_from_json(j), doctest::Contains("rotator.cross_limit_sector"));
+}

@@ -281,3 +281,68 @@ TEST_CASE("The status line says STATE NOT SAVED while the last save failed, unti
   f.station->set_save_failure(std::nullopt);
   CHECK(f.station->status_line().find("STATE NOT SAVED") == std::string::npos);
 }
+
+namespace {
+// The ISS pass 335 -> 101 of 2026-05-22 12:57:01 from the manual's station, South start, limits
+// 10..350 (issue 21): tracked from 6 minutes before AOS to LOS with the antenna at compass 340
+// (travel 160, the piece 180..350). Returns the highest and lowest travel seen during the pass.
+struct SplitRun {
+  double lo = 1e9, hi = -1e9;
+  std::optional<std::string> note;
+  std::string status;
+  double err_end = 0.0;  // pointing error 2 minutes before LOS
+};
+SplitRun follow_split(bool cross) {
+  store::Model m = shipped(station::RotorStart::south, 27.391, 128.657, 50.0);
+  m.rotator.limits_enabled = true;
+  m.rotator.az_limit_min = 10;
+  m.rotator.az_limit_max = 350;
+  m.rotator.cross_limit_sector = cross;
+  const int iss = *m.db.find("ISS");
+  const orbit::UtcTime aos = orbit::from_civil(2026, 5, 22, 12, 57, 1);
+  const orbit::UtcTime los = orbit::from_civil(2026, 5, 22, 13, 7, 37);
+  rotator::SimulatedRotatorParams p = rotator::SimulatedRotatorParams::matching(m.rotator);
+  p.start = {160.0, 0.0};
+  Station st(m, orbit::add_minutes(aos, -6.0));
+  st.build_station(p);
+  st.station->set_rotor_control(true);
+  st.tracker.track_single(iss);
+  SplitRun r;
+  while (st.now < los) {
+    st.step(std::chrono::milliseconds(500));
+    const double travel = st.rotator_sim->true_position().az_travel;
+    if (st.now >= aos) {
+      r.lo = std::min(r.lo, travel);
+      r.hi = std::max(r.hi, travel);
+    }
+    if (st.now >= orbit::add_minutes(los, -2.0) && r.err_end == 0.0) {
+      const tracker::SatNow* f = st.tracker.followed();
+      REQUIRE(f);
+      const auto a = st.truth();
+      r.err_end = rotator::pointing_error_deg(a.az, a.el, f->obs.look.az_deg, f->obs.look.el_deg);
+    }
+  }
+  r.note = st.station->coverage_note(iss);
+  r.status = st.station->status_line();
+  return r;
+}
+}  // namespace
+
+TEST_CASE("Limits that split the travel, as barriers: the antenna keeps to its piece and says how much it follows") {
+  const SplitRun r = follow_split(false);
+  CHECK(r.hi <= 170.5);  // never into the excluded 350..10 (travel 170..190)
+  CHECK(r.lo >= 150.0);
+  REQUIRE(r.note);
+  CHECK(*r.note == "antenna follows 20% (12:57:00-12:59:02) in 180.0-350.0");
+  CHECK(r.status.find(" | antenna follows 20% (12:57:00-12:59:02) in 180.0-350.0") != std::string::npos);
+  CHECK(r.err_end > 40.0);  // held at 350 while the ISS is in the east
+}
+
+TEST_CASE("Limits that split the travel, crossing allowed: the piece that covers most, reached before AOS") {
+  const SplitRun r = follow_split(true);
+  CHECK(r.lo >= 189.5);  // in 10..180 for the whole pass: crossed before AOS, not during it
+  CHECK(r.hi <= 360.0);
+  REQUIRE(r.note);
+  CHECK(*r.note == "antenna follows 64% (13:00:53-13:07:37) in 10.0-180.0");
+  CHECK(r.err_end < 2.0);
+}
