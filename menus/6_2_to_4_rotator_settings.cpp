@@ -27,6 +27,9 @@ void menu_6_2_adc_span(term::Terminal& t, Services& s) {
   t.line(span_of("EL", c.el_span));
   c.el_span.min = whole(cfg::ask_number(t, "EL minimum value ? : ", c.el_span.min, lo, top, true));
   c.el_span.max = whole(cfg::ask_number(t, "EL maximum value ? : ", c.el_span.max, lo, top, true));
+  // Limits that leave two pieces of travel (the rotor stop inside them) are said so, with what is
+  // reachable. Whether they may be crossed is not asked here, so the manual's dialogue (whose own
+  // example splits the travel on the factory South start) keeps its keystrokes: --cross-limit-sector.
   if (cfg::commit_rotator(t, s, c)) t.line(span_line(c));
 }
 
@@ -58,11 +61,6 @@ void menu_6_4_parking_limits(term::Terminal& t, Services& s) {
     c.az_limit_max = cfg::ask_number(t, prompt("Azimuth maximum value", c.az_limit_max), c.az_limit_max, 0, 360);
     c.el_limit_min = cfg::ask_number(t, prompt("Elevation minmum value", c.el_limit_min), c.el_limit_min, 0, el_top);
     c.el_limit_max = cfg::ask_number(t, prompt("Elevation maximum value", c.el_limit_max), c.el_limit_max, 0, el_top);
-    // Limits that leave two pieces of travel (the rotor stop inside them): barriers, or pointing
-    // limits the antenna may cross between passes (docs/rotator.md).
-    if (rotator::validate(c).empty() && rotator::AdcModel(c, s.model.station.rotor_start).travel_split())
-      c.cross_limit_sector =
-          cfg::ask_choice(t, "Limits split the travel: cross them between passes ? [Y/N] ", "YN") == 'Y';
   }
   if (cfg::commit_rotator(t, s, c))
     if (const auto w = rotator::split_travel_warning(c, s.model.station.rotor_start))

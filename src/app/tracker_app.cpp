@@ -295,6 +295,7 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   auto log = open_log(c);
   store::StateFile file(c.state_dir);
   Startup startup = load_state(file, c, *log);
+  if (c.cross_limit_sector) startup.model.rotator.cross_limit_sector = *c.cross_limit_sector;
 
   StationApp app(startup.model, file, log);
   if (auto err = build_station(app, c)) return usage_error(*err);

@@ -51,6 +51,9 @@ std::vector<OptionSpec> tracker_option_specs() {
                               "Replaces the sources stored by menu 3-5", true},
       {"elements-refresh-hours", "H", "hours between element refreshes, 2 to 720 (default 12, or as stored)"},
       {"elements-timeout", "S", "seconds one element download may take, 1 to 600 (default 60)"},
+      {"cross-limit-sector", "yes|no", "when the rotator limits split its travel (the rotor stop inside them): yes, "
+                                       "they are pointing limits the antenna may cross between passes; no (the "
+                                       "factory setting), they are barriers (stored)"},
       {"log-level", "LEVEL", "what trakbox.log in the state directory keeps: error, warn, info (default) or "
                              "debug (every remote command and its reply)"},
   };
@@ -192,6 +195,10 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
     if (!c.clock_start) r.fail("--clock", "expected an ISO 8601 UTC time like 2026-05-21T12:00:00Z; found '" + *t + "'");
   }
   read_devices(o, r, c);
+  if (const auto x = o.value("cross-limit-sector")) {
+    if (*x == "yes" || *x == "no") c.cross_limit_sector = *x == "yes";
+    else r.fail("--cross-limit-sector", "expected yes or no; found '" + *x + "'");
+  }
   if (const auto l = o.value("log-level")) {
     if (const auto level = log_level_named(*l)) c.log_level = *level;
     else r.fail("--log-level", "expected error, warn, info or debug; found '" + *l + "'");

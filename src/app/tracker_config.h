@@ -60,6 +60,9 @@ struct TrackerConfig {
   std::vector<std::string> elements_urls;
   std::optional<double> elements_refresh_hours;
   int elements_timeout_s = 60;
+  // --cross-limit-sector yes|no: whether limits that split the rotator's travel may be crossed
+  // between passes (RotatorConfig::cross_limit_sector); stored in the state when given.
+  std::optional<bool> cross_limit_sector;
   std::vector<std::string> warnings;  // e.g. a secret file others can read: said at start
   spdlog::level::level_enum log_level = spdlog::level::info;
 };

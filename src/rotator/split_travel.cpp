@@ -32,10 +32,11 @@ std::optional<std::string> split_travel_warning(const RotatorConfig& c, station:
                      reach[0] + " or " + reach[1];
   if (c.cross_limit_sector)
     return text + ", and may cross between passes (never during one), as the limits are pointing limits only. " +
-           "A pass is followed in the piece that covers the most of it; the schedule says how much.";
+           "A pass is followed in the piece that covers the most of it; the realtime display says how much.";
   return text + ", and keeps to the one it is in, as the limits bar the excluded " + deg1(c.az_limit_max) + "-" +
          deg1(c.az_limit_min) +
-         " between them. A pass is followed as far as that piece allows; the schedule says how much.";
+         " between them. A pass is followed as far as that piece allows; the realtime display says how much "
+         "(--cross-limit-sector yes lets it cross between passes).";
 }
 
 }  // namespace tb::rotator

@@ -478,9 +478,8 @@ def walk_6_4(ui):
     answer(ui, r"Elevation minmum value : 0\.0 ", "\r", "6-4")
     answer(ui, r"Elevation maximum value : 90\.0 ", "60\r", "6-4")
     # The factory South start: 0..340 holds the rotor stop, the limits split the travel (issue 21).
-    # Y: pointing limits the antenna may cross (the walk's later AZ/EL commands point on both sides).
-    ui.prompt(r"Limits split the travel: cross them between passes \? \[Y/N\] ")
-    ui.send("Y\r")
+    # The walk runs with --cross-limit-sector yes (pointing limits the antenna may cross: its later
+    # AZ/EL commands point on both sides); the manual's keystrokes stay as they are.
     out = ui.prompt(UPDATE)
     must(out, r"may cross between passes", "6-4 says what is reachable when limits split the travel")
     must_not(since(out, "Set Antenna Parking position"), r"Not changed", "the manual's 6-4 example is valid")
@@ -864,10 +863,14 @@ def group_m(s):
 # ---------------------------------------------------------------------------------------------
 # How the ui_walk_* tests run a group: on a fresh session of one front end, closed whatever happens.
 
+# Limits that split the travel may be crossed between passes (see walk 6-4).
+CROSSING = ("--cross-limit-sector", "yes")
+
+
 def walk_serial(group, *args, transcript_checks=(), **kwargs):
     """The group over a serial line (socat pty pair, 9600 bps), then the rules of a serial terminal:
     no escape codes, CR LF line ends; each of transcript_checks(transcript) after them."""
-    s = SerialSession()
+    s = SerialSession(extra=CROSSING)
     try:
         group(s, *args, **kwargs)
         check("\x1b" not in s.term.transcript, "no escape codes on a serial line")
@@ -880,7 +883,7 @@ def walk_serial(group, *args, transcript_checks=(), **kwargs):
 
 def walk_screen(group, *args, **kwargs):
     """The group on the full-screen front end in tmux, 100x40."""
-    s = ScreenSession(cols=100, rows=40)
+    s = ScreenSession(extra=CROSSING, cols=100, rows=40)
     try:
         group(s, *args, **kwargs)
     finally:

@@ -204,8 +204,8 @@ TEST_CASE("Menu 6 scripts: the keys typed, what the screen shows, what the model
 
       {.name = "6-4 sets parking and limits, as in the manual's example",
        // With the factory South start, 0..340 holds the rotor stop (180): the limits split the
-       // travel, and 6-4 asks whether they may be crossed (N: they are barriers).
-       .keys = "4\rY90\r45\rY\r\r340\r\r60\rY\rQ\r",  // Y<Enter> ends the answer (issue 18)
+       // travel, and 6-4 says what is reachable (barriers: the factory setting), asking nothing more.
+       .keys = "4\rY90\r45\rY\r\r340\r\r60\rQ\r",  // Y<Enter> ends the answer (issue 18)
        .shown = {"Set Antenna Parking position ? [Y/N] Y\n"
                  "Azimuth Parking value : 0.0  90\n"
                  "Elevation Parking value : 0.0  45\n"
@@ -213,13 +213,12 @@ TEST_CASE("Menu 6 scripts: the keys typed, what the screen shows, what the model
                  "Azimuth minmum value : 0.0  \n"
                  "Azimuth maximum value : 360.0  340\n"
                  "Elevation minmum value : 0.0  \n"
-                 "Elevation maximum value : 90.0  60\n"
-                 "Limits split the travel: cross them between passes ? [Y/N] Y\n",
+                 "Elevation maximum value : 90.0  60\n",
                  "Limits split the travel: with the rotor stop at 180.0 (South start) the\n"
-                 "  antenna can reach 180.0-340.0 or 0.0-180.0, and may cross between passes\n"
-                 "  (never during one), as the limits are pointing limits only. A pass is\n"
-                 "  followed in the piece that covers the most of it; the schedule says how\n"
-                 "  much.\n"},
+                 "  antenna can reach 180.0-340.0 or 0.0-180.0, and keeps to the one it is in,\n"
+                 "  as the limits bar the excluded 340.0-0.0 between them. A pass is followed as\n"
+                 "  far as that piece allows; the realtime display says how much\n"
+                 "  (--cross-limit-sector yes lets it cross between passes).\n"},
        .saves = 1,
        .then = [](Fixture& f, const store::Model&) {
          const auto& r = f.model.rotator;
@@ -230,16 +229,18 @@ TEST_CASE("Menu 6 scripts: the keys typed, what the screen shows, what the model
          CHECK(r.az_limit_max == 340);
          CHECK(r.el_limit_min == 0);
          CHECK(r.el_limit_max == 60);
-         CHECK(r.cross_limit_sector);
-         CHECK(menus::configuration_lines(f.model)[4] ==
-               "Rotator limit    On  AZ:0.0-340.0 EL:0.0-60.0  cross between passes");
+         CHECK_FALSE(r.cross_limit_sector);
+         CHECK(menus::configuration_lines(f.model)[4] == "Rotator limit    On  AZ:0.0-340.0 EL:0.0-60.0");
          CHECK(f.station->rotator().config() == r);
-         // Parking now works: the controller goes there.
+         // Parking now acts, within the limits as barriers: the antenna is in the piece 180..340
+         // (the South stop), and 90 lies beyond the excluded 340..0, so it goes as far as it may
+         // and never enters the excluded sector.
          f.station->set_rotor_control(true);
-         CHECK(f.station->rotator().park());
+         f.station->rotator().park();
          f.run(60);
-         CHECK(rotator::azimuth_distance(f.truth().az, 90) <= kAzTol);
          CHECK(std::abs(f.truth().el - 45) <= kElTol);
+         CHECK(f.truth().az >= 180.0 - kAzTol);
+         CHECK(f.truth().az <= 340.0 + kAzTol);
        }},
 
       // 6-4 refuses limits that leave nowhere to go; N switches parking and limits off.

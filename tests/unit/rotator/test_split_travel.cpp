@@ -101,11 +101,12 @@ TEST_CASE("The warning when limits split the travel, with barriers and with cros
   CHECK(split_travel_warning(limits_10_350(), RotorStart::south) ==
         "Limits split the travel: with the rotor stop at 180.0 (South start) the antenna can reach 180.0-350.0 or "
         "10.0-180.0, and keeps to the one it is in, as the limits bar the excluded 350.0-10.0 between them. A pass "
-        "is followed as far as that piece allows; the schedule says how much.");
+        "is followed as far as that piece allows; the realtime display says how much (--cross-limit-sector yes lets it "
+        "cross between passes).");
   CHECK(split_travel_warning(limits_10_350(true), RotorStart::south) ==
         "Limits split the travel: with the rotor stop at 180.0 (South start) the antenna can reach 180.0-350.0 or "
         "10.0-180.0, and may cross between passes (never during one), as the limits are pointing limits only. A "
-        "pass is followed in the piece that covers the most of it; the schedule says how much.");
+        "pass is followed in the piece that covers the most of it; the realtime display says how much.");
   CHECK_FALSE(split_travel_warning(limits_10_350(), RotorStart::north).has_value());
   CHECK_FALSE(split_travel_warning(RotatorConfig{}, RotorStart::south).has_value());
   RotatorConfig off = limits_10_350();
