@@ -39,6 +39,11 @@ class HamlibLink final : public RadioLink {
   void set_frequency(Link link, Hz hz) override;
   void set_mode(Link link, Mode mode) override;
   void send_raw(const std::string& bytes) override;
+  // Read back with get_freq (get_split_freq for the split uplink), Hamlib's cache off so the value
+  // is the radio's, not the last one trakbox set.
+  bool can_read(Link) const override { return true; }
+  Hz read_frequency(Link link) override;
+  void set_ctcss_tone(int tenths_hz) override;   // set_ctcss_tone on the uplink's VFO
   // The port's descriptor hung up (a serial adapter unplugged) or the peer closed the connection
   // (rigctld gone): no traffic, so it may run often.
   void check() override;

@@ -1,10 +1,37 @@
 #include "radio/simulated.h"
 
+#include <utility>
+
 namespace tb::radio {
+
+namespace {
+int index(Link l) { return l == Link::downlink ? 0 : 1; }
+}  // namespace
 
 SimulatedRadio::SimulatedRadio() {
   status_.connected = true;
   status_.connects = 1;
+  status_.reads_downlink = status_.reads_uplink = true;
+}
+
+void SimulatedRadio::set_frequency_guarded(Link link, Hz hz, Hz tolerance) {
+  {
+    std::lock_guard lock(mu_);
+    const std::optional<Hz> dial = link == Link::downlink ? status_.downlink_hz : status_.uplink_hz;
+    std::optional<Hz>& accepted = accepted_[index(link)];
+    if (tolerance > 0 && dial && accepted && dial_turned(*dial, *accepted, tolerance)) {
+      turned_[index(link)] = *dial;
+      accepted = *dial;
+      return;
+    }
+    if (tolerance > 0 && turned_[index(link)]) return;   // a turn not yet taken: not undone
+  }
+  set_frequency(link, hz);
+}
+
+std::optional<Hz> SimulatedRadio::take_dial_turn(Link link) {
+  std::lock_guard lock(mu_);
+  return std::exchange(turned_[index(link)], std::nullopt);
 }
 
 void SimulatedRadio::set_frequency(Link link, Hz hz) {
@@ -14,6 +41,8 @@ void SimulatedRadio::set_frequency(Link link, Hz hz) {
     return;
   }
   (link == Link::downlink ? status_.downlink_hz : status_.uplink_hz) = hz;
+  (link == Link::downlink ? status_.downlink_read_hz : status_.uplink_read_hz) = hz;
+  accepted_[index(link)] = hz;
   ++status_.delivered;
   history_.push_back({RadioEvent::Kind::frequency, link, hz, Mode::none, {}});
 }
@@ -44,6 +73,7 @@ void SimulatedRadio::step(Link link, Hz delta) {
   std::lock_guard lock(mu_);
   auto& f = link == Link::downlink ? status_.downlink_hz : status_.uplink_hz;
   f = f.value_or(0) + delta;
+  (link == Link::downlink ? status_.downlink_read_hz : status_.uplink_read_hz) = f;
   history_.push_back({RadioEvent::Kind::step, link, delta, Mode::none, {}});
 }
 
