@@ -97,6 +97,7 @@ class StationLoop {
   std::unique_ptr<radio::RadioDriver> radio_;
   radio::Tuner tuner_;
   std::optional<int> tuned_;  // db index the tuner is set up for
+  bool tone_sent_ = false;    // a CTCSS tone is on (turned off for a satellite without one)
   std::optional<RemoteFollow> remote_;
   std::optional<std::string> save_failure_;
   std::string notice_;
