@@ -213,8 +213,8 @@ std::string format_freqmode_line(const FreqModeRecord& r) {
   if (s.has_passbands()) {
     line += " down=" + format_mhz(s.downlink_low_hz) + "-" + format_mhz(s.downlink_high_hz);
     line += " up=" + format_mhz(s.uplink_low_hz) + "-" + format_mhz(s.uplink_high_hz);
-    line += s.inverting ? " inv=y" : " inv=n";
   }
+  if (s.has_passbands() || s.inverting) line += s.inverting ? " inv=y" : " inv=n";
   if (s.ctcss_tenths_hz > 0)
     line += " tone=" + std::to_string(s.ctcss_tenths_hz / 10) + "." + std::to_string(s.ctcss_tenths_hz % 10);
   return line;

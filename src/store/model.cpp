@@ -140,7 +140,7 @@ json radio_entry_json(const radio::SatelliteRadio& r) {
             {"doppler", name_of(r.doppler, kDoppler)},          {"lcd_ma_display", r.lcd_ma_display},
             {"alternate_uplinks_hz", r.alternate_uplinks_hz},   {"reverse", name_of(r.reverse, kReverse)}};
   // The transponder's passbands and the CTCSS tone: written only when set.
-  if (r.downlink_low_hz || r.downlink_high_hz || r.uplink_low_hz || r.uplink_high_hz) {
+  if (r.downlink_low_hz || r.downlink_high_hz || r.uplink_low_hz || r.uplink_high_hz || r.inverting) {
     j["passbands_hz"] = {{"downlink", {r.downlink_low_hz, r.downlink_high_hz}},
                          {"uplink", {r.uplink_low_hz, r.uplink_high_hz}},
                          {"inverting", r.inverting}};
