@@ -3,8 +3,8 @@
 // sent and whether CAT runs the full orbit or only at AOS. The serial device itself comes from the
 // command line (--radio cat:DEVICE builds the driver for the rig chosen here when trakbox starts);
 // the corrections and F/A apply at once. trakbox's additions at the first question: D turns dial
-// follow on linear transponders on or off (at once), U names a second radio for the uplink (a spec
-// as --uplink-radio takes; it is opened when trakbox next starts, as the rig is).
+// follow on linear transponders on or off, U names a second radio for the uplink (a spec as
+// --uplink-radio takes) or none; both apply at once.
 #include <cctype>
 #include <charconv>
 #include <cstdio>
@@ -69,9 +69,16 @@ void menu_6_7_radio_cat(term::Terminal& t, Services& s) {
       if (const auto parsed = radio::parse_radio_spec(next, "uplink radio"); !next.empty() && !parsed.spec) {
         t.line("  " + parsed.error);
       } else if (!spec.empty()) {
-        s.model.radio.uplink_radio = c.uplink_radio = next;
-        save_or_report(t, s);
-        t.line("The uplink radio is opened when trakbox next starts.");
+        radio::MakeRadio made;
+        if (!next.empty()) made = radio::make_radio(*parsed.spec, s.model.radio);
+        if (!next.empty() && !made.driver) {
+          t.line("  " + made.error);
+        } else {
+          s.model.radio.uplink_radio = c.uplink_radio = next;
+          s.station.set_uplink_radio(std::move(made.driver));
+          save_or_report(t, s);
+          t.line("Radio: " + s.station.radio().describe());
+        }
       }
       extras();
     } else {

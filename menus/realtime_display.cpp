@@ -124,9 +124,8 @@ std::string radio_line(Services& s) {
     if (hz) std::snprintf(b, sizeof b, "%.6f", static_cast<double>(*hz) / 1e6);
     return std::string(b);
   };
-  const radio::Tuning& tn = tu.last_tuning();
   std::string line = "Spot D " + mhz(tu.downlink_spot_hz()) + " U " + mhz(tu.uplink_spot_hz()) + " | sent D " +
-                     mhz(tn.downlink_radio_hz) + " U " + mhz(tn.uplink_radio_hz);
+                     mhz(tu.last_sent_downlink_hz()) + " U " + mhz(tu.last_sent_uplink_hz());
   if (tu.dial_follow_active()) {
     line += " | dial follow";
     if (!rad.reads_downlink || !rad.reads_uplink)

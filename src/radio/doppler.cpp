@@ -90,7 +90,14 @@ void Tuner::move_rit(Hz delta) {
   sat_.uplink_hz = transponder_of(sat_)->uplink_for(sat_.downlink_hz);
 }
 
-void Tuner::dial_downlink(Hz radio_hz, double rr) {
+namespace {
+bool near_band(Hz spot, Hz low, Hz high) {
+  const Hz width = high - low;
+  return spot >= low - width && spot <= high + width;
+}
+}  // namespace
+
+bool Tuner::dial_downlink(Hz radio_hz, double rr) {
   // The radio: RF + sign * (RF (1 - rr/c) - RF) + offset + RIT = RF (1 - sign rr/c) + offset + RIT.
   double sign = 0.0;
   if (config_.downlink_correction == DownlinkCorrection::on) sign = 1.0;
@@ -98,15 +105,23 @@ void Tuner::dial_downlink(Hz radio_hz, double rr) {
   const Hz rit = dial_follow_active() ? 0 : rit_hz_;
   const double rf = static_cast<double>(radio_hz - sat_.downlink_offset_hz - rit) /
                     (1.0 - sign * rr / kSpeedOfLightKmS);
-  sat_.downlink_hz = static_cast<Hz>(std::llround(rf));
-  if (auto t = transponder_of(sat_)) sat_.uplink_hz = t->uplink_for(sat_.downlink_hz);
+  const Hz spot = static_cast<Hz>(std::llround(rf));
+  const auto t = transponder_of(sat_);
+  if (t && !near_band(spot, t->downlink_low_hz, t->downlink_high_hz)) return false;
+  sat_.downlink_hz = spot;
+  if (t) sat_.uplink_hz = t->uplink_for(sat_.downlink_hz);
+  return true;
 }
 
-void Tuner::dial_uplink(Hz radio_hz, double rr) {
+bool Tuner::dial_uplink(Hz radio_hz, double rr) {
   // The radio: RF / (1 - rr/c) + offset with the uplink correction on, RF + offset without.
   const double factor = config_.uplink_correction ? 1.0 - rr / kSpeedOfLightKmS : 1.0;
-  sat_.uplink_hz = static_cast<Hz>(std::llround(static_cast<double>(radio_hz - sat_.uplink_offset_hz) * factor));
-  if (auto t = transponder_of(sat_)) sat_.downlink_hz = t->downlink_for(sat_.uplink_hz);
+  const Hz spot = static_cast<Hz>(std::llround(static_cast<double>(radio_hz - sat_.uplink_offset_hz) * factor));
+  const auto t = transponder_of(sat_);
+  if (t && !near_band(spot, t->uplink_low_hz, t->uplink_high_hz)) return false;
+  sat_.uplink_hz = spot;
+  if (t) sat_.downlink_hz = t->downlink_for(sat_.uplink_hz);
+  return true;
 }
 
 Hz Tuner::dial_tolerance_downlink_hz() const {

@@ -140,8 +140,10 @@ class Tuner {
   // The operator turned a link's dial to radio_hz (read back from the radio) at range rate rr: the
   // spot of that link becomes the satellite-frame frequency the radio now hears (or sends), the
   // other link moves to the paired spot of the transponder, and the next update sends from there.
-  void dial_downlink(Hz radio_hz, double range_rate_km_s);
-  void dial_uplink(Hz radio_hz, double range_rate_km_s);
+  // A reading that puts the spot further than one passband width outside the passband is no turn
+  // across the transponder (another band, a radio that reads another VFO): nothing changes, false.
+  bool dial_downlink(Hz radio_hz, double range_rate_km_s);
+  bool dial_uplink(Hz radio_hz, double range_rate_km_s);
   // dial_tolerance_hz of a link for the last update's Doppler change (0 before two updates).
   Hz dial_tolerance_downlink_hz() const;
   Hz dial_tolerance_uplink_hz() const;

@@ -59,6 +59,7 @@ template <class Problem>
 void parse_options(const std::vector<std::string_view>& options, int first_field, SatelliteRadio& r,
                    Problem& problem_at) {
   int field = first_field - 1;
+  bool bad_band = false;
   auto problem = [&](int, std::string_view found, std::string expected) { problem_at(field, found, std::move(expected)); };
   for (std::string_view o : options) {
     ++field;
@@ -68,6 +69,7 @@ void parse_options(const std::vector<std::string_view>& options, int first_field
     if (key == "down" || key == "up") {
       const auto band = parse_band(value);
       if (!band) {
+        bad_band = true;
         problem(0, o, std::string(key) + "=" + kExpectBand);
         continue;
       }
@@ -87,7 +89,7 @@ void parse_options(const std::vector<std::string_view>& options, int first_field
   }
   const bool any_band = r.downlink_low_hz || r.uplink_low_hz;
   field = first_field;
-  if (any_band && !r.has_passbands())
+  if (any_band && !bad_band && !r.has_passbands())
     problem(0, r.downlink_low_hz ? "down=" : "up=", "both down=LOW-HIGH and up=LOW-HIGH for a transponder");
 }
 

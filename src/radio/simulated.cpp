@@ -43,6 +43,7 @@ void SimulatedRadio::set_frequency(Link link, Hz hz) {
   (link == Link::downlink ? status_.downlink_hz : status_.uplink_hz) = hz;
   (link == Link::downlink ? status_.downlink_read_hz : status_.uplink_read_hz) = hz;
   accepted_[index(link)] = hz;
+  turned_[index(link)].reset();
   ++status_.delivered;
   history_.push_back({RadioEvent::Kind::frequency, link, hz, Mode::none, {}});
 }

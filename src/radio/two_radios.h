@@ -25,6 +25,8 @@ class TwoRadios final : public RadioDriver {
   bool wait_idle(std::chrono::milliseconds timeout) override;
 
   RadioDriver& downlink_radio() { return *down_; }
+  // Takes the downlink radio out (the uplink radio is being replaced or removed).
+  std::unique_ptr<RadioDriver> release_downlink() { return std::move(down_); }
   RadioDriver& uplink_radio() { return *up_; }
 
  private:

@@ -42,6 +42,9 @@ void WorkerRadio::set_frequency(Link link, Hz hz) {
   {
     std::lock_guard lock(mu_);
     want_hz_[index(link)] = hz;
+    // Set as told (host mode, a rigctld client, dial follow off): no dial to watch any more.
+    guard_[index(link)] = 0;
+    turned_[index(link)].reset();
     enqueue_locked({Job::Kind::frequency, link, hz, Mode::none, {}});
   }
   cv_.notify_all();

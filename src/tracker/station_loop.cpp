@@ -5,6 +5,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include "radio/two_radios.h"
+
 namespace tb::tracker {
 
 StationLoop::StationLoop(store::Model& model, const station::Clock& clock, Tracker& tracker,
@@ -68,15 +70,15 @@ void StationLoop::follow_radio(int db_index, const orbit::Observation& obs) {
   // Dial follow: a turn of either dial the radio reported since the last tick moves the spot.
   const std::optional<radio::Hz> turned_down = radio_->take_dial_turn(down);
   const std::optional<radio::Hz> turned_up = radio_->take_dial_turn(up);
-  if (follow && turned_down) {
-    tuner_.dial_downlink(*turned_down, rr);
-    spdlog::info("radio: downlink dial turned to {} Hz: spot {} Hz down, {} Hz up", *turned_down,
-                 tuner_.downlink_spot_hz(), tuner_.uplink_spot_hz());
-  } else if (follow && turned_up) {
-    tuner_.dial_uplink(*turned_up, rr);
-    spdlog::info("radio: uplink dial turned to {} Hz: spot {} Hz down, {} Hz up", *turned_up,
-                 tuner_.downlink_spot_hz(), tuner_.uplink_spot_hz());
-  }
+  auto follow_turn = [&](const char* which, radio::Hz hz, bool taken) {
+    if (taken)
+      spdlog::info("radio: {} dial turned to {} Hz: spot {} Hz down, {} Hz up", which, hz,
+                   tuner_.downlink_spot_hz(), tuner_.uplink_spot_hz());
+    else
+      spdlog::warn("radio: {} reads {} Hz, far outside the transponder: not taken as a turn of the dial", which, hz);
+  };
+  if (follow && turned_down) follow_turn("downlink", *turned_down, tuner_.dial_downlink(*turned_down, rr));
+  else if (follow && turned_up) follow_turn("uplink", *turned_up, tuner_.dial_uplink(*turned_up, rr));
   const radio::TuneCommands cmd = tuner_.update(obs.look.el_deg, rr);
   radio::DialGuard guard;
   // Not at the AOS edge: what the dial shows then is left from before the pass, not a new spot.
@@ -85,6 +87,19 @@ void StationLoop::follow_radio(int db_index, const orbit::Observation& obs) {
     (swap ? guard.downlink_hz : guard.uplink_hz) = tuner_.dial_tolerance_uplink_hz();
   }
   radio::apply(*radio_, cmd, guard);
+}
+
+void StationLoop::set_uplink_radio(std::unique_ptr<radio::RadioDriver> uplink) {
+  std::unique_ptr<radio::RadioDriver> downlink;
+  if (auto* two = dynamic_cast<radio::TwoRadios*>(radio_.get())) downlink = two->release_downlink();
+  else downlink = std::move(radio_);
+  radio_.reset();  // the old uplink radio closes here
+  if (uplink) radio_ = std::make_unique<radio::TwoRadios>(std::move(downlink), std::move(uplink));
+  else radio_ = std::move(downlink);
+  tuner_.resend();   // the spot stays; frequencies and modes go out again, and the tone
+  const int tone = tuned_ ? tuner_.satellite().ctcss_tenths_hz : 0;
+  if (tone > 0) radio_->set_ctcss_tone(tone);
+  tone_sent_ = tone > 0;
 }
 
 std::optional<radio::Hz> StationLoop::next_uplink() {

@@ -63,7 +63,7 @@ TEST_CASE("Dial follow: with Doppler the spot is the satellite-frame frequency t
   CHECK(t.downlink_spot_hz() == 435'650'004); // 435,657,270 / (1 + 5/c); 4 Hz of the 10 Hz rounding
   CHECK(t.uplink_spot_hz() == 145'954'996);
   const auto next = t.update(30.0, -5.0);
-  CHECK_FALSE(next.downlink_hz);              // the radio is already there
+  CHECK(*next.downlink_hz == 435'657'270);    // where the operator put it (a guarded send keeps it)
   CHECK(*next.uplink_hz == 145'952'560);      // 10,010 Hz down
 }
 
@@ -81,8 +81,15 @@ TEST_CASE("Dial follow: a normal transponder moves the uplink the same way; the 
   CHECK(t.downlink_spot_hz() == 435'620'000);
   Tuner inv(full_orbit());
   inv.select(rs44());
-  inv.dial_uplink(145'975'000, 0.0);          // inverting: uplink +10 kHz, downlink -10 kHz
+  CHECK(inv.dial_uplink(145'975'000, 0.0));   // inverting: uplink +10 kHz, downlink -10 kHz
   CHECK(inv.downlink_spot_hz() == 435'630'000);
+  // Up to one passband width (60 kHz) outside the passband is a turn; further is not.
+  CHECK(inv.dial_downlink(435'730'000, 0.0));
+  CHECK(inv.uplink_spot_hz() == 145'875'000);
+  CHECK_FALSE(inv.dial_downlink(435'730'010, 0.0));
+  CHECK_FALSE(inv.dial_uplink(435'640'000, 0.0));   // a radio that read the downlink's VFO
+  CHECK(inv.downlink_spot_hz() == 435'730'000);
+  CHECK(inv.uplink_spot_hz() == 145'875'000);
 }
 
 TEST_CASE("Dial follow: + and - move the spot of both links on a transponder, 0 takes them back") {
