@@ -2,13 +2,16 @@
 // an addition), the Icom CI-V addresses, the FT-736 wide FM filter, which Doppler corrections are
 // sent and whether CAT runs the full orbit or only at AOS. The serial device itself comes from the
 // command line (--radio cat:DEVICE builds the driver for the rig chosen here when trakbox starts);
-// the corrections and F/A apply at once.
+// the corrections and F/A apply at once. trakbox's additions at the first question: D turns dial
+// follow on linear transponders on or off, U names a second radio for the uplink (a spec as
+// --uplink-radio takes) or none; both apply at once.
 #include <cctype>
 #include <charconv>
 #include <cstdio>
 
 #include "menus/6_configuration.h"
 #include "radio/cat.h"
+#include "radio/factory.h"
 #include "store/model.h"
 #include "tracker/station_loop.h"
 
@@ -45,7 +48,44 @@ void menu_6_7_radio_cat(term::Terminal& t, Services& s) {
   const radio::RadioConfig before = c;
   t.line(std::string("Now: ") + radio::to_string(c.rig) + (c.cat_policy == radio::CatPolicy::aos_only ? " AOS" : " Full") +
          "   (N: no CAT rig, Q: leave unchanged)");
-  switch (cfg::ask_choice(t, "CAT Rig KENWOOD,YAESU,ICOM [K/Y/I] ? ", "KYIN")) {
+  auto extras = [&] {
+    t.line(std::string("Dial follow ") + (s.model.radio.dial_follow ? "ON" : "OFF") + "   Uplink radio: " +
+           (s.model.radio.uplink_radio.empty() ? "none (one radio)" : s.model.radio.uplink_radio) +
+           "   (D: dial follow on/off, U: uplink radio)");
+  };
+  extras();
+  char rig = 0;
+  while (!rig) {
+    const char k = cfg::ask_choice(t, "CAT Rig KENWOOD,YAESU,ICOM [K/Y/I] ? ", "KYINDU");
+    if (k == 'D') {
+      s.model.radio.dial_follow = c.dial_follow = !s.model.radio.dial_follow;
+      s.station.tuner().set_config(s.model.radio);
+      save_or_report(t, s);
+      extras();
+    } else if (k == 'U') {
+      const std::string spec =
+          cfg::answer(t, "Uplink radio, as --radio (sim, icom:DEV, hamlib:MODEL:DEV, rigctld:HOST:PORT ...; none) ? ");
+      const std::string next = spec == "none" ? "" : spec;
+      if (const auto parsed = radio::parse_radio_spec(next, "uplink radio"); !next.empty() && !parsed.spec) {
+        t.line("  " + parsed.error);
+      } else if (!spec.empty()) {
+        radio::MakeRadio made;
+        if (!next.empty()) made = radio::make_radio(*parsed.spec, s.model.radio);
+        if (!next.empty() && !made.driver) {
+          t.line("  " + made.error);
+        } else {
+          s.model.radio.uplink_radio = c.uplink_radio = next;
+          s.station.set_uplink_radio(std::move(made.driver));
+          save_or_report(t, s);
+          t.line("Radio: " + s.station.radio().describe());
+        }
+      }
+      extras();
+    } else {
+      rig = k;
+    }
+  }
+  switch (rig) {
     case 'K': c.rig = radio::Rig::kenwood; break;
     case 'Y': c.rig = radio::Rig::yaesu; break;
     case 'I': c.rig = radio::Rig::icom; break;

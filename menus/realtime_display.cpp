@@ -112,6 +112,33 @@ std::string control_line(Services& s) {
   return buf;
 }
 
+// The radio's links: the spot in the satellite's frame and the frequency sent, per link; dial
+// follow's state; a warning when the spot is outside the transponder's passband.
+std::string radio_line(Services& s) {
+  const radio::Tuner& tu = s.station.tuner();
+  const radio::SatelliteRadio& sat = tu.satellite();
+  if (!sat.has_downlink() && !sat.has_uplink()) return "";
+  const radio::RadioStatus rad = s.station.radio().status();
+  auto mhz = [](std::optional<radio::Hz> hz) {
+    char b[24] = "---";
+    if (hz) std::snprintf(b, sizeof b, "%.6f", static_cast<double>(*hz) / 1e6);
+    return std::string(b);
+  };
+  std::string line = "Spot D " + mhz(tu.downlink_spot_hz()) + " U " + mhz(tu.uplink_spot_hz()) + " | sent D " +
+                     mhz(tu.last_sent_downlink_hz()) + " U " + mhz(tu.last_sent_uplink_hz());
+  if (tu.dial_follow_active()) {
+    line += " | dial follow";
+    if (!rad.reads_downlink || !rad.reads_uplink)
+      line += std::string(" (") + (rad.reads_downlink || rad.reads_uplink ? "one" : "no") + " dial readable)";
+    const radio::LinearTransponder tp = *radio::transponder_of(sat);
+    if (!tp.downlink_inside(tu.downlink_spot_hz()) || !tp.uplink_inside(tu.uplink_spot_hz()))
+      line += " | SPOT OUTSIDE PASSBAND";
+  } else if (sat.has_passbands()) {
+    line += " | dial follow OFF";
+  }
+  return line;
+}
+
 // The shown satellite's elements: epoch and age now, and a warning past its orbit's limit
 // (trakbox's line; the manual's display has none).
 std::string elements_age_line(Services& s, int db_index) {
@@ -139,12 +166,13 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
   t.clear();
   t.line("============ Realtime Tracking [" + format_date(start) + "] ============");
   t.line("'E' Toggle rotor control  'Y' RTC zero adjust  'Q' Return to main menu");
-  t.line("'+/-/0' Doppler compensation  'U' next uplink channel");
+  t.line("'+/-/0' Doppler compensation  'U' next uplink channel  'D' dial follow on/off");
   std::optional<int> shown;
   bool was_in_range = false;       // the shown satellite was AOS on the last update
   orbit::UtcTime graphics_pass{};  // AOS of the pass last drawn (epoch: none)
   LinkNotices notices;             // full screen has the status line instead
   std::string coverage_said;       // serial terminal: the coverage note last printed
+  std::string radio_shown;         // serial terminal: the radio line last printed, without "sent"
   for (;;) {
     s.station.tick();  // fresh numbers at once, not a second late
     if (!t.full_screen())
@@ -175,7 +203,7 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
       // A pass the antenna cannot follow whole (limits, a split travel): how much it follows.
       const std::optional<std::string> coverage = s.station.coverage_note(f->db_index);
       if (t.full_screen()) {
-        t.live({row, coverage.value_or(""), control_line(s)});
+        t.live({row, coverage.value_or(""), control_line(s), radio_line(s)});
         // Redraw the pictures every few seconds and when the pass changes.
         const auto secs = std::chrono::duration_cast<std::chrono::seconds>(f->obs.time.time_since_epoch()).count();
         const orbit::UtcTime pass_aos = f->pass ? f->pass->aos : orbit::UtcTime{};
@@ -189,6 +217,16 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
           t.line(*coverage);
         }
         t.live({row});
+        // A serial terminal gets the radio line when the spot or dial follow's state changes.
+        std::string radio = radio_line(s);
+        std::string key = radio;
+        if (const auto a = key.find(" | sent "), b = key.find(" | ", a + 1); a != std::string::npos)
+          key.erase(a, b == std::string::npos ? std::string::npos : b - a);
+        if (key != radio_shown) {
+          t.end_live();
+          if (!radio.empty()) t.line(radio);
+          radio_shown = key;
+        }
       }
       coverage_said = coverage.value_or("");
     }
@@ -223,6 +261,14 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
         } else {
           t.line("No other uplink for this satellite (FREQ.DAT lists up to four)");
         }
+        break;
+      case 'd':
+      case 'D':
+        // Dial follow on linear transponders: the spot reached so far stays.
+        s.model.radio.dial_follow = !s.model.radio.dial_follow;
+        s.station.tuner().set_config(s.model.radio);
+        save_or_report(t, s);
+        if (!t.full_screen()) t.line(s.model.radio.dial_follow ? "Dial follow ON" : "Dial follow OFF");
         break;
       case '+':
       case '-':

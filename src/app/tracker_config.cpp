@@ -32,6 +32,8 @@ std::vector<OptionSpec> tracker_option_specs() {
       {"rotator", "SPEC", "simulated (default), hamlib:MODEL:DEVICE[:BAUD], rotctld:HOST[:PORT]"},
       {"radio", "SPEC", "simulated (default), icom:DEV, kenwood:DEV, yaesu:DEV, cat:DEV (rig of menu 6-7), "
                         "hamlib:MODEL:DEV[:BAUD], rigctld[:HOST[:PORT]]"},
+      {"uplink-radio", "SPEC", "a second radio for the uplink, in the same forms as --radio (which then drives "
+                               "the downlink); stored, so later starts use it too; none: one radio again"},
       {"tick-ms", "MS", "tracking interval in milliseconds, 100 to 1000 (default 1000)"},
       {"satrak-port", "N", "Satrak ACU protocol on TCP port N (default 4001; 0 turns it off)"},
       {"satrak-bind", "ADDR", "address the Satrak server listens on (default 127.0.0.1)"},
@@ -98,6 +100,13 @@ void read_devices(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
   const auto radio_spec = radio::parse_radio_spec(o.value("radio").value_or("simulated"));
   if (radio_spec.spec) c.radio = *radio_spec.spec;
   else r.fail("--radio", radio_spec.error);
+  if (const auto up = o.value("uplink-radio")) {
+    c.uplink_radio_text = *up == "none" ? "" : *up;
+    if (!c.uplink_radio_text->empty()) {
+      const auto up_spec = radio::parse_radio_spec(*up, "--uplink-radio");
+      if (!up_spec.spec) r.fail("--uplink-radio", up_spec.error);
+    }
+  }
 }
 
 // The endpoints' secrets, each for a server that is on.

@@ -43,6 +43,8 @@ struct TrackerConfig {
   std::optional<satrak::SatrakRotatorOptions> satrak_rotator;
   std::optional<rotator::RotatorSpec> rotator;
   radio::RadioSpec radio;
+  // --uplink-radio: a second radio's spec ("" for none); unset: the stored choice (menu 6-7).
+  std::optional<std::string> uplink_radio_text;
   // Endpoints. satrak_port 0 is off; explicit says --satrak-port was given (a busy port is then an
   // error rather than a note).
   int satrak_port = 4001;

@@ -51,8 +51,20 @@ struct SatelliteRadio {
   // operator may step through, after the default uplink_hz; at most kMaxUplinkChannels - 1.
   std::vector<Hz> alternate_uplinks_hz;
   ReverseAssignment reverse = ReverseAssignment::none;
+  // A linear transponder's passbands at the satellite (RF Hz; freq/mode `down=LO-HI up=LO-HI`,
+  // `inv=y|n`, the SatNOGS transmitter list's edges). All four 0: not a known linear transponder.
+  // With them the Tuner keeps the two links on the same spot of the passband (dial follow).
+  Hz downlink_low_hz = 0, downlink_high_hz = 0;
+  Hz uplink_low_hz = 0, uplink_high_hz = 0;
+  bool inverting = false;
+  // CTCSS tone for the uplink (FM satellites, freq/mode `tone=67.0`), in tenths of Hz; 0: none.
+  int ctcss_tenths_hz = 0;
 
   bool has_downlink() const { return downlink_hz > 0; }
+  bool has_passbands() const {
+    return downlink_low_hz > 0 && downlink_high_hz >= downlink_low_hz && uplink_low_hz > 0 &&
+           uplink_high_hz >= uplink_low_hz;
+  }
   bool has_uplink() const { return uplink_hz > 0; }
   // Steps to the next uplink channel: uplink_hz becomes the first alternative and goes to the end
   // of the list, so repeated steps go round all of them. False (nothing changed) without any.
@@ -139,6 +151,12 @@ struct RadioConfig {
   int cat_baud = 0;
   MicClickConfig mic_click;
   RadioParking parking;
+  // Dial follow on linear transponders (menu 6-7 and the realtime display's D key): the radio's
+  // frequency is read back each tick and a turn of the dial moves the spot instead of being undone.
+  bool dial_follow = true;
+  // The radio that carries the uplink when it is not the --radio one (--uplink-radio, menu 6-7):
+  // a radio spec as --radio takes (radio/factory.h); empty: the one radio carries both links.
+  std::string uplink_radio;
 
   bool operator==(const RadioConfig&) const = default;
 };

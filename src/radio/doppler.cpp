@@ -31,6 +31,15 @@ Hz LinearTransponder::downlink_for(Hz up) const {
   return inverting ? downlink_low_hz + (uplink_high_hz - up) : downlink_low_hz + (up - uplink_low_hz);
 }
 
+std::optional<LinearTransponder> transponder_of(const SatelliteRadio& s) {
+  if (!s.has_passbands()) return std::nullopt;
+  return LinearTransponder{s.downlink_low_hz, s.downlink_high_hz, s.uplink_low_hz, s.uplink_high_hz, s.inverting};
+}
+
+Hz dial_tolerance_hz(double doppler_change_per_s_hz, Hz step) {
+  return 2 * step + static_cast<Hz>(std::ceil(std::fabs(doppler_change_per_s_hz)));
+}
+
 Tuning compute_tuning(const SatelliteRadio& sat, const Corrections& corr, double rr, Hz rit_hz) {
   Tuning t;
   if (sat.has_downlink()) {
@@ -64,6 +73,65 @@ void Tuner::select(const SatelliteRadio& sat) {
   was_aos_.reset();
   resend();
   tuning_ = {};
+  previous_tuning_ = {};
+  updates_ = 0;
+}
+
+bool Tuner::dial_follow_active() const {
+  return config_.dial_follow && sat_.doppler == DopplerControl::cat && sat_.has_passbands() &&
+         sat_.has_downlink() && sat_.has_uplink();
+}
+
+void Tuner::move_rit(Hz delta) {
+  rit_hz_ += delta;
+  if (!dial_follow_active()) return;
+  // On a transponder the keys move the spot: the downlink by delta, the uplink to its pair.
+  sat_.downlink_hz += delta;
+  sat_.uplink_hz = transponder_of(sat_)->uplink_for(sat_.downlink_hz);
+}
+
+namespace {
+bool near_band(Hz spot, Hz low, Hz high) {
+  const Hz width = high - low;
+  return spot >= low - width && spot <= high + width;
+}
+}  // namespace
+
+bool Tuner::dial_downlink(Hz radio_hz, double rr) {
+  // The radio: RF + sign * (RF (1 - rr/c) - RF) + offset + RIT = RF (1 - sign rr/c) + offset + RIT.
+  double sign = 0.0;
+  if (config_.downlink_correction == DownlinkCorrection::on) sign = 1.0;
+  if (config_.downlink_correction == DownlinkCorrection::reverse) sign = -1.0;
+  const Hz rit = dial_follow_active() ? 0 : rit_hz_;
+  const double rf = static_cast<double>(radio_hz - sat_.downlink_offset_hz - rit) /
+                    (1.0 - sign * rr / kSpeedOfLightKmS);
+  const Hz spot = static_cast<Hz>(std::llround(rf));
+  const auto t = transponder_of(sat_);
+  if (t && !near_band(spot, t->downlink_low_hz, t->downlink_high_hz)) return false;
+  sat_.downlink_hz = spot;
+  if (t) sat_.uplink_hz = t->uplink_for(sat_.downlink_hz);
+  return true;
+}
+
+bool Tuner::dial_uplink(Hz radio_hz, double rr) {
+  // The radio: RF / (1 - rr/c) + offset with the uplink correction on, RF + offset without.
+  const double factor = config_.uplink_correction ? 1.0 - rr / kSpeedOfLightKmS : 1.0;
+  const Hz spot = static_cast<Hz>(std::llround(static_cast<double>(radio_hz - sat_.uplink_offset_hz) * factor));
+  const auto t = transponder_of(sat_);
+  if (t && !near_band(spot, t->uplink_low_hz, t->uplink_high_hz)) return false;
+  sat_.uplink_hz = spot;
+  if (t) sat_.downlink_hz = t->downlink_for(sat_.uplink_hz);
+  return true;
+}
+
+Hz Tuner::dial_tolerance_downlink_hz() const {
+  if (updates_ < 2) return dial_tolerance_hz(0.0);
+  return dial_tolerance_hz(tuning_.downlink_doppler_hz - previous_tuning_.downlink_doppler_hz);
+}
+
+Hz Tuner::dial_tolerance_uplink_hz() const {
+  if (updates_ < 2) return dial_tolerance_hz(0.0);
+  return dial_tolerance_hz(tuning_.uplink_doppler_hz - previous_tuning_.uplink_doppler_hz);
 }
 
 void Tuner::resend() {
@@ -75,7 +143,10 @@ void Tuner::resend() {
 
 TuneCommands Tuner::compute(double elevation_deg, double rr) {
   const Corrections corr = Corrections::from(config_);
-  tuning_ = compute_tuning(sat_, corr, rr, rit_hz_);
+  previous_tuning_ = tuning_;
+  ++updates_;
+  // On a followed transponder the + / - keys moved the spot itself (move_rit): no RIT on top.
+  tuning_ = compute_tuning(sat_, corr, rr, dial_follow_active() ? 0 : rit_hz_);
 
   TuneCommands cmd;
   const bool aos_now = at_aos(elevation_deg);

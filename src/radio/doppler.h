@@ -45,7 +45,21 @@ struct LinearTransponder {
   bool inverting = true;
   Hz uplink_for(Hz downlink_hz) const;
   Hz downlink_for(Hz uplink_hz) const;
+  bool downlink_inside(Hz hz) const { return hz >= downlink_low_hz && hz <= downlink_high_hz; }
+  bool uplink_inside(Hz hz) const { return hz >= uplink_low_hz && hz <= uplink_high_hz; }
 };
+// The satellite's transponder when its record gives the passbands (SatelliteRadio::has_passbands).
+std::optional<LinearTransponder> transponder_of(const SatelliteRadio& sat);
+
+// Dial follow: how far the radio's frequency may stray from what trakbox last set before it counts
+// as the operator's turn of the dial: two tuning steps (the radio's own rounding) plus the change of
+// the Doppler correction over about a second (trakbox's next command may be in flight), rounded up.
+Hz dial_tolerance_hz(double doppler_change_per_s_hz, Hz step = kTuningStepHz);
+// The radio reads read_hz where trakbox last set last_set_hz: did the operator turn the dial?
+inline bool dial_turned(Hz read_hz, Hz last_set_hz, Hz tolerance_hz) {
+  const Hz d = read_hz - last_set_hz;
+  return d > tolerance_hz || -d > tolerance_hz;
+}
 
 struct Corrections {
   bool uplink = true;
@@ -109,10 +123,30 @@ class Tuner {
     sent_up_.reset();
   }
 
-  void rit_up() { rit_hz_ += kRitStepHz; }
-  void rit_down() { rit_hz_ -= kRitStepHz; }
-  void rit_zero() { rit_hz_ = 0; }
+  // The realtime + / - / 0 keys. On a linear transponder followed by the dial (dial_follow_active)
+  // they move the spot itself, both links together, by 100 Hz (0 takes back what they added);
+  // otherwise they are the manual's RIT on the downlink radio.
+  void rit_up() { move_rit(kRitStepHz); }
+  void rit_down() { move_rit(-kRitStepHz); }
+  void rit_zero() { move_rit(-rit_hz_); }
   Hz rit_hz() const { return rit_hz_; }
+
+  // Dial follow: on for a CAT satellite with passbands while RadioConfig::dial_follow is set.
+  bool dial_follow_active() const;
+  // The spot, in the satellite's frame (RF Hz at the satellite): where the links are now. It starts
+  // at the record's F1/F2 and moves with the operator's dial and, on a transponder, the + / - keys.
+  Hz downlink_spot_hz() const { return sat_.downlink_hz + (dial_follow_active() ? 0 : rit_hz_); }
+  Hz uplink_spot_hz() const { return sat_.uplink_hz; }
+  // The operator turned a link's dial to radio_hz (read back from the radio) at range rate rr: the
+  // spot of that link becomes the satellite-frame frequency the radio now hears (or sends), the
+  // other link moves to the paired spot of the transponder, and the next update sends from there.
+  // A reading that puts the spot further than one passband width outside the passband is no turn
+  // across the transponder (another band, a radio that reads another VFO): nothing changes, false.
+  bool dial_downlink(Hz radio_hz, double range_rate_km_s);
+  bool dial_uplink(Hz radio_hz, double range_rate_km_s);
+  // dial_tolerance_hz of a link for the last update's Doppler change (0 before two updates).
+  Hz dial_tolerance_downlink_hz() const;
+  Hz dial_tolerance_uplink_hz() const;
 
   // The commands of one tick. With radio parking on (RadioConfig::parking, the later firmware's
   // STATION.DAT line 6), from LOS (or a first tick below the horizon) to the next AOS the radios get
@@ -132,12 +166,15 @@ class Tuner {
 
  private:
   TuneCommands compute(double elevation_deg, double range_rate_km_s);  // update() without the two above
+  void move_rit(Hz delta_hz);
 
   RadioConfig config_;
   SatelliteRadio sat_;
   bool parked_ = false;
   Hz rit_hz_ = 0;
   Tuning tuning_;
+  Tuning previous_tuning_;          // the update before tuning_ (for the Doppler change)
+  int updates_ = 0;                 // updates since select (the Doppler change needs two)
   std::optional<bool> was_aos_;
   std::optional<Hz> sent_down_, sent_up_;
   std::optional<Mode> sent_down_mode_, sent_up_mode_;

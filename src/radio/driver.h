@@ -32,6 +32,12 @@ struct RadioStatus {
   std::uint64_t failures = 0;    // failed attempts
   std::uint64_t connects = 0;    // successful opens (more than 1: it reconnected)
   std::size_t pending = 0;       // requests not yet delivered
+  // Dial follow: whether the radio's frequency of each link can be read back (Hamlib, the
+  // simulated radio; not the native CAT protocols yet), and what it read last.
+  bool reads_downlink = false;
+  bool reads_uplink = false;
+  std::optional<Hz> downlink_read_hz;
+  std::optional<Hz> uplink_read_hz;
 };
 
 class RadioDriver {
@@ -42,6 +48,19 @@ class RadioDriver {
   virtual std::string describe() const = 0;
   virtual void set_frequency(Link link, Hz radio_hz) = 0;
   virtual void set_mode(Link link, Mode mode) = 0;   // Mode::none: ignored
+  // Dial follow. A guarded frequency: before it is written the radio's frequency is read, and if it
+  // is more than tolerance_hz from what the radio last accepted on that link, the operator turned
+  // the dial: the write is dropped and the frequency read is kept for take_dial_turn(). While idle,
+  // a driver that can read checks a guarded link the same way. A driver that cannot read (or a
+  // tolerance of 0) sets the frequency as set_frequency does.
+  virtual void set_frequency_guarded(Link link, Hz radio_hz, Hz tolerance_hz) {
+    (void)tolerance_hz;
+    set_frequency(link, radio_hz);
+  }
+  // The radio frequency the operator turned a link to, once (then forgotten); nothing when not.
+  virtual std::optional<Hz> take_dial_turn(Link) { return std::nullopt; }
+  // CTCSS tone on the uplink in tenths of Hz (670: 67.0 Hz), 0: off. Ignored where unsupported.
+  virtual void set_ctcss_tone(int tenths_hz) { (void)tenths_hz; }
   // Host mode "S": bytes to the radio as they are (Icom: the caller supplies the whole frame).
   virtual void send_raw(std::string bytes) = 0;
   virtual RadioStatus status() const = 0;
@@ -55,7 +74,12 @@ class RadioDriver {
   void set_uplink_mode(Mode m) { set_mode(Link::uplink, m); }
 };
 
-// Sends a Tuner's commands: each link's mode before its frequency, downlink first.
-void apply(RadioDriver& radio, const TuneCommands& commands);
+// Sends a Tuner's commands: each link's mode before its frequency, downlink first. A frequency is
+// guarded (set_frequency_guarded) when its link's tolerance is above 0.
+struct DialGuard {
+  Hz downlink_hz = 0;
+  Hz uplink_hz = 0;
+};
+void apply(RadioDriver& radio, const TuneCommands& commands, DialGuard guard = {});
 
 }  // namespace tb::radio

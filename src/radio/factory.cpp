@@ -5,6 +5,7 @@
 
 #include "radio/cat_links.h"
 #include "radio/simulated.h"
+#include "radio/two_radios.h"
 #include "util/text.h"
 
 namespace tb::radio {
@@ -43,8 +44,8 @@ RadioSpecParse error(std::string message) { return {std::nullopt, std::move(mess
 
 }  // namespace
 
-RadioSpecParse parse_radio_spec(std::string_view text) {
-  const std::string quoted = "--radio \"" + std::string(text) + "\": ";
+RadioSpecParse parse_radio_spec(std::string_view text, std::string_view option) {
+  const std::string quoted = std::string(option) + " \"" + std::string(text) + "\": ";
   if (text.empty() || text == "sim" || text == "simulated") return {RadioSpec{}, {}};
   const std::size_t colon = text.find(':');
   const std::string kind(text.substr(0, colon));
@@ -157,6 +158,19 @@ MakeRadio make_radio(std::string_view text, const RadioConfig& config, const Dri
   auto parsed = parse_radio_spec(text);
   if (!parsed.spec) return {nullptr, parsed.error};
   return make_radio(*parsed.spec, config, timing);
+}
+
+}  // namespace tb::radio
+
+namespace tb::radio {
+
+MakeRadio make_radios(const RadioSpec& down, const std::optional<RadioSpec>& up, const RadioConfig& config,
+                      const DriverTiming& timing) {
+  MakeRadio d = make_radio(down, config, timing);
+  if (!d.driver || !up) return d;
+  MakeRadio u = make_radio(*up, config, timing);
+  if (!u.driver) return {nullptr, "uplink radio: " + u.error};
+  return {std::make_unique<TwoRadios>(std::move(d.driver), std::move(u.driver)), {}};
 }
 
 }  // namespace tb::radio

@@ -37,7 +37,8 @@ struct RadioSpecParse {
   std::optional<RadioSpec> spec;
   std::string error;           // set when spec is empty
 };
-RadioSpecParse parse_radio_spec(std::string_view text);
+// option names the option in the messages ("--radio", "--uplink-radio").
+RadioSpecParse parse_radio_spec(std::string_view text, std::string_view option = "--radio");
 
 struct DriverTiming {
   WorkerTiming worker;
@@ -51,5 +52,9 @@ struct MakeRadio {
 // Builds the driver for a parsed spec with the station's menu 6-7 configuration.
 MakeRadio make_radio(const RadioSpec& spec, const RadioConfig& config, const DriverTiming& timing = {});
 MakeRadio make_radio(std::string_view spec, const RadioConfig& config, const DriverTiming& timing = {});
+// The downlink radio, and the uplink radio when uplink_spec names one: two radios as one driver
+// (radio/two_radios.h). nullopt uplink_spec: the downlink radio carries both links.
+MakeRadio make_radios(const RadioSpec& downlink_spec, const std::optional<RadioSpec>& uplink_spec,
+                      const RadioConfig& config, const DriverTiming& timing = {});
 
 }  // namespace tb::radio

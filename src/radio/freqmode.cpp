@@ -36,6 +36,63 @@ constexpr const char* kExpectUplink =
     "a frequency in MHz such as 145.900, up to 4 separated by commas (no spaces), optionally with a "
     "converter offset after the last as in 1268.100,1268.200/-1124.000";
 
+constexpr const char* kExpectBand = "LOW-HIGH in MHz, low first, such as 435.610-435.670";
+
+std::optional<std::pair<Hz, Hz>> parse_band(std::string_view t) {
+  const std::size_t dash = t.find('-', 1);
+  if (dash == std::string_view::npos) return std::nullopt;
+  const auto lo = parse_frequency_field(t.substr(0, dash));
+  const auto hi = parse_frequency_field(t.substr(dash + 1));
+  if (!lo || !hi || lo->offset_hz || hi->offset_hz || lo->rf_hz <= 0 || lo->rf_hz > hi->rf_hz) return std::nullopt;
+  return std::pair{lo->rf_hz, hi->rf_hz};
+}
+
+// A CTCSS tone in Hz with at most one decimal, 60.0 to 300.0: tenths of Hz.
+std::optional<int> parse_tone(std::string_view t) {
+  const auto hz = parse_mhz(t);   // MHz digits read as Hz: 67.0 -> 67,000,000
+  if (!hz || *hz % 100000 != 0 || *hz < 60'000'000 || *hz > 300'000'000) return std::nullopt;
+  return static_cast<int>(*hz / 100000);
+}
+
+// options[k] is field first_field + k of the line.
+template <class Problem>
+void parse_options(const std::vector<std::string_view>& options, int first_field, SatelliteRadio& r,
+                   Problem& problem_at) {
+  int field = first_field - 1;
+  bool bad_band = false;
+  auto problem = [&](int, std::string_view found, std::string expected) { problem_at(field, found, std::move(expected)); };
+  for (std::string_view o : options) {
+    ++field;
+    const std::size_t eq = o.find('=');
+    const std::string key = lower(o.substr(0, eq));
+    const std::string_view value = o.substr(eq + 1);
+    if (key == "down" || key == "up") {
+      const auto band = parse_band(value);
+      if (!band) {
+        bad_band = true;
+        problem(0, o, std::string(key) + "=" + kExpectBand);
+        continue;
+      }
+      (key == "down" ? r.downlink_low_hz : r.uplink_low_hz) = band->first;
+      (key == "down" ? r.downlink_high_hz : r.uplink_high_hz) = band->second;
+    } else if (key == "inv") {
+      const std::string v = lower(value);
+      if (v == "y" || v == "n") r.inverting = v == "y";
+      else problem(0, o, "inv=y (inverting transponder) or inv=n");
+    } else if (key == "tone") {
+      const auto tone = parse_tone(value);
+      if (tone) r.ctcss_tenths_hz = *tone;
+      else problem(0, o, "tone=HZ, a CTCSS tone from 60.0 to 300.0 Hz such as tone=67.0");
+    } else {
+      problem(0, o, "an option down=LOW-HIGH, up=LOW-HIGH, inv=y|n or tone=HZ");
+    }
+  }
+  const bool any_band = r.downlink_low_hz || r.uplink_low_hz;
+  field = first_field;
+  if (any_band && !bad_band && !r.has_passbands())
+    problem(0, r.downlink_low_hz ? "down=" : "up=", "both down=LOW-HIGH and up=LOW-HIGH for a transponder");
+}
+
 }  // namespace
 
 const char* freqmode_field_name(int field) {
@@ -54,7 +111,8 @@ const char* freqmode_field_name(int field) {
 
 std::string FreqModeProblem::message() const {
   std::string m = "line " + std::to_string(line);
-  if (field > 0) m += ", field " + std::to_string(field) + " (" + freqmode_field_name(field) + ")";
+  if (field > 0)
+    m += ", field " + std::to_string(field) + " (" + (option ? "option" : freqmode_field_name(field)) + ")";
   m += ": found \"" + found + "\", expected " + expected;
   return m;
 }
@@ -154,6 +212,13 @@ std::string format_freqmode_line(const FreqModeRecord& r) {
   line += s.doppler == DopplerControl::mic_click ? " mic" : " cat";
   line += s.lcd_ma_display ? " ma" : " no";
   if (s.reverse != ReverseAssignment::none) line += std::string(" ") + to_string(s.reverse);
+  if (s.has_passbands()) {
+    line += " down=" + format_mhz(s.downlink_low_hz) + "-" + format_mhz(s.downlink_high_hz);
+    line += " up=" + format_mhz(s.uplink_low_hz) + "-" + format_mhz(s.uplink_high_hz);
+  }
+  if (s.has_passbands() || s.inverting) line += s.inverting ? " inv=y" : " inv=n";
+  if (s.ctcss_tenths_hz > 0)
+    line += " tone=" + std::to_string(s.ctcss_tenths_hz / 10) + "." + std::to_string(s.ctcss_tenths_hz % 10);
   return line;
 }
 
@@ -189,6 +254,12 @@ FreqModeParse parse_freqmode(std::string_view text) {
     auto problem = [&](int field, std::string_view found, std::string expected) {
       result.problems.push_back({line_no, field, std::string(found), std::move(expected)});
     };
+    // trakbox's options after the record (down=LO-HI up=LO-HI inv=y|n tone=HZ): taken off the end.
+    std::vector<std::string_view> options;
+    while (fields.size() > kFields && fields.back().find('=') != std::string_view::npos) {
+      options.insert(options.begin(), fields.back());
+      fields.pop_back();
+    }
     if (fields.size() != kFields && fields.size() != kFields + 1) {
       std::string expected = "7 fields (name, downlink MHz, uplink MHz, downlink mode, uplink mode, "
                              "cat/mic, ma/no) and an optional 8th, ir or kr";
@@ -244,6 +315,11 @@ FreqModeParse parse_freqmode(std::string_view text) {
       else if (flag == "kr") rec.radio.reverse = ReverseAssignment::kenwood_vfo;
       else problem(8, fields[7], "ir (Icom main/sub reversed), kr (Kenwood VFOs reversed) or nothing");
     }
+
+    auto option_problem = [&](int field, std::string_view found, std::string expected) {
+      result.problems.push_back({line_no, field, std::string(found), std::move(expected), true});
+    };
+    parse_options(options, static_cast<int>(fields.size()) + 1, rec.radio, option_problem);
 
     if (result.problems.size() == before) result.records.push_back(std::move(rec));
   }

@@ -19,6 +19,13 @@
 // SIGHUP) apply the good records and report the problems with their line numbers.
 // One record per line: the manual's printed sample was flattened onto one line by OCR, which this
 // parser reports as a line of 112 fields rather than guessing where records end.
+//
+// trakbox's own options may follow a record (written back only when set, so other readers see the
+// same 7 or 8 fields otherwise):
+//   RS-44 435.640 145.965 usb lsb cat no down=435.610-435.670 up=145.935-145.995 inv=y
+//   SO-50 436.795 145.850 fm fm cat no tone=67.0
+// down=/up= a linear transponder's passbands (MHz, both or neither), inv=y|n whether it inverts,
+// tone= the uplink's CTCSS tone in Hz.
 #pragma once
 #include <optional>
 #include <string>
@@ -38,9 +45,10 @@ struct FreqModeRecord {
 
 struct FreqModeProblem {
   int line = 0;            // 1-based
-  int field = 0;           // 1..8, 0 for the line as a whole
+  int field = 0;           // 1..8, 0 for the line as a whole; an option's place on the line
   std::string found;
   std::string expected;
+  bool option = false;     // one of trakbox's options (down= up= inv= tone=) after the record
   // "line 3, field 2 (downlink frequency): found "43x.1", expected ..."
   std::string message() const;
 };

@@ -98,6 +98,8 @@ void HamlibLink::open() {
     throw LinkError(Action::reconnect, describe() + ": cannot open: " + error_text(rc));
   }
   impl_->rig = rig;
+  // Dial follow reads the radio: a cached frequency would be trakbox's own last command.
+  rig_set_cache_timeout_ms(rig, HAMLIB_CACHE_ALL, 0);
   split_on_ = false;
   scheme_ = opt_.scheme;
   if (scheme_ == HamlibVfoScheme::automatic) {
@@ -172,6 +174,28 @@ void HamlibLink::set_mode(Link l, Mode mode) {
     ensure_split();
     require(rig_set_split_mode(impl_->rig, RIG_VFO_CURR, m, RIG_PASSBAND_NOCHANGE), "set split mode");
   }
+}
+
+Hz HamlibLink::read_frequency(Link l) {
+  if (!impl_->rig) throw LinkError(Action::reconnect, describe() + " is not open");
+  freq_t f = 0;
+  if (scheme_ == HamlibVfoScheme::main_sub) {
+    require(rig_get_freq(impl_->rig, l == Link::downlink ? RIG_VFO_SUB : RIG_VFO_MAIN, &f),
+            l == Link::downlink ? "get Sub frequency" : "get Main frequency");
+  } else if (l == Link::downlink) {
+    require(rig_get_freq(impl_->rig, RIG_VFO_CURR, &f), "get frequency");
+  } else {
+    ensure_split();
+    require(rig_get_split_freq(impl_->rig, RIG_VFO_CURR, &f), "get split frequency");
+  }
+  return static_cast<Hz>(f + 0.5);
+}
+
+void HamlibLink::set_ctcss_tone(int tenths_hz) {
+  if (!impl_->rig) throw LinkError(Action::reconnect, describe() + " is not open");
+  const vfo_t vfo = scheme_ == HamlibVfoScheme::main_sub ? RIG_VFO_MAIN : RIG_VFO_CURR;
+  require(rig_set_ctcss_tone(impl_->rig, vfo, static_cast<tone_t>(tenths_hz)), "set CTCSS tone");
+  if (tenths_hz > 0) require(rig_set_func(impl_->rig, vfo, RIG_FUNC_TONE, 1), "CTCSS encoder on");
 }
 
 void HamlibLink::send_raw(const std::string& bytes) {

@@ -39,6 +39,15 @@ class HamlibLink final : public RadioLink {
   void set_frequency(Link link, Hz hz) override;
   void set_mode(Link link, Mode mode) override;
   void send_raw(const std::string& bytes) override;
+  // Read back with get_freq (get_split_freq for the split uplink), Hamlib's cache off so the value
+  // is the radio's, not the last one trakbox set.
+  // Main/Sub and a radio not in split read back truly. One radio in split does not: with the
+  // cache off, Hamlib's dummy (4.5) answers get_freq with the transmit VFO and rigctld's VFO A,
+  // so dial follow there would mistake trakbox's own uplink for a turn of the downlink dial; its
+  // dial is not read (the display says so), as before dial follow. Two radios never use split.
+  bool can_read(Link) const override { return scheme_ == HamlibVfoScheme::main_sub || !split_on_; }
+  Hz read_frequency(Link link) override;
+  void set_ctcss_tone(int tenths_hz) override;   // set_ctcss_tone on the uplink's VFO
   // The port's descriptor hung up (a serial adapter unplugged) or the peer closed the connection
   // (rigctld gone): no traffic, so it may run often.
   void check() override;

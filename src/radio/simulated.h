@@ -27,6 +27,9 @@ class SimulatedRadio final : public RadioDriver {
   std::string describe() const override { return "simulated radio"; }
   void set_frequency(Link link, Hz radio_hz) override;
   void set_mode(Link link, Mode mode) override;
+  // It can be read back: step() is the operator's dial that dial follow sees.
+  void set_frequency_guarded(Link link, Hz radio_hz, Hz tolerance_hz) override;
+  std::optional<Hz> take_dial_turn(Link link) override;
   void send_raw(std::string bytes) override;
   RadioStatus status() const override;
   bool wait_idle(std::chrono::milliseconds) override { return true; }
@@ -51,6 +54,8 @@ class SimulatedRadio final : public RadioDriver {
   RadioStatus status_;
   std::deque<RadioEvent> history_;
   void record(RadioEvent e);  // under mu_
+  std::optional<Hz> accepted_[2];    // what was last set per link (status_ holds the dial)
+  std::optional<Hz> turned_[2];      // a turn of the dial seen by a guarded set, not yet taken
 };
 
 }  // namespace tb::radio

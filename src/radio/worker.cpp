@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <utility>
 
 namespace tb::radio {
 
@@ -41,9 +42,62 @@ void WorkerRadio::set_frequency(Link link, Hz hz) {
   {
     std::lock_guard lock(mu_);
     want_hz_[index(link)] = hz;
+    // Set as told (host mode, a rigctld client, dial follow off): no dial to watch any more.
+    guard_[index(link)] = 0;
+    turned_[index(link)].reset();
     enqueue_locked({Job::Kind::frequency, link, hz, Mode::none, {}});
   }
   cv_.notify_all();
+}
+
+void WorkerRadio::set_frequency_guarded(Link link, Hz hz, Hz tolerance) {
+  {
+    std::lock_guard lock(mu_);
+    want_hz_[index(link)] = hz;
+    guard_[index(link)] = tolerance;
+    enqueue_locked({Job::Kind::frequency, link, hz, Mode::none, {}, tolerance});
+  }
+  cv_.notify_all();
+}
+
+std::optional<Hz> WorkerRadio::take_dial_turn(Link link) {
+  std::lock_guard lock(mu_);
+  return std::exchange(turned_[index(link)], std::nullopt);
+}
+
+void WorkerRadio::set_ctcss_tone(int tenths_hz) {
+  {
+    std::lock_guard lock(mu_);
+    enqueue_locked({Job::Kind::tone, Link::uplink, tenths_hz, Mode::none, {}});
+  }
+  cv_.notify_all();
+}
+
+bool WorkerRadio::read_dial(Lock& lock, Link link, Hz guard) {
+  const int i = index(link);
+  lock.unlock();
+  std::optional<Hz> read;
+  try {
+    read = link_->read_frequency(link);
+  } catch (const LinkError& e) {
+    lock.lock();
+    if (e.action == LinkError::Action::drop) return false;
+    fail(e.what());
+    if (e.action == LinkError::Action::reconnect) {
+      link_fault_ = true;
+      lose_link(lock);
+    }
+    return false;
+  }
+  lock.lock();
+  (link == Link::downlink ? status_.downlink_read_hz : status_.uplink_read_hz) = read;
+  std::optional<Hz>& accepted = link == Link::downlink ? status_.downlink_hz : status_.uplink_hz;
+  if (guard <= 0 || !accepted || !dial_turned(*read, *accepted, guard)) return false;
+  spdlog::info("radio {}: {} dial turned to {} Hz (set {} Hz)", description_, to_string(link), *read, *accepted);
+  turned_[i] = *read;
+  want_hz_[i] = *read;
+  accepted = *read;   // the radio is there now; trakbox's next command starts from it
+  return true;
 }
 
 void WorkerRadio::set_mode(Link link, Mode mode) {
@@ -81,6 +135,7 @@ void WorkerRadio::execute(const Job& job) {
     case Job::Kind::frequency: link_->set_frequency(job.link, job.hz); break;
     case Job::Kind::mode: link_->set_mode(job.link, job.mode); break;
     case Job::Kind::raw: link_->send_raw(job.raw); break;
+    case Job::Kind::tone: link_->set_ctcss_tone(static_cast<int>(job.hz)); break;
   }
 }
 
@@ -145,6 +200,14 @@ void WorkerRadio::check_link(Lock& lock) {
   }
   // Reopened and still there with nothing to send: the port works again (the fault shown was
   // cleared at the reopen; a refused command's fault stays until the next delivery).
+  // Dial follow: the guarded links that can be read, while nothing waits to be sent to them.
+  for (Link l : {Link::downlink, Link::uplink}) {
+    if (guard_[index(l)] <= 0 || turned_[index(l)] || !link_->can_read(l)) continue;
+    if (std::any_of(queue_.begin(), queue_.end(), [&](const Job& j) { return j.kind == Job::Kind::frequency && j.link == l; }))
+      continue;
+    read_dial(lock, l, guard_[index(l)]);
+    if (!open_) return;
+  }
   if (link_fault_) {
     spdlog::info("radio {}: working again", description_);
     link_fault_ = false;
@@ -182,6 +245,8 @@ bool WorkerRadio::connect(Lock& lock) {
   want_open_ = false;
   next_check_ = std::chrono::steady_clock::now() + timing_.check_every;
   status_.connected = true;
+  status_.reads_downlink = link_->can_read(Link::downlink);
+  status_.reads_uplink = link_->can_read(Link::uplink);
   ++status_.connects;
   spdlog::info("radio {}: {}", description_, status_.connects > 1 ? "reconnected" : "connected");
   // The port is open: no fault to show (the endpoints take commands again). The backoff and the
@@ -200,6 +265,15 @@ bool WorkerRadio::connect(Lock& lock) {
 void WorkerRadio::deliver_next(Lock& lock) {
   Job job = std::move(queue_.front());
   queue_.pop_front();
+  if (job.kind == Job::Kind::frequency && job.guard > 0 && link_->can_read(job.link)) {
+    // Read before writing: a turn of the dial since the last command is kept, not overwritten,
+    // and so is one seen earlier that the station has not taken yet.
+    busy_ = true;
+    const bool turned = turned_[index(job.link)] || read_dial(lock, job.link, job.guard);
+    busy_ = false;
+    if (!open_) queue_.push_front(std::move(job));   // the link broke while reading: later
+    if (turned || !open_) return;
+  }
   busy_ = true;
   lock.unlock();
   std::optional<LinkError> error;
@@ -220,13 +294,19 @@ void WorkerRadio::deliver_next(Lock& lock) {
     return;
   }
   ++status_.delivered;
+  // A command may have changed what can be read (a Hamlib radio that just went into split).
+  status_.reads_downlink = link_->can_read(Link::downlink);
+  status_.reads_uplink = link_->can_read(Link::uplink);
   if (status_.fault || link_fault_) spdlog::info("radio {}: working again", description_);
   link_fault_ = false;
   logged_.clear();
   status_.fault = false;
   status_.message.clear();
   backoff_ = timing_.backoff_first;
-  if (job.kind == Job::Kind::frequency) (job.link == Link::downlink ? status_.downlink_hz : status_.uplink_hz) = job.hz;
+  if (job.kind == Job::Kind::frequency) {
+    (job.link == Link::downlink ? status_.downlink_hz : status_.uplink_hz) = job.hz;
+    (job.link == Link::downlink ? status_.downlink_read_hz : status_.uplink_read_hz).reset();
+  }
   if (job.kind == Job::Kind::mode) (job.link == Link::downlink ? status_.downlink_mode : status_.uplink_mode) = job.mode;
 }
 

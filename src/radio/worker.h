@@ -36,6 +36,13 @@ class RadioLink {
   virtual void set_frequency(Link link, Hz hz) = 0;
   virtual void set_mode(Link link, Mode mode) = 0;
   virtual void send_raw(const std::string& bytes) = 0;
+  // Dial follow: whether read_frequency works for a link once open, and the radio's frequency of
+  // that link now (throws LinkError). Links that cannot read keep the defaults.
+  virtual bool can_read(Link) const { return false; }
+  virtual Hz read_frequency(Link link) {
+    throw LinkError(LinkError::Action::drop, std::string("cannot read the ") + to_string(link) + " frequency");
+  }
+  virtual void set_ctcss_tone(int tenths_hz) { (void)tenths_hz; }
   // Called every WorkerTiming::check_every while the link is open and idle: throws
   // LinkError(reconnect) when the port or connection is gone (a serial adapter unplugged, the pty's
   // other end closed), so a loss is seen and reported without waiting for the next command.
@@ -58,17 +65,21 @@ class WorkerRadio final : public RadioDriver {
   std::string describe() const override { return description_; }
   void set_frequency(Link link, Hz radio_hz) override;
   void set_mode(Link link, Mode mode) override;
+  void set_frequency_guarded(Link link, Hz radio_hz, Hz tolerance_hz) override;
+  std::optional<Hz> take_dial_turn(Link link) override;
+  void set_ctcss_tone(int tenths_hz) override;
   void send_raw(std::string bytes) override;
   RadioStatus status() const override;
   bool wait_idle(std::chrono::milliseconds timeout) override;
 
  private:
   struct Job {
-    enum class Kind { frequency, mode, raw } kind;
+    enum class Kind { frequency, mode, raw, tone } kind;
     Link link = Link::downlink;
-    Hz hz = 0;
+    Hz hz = 0;                       // frequency; tone: tenths of Hz
     Mode mode = Mode::none;
     std::string raw;
+    Hz guard = 0;                    // frequency: dial-follow tolerance, 0 unguarded
   };
   using Lock = std::unique_lock<std::mutex>;
   void enqueue_locked(Job job);
@@ -83,6 +94,9 @@ class WorkerRadio final : public RadioDriver {
   void wait_for_work(Lock& lock);    // until stop, a job, a reconnect due, or a check due
   void check_link(Lock& lock);       // the idle check; a lost link is closed for reconnecting
   void lose_link(Lock& lock);        // closes a broken link; the worker reopens it with backoff
+  // Dial follow: reads a link's frequency (mu_ unlocked around the read) and records a turn when it
+  // is more than guard from the accepted frequency. True when the operator turned the dial.
+  bool read_dial(Lock& lock, Link link, Hz guard);
 
   std::unique_ptr<RadioLink> link_;
   const std::string description_;
@@ -97,6 +111,8 @@ class WorkerRadio final : public RadioDriver {
   std::optional<Hz> want_hz_[2];     // last requested per link (re-sent after a reconnect)
   std::optional<Mode> want_mode_[2];
   RadioStatus status_;
+  Hz guard_[2] = {0, 0};             // the tolerance of the last guarded frequency per link
+  std::optional<Hz> turned_[2];      // a turn of the dial not yet taken
   // Worker-thread state.
   bool open_ = false;
   bool want_open_ = true;            // opened at start, reopened after a loss, with or without jobs

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <iterator>
+#include <tuple>
 
 #include <nlohmann/json.hpp>
 
+#include "radio/factory.h"
 #include "store/json_fields.h"
 
 namespace tb::store {
@@ -132,11 +134,30 @@ constexpr std::pair<radio::RigModel, const char*> kRigModel[] = {{radio::RigMode
 constexpr int kBauds[] = {1200, 2400, 4800, 9600, 19200};
 
 json radio_entry_json(const radio::SatelliteRadio& r) {
-  return {{"downlink_hz", r.downlink_hz},     {"downlink_offset_hz", r.downlink_offset_hz},
-          {"uplink_hz", r.uplink_hz},         {"uplink_offset_hz", r.uplink_offset_hz},
-          {"downlink_mode", name_of(r.downlink_mode, kMode)}, {"uplink_mode", name_of(r.uplink_mode, kMode)},
-          {"doppler", name_of(r.doppler, kDoppler)},          {"lcd_ma_display", r.lcd_ma_display},
-          {"alternate_uplinks_hz", r.alternate_uplinks_hz},   {"reverse", name_of(r.reverse, kReverse)}};
+  json j = {{"downlink_hz", r.downlink_hz},     {"downlink_offset_hz", r.downlink_offset_hz},
+            {"uplink_hz", r.uplink_hz},         {"uplink_offset_hz", r.uplink_offset_hz},
+            {"downlink_mode", name_of(r.downlink_mode, kMode)}, {"uplink_mode", name_of(r.uplink_mode, kMode)},
+            {"doppler", name_of(r.doppler, kDoppler)},          {"lcd_ma_display", r.lcd_ma_display},
+            {"alternate_uplinks_hz", r.alternate_uplinks_hz},   {"reverse", name_of(r.reverse, kReverse)}};
+  // The transponder's passbands and the CTCSS tone: written only when set.
+  if (r.downlink_low_hz || r.downlink_high_hz || r.uplink_low_hz || r.uplink_high_hz || r.inverting) {
+    j["passbands_hz"] = {{"downlink", {r.downlink_low_hz, r.downlink_high_hz}},
+                         {"uplink", {r.uplink_low_hz, r.uplink_high_hz}},
+                         {"inverting", r.inverting}};
+  }
+  if (r.ctcss_tenths_hz > 0) j["ctcss_tenths_hz"] = r.ctcss_tenths_hz;
+  return j;
+}
+
+// [low, high] in Hz, low <= high.
+std::pair<radio::Hz, radio::Hz> band_from(const json& j, const std::string& w, const char* key) {
+  const std::string wk = path(w, key);
+  const json& b = field(j, w, key);
+  if (!b.is_array() || b.size() != 2 || !b[0].is_number_integer() || !b[1].is_number_integer())
+    bad(wk, "expected [low, high] in Hz");
+  const long long lo = b[0].get<long long>(), hi = b[1].get<long long>();
+  if (lo < 0 || hi > kMaxHz || lo > hi) bad(wk, "expected 0 <= low <= high <= " + std::to_string(kMaxHz));
+  return {lo, hi};
 }
 
 radio::SatelliteRadio radio_entry_from(const json& j, const std::string& w) {
@@ -162,6 +183,15 @@ radio::SatelliteRadio radio_entry_from(const json& j, const std::string& w) {
     }
   }
   if (j.contains("reverse")) r.reverse = named(j, w, "reverse", kReverse);
+  // Linear transponders and CTCSS: absent in state files written before them, and for most satellites.
+  if (j.contains("passbands_hz")) {
+    const std::string wp = path(w, "passbands_hz");
+    const json& p = j["passbands_hz"];
+    std::tie(r.downlink_low_hz, r.downlink_high_hz) = band_from(p, wp, "downlink");
+    std::tie(r.uplink_low_hz, r.uplink_high_hz) = band_from(p, wp, "uplink");
+    r.inverting = boolean(p, wp, "inverting");
+  }
+  if (j.contains("ctcss_tenths_hz")) r.ctcss_tenths_hz = static_cast<int>(integer(j, w, "ctcss_tenths_hz", 0, 3000));
   return r;
 }
 
@@ -214,6 +244,8 @@ json to_json(const Model& m) {
                 {"ft736_wide_fm", rc.ft736_wide_fm},
                 {"rig_model", name_of(rc.rig_model, kRigModel)},
                 {"cat_baud", rc.cat_baud},
+                {"dial_follow", rc.dial_follow},
+                {"uplink_radio", rc.uplink_radio},
                 {"parking",
                  {{"enabled", rc.parking.enabled},
                   {"rx_hz", rc.parking.rx_hz},
@@ -336,6 +368,15 @@ radio::RadioConfig radio_from(const json& j) {
     if (c.cat_baud != 0 && std::find(std::begin(kBauds), std::end(kBauds), c.cat_baud) == std::end(kBauds))
       bad(path(w, "cat_baud"),
           std::to_string(c.cat_baud) + " is not one of 1200, 2400, 4800, 9600, 19200 (0: the rig's standard)");
+  }
+  // Dial follow and the second radio: absent in state files written before them.
+  if (r.contains("dial_follow")) c.dial_follow = boolean(r, w, "dial_follow");
+  if (r.contains("uplink_radio")) {
+    c.uplink_radio = text(r, w, "uplink_radio", 256);
+    if (!c.uplink_radio.empty()) {
+      const auto spec = radio::parse_radio_spec(c.uplink_radio, "uplink radio");
+      if (!spec.spec) bad(path(w, "uplink_radio"), spec.error);
+    }
   }
   if (r.contains("parking")) {
     const std::string wp = w + ".parking";

@@ -102,6 +102,16 @@ SatnogsImport import_satnogs(Database& db, std::string_view json_text, bool repl
     radio.uplink_offset_hz = 0;
     radio.alternate_uplinks_hz.clear();  // the list has one uplink per transmitter
     const bool linear = pick->type == "Transponder" && pick->down_high && pick->up_high;
+    // The passband edges, for dial follow (radio/doppler.h); none for other transmitters.
+    radio.downlink_low_hz = linear ? *pick->down_low : 0;
+    radio.downlink_high_hz = linear ? *pick->down_high : 0;
+    radio.uplink_low_hz = linear ? *pick->up_low : 0;
+    radio.uplink_high_hz = linear ? *pick->up_high : 0;
+    radio.inverting = linear && pick->invert;
+    if (linear && !radio.has_passbands()) {  // edges the wrong way round: no transponder to follow
+      radio.downlink_low_hz = radio.downlink_high_hz = radio.uplink_low_hz = radio.uplink_high_hz = 0;
+      radio.inverting = false;
+    }
     if (linear) {
       radio.downlink_mode = radio::Mode::usb;
       radio.uplink_mode = pick->invert ? radio::Mode::lsb : radio::Mode::usb;

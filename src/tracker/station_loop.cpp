@@ -5,6 +5,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include "radio/two_radios.h"
+
 namespace tb::tracker {
 
 StationLoop::StationLoop(store::Model& model, const station::Clock& clock, Tracker& tracker,
@@ -54,10 +56,52 @@ void StationLoop::find_remote_in_database() {
 
 void StationLoop::follow_radio(int db_index, const orbit::Observation& obs) {
   if (!tuned_ || *tuned_ != db_index) {
-    tuner_.select(model_.db.satellites[static_cast<std::size_t>(db_index)].radio);
+    const radio::SatelliteRadio& sat = model_.db.satellites[static_cast<std::size_t>(db_index)].radio;
+    tuner_.select(sat);
     tuned_ = db_index;
+    if (sat.ctcss_tenths_hz > 0 || tone_sent_) radio_->set_ctcss_tone(sat.ctcss_tenths_hz);
+    tone_sent_ = sat.ctcss_tenths_hz > 0;
   }
-  if (obs.ok()) radio::apply(*radio_, tuner_.update(obs.look.el_deg, obs.look.range_rate_km_s));
+  if (!obs.ok()) return;
+  const double rr = obs.look.range_rate_km_s;
+  // The radio link that carries each of the tuner's links (FREQ.DAT ir/kr swap them).
+  const bool swap = tuner_.reversed();
+  const radio::Link down = swap ? radio::Link::uplink : radio::Link::downlink;
+  const radio::Link up = swap ? radio::Link::downlink : radio::Link::uplink;
+  const bool follow = tuner_.dial_follow_active();
+  // Dial follow: a turn of either dial the radio reported since the last tick moves the spot.
+  const std::optional<radio::Hz> turned_down = radio_->take_dial_turn(down);
+  const std::optional<radio::Hz> turned_up = radio_->take_dial_turn(up);
+  auto follow_turn = [&](const char* which, radio::Hz hz, bool taken) {
+    if (taken)
+      spdlog::info("radio: {} dial turned to {} Hz: spot {} Hz down, {} Hz up", which, hz,
+                   tuner_.downlink_spot_hz(), tuner_.uplink_spot_hz());
+    else
+      spdlog::warn("radio: {} reads {} Hz, far outside the transponder: not taken as a turn of the dial", which, hz);
+  };
+  if (follow && turned_down) follow_turn("downlink", *turned_down, tuner_.dial_downlink(*turned_down, rr));
+  else if (follow && turned_up) follow_turn("uplink", *turned_up, tuner_.dial_uplink(*turned_up, rr));
+  const radio::TuneCommands cmd = tuner_.update(obs.look.el_deg, rr);
+  radio::DialGuard guard;
+  // Not at the AOS edge: what the dial shows then is left from before the pass, not a new spot.
+  if (follow && !tuner_.parked() && !cmd.aos) {
+    (swap ? guard.uplink_hz : guard.downlink_hz) = tuner_.dial_tolerance_downlink_hz();
+    (swap ? guard.downlink_hz : guard.uplink_hz) = tuner_.dial_tolerance_uplink_hz();
+  }
+  radio::apply(*radio_, cmd, guard);
+}
+
+void StationLoop::set_uplink_radio(std::unique_ptr<radio::RadioDriver> uplink) {
+  std::unique_ptr<radio::RadioDriver> downlink;
+  if (auto* two = dynamic_cast<radio::TwoRadios*>(radio_.get())) downlink = two->release_downlink();
+  else downlink = std::move(radio_);
+  radio_.reset();  // the old uplink radio closes here
+  if (uplink) radio_ = std::make_unique<radio::TwoRadios>(std::move(downlink), std::move(uplink));
+  else radio_ = std::move(downlink);
+  tuner_.resend();   // the spot stays; frequencies and modes go out again, and the tone
+  const int tone = tuned_ ? tuner_.satellite().ctcss_tenths_hz : 0;
+  if (tone > 0) radio_->set_ctcss_tone(tone);
+  tone_sent_ = tone > 0;
 }
 
 std::optional<radio::Hz> StationLoop::next_uplink() {

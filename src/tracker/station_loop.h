@@ -67,6 +67,9 @@ class StationLoop {
   rotator::Controller& rotator() { return *rotator_; }
   const rotator::Controller& rotator() const { return *rotator_; }
   radio::RadioDriver& radio() { return *radio_; }
+  // A second radio for the uplink (menu 6-7's U), or none (nullptr): one radio for both links
+  // again. The downlink radio stays; everything is sent again at the next tick.
+  void set_uplink_radio(std::unique_ptr<radio::RadioDriver> uplink);
   radio::Tuner& tuner() { return tuner_; }
   Tracker& tracker() { return tracker_; }
 
@@ -97,6 +100,7 @@ class StationLoop {
   std::unique_ptr<radio::RadioDriver> radio_;
   radio::Tuner tuner_;
   std::optional<int> tuned_;  // db index the tuner is set up for
+  bool tone_sent_ = false;    // a CTCSS tone is on (turned off for a satellite without one)
   std::optional<RemoteFollow> remote_;
   std::optional<std::string> save_failure_;
   std::string notice_;

@@ -1,5 +1,5 @@
 // The freq/mode file of menu 3-3 (radio::parse_freqmode) and its field readers, the 1994 file and
-// the later firmware's FREQ.DAT (comments, up to four uplinks, ir/kr).
+// the later firmware's FREQ.DAT (comments, up to four uplinks, ir/kr) and trakbox's options (down= up= inv= tone=).
 // Properties: every problem names a field and has a message; the records of a clean parse come
 // back unchanged through write_freqmode (the file trakbox writes is one it reads); the MHz reader
 // and writer agree.
@@ -12,7 +12,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const auto r = radio::parse_freqmode(text);
   for (const auto& p : r.problems) {
     const std::string m = p.message();
-    TB_FUZZ_CHECK(!m.empty() && p.line >= 1 && p.field >= 0 && p.field <= 8, m);
+    TB_FUZZ_CHECK(!m.empty() && p.line >= 1 && p.field >= 0 && (p.field <= 8 || p.option), m);
     (void)radio::freqmode_field_name(p.field);
   }
   if (r.ok() && !r.records.empty()) {

@@ -26,6 +26,7 @@ has() { local out; out=$(complete_of "${@:1:$#-1}"); grep -qx -- "${!#}" <<<"$ou
 has trakbox --ser --service || fail "--service"
 has trakbox --rotator "" 'rotctld:' || fail "--rotator forms"
 has trakbox --radio ri 'rigctld' || fail "--radio forms"
+has trakbox --uplink-radio ri 'rigctld:' || fail "--uplink-radio forms"
 has trakbox passes x.tle --sat IS 'ISS.*' || fail "satellite names: $(complete_of trakbox passes x.tle --sat IS)"
 has trakbox schedule --du --dut1 || fail "schedule options"
 has trakbox passes x.tle --no- --no-checksum || fail "--no-checksum"

@@ -294,7 +294,8 @@ TEST_CASE("Menu 3-3: the manual's transcript — the shipped NASA file and freq/
   CHECK(has(out, "AO-07\n1 07530U 74089B   26141.31992461 -.00000054  00000-0 -48931-4 0  9992\n"));
   CHECK(has(out, "NASA>#1 AO-07\nNASA>#2 AO-27\nNASA>#3 FO-29\nNASA>#4 ISS\n"));
   CHECK(has(out, "NASA>#20 TEVEL2-1\n20 satellite(s) accepted, 0 record(s) skipped.\n"));
-  CHECK(has(out, "Upload freq/mode data file. (EOF:ctrl+Z)\nAO-07 145.950 432.150 usb lsb cat no\n"));
+  CHECK(has(out, "Upload freq/mode data file. (EOF:ctrl+Z)\nAO-07 145.950 432.150 usb lsb cat no "
+                 "down=145.925-145.975 up=432.125-432.175 inv=y\n"));
   CHECK(has(out, "Satellite (AO-07) updated and selected as # 1\n"));
   CHECK(has(out, "Satellite (QO-100) updated and selected as # 10\n"));
   CHECK(has(out, "Satellite (IO-117) updated and selected as # 14\n"));

@@ -687,6 +687,25 @@ TEST_CASE("6-7: N is no rig; Q half way changes nothing") {
   CHECK(!g.model.radio.uplink_correction);
 }
 
+TEST_CASE("6-7: D turns dial follow off and on at once; U names an uplink radio at once, none goes back to one") {
+  testing::MenuFixture f("7\rDQQ\r");
+  menus::menu_6_configuration(f.term, *f.services);
+  CHECK_FALSE(f.model.radio.dial_follow);
+  CHECK_FALSE(f.station->tuner().config().dial_follow);
+  CHECK(f.saves == 1);
+  CHECK(has(f.term.output(), "Dial follow OFF   Uplink radio: none (one radio)   (D: dial follow on/off, U: uplink radio)\n"));
+  testing::MenuFixture g("7\rUsim\rQQ\r");
+  menus::menu_6_configuration(g.term, *g.services);
+  CHECK(g.model.radio.uplink_radio == "sim");
+  CHECK(g.station->radio().describe() == "downlink: simulated radio; uplink: simulated radio");
+  CHECK(has(g.term.output(), "Radio: downlink: simulated radio; uplink: simulated radio\n"));
+  testing::MenuFixture h("7\rUsim\rUnone\rUbogus:x\rQQ\r");
+  menus::menu_6_configuration(h.term, *h.services);
+  CHECK(h.model.radio.uplink_radio.empty());
+  CHECK(h.station->radio().describe() == "simulated radio");
+  CHECK(has(h.term.output(), "uplink radio \"bogus:x\": unknown radio \"bogus\""));
+}
+
 TEST_CASE("6-8 Measure shows ADC3 live from the simulated discriminator: a satellite above the horizon, the radio "
           "tuned 1 kHz high") {
   testing::MenuFixture f;

@@ -1,5 +1,7 @@
 #include <doctest/doctest.h>
 
+#include <algorithm>
+
 #include "fixture.h"
 #include "menus/realtime_display.h"
 
@@ -114,6 +116,46 @@ TEST_CASE("Line mode: the realtime display's E and + / - / 0 say what they chang
   CHECK(out.find("Frequency offset +100 Hz\n", out.find("+200 Hz")) != std::string::npos);
   CHECK(out.find("Frequency offset 0 Hz\n") != std::string::npos);
   CHECK(f.station->tuner().rit_hz() == 0);
+}
+
+namespace {
+// The radio lines of a line-mode realtime display from `from` on, with the sent frequencies taken
+// out (they move with the Doppler): "Spot D 145.950000 U 432.150000 | dial follow".
+std::vector<std::string> radio_lines(const std::string& out, std::size_t from = 0) {
+  std::vector<std::string> lines;
+  for (auto p = out.find("Spot D ", from); p != std::string::npos; p = out.find("Spot D ", p + 1)) {
+    std::string l = out.substr(p, out.find('\n', p) - p);
+    const auto a = l.find(" | sent D ");
+    REQUIRE(a != std::string::npos);
+    l.erase(a, l.find(" | ", a + 1) == std::string::npos ? std::string::npos : l.find(" | ", a + 1) - a);
+    lines.push_back(l);
+  }
+  return lines;
+}
+bool contains(const std::vector<std::string>& v, const std::string& s) { return std::find(v.begin(), v.end(), s) != v.end(); }
+}  // namespace
+
+TEST_CASE("Line mode: the radio line shows the spot and what was sent; D turns dial follow off and on; a spot "
+          "outside the passband is warned about") {
+  testing::MenuFixture f("\rDDQ");
+  f.term.timeouts_before_key = 1;
+  const int ao07 = *f.model.db.find("AO-07");   // followed; an inverting transponder in data/freqmode.txt
+  REQUIRE(f.model.db.satellites[static_cast<std::size_t>(ao07)].radio.has_passbands());
+  menus::menu_1_realtime_tracking(f.term, *f.services);
+  const std::string& out = f.term.output();
+  CHECK(out.find("'D' dial follow on/off") != std::string::npos);
+  CHECK(contains(radio_lines(out), "Spot D 145.950000 U 432.150000 | dial follow"));
+  const auto off = out.find("Dial follow OFF\n");
+  REQUIRE(off != std::string::npos);
+  CHECK(contains(radio_lines(out, off), "Spot D 145.950000 U 432.150000 | dial follow OFF"));
+  CHECK(out.find("Dial follow ON\n", off) != std::string::npos);
+  CHECK(f.model.radio.dial_follow);
+
+  testing::MenuFixture g("\rQ");
+  g.term.timeouts_before_key = 1;
+  g.model.db.satellites[static_cast<std::size_t>(ao07)].radio.downlink_hz = 145'980'000;  // above 145.975
+  menus::menu_1_realtime_tracking(g.term, *g.services);
+  CHECK(contains(radio_lines(g.term.output()), "Spot D 145.980000 U 432.150000 | dial follow | SPOT OUTSIDE PASSBAND"));
 }
 
 TEST_CASE("LinkNotices: one line when a link fails and one when it is back, not one per retry") {

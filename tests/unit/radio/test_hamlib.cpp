@@ -150,3 +150,27 @@ TEST_CASE("Hamlib: nothing listening is a fault with Hamlib's reason, retried wi
   CHECK(st.message.find("cannot open") != std::string::npos);
   CHECK_FALSE(st.connected);
 }
+
+TEST_CASE("Hamlib: dial follow reads the radio back (dummy backend, both schemes); the CTCSS tone reaches rigctld") {
+  // Main/Sub. (Split is not checked on the dummy: Hamlib 4.5.4's dummy, read with the cache off,
+  // holds the split TX frequency in VFO A, so the current VFO reads the uplink; docs/radio.md.)
+  HamlibLink link({1, "", 0, HamlibVfoScheme::main_sub});
+  link.open();
+  CHECK(link.can_read(Link::downlink));
+  link.set_frequency(Link::downlink, 435'640'850);
+  link.set_frequency(Link::uplink, 145'964'720);
+  CHECK(link.read_frequency(Link::downlink) == 435'640'850);
+  CHECK(link.read_frequency(Link::uplink) == 145'964'720);
+  link.close();
+  if (!have_hamlib_utils()) return;
+  const int port = tbtest::free_tcp_port();
+  REQUIRE(port > 0);
+  auto daemon = start_rigctld(port);
+  REQUIRE(daemon);
+  auto made = make_radio("rigctld:127.0.0.1:" + std::to_string(port), RadioConfig{});
+  REQUIRE(made.driver);
+  made.driver->set_ctcss_tone(670);   // SO-50's 67.0 Hz
+  REQUIRE(made.driver->wait_idle(10s));
+  CHECK_FALSE(made.driver->status().fault);
+  CHECK(rigctld_query(port, "c", 1) == "670");
+}

@@ -63,6 +63,13 @@ TEST_CASE("SatNOGS: transceivers, inverting transponders, beacons; dead transmit
   CHECK(rs44.uplink_hz == 145'965'000);
   CHECK(rs44.uplink_mode == radio::Mode::lsb);
   CHECK(rs44.downlink_mode == radio::Mode::usb);
+  // The passband edges, for dial follow; the ISS's FM transceiver has none.
+  CHECK(rs44.downlink_low_hz == 435'610'000);
+  CHECK(rs44.downlink_high_hz == 435'670'000);
+  CHECK(rs44.uplink_low_hz == 145'935'000);
+  CHECK(rs44.uplink_high_hz == 145'995'000);
+  CHECK(rs44.inverting);
+  CHECK_FALSE(iss.has_passbands());
   CHECK_FALSE(db.satellites[2].radio.has_downlink());
   CHECK(db.satellites[3].radio.uplink_mode == radio::Mode::none);
 }
