@@ -361,6 +361,9 @@ std::string ndot_columns(double v) {
     std::string t = printf_string("%.*f", d, std::fabs(v));
     if (t.starts_with("0.")) t.erase(0, 1);
     if (t.size() <= 9) return sign + std::string(9 - t.size(), ' ') + t;
+    // The reader takes all 10 columns as the number, so a positive one may use the sign's column
+    // (no real satellite has such a value, but what was read must write back).
+    if (t.size() == 10 && sign == ' ') return t;
   }
   return std::string(10, '*');
 }

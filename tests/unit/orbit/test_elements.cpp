@@ -143,6 +143,23 @@ TEST_CASE("NASA: files joined with cat keep a byte-order mark inside; it is drop
   MESSAGE(odd.problems[0].message());
 }
 
+TEST_CASE("NASA: an ndot/2 that fills all 10 columns (the sign's too) is written back as read") {
+  // Found by fuzz_elements: "2700000421" was read (10 digits, no point) but written as stars.
+  std::string l1 = "1 09880U 77102A   06092.15615748 2700000421  00000-0  10000-3 1  981";
+  l1 += static_cast<char>('0' + nasa_checksum(l1));
+  std::string l2 = "2 09880  64.5968 349.3786 9754032 270.0229  15.3320  4.0081361411238";
+  l2 += static_cast<char>('0' + nasa_checksum(l2));
+  const ParseResult r = parse_nasa(l1 + "\n" + l2 + "\n", "big.txt");
+  REQUIRE(r.problems.empty());
+  REQUIRE(r.sets.size() == 1);
+  CHECK(r.sets[0].ndot_over_2 == 2700000421.0);
+  const std::string text = format_nasa(r.sets[0]);
+  CHECK(text.substr(33, 10) == "2700000421");
+  const ParseResult again = parse_nasa(text, "again.txt");
+  REQUIRE(again.sets.size() == 1);
+  CHECK(again.sets[0].ndot_over_2 == 2700000421.0);
+}
+
 TEST_CASE("NASA: implied-decimal exponent fields") {
   // The same ISS line with other nddot/6 and BSTAR texts; checksums recomputed.
   auto with = [](std::string_view nddot, std::string_view bstar) {
