@@ -16,7 +16,6 @@ Also: a --clock-rate above the stated maximum (200) is refused with a message sa
 """
 import datetime
 import os
-import re
 import shutil
 import socket
 import subprocess
@@ -25,7 +24,7 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, CLOCK, SOURCE, Failure, check, free_port, reap, run_test, sh  # noqa: E402
+from _tbharness import BIN, CLOCK, SOURCE, Failure, Satrak, check, free_port, reap, run_test, sh  # noqa: E402
 
 RATE = 100
 SLEW_DEG = 120.0
@@ -33,30 +32,16 @@ MODEL_S = SLEW_DEG / 6.0  # the simulated rotator's 6 deg/s
 TOLERANCE_S = 1.5         # spin-up and coast (0.15 s), the dead band (1 deg), the tick (0.5 s at 100x)
 
 
-def frame(payload):
-    cs = 0
-    for b in payload.encode():
-        cs ^= b
-    return b"$" + payload.encode() + b"*%02X\r\n" % cs
+class Client(Satrak):
+    """The harness's Satrak client (its own frames and checksums), with TCP_NODELAY: the test times
+    each exchange, so no request may wait for Nagle."""
 
-
-class Client:
     def __init__(self, port):
-        self.sock = socket.create_connection(("127.0.0.1", port), timeout=5)
-        self.sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
-        self.buf = b""
+        super().__init__(port)
+        self.s.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
 
     def fields(self, payload):
-        self.sock.sendall(frame(payload))
-        while b"\n" not in self.buf:
-            chunk = self.sock.recv(4096)
-            if not chunk:
-                raise Failure(f"connection closed after {payload!r}")
-            self.buf += chunk
-        line, self.buf = self.buf.split(b"\n", 1)
-        m = re.fullmatch(rb"\$(.*)\*([0-9A-F]{2})\r", line)
-        check(m is not None, f"bad reply frame {line!r}")
-        return m.group(1).decode().split(",")[1:]
+        return self.ask(payload).split(",")[1:]
 
     def sim_time(self):
         """The unit's clock (TIME?: hour, minute, second, day, month, year, ms) as a datetime."""
@@ -126,14 +111,7 @@ def main():
                          stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
     c = None
     try:
-        deadline = time.time() + 15
-        while c is None:
-            try:
-                c = Client(port)
-            except OSError:
-                if time.time() > deadline:
-                    raise Failure("the Satrak server never answered")
-                time.sleep(0.2)
+        c = Client(port)  # waits up to 15 s for the server
         c.goto(10, 0)
         for start, goal in ((10, 10 + SLEW_DEG), (10 + SLEW_DEG, 10)):
             lo, hi, wall = slew(c, start, goal)
@@ -144,7 +122,7 @@ def main():
         print("rotator_clock_rate: ok")
     finally:
         if c:
-            c.sock.close()
+            c.close()
         reap([p])
         shutil.rmtree(state, ignore_errors=True)
 
