@@ -175,7 +175,10 @@ void Controller::stop() {
 Drive Controller::motion_of(Axis a) const {
   const AxisLoop& l = a == Axis::az ? az_ : el_;
   if (l.cmd != Drive::stop) return l.cmd;
-  if (std::abs(l.velocity) > kMotorStopFraction * rate_cps(a)) return l.velocity > 0.0 ? Drive::increase : Drive::decrease;
+  // Half the simulated rotator's friction stop: the model's coast is an estimate (a drive switched
+  // off a little later than the tick that decided it, under load), so it says "moving" a little
+  // longer than the motor moves (tau * ln 2, 0.1 s at coast 0.15 s), never shorter.
+  if (std::abs(l.velocity) > 0.5 * kMotorStopFraction * rate_cps(a)) return l.velocity > 0.0 ? Drive::increase : Drive::decrease;
   return Drive::stop;
 }
 
