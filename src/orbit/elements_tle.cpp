@@ -201,7 +201,9 @@ std::optional<ParseProblem> parse_line2(const ElementLine& l, const ParseOptions
   if (auto p = check_blank(l, 52)) return p;
   const auto n = parse_fixed(l.raw(53, 63));
   if (!n) return l.problem(53, 63, F[7].name, "decimal number");
-  if (!(*n > 0.0)) return l.problem(53, 63, F[7].name, "number > 0");
+  // The field's smallest step: a smaller value (".0000000014", more digits than the field's 8
+  // decimals) would be written back as 0, which no reader takes (found by fuzz_elements).
+  if (!(*n >= 0.5e-8)) return l.problem(53, 63, F[7].name, "number >= 0.00000001");
   e.mean_motion_rev_per_day = *n;
   if (auto p = parse_count_field(l, F[8], e.revolution_number)) return p;
 

@@ -437,7 +437,10 @@ TEST_CASE("NASA problems: ranges and separators") {
   check_problem(line2_problem(l2), 2, 18, "RAAN", "360.0000", "number in [0, 360)");
   l2 = kIss2;
   l2.replace(52, 11, " 0.00000000");
-  check_problem(line2_problem(l2), 2, 53, "mean motion", " 0.00000000", "number > 0");
+  check_problem(line2_problem(l2), 2, 53, "mean motion", " 0.00000000", "number >= 0.00000001");
+  l2 = kIss2;
+  l2.replace(52, 11, ".0000000014");  // more digits than the field's 8 decimals: it would write as 0
+  check_problem(line2_problem(l2), 2, 53, "mean motion", ".0000000014", "number >= 0.00000001");
   l2 = kIss2;
   l2.replace(26, 7, "00067.3");
   check_problem(line2_problem(l2), 2, 27, "eccentricity", "00067.3", "7 digits (implied leading decimal point)");
