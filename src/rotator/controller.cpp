@@ -82,8 +82,11 @@ void Controller::note(std::string message, bool warn) {
 void Controller::keep_to_piece(double travel) {
   if (model_.config().cross_limit_sector || !model_.travel_split()) return;
   const int p = model_.az_piece_of(travel);
-  if (p == model_.az_piece()) return;
-  model_.set_az_piece(p);
+  if (p != model_.az_piece()) use_az_piece(p);
+}
+
+void Controller::use_az_piece(int index) {
+  model_.set_az_piece(index);
   if (status_.target) status_.target = model_.clamp(*status_.target);
 }
 
@@ -92,10 +95,7 @@ bool Controller::select_az_piece(int index) {
   const std::vector<Range> pieces = model_.az_pieces();
   if (index < 0 || index >= static_cast<int>(pieces.size()) || pieces[static_cast<std::size_t>(index)].empty())
     return false;
-  if (index != model_.az_piece()) {
-    model_.set_az_piece(index);
-    if (status_.target) status_.target = model_.clamp(*status_.target);
-  }
+  if (index != model_.az_piece()) use_az_piece(index);
   return true;
 }
 

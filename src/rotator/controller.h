@@ -192,6 +192,8 @@ class Controller {
   // Limits that split the travel, as barriers: the piece in force is the one the antenna is in
   // (or nearest, when it is outside the limits), the target clamped into it.
   void keep_to_piece(double travel);
+  // Makes a piece of travel the one in force and clamps the target into it.
+  void use_az_piece(int index);
 
   AdcModel model_;
   std::unique_ptr<RotatorDriver> driver_;

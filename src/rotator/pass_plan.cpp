@@ -84,8 +84,15 @@ namespace {
 PassPlan plan_in_piece(std::span<const TrackPoint> track, const PassGeometry& g,
                        std::optional<double> current_travel);
 
-PassCoverage coverage_of(const PassPlan& plan, std::span<const TrackPoint> track) {
-  PassCoverage c;
+// How much of the pass a plan follows, and the highest elevation among the samples it follows
+// (-1e300 when none).
+struct Followed {
+  PassCoverage coverage;
+  double highest = -1e300;
+};
+Followed followed_by(const PassPlan& plan, std::span<const TrackPoint> track) {
+  Followed f;
+  PassCoverage& c = f.coverage;
   for (const TrackPoint& s : track) {
     if (s.el_deg < plan.geometry.start_el) continue;
     ++c.samples;
@@ -95,20 +102,10 @@ PassCoverage coverage_of(const PassPlan& plan, std::span<const TrackPoint> track
     ++c.followed;
     if (!c.from) c.from = s.time;
     c.to = s.time;
+    f.highest = std::max(f.highest, s.el_deg);
   }
   c.fraction = c.samples ? static_cast<double>(c.followed) / c.samples : 1.0;
-  return c;
-}
-
-// The highest elevation among the samples a plan follows (-inf when none).
-double highest_followed(const PassPlan& plan, std::span<const TrackPoint> track) {
-  double best = -1e300;
-  for (const TrackPoint& s : track) {
-    if (s.el_deg < plan.geometry.start_el) continue;
-    const AzEl at = pointing(plan.geometry, plan.map(s.az_deg, s.el_deg));
-    if (azimuth_distance(at.az, s.az_deg) <= 0.05 || s.el_deg >= 89.5) best = std::max(best, s.el_deg);
-  }
-  return best;
+  return f;
 }
 }  // namespace
 
@@ -137,8 +134,9 @@ PassPlan plan_pass(std::span<const TrackPoint> track, const PassGeometry& g, std
       gi.az_travel = g.pieces[static_cast<std::size_t>(i)];
     }
     PassPlan plan = plan_in_piece(track, gi, current_travel);
-    plan.coverage = coverage_of(plan, track);
-    const double high = highest_followed(plan, track);
+    const Followed f = followed_by(plan, track);
+    plan.coverage = f.coverage;
+    const double high = f.highest;
     // The most of the pass, then its highest part, then the piece in force (listed first).
     bool better = !best;
     if (best) {
