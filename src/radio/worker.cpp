@@ -73,6 +73,11 @@ void WorkerRadio::set_ctcss_tone(int tenths_hz) {
   cv_.notify_all();
 }
 
+void WorkerRadio::note_readable() {
+  status_.reads_downlink = link_->can_read(Link::downlink);
+  status_.reads_uplink = link_->can_read(Link::uplink);
+}
+
 bool WorkerRadio::read_dial(Lock& lock, Link link, Hz guard) {
   const int i = index(link);
   lock.unlock();
@@ -245,8 +250,7 @@ bool WorkerRadio::connect(Lock& lock) {
   want_open_ = false;
   next_check_ = std::chrono::steady_clock::now() + timing_.check_every;
   status_.connected = true;
-  status_.reads_downlink = link_->can_read(Link::downlink);
-  status_.reads_uplink = link_->can_read(Link::uplink);
+  note_readable();
   ++status_.connects;
   spdlog::info("radio {}: {}", description_, status_.connects > 1 ? "reconnected" : "connected");
   // The port is open: no fault to show (the endpoints take commands again). The backoff and the
@@ -294,9 +298,7 @@ void WorkerRadio::deliver_next(Lock& lock) {
     return;
   }
   ++status_.delivered;
-  // A command may have changed what can be read (a Hamlib radio that just went into split).
-  status_.reads_downlink = link_->can_read(Link::downlink);
-  status_.reads_uplink = link_->can_read(Link::uplink);
+  note_readable();  // a command may have changed it (a Hamlib radio that just went into split)
   if (status_.fault || link_fault_) spdlog::info("radio {}: working again", description_);
   link_fault_ = false;
   logged_.clear();

@@ -96,6 +96,8 @@ class WorkerRadio final : public RadioDriver {
   void lose_link(Lock& lock);        // closes a broken link; the worker reopens it with backoff
   // Dial follow: reads a link's frequency (mu_ unlocked around the read) and records a turn when it
   // is more than guard from the accepted frequency. True when the operator turned the dial.
+  // The status's reads_downlink/uplink from the link as it is now (under mu_).
+  void note_readable();
   bool read_dial(Lock& lock, Link link, Hz guard);
 
   std::unique_ptr<RadioLink> link_;
