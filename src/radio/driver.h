@@ -19,6 +19,8 @@ namespace tb::radio {
 
 enum class Link { downlink, uplink };
 const char* to_string(Link l);   // "downlink" / "uplink"
+// The link as an array index (0 downlink, 1 uplink), for per-link state.
+constexpr int link_index(Link l) { return l == Link::downlink ? 0 : 1; }
 
 struct RadioStatus {
   bool connected = false;        // port / socket open

@@ -4,10 +4,6 @@
 
 namespace tb::radio {
 
-namespace {
-int index(Link l) { return l == Link::downlink ? 0 : 1; }
-}  // namespace
-
 SimulatedRadio::SimulatedRadio() {
   status_.connected = true;
   status_.connects = 1;
@@ -18,20 +14,20 @@ void SimulatedRadio::set_frequency_guarded(Link link, Hz hz, Hz tolerance) {
   {
     std::lock_guard lock(mu_);
     const std::optional<Hz> dial = link == Link::downlink ? status_.downlink_hz : status_.uplink_hz;
-    std::optional<Hz>& accepted = accepted_[index(link)];
+    std::optional<Hz>& accepted = accepted_[link_index(link)];
     if (tolerance > 0 && dial && accepted && dial_turned(*dial, *accepted, tolerance)) {
-      turned_[index(link)] = *dial;
+      turned_[link_index(link)] = *dial;
       accepted = *dial;
       return;
     }
-    if (tolerance > 0 && turned_[index(link)]) return;   // a turn not yet taken: not undone
+    if (tolerance > 0 && turned_[link_index(link)]) return;   // a turn not yet taken: not undone
   }
   set_frequency(link, hz);
 }
 
 std::optional<Hz> SimulatedRadio::take_dial_turn(Link link) {
   std::lock_guard lock(mu_);
-  return std::exchange(turned_[index(link)], std::nullopt);
+  return std::exchange(turned_[link_index(link)], std::nullopt);
 }
 
 void SimulatedRadio::set_frequency(Link link, Hz hz) {
@@ -42,8 +38,8 @@ void SimulatedRadio::set_frequency(Link link, Hz hz) {
   }
   (link == Link::downlink ? status_.downlink_hz : status_.uplink_hz) = hz;
   (link == Link::downlink ? status_.downlink_read_hz : status_.uplink_read_hz) = hz;
-  accepted_[index(link)] = hz;
-  turned_[index(link)].reset();
+  accepted_[link_index(link)] = hz;
+  turned_[link_index(link)].reset();
   ++status_.delivered;
   record({RadioEvent::Kind::frequency, link, hz, Mode::none, {}});
 }

@@ -7,10 +7,6 @@
 
 namespace tb::radio {
 
-namespace {
-int index(Link l) { return l == Link::downlink ? 0 : 1; }
-}  // namespace
-
 WorkerRadio::WorkerRadio(std::unique_ptr<RadioLink> link, WorkerTiming timing)
     : link_(std::move(link)), description_(link_->describe()), timing_(timing) {
   thread_ = std::thread([this] { run(); });
@@ -41,10 +37,10 @@ void WorkerRadio::enqueue_locked(Job job) {
 void WorkerRadio::set_frequency(Link link, Hz hz) {
   {
     std::lock_guard lock(mu_);
-    want_hz_[index(link)] = hz;
+    want_hz_[link_index(link)] = hz;
     // Set as told (host mode, a rigctld client, dial follow off): no dial to watch any more.
-    guard_[index(link)] = 0;
-    turned_[index(link)].reset();
+    guard_[link_index(link)] = 0;
+    turned_[link_index(link)].reset();
     enqueue_locked({Job::Kind::frequency, link, hz, Mode::none, {}});
   }
   cv_.notify_all();
@@ -53,8 +49,8 @@ void WorkerRadio::set_frequency(Link link, Hz hz) {
 void WorkerRadio::set_frequency_guarded(Link link, Hz hz, Hz tolerance) {
   {
     std::lock_guard lock(mu_);
-    want_hz_[index(link)] = hz;
-    guard_[index(link)] = tolerance;
+    want_hz_[link_index(link)] = hz;
+    guard_[link_index(link)] = tolerance;
     enqueue_locked({Job::Kind::frequency, link, hz, Mode::none, {}, tolerance});
   }
   cv_.notify_all();
@@ -62,7 +58,7 @@ void WorkerRadio::set_frequency_guarded(Link link, Hz hz, Hz tolerance) {
 
 std::optional<Hz> WorkerRadio::take_dial_turn(Link link) {
   std::lock_guard lock(mu_);
-  return std::exchange(turned_[index(link)], std::nullopt);
+  return std::exchange(turned_[link_index(link)], std::nullopt);
 }
 
 void WorkerRadio::set_ctcss_tone(int tenths_hz) {
@@ -79,7 +75,7 @@ void WorkerRadio::note_readable() {
 }
 
 bool WorkerRadio::read_dial(Lock& lock, Link link, Hz guard) {
-  const int i = index(link);
+  const int i = link_index(link);
   lock.unlock();
   std::optional<Hz> read;
   try {
@@ -109,7 +105,7 @@ void WorkerRadio::set_mode(Link link, Mode mode) {
   if (mode == Mode::none) return;
   {
     std::lock_guard lock(mu_);
-    want_mode_[index(link)] = mode;
+    want_mode_[link_index(link)] = mode;
     enqueue_locked({Job::Kind::mode, link, 0, mode, {}});
   }
   cv_.notify_all();
@@ -207,10 +203,10 @@ void WorkerRadio::check_link(Lock& lock) {
   // cleared at the reopen; a refused command's fault stays until the next delivery).
   // Dial follow: the guarded links that can be read, while nothing waits to be sent to them.
   for (Link l : {Link::downlink, Link::uplink}) {
-    if (guard_[index(l)] <= 0 || turned_[index(l)] || !link_->can_read(l)) continue;
+    if (guard_[link_index(l)] <= 0 || turned_[link_index(l)] || !link_->can_read(l)) continue;
     if (std::any_of(queue_.begin(), queue_.end(), [&](const Job& j) { return j.kind == Job::Kind::frequency && j.link == l; }))
       continue;
-    read_dial(lock, l, guard_[index(l)]);
+    read_dial(lock, l, guard_[link_index(l)]);
     if (!open_) return;
   }
   if (link_fault_) {
@@ -260,8 +256,8 @@ bool WorkerRadio::connect(Lock& lock) {
   status_.message.clear();
   // Whatever the radio was told before, tell it again.
   for (Link l : {Link::downlink, Link::uplink}) {
-    if (want_mode_[index(l)]) enqueue_locked({Job::Kind::mode, l, 0, *want_mode_[index(l)], {}});
-    if (want_hz_[index(l)]) enqueue_locked({Job::Kind::frequency, l, *want_hz_[index(l)], Mode::none, {}});
+    if (want_mode_[link_index(l)]) enqueue_locked({Job::Kind::mode, l, 0, *want_mode_[link_index(l)], {}});
+    if (want_hz_[link_index(l)]) enqueue_locked({Job::Kind::frequency, l, *want_hz_[link_index(l)], Mode::none, {}});
   }
   return true;
 }
@@ -273,7 +269,7 @@ void WorkerRadio::deliver_next(Lock& lock) {
     // Read before writing: a turn of the dial since the last command is kept, not overwritten,
     // and so is one seen earlier that the station has not taken yet.
     busy_ = true;
-    const bool turned = turned_[index(job.link)] || read_dial(lock, job.link, job.guard);
+    const bool turned = turned_[link_index(job.link)] || read_dial(lock, job.link, job.guard);
     busy_ = false;
     if (!open_) queue_.push_front(std::move(job));   // the link broke while reading: later
     if (turned || !open_) return;
