@@ -32,7 +32,7 @@ def main():
             continue
         kind, workload, impl, arg = m.group(1), m.group(2), m.group(3), m.group(4) or ""
         medians[(kind, workload + arg, impl)] = (b["per_propagation"] * 1e9, b.get("label", ""))
-    print(f"{"workload":46} {'trakbox ns':>11} {'Vallado ns':>11} {'ratio':>6}")
+    print(f"{'workload':46} {'trakbox ns':>11} {'Vallado ns':>11} {'ratio':>6}")
     for (kind, workload, impl), (ns, label) in sorted(medians.items()):
         if impl != "Trakbox":
             continue
