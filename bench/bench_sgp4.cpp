@@ -151,7 +151,8 @@ void BM_Sgp4BatchGpredict979x1440(benchmark::State& state) {
 BENCHMARK(BM_Sgp4BatchGpredict979x1440)->DenseRange(0, 3)->Unit(benchmark::kMillisecond)->MinTime(3.0);
 
 // The propagate command's output line, one day of ISS at one-minute steps: the baseline writes it
-// with snprintf as before (BM_PropagateLinePrintf), the command with to_chars (BM_PropagateLineToChars,
+// with snprintf as before (BM_PropagateLinePrintf), the command with append_fixed: exact integer
+// arithmetic in the command's ranges, to_chars beyond (BM_PropagateLineToChars, the name it had,
 // orbit/state_lines.h). The two give the same characters (unit_util); the ratio is the saving per
 // line, apart from SGP4 itself (BM_Sgp4NearEarth).
 std::vector<std::pair<double, StateVector>> iss_day_states() {

@@ -378,8 +378,8 @@ int run_propagate(std::vector<std::string> args) {
   if (auto done = run.load_sats(false, sats)) return *done;
 
   const orbit::Sgp4 sat(sats.front());
-  // Lines are gathered and written 64 kB at a time; numbers are formatted with to_chars, which
-  // gives printf's characters at a fraction of its cost (bench_sgp4 BM_PropagateLine*). The states
+  // Lines are gathered and written 64 kB at a time; numbers are formatted by text::append_fixed,
+  // which gives printf's characters at a fraction of its cost (bench_sgp4 BM_PropagateLine*). The states
   // come 512 at a time from the batch propagator (orbit/sgp4_batch.h, vectorised).
   std::string buf;
   buf.reserve(1 << 17);

@@ -2,8 +2,10 @@
 // The small text helpers every parser of outside input needs, written once: trimming, ASCII case,
 // splitting, and whole-string number parsing. ASCII only on purpose: element sets, CAT replies,
 // Satrak frames and menu answers are ASCII, and the locale must never change what a byte means.
+#include <bit>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -95,10 +97,66 @@ std::optional<T> parse_integer(std::string_view s) {
 // decimals), without printf: std::to_chars is specified to give printf's characters in the C
 // locale (exact value, rounded to nearest), so output does not change, only its cost (the
 // propagate command writes seven numbers per line).
+namespace detail {
+// printf's %.Pf of a finite |value| < 2^53 with P <= 9, into buf (sign, integer part, point, P
+// decimals); the number of characters, or 0 when the value is outside that range. The binary value
+// is m 2^e exactly; its integer part is m >> -e and its fraction f / 2^-e, so the decimals are
+// f 10^P / 2^-e rounded half to even, as glibc rounds the exact value: one 128-bit product and a
+// shift, where to_chars runs its general algorithm (a quarter of the time of `propagate`).
+inline std::size_t fixed_small(char* buf, double value, int precision) {
+  static constexpr std::uint64_t kPow10[] = {1,      10,      100,      1000,      10000,
+                                             100000, 1000000, 10000000, 100000000, 1000000000};
+  if (precision < 0 || precision > 9 || !(std::fabs(value) < 0x1p53)) return 0;  // also NaN
+  const auto bits = std::bit_cast<std::uint64_t>(value);
+  const bool negative = bits >> 63;
+  const int biased = static_cast<int>((bits >> 52) & 0x7ff);
+  const std::uint64_t fraction_bits = bits & ((std::uint64_t{1} << 52) - 1);
+  const std::uint64_t m = biased == 0 ? fraction_bits : fraction_bits | (std::uint64_t{1} << 52);
+  const int shift = (biased == 0 ? 1 : biased) - 1075;  // value = m 2^shift; shift <= 0 below 2^53
+  const std::uint64_t scale = kPow10[precision];
+  std::uint64_t whole = 0, decimals = 0;
+  if (shift >= 0) {
+    whole = m << shift;
+  } else {
+    const int s = -shift;
+    whole = s < 64 ? m >> s : 0;
+    const std::uint64_t f = s < 64 ? m & ((std::uint64_t{1} << s) - 1) : m;  // fraction f / 2^s
+    if (s < 128) {
+      using U128 = unsigned __int128;
+      const U128 x = static_cast<U128>(f) * scale;  // < 2^83
+      const U128 q = x >> s;
+      const U128 rem = x - (q << s);
+      const U128 half = U128{1} << (s - 1);
+      const bool odd = precision == 0 ? (whole & 1) != 0 : (q & 1) != 0;  // the last digit printed
+      decimals = static_cast<std::uint64_t>(q) + ((rem > half || (rem == half && odd)) ? 1 : 0);
+    }  // else the fraction is below 2^-44 of a unit of the last decimal: it rounds to 0
+    if (decimals == scale) {  // rounded up into the next whole number
+      decimals = 0;
+      ++whole;
+    }
+  }
+  char* p = buf;
+  if (negative) *p++ = '-';  // printf keeps the sign of a negative value that rounds to zero
+  p = std::to_chars(p, p + 20, whole).ptr;
+  if (precision > 0) {
+    *p++ = '.';
+    for (int k = precision - 1; k >= 0; --k) {
+      p[k] = static_cast<char>('0' + decimals % 10);
+      decimals /= 10;
+    }
+    p += precision;
+  }
+  return static_cast<std::size_t>(p - buf);
+}
+}  // namespace detail
+
 inline void append_fixed(std::string& out, double value, int width, int precision) {
   char buf[400];  // DBL_MAX has 309 integer digits; with a sign, the point and 40 decimals it fits
-  const auto r = std::to_chars(buf, buf + sizeof buf, value, std::chars_format::fixed, precision);
-  const std::size_t n = r.ec == std::errc() ? static_cast<std::size_t>(r.ptr - buf) : 0;
+  std::size_t n = detail::fixed_small(buf, value, precision);
+  if (n == 0) {
+    const auto r = std::to_chars(buf, buf + sizeof buf, value, std::chars_format::fixed, precision);
+    n = r.ec == std::errc() ? static_cast<std::size_t>(r.ptr - buf) : 0;
+  }
   if (static_cast<int>(n) < width) out.append(static_cast<std::size_t>(width) - n, ' ');
   out.append(buf, n);
 }

@@ -2,6 +2,8 @@
 
 #include <doctest/doctest.h>
 
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <random>
@@ -93,5 +95,25 @@ TEST_CASE("append_fixed writes what printf's %W.Pf writes, character for charact
     differ += fixed(b, 12, 9) != printf_fixed(b, 12, 9);
     differ += fixed(c, 16, 8) != printf_fixed(c, 16, 8);
   }
+  CHECK(differ == 0);
+  // Every binary exponent the fast path takes (|v| < 2^53) and the one beyond, mantissas at random,
+  // at every precision it takes; exact ties (odd multiples of 2^-(P+1) are ties at P decimals,
+  // as 10^P 2^-(P+1) = 5^P / 2), and values that round up into the next whole number.
+  std::uniform_int_distribution<std::uint64_t> mantissa(0, (std::uint64_t{1} << 52) - 1);
+  std::uniform_int_distribution<int> exponent(-1074, 54), precision(0, 9);
+  for (int i = 0; i < 300000; ++i) {
+    const int e = exponent(gen);
+    const double v = std::ldexp(static_cast<double>(mantissa(gen) | (std::uint64_t{1} << 52)), e - 52);
+    const int p = precision(gen);
+    differ += fixed(i % 2 ? -v : v, 16, p) != printf_fixed(i % 2 ? -v : v, 16, p);
+  }
+  for (int p = 0; p <= 9; ++p)
+    for (std::int64_t odd = 1; odd < 4000; odd += 2) {
+      const double tie = std::ldexp(static_cast<double>(odd), -(p + 1));
+      for (double v : {tie, -tie, std::nextafter(tie, 0.0), std::nextafter(tie, 1e9), 1e6 + tie})
+        differ += fixed(v, 16, p) != printf_fixed(v, 16, p);
+    }
+  for (double v : {0.9999999999, 9.9999999995, 99999.999999999, 0x1p53 - 1.0, 0x1p53, 0x1p-1074, 4503599627370495.5})
+    for (int p = 0; p <= 9; ++p) differ += fixed(v, 16, p) != printf_fixed(v, 16, p);
   CHECK(differ == 0);
 }
