@@ -75,7 +75,9 @@ Searcher::Searcher(const Sgp4& sat, const Observer& o, UtcTime start, UtcTime st
 
 bool Searcher::eval(double t, Sample& out) {
   ++evals_;
-  const Propagation p = sat_.propagate_minutes(tsince0_ + t / 60.0);
+  const double tsince = tsince0_ + t / 60.0;
+  if (trace_ != nullptr) trace_->push_back(tsince);
+  const Propagation p = sat_.propagate_minutes(tsince);
   if (!p.ok()) return false;
   // TEME -> pseudo-Earth-fixed as teme_to_ecef does it.
   double c, sn;
@@ -338,6 +340,7 @@ std::vector<Pass> find_passes(const Sgp4& sat, const Observer& o, UtcTime start,
                               const PassOptions& options, const EarthOrientation& eo, PassSearchStats& stats) {
   std::vector<Pass> out;
   Searcher s(sat, o, start, stop, options, eo);
+  s.record_tsince(stats.tsince_minutes);
   while (auto p = s.next()) out.push_back(*p);
   stats.propagations += s.evaluations();
   return out;

@@ -155,6 +155,7 @@ class Searcher {
     return std::nullopt;
   }
   long evaluations() const { return evals_; }
+  void record_tsince(std::vector<double>* into) { trace_ = into; }
 
  private:
   struct Local { double r_lo, r_hi, V, A; };  // bounds valid over a span from a sample
@@ -282,6 +283,7 @@ class Searcher {
   bool done_ = false;
   Sample cur_{};             // the latest sample, down (except at the very start)
   long evals_ = 0;
+  std::vector<double>* trace_ = nullptr;  // PassSearchStats::tsince_minutes
 };
 
 }  // namespace tb::orbit::detail
