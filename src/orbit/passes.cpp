@@ -90,6 +90,7 @@ bool Searcher::eval(double t, Sample& out) {
               -sn * vt[0] + c * vt[1] - kEarthRotationRadS * e.r_km[0], vt[2]};
   const Vec3 rho = sub(e.r_km, site_);
   out.t = t;
+  out.angles_have = 0;
   out.s = norm(rho);
   const double inv_s = 1.0 / out.s;
   const double f = dot(rho, up_) * inv_s;
@@ -285,7 +286,7 @@ double Searcher::speculative_target(const Sample& s, double safe, bool below) co
   if (xp > safe && xp < 3.0 * safe + 30.0) return s.t + xp + 0.125 * tol_ + 0.002 * xp;
   if (safe < 300.0 && (below ? s.du_y > 0.0 : s.du_y < 0.0)) {
     const double rev = kTwoPi * r_max_ * r_max_ / h_min_;
-    const Angles g(s, false);
+    const Angles& g = angles(s, false);
     double xg = 0.0;
     if (below) {  // receding from the station's foot: to the next approach
       xg = along_track(s, g, rev, true, 0.0, kGuess);

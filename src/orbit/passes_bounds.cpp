@@ -95,6 +95,15 @@ void Searcher::derive() {
   b_below_glob_ = a_glob_ / sb + 2.0 * v_glob_ * v_glob_ / (sb * sb);
   const double sa = std::max(r_min_ - rs_, 1.0);
   b_above_glob_ = a_glob_ / sa + 2.0 * v_glob_ * v_glob_ / (sa * sa);
+  // What along_track and the local bounds compute for a span long enough that the distance may take
+  // any value in [r_min_, r_max_]: the same arithmetic, done once.
+  glob_.pert = pert;
+  glob_.omega_w = r_max_ * pert / h_min_;
+  glob_.w_sat_lo = h_min_ / (r_max_ * r_max_);
+  glob_.w_sat_hi = h_max_ / (r_min_ * r_min_);
+  glob_.cos_lam_low = cos_lambda(r_max_, true, kAngleMargin);
+  glob_.cos_lam_high = cos_lambda(r_min_, false, -kAngleMargin);
+  glob_.floor_below = sb;
 }
 
 Searcher::Local Searcher::local(const Sample& s, double span) const {
@@ -106,7 +115,8 @@ Searcher::Local Searcher::local(const Sample& s, double span) const {
   // |v(t)| <= |v0| + span (c0 + pert + lc V span): a Gronwall bound when span is short.
   const double inv_r = 1.0 / L.r_lo;
   const double lc = 2.0 * kMu * inv_r * inv_r * inv_r + kOmega * kOmega;
-  const double pert = perturbation(L.r_lo, L.r_hi);
+  const double pert = L.r_lo == r_min_ && L.r_hi == r_max_ ? glob_.pert : perturbation(L.r_lo, L.r_hi);
+  L.pert = pert;
   const double den = 1.0 - lc * span * span;
   L.V = v_glob_;
   if (den > 0.25) L.V = std::min(v_glob_, (s.v + (s.c0 + pert) * span) / den);
@@ -143,10 +153,12 @@ double Searcher::along_track(const Sample& s, const Angles& g, double span, bool
   struct {
     double r_lo, r_hi;
   } G = {std::max(r_min_, s.r - rdot_max_ * span), std::min(r_max_, s.r + rdot_max_ * span)};
+  const bool glob = G.r_lo == r_min_ && G.r_hi == r_max_;  // then derive() did the arithmetic below
   // A satellite slower than the Earth's rotation may fall behind its foot (geostationary, a high
   // apogee): nothing to rely on.
-  if (h_min_ / (G.r_hi * G.r_hi) <= kOmega) return 0.0;
-  const double omega_w = G.r_hi * perturbation(G.r_lo, G.r_hi) / h_min_;
+  const double w_sat_lo = glob ? glob_.w_sat_lo : h_min_ / (G.r_hi * G.r_hi);
+  if (w_sat_lo <= kOmega) return 0.0;
+  const double omega_w = glob ? glob_.omega_w : G.r_hi * perturbation(G.r_lo, G.r_hi) / h_min_;
   const double beta = g.beta, du = g.du;
   const double beta_rate = kOmega * cos_phi_ + omega_w;
   const double db = beta_rate * span;
@@ -166,12 +178,12 @@ double Searcher::along_track(const Sample& s, const Angles& g, double span, bool
   const double turn = 2.0 * omega_w / cos_beta_hi;  // the plane's turning moves the foot too
   const double foot_hi = kOmega * over_cos2(n0 + dn) + turn;
   const double foot_lo = kOmega * -over_cos2(-(n0 - dn)) - turn;
-  const double w_lo = h_min_ / (G.r_hi * G.r_hi) - foot_hi, w_hi = h_max_ / (G.r_lo * G.r_lo) - foot_lo;
+  const double w_lo = w_sat_lo - foot_hi, w_hi = (glob ? glob_.w_sat_hi : h_max_ / (G.r_lo * G.r_lo)) - foot_lo;
   if (w_lo <= 0.0) return 0.0;
   double x = 0.0;
   if (below) {
     // Up needs theta <= lam <= 90 deg, so |du| <= u with cos(u) = cos(lam) / cos(beta_lo).
-    const double cos_lam = cos_lambda(G.r_hi, true, kAngleMargin);
+    const double cos_lam = glob ? glob_.cos_lam_low : cos_lambda(G.r_hi, true, kAngleMargin);
     if (cos_lam <= 0.0) return 0.0;
     const double c = cos_lam / cos_beta_lo;
     if (c >= 1.0) return span;
@@ -186,7 +198,7 @@ double Searcher::along_track(const Sample& s, const Angles& g, double span, bool
     }
   } else {
     // Up is certain while theta <= lam_in: while |du| <= u with cos(u) = cos(lam_in) / cos(beta_hi).
-    const double cos_lam = cos_lambda(G.r_lo, false, -kAngleMargin);
+    const double cos_lam = glob ? glob_.cos_lam_high : cos_lambda(G.r_lo, false, -kAngleMargin);
     if (cos_lam <= 0.0 || cos_lam >= 1.0) return 0.0;
     const double c = cos_lam / cos_beta_hi;
     if (c >= 1.0) return 0.0;
@@ -202,7 +214,7 @@ double Searcher::along_track(const Sample& s, const Angles& g, double span, bool
 }
 
 double Searcher::step_below(const Sample& s) {
-  const Angles g(s, true);
+  const Angles& g = angles(s, true);
   const double theta = g.theta, beta = g.beta;
   const double d = s.Fdot + fdot_err(s);
   // Global constants: valid for any step.
@@ -216,9 +228,9 @@ double Searcher::step_below(const Sample& s) {
     // Close: local constants over a span, about twice the last step, then one fitted to the result.
     auto local_step = [&](double span) {
       const Local L = local(s, span);
-      const double lam = lambda(L.r_hi, true) + kAngleMargin;
-      const double omega_w = L.r_hi * perturbation(L.r_lo, L.r_hi) / h_min_;
-      const double s_lo = std::max(range_floor_below(L.r_lo), s.s - L.V * span);
+      const double lam = L.r_hi == r_max_ ? lambda_glob_ : lambda(L.r_hi, true) + kAngleMargin;
+      const double omega_w = L.r_hi * L.pert / h_min_;
+      const double s_lo = std::max(floor_below(L.r_lo), s.s - L.V * span);
       const double loc = std::max({(theta - lam) * L.r_lo / L.V, (beta - lam) / (kOmega * cos_phi_ + omega_w),
                                    envelope_root(s.F, d, curvature(s, L, span, s_lo))});
       return std::min(loc, span);
@@ -235,7 +247,7 @@ double Searcher::step_above(const Sample& s) {
   double best = envelope_root(s.F, d, b_above_glob_);
   // Along track: a pass lasts at most about 2 lam / w; from a quarter revolution to fitted spans.
   const double rev = kTwoPi * r_max_ * r_max_ / h_min_;
-  const Angles g(s, false);
+  const Angles& g = angles(s, false);
   double x = along_track(s, g, 0.25 * rev, false, best);
   if (x > 0.0) {  // a span fitted to the result is tighter
     best = std::max(best, x);
@@ -257,12 +269,15 @@ double Searcher::reach(const Sample& s, double span, int dir) const {
   const Local L = local(s, span);
   const bool below = s.F < 0.0;
   const double d = dir * s.Fdot + (below ? fdot_err(s) : -fdot_err(s));
-  const double s_lo = below ? std::max(range_floor_below(L.r_lo), s.s - L.V * span)
+  const double s_lo = below ? std::max(floor_below(L.r_lo), s.s - L.V * span)
                             : std::max({L.r_lo - rs_, s.s - L.V * span, 1.0});
   double x = envelope_root(s.F, d, curvature(s, L, span, s_lo));
   if (x >= span) return span;
-  const Angles g(s, below);
-  if (below) x = std::max(x, (g.theta - lambda(L.r_hi, true) - kAngleMargin) * L.r_lo / L.V);
+  const Angles& g = angles(s, below);
+  if (below) {
+    const double lam = L.r_hi == r_max_ ? lambda_glob_ : lambda(L.r_hi, true) + kAngleMargin;
+    x = std::max(x, (g.theta - lam) * L.r_lo / L.V);
+  }
   if (x < span && dir < 0) x = std::max(x, along_track(s, g, span, below, 0.0, kBack));
   return std::min(span, x);
 }

@@ -34,13 +34,34 @@ inline constexpr double kTaylorAngle = 5e-7;        // rad: error allowed to the
 inline constexpr double kFlatTopShift = 10.0;       // s: flatter maxima are found from F alone
 inline constexpr double kModelStep = 2.0;           // s: a crossing this close is taken from the quadratic model
 
+// sin and cos of x, |x| < 1e5 rad, to about an ulp: a reduction by pi/2 (Cody and Waite, pi/2 in a
+// 33-bit head and a tail), then fdlibm's kernels on [-pi/4, pi/4]. Inlined, it costs a fraction of
+// libm's sincos; the search calls it once per propagation (the Earth's rotation angle).
 inline void sin_cos(double x, double& s, double& c) {
-#if defined(__GNUC__) && !defined(__clang__)  // clang has no __builtin_sincos (it fuses sin+cos itself)
-  __builtin_sincos(x, &s, &c);
-#else
-  s = std::sin(x);
-  c = std::cos(x);
-#endif
+  constexpr double kInvPio2 = 6.36619772367581382433e-01;
+  constexpr double kPio2Hi = 1.57079632673412561417e+00;  // first 33 bits of pi/2: n * kPio2Hi is exact
+  constexpr double kPio2Lo = 6.07710050650619224932e-11;  // pi/2 - kPio2Hi
+  const double n = std::nearbyint(x * kInvPio2);
+  const double y = (x - n * kPio2Hi) - n * kPio2Lo;
+  const double z = y * y;
+  const double sy = y + y * z * (-1.66666666666666324348e-01 +
+                                 z * (8.33333333332248946124e-03 +
+                                      z * (-1.98412698298579493134e-04 +
+                                           z * (2.75573137070700676789e-06 +
+                                                z * (-2.50507602534068634195e-08 + z * 1.58969099521155010221e-10)))));
+  const double r = z * (4.16666666666666019037e-02 +
+                        z * (-1.38888888888741095749e-03 +
+                             z * (2.48015872894767294178e-05 +
+                                  z * (-2.75573143513906633035e-07 +
+                                       z * (2.08757232129817482790e-09 + z * -1.13596475577881948265e-11)))));
+  const double hz = 0.5 * z, w = 1.0 - hz;
+  const double cy = w + (((1.0 - w) - hz) + z * r);
+  switch (static_cast<long>(n) & 3) {
+    case 0: s = sy; c = cy; break;
+    case 1: s = cy; c = -sy; break;
+    case 2: s = -sy; c = -cy; break;
+    default: s = -cy; c = sy; break;
+  }
 }
 
 // atan2 from a minimax polynomial: |error| < 6e-9 rad (2e7 + 5e7 points against std::atan2, asin and
@@ -67,6 +88,15 @@ inline double fast_asin(double x) { return fast_atan2(x, std::sqrt(std::max(0.0,
 inline double fast_acos(double x) { return fast_atan2(std::sqrt(std::max(0.0, 1.0 - x * x)), x); }
 
 
+// The angles of a sample that the geometric bounds use (computed only where a step is planned, once per
+// sample: see angles()).
+struct Angles {
+  double theta = 0.0;    // geocentric angle station - satellite, at most this
+  double beta = 0.0;     // at most this
+  double du = 0.0;       // in (-pi, pi] to kFastAtanErr (along_track allows)
+  double sin_b = 0.0, cos_b = 1.0;  // of beta
+};
+
 // One propagation, reduced to what the search needs.
 struct Sample {
   double t = 0.0;          // s from the window start
@@ -85,7 +115,27 @@ struct Sample {
   double du_y = 0.0, du_x = 0.0;  // atan2(du_y, du_x): angle of the satellite ahead of the station's foot
                                   // on the orbit plane
   StateVector ecef;
+  // angles(): 0 nothing computed yet, 1 all but theta, 2 all.
+  mutable int angles_have = 0;
+  mutable Angles angles_cache;
 };
+
+// The sample's angles, computed on first use (theta only when asked for).
+inline const Angles& angles(const Sample& s, bool with_theta) {
+  Angles& g = s.angles_cache;
+  if (s.angles_have == 0) {
+    g.sin_b = std::min(std::abs(s.sin_beta), 1.0);
+    g.beta = std::max(0.0, fast_asin(g.sin_b) - kFastAtanErr);
+    g.du = fast_atan2(s.du_y, s.du_x);
+    g.cos_b = std::sqrt(1.0 - g.sin_b * g.sin_b);
+    s.angles_have = 1;
+  }
+  if (with_theta && s.angles_have == 1) {
+    g.theta = std::max(0.0, fast_acos(std::clamp(s.cos_theta, -1.0, 1.0)) - kFastAtanErr);
+    s.angles_have = 2;
+  }
+  return g;
+}
 
 inline Vec3 accel(const StateVector& e);
 
@@ -110,20 +160,6 @@ inline Vec3 accel(const StateVector& e) {
           k * e.r_km[1] - 2.0 * kEarthRotationRadS * e.v_km_s[0],
           (k - kEarthRotationRadS * kEarthRotationRadS) * e.r_km[2]};
 }
-
-// The angles of a sample that the geometric bounds use (computed only where a step is planned).
-struct Angles {
-  double theta = 0.0;    // geocentric angle station - satellite (only when asked for), at most this
-  double beta, du;       // beta at most this; du in (-pi, pi] to kFastAtanErr (along_track allows)
-  double sin_b, cos_b;   // of beta
-  Angles(const Sample& s, bool with_theta)
-      : beta(std::max(0.0, fast_asin(std::min(std::abs(s.sin_beta), 1.0)) - kFastAtanErr)),
-        du(fast_atan2(s.du_y, s.du_x)),
-        sin_b(std::min(std::abs(s.sin_beta), 1.0)),
-        cos_b(std::sqrt(1.0 - sin_b * sin_b)) {
-    if (with_theta) theta = std::max(0.0, fast_acos(std::clamp(s.cos_theta, -1.0, 1.0)) - kFastAtanErr);
-  }
-};
 
 // The first x > 0 where F + d x + (b / 2) x^2 reaches 0 for F < 0 (an upper envelope), or where
 // F + d x - (b / 2) x^2 reaches 0 for F >= 0 (a lower envelope). b > 0.
@@ -158,7 +194,8 @@ class Searcher {
   void record_tsince(std::vector<double>* into) { trace_ = into; }
 
  private:
-  struct Local { double r_lo, r_hi, V, A; };  // bounds valid over a span from a sample
+  struct Local { double r_lo, r_hi, V, A, pert; };  // bounds valid over a span from a sample (pert:
+                                                     // perturbation(r_lo, r_hi))
 
   std::optional<Pass> next_any();
   // How a walk (below) ended.
@@ -198,6 +235,7 @@ class Searcher {
   double lambda(double r, bool low) const;
   double cos_lambda(double r, bool low, double margin) const;
   double range_floor_below(double r) const;  // least range of a satellite at >= r below the horizon
+  double floor_below(double r) const { return r == r_min_ ? glob_.floor_below : range_floor_below(r); }
   double curvature(const Sample& s, const Local& L, double span, double s_lo) const;
   double fdot_err(const Sample& s) const { return vel_err_ / s.s; }
   // (d): the time, at most span, for which the satellite provably stays down (below) or up, given
@@ -275,6 +313,9 @@ class Searcher {
   double r_min_ = 0.0, r_max_ = 0.0, h_min_ = 0.0, h_max_ = 0.0;
   double rdot_max_ = 0.0, v_glob_ = 0.0, a_glob_ = 0.0, lambda_glob_ = 0.0;
   double omega_a_glob_ = 0.0, omega_b_glob_ = 0.0, b_below_glob_ = 0.0, b_above_glob_ = 0.0;
+  struct {                   // derive()'s values of what the bounds compute from [r_min_, r_max_]
+    double pert, omega_w, w_sat_lo, w_sat_hi, cos_lam_low, cos_lam_high, floor_below;
+  } glob_{};
   double vel_err_ = 0.0;     // bound on |SGP4 velocity - d/dt SGP4 position|, km/s
   bool eccentric_ = false;   // a pass may have several maxima: prove there is no higher one
   double last_step_ = 60.0;
