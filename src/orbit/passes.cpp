@@ -104,11 +104,14 @@ bool Searcher::eval(double t, Sample& out) {
   const double w2 = kEarthRotationRadS * kEarthRotationRadS;
   const double cxy = w2 - ir3, cz = ir3 * e.r_km[2];
   out.c0 = std::sqrt(cxy * cxy * (e.r_km[0] * e.r_km[0] + e.r_km[1] * e.r_km[1]) + cz * cz);
-  // f'' = a.(z - f u) / s - |u'|^2 f - 2 (s'/s) f', a = gravity + centrifugal + Coriolis.
-  const Vec3 a = accel(e);
+  // f'' = a.(z - f u) / s - |u'|^2 f - 2 (s'/s) f', a = gravity + centrifugal + Coriolis (accel(e),
+  // reusing cxy = w2 - mu / r^3).
+  const Vec3 a = {cxy * e.r_km[0] + 2.0 * kEarthRotationRadS * e.v_km_s[1],
+                  cxy * e.r_km[1] - 2.0 * kEarthRotationRadS * e.v_km_s[0], (cxy - w2) * e.r_km[2]};
   const double u2 = std::max(0.0, v2 - out.sdot * out.sdot) * inv_s * inv_s;
   out.Fddot = (dot(a, up_) - f * dot(a, rho) * inv_s) * inv_s - u2 * f - 2.0 * out.sdot * inv_s * out.Fdot;
-  out.cos_theta = dot(e.r_km, us_) / out.r;
+  out.du_x = dot(us_, e.r_km);
+  out.cos_theta = out.du_x / out.r;
   const Vec3 hv = cross(rt, vt);  // inertial angular momentum, TEME
   out.h = norm(hv);
   const double inv_h = 1.0 / out.h;
@@ -117,7 +120,6 @@ bool Searcher::eval(double t, Sample& out) {
   out.w_z = w[2];
   // The satellite moves along W x r; ahead of the foot p of the station: cos(du) ~ us.r, sin ~ us.(r x W).
   out.du_y = dot(us_, cross(e.r_km, w));
-  out.du_x = dot(us_, e.r_km);
   return true;
 }
 
