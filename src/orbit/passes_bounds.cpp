@@ -82,6 +82,7 @@ void Searcher::widen(const Sample& s) {
 }
 
 void Searcher::derive() {
+  inv_h_min_ = 1.0 / h_min_;
   const double e_max = (r_max_ - r_min_) / (r_max_ + r_min_);
   const double v_in = kSpeedFactor * std::sqrt(kMu * (2.0 / r_min_ - 1.0 / r_max_));  // vis-viva, a <= r_max
   v_glob_ = v_in + kOmega * r_max_;
@@ -154,11 +155,14 @@ double Searcher::along_track(const Sample& s, const Angles& g, double span, bool
     double r_lo, r_hi;
   } G = {std::max(r_min_, s.r - rdot_max_ * span), std::min(r_max_, s.r + rdot_max_ * span)};
   const bool glob = G.r_lo == r_min_ && G.r_hi == r_max_;  // then derive() did the arithmetic below
+  // Reciprocals of the distances (multiplications stand in for divisions below: an ulp, far inside
+  // the margins).
+  const double ir_lo = glob ? 0.0 : 1.0 / G.r_lo, ir_hi = glob ? 0.0 : 1.0 / G.r_hi;
   // A satellite slower than the Earth's rotation may fall behind its foot (geostationary, a high
   // apogee): nothing to rely on.
-  const double w_sat_lo = glob ? glob_.w_sat_lo : h_min_ / (G.r_hi * G.r_hi);
+  const double w_sat_lo = glob ? glob_.w_sat_lo : h_min_ * ir_hi * ir_hi;
   if (w_sat_lo <= kOmega) return 0.0;
-  const double omega_w = glob ? glob_.omega_w : G.r_hi * perturbation(G.r_lo, G.r_hi) / h_min_;
+  const double omega_w = glob ? glob_.omega_w : G.r_hi * perturbation_inv(ir_lo, G.r_hi) * inv_h_min_;
   const double beta = g.beta, du = g.du;
   const double beta_rate = kOmega * cos_phi_ + omega_w;
   const double db = beta_rate * span;
@@ -173,19 +177,20 @@ double Searcher::along_track(const Sample& s, const Angles& g, double span, bool
   // W_z changes only as the plane turns, sin(beta) at most at beta_rate.
   const double n0 = s.w_z - us_[2] * s.sin_beta;
   const double dn = (omega_w + std::abs(us_[2]) * beta_rate) * span;
-  const double inv_hi2 = 1.0 / (cos_beta_hi * cos_beta_hi), inv_lo2 = 1.0 / (cos_beta_lo * cos_beta_lo);
+  const double inv_hi = 1.0 / cos_beta_hi, inv_lo = 1.0 / cos_beta_lo;
+  const double inv_hi2 = inv_hi * inv_hi, inv_lo2 = inv_lo * inv_lo;
   auto over_cos2 = [&](double n) { return n >= 0.0 ? n * inv_hi2 : n * inv_lo2; };
-  const double turn = 2.0 * omega_w / cos_beta_hi;  // the plane's turning moves the foot too
+  const double turn = 2.0 * omega_w * inv_hi;  // the plane's turning moves the foot too
   const double foot_hi = kOmega * over_cos2(n0 + dn) + turn;
   const double foot_lo = kOmega * -over_cos2(-(n0 - dn)) - turn;
-  const double w_lo = w_sat_lo - foot_hi, w_hi = (glob ? glob_.w_sat_hi : h_max_ / (G.r_lo * G.r_lo)) - foot_lo;
+  const double w_lo = w_sat_lo - foot_hi, w_hi = (glob ? glob_.w_sat_hi : h_max_ * ir_lo * ir_lo) - foot_lo;
   if (w_lo <= 0.0) return 0.0;
   double x = 0.0;
   if (below) {
     // Up needs theta <= lam <= 90 deg, so |du| <= u with cos(u) = cos(lam) / cos(beta_lo).
     const double cos_lam = glob ? glob_.cos_lam_low : cos_lambda(G.r_hi, true, kAngleMargin);
     if (cos_lam <= 0.0) return 0.0;
-    const double c = cos_lam / cos_beta_lo;
+    const double c = cos_lam * inv_lo;
     if (c >= 1.0) return span;
     const double u = fast_acos(c) + 2.0 * kFastAtanErr;  // wider by the errors of u and du
     if (mode == kBack) {
@@ -200,9 +205,10 @@ double Searcher::along_track(const Sample& s, const Angles& g, double span, bool
     // Up is certain while theta <= lam_in: while |du| <= u with cos(u) = cos(lam_in) / cos(beta_hi).
     const double cos_lam = glob ? glob_.cos_lam_high : cos_lambda(G.r_lo, false, -kAngleMargin);
     if (cos_lam <= 0.0 || cos_lam >= 1.0) return 0.0;
-    const double c = cos_lam / cos_beta_hi;
+    const double c = cos_lam * inv_hi;
     if (c >= 1.0) return 0.0;
-    if (du > 0.0 && s.du_x < c * std::hypot(s.du_x, s.du_y)) return 0.0;  // du > u: nothing certain
+    // du > u: nothing certain (sqrt in place of hypot: du_x, du_y are of the order of 1e4 km).
+    if (du > 0.0 && s.du_x < c * std::sqrt(s.du_x * s.du_x + s.du_y * s.du_y)) return 0.0;
     const double u = fast_acos(c) - 2.0 * kFastAtanErr;  // narrower by the errors of u and du
     if (mode == kBack) {
       if (std::abs(du) <= u) x = (du + u) / w_hi;

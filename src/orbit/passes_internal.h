@@ -175,6 +175,13 @@ inline double perturbation(double r_lo, double r_hi) {
   return (4.5 * kJ2 * kMu / (kReSgp4 * kReSgp4)) * q2 * q2 + 3e-13 * r_hi + 1e-8;
 }
 
+// The same from 1 / r_lo.
+inline double perturbation_inv(double inv_r_lo, double r_hi) {
+  const double q = kReSgp4 * inv_r_lo;
+  const double q2 = q * q;
+  return (4.5 * kJ2 * kMu / (kReSgp4 * kReSgp4)) * q2 * q2 + 3e-13 * r_hi + 1e-8;
+}
+
 // The first x > 0 where the quadratic model F + F' x + F'' x^2 / 2 crosses zero; infinity if none.
 double predict_crossing(const Sample& s);
 
@@ -310,7 +317,7 @@ class Searcher {
   double cos_e_low_ = 1.0, sin_e_low_ = 0.0, cos_e_high_ = 1.0, sin_e_high_ = 0.0;
 
   // Orbit bounds (km, km/s, km/s^2, km^2/s) and what follows from them.
-  double r_min_ = 0.0, r_max_ = 0.0, h_min_ = 0.0, h_max_ = 0.0;
+  double r_min_ = 0.0, r_max_ = 0.0, h_min_ = 0.0, h_max_ = 0.0, inv_h_min_ = 0.0;
   double rdot_max_ = 0.0, v_glob_ = 0.0, a_glob_ = 0.0, lambda_glob_ = 0.0;
   double omega_a_glob_ = 0.0, omega_b_glob_ = 0.0, b_below_glob_ = 0.0, b_above_glob_ = 0.0;
   struct {                   // derive()'s values of what the bounds compute from [r_min_, r_max_]
