@@ -241,7 +241,7 @@ double Searcher::step_below(const Sample& s) {
                                    envelope_root(s.F, d, curvature(s, L, span, s_lo))});
       return std::min(loc, span);
     };
-    best = std::max(best, fitted_span(local_step));
+    best = fitted_span(local_step, best);
     // Along track again, over a span fitted to the result (tighter).
     if (x > 0.0) best = std::max(best, along_track(s, g, std::max(1.5 * x, 60.0), true, best));
   }
@@ -266,7 +266,7 @@ double Searcher::step_above(const Sample& s) {
     const double s_lo = std::max({L.r_lo - rs_, s.s - L.V * span, 1.0});
     return std::min(envelope_root(s.F, d, curvature(s, L, span, s_lo)), span);
   };
-  best = std::max(best, fitted_span(local_step));
+  best = fitted_span(local_step, best);
   return kStepSafety * best;
 }
 

@@ -254,16 +254,20 @@ class Searcher {
                      Mode mode = kAhead) const;
   double step_below(const Sample& s);
   double step_above(const Sample& s);
-  // The best of step(span) (a bound valid over span, capped by it) for two spans: about twice the
-  // last step, then one fitted to what that gave.
+  // The best of `known` and step(span) (a bound valid over span, capped by it) for two spans: about
+  // twice the last step, then one fitted to what that gave. A span no longer than `known` cannot beat
+  // it and is not tried (the same result, without the work).
   template <class Step>
-  double fitted_span(const Step& step) const {
+  double fitted_span(const Step& step, double known) const {
     const double span0 = std::clamp(2.0 * last_step_, 20.0, 86400.0);
+    if (known >= 4.0 * span0) return known;  // every span below is at most 4 span0
     const double x0 = step(span0);
     const double span1 = x0 < span0 ? std::max(1.5 * x0, 20.0) : 4.0 * span0;
-    const double x1 = std::max(x0, step(span1));
+    const double x1 = span1 > known ? std::max(x0, step(span1)) : x0;
     // A step that fell well short of the last one: try the last one's span too.
-    return x1 < 0.5 * last_step_ ? std::max(x1, step(std::max(last_step_, 20.0))) : x1;
+    const double span2 = std::max(last_step_, 20.0);
+    const double x2 = x1 < 0.5 * last_step_ && span2 > known ? std::max(x1, step(span2)) : x1;
+    return std::max(known, x2);
   }
   // How long after (dir = 1) or before (dir = -1) s, at most span, F provably keeps its sign.
   double reach(const Sample& s, double span, int dir) const;
