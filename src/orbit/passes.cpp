@@ -288,7 +288,7 @@ double Searcher::speculative_target(const Sample& s, double safe, bool below) co
   if (xp > safe && xp < 3.0 * safe + 30.0) return s.t + xp + 0.125 * tol_ + 0.002 * xp;
   if (safe < 300.0 && (below ? s.du_y > 0.0 : s.du_y < 0.0)) {
     const double rev = kTwoPi * r_max_ * r_max_ / h_min_;
-    const Angles& g = angles(s, false);
+    const Angles& g = angles(s, kDu);
     double xg = 0.0;
     if (below) {  // receding from the station's foot: to the next approach
       xg = along_track(s, g, rev, true, 0.0, kGuess);

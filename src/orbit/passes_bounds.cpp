@@ -163,10 +163,12 @@ double Searcher::along_track(const Sample& s, const Angles& g, double span, bool
   const double w_sat_lo = glob ? glob_.w_sat_lo : h_min_ * ir_hi * ir_hi;
   if (w_sat_lo <= kOmega) return 0.0;
   const double omega_w = glob ? glob_.omega_w : G.r_hi * perturbation_inv(ir_lo, G.r_hi) * inv_h_min_;
-  const double beta = g.beta, du = g.du;
+  const double du = g.du;
   const double beta_rate = kOmega * cos_phi_ + omega_w;
   const double db = beta_rate * span;
-  if (beta + db >= 1.4) return 0.0;
+  // Nothing when beta + db may reach 1.4 rad: then sin(beta) >= sin(1.4 - db) >=
+  // sin(1.4) (1 - db^2 / 2) - cos(1.4) db (beta itself, an asin, is not needed).
+  if (g.sin_b >= 0.9854497299884601 * (1.0 - 0.5 * db * db) - 0.16996714290024104 * db) return 0.0;
   // cos(beta + db) >= cos(beta) (1 - db^2/2) - sin(beta) db, cos(beta - db) <= cos(beta) + sin(beta) db:
   // bounds on the smallest and largest cos(beta) over the span, each on the safe side where used.
   const double cos_beta_hi = g.cos_b * (1.0 - 0.5 * db * db) - g.sin_b * db;
@@ -220,7 +222,7 @@ double Searcher::along_track(const Sample& s, const Angles& g, double span, bool
 }
 
 double Searcher::step_below(const Sample& s) {
-  const Angles& g = angles(s, true);
+  const Angles& g = angles(s, kDu | kBeta | kTheta);
   const double theta = g.theta, beta = g.beta;
   const double d = s.Fdot + fdot_err(s);
   // Global constants: valid for any step.
@@ -253,7 +255,7 @@ double Searcher::step_above(const Sample& s) {
   double best = envelope_root(s.F, d, b_above_glob_);
   // Along track: a pass lasts at most about 2 lam / w; from a quarter revolution to fitted spans.
   const double rev = kTwoPi * r_max_ * r_max_ / h_min_;
-  const Angles& g = angles(s, false);
+  const Angles& g = angles(s, kDu);
   double x = along_track(s, g, 0.25 * rev, false, best);
   if (x > 0.0) {  // a span fitted to the result is tighter
     best = std::max(best, x);
@@ -279,7 +281,7 @@ double Searcher::reach(const Sample& s, double span, int dir) const {
                             : std::max({L.r_lo - rs_, s.s - L.V * span, 1.0});
   double x = envelope_root(s.F, d, curvature(s, L, span, s_lo));
   if (x >= span) return span;
-  const Angles& g = angles(s, below);
+  const Angles& g = angles(s, below ? kDu | kTheta : kDu);
   if (below) {
     const double lam = L.r_hi == r_max_ ? lambda_glob_ : lambda(L.r_hi, true) + kAngleMargin;
     x = std::max(x, (g.theta - lam) * L.r_lo / L.V);

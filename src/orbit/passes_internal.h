@@ -116,25 +116,25 @@ struct Sample {
   double du_y = 0.0, du_x = 0.0;  // atan2(du_y, du_x): angle of the satellite ahead of the station's foot
                                   // on the orbit plane
   StateVector ecef;
-  // angles(): 0 nothing computed yet, 1 all but theta, 2 all.
+  // angles(): which of them are computed (kDu, kBeta, kTheta bits).
   mutable int angles_have = 0;
   mutable Angles angles_cache;
 };
 
-// The sample's angles, computed on first use (theta only when asked for).
-inline const Angles& angles(const Sample& s, bool with_theta) {
+// The sample's angles, each computed on first use: du, sin_b and cos_b always, beta and theta when asked.
+enum AngleNeed : int { kDu = 1, kBeta = 2, kTheta = 4 };
+inline const Angles& angles(const Sample& s, int need) {
   Angles& g = s.angles_cache;
-  if (s.angles_have == 0) {
+  const int missing = (need | kDu) & ~s.angles_have;
+  if (missing == 0) return g;
+  if (missing & kDu) {
     g.sin_b = std::min(std::abs(s.sin_beta), 1.0);
-    g.beta = std::max(0.0, fast_asin(g.sin_b) - kFastAtanErr);
     g.du = fast_atan2(s.du_y, s.du_x);
     g.cos_b = std::sqrt(1.0 - g.sin_b * g.sin_b);
-    s.angles_have = 1;
   }
-  if (with_theta && s.angles_have == 1) {
-    g.theta = std::max(0.0, fast_acos(std::clamp(s.cos_theta, -1.0, 1.0)) - kFastAtanErr);
-    s.angles_have = 2;
-  }
+  if (missing & kBeta) g.beta = std::max(0.0, fast_asin(g.sin_b) - kFastAtanErr);
+  if (missing & kTheta) g.theta = std::max(0.0, fast_acos(std::clamp(s.cos_theta, -1.0, 1.0)) - kFastAtanErr);
+  s.angles_have |= missing;
   return g;
 }
 
