@@ -41,7 +41,8 @@ inline void sin_cos(double x, double& s, double& c) {
   constexpr double kInvPio2 = 6.36619772367581382433e-01;
   constexpr double kPio2Hi = 1.57079632673412561417e+00;  // first 33 bits of pi/2: n * kPio2Hi is exact
   constexpr double kPio2Lo = 6.07710050650619224932e-11;  // pi/2 - kPio2Hi
-  const double n = std::nearbyint(x * kInvPio2);
+  const double q = x * kInvPio2;  // to the nearest integer (std::nearbyint is a libm call without SSE4.1)
+  const double n = static_cast<double>(static_cast<long long>(q < 0.0 ? q - 0.5 : q + 0.5));
   const double y = (x - n * kPio2Hi) - n * kPio2Lo;
   const double z = y * y;
   const double sy = y + y * z * (-1.66666666666666324348e-01 +
@@ -56,7 +57,7 @@ inline void sin_cos(double x, double& s, double& c) {
                                        z * (2.08757232129817482790e-09 + z * -1.13596475577881948265e-11)))));
   const double hz = 0.5 * z, w = 1.0 - hz;
   const double cy = w + (((1.0 - w) - hz) + z * r);
-  switch (static_cast<long>(n) & 3) {
+  switch (static_cast<long long>(n) & 3) {
     case 0: s = sy; c = cy; break;
     case 1: s = cy; c = -sy; break;
     case 2: s = -sy; c = -cy; break;
