@@ -70,6 +70,7 @@ Searcher::Searcher(const Sgp4& sat, const Observer& o, UtcTime start, UtcTime st
   sin_e_low_ = std::sin(e_low_);
   cos_e_high_ = std::cos(e_high_);
   sin_e_high_ = std::sin(e_high_);
+  vel_err_ = kVelocityErrKmS + kVelocityErrPerEcc * sat.elements().eccentricity;
   if (span_ <= 0.0 || sat.init_error() != Sgp4Error::none) done_ = true;
 }
 
@@ -93,6 +94,7 @@ bool Searcher::eval(double t, Sample& out) {
   out.angles_have = 0;
   out.s = norm(rho);
   const double inv_s = 1.0 / out.s;
+  out.fdot_err = vel_err_ / out.s;
   const double f = dot(rho, up_) * inv_s;
   out.sdot = dot(rho, e.v_km_s) * inv_s;
   out.F = f - sin_h_;
@@ -200,9 +202,9 @@ Searcher::Walk Searcher::walk(const Sample& from, bool below, std::vector<Sample
   Walk w;
   Sample cur = from;
   const auto same_side = [below](const Sample& s) { return below ? s.F < 0.0 : s.F >= 0.0; };
-  const auto step_onto = [&](const Sample& s) {  // s is on cur's side: the walk goes on from there
+  const auto step_onto = [&](Sample& s) {  // s is on cur's side: the walk goes on from there (s is spent)
     if (keep) keep->push_back(s);
-    cur = s;
+    std::swap(cur, s);
   };
   // Refines the crossing between cur and n into w; false if the propagation failed inside.
   const auto refine = [&](const Sample& n, bool single) {
@@ -217,6 +219,7 @@ Searcher::Walk Searcher::walk(const Sample& from, bool below, std::vector<Sample
   // proof reaches it.
   std::optional<Sample> ahead;
   bool cross = false;
+  Sample n;  // the latest evaluation (outside the loop: a Sample is large, and eval fills it)
   Walk pending;
   for (;;) {
     if (cur.t >= span_) {
@@ -237,7 +240,6 @@ Searcher::Walk Searcher::walk(const Sample& from, bool below, std::vector<Sample
       ahead.reset();
       continue;
     }
-    Sample n;
     // Down, a jump beyond the window is tried at its end (which may prove there is no AOS left); up,
     // it is not tried (the window end ends the pass anyway).
     const double target = ahead ? -1.0 : speculative_target(cur, safe, below);

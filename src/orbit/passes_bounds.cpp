@@ -56,7 +56,6 @@ void Searcher::init_bounds(const Sample& s0) {
   h_max_ = (1.0 + kMomentumMargin) * s0.h;
   derive();
   eccentric_ = sat_.elements().eccentricity > 0.05;
-  vel_err_ = kVelocityErrKmS + kVelocityErrPerEcc * sat_.elements().eccentricity;
 }
 
 void Searcher::widen(const Sample& s) {
@@ -99,6 +98,8 @@ void Searcher::derive() {
   // What along_track and the local bounds compute for a span long enough that the distance may take
   // any value in [r_min_, r_max_]: the same arithmetic, done once.
   glob_.pert = pert;
+  const double inv_r = 1.0 / r_min_;
+  glob_.lc = 2.0 * kMu * inv_r * inv_r * inv_r + kOmega * kOmega;
   glob_.omega_w = r_max_ * pert / h_min_;
   glob_.w_sat_lo = h_min_ / (r_max_ * r_max_);
   glob_.w_sat_hi = h_max_ / (r_min_ * r_min_);
@@ -114,9 +115,15 @@ Searcher::Local Searcher::local(const Sample& s, double span) const {
   // Earth-fixed acceleration = gravity + centrifugal (c, |c(t) - c0| <= lc |r(t) - r0|) + perturbations
   // + Coriolis (2 omega |v|, but perpendicular to v: it turns v without changing |v|). So
   // |v(t)| <= |v0| + span (c0 + pert + lc V span): a Gronwall bound when span is short.
-  const double inv_r = 1.0 / L.r_lo;
-  const double lc = 2.0 * kMu * inv_r * inv_r * inv_r + kOmega * kOmega;
-  const double pert = L.r_lo == r_min_ && L.r_hi == r_max_ ? glob_.pert : perturbation(L.r_lo, L.r_hi);
+  double lc, pert;
+  if (L.r_lo == r_min_) {  // derive() did this arithmetic
+    lc = glob_.lc;
+    pert = L.r_hi == r_max_ ? glob_.pert : perturbation(L.r_lo, L.r_hi);
+  } else {
+    const double inv_r = 1.0 / L.r_lo;
+    lc = 2.0 * kMu * inv_r * inv_r * inv_r + kOmega * kOmega;
+    pert = perturbation_inv(inv_r, L.r_hi);
+  }
   L.pert = pert;
   const double den = 1.0 - lc * span * span;
   L.V = v_glob_;
@@ -137,7 +144,7 @@ double Searcher::curvature(const Sample& s, const Local& L, double span, double 
   const double K = L.V * L.V * inv_s * inv_s;
   const double crude = L.A * inv_s + 2.0 * K;
   const double f0 = std::abs(s.F + sin_h_);
-  const double d0 = std::abs(s.Fdot) + vel_err_ / s.s;
+  const double d0 = std::abs(s.Fdot) + s.fdot_err;
   const double S = std::min(L.V, std::abs(s.sdot) + (L.V * L.V * inv_s + L.A) * span);
   const double C = 2.0 * S * inv_s;
   const double den = 1.0 - C * span - 0.5 * K * span * span;
@@ -237,10 +244,11 @@ double Searcher::step_below(const Sample& s) {
     auto local_step = [&](double span) {
       const Local L = local(s, span);
       const double lam = L.r_hi == r_max_ ? lambda_glob_ : lambda(L.r_hi, true) + kAngleMargin;
-      const double omega_w = L.r_hi * L.pert / h_min_;
       const double s_lo = std::max(floor_below(L.r_lo), s.s - L.V * span);
-      const double loc = std::max({(theta - lam) * L.r_lo / L.V, (beta - lam) / (kOmega * cos_phi_ + omega_w),
-                                   envelope_root(s.F, d, curvature(s, L, span, s_lo))});
+      // The envelope's root is positive (F < 0): the angle bounds count only when they are too.
+      double loc = envelope_root(s.F, d, curvature(s, L, span, s_lo));
+      if (theta > lam) loc = std::max(loc, (theta - lam) * L.r_lo / L.V);
+      if (beta > lam) loc = std::max(loc, (beta - lam) / (kOmega * cos_phi_ + L.r_hi * L.pert / h_min_));
       return std::min(loc, span);
     };
     best = fitted_span(local_step, best);

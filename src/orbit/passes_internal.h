@@ -109,6 +109,7 @@ struct Sample {
   double v = 0.0;          // Earth-fixed speed, km/s
   double s = 0.0;          // range, km
   double sdot = 0.0;       // range rate, km/s
+  double fdot_err = 0.0;   // bound on the error of Fdot from that of the SGP4 velocity: vel_err / s
   double c0 = 0.0;         // |point-mass gravity + centrifugal| at r, km/s^2
   double h = 0.0;          // |r x v| (inertial), km^2/s
   double cos_theta = 0.0;  // station direction . satellite direction
@@ -246,7 +247,7 @@ class Searcher {
   double range_floor_below(double r) const;  // least range of a satellite at >= r below the horizon
   double floor_below(double r) const { return r == r_min_ ? glob_.floor_below : range_floor_below(r); }
   double curvature(const Sample& s, const Local& L, double span, double s_lo) const;
-  double fdot_err(const Sample& s) const { return vel_err_ / s.s; }
+  double fdot_err(const Sample& s) const { return s.fdot_err; }
   // (d): the time, at most span, for which the satellite provably stays down (below) or up, given
   // that it provably does for `covered` seconds anyway; 0 if the bound says nothing.
   // mode kAhead: as above; kBack: the same looking back from s; kGuess: where a forward jump would
@@ -327,7 +328,7 @@ class Searcher {
   double rdot_max_ = 0.0, v_glob_ = 0.0, a_glob_ = 0.0, lambda_glob_ = 0.0;
   double omega_a_glob_ = 0.0, omega_b_glob_ = 0.0, b_below_glob_ = 0.0, b_above_glob_ = 0.0;
   struct {                   // derive()'s values of what the bounds compute from [r_min_, r_max_]
-    double pert, omega_w, w_sat_lo, w_sat_hi, cos_lam_low, cos_lam_high, floor_below;
+    double pert, lc, omega_w, w_sat_lo, w_sat_hi, cos_lam_low, cos_lam_high, floor_below;
   } glob_{};
   double vel_err_ = 0.0;     // bound on |SGP4 velocity - d/dt SGP4 position|, km/s
   bool eccentric_ = false;   // a pass may have several maxima: prove there is no higher one
