@@ -158,7 +158,8 @@ std::optional<Pass> Searcher::next_any() {
   }
   // Up: step to LOS (or the window end, or the end of the propagation).
   last_step_ = 30.0;  // the spans of the local bounds start afresh at each crossing
-  std::vector<Sample> samples;
+  std::vector<Sample>& samples = samples_;  // kept between passes: no allocation per pass
+  samples.clear();
   samples.reserve(24);
   samples.push_back(aos_s);
   double los_t = span_;

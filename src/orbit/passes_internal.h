@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "orbit/constants.h"
@@ -337,6 +338,8 @@ class Searcher {
   bool started_ = false;
   bool done_ = false;
   Sample cur_{};             // the latest sample, down (except at the very start)
+  std::vector<Sample> samples_;                              // next_any's samples of a pass
+  std::vector<std::pair<std::size_t, std::size_t>> work_;  // finish_pass's intervals to examine
   long evals_ = 0;
   std::vector<double>* trace_ = nullptr;  // PassSearchStats::tsince_minutes
 };
