@@ -267,10 +267,15 @@ class Searcher {
     if (known >= 4.0 * span0) return known;  // every span below is at most 4 span0
     const double x0 = step(span0);
     const double span1 = x0 < span0 ? std::max(1.5 * x0, 20.0) : 4.0 * span0;
-    const double x1 = span1 > known ? std::max(x0, step(span1)) : x0;
-    // A step that fell well short of the last one: try the last one's span too.
+    const bool try1 = span1 > known;
+    const double y1 = try1 ? step(span1) : 0.0;
+    const double x1 = std::max(x0, y1);
+    // A step that fell well short of the last one: try the last one's span too. The bounds only
+    // loosen as the span grows, so a longer span can do better than span1 only when span1 itself
+    // capped the step.
     const double span2 = std::max(last_step_, 20.0);
-    const double x2 = x1 < 0.5 * last_step_ && span2 > known ? std::max(x1, step(span2)) : x1;
+    const bool try2 = x1 < 0.5 * last_step_ && span2 > known && (!try1 || y1 >= span1 || span2 < span1);
+    const double x2 = try2 ? std::max(x1, step(span2)) : x1;
     return std::max(known, x2);
   }
   // How long after (dir = 1) or before (dir = -1) s, at most span, F provably keeps its sign.
