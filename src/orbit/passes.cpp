@@ -203,9 +203,9 @@ Searcher::Walk Searcher::walk(const Sample& from, bool below, std::vector<Sample
   Walk w;
   Sample cur = from;
   const auto same_side = [below](const Sample& s) { return below ? s.F < 0.0 : s.F >= 0.0; };
-  const auto step_onto = [&](Sample& s) {  // s is on cur's side: the walk goes on from there (s is spent)
+  const auto step_onto = [&](const Sample& s) {  // s is on cur's side: the walk goes on from there
     if (keep) keep->push_back(s);
-    std::swap(cur, s);
+    cur = s;
   };
   // Refines the crossing between cur and n into w; false if the propagation failed inside.
   const auto refine = [&](const Sample& n, bool single) {
