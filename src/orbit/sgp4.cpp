@@ -52,30 +52,38 @@ constexpr double kEarthRotationRadPerMin = 4.37526908801129966e-3;  // rptim
 // Resonance integrator step (minutes) and its half-square (step^2 / 2).
 constexpr double kResonanceStep = 720.0;
 constexpr double kResonanceStepSquaredHalf = 259200.0;
-// Integrator checkpoints (DeepSpace::ahead/behind): one every 2 steps (1 day), over 366 days each
-// way (about 29 kB and 1,464 integrator steps per resonant set, once). At most one step is
-// integrated beyond a checkpoint inside that span; beyond it, the integration goes on from the last.
-constexpr std::size_t kCheckpointStride = 2;
+// Integrator checkpoints (DeepSpace::ahead/behind): one every step (12 hours), over 366 days each
+// way (about 58 kB and 1,464 integrator steps per resonant set, once). Inside that span a
+// propagation integrates no step at all (the state at the checkpoint is the loop's at that step);
+// beyond it, the integration goes on from the last.
+constexpr std::size_t kCheckpointStride = 1;
 constexpr std::size_t kCheckpointSteps = 732;
 
 // Remainder of x / 2pi with the sign of x, as C's fmod, which the reference uses throughout.
 // fmod is exact, so it returns x itself when |x| < 2pi: skipping the call there changes nothing.
-inline double wrap_two_pi(double x) { return std::fabs(x) < kTwoPi ? x : std::fmod(x, kTwoPi); }
+[[gnu::always_inline]] inline double wrap_two_pi(double x) { return std::fabs(x) < kTwoPi ? x : std::fmod(x, kTwoPi); }
 
 using detail::SinCos;
-inline SinCos sin_cos(double x) { return {std::sin(x), std::cos(x)}; }
+// sin and cos by detail::poly_sin_cos (inline, a few times cheaper than libm's sincos, within an ulp
+// of it), by libm beyond the angles it reduces exactly enough (times decades from epoch).
+[[gnu::always_inline]] inline SinCos sin_cos(double x) {
+  if (std::fabs(x) < detail::kReducibleAngle) [[likely]]
+    return detail::poly_sin_cos(x);
+  return {std::sin(x), std::cos(x)};
+}
 
 // sin and cos of (a + d) from those of a. The propagator's corrections are mostly tiny, and then a
 // short series for sin d and cos d (exact to rounding for |d| < 2e-3) saves a libm call.
-inline SinCos add_angle(SinCos a, double d) {
+[[gnu::always_inline]] inline SinCos add_angle(SinCos a, double d) {
   double sd, cd;
   if (std::fabs(d) < 2e-3) {
     const double d2 = d * d;
     sd = d * (1.0 - d2 / 6.0 * (1.0 - d2 / 20.0));
     cd = 1.0 - d2 / 2.0 * (1.0 - d2 / 12.0);
   } else {
-    sd = std::sin(d);
-    cd = std::cos(d);
+    const SinCos e = sin_cos(d);
+    sd = e.s;
+    cd = e.c;
   }
   return {a.s * cd + a.c * sd, a.c * cd - a.s * sd};
 }
@@ -542,7 +550,7 @@ void build_checkpoints(DeepSpace& ds, double no, double argpo, double argpdot) {
 // How many steps the integration from epoch towards t takes from a checkpoint: the largest
 // multiple of the stride, within the checkpoints, such that the loop's condition
 // |t - atime| >= step still held one step before it (so the loop from epoch passes it). 0: none.
-std::size_t checkpoint_steps(const DeepSpace& ds, double t, double delt) {
+[[gnu::always_inline]] inline std::size_t checkpoint_steps(const DeepSpace& ds, double t, double delt) {
   const double whole = std::floor(std::fabs(t) / kResonanceStep);
   if (!(whole >= static_cast<double>(kCheckpointStride))) return 0;  // also NaN
   const auto& cps = delt > 0.0 ? ds.ahead : ds.behind;
@@ -556,7 +564,7 @@ std::size_t checkpoint_steps(const DeepSpace& ds, double t, double delt) {
 // Secular lunar-solar drift plus, for resonant orbits, the numerically integrated mean longitude
 // and mean motion. The integrator steps 720 minutes from epoch towards t (from the last checkpoint
 // on that way).
-void deep_space_drift(const DeepSpace& ds, double no, double argpo, double argpdot, double t,
+[[gnu::always_inline]] inline void deep_space_drift(const DeepSpace& ds, double no, double argpo, double argpdot, double t,
                       MeanElements& m) {
   m.em = m.em + ds.dedt * t;
   m.inclm = m.inclm + ds.didt * t;
@@ -601,8 +609,8 @@ struct PerturbedElements {
 struct BodyOffsets {
   double e, i, l, gh, h;
 };
-BodyOffsets body_offsets(const BodyPeriodics& b, double zm, double eccentricity) {
-  const double zf = zm + 2.0 * eccentricity * std::sin(zm);
+[[gnu::always_inline]] inline BodyOffsets body_offsets(const BodyPeriodics& b, double zm, double eccentricity) {
+  const double zf = zm + 2.0 * eccentricity * sin_cos(zm).s;
   const SinCos z = sin_cos(zf);
   const double f2 = 0.5 * z.s * z.s - 0.25;
   const double f3 = -0.5 * z.s * z.c;
@@ -610,7 +618,7 @@ BodyOffsets body_offsets(const BodyPeriodics& b, double zm, double eccentricity)
           b.gh2 * f2 + b.gh3 * f3 + b.gh4 * z.s, b.h2 * f2 + b.h3 * f3};
 }
 
-void lunar_solar_periodics(const LunarSolarPeriodics& p, double t, PerturbedElements& x) {
+[[gnu::always_inline]] inline void lunar_solar_periodics(const LunarSolarPeriodics& p, double t, PerturbedElements& x) {
   const BodyOffsets sun = body_offsets(p.solar, p.zmos + kSolarMeanMotion * t, kSolarEccentricity);  // ses ... shs
   const BodyOffsets moon = body_offsets(p.lunar, p.zmol + kLunarMeanMotion * t, kLunarEccentricity);  // sel ... shll
   const double pe = sun.e + moon.e;
@@ -621,8 +629,9 @@ void lunar_solar_periodics(const LunarSolarPeriodics& p, double t, PerturbedElem
 
   x.inclp = x.inclp + pinc;
   x.ep = x.ep + pe;
-  x.sinip = std::sin(x.inclp);
-  x.cosip = std::cos(x.inclp);
+  const SinCos inc = sin_cos(x.inclp);
+  x.sinip = inc.s;
+  x.cosip = inc.c;
 
   // Periodics applied directly above 0.2 rad of (perturbed) inclination, with Lyddane's
   // modification below it.
@@ -657,10 +666,14 @@ void lunar_solar_periodics(const LunarSolarPeriodics& p, double t, PerturbedElem
   }
 }
 
-Propagation failure(Sgp4Error e) {
+[[gnu::always_inline]] inline Propagation failure(Sgp4Error e) {
   Propagation p;
   p.error = e;
   return p;
+}
+[[gnu::always_inline]] inline bool fail(PerturbedTerms& out, Sgp4Error e) {
+  out.error = e;
+  return false;
 }
 
 }  // namespace
@@ -685,7 +698,18 @@ struct Sgp4::Model {
 
   // epoch: days since 1949 Dec 31 00:00 UT; no_kozai: mean motion from the element set, rad/min.
   void initialise(double epoch, double no_kozai);
+  // The propagator, inlined into each of the variants below: the perturbed elements (false: the
+  // propagation fails with out.error), then finish() below.
+  [[gnu::always_inline]] inline bool perturbed(double tsince, PerturbedTerms& out) const;
+  [[gnu::always_inline]] inline Propagation propagate_inline(double tsince) const;
+  // The propagator compiled for the baseline instruction set and, on x86-64, for x86-64-v3 (AVX2 and
+  // FMA); propagate() runs the best this processor has (chosen once).
+  static Propagation propagate_baseline(const Model& m, double tsince);
+  static Propagation propagate_v3(const Model& m, double tsince);
+  static bool perturbed_baseline(const Model& m, double tsince, PerturbedTerms& out);
+  static bool perturbed_v3(const Model& m, double tsince, PerturbedTerms& out);
   Propagation propagate(double tsince) const;
+  void perturbed_terms(double tsince, PerturbedTerms& out) const;
 };
 
 void Sgp4::Model::initialise(double epoch, double no_kozai) {
@@ -806,7 +830,7 @@ void Sgp4::Model::initialise(double epoch, double no_kozai) {
   }
 }
 
-Propagation Sgp4::Model::propagate(double t) const {
+[[gnu::always_inline]] inline bool Sgp4::Model::perturbed(double t, PerturbedTerms& out) const {
   // Secular gravity and atmospheric drag.
   const double xmdf = mo + mdot * t;
   const double argpdf = argpo + argpdot * t;
@@ -841,9 +865,11 @@ Propagation Sgp4::Model::propagate(double t) const {
   double am;
   if (deep_space) {
     deep_space_drift(ds, no_unkozai, argpo, argpdot, t, m);
-    if (m.nm <= 0.0) return failure(Sgp4Error::mean_motion);
+    if (m.nm <= 0.0) return fail(out, Sgp4Error::mean_motion);
     // Only the resonance integrator changes the mean motion.
-    const double a_mean = ds.resonance == Resonance::none ? ao : std::pow(kXke / m.nm, kTwoThirds);
+    // (xke / n)^(2/3) as cbrt squared: within an ulp of pow, at a third of its cost.
+    const double cube_root = ds.resonance == Resonance::none ? 0.0 : std::cbrt(kXke / m.nm);
+    const double a_mean = ds.resonance == Resonance::none ? ao : cube_root * cube_root;
     am = a_mean * tempa * tempa;
   } else {
     am = ao * tempa * tempa;
@@ -851,7 +877,7 @@ Propagation Sgp4::Model::propagate(double t) const {
   const double nm = kXke / (am * std::sqrt(am));
   double em = m.em - tempe;
 
-  if (em >= 1.0 || em < -0.001) return failure(Sgp4Error::mean_eccentricity);
+  if (em >= 1.0 || em < -0.001) return fail(out, Sgp4Error::mean_eccentricity);
   if (em < 1.0e-6) em = 1.0e-6;
   double mm = m.mm + no_unkozai * templ;
   double xlm = mm + m.argpm + m.nodem;
@@ -868,10 +894,11 @@ Propagation Sgp4::Model::propagate(double t) const {
       p.inclp = -p.inclp;
       p.nodep = p.nodep + kPi;
       p.argpp = p.argpp - kPi;
-      p.sinip = std::sin(p.inclp);
-      p.cosip = std::cos(p.inclp);
+      const SinCos inc = sin_cos(p.inclp);
+      p.sinip = inc.s;
+      p.cosip = inc.c;
     }
-    if (p.ep < 0.0 || p.ep > 1.0) return failure(Sgp4Error::perturbed_eccentricity);
+    if (p.ep < 0.0 || p.ep > 1.0) return fail(out, Sgp4Error::perturbed_eccentricity);
     // Long-period coefficients with the perturbed inclination.
     aycof_t = -0.5 * kJ3OverJ2 * p.sinip;
     if (std::fabs(p.cosip + 1.0) > kRetrogradeGuard)
@@ -884,6 +911,16 @@ Propagation Sgp4::Model::propagate(double t) const {
     x7thm1_t = 7.0 * cosisq - 1.0;
   }
 
+  out = {am, nm, p.ep, p.nodep, p.argpp, p.mp, p.sinip, p.cosip, aycof_t, xlcof_t, con41_t, x1mth2_t, x7thm1_t,
+         Sgp4Error::none};
+  return true;
+}
+
+// The rest of a propagation from the perturbed elements: long-period periodics, Kepler's equation,
+// short-period periodics, position and velocity.
+[[gnu::always_inline]] inline Propagation finish(const PerturbedTerms& p) {
+  const double am = p.am, nm = p.nm;
+  const double aycof_t = p.aycof, xlcof_t = p.xlcof, con41_t = p.con41, x1mth2_t = p.x1mth2, x7thm1_t = p.x7thm1;
   // Long-period periodics.
   const SinCos argp = sin_cos(p.argpp);
   const double axnl = p.ep * argp.c;
@@ -951,6 +988,54 @@ Propagation Sgp4::Model::propagate(double t) const {
   return out;
 }
 
+[[gnu::always_inline]] inline Propagation Sgp4::Model::propagate_inline(double t) const {
+  PerturbedTerms p;
+  if (!perturbed(t, p)) return failure(p.error);
+  return finish(p);
+}
+
+Propagation Sgp4::Model::propagate_baseline(const Model& m, double t) { return m.propagate_inline(t); }
+bool Sgp4::Model::perturbed_baseline(const Model& m, double t, PerturbedTerms& out) { return m.perturbed(t, out); }
+
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+// With FMA the polynomial sine and cosine and the long dependency chains of the propagator take about
+// two thirds of the time. Results differ from the baseline build's at the level of rounding
+// (contracted multiply-adds), far below the comparisons of docs/sgp4.md.
+[[gnu::target("arch=x86-64-v3")]] Propagation Sgp4::Model::propagate_v3(const Model& m, double t) {
+  return m.propagate_inline(t);
+}
+[[gnu::target("arch=x86-64-v3")]] bool Sgp4::Model::perturbed_v3(const Model& m, double t, PerturbedTerms& out) {
+  return m.perturbed(t, out);
+}
+namespace {
+bool has_v3() {
+  static const bool v3 = [] {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  }();
+  return v3;
+}
+}  // namespace
+#else
+Propagation Sgp4::Model::propagate_v3(const Model& m, double t) { return m.propagate_inline(t); }
+bool Sgp4::Model::perturbed_v3(const Model& m, double t, PerturbedTerms& out) { return m.perturbed(t, out); }
+namespace {
+bool has_v3() { return false; }
+}  // namespace
+#endif
+
+Propagation Sgp4::Model::propagate(double t) const {
+  using Fn = Propagation (*)(const Model&, double);
+  static const Fn fn = has_v3() ? &propagate_v3 : &propagate_baseline;
+  return fn(*this, t);
+}
+
+void Sgp4::Model::perturbed_terms(double t, PerturbedTerms& out) const {
+  using Fn = bool (*)(const Model&, double, PerturbedTerms&);
+  static const Fn fn = has_v3() ? &perturbed_v3 : &perturbed_baseline;
+  fn(*this, t, out);
+}
+
 const char* describe(Sgp4Error e) {
   switch (e) {
     case Sgp4Error::none: return "no error";
@@ -993,10 +1078,34 @@ Sgp4::Sgp4(const Elements& elements)
   model_ = std::move(model);
 }
 
+PerturbedTerms Sgp4::perturbed_terms(double tsince) const {
+  PerturbedTerms p{};
+  p.error = init_error_;
+  if (init_error_ == Sgp4Error::none) model_->perturbed_terms(tsince, p);
+  return p;
+}
+
 Propagation Sgp4::propagate_minutes(double tsince) const {
   if (init_error_ != Sgp4Error::none) return failure(init_error_);
   return model_->propagate(tsince);
 }
+
+namespace detail {
+class Sgp4Access {
+ public:
+  static Sgp4 without_checkpoints(const Sgp4& sat) {
+    Sgp4 copy = sat;
+    if (copy.model_) {
+      auto model = std::make_shared<Sgp4::Model>(*copy.model_);
+      model->ds.ahead.clear();
+      model->ds.behind.clear();
+      copy.model_ = std::move(model);
+    }
+    return copy;
+  }
+};
+Sgp4 without_resonance_checkpoints(const Sgp4& sat) { return Sgp4Access::without_checkpoints(sat); }
+}  // namespace detail
 
 double Sgp4::mean_motion_rad_per_min() const {
   return model_ ? model_->no_unkozai : std::numeric_limits<double>::quiet_NaN();

@@ -44,6 +44,20 @@ struct NearEarthTerms {
   bool simplified_drag;
 };
 
+// A propagation halfway: the elements after the secular, drag, deep-space and lunar-solar terms, and
+// the coefficients that depend on the perturbed inclination. The rest (long-period periodics,
+// Kepler's equation, short-period periodics) depends on nothing else, so the batch kernel runs it
+// vectorised for deep-space sets too (sgp4_batch.h). Names as in Vallado's sgp4().
+struct PerturbedTerms {
+  double am, nm, ep, nodep, argpp, mp, sinip, cosip;
+  double aycof, xlcof, con41, x1mth2, x7thm1;
+  Sgp4Error error;  // when not none, a propagation fails with it and nothing above is valid
+};
+
+namespace detail {
+class Sgp4Access;
+}
+
 class Sgp4 {
  public:
   explicit Sgp4(const Elements& elements);
@@ -59,6 +73,9 @@ class Sgp4 {
   Propagation propagate_minutes(double tsince) const;
   Propagation propagate(UtcTime t) const { return propagate_minutes(minutes_between(epoch_, t)); }
 
+  // The first half of propagate_minutes(tsince) (PerturbedTerms above).
+  PerturbedTerms perturbed_terms(double tsince) const;
+
   // The near-earth coefficients; nullopt for a deep-space set or one that failed to initialise.
   std::optional<NearEarthTerms> near_earth_terms() const;
 
@@ -70,6 +87,7 @@ class Sgp4 {
   double apogee_km() const;
 
  private:
+  friend class detail::Sgp4Access;
   struct Model;  // every coefficient Vallado's satrec holds; immutable after construction
   Elements elements_;
   JulianDate epoch_jd_{};
@@ -78,5 +96,11 @@ class Sgp4 {
   bool deep_space_ = false;
   std::shared_ptr<const Model> model_;  // shared by copies; never mutated
 };
+
+namespace detail {
+// For tests: the same set with the resonance integrator's checkpoints dropped, so that every
+// propagation integrates from epoch as the reference does (sgp4.cpp, kCheckpointStride).
+Sgp4 without_resonance_checkpoints(const Sgp4& sat);
+}  // namespace detail
 
 }  // namespace tb::orbit

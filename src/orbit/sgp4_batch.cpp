@@ -16,43 +16,12 @@ using wgs72::kXke;
 constexpr double kEarthRadiusKm = wgs72::kRadiusKm;
 static_assert(kTwoPi == 6.28318530717958647693);  // the literal this file used to spell out
 
-// 2/pi and pi/2 in two parts (fdlibm's pio2_1, pio2_1t: the first has 33 bits, so n * it is exact
-// for |n| < 2^20, i.e. |x| < 1.6e6 rad), and 2pi the same way.
-constexpr double kTwoOverPi = 6.36619772367581382433e-01;
-constexpr double kPio2Hi = 1.57079632673412561417e+00;
-constexpr double kPio2Lo = 6.07710050650619224932e-11;
-constexpr double kTwoPiHi = 2.0 * kPio2Hi * 2.0;
-constexpr double kTwoPiLo = 2.0 * kPio2Lo * 2.0;
-constexpr double kRoundMagic = 0x1.8p52;  // (x + magic) - magic rounds to an integer, |x| < 2^51
+// 2pi in two parts (twice fdlibm's pio2_1, pio2_1t; see poly_sin_cos in sgp4_common.h).
+constexpr double kTwoPiHi = 4.0 * 1.57079632673412561417e+00;
+constexpr double kTwoPiLo = 4.0 * 6.07710050650619224932e-11;
 
 using detail::SinCos;
-
-// sin and cos without a branch or a library call, so that a loop over lanes vectorises: Cody-Waite
-// reduction to [-pi/4, pi/4] and fdlibm's kernel polynomials (error below 1 ulp there), then the
-// quadrant by selects.
-[[gnu::always_inline]] inline SinCos sin_cos(double x) {
-  const double n = (x * kTwoOverPi + kRoundMagic) - kRoundMagic;
-  const double r = (x - n * kPio2Hi) - n * kPio2Lo;
-  const double z = r * r;
-  const double s = r + r * z *
-                           (-1.66666666666666324348e-01 +
-                            z * (8.33333333332248946124e-03 +
-                                 z * (-1.98412698298579493134e-04 +
-                                      z * (2.75573137070700676789e-06 +
-                                           z * (-2.50507602534068634195e-08 + z * 1.58969099521155010221e-10)))));
-  const double c = 1.0 - 0.5 * z +
-                   z * z *
-                       (4.16666666666666019037e-02 +
-                        z * (-1.38888888888741095749e-03 +
-                             z * (2.48015872894767294178e-05 +
-                                  z * (-2.75573143513906633035e-07 +
-                                       z * (2.08757232129817482790e-09 + z * -1.13596475577881948265e-11)))));
-  const double q = n - 4.0 * std::floor(n * 0.25);  // quadrant 0..3
-  const bool odd = q == 1.0 || q == 3.0;
-  const double sin_abs = odd ? c : s;
-  const double cos_abs = odd ? s : c;
-  return {q >= 2.0 ? -sin_abs : sin_abs, (q == 1.0 || q == 2.0) ? -cos_abs : cos_abs};
-}
+[[gnu::always_inline]] inline SinCos sin_cos(double x) { return detail::poly_sin_cos(x); }
 
 // fmod(x, 2pi) where |x| >= 2pi, x itself below (as sgp4.cpp's wrap_two_pi), without a call.
 [[gnu::always_inline]] inline double wrap_two_pi(double x) {
@@ -162,10 +131,11 @@ template <bool kDrag>
     for (std::size_t i = 0; i < n; ++i) {
       double tem5 = 1.0 - b.ec[i] * b.axnl[i] - b.es[i] * b.aynl[i];
       tem5 = (b.u[i] - b.aynl[i] * b.ec[i] + b.axnl[i] * b.es[i] - b.eo1[i]) / tem5;
-      tem5 = std::fabs(tem5) >= 0.95 ? (tem5 > 0.0 ? 0.95 : -0.95) : tem5;
+      tem5 = std::fabs(tem5) >= 0.95 ? std::copysign(0.95, tem5) : tem5;
       const bool was_done = b.done[i] != 0.0;
       b.eo1[i] = was_done ? b.eo1[i] : b.eo1[i] + tem5;
-      const bool now_done = was_done || std::fabs(tem5) < 1.0e-12 || iteration == 10;
+      // (| rather than ||: a short-circuit is a branch, and a branch keeps the loop from vectorising)
+      const bool now_done = was_done | (std::fabs(tem5) < 1.0e-12) | (iteration == 10);
       const SinCos next = add_angle({b.es[i], b.ec[i]}, tem5);
       b.es[i] = now_done ? b.es[i] : next.s;
       b.ec[i] = now_done ? b.ec[i] : next.c;
@@ -177,8 +147,32 @@ template <bool kDrag>
   }
 }
 
+// The inclination-dependent coefficients of the short-period stage: a near-earth set's own, the same
+// for every lane, or a deep-space set's, which depend on the perturbed inclination, lane by lane.
+struct SetCoefficients {
+  const NearEarthTerms& k;
+  double con41(std::size_t) const { return k.con41; }
+  double x1mth2(std::size_t) const { return k.x1mth2; }
+  double x7thm1(std::size_t) const { return k.x7thm1; }
+  double sinio(std::size_t) const { return k.sinio; }
+  double cosio(std::size_t) const { return k.cosio; }
+};
+
+// A deep-space set's lanes: what Sgp4::perturbed_terms gave for each time (scalar), for the
+// vectorised long-period, Kepler and short-period stages.
+struct DeepLanes {
+  double em[kBlock], argpp[kBlock], mp[kBlock], aycof[kBlock], xlcof[kBlock];
+  double con41_[kBlock], x1mth2_[kBlock], x7thm1_[kBlock], sinip[kBlock], cosip[kBlock];
+  double con41(std::size_t i) const { return con41_[i]; }
+  double x1mth2(std::size_t i) const { return x1mth2_[i]; }
+  double x7thm1(std::size_t i) const { return x7thm1_[i]; }
+  double sinio(std::size_t i) const { return sinip[i]; }
+  double cosio(std::size_t i) const { return cosip[i]; }
+};
+
 // Short-period periodics and the orientation vectors: position and velocity, or the lane's error.
-[[gnu::always_inline]] inline void short_period_stage(const NearEarthTerms& k, std::size_t n, Block& b) {
+template <class Coefficients>
+[[gnu::always_inline]] inline void short_period_stage(const Coefficients& k, std::size_t n, Block& b) {
   for (std::size_t i = 0; i < n; ++i) {
     const double a = b.am[i];
     const double ax = b.axnl[i], ay = b.aynl[i];
@@ -198,14 +192,14 @@ template <bool kDrag>
     temp = 1.0 / pl;
     const double temp1 = 0.5 * kJ2 * temp;
     const double temp2 = temp1 * temp;
-    const double mrt = rl * (1.0 - 1.5 * temp2 * betal * k.con41) + 0.5 * temp1 * k.x1mth2 * cos2u;
-    const double xnode = b.nodep[i] + 1.5 * temp2 * k.cosio * sin2u;
-    const double mvt = rdotl - b.nm[i] * temp1 * k.x1mth2 * sin2u / kXke;
-    const double rvdot = rvdotl + b.nm[i] * temp1 * (k.x1mth2 * cos2u + 1.5 * k.con41) / kXke;
+    const double mrt = rl * (1.0 - 1.5 * temp2 * betal * k.con41(i)) + 0.5 * temp1 * k.x1mth2(i) * cos2u;
+    const double xnode = b.nodep[i] + 1.5 * temp2 * k.cosio(i) * sin2u;
+    const double mvt = rdotl - b.nm[i] * temp1 * k.x1mth2(i) * sin2u / kXke;
+    const double rvdot = rvdotl + b.nm[i] * temp1 * (k.x1mth2(i) * cos2u + 1.5 * k.con41(i)) / kXke;
     const double unit = 1.0 / std::sqrt(sinu * sinu + cosu * cosu);
-    const SinCos s = add_angle({sinu * unit, cosu * unit}, -0.25 * temp2 * k.x7thm1 * sin2u);
+    const SinCos s = add_angle({sinu * unit, cosu * unit}, -0.25 * temp2 * k.x7thm1(i) * sin2u);
     const SinCos node = sin_cos(xnode);
-    const SinCos inc = add_angle({k.sinio, k.cosio}, 1.5 * temp2 * k.cosio * k.sinio * cos2u);
+    const SinCos inc = add_angle({k.sinio(i), k.cosio(i)}, 1.5 * temp2 * k.cosio(i) * k.sinio(i) * cos2u);
     const detail::Orientation o = detail::orientation(s, node, inc);
     double e = b.err[i];
     e = e != 0.0 ? e : (pl < 0.0 ? static_cast<double>(Sgp4Error::semi_latus_rectum) : 0.0);
@@ -237,7 +231,7 @@ template <bool kDrag>
   Block b;
   secular_stage<kDrag>(k, tsince, n, b);
   kepler_stage(n, b);
-  short_period_stage(k, n, b);
+  short_period_stage(SetCoefficients{k}, n, b);
   store_stage(b, n, out);
 }
 
@@ -251,8 +245,66 @@ template <bool kDrag>
   }
 }
 
+// A deep-space set's long-period periodics, lane by lane: sgp4.cpp's finish() up to Kepler.
+[[gnu::always_inline]] inline void long_period_stage(const DeepLanes& d, std::size_t n, Block& b) {
+  for (std::size_t i = 0; i < n; ++i) {
+    const double em = d.em[i], a = b.am[i];
+    const SinCos argp = sin_cos(d.argpp[i]);
+    const double ax = em * argp.c;
+    const double temp = 1.0 / (a * (1.0 - em * em));
+    const double ay = em * argp.s + temp * d.aycof[i];
+    const double xl = d.mp[i] + d.argpp[i] + b.nodep[i] + temp * d.xlcof[i] * ax;
+    b.axnl[i] = ax;
+    b.aynl[i] = ay;
+    b.u[i] = wrap_two_pi(xl - b.nodep[i]);
+    b.eo1[i] = b.u[i];
+  }
+}
+
+// One block of a deep-space set: the secular, resonance and lunar-solar terms by the scalar code
+// (Sgp4::perturbed_terms), the rest vectorised. A lane whose first half failed carries its error
+// and harmless numbers through the rest.
+[[gnu::always_inline]] inline void deep_space_block(const Sgp4& sat, const double* tsince, std::size_t n,
+                                                    Propagation* out) {
+  Block b;
+  DeepLanes d;
+  for (std::size_t i = 0; i < n; ++i) {
+    PerturbedTerms p = sat.perturbed_terms(tsince[i]);
+    if (p.error != Sgp4Error::none) {
+      const Sgp4Error e = p.error;
+      p = {1.0, kXke, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, e};
+    }
+    b.am[i] = p.am;
+    b.nm[i] = p.nm;
+    b.nodep[i] = p.nodep;
+    b.err[i] = static_cast<double>(static_cast<int>(p.error));
+    d.em[i] = p.ep;
+    d.argpp[i] = p.argpp;
+    d.mp[i] = p.mp;
+    d.aycof[i] = p.aycof;
+    d.xlcof[i] = p.xlcof;
+    d.con41_[i] = p.con41;
+    d.x1mth2_[i] = p.x1mth2;
+    d.x7thm1_[i] = p.x7thm1;
+    d.sinip[i] = p.sinip;
+    d.cosip[i] = p.cosip;
+  }
+  long_period_stage(d, n, b);
+  kepler_stage(n, b);
+  short_period_stage(d, n, b);
+  store_stage(b, n, out);
+}
+
+[[gnu::always_inline]] inline void deep_space_blocks(const Sgp4& sat, const double* t, std::size_t n,
+                                                     Propagation* out) {
+  for (std::size_t b = 0; b < n; b += kBlock) deep_space_block(sat, t + b, std::min(kBlock, n - b), out + b);
+}
+
 void near_earth_all(const NearEarthTerms& k, const double* t, std::size_t n, Propagation* out) {
   near_earth_blocks(k, t, n, out);
+}
+void deep_space_all(const Sgp4& sat, const double* t, std::size_t n, Propagation* out) {
+  deep_space_blocks(sat, t, n, out);
 }
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
@@ -265,12 +317,21 @@ void near_earth_all(const NearEarthTerms& k, const double* t, std::size_t n, Pro
                                                  Propagation* out) {
   near_earth_blocks(k, t, n, out);
 }
+[[gnu::target("avx512f,avx512dq,avx512vl")]] void deep_space_avx512(const Sgp4& sat, const double* t, std::size_t n,
+                                                                     Propagation* out) {
+  deep_space_blocks(sat, t, n, out);
+}
+[[gnu::target("avx2,fma")]] void deep_space_avx2(const Sgp4& sat, const double* t, std::size_t n, Propagation* out) {
+  deep_space_blocks(sat, t, n, out);
+}
 #endif
 
 using Kernel = void (*)(const NearEarthTerms&, const double*, std::size_t, Propagation*);
+using DeepKernel = void (*)(const Sgp4&, const double*, std::size_t, Propagation*);
 
 struct Chosen {
   Kernel kernel;
+  DeepKernel deep;
   const char* isa;
 };
 
@@ -279,10 +340,10 @@ std::vector<Chosen> available() {
 #ifdef TB_BATCH_DISPATCH
   __builtin_cpu_init();
   if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512vl"))
-    out.push_back({near_earth_avx512, "avx512f"});
-  if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) out.push_back({near_earth_avx2, "avx2"});
+    out.push_back({near_earth_avx512, deep_space_avx512, "avx512f"});
+  if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) out.push_back({near_earth_avx2, deep_space_avx2, "avx2"});
 #endif
-  out.push_back({near_earth_all, "baseline"});
+  out.push_back({near_earth_all, deep_space_all, "baseline"});
   return out;
 }
 
@@ -291,12 +352,25 @@ const Chosen& chosen() {
   return c;
 }
 
-void run(Kernel kernel, const Sgp4& sat, std::span<const double> tsince, std::span<Propagation> out) {
-  if (const auto terms = sat.near_earth_terms()) {
-    kernel(*terms, tsince.data(), tsince.size(), out.data());
+// Beyond this many minutes from epoch (19 years) the angles the kernel takes the sine of may pass
+// detail::kReducibleAngle (mean motion 0.07 rad/min times 2.3e7 minutes); such times go through the
+// scalar propagator, which falls back to libm there.
+constexpr double kKernelMaxMinutes = 1e7;
+
+void run(const Chosen& c, const Sgp4& sat, std::span<const double> tsince, std::span<Propagation> out) {
+  const bool in_range = std::all_of(tsince.begin(), tsince.end(),
+                                    [](double t) { return std::fabs(t) <= kKernelMaxMinutes; });
+  if (!in_range) {
+    for (std::size_t j = 0; j < tsince.size(); ++j) out[j] = sat.propagate_minutes(tsince[j]);
     return;
   }
-  for (std::size_t j = 0; j < tsince.size(); ++j) out[j] = sat.propagate_minutes(tsince[j]);
+  if (const auto terms = sat.near_earth_terms()) {
+    c.kernel(*terms, tsince.data(), tsince.size(), out.data());
+  } else if (sat.deep_space() && sat.init_error() == Sgp4Error::none) {
+    c.deep(sat, tsince.data(), tsince.size(), out.data());
+  } else {
+    for (std::size_t j = 0; j < tsince.size(); ++j) out[j] = sat.propagate_minutes(tsince[j]);
+  }
 }
 
 }  // namespace
@@ -310,14 +384,14 @@ std::vector<const char*> batch_kernels_available() {
 }
 
 void propagate_batch(const Sgp4& sat, std::span<const double> tsince, std::span<Propagation> out) {
-  run(chosen().kernel, sat, tsince, out);
+  run(chosen(), sat, tsince, out);
 }
 
 bool propagate_batch_with(const char* isa, const Sgp4& sat, std::span<const double> tsince,
                           std::span<Propagation> out) {
   for (const Chosen& c : available())
     if (std::string_view(c.isa) == isa) {
-      run(c.kernel, sat, tsince, out);
+      run(c, sat, tsince, out);
       return true;
     }
   return false;

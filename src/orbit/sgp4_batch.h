@@ -5,10 +5,13 @@
 // branch that depends on the time (failures become per-lane error codes, Kepler's iteration runs
 // until every lane of a block has converged). On x86-64 the kernel is compiled for AVX-512, AVX2
 // and the baseline, and the processor's best is chosen at run time; elsewhere it is portable C++
-// that the compiler vectorises for the target's baseline. Deep-space sets go through Sgp4 itself.
+// that the compiler vectorises for the target's baseline. A deep-space set's secular, resonance and
+// lunar-solar terms are computed time by time by Sgp4::perturbed_terms (scalar: the resonance
+// integrator starts from a checkpoint that depends on the time), and the rest, most of the cost, by
+// the same vectorised long-period, Kepler and short-period stages.
 //
-// The results agree with Sgp4::propagate_minutes to 1e-9 km and 1e-12 km/s (the kernel has its own
-// sine and cosine); error codes are the same.
+// The results agree with Sgp4::propagate_minutes to 1e-9 km and 1e-12 km/s (differences of rounding:
+// the order of operations and contracted multiply-adds differ); error codes are the same.
 #pragma once
 #include <cstddef>
 #include <span>
