@@ -81,8 +81,9 @@ bool Searcher::eval(double t, Sample& out) {
   const Propagation p = sat_.propagate_minutes(tsince);
   if (!p.ok()) return false;
   // TEME -> pseudo-Earth-fixed as teme_to_ecef does it.
-  double c, sn;
-  sin_cos(gmst0_ + gmst_rate_ * t, sn, c);
+  // SGP4's own inlined sine and cosine (1 ulp), a fraction of libm's sincos.
+  const SinCos rot = poly_sin_cos(gmst0_ + gmst_rate_ * t);
+  const double c = rot.c, sn = rot.s;
   const Vec3& rt = p.state.r_km;
   const Vec3& vt = p.state.v_km_s;
   StateVector& e = out.ecef;

@@ -11,6 +11,7 @@
 #include "orbit/constants.h"
 #include "orbit/geometry.h"
 #include "orbit/passes.h"
+#include "orbit/sgp4_common.h"  // poly_sin_cos
 
 namespace tb::orbit::detail {
 
@@ -34,37 +35,6 @@ inline constexpr double kMaxElTolerance = 2e-5;     // sin(el): hidden maxima be
 inline constexpr double kTaylorAngle = 5e-7;        // rad: error allowed to the model step onto a maximum
 inline constexpr double kFlatTopShift = 10.0;       // s: flatter maxima are found from F alone
 inline constexpr double kModelStep = 2.0;           // s: a crossing this close is taken from the quadratic model
-
-// sin and cos of x, |x| < 1e5 rad, to about an ulp: a reduction by pi/2 (Cody and Waite, pi/2 in a
-// 33-bit head and a tail), then fdlibm's kernels on [-pi/4, pi/4]. Inlined, it costs a fraction of
-// libm's sincos; the search calls it once per propagation (the Earth's rotation angle).
-inline void sin_cos(double x, double& s, double& c) {
-  constexpr double kInvPio2 = 6.36619772367581382433e-01;
-  constexpr double kPio2Hi = 1.57079632673412561417e+00;  // first 33 bits of pi/2: n * kPio2Hi is exact
-  constexpr double kPio2Lo = 6.07710050650619224932e-11;  // pi/2 - kPio2Hi
-  const double q = x * kInvPio2;  // to the nearest integer (std::nearbyint is a libm call without SSE4.1)
-  const double n = static_cast<double>(static_cast<long long>(q < 0.0 ? q - 0.5 : q + 0.5));
-  const double y = (x - n * kPio2Hi) - n * kPio2Lo;
-  const double z = y * y;
-  const double sy = y + y * z * (-1.66666666666666324348e-01 +
-                                 z * (8.33333333332248946124e-03 +
-                                      z * (-1.98412698298579493134e-04 +
-                                           z * (2.75573137070700676789e-06 +
-                                                z * (-2.50507602534068634195e-08 + z * 1.58969099521155010221e-10)))));
-  const double r = z * (4.16666666666666019037e-02 +
-                        z * (-1.38888888888741095749e-03 +
-                             z * (2.48015872894767294178e-05 +
-                                  z * (-2.75573143513906633035e-07 +
-                                       z * (2.08757232129817482790e-09 + z * -1.13596475577881948265e-11)))));
-  const double hz = 0.5 * z, w = 1.0 - hz;
-  const double cy = w + (((1.0 - w) - hz) + z * r);
-  switch (static_cast<long long>(n) & 3) {
-    case 0: s = sy; c = cy; break;
-    case 1: s = cy; c = -sy; break;
-    case 2: s = -sy; c = -cy; break;
-    default: s = -cy; c = sy; break;
-  }
-}
 
 // atan2 from a minimax polynomial: |error| < 6e-9 rad (2e7 + 5e7 points against std::atan2, asin and
 // acos), a few times faster. Used only inside the bounds, which carry kFastAtanErr on the safe side.
