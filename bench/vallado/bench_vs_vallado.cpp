@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <ctime>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -101,6 +102,37 @@ void per_propagation(benchmark::State& state, std::size_t n) {
       static_cast<double>(n), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
+// One set's day into sink[k0 ...]: Vallado's sgp4() per call, NaNs and his error code on failure.
+void vallado_day(elsetrec& rec, const std::vector<double>& times, Sink& sink, std::size_t k0) {
+  constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t j = 0; j < times.size(); ++j) {
+    double r[3], v[3];
+    SGP4Funcs::sgp4(rec, times[j], r, v);
+    const int code = rec.error;
+    if (code != 0) r[0] = r[1] = r[2] = v[0] = v[1] = v[2] = kNan;
+    sink.put(k0 + j, code, r, v);
+  }
+}
+
+// The same through trakbox: per call, or (batch) propagate_batch into `scratch` first.
+void trakbox_day(const Sgp4& sat, const std::vector<double>& times, Sink& sink, std::size_t k0, bool batch,
+                 std::vector<Propagation>& scratch) {
+  constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+  const double nan3[3] = {kNan, kNan, kNan};
+  auto put = [&](std::size_t j, const Propagation& p) {
+    if (p.ok())
+      sink.put(k0 + j, 0, p.state.r_km.data(), p.state.v_km_s.data());
+    else
+      sink.put(k0 + j, static_cast<int>(p.error), nan3, nan3);
+  };
+  if (batch) {
+    propagate_batch(sat, times, scratch);
+    for (std::size_t j = 0; j < times.size(); ++j) put(j, scratch[j]);
+  } else {
+    for (std::size_t j = 0; j < times.size(); ++j) put(j, sat.propagate_minutes(times[j]));
+  }
+}
+
 // ---- one set (ISS, 2018), one call per propagation
 void BM_PerCall_ISS_Vallado(benchmark::State& state) {
   const Sgp4 sat(tb::testing::iss_2018());
@@ -165,81 +197,95 @@ void BM_PerCall_Catalogue_Vallado(benchmark::State& state) {
     times.push_back(times_for(s.epoch_jd()));
   }
   Sink sink(recs.size() * kTimes);
-  constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
   for (auto _ : state) {
-    std::size_t k = 0;
-    for (std::size_t s = 0; s < recs.size(); ++s) {
-      for (int j = 0; j < kTimes; ++j, ++k) {
-        double r[3], v[3];
-        SGP4Funcs::sgp4(recs[s], times[s][j], r, v);
-        const int code = recs[s].error;
-        if (code != 0) r[0] = r[1] = r[2] = v[0] = v[1] = v[2] = kNan;
-        sink.put(k, code, r, v);
-      }
-    }
+    for (std::size_t s = 0; s < recs.size(); ++s) vallado_day(recs[s], times[s], sink, s * kTimes);
     benchmark::ClobberMemory();
   }
   state.SetLabel(subset_label(state.range(0)));
   per_propagation(state, recs.size() * kTimes);
 }
-void BM_PerCall_Catalogue_Trakbox(benchmark::State& state) {
+
+// trakbox per call (batch false) or through the batch interface, the kernel dispatch chooses.
+void trakbox_catalogue(benchmark::State& state, bool batch) {
   const std::vector<Sgp4>& set = sats(state.range(0));
   std::vector<std::vector<double>> times;
   for (const Sgp4& s : set) times.push_back(times_for(s.epoch_jd()));
   Sink sink(set.size() * kTimes);
-  constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
-  const double nan3[3] = {kNan, kNan, kNan};
+  std::vector<Propagation> scratch(kTimes);
   for (auto _ : state) {
-    std::size_t k = 0;
-    for (std::size_t s = 0; s < set.size(); ++s) {
-      for (int j = 0; j < kTimes; ++j, ++k) {
-        const Propagation p = set[s].propagate_minutes(times[s][j]);
-        if (p.ok())
-          sink.put(k, 0, p.state.r_km.data(), p.state.v_km_s.data());
-        else
-          sink.put(k, static_cast<int>(p.error), nan3, nan3);
-      }
-    }
+    for (std::size_t s = 0; s < set.size(); ++s) trakbox_day(set[s], times[s], sink, s * kTimes, batch, scratch);
     benchmark::ClobberMemory();
   }
-  state.SetLabel(subset_label(state.range(0)));
+  state.SetLabel(batch ? std::string(subset_label(state.range(0))) + ", " + batch_kernel_isa()
+                       : std::string(subset_label(state.range(0))));
   per_propagation(state, set.size() * kTimes);
-  if (state.range(0) == 0) {
+  if (!batch && state.range(0) == 0) {
     state.counters["max_dr_km"] = agreement().dr_km;
     state.counters["max_dv_km_s"] = agreement().dv_km_s;
     state.counters["codes_differ"] = static_cast<double>(agreement().codes_differ);
   }
 }
+void BM_PerCall_Catalogue_Trakbox(benchmark::State& state) { trakbox_catalogue(state, false); }
+void BM_Batch_Catalogue_Trakbox(benchmark::State& state) { trakbox_catalogue(state, true); }
 
-// ---- the catalogue through trakbox's batch interface (the kernel dispatch chooses)
-void BM_Batch_Catalogue_Trakbox(benchmark::State& state) {
-  const std::vector<Sgp4>& set = sats(state.range(0));
+// ---- both in one loop: set by set, Vallado's day then trakbox's (the order alternating), each
+// timed on the thread's CPU clock, so that the machine's load falls on both alike. Counters:
+// ns per propagation of each and their ratio. Arg as above; Arg 10 + k: trakbox's batch instead.
+double thread_cpu_ns() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) * 1e9 + static_cast<double>(ts.tv_nsec);
+}
+
+void BM_Ratio_Catalogue(benchmark::State& state) {
+  const bool batch = state.range(0) >= 10;
+  const std::int64_t which = state.range(0) % 10;
+  const std::vector<Sgp4>& set = sats(which);
+  std::vector<elsetrec> recs;
   std::vector<std::vector<double>> times;
-  for (const Sgp4& s : set) times.push_back(times_for(s.epoch_jd()));
-  Sink sink(set.size() * kTimes);
-  std::vector<Propagation> out(kTimes);
-  constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
-  const double nan3[3] = {kNan, kNan, kNan};
-  for (auto _ : state) {
-    std::size_t k = 0;
-    for (std::size_t s = 0; s < set.size(); ++s) {
-      propagate_batch(set[s], times[s], out);
-      for (int j = 0; j < kTimes; ++j, ++k) {
-        const Propagation& p = out[j];
-        if (p.ok())
-          sink.put(k, 0, p.state.r_km.data(), p.state.v_km_s.data());
-        else
-          sink.put(k, static_cast<int>(p.error), nan3, nan3);
-      }
-    }
-    benchmark::ClobberMemory();
+  for (const Sgp4& s : set) {
+    recs.push_back(vallado_init(s));
+    times.push_back(times_for(s.epoch_jd()));
   }
-  state.SetLabel(std::string(subset_label(state.range(0))) + ", " + batch_kernel_isa());
-  per_propagation(state, set.size() * kTimes);
+  Sink sink_v(kTimes), sink_t(kTimes);
+  std::vector<Propagation> scratch(kTimes);
+  double ns_v = 0.0, ns_t = 0.0;
+  bool vallado_first = true;
+  auto run_vallado = [&](std::size_t s) {
+    const double t0 = thread_cpu_ns();
+    vallado_day(recs[s], times[s], sink_v, 0);
+    benchmark::ClobberMemory();
+    ns_v += thread_cpu_ns() - t0;
+  };
+  auto run_trakbox = [&](std::size_t s) {
+    const double t0 = thread_cpu_ns();
+    trakbox_day(set[s], times[s], sink_t, 0, batch, scratch);
+    benchmark::ClobberMemory();
+    ns_t += thread_cpu_ns() - t0;
+  };
+  for (auto _ : state) {
+    for (std::size_t s = 0; s < set.size(); ++s) {
+      if (vallado_first) {
+        run_vallado(s);
+        run_trakbox(s);
+      } else {
+        run_trakbox(s);
+        run_vallado(s);
+      }
+      vallado_first = !vallado_first;
+    }
+  }
+  const double n = static_cast<double>(state.iterations()) * static_cast<double>(set.size() * kTimes);
+  state.counters["vallado_ns"] = ns_v / n;
+  state.counters["trakbox_ns"] = ns_t / n;
+  state.counters["ratio"] = ns_t / ns_v;
+  state.SetLabel(std::string(subset_label(which)) + (batch ? ", trakbox batch (" + std::string(batch_kernel_isa()) + ")"
+                                                           : ", trakbox per call"));
 }
 
 }  // namespace
 
+BENCHMARK(BM_Ratio_Catalogue)->Arg(0)->Arg(1)->Arg(2)->Arg(10)->Arg(11)->Arg(12)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_PerCall_ISS_Vallado);
 BENCHMARK(BM_PerCall_ISS_Trakbox);
 BENCHMARK(BM_PerCall_Catalogue_Vallado)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->MinTime(2.0);

@@ -18,6 +18,7 @@
 #include "orbit/elements.h"
 #include "orbit/observe.h"
 #include "orbit/passes.h"
+#include "orbit/sgp4_batch.h"
 #include "orbit/sgp4.h"
 #include "orbit/state_lines.h"
 #include "util/text.h"
@@ -378,37 +379,51 @@ int run_propagate(std::vector<std::string> args) {
 
   const orbit::Sgp4 sat(sats.front());
   // Lines are gathered and written 64 kB at a time; numbers are formatted with to_chars, which
-  // gives printf's characters at a fraction of its cost (bench_sgp4 BM_PropagateLine*).
+  // gives printf's characters at a fraction of its cost (bench_sgp4 BM_PropagateLine*). The states
+  // come 512 at a time from the batch propagator (orbit/sgp4_batch.h, vectorised).
   std::string buf;
   buf.reserve(1 << 17);
   auto flush = [&] {
     out(buf);
     buf.clear();
   };
-  auto emit = [&](double tsince) {
-    const orbit::Propagation p = sat.propagate_minutes(tsince);
-    if (!p.ok()) {
-      flush();
-      out(strprintf("# sgp4 error %d at tsince %.8f min (%s): %s\n", static_cast<int>(p.error), tsince,
-                    orbit::format_iso8601(orbit::add_minutes(sat.epoch(), tsince), 6).c_str(),
-                    orbit::describe(p.error)));
-      return false;
-    }
-    orbit::append_state_line(buf, tsince, p.state);
-    if (buf.size() >= (1u << 16)) flush();
-    return true;
-  };
   // Times start + i * step (multiplied, not summed, so no drift); a step that lands within
   // rounding of --stop counts as landing on it, so --stop is printed once.
   const double tol = 1e-9 * std::max(1.0, std::abs(*stop));
-  for (std::int64_t i = 0;; ++i) {
-    const double t = *start + static_cast<double>(i) * *step;
-    if (t >= *stop - tol) break;
-    if (!emit(t)) return kExitFailure;
+  constexpr std::size_t kBlock = 512;
+  std::vector<double> times;
+  std::vector<orbit::Propagation> states(kBlock);
+  times.reserve(kBlock);
+  std::int64_t i = 0;
+  bool last = false;
+  while (!last) {
+    times.clear();
+    while (times.size() < kBlock) {
+      const double t = *start + static_cast<double>(i) * *step;
+      if (t >= *stop - tol) {
+        times.push_back(*stop);
+        last = true;
+        break;
+      }
+      times.push_back(t);
+      ++i;
+    }
+    orbit::propagate_batch(sat, times, states);
+    for (std::size_t k = 0; k < times.size(); ++k) {
+      const orbit::Propagation& p = states[k];
+      if (!p.ok()) {
+        flush();
+        out(strprintf("# sgp4 error %d at tsince %.8f min (%s): %s\n", static_cast<int>(p.error), times[k],
+                      orbit::format_iso8601(orbit::add_minutes(sat.epoch(), times[k]), 6).c_str(),
+                      orbit::describe(p.error)));
+        return kExitFailure;
+      }
+      orbit::append_state_line(buf, times[k], p.state);
+      if (buf.size() >= (1u << 16)) flush();
+    }
   }
-  const bool ok = emit(*stop);
   flush();
-  return ok ? kExitOk : kExitFailure;
+  return kExitOk;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -478,9 +493,19 @@ int run_schedule(std::vector<std::string> args) {
                   "DATE       TIME", "AZ/EL", "Phase", "Doppler", "Range km", "Alt km", "Lat deg", "Lon deg"));
   }
   int status = kExitOk;
+  // The states come 512 at a time from the batch propagator (orbit/sgp4_batch.h).
+  constexpr std::int64_t kBlock = 512;
+  std::vector<double> tsince;
+  std::vector<orbit::Propagation> states(kBlock);
   for (std::int64_t i = 0; i < *count; ++i) {
     const UtcTime t = *start + step * i;
-    const orbit::Observation o = orbit::observe(sat, *station, t, eo);
+    if (i % kBlock == 0) {
+      tsince.clear();
+      for (std::int64_t j = i; j < std::min(*count, i + kBlock); ++j)
+        tsince.push_back(orbit::minutes_between(sat.epoch(), *start + step * j));
+      orbit::propagate_batch(sat, tsince, states);
+    }
+    const orbit::Observation o = orbit::observe(sat, *station, t, states[static_cast<std::size_t>(i % kBlock)], eo);
     if (!o.ok()) {
       std::fprintf(stderr, "trakbox schedule: %s: sgp4 error %d at %s: %s; no positions from then on\n",
                    choice_label(sats.front()).c_str(), static_cast<int>(o.error),

@@ -89,9 +89,12 @@ double doppler_shift_hz(double freq_hz, double range_rate_km_s) {
 }
 
 Observation observe(const Sgp4& sat, const Observer& o, UtcTime t, const EarthOrientation& eo) {
+  return observe(sat, o, t, sat.propagate(t), eo);
+}
+
+Observation observe(const Sgp4& sat, const Observer& o, UtcTime t, const Propagation& p, const EarthOrientation& eo) {
   Observation obs;
   obs.time = t;
-  const Propagation p = sat.propagate(t);
   obs.error = p.error;
   if (!p.ok()) return obs;
   obs.teme = p.state;

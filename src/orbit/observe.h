@@ -63,6 +63,9 @@ struct Observation {
 };
 
 Observation observe(const Sgp4& sat, const Observer& o, UtcTime t, const EarthOrientation& eo = {});
+// observe() for a propagation already made at t (by the batch propagator, orbit/sgp4_batch.h).
+Observation observe(const Sgp4& sat, const Observer& o, UtcTime t, const Propagation& p,
+                    const EarthOrientation& eo = {});
 
 // The Sun: low-precision solar coordinates (Astronomical Almanac, as in Vallado Algorithm 29),
 // position in TEME-aligned equatorial km (the difference to TEME is far below this model's error).

@@ -59,9 +59,8 @@ constexpr double kResonanceStepSquaredHalf = 259200.0;
 constexpr std::size_t kCheckpointStride = 1;
 constexpr std::size_t kCheckpointSteps = 732;
 
-// Remainder of x / 2pi with the sign of x, as C's fmod, which the reference uses throughout.
-// fmod is exact, so it returns x itself when |x| < 2pi: skipping the call there changes nothing.
-[[gnu::always_inline]] inline double wrap_two_pi(double x) { return std::fabs(x) < kTwoPi ? x : std::fmod(x, kTwoPi); }
+// fmod(x, 2pi), exactly, as the reference computes it throughout (detail::fmod_two_pi).
+[[gnu::always_inline]] inline double wrap_two_pi(double x) { return detail::fmod_two_pi(x); }
 
 using detail::SinCos;
 // sin and cos by detail::poly_sin_cos (inline, a few times cheaper than libm's sincos, within an ulp
@@ -75,17 +74,8 @@ using detail::SinCos;
 // sin and cos of (a + d) from those of a. The propagator's corrections are mostly tiny, and then a
 // short series for sin d and cos d (exact to rounding for |d| < 2e-3) saves a libm call.
 [[gnu::always_inline]] inline SinCos add_angle(SinCos a, double d) {
-  double sd, cd;
-  if (std::fabs(d) < 2e-3) {
-    const double d2 = d * d;
-    sd = d * (1.0 - d2 / 6.0 * (1.0 - d2 / 20.0));
-    cd = 1.0 - d2 / 2.0 * (1.0 - d2 / 12.0);
-  } else {
-    const SinCos e = sin_cos(d);
-    sd = e.s;
-    cd = e.c;
-  }
-  return {a.s * cd + a.c * sd, a.c * cd - a.s * sd};
+  const SinCos e = std::fabs(d) < detail::kSmallAngle ? detail::small_angle_sin_cos(d) : sin_cos(d);
+  return {a.s * e.c + a.c * e.s, a.c * e.c - a.s * e.s};
 }
 
 // Greenwich mean sidereal time (IAU-82) from a single Julian date, as the reference computes the

@@ -35,10 +35,10 @@ using detail::SinCos;
 // two agree to rounding where most of the propagator's corrections are.
 [[gnu::always_inline]] inline SinCos add_angle(SinCos a, double d) {
   const SinCos e = sin_cos(d);
-  const double d2 = d * d;
-  const bool small = std::fabs(d) < 2e-3;
-  const double sd = small ? d * (1.0 - d2 / 6.0 * (1.0 - d2 / 20.0)) : e.s;
-  const double cd = small ? 1.0 - d2 / 2.0 * (1.0 - d2 / 12.0) : e.c;
+  const SinCos small = detail::small_angle_sin_cos(d);
+  const bool is_small = std::fabs(d) < detail::kSmallAngle;
+  const double sd = is_small ? small.s : e.s;
+  const double cd = is_small ? small.c : e.c;
   return {a.s * cd + a.c * sd, a.c * cd - a.s * sd};
 }
 

@@ -3,6 +3,7 @@
 // loops the compiler vectorises, and the scalar code keeps its results to the bit.
 #pragma once
 #include <cmath>
+#include <cstdint>
 
 namespace tb::orbit::detail {
 
@@ -41,6 +42,43 @@ inline constexpr double kReducibleAngle = 1.6e6;  // rad: |x| up to this is redu
   const double sin_abs = odd ? c : s;
   const double cos_abs = odd ? s : c;
   return {q >= 2.0 ? -sin_abs : sin_abs, (q == 1.0 || q == 2.0) ? -cos_abs : cos_abs};
+}
+
+// sin d and cos d for |d| < 2e-3 (kSmallAngle) by a short series, exact to rounding there: the
+// propagator's corrections to angles whose sine and cosine are known are mostly that small. The
+// coefficients multiply (a division by 6, 12 or 20 would not be replaced by one, and its latency
+// sits on the propagator's longest chain).
+inline constexpr double kSmallAngle = 2e-3;
+[[gnu::always_inline]] inline SinCos small_angle_sin_cos(double d) {
+  const double d2 = d * d;
+  return {d * (1.0 - d2 * (1.0 / 6.0) * (1.0 - d2 * (1.0 / 20.0))), 1.0 - d2 * 0.5 * (1.0 - d2 * (1.0 / 12.0))};
+}
+
+// Remainder of x / 2pi with the sign of x, exactly C's fmod(x, 2pi), which the reference uses
+// throughout. fmod is exact, so it returns x itself when |x| < 2pi. Below 2^26 turns the remainder
+// is x - k 2pi with k = trunc(x / 2pi), computed exactly without a call: 2pi split in a 26-bit and a
+// 27-bit part makes both products exact, x - k hi is exact (Sterbenz), and the result, being
+// representable, is what the last subtraction gives; a k one off (x / 2pi rounded across an integer)
+// shows as a remainder outside [0, 2pi) and is corrected. unit_orbit compares it with fmod.
+[[gnu::always_inline]] inline double fmod_two_pi(double x) {
+  constexpr double kTwoPiDouble = 6.28318530717958647693;  // the double nearest 2pi
+  constexpr double kHi = 0x1.921fb5p+2;      // 2pi's leading 26 bits
+  constexpr double kLo = 0x1.110b46p-24;     // the rest: kHi + kLo == 2pi exactly
+  static_assert(kHi + kLo == kTwoPiDouble);
+  constexpr double kMaxTurns = 67108864.0;   // 2^26
+  const double ax = std::fabs(x);
+  if (ax < kTwoPiDouble) return x;
+  if (!(ax < kMaxTurns * kTwoPiDouble)) return std::fmod(x, kTwoPiDouble);  // also NaN
+  double k = static_cast<double>(static_cast<std::int64_t>(ax * (1.0 / kTwoPiDouble)));
+  double r = (ax - k * kHi) - k * kLo;
+  if (r < 0.0) {
+    k -= 1.0;
+    r = (ax - k * kHi) - k * kLo;
+  } else if (r >= kTwoPiDouble) {
+    k += 1.0;
+    r = (ax - k * kHi) - k * kLo;
+  }
+  return x < 0.0 ? -r : r;
 }
 
 // The unit position vector u and the unit vector v along the track (the paper's ux, uy, uz and
