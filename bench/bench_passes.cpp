@@ -1,9 +1,13 @@
 // One day of passes for a whole catalogue from one station: the pass search against the naive
-// one-minute stepping. Run a Release build: bench_passes --benchmark_counters_tabular=true
+// one-minute stepping, and against SGP4 alone at the very times the search propagates (what a step
+// costs beyond its propagation). Run a Release build: bench_passes --benchmark_counters_tabular=true
 #include <benchmark/benchmark.h>
 #include "test_paths.h"  // TRAKBOX_SOURCE_DIR, ...
 
+#include <time.h>
+
 #include <cmath>
+#include <cstddef>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -47,22 +51,100 @@ std::vector<Sgp4> catalogue(std::size_t n) {
   return out;
 }
 
-void search(benchmark::State& state, const std::vector<Sgp4>& sats) {
-  long passes = 0, props = 0;
-  for (auto _ : state) {
-    passes = 0;
-    props = 0;
-    for (const Sgp4& s : sats) {
-      PassSearchStats stats;
-      const std::vector<Pass> p = find_passes(s, kStation, kStart, kStop, {}, {}, stats);
-      passes += static_cast<long>(p.size());
-      props += stats.propagations;
-      benchmark::DoNotOptimize(p.data());
+// This thread's CPU time, ns (what the benchmark library reports as CPU time, per part of an iteration).
+double thread_cpu_ns() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) * 1e9 + static_cast<double>(ts.tv_nsec);
+}
+
+// The (set, tsince) pairs the search propagates, in its order: tsince[first[i] .. first[i + 1]) for set i.
+struct Trace {
+  std::vector<double> tsince;
+  std::vector<std::size_t> first;
+};
+Trace record(const std::vector<Sgp4>& sats) {
+  Trace tr;
+  tr.first.push_back(0);
+  for (const Sgp4& s : sats) {
+    PassSearchStats stats;
+    stats.tsince_minutes = &tr.tsince;
+    find_passes(s, kStation, kStart, kStop, {}, {}, stats);
+    tr.first.push_back(tr.tsince.size());
+  }
+  return tr;
+}
+
+// One day of passes for every set; returns the propagations.
+long search_once(const std::vector<Sgp4>& sats, long& passes) {
+  long props = 0;
+  passes = 0;
+  for (const Sgp4& s : sats) {
+    PassSearchStats stats;
+    const std::vector<Pass> p = find_passes(s, kStation, kStart, kStop, {}, {}, stats);
+    passes += static_cast<long>(p.size());
+    props += stats.propagations;
+    benchmark::DoNotOptimize(p.data());
+  }
+  return props;
+}
+
+// SGP4 alone at the recorded times; returns the propagations.
+long replay_once(const std::vector<Sgp4>& sats, const Trace& tr) {
+  for (std::size_t i = 0; i < sats.size(); ++i) {
+    for (std::size_t k = tr.first[i]; k < tr.first[i + 1]; ++k) {
+      Propagation p = sats[i].propagate_minutes(tr.tsince[k]);
+      benchmark::DoNotOptimize(p);
     }
   }
+  return static_cast<long>(tr.tsince.size());
+}
+
+void search(benchmark::State& state, const std::vector<Sgp4>& sats) {
+  long passes = 0, props = 0;
+  for (auto _ : state) props = search_once(sats, passes);
   state.counters["sets"] = static_cast<double>(sats.size());
   state.counters["passes"] = static_cast<double>(passes);
   state.counters["props/set"] = static_cast<double>(props) / static_cast<double>(sats.size());
+  state.counters["s/step"] = benchmark::Counter(static_cast<double>(props),
+                                                benchmark::Counter::kIsIterationInvariantRate |
+                                                    benchmark::Counter::kInvert);
+}
+
+// SGP4 alone, at exactly the (set, tsince) pairs the search propagates.
+void sgp4_only(benchmark::State& state, const std::vector<Sgp4>& sats) {
+  static const Trace tr = record(sats);
+  long props = 0;
+  for (auto _ : state) props = replay_once(sats, tr);
+  state.counters["sets"] = static_cast<double>(sats.size());
+  state.counters["props/set"] = static_cast<double>(props) / static_cast<double>(sats.size());
+  state.counters["s/sgp4"] = benchmark::Counter(static_cast<double>(props),
+                                                benchmark::Counter::kIsIterationInvariantRate |
+                                                    benchmark::Counter::kInvert);
+}
+
+// Both in every iteration, alternating (the machine's speed drifts between benchmarks): CPU ns per
+// search step, per SGP4 call at the same times, and their ratio.
+void step_ratio(benchmark::State& state, const std::vector<Sgp4>& sats) {
+  static const Trace tr = record(sats);
+  double search_ns = 0.0, sgp4_ns = 0.0;
+  long props = 0, passes = 0, replayed = 0;
+  for (auto _ : state) {
+    const double t0 = thread_cpu_ns();
+    props += search_once(sats, passes);
+    const double t1 = thread_cpu_ns();
+    replayed += replay_once(sats, tr);
+    sgp4_ns += thread_cpu_ns() - t1;
+    search_ns += t1 - t0;
+  }
+  state.counters["sets"] = static_cast<double>(sats.size());
+  state.counters["passes"] = static_cast<double>(passes);
+  state.counters["props/set"] =
+      static_cast<double>(props) / static_cast<double>(state.iterations()) / static_cast<double>(sats.size());
+  const double step = search_ns / static_cast<double>(props), sgp4 = sgp4_ns / static_cast<double>(replayed);
+  state.counters["ns/step"] = step;
+  state.counters["ns/sgp4"] = sgp4;
+  state.counters["step/sgp4"] = step / sgp4;
 }
 
 // The baseline: propagate every minute, rotate to Earth-fixed, elevation; count the intervals up.
@@ -91,6 +173,14 @@ void BM_Passes_RealCatalogue(benchmark::State& state) {
   static const std::vector<Sgp4> sats = catalogue(real_sets().size());
   search(state, sats);
 }
+void BM_Passes_Sgp4Only_RealCatalogue(benchmark::State& state) {
+  static const std::vector<Sgp4> sats = catalogue(real_sets().size());
+  sgp4_only(state, sats);
+}
+void BM_PassStep_Ratio_RealCatalogue(benchmark::State& state) {
+  static const std::vector<Sgp4> sats = catalogue(real_sets().size());
+  step_ratio(state, sats);
+}
 void BM_Passes_Catalogue10k(benchmark::State& state) {
   static const std::vector<Sgp4> sats = catalogue(10000);
   search(state, sats);
@@ -107,6 +197,8 @@ void BM_MinuteSteps_Catalogue10k(benchmark::State& state) {
 }  // namespace
 
 BENCHMARK(BM_Passes_RealCatalogue)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Passes_Sgp4Only_RealCatalogue)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PassStep_Ratio_RealCatalogue)->Unit(benchmark::kMillisecond)->MinTime(3.0);
 BENCHMARK(BM_Passes_Catalogue10k)->Unit(benchmark::kMillisecond)->MinTime(3.0);
 BENCHMARK(BM_MinuteSteps_RealCatalogue)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_MinuteSteps_Catalogue10k)->Unit(benchmark::kMillisecond)->Iterations(2);

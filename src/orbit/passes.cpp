@@ -70,16 +70,20 @@ Searcher::Searcher(const Sgp4& sat, const Observer& o, UtcTime start, UtcTime st
   sin_e_low_ = std::sin(e_low_);
   cos_e_high_ = std::cos(e_high_);
   sin_e_high_ = std::sin(e_high_);
+  vel_err_ = kVelocityErrKmS + kVelocityErrPerEcc * sat.elements().eccentricity;
   if (span_ <= 0.0 || sat.init_error() != Sgp4Error::none) done_ = true;
 }
 
 bool Searcher::eval(double t, Sample& out) {
   ++evals_;
-  const Propagation p = sat_.propagate_minutes(tsince0_ + t / 60.0);
+  const double tsince = tsince0_ + t / 60.0;
+  if (trace_ != nullptr) trace_->push_back(tsince);
+  const Propagation p = sat_.propagate_minutes(tsince);
   if (!p.ok()) return false;
   // TEME -> pseudo-Earth-fixed as teme_to_ecef does it.
-  double c, sn;
-  sin_cos(gmst0_ + gmst_rate_ * t, sn, c);
+  // SGP4's own inlined sine and cosine (1 ulp), a fraction of libm's sincos.
+  const SinCos rot = poly_sin_cos(gmst0_ + gmst_rate_ * t);
+  const double c = rot.c, sn = rot.s;
   const Vec3& rt = p.state.r_km;
   const Vec3& vt = p.state.v_km_s;
   StateVector& e = out.ecef;
@@ -88,8 +92,10 @@ bool Searcher::eval(double t, Sample& out) {
               -sn * vt[0] + c * vt[1] - kEarthRotationRadS * e.r_km[0], vt[2]};
   const Vec3 rho = sub(e.r_km, site_);
   out.t = t;
+  out.angles_have = 0;
   out.s = norm(rho);
   const double inv_s = 1.0 / out.s;
+  out.fdot_err = vel_err_ / out.s;
   const double f = dot(rho, up_) * inv_s;
   out.sdot = dot(rho, e.v_km_s) * inv_s;
   out.F = f - sin_h_;
@@ -101,11 +107,14 @@ bool Searcher::eval(double t, Sample& out) {
   const double w2 = kEarthRotationRadS * kEarthRotationRadS;
   const double cxy = w2 - ir3, cz = ir3 * e.r_km[2];
   out.c0 = std::sqrt(cxy * cxy * (e.r_km[0] * e.r_km[0] + e.r_km[1] * e.r_km[1]) + cz * cz);
-  // f'' = a.(z - f u) / s - |u'|^2 f - 2 (s'/s) f', a = gravity + centrifugal + Coriolis.
-  const Vec3 a = accel(e);
+  // f'' = a.(z - f u) / s - |u'|^2 f - 2 (s'/s) f', a = gravity + centrifugal + Coriolis (accel(e),
+  // reusing cxy = w2 - mu / r^3).
+  const Vec3 a = {cxy * e.r_km[0] + 2.0 * kEarthRotationRadS * e.v_km_s[1],
+                  cxy * e.r_km[1] - 2.0 * kEarthRotationRadS * e.v_km_s[0], (cxy - w2) * e.r_km[2]};
   const double u2 = std::max(0.0, v2 - out.sdot * out.sdot) * inv_s * inv_s;
   out.Fddot = (dot(a, up_) - f * dot(a, rho) * inv_s) * inv_s - u2 * f - 2.0 * out.sdot * inv_s * out.Fdot;
-  out.cos_theta = dot(e.r_km, us_) / out.r;
+  out.du_x = dot(us_, e.r_km);
+  out.cos_theta = out.du_x / out.r;
   const Vec3 hv = cross(rt, vt);  // inertial angular momentum, TEME
   out.h = norm(hv);
   const double inv_h = 1.0 / out.h;
@@ -114,7 +123,6 @@ bool Searcher::eval(double t, Sample& out) {
   out.w_z = w[2];
   // The satellite moves along W x r; ahead of the foot p of the station: cos(du) ~ us.r, sin ~ us.(r x W).
   out.du_y = dot(us_, cross(e.r_km, w));
-  out.du_x = dot(us_, e.r_km);
   return true;
 }
 
@@ -151,7 +159,8 @@ std::optional<Pass> Searcher::next_any() {
   }
   // Up: step to LOS (or the window end, or the end of the propagation).
   last_step_ = 30.0;  // the spans of the local bounds start afresh at each crossing
-  std::vector<Sample> samples;
+  std::vector<Sample>& samples = samples_;  // kept between passes: no allocation per pass
+  samples.clear();
   samples.reserve(24);
   samples.push_back(aos_s);
   double los_t = span_;
@@ -212,6 +221,7 @@ Searcher::Walk Searcher::walk(const Sample& from, bool below, std::vector<Sample
   // proof reaches it.
   std::optional<Sample> ahead;
   bool cross = false;
+  Sample n;  // the latest evaluation (outside the loop: a Sample is large, and eval fills it)
   Walk pending;
   for (;;) {
     if (cur.t >= span_) {
@@ -232,7 +242,6 @@ Searcher::Walk Searcher::walk(const Sample& from, bool below, std::vector<Sample
       ahead.reset();
       continue;
     }
-    Sample n;
     // Down, a jump beyond the window is tried at its end (which may prove there is no AOS left); up,
     // it is not tried (the window end ends the pass anyway).
     const double target = ahead ? -1.0 : speculative_target(cur, safe, below);
@@ -283,7 +292,7 @@ double Searcher::speculative_target(const Sample& s, double safe, bool below) co
   if (xp > safe && xp < 3.0 * safe + 30.0) return s.t + xp + 0.125 * tol_ + 0.002 * xp;
   if (safe < 300.0 && (below ? s.du_y > 0.0 : s.du_y < 0.0)) {
     const double rev = kTwoPi * r_max_ * r_max_ / h_min_;
-    const Angles g(s, false);
+    const Angles& g = angles(s, kDu);
     double xg = 0.0;
     if (below) {  // receding from the station's foot: to the next approach
       xg = along_track(s, g, rev, true, 0.0, kGuess);
@@ -338,6 +347,7 @@ std::vector<Pass> find_passes(const Sgp4& sat, const Observer& o, UtcTime start,
                               const PassOptions& options, const EarthOrientation& eo, PassSearchStats& stats) {
   std::vector<Pass> out;
   Searcher s(sat, o, start, stop, options, eo);
+  s.record_tsince(stats.tsince_minutes);
   while (auto p = s.next()) out.push_back(*p);
   stats.propagations += s.evaluations();
   return out;

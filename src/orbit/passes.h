@@ -24,6 +24,9 @@ struct Pass {
 // What a search cost, for benchmarks and tests.
 struct PassSearchStats {
   long propagations = 0;  // SGP4 calls
+  // When set, the tsince (minutes from epoch) of every SGP4 call is appended, in order: the
+  // benchmark replays them through SGP4 alone to measure what a step costs beyond the propagation.
+  std::vector<double>* tsince_minutes = nullptr;
 };
 
 // All passes overlapping [start, stop). A satellite always above the horizon (geostationary, in

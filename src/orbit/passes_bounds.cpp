@@ -56,7 +56,6 @@ void Searcher::init_bounds(const Sample& s0) {
   h_max_ = (1.0 + kMomentumMargin) * s0.h;
   derive();
   eccentric_ = sat_.elements().eccentricity > 0.05;
-  vel_err_ = kVelocityErrKmS + kVelocityErrPerEcc * sat_.elements().eccentricity;
 }
 
 void Searcher::widen(const Sample& s) {
@@ -82,6 +81,7 @@ void Searcher::widen(const Sample& s) {
 }
 
 void Searcher::derive() {
+  inv_h_min_ = 1.0 / h_min_;
   const double e_max = (r_max_ - r_min_) / (r_max_ + r_min_);
   const double v_in = kSpeedFactor * std::sqrt(kMu * (2.0 / r_min_ - 1.0 / r_max_));  // vis-viva, a <= r_max
   v_glob_ = v_in + kOmega * r_max_;
@@ -95,6 +95,17 @@ void Searcher::derive() {
   b_below_glob_ = a_glob_ / sb + 2.0 * v_glob_ * v_glob_ / (sb * sb);
   const double sa = std::max(r_min_ - rs_, 1.0);
   b_above_glob_ = a_glob_ / sa + 2.0 * v_glob_ * v_glob_ / (sa * sa);
+  // What along_track and the local bounds compute for a span long enough that the distance may take
+  // any value in [r_min_, r_max_]: the same arithmetic, done once.
+  glob_.pert = pert;
+  const double inv_r = 1.0 / r_min_;
+  glob_.lc = 2.0 * kMu * inv_r * inv_r * inv_r + kOmega * kOmega;
+  glob_.omega_w = r_max_ * pert / h_min_;
+  glob_.w_sat_lo = h_min_ / (r_max_ * r_max_);
+  glob_.w_sat_hi = h_max_ / (r_min_ * r_min_);
+  glob_.cos_lam_low = cos_lambda(r_max_, true, kAngleMargin);
+  glob_.cos_lam_high = cos_lambda(r_min_, false, -kAngleMargin);
+  glob_.floor_below = sb;
 }
 
 Searcher::Local Searcher::local(const Sample& s, double span) const {
@@ -104,9 +115,16 @@ Searcher::Local Searcher::local(const Sample& s, double span) const {
   // Earth-fixed acceleration = gravity + centrifugal (c, |c(t) - c0| <= lc |r(t) - r0|) + perturbations
   // + Coriolis (2 omega |v|, but perpendicular to v: it turns v without changing |v|). So
   // |v(t)| <= |v0| + span (c0 + pert + lc V span): a Gronwall bound when span is short.
-  const double inv_r = 1.0 / L.r_lo;
-  const double lc = 2.0 * kMu * inv_r * inv_r * inv_r + kOmega * kOmega;
-  const double pert = perturbation(L.r_lo, L.r_hi);
+  double lc, pert;
+  if (L.r_lo == r_min_) {  // derive() did this arithmetic
+    lc = glob_.lc;
+    pert = L.r_hi == r_max_ ? glob_.pert : perturbation(L.r_lo, L.r_hi);
+  } else {
+    const double inv_r = 1.0 / L.r_lo;
+    lc = 2.0 * kMu * inv_r * inv_r * inv_r + kOmega * kOmega;
+    pert = perturbation_inv(inv_r, L.r_hi);
+  }
+  L.pert = pert;
   const double den = 1.0 - lc * span * span;
   L.V = v_glob_;
   if (den > 0.25) L.V = std::min(v_glob_, (s.v + (s.c0 + pert) * span) / den);
@@ -126,7 +144,7 @@ double Searcher::curvature(const Sample& s, const Local& L, double span, double 
   const double K = L.V * L.V * inv_s * inv_s;
   const double crude = L.A * inv_s + 2.0 * K;
   const double f0 = std::abs(s.F + sin_h_);
-  const double d0 = std::abs(s.Fdot) + vel_err_ / s.s;
+  const double d0 = std::abs(s.Fdot) + s.fdot_err;
   const double S = std::min(L.V, std::abs(s.sdot) + (L.V * L.V * inv_s + L.A) * span);
   const double C = 2.0 * S * inv_s;
   const double den = 1.0 - C * span - 0.5 * K * span * span;
@@ -143,14 +161,21 @@ double Searcher::along_track(const Sample& s, const Angles& g, double span, bool
   struct {
     double r_lo, r_hi;
   } G = {std::max(r_min_, s.r - rdot_max_ * span), std::min(r_max_, s.r + rdot_max_ * span)};
+  const bool glob = G.r_lo == r_min_ && G.r_hi == r_max_;  // then derive() did the arithmetic below
+  // Reciprocals of the distances (multiplications stand in for divisions below: an ulp, far inside
+  // the margins).
+  const double ir_lo = glob ? 0.0 : 1.0 / G.r_lo, ir_hi = glob ? 0.0 : 1.0 / G.r_hi;
   // A satellite slower than the Earth's rotation may fall behind its foot (geostationary, a high
   // apogee): nothing to rely on.
-  if (h_min_ / (G.r_hi * G.r_hi) <= kOmega) return 0.0;
-  const double omega_w = G.r_hi * perturbation(G.r_lo, G.r_hi) / h_min_;
-  const double beta = g.beta, du = g.du;
+  const double w_sat_lo = glob ? glob_.w_sat_lo : h_min_ * ir_hi * ir_hi;
+  if (w_sat_lo <= kOmega) return 0.0;
+  const double omega_w = glob ? glob_.omega_w : G.r_hi * perturbation_inv(ir_lo, G.r_hi) * inv_h_min_;
+  const double du = g.du;
   const double beta_rate = kOmega * cos_phi_ + omega_w;
   const double db = beta_rate * span;
-  if (beta + db >= 1.4) return 0.0;
+  // Nothing when beta + db may reach 1.4 rad: then sin(beta) >= sin(1.4 - db) >=
+  // sin(1.4) (1 - db^2 / 2) - cos(1.4) db (beta itself, an asin, is not needed).
+  if (g.sin_b >= 0.9854497299884601 * (1.0 - 0.5 * db * db) - 0.16996714290024104 * db) return 0.0;
   // cos(beta + db) >= cos(beta) (1 - db^2/2) - sin(beta) db, cos(beta - db) <= cos(beta) + sin(beta) db:
   // bounds on the smallest and largest cos(beta) over the span, each on the safe side where used.
   const double cos_beta_hi = g.cos_b * (1.0 - 0.5 * db * db) - g.sin_b * db;
@@ -161,19 +186,20 @@ double Searcher::along_track(const Sample& s, const Angles& g, double span, bool
   // W_z changes only as the plane turns, sin(beta) at most at beta_rate.
   const double n0 = s.w_z - us_[2] * s.sin_beta;
   const double dn = (omega_w + std::abs(us_[2]) * beta_rate) * span;
-  const double inv_hi2 = 1.0 / (cos_beta_hi * cos_beta_hi), inv_lo2 = 1.0 / (cos_beta_lo * cos_beta_lo);
+  const double inv_hi = 1.0 / cos_beta_hi, inv_lo = 1.0 / cos_beta_lo;
+  const double inv_hi2 = inv_hi * inv_hi, inv_lo2 = inv_lo * inv_lo;
   auto over_cos2 = [&](double n) { return n >= 0.0 ? n * inv_hi2 : n * inv_lo2; };
-  const double turn = 2.0 * omega_w / cos_beta_hi;  // the plane's turning moves the foot too
+  const double turn = 2.0 * omega_w * inv_hi;  // the plane's turning moves the foot too
   const double foot_hi = kOmega * over_cos2(n0 + dn) + turn;
   const double foot_lo = kOmega * -over_cos2(-(n0 - dn)) - turn;
-  const double w_lo = h_min_ / (G.r_hi * G.r_hi) - foot_hi, w_hi = h_max_ / (G.r_lo * G.r_lo) - foot_lo;
+  const double w_lo = w_sat_lo - foot_hi, w_hi = (glob ? glob_.w_sat_hi : h_max_ * ir_lo * ir_lo) - foot_lo;
   if (w_lo <= 0.0) return 0.0;
   double x = 0.0;
   if (below) {
     // Up needs theta <= lam <= 90 deg, so |du| <= u with cos(u) = cos(lam) / cos(beta_lo).
-    const double cos_lam = cos_lambda(G.r_hi, true, kAngleMargin);
+    const double cos_lam = glob ? glob_.cos_lam_low : cos_lambda(G.r_hi, true, kAngleMargin);
     if (cos_lam <= 0.0) return 0.0;
-    const double c = cos_lam / cos_beta_lo;
+    const double c = cos_lam * inv_lo;
     if (c >= 1.0) return span;
     const double u = fast_acos(c) + 2.0 * kFastAtanErr;  // wider by the errors of u and du
     if (mode == kBack) {
@@ -186,11 +212,12 @@ double Searcher::along_track(const Sample& s, const Angles& g, double span, bool
     }
   } else {
     // Up is certain while theta <= lam_in: while |du| <= u with cos(u) = cos(lam_in) / cos(beta_hi).
-    const double cos_lam = cos_lambda(G.r_lo, false, -kAngleMargin);
+    const double cos_lam = glob ? glob_.cos_lam_high : cos_lambda(G.r_lo, false, -kAngleMargin);
     if (cos_lam <= 0.0 || cos_lam >= 1.0) return 0.0;
-    const double c = cos_lam / cos_beta_hi;
+    const double c = cos_lam * inv_hi;
     if (c >= 1.0) return 0.0;
-    if (du > 0.0 && s.du_x < c * std::hypot(s.du_x, s.du_y)) return 0.0;  // du > u: nothing certain
+    // du > u: nothing certain (sqrt in place of hypot: du_x, du_y are of the order of 1e4 km).
+    if (du > 0.0 && s.du_x < c * std::sqrt(s.du_x * s.du_x + s.du_y * s.du_y)) return 0.0;
     const double u = fast_acos(c) - 2.0 * kFastAtanErr;  // narrower by the errors of u and du
     if (mode == kBack) {
       if (std::abs(du) <= u) x = (du + u) / w_hi;
@@ -202,7 +229,7 @@ double Searcher::along_track(const Sample& s, const Angles& g, double span, bool
 }
 
 double Searcher::step_below(const Sample& s) {
-  const Angles g(s, true);
+  const Angles& g = angles(s, kDu | kBeta | kTheta);
   const double theta = g.theta, beta = g.beta;
   const double d = s.Fdot + fdot_err(s);
   // Global constants: valid for any step.
@@ -216,14 +243,15 @@ double Searcher::step_below(const Sample& s) {
     // Close: local constants over a span, about twice the last step, then one fitted to the result.
     auto local_step = [&](double span) {
       const Local L = local(s, span);
-      const double lam = lambda(L.r_hi, true) + kAngleMargin;
-      const double omega_w = L.r_hi * perturbation(L.r_lo, L.r_hi) / h_min_;
-      const double s_lo = std::max(range_floor_below(L.r_lo), s.s - L.V * span);
-      const double loc = std::max({(theta - lam) * L.r_lo / L.V, (beta - lam) / (kOmega * cos_phi_ + omega_w),
-                                   envelope_root(s.F, d, curvature(s, L, span, s_lo))});
+      const double lam = L.r_hi == r_max_ ? lambda_glob_ : lambda(L.r_hi, true) + kAngleMargin;
+      const double s_lo = std::max(floor_below(L.r_lo), s.s - L.V * span);
+      // The envelope's root is positive (F < 0): the angle bounds count only when they are too.
+      double loc = envelope_root(s.F, d, curvature(s, L, span, s_lo));
+      if (theta > lam) loc = std::max(loc, (theta - lam) * L.r_lo / L.V);
+      if (beta > lam) loc = std::max(loc, (beta - lam) / (kOmega * cos_phi_ + L.r_hi * L.pert / h_min_));
       return std::min(loc, span);
     };
-    best = std::max(best, fitted_span(local_step));
+    best = fitted_span(local_step, best);
     // Along track again, over a span fitted to the result (tighter).
     if (x > 0.0) best = std::max(best, along_track(s, g, std::max(1.5 * x, 60.0), true, best));
   }
@@ -235,7 +263,7 @@ double Searcher::step_above(const Sample& s) {
   double best = envelope_root(s.F, d, b_above_glob_);
   // Along track: a pass lasts at most about 2 lam / w; from a quarter revolution to fitted spans.
   const double rev = kTwoPi * r_max_ * r_max_ / h_min_;
-  const Angles g(s, false);
+  const Angles& g = angles(s, kDu);
   double x = along_track(s, g, 0.25 * rev, false, best);
   if (x > 0.0) {  // a span fitted to the result is tighter
     best = std::max(best, x);
@@ -248,7 +276,7 @@ double Searcher::step_above(const Sample& s) {
     const double s_lo = std::max({L.r_lo - rs_, s.s - L.V * span, 1.0});
     return std::min(envelope_root(s.F, d, curvature(s, L, span, s_lo)), span);
   };
-  best = std::max(best, fitted_span(local_step));
+  best = fitted_span(local_step, best);
   return kStepSafety * best;
 }
 
@@ -257,12 +285,15 @@ double Searcher::reach(const Sample& s, double span, int dir) const {
   const Local L = local(s, span);
   const bool below = s.F < 0.0;
   const double d = dir * s.Fdot + (below ? fdot_err(s) : -fdot_err(s));
-  const double s_lo = below ? std::max(range_floor_below(L.r_lo), s.s - L.V * span)
+  const double s_lo = below ? std::max(floor_below(L.r_lo), s.s - L.V * span)
                             : std::max({L.r_lo - rs_, s.s - L.V * span, 1.0});
   double x = envelope_root(s.F, d, curvature(s, L, span, s_lo));
   if (x >= span) return span;
-  const Angles g(s, below);
-  if (below) x = std::max(x, (g.theta - lambda(L.r_hi, true) - kAngleMargin) * L.r_lo / L.V);
+  const Angles& g = angles(s, below ? kDu | kTheta : kDu);
+  if (below) {
+    const double lam = L.r_hi == r_max_ ? lambda_glob_ : lambda(L.r_hi, true) + kAngleMargin;
+    x = std::max(x, (g.theta - lam) * L.r_lo / L.V);
+  }
   if (x < span && dir < 0) x = std::max(x, along_track(s, g, span, below, 0.0, kBack));
   return std::min(span, x);
 }

@@ -5,11 +5,13 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "orbit/constants.h"
 #include "orbit/geometry.h"
 #include "orbit/passes.h"
+#include "orbit/sgp4_common.h"  // poly_sin_cos
 
 namespace tb::orbit::detail {
 
@@ -34,15 +36,6 @@ inline constexpr double kTaylorAngle = 5e-7;        // rad: error allowed to the
 inline constexpr double kFlatTopShift = 10.0;       // s: flatter maxima are found from F alone
 inline constexpr double kModelStep = 2.0;           // s: a crossing this close is taken from the quadratic model
 
-inline void sin_cos(double x, double& s, double& c) {
-#if defined(__GNUC__) && !defined(__clang__)  // clang has no __builtin_sincos (it fuses sin+cos itself)
-  __builtin_sincos(x, &s, &c);
-#else
-  s = std::sin(x);
-  c = std::cos(x);
-#endif
-}
-
 // atan2 from a minimax polynomial: |error| < 6e-9 rad (2e7 + 5e7 points against std::atan2, asin and
 // acos), a few times faster. Used only inside the bounds, which carry kFastAtanErr on the safe side.
 inline constexpr double kFastAtanErr = 2e-8;
@@ -51,14 +44,15 @@ inline double fast_atan2(double y, double x) {
   const double mx = std::max(ax, ay), mn = std::min(ax, ay);
   if (mx == 0.0) return 0.0;
   const double a = mn / mx, s = a * a;
-  double r = a * (0.9999998863824159 +
-                  s * (-0.33332597025546035 +
-                       s * (0.19985906731337763 +
-                            s * (-0.14161228977057888 +
-                                 s * (0.1049894535543198 +
-                                      s * (-0.07234855996589841 +
-                                           s * (0.03978120868453937 +
-                                                s * (-0.014401349336020525 + s * 0.0024567225469432352))))))));
+  // The polynomial in s by Estrin's scheme (pairs, then pairs of pairs): a third shorter a dependency
+  // chain than Horner's rule, the same coefficients.
+  const double s2 = s * s, s4 = s2 * s2, s8 = s4 * s4;
+  const double p01 = 0.9999998863824159 + s * -0.33332597025546035;
+  const double p23 = 0.19985906731337763 + s * -0.14161228977057888;
+  const double p45 = 0.1049894535543198 + s * -0.07234855996589841;
+  const double p67 = 0.03978120868453937 + s * -0.014401349336020525;
+  const double p07 = (p01 + s2 * p23) + s4 * (p45 + s2 * p67);
+  double r = a * (p07 + s8 * 0.0024567225469432352);
   if (ay > ax) r = 0.5 * kPi - r;
   if (x < 0.0) r = kPi - r;
   return y < 0.0 ? -r : r;
@@ -66,6 +60,15 @@ inline double fast_atan2(double y, double x) {
 inline double fast_asin(double x) { return fast_atan2(x, std::sqrt(std::max(0.0, 1.0 - x * x))); }
 inline double fast_acos(double x) { return fast_atan2(std::sqrt(std::max(0.0, 1.0 - x * x)), x); }
 
+
+// The angles of a sample that the geometric bounds use (computed only where a step is planned, once per
+// sample: see angles()).
+struct Angles {
+  double theta = 0.0;    // geocentric angle station - satellite, at most this
+  double beta = 0.0;     // at most this
+  double du = 0.0;       // in (-pi, pi] to kFastAtanErr (along_track allows)
+  double sin_b = 0.0, cos_b = 1.0;  // of beta
+};
 
 // One propagation, reduced to what the search needs.
 struct Sample {
@@ -77,6 +80,7 @@ struct Sample {
   double v = 0.0;          // Earth-fixed speed, km/s
   double s = 0.0;          // range, km
   double sdot = 0.0;       // range rate, km/s
+  double fdot_err = 0.0;   // bound on the error of Fdot from that of the SGP4 velocity: vel_err / s
   double c0 = 0.0;         // |point-mass gravity + centrifugal| at r, km/s^2
   double h = 0.0;          // |r x v| (inertial), km^2/s
   double cos_theta = 0.0;  // station direction . satellite direction
@@ -85,7 +89,27 @@ struct Sample {
   double du_y = 0.0, du_x = 0.0;  // atan2(du_y, du_x): angle of the satellite ahead of the station's foot
                                   // on the orbit plane
   StateVector ecef;
+  // angles(): which of them are computed (kDu, kBeta, kTheta bits).
+  mutable int angles_have = 0;
+  mutable Angles angles_cache;
 };
+
+// The sample's angles, each computed on first use: du, sin_b and cos_b always, beta and theta when asked.
+enum AngleNeed : int { kDu = 1, kBeta = 2, kTheta = 4 };
+inline const Angles& angles(const Sample& s, int need) {
+  Angles& g = s.angles_cache;
+  const int missing = (need | kDu) & ~s.angles_have;
+  if (missing == 0) return g;
+  if (missing & kDu) {
+    g.sin_b = std::min(std::abs(s.sin_beta), 1.0);
+    g.du = fast_atan2(s.du_y, s.du_x);
+    g.cos_b = std::sqrt(1.0 - g.sin_b * g.sin_b);
+  }
+  if (missing & kBeta) g.beta = std::max(0.0, fast_asin(g.sin_b) - kFastAtanErr);
+  if (missing & kTheta) g.theta = std::max(0.0, fast_acos(std::clamp(s.cos_theta, -1.0, 1.0)) - kFastAtanErr);
+  s.angles_have |= missing;
+  return g;
+}
 
 inline Vec3 accel(const StateVector& e);
 
@@ -111,20 +135,6 @@ inline Vec3 accel(const StateVector& e) {
           (k - kEarthRotationRadS * kEarthRotationRadS) * e.r_km[2]};
 }
 
-// The angles of a sample that the geometric bounds use (computed only where a step is planned).
-struct Angles {
-  double theta = 0.0;    // geocentric angle station - satellite (only when asked for), at most this
-  double beta, du;       // beta at most this; du in (-pi, pi] to kFastAtanErr (along_track allows)
-  double sin_b, cos_b;   // of beta
-  Angles(const Sample& s, bool with_theta)
-      : beta(std::max(0.0, fast_asin(std::min(std::abs(s.sin_beta), 1.0)) - kFastAtanErr)),
-        du(fast_atan2(s.du_y, s.du_x)),
-        sin_b(std::min(std::abs(s.sin_beta), 1.0)),
-        cos_b(std::sqrt(1.0 - sin_b * sin_b)) {
-    if (with_theta) theta = std::max(0.0, fast_acos(std::clamp(s.cos_theta, -1.0, 1.0)) - kFastAtanErr);
-  }
-};
-
 // The first x > 0 where F + d x + (b / 2) x^2 reaches 0 for F < 0 (an upper envelope), or where
 // F + d x - (b / 2) x^2 reaches 0 for F >= 0 (a lower envelope). b > 0.
 inline double envelope_root(double F, double d, double b) {
@@ -135,6 +145,13 @@ inline double envelope_root(double F, double d, double b) {
 // Perturbing acceleration bound (J2 with room for the higher zonals, Sun and Moon, drag), km/s^2.
 inline double perturbation(double r_lo, double r_hi) {
   const double q = kReSgp4 / r_lo;
+  const double q2 = q * q;
+  return (4.5 * kJ2 * kMu / (kReSgp4 * kReSgp4)) * q2 * q2 + 3e-13 * r_hi + 1e-8;
+}
+
+// The same from 1 / r_lo.
+inline double perturbation_inv(double inv_r_lo, double r_hi) {
+  const double q = kReSgp4 * inv_r_lo;
   const double q2 = q * q;
   return (4.5 * kJ2 * kMu / (kReSgp4 * kReSgp4)) * q2 * q2 + 3e-13 * r_hi + 1e-8;
 }
@@ -155,9 +172,11 @@ class Searcher {
     return std::nullopt;
   }
   long evaluations() const { return evals_; }
+  void record_tsince(std::vector<double>* into) { trace_ = into; }
 
  private:
-  struct Local { double r_lo, r_hi, V, A; };  // bounds valid over a span from a sample
+  struct Local { double r_lo, r_hi, V, A, pert; };  // bounds valid over a span from a sample (pert:
+                                                     // perturbation(r_lo, r_hi))
 
   std::optional<Pass> next_any();
   // How a walk (below) ended.
@@ -197,8 +216,9 @@ class Searcher {
   double lambda(double r, bool low) const;
   double cos_lambda(double r, bool low, double margin) const;
   double range_floor_below(double r) const;  // least range of a satellite at >= r below the horizon
+  double floor_below(double r) const { return r == r_min_ ? glob_.floor_below : range_floor_below(r); }
   double curvature(const Sample& s, const Local& L, double span, double s_lo) const;
-  double fdot_err(const Sample& s) const { return vel_err_ / s.s; }
+  double fdot_err(const Sample& s) const { return s.fdot_err; }
   // (d): the time, at most span, for which the satellite provably stays down (below) or up, given
   // that it provably does for `covered` seconds anyway; 0 if the bound says nothing.
   // mode kAhead: as above; kBack: the same looking back from s; kGuess: where a forward jump would
@@ -208,16 +228,25 @@ class Searcher {
                      Mode mode = kAhead) const;
   double step_below(const Sample& s);
   double step_above(const Sample& s);
-  // The best of step(span) (a bound valid over span, capped by it) for two spans: about twice the
-  // last step, then one fitted to what that gave.
+  // The best of `known` and step(span) (a bound valid over span, capped by it) for two spans: about
+  // twice the last step, then one fitted to what that gave. A span no longer than `known` cannot beat
+  // it and is not tried (the same result, without the work).
   template <class Step>
-  double fitted_span(const Step& step) const {
+  double fitted_span(const Step& step, double known) const {
     const double span0 = std::clamp(2.0 * last_step_, 20.0, 86400.0);
+    if (known >= 4.0 * span0) return known;  // every span below is at most 4 span0
     const double x0 = step(span0);
     const double span1 = x0 < span0 ? std::max(1.5 * x0, 20.0) : 4.0 * span0;
-    const double x1 = std::max(x0, step(span1));
-    // A step that fell well short of the last one: try the last one's span too.
-    return x1 < 0.5 * last_step_ ? std::max(x1, step(std::max(last_step_, 20.0))) : x1;
+    const bool try1 = span1 > known;
+    const double y1 = try1 ? step(span1) : 0.0;
+    const double x1 = std::max(x0, y1);
+    // A step that fell well short of the last one: try the last one's span too. The bounds only
+    // loosen as the span grows, so a longer span can do better than span1 only when span1 itself
+    // capped the step.
+    const double span2 = std::max(last_step_, 20.0);
+    const bool try2 = x1 < 0.5 * last_step_ && span2 > known && (!try1 || y1 >= span1 || span2 < span1);
+    const double x2 = try2 ? std::max(x1, step(span2)) : x1;
+    return std::max(known, x2);
   }
   // How long after (dir = 1) or before (dir = -1) s, at most span, F provably keeps its sign.
   double reach(const Sample& s, double span, int dir) const;
@@ -271,9 +300,12 @@ class Searcher {
   double cos_e_low_ = 1.0, sin_e_low_ = 0.0, cos_e_high_ = 1.0, sin_e_high_ = 0.0;
 
   // Orbit bounds (km, km/s, km/s^2, km^2/s) and what follows from them.
-  double r_min_ = 0.0, r_max_ = 0.0, h_min_ = 0.0, h_max_ = 0.0;
+  double r_min_ = 0.0, r_max_ = 0.0, h_min_ = 0.0, h_max_ = 0.0, inv_h_min_ = 0.0;
   double rdot_max_ = 0.0, v_glob_ = 0.0, a_glob_ = 0.0, lambda_glob_ = 0.0;
   double omega_a_glob_ = 0.0, omega_b_glob_ = 0.0, b_below_glob_ = 0.0, b_above_glob_ = 0.0;
+  struct {                   // derive()'s values of what the bounds compute from [r_min_, r_max_]
+    double pert, lc, omega_w, w_sat_lo, w_sat_hi, cos_lam_low, cos_lam_high, floor_below;
+  } glob_{};
   double vel_err_ = 0.0;     // bound on |SGP4 velocity - d/dt SGP4 position|, km/s
   bool eccentric_ = false;   // a pass may have several maxima: prove there is no higher one
   double last_step_ = 60.0;
@@ -281,7 +313,10 @@ class Searcher {
   bool started_ = false;
   bool done_ = false;
   Sample cur_{};             // the latest sample, down (except at the very start)
+  std::vector<Sample> samples_;                              // next_any's samples of a pass
+  std::vector<std::pair<std::size_t, std::size_t>> work_;  // finish_pass's intervals to examine
   long evals_ = 0;
+  std::vector<double>* trace_ = nullptr;  // PassSearchStats::tsince_minutes
 };
 
 }  // namespace tb::orbit::detail

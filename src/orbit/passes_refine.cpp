@@ -245,7 +245,8 @@ void Searcher::finish_pass(std::vector<Sample>& samples, Pass& p, double guess) 
   // Every local maximum: a change of sign of Fdot between two samples, or one hidden between samples
   // where Fdot keeps its sign (a turn of the cubic through both ends; for orbits where a pass may have
   // several maxima also wherever the second-order envelope leaves room above the best maximum).
-  std::vector<std::pair<std::size_t, std::size_t>> work;
+  std::vector<std::pair<std::size_t, std::size_t>>& work = work_;
+  work.clear();
   work.reserve(samples.size() + 8);
   for (std::size_t i = 0; i + 1 < samples.size(); ++i) work.emplace_back(i, i + 1);
   int budget = 400;

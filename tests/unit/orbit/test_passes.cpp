@@ -564,3 +564,29 @@ TEST_CASE("The search is cheap: propagations per set-day") {
   MESSAGE(n << " sets from Darmstadt: " << mean << " propagations per set-day");
   CHECK(mean < 200.0);
 }
+
+TEST_CASE("PassSearchStats records the time of every propagation, without changing the search") {
+  // bench_passes replays these through SGP4 alone to measure what a step costs beyond it.
+  const Sgp4 noaa(set(33591));
+  PassSearchStats plain;
+  const std::vector<Pass> a = find_passes(noaa, kDarmstadt, kDay0, kDay1, {}, {}, plain);
+  std::vector<double> times;
+  PassSearchStats traced;
+  traced.tsince_minutes = &times;
+  const std::vector<Pass> b = find_passes(noaa, kDarmstadt, kDay0, kDay1, {}, {}, traced);
+  CHECK(traced.propagations == plain.propagations);
+  REQUIRE(times.size() == static_cast<std::size_t>(traced.propagations));
+  const double t0 = minutes_between(noaa.epoch(), kDay0), t1 = minutes_between(noaa.epoch(), kDay1);
+  CHECK(times.front() == t0);  // the search starts at the window start
+  for (double t : times) {
+    CHECK(t >= t0);
+    CHECK(t <= t1);
+  }
+  REQUIRE(a.size() == b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    CHECK(a[i].aos == b[i].aos);
+    CHECK(a[i].tca == b[i].tca);
+    CHECK(a[i].los == b[i].los);
+    CHECK(a[i].max_el_deg == b[i].max_el_deg);
+  }
+}
