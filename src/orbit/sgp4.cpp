@@ -434,6 +434,9 @@ void Sgp4::Model::initialise(double epoch, double no_kozai) {
   const double aycof_t = p.aycof, xlcof_t = p.xlcof, con41_t = p.con41, x1mth2_t = p.x1mth2, x7thm1_t = p.x7thm1;
   // Long-period periodics.
   const SinCos argp = sin_cos(p.argpp);
+  // The node's sine and cosine do not wait for Kepler's equation: the short-period correction is
+  // added to them at the end (see xnode), off the longest chain of the propagation.
+  const SinCos node0 = sin_cos(p.nodep);
   const double axnl = p.ep * argp.c;
   double temp = 1.0 / (am * (1.0 - p.ep * p.ep));
   const double aynl = p.ep * argp.s + temp * aycof_t;
@@ -476,7 +479,7 @@ void Sgp4::Model::initialise(double epoch, double no_kozai) {
 
   // Short-period periodics.
   const double mrt = rl * (1.0 - 1.5 * temp2 * betal * con41_t) + 0.5 * temp1 * x1mth2_t * cos2u;
-  const double xnode = p.nodep + 1.5 * temp2 * p.cosip * sin2u;
+  const double dnode = 1.5 * temp2 * p.cosip * sin2u;  // xnode = nodep + dnode
   const double mvt = rdotl - nm * temp1 * x1mth2_t * sin2u / kXke;
   const double rvdot = rvdotl + nm * temp1 * (x1mth2_t * cos2u + 1.5 * con41_t) / kXke;
 
@@ -485,7 +488,7 @@ void Sgp4::Model::initialise(double epoch, double no_kozai) {
   // reference's atan2(sinu, cosu), to which the short-period terms add small corrections.
   const double unit = 1.0 / std::sqrt(sinu * sinu + cosu * cosu);
   const SinCos s = add_angle({sinu * unit, cosu * unit}, -0.25 * temp2 * x7thm1_t * sin2u);
-  const SinCos node = sin_cos(xnode);
+  const SinCos node = add_angle(node0, dnode);
   const SinCos inc = add_angle({p.sinip, p.cosip}, 1.5 * temp2 * p.cosip * p.sinip * cos2u);
   const detail::Orientation o = detail::orientation(s, node, inc);
 
