@@ -2,7 +2,7 @@
 
 trakbox runs with its simulated rotator (real-time clock, so that motion is measured in wall time)
 and the Satrak server on a free loopback port. Two plain TCP clients send framed commands (the
-checksum computed here) and check each reply byte for byte; STATUS? and TPOS? are polled every
+checksum computed by the harness's own Satrak client) and check each reply and its checksum; STATUS? and TPOS? are polled every
 ~20 ms to measure what the antenna does:
 
   2. STEP=,1,0 / STEP=,-1,0 / STEP=,0,1 / STEP=,0,-1 move by the step (to a count: 0.35 deg az,
@@ -18,62 +18,35 @@ checksum computed here) and check each reply byte for byte; STATUS? and TPOS? ar
 import os
 import re
 import shutil
-import socket
 import subprocess
 import sys
 import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, CLOCK, SOURCE, Failure, check, free_port, reap, run_test  # noqa: E402
+from _tbharness import BIN, CLOCK, SOURCE, Failure, Satrak, check, free_port, reap, run_test  # noqa: E402
 
 AZ_COUNT = 360.0 / 1023  # factory span: one ADC count of azimuth, degrees
 EL_COUNT = 90.0 / 511
 
 
-def frame(payload):
-    cs = 0
-    for b in payload.encode():
-        cs ^= b
-    return b"$" + payload.encode() + b"*%02X\r\n" % cs
-
-
-class Client:
-    def __init__(self, port):
-        self.sock = socket.create_connection(("127.0.0.1", port), timeout=5)
-        self.buf = b""
-
-    def raw(self, payload):
-        """Sends one frame; returns the reply frame's bytes, CR LF included."""
-        self.sock.sendall(frame(payload))
-        while b"\n" not in self.buf:
-            chunk = self.sock.recv(4096)
-            if not chunk:
-                raise Failure(f"connection closed after {payload!r}")
-            self.buf += chunk
-        line, self.buf = self.buf.split(b"\n", 1)
-        return line + b"\n"
+class Client(Satrak):
+    """The harness's Satrak client (its own frames and checksums), with what these checks ask of it."""
 
     def exact(self, payload, reply):
-        """Sends `payload`; the reply must be exactly the frame of `reply`."""
-        got = self.raw(payload)
-        check(got == frame(reply), f"{frame(payload)!r} -> {got!r}, expected {frame(reply)!r}")
+        """Sends `payload`; the reply's payload must be exactly `reply` (its frame checked by ask)."""
+        got = self.ask(payload)
+        check(got == reply, f"{payload!r} -> {got!r}, expected {reply!r}")
         return got
 
     def fields(self, payload):
-        got = self.raw(payload)
-        m = re.fullmatch(rb"\$(.*)\*([0-9A-F]{2})\r\n", got)
-        check(m is not None and frame(m.group(1).decode()) == got, f"bad reply frame {got!r}")
-        return m.group(1).decode().split(",")[1:]
+        return self.ask(payload).split(",")[1:]
 
     def status(self):
         """(true az, el, X12, X13, X8) from STATUS?."""
         f = self.fields("STATUS?")
         check(len(f) == 16, f"STATUS? has 16 fields: {f}")
         return float(f[1]), float(f[2]), int(f[11]), int(f[12]), int(f[7])
-
-    def close(self):
-        self.sock.close()
 
 
 # A STATUS? that took longer than this to answer says trakbox was not running for a while (a busy
@@ -266,17 +239,9 @@ def main():
                          stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
     clients = []
     try:
-        deadline = time.time() + 15
-        while True:
-            try:
-                a = Client(port)
-                break
-            except OSError:
-                if time.time() > deadline:
-                    raise Failure("the Satrak server never answered")
-                time.sleep(0.2)
+        a = Client(port)  # waits up to 15 s for the server
         clients.append(a)
-        check(a.raw("VERSION?").startswith(b"$VERSION?,TRAKBOX SATRAK CU V"), "VERSION?")
+        check(a.ask("VERSION?").startswith("VERSION?,TRAKBOX SATRAK CU V"), "VERSION?")
         items_2_step(a)
         item_3_move_stop(a)
         b = Client(port)
