@@ -1,9 +1,10 @@
 """Satrak motion on the real program (issue 19, items 2, 3 and 7), with the exact bytes on the wire.
 
 trakbox runs with its simulated rotator (real-time clock, so that motion is measured in wall time)
-and the Satrak server on a free loopback port. Two plain TCP clients send framed commands (the
-checksum computed by the harness's own Satrak client) and check each reply and its checksum; STATUS? and TPOS? are polled every
-~20 ms to measure what the antenna does:
+and the Satrak server on a free loopback port. Two plain TCP clients (the harness's own Satrak
+client: frames and checksums computed by the test) send framed commands and check each reply's
+checksum and payload exactly; STATUS? and TPOS? are polled every ~20 ms to measure what the
+antenna does:
 
   2. STEP=,1,0 / STEP=,-1,0 / STEP=,0,1 / STEP=,0,-1 move by the step (to a count: 0.35 deg az,
      0.18 deg el), although 1 deg of azimuth is inside the 3-count dead band; so does a GOTO
