@@ -107,10 +107,9 @@ bool Searcher::eval(double t, Sample& out) {
   const double w2 = kEarthRotationRadS * kEarthRotationRadS;
   const double cxy = w2 - ir3, cz = ir3 * e.r_km[2];
   out.c0 = std::sqrt(cxy * cxy * (e.r_km[0] * e.r_km[0] + e.r_km[1] * e.r_km[1]) + cz * cz);
-  // f'' = a.(z - f u) / s - |u'|^2 f - 2 (s'/s) f', a = gravity + centrifugal + Coriolis (accel(e),
-  // reusing cxy = w2 - mu / r^3).
-  const Vec3 a = {cxy * e.r_km[0] + 2.0 * kEarthRotationRadS * e.v_km_s[1],
-                  cxy * e.r_km[1] - 2.0 * kEarthRotationRadS * e.v_km_s[0], (cxy - w2) * e.r_km[2]};
+  // f'' = a.(z - f u) / s - |u'|^2 f - 2 (s'/s) f', a = gravity + centrifugal + Coriolis, with
+  // cxy = w2 - mu / r^3 already at hand.
+  const Vec3 a = accel(e, cxy);
   const double u2 = std::max(0.0, v2 - out.sdot * out.sdot) * inv_s * inv_s;
   out.Fddot = (dot(a, up_) - f * dot(a, rho) * inv_s) * inv_s - u2 * f - 2.0 * out.sdot * inv_s * out.Fdot;
   out.du_x = dot(us_, e.r_km);

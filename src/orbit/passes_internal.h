@@ -127,12 +127,15 @@ inline StateVector taylor(const StateVector& e, double dt) {
 
 // Earth-fixed acceleration with point-mass gravity: gravity + centrifugal + Coriolis, km/s^2 (for
 // Newton and Taylor steps, never for bounds).
-inline Vec3 accel(const StateVector& e) {
-  const double r2 = dot(e.r_km, e.r_km);
-  const double k = kEarthRotationRadS * kEarthRotationRadS - kMu / (r2 * std::sqrt(r2));
+// k = w^2 - mu / r^3, for a caller that has it already.
+inline Vec3 accel(const StateVector& e, double k) {
   return {k * e.r_km[0] + 2.0 * kEarthRotationRadS * e.v_km_s[1],
           k * e.r_km[1] - 2.0 * kEarthRotationRadS * e.v_km_s[0],
           (k - kEarthRotationRadS * kEarthRotationRadS) * e.r_km[2]};
+}
+inline Vec3 accel(const StateVector& e) {
+  const double r2 = dot(e.r_km, e.r_km);
+  return accel(e, kEarthRotationRadS * kEarthRotationRadS - kMu / (r2 * std::sqrt(r2)));
 }
 
 // The first x > 0 where F + d x + (b / 2) x^2 reaches 0 for F < 0 (an upper envelope), or where
