@@ -6,7 +6,6 @@
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/asio/steady_timer.hpp>
 #include <boost/asio/write.hpp>
-#include <deque>
 #include <set>
 
 #include <spdlog/spdlog.h>
@@ -57,7 +56,7 @@ class Session : public std::enable_shared_from_this<Session> {
     boost::system::error_code ec;
     socket_.shutdown(tcp::socket::shutdown_both, ec);
     socket_.close(ec);
-    out_.clear();
+    pending_.clear();
     if (auto s = state_.lock()) s->sessions.erase(shared_from_this());
   }
 
@@ -101,11 +100,12 @@ class Session : public std::enable_shared_from_this<Session> {
     read();
   }
 
-  void queue(std::string frame) {
-    queued_ += frame.size();
-    out_.push_back(std::move(frame));
-    if (queued_ > max_output_) {
-      spdlog::warn("satrak: client {} does not read its replies ({} bytes waiting): disconnected", peer_, queued_);
+  // Replies wait in pending_ while a write is under way; each write takes everything waiting, so
+  // output drains as fast as the socket takes it however many frames one read brought in.
+  void queue(const std::string& frame) {
+    pending_ += frame;
+    if (const std::size_t waiting = pending_.size() + sending_.size(); waiting > max_output_) {
+      spdlog::warn("satrak: client {} does not read its replies ({} bytes waiting): disconnected", peer_, waiting);
       if (auto s = state_.lock()) ++s->stats.dropped_slow;
       close();
       return;
@@ -114,20 +114,20 @@ class Session : public std::enable_shared_from_this<Session> {
   }
 
   void write() {
-    if (out_.empty() || closed_) {
+    if (pending_.empty() || closed_) {
       writing_ = false;
       return;
     }
     writing_ = true;
+    sending_.swap(pending_);
     auto self = shared_from_this();
-    asio::async_write(socket_, asio::buffer(out_.front()), [self](const boost::system::error_code& ec, std::size_t) {
+    asio::async_write(socket_, asio::buffer(sending_), [self](const boost::system::error_code& ec, std::size_t) {
       if (self->closed_) return;
       if (ec) {
         self->close();
         return;
       }
-      self->queued_ -= self->out_.front().size();
-      self->out_.pop_front();
+      self->sending_.clear();
       self->write();
     });
   }
@@ -138,8 +138,8 @@ class Session : public std::enable_shared_from_this<Session> {
   std::size_t max_output_;
   std::array<char, 4096> buf_{};
   std::vector<Decoded> events_;
-  std::deque<std::string> out_;
-  std::size_t queued_ = 0;
+  std::string pending_;  // replies not yet handed to a write
+  std::string sending_;  // the write under way
   bool writing_ = false;
   bool closed_ = false;
   std::string peer_;

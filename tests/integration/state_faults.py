@@ -14,6 +14,7 @@ import glob
 import json
 import os
 import random
+import select
 import shutil
 import stat
 import subprocess
@@ -149,10 +150,18 @@ def kill_during_saves(state, rounds):
             acu.s.setblocking(False)
             deadline = time.time() + rng.uniform(0.05, 0.4)
             sent = []
+            # The socket does not block: when the unit falls behind (slow disk) its receive
+            # buffer fills, so unsent bytes wait here and no new frame is made until they go.
+            pending = b""
             while time.time() < deadline:
-                value += 1
-                acu.s.sendall(frame(f"REDUCTION=,{value},{value}"))
-                sent.append(value)
+                if not pending:
+                    value += 1
+                    pending = frame(f"REDUCTION=,{value},{value}")
+                    sent.append(value)
+                try:
+                    pending = pending[acu.s.send(pending):]
+                except BlockingIOError:
+                    select.select([acu.s], [acu.s], [], 0.01)
                 try:
                     acu.buf += acu.s.recv(65536)
                 except BlockingIOError:

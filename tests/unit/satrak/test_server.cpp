@@ -114,6 +114,31 @@ TEST_CASE("Server: a client's session, frame by frame") {
   CHECK(raw.read_until("\r\n", 5s) == satrak::encode("REDUCTION?,1,1"));
 }
 
+TEST_CASE("Server: a client that sends a burst and then reads gets every reply, in order") {
+  // 4,000 queries in one write: a read of 4 KiB brings in some 240 of them at once. The replies
+  // (more than max_output in all) must leave as fast as the socket takes them, not one frame per
+  // write while the next read adds 240 (a host on a busy machine was dropped for that).
+  Live live(kT0);
+  RawSocket raw(live.port);
+  REQUIRE(raw.ok());
+  const int n = 4000;
+  std::string burst;
+  for (int i = 0; i < n; ++i) burst += satrak::encode("REDUCTION?");
+  const std::string reply = satrak::encode("REDUCTION?,1,1");
+  REQUIRE(reply.size() * n > satrak::ServerOptions{}.max_output);
+  REQUIRE(raw.send(burst, 5s) == static_cast<long>(burst.size()));
+  std::string got;
+  while (got.size() < reply.size() * n) {
+    const std::string more = raw.read_until("\n", 5s);
+    if (more.empty()) break;
+    got += more;
+  }
+  std::string expected;
+  for (int i = 0; i < n; ++i) expected += reply;
+  CHECK(got == expected);
+  CHECK(live.on_loop([&] { return live.server->stats().dropped_slow; }) == 0u);
+}
+
 TEST_CASE("Server: clients in parallel while a pass is tracked; flooding, mute, vanishing clients change nothing") {
   const orbit::Pass pass = iss_pass(tucson_model(), kT0, 30.0, 70.0);
   satrak::ServerOptions o;
