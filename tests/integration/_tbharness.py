@@ -163,6 +163,27 @@ def free_port():
         return s.getsockname()[1]
 
 
+def hamlib_dummy(daemon, port, within=10):
+    """Starts Hamlib's dummy rotator ("rotctld") or radio ("rigctld") on a loopback port and returns
+    the process once the port accepts connections (fails if it exits or does not listen in time)."""
+    import socket
+    proc = subprocess.Popen([daemon, "-m", "1", "-T", "127.0.0.1", "-t", str(port)],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    deadline = time.time() + within
+    while True:
+        if proc.poll() is not None:
+            raise Failure(f"{daemon} on port {port} exited with {proc.returncode}")
+        try:
+            socket.create_connection(("127.0.0.1", port), timeout=1).close()
+            return proc
+        except OSError:
+            if time.time() > deadline:
+                proc.kill()
+                proc.wait()
+                raise Failure(f"{daemon} did not listen on port {port} within {within} s")
+            time.sleep(0.05)
+
+
 def sh(*args, timeout=20):
     """Runs a command; (exit status, stdout, stderr)."""
     p = subprocess.run(list(args), capture_output=True, text=True, timeout=timeout)

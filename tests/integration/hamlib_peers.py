@@ -13,7 +13,7 @@ import time
 from datetime import datetime, timedelta, timezone
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import (BIN, check, free_port, pointing_error, reap, run_test, satellite_track,  # noqa: E402
+from _tbharness import (BIN, check, free_port, hamlib_dummy, pointing_error, reap, run_test, satellite_track,  # noqa: E402
                         sh)
 
 START = datetime(2026, 5, 21, 5, 37, 0, tzinfo=timezone.utc)
@@ -33,11 +33,8 @@ def main():
     state = tempfile.mkdtemp(prefix="trakbox-hamlib-")
     procs = []
     try:
-        procs.append(subprocess.Popen(["rotctld", "-m", "1", "-T", "127.0.0.1", "-t", str(rot_port)],
-                                      stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL))
-        procs.append(subprocess.Popen(["rigctld", "-m", "1", "-T", "127.0.0.1", "-t", str(rig_port)],
-                                      stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL))
-        time.sleep(0.5)
+        procs.append(hamlib_dummy("rotctld", rot_port))
+        procs.append(hamlib_dummy("rigctld", rig_port))
         clock = START.strftime("%Y-%m-%dT%H:%M:%SZ")
         tb = subprocess.Popen([BIN, "--state", state, "--line", "--satrak-port", "0", "--clock", clock,
                                "--rotator", f"rotctld:127.0.0.1:{rot_port}",

@@ -27,7 +27,7 @@ import threading
 import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import (BIN, CLOCK, Failure, Satrak, check, free_port, reap, run_test, sh,  # noqa: E402
+from _tbharness import (BIN, CLOCK, Failure, Satrak, check, free_port, hamlib_dummy, reap, run_test, sh,  # noqa: E402
                         skip, tcp_exchange)
 
 # CPU trakbox may spend over an outage of OUTAGE_S seconds: its one-second tick and the polls of
@@ -83,17 +83,7 @@ class Rotctld:
         self.proc = None
 
     def start(self):
-        self.proc = subprocess.Popen(["rotctld", "-m", "1", "-T", "127.0.0.1", "-t", str(self.port)],
-                                     stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-
-        def listening():
-            check(self.proc.poll() is None, f"rotctld on {self.port} exited with {self.proc.returncode}")
-            try:
-                socket.create_connection(("127.0.0.1", self.port), timeout=1).close()
-                return True
-            except OSError:
-                return False
-        wait_for(f"rotctld to listen on {self.port}", listening, 10)
+        self.proc = hamlib_dummy("rotctld", self.port)
 
     def kill(self):
         self.proc.send_signal(signal.SIGKILL)

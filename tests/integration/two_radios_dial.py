@@ -16,7 +16,7 @@ import time
 from datetime import datetime, timedelta, timezone
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, check, free_port, reap, run_test, satellite_track, sh, skip  # noqa: E402
+from _tbharness import BIN, check, free_port, hamlib_dummy, reap, run_test, satellite_track, sh, skip  # noqa: E402
 
 START = datetime(2026, 5, 21, 10, 57, 0, tzinfo=timezone.utc)
 C = 299792.458
@@ -62,8 +62,7 @@ def main():
     procs = []
     try:
         for port in (down_port, up_port):
-            procs.append(subprocess.Popen(["rigctld", "-m", "1", "-T", "127.0.0.1", "-t", str(port)],
-                                          stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL))
+            procs.append(hamlib_dummy("rigctld", port))
         for port in (down_port, up_port):
             poll(f"rigctld on port {port}", lambda p=port: read_freq(p) is not None, 10)
         clock = START.strftime("%Y-%m-%dT%H:%M:%SZ")
