@@ -163,25 +163,35 @@ def free_port():
         return s.getsockname()[1]
 
 
-def hamlib_dummy(daemon, port, within=10):
-    """Starts Hamlib's dummy rotator ("rotctld") or radio ("rigctld") on a loopback port and returns
-    the process once the port accepts connections (fails if it exits or does not listen in time)."""
+def wait_listening(port, what, within=10, proc=None):
+    """Returns once 127.0.0.1:port accepts a connection; fails if `proc` exits first or the time
+    runs out (a fixed sleep after starting a server is what fails on a loaded machine)."""
     import socket
-    proc = subprocess.Popen([daemon, "-m", "1", "-T", "127.0.0.1", "-t", str(port)],
-                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     deadline = time.time() + within
     while True:
-        if proc.poll() is not None:
-            raise Failure(f"{daemon} on port {port} exited with {proc.returncode}")
+        if proc is not None and proc.poll() is not None:
+            raise Failure(f"{what} exited with {proc.returncode} before listening on port {port}")
         try:
             socket.create_connection(("127.0.0.1", port), timeout=1).close()
-            return proc
+            return
         except OSError:
             if time.time() > deadline:
-                proc.kill()
-                proc.wait()
-                raise Failure(f"{daemon} did not listen on port {port} within {within} s")
+                raise Failure(f"{what} did not listen on port {port} within {within} s")
             time.sleep(0.05)
+
+
+def hamlib_dummy(daemon, port, within=10):
+    """Starts Hamlib's dummy rotator ("rotctld") or radio ("rigctld") on a loopback port and returns
+    the process once the port accepts connections."""
+    proc = subprocess.Popen([daemon, "-m", "1", "-T", "127.0.0.1", "-t", str(port)],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    try:
+        wait_listening(port, daemon, within, proc)
+    except Failure:
+        proc.kill()
+        proc.wait()
+        raise
+    return proc
 
 
 def sh(*args, timeout=20):

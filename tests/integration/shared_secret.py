@@ -13,7 +13,7 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, CLOCK, check, free_port, run_test, stop_and_read_log  # noqa: E402
+from _tbharness import BIN, CLOCK, check, free_port, run_test, stop_and_read_log, wait_listening  # noqa: E402
 
 SECRET = "Tr4kB0x-s3cret"
 
@@ -82,7 +82,8 @@ def main():
                               "--auth-timeout", "2", "--log-level", "debug"],
                              stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
         try:
-            time.sleep(1.0)
+            for port in (rot, rig, host):
+                wait_listening(port, "trakbox", 15, p)
             # rotctld: missing, handshake, wrong, right.
             c = Client(rot)
             check(c.ask(b"p\n") == b"RPRT -19\n", "a command before the secret: RPRT -19")
