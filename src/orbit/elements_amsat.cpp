@@ -58,7 +58,7 @@ LabelledLine split_label(std::string_view line) {
   std::size_t v = colon + 1;
   while (v < line.size() && is_space(line[v])) ++v;
   out.value_begin = v;
-  if (out.label.empty()) out.label = " ";  // a colon without a label: still a labelled line
+  if (out.label.empty()) out.label.assign(1, ' ');  // a colon without a label: still a labelled line
   return out;
 }
 

@@ -110,7 +110,10 @@ std::string reply_error(std::string_view head, Error e, std::string_view reason)
     const auto u = static_cast<unsigned char>(ch);
     why += (u < 0x20 || u >= 0x7F || ch == ',' || ch == '*' || ch == '$') ? ' ' : upper(ch);
   }
-  if (!trim(why).empty()) out += "," + std::string(trim(why));
+  if (const std::string_view w = trim(why); !w.empty()) {
+    out += ',';
+    out += w;
+  }
   return out;
 }
 
