@@ -231,7 +231,7 @@ double Searcher::along_track(const Sample& s, const Angles& g, double span, bool
 double Searcher::step_below(const Sample& s) {
   const Angles& g = angles(s, kDu | kBeta | kTheta);
   const double theta = g.theta, beta = g.beta;
-  const double d = s.Fdot + fdot_err(s);
+  const double d = s.Fdot + s.fdot_err;
   // Global constants: valid for any step.
   double best = std::max({(theta - lambda_glob_) / omega_a_glob_, (beta - lambda_glob_) / omega_b_glob_,
                           envelope_root(s.F, d, b_below_glob_)});
@@ -259,7 +259,7 @@ double Searcher::step_below(const Sample& s) {
 }
 
 double Searcher::step_above(const Sample& s) {
-  const double d = s.Fdot - fdot_err(s);
+  const double d = s.Fdot - s.fdot_err;
   double best = envelope_root(s.F, d, b_above_glob_);
   // Along track: a pass lasts at most about 2 lam / w; from a quarter revolution to fitted spans.
   const double rev = kTwoPi * r_max_ * r_max_ / h_min_;
@@ -284,7 +284,7 @@ double Searcher::reach(const Sample& s, double span, int dir) const {
   // The envelope first; the angles only when it falls short.
   const Local L = local(s, span);
   const bool below = s.F < 0.0;
-  const double d = dir * s.Fdot + (below ? fdot_err(s) : -fdot_err(s));
+  const double d = dir * s.Fdot + (below ? s.fdot_err : -s.fdot_err);
   const double s_lo = below ? std::max(floor_below(L.r_lo), s.s - L.V * span)
                             : std::max({L.r_lo - rs_, s.s - L.V * span, 1.0});
   double x = envelope_root(s.F, d, curvature(s, L, span, s_lo));
@@ -299,7 +299,7 @@ double Searcher::reach(const Sample& s, double span, int dir) const {
 }
 
 bool Searcher::monotone(const Sample& a, const Sample& b) const {
-  const double e = std::max(fdot_err(a), fdot_err(b));
+  const double e = std::max(a.fdot_err, b.fdot_err);
   const double da = std::abs(a.Fdot) - e, db = std::abs(b.Fdot) - e;
   if (da <= 0.0 || db <= 0.0 || (a.Fdot > 0.0) != (b.Fdot > 0.0)) return false;
   const double D = b.t - a.t;

@@ -145,19 +145,15 @@ inline double envelope_root(double F, double d, double b) {
   return (d + std::sqrt(d * d + 2.0 * b * F)) / b;
 }
 
-// Perturbing acceleration bound (J2 with room for the higher zonals, Sun and Moon, drag), km/s^2.
-inline double perturbation(double r_lo, double r_hi) {
-  const double q = kReSgp4 / r_lo;
+// Perturbing acceleration bound (J2 with room for the higher zonals, Sun and Moon, drag), km/s^2,
+// for q = R / r_lo. Callers give r_lo or, where they have it, its reciprocal (each q rounded as
+// before, so that the bounds keep their values to the bit).
+inline double perturbation_q(double q, double r_hi) {
   const double q2 = q * q;
   return (4.5 * kJ2 * kMu / (kReSgp4 * kReSgp4)) * q2 * q2 + 3e-13 * r_hi + 1e-8;
 }
-
-// The same from 1 / r_lo.
-inline double perturbation_inv(double inv_r_lo, double r_hi) {
-  const double q = kReSgp4 * inv_r_lo;
-  const double q2 = q * q;
-  return (4.5 * kJ2 * kMu / (kReSgp4 * kReSgp4)) * q2 * q2 + 3e-13 * r_hi + 1e-8;
-}
+inline double perturbation(double r_lo, double r_hi) { return perturbation_q(kReSgp4 / r_lo, r_hi); }
+inline double perturbation_inv(double inv_r_lo, double r_hi) { return perturbation_q(kReSgp4 * inv_r_lo, r_hi); }
 
 // The first x > 0 where the quadratic model F + F' x + F'' x^2 / 2 crosses zero; infinity if none.
 double predict_crossing(const Sample& s);
@@ -221,7 +217,6 @@ class Searcher {
   double range_floor_below(double r) const;  // least range of a satellite at >= r below the horizon
   double floor_below(double r) const { return r == r_min_ ? glob_.floor_below : range_floor_below(r); }
   double curvature(const Sample& s, const Local& L, double span, double s_lo) const;
-  double fdot_err(const Sample& s) const { return s.fdot_err; }
   // (d): the time, at most span, for which the satellite provably stays down (below) or up, given
   // that it provably does for `covered` seconds anyway; 0 if the bound says nothing.
   // mode kAhead: as above; kBack: the same looking back from s; kGuess: where a forward jump would

@@ -134,7 +134,7 @@ Sample Searcher::refine_max(const Sample& a, const Sample& b, double guess) {
     // The step is short enough when the velocity error, extrapolated over it, moves the line of sight by
     // less than kTaylorAngle, and can move the zero of Fdot by less than a quarter of the precision.
     if (nx > lo.t && nx < hi.t && vel_err_ * std::abs(dx) < kTaylorAngle * m.s &&
-        fdot_err(m) < -0.25 * tol_top_ * m.Fddot) {
+        m.fdot_err < -0.25 * tol_top_ * m.Fddot) {
       Sample top = m;
       top.t = nx;
       top.F = m.F + 0.5 * m.Fdot * dx;  // F + F' dx + F'' dx^2 / 2 with dx = -F'/F''
@@ -154,7 +154,7 @@ Sample Searcher::refine_max(const Sample& a, const Sample& b, double guess) {
   // Where the top is so flat that the velocity error could move the zero of Fdot by more than a few
   // seconds (geostationary orbits, high apogees), the point-mass F'' is not good enough either: find
   // the top from F alone.
-  const double shift_bound = fdot_err(m) / std::max(-m.Fddot, 1e-300);
+  const double shift_bound = m.fdot_err / std::max(-m.Fddot, 1e-300);
   if (shift_bound > kFlatTopShift) return polish_max(best, std::min(shift_bound, 3600.0));
   if (!(m.Fddot < 0.0) || shift_bound < 0.25 * tol_top_) return best;
   // The SGP4 velocity is not exactly the derivative of the SGP4 position, so the zero of Fdot may sit
@@ -278,7 +278,7 @@ void Searcher::finish_pass(std::vector<Sample>& samples, Pass& p, double guess) 
       const Local L = local(a, D);
       const double s_lo = std::max({L.r_lo - rs_, a.s - L.V * D, 1.0});
       const double B = curvature(a, L, D, s_lo);
-      const double da = a.Fdot + fdot_err(a), db = b.Fdot - fdot_err(b);
+      const double da = a.Fdot + a.fdot_err, db = b.Fdot - b.fdot_err;
       const double k0 = a.F - b.F + db * D - 0.5 * B * D * D;  // their difference is k0 + k1 x
       const double k1 = da - db + B * D;
       if (k1 != 0.0) {
