@@ -23,7 +23,9 @@ constexpr double kTwoPiLo = 4.0 * 6.07710050650619224932e-11;
 using detail::SinCos;
 [[gnu::always_inline]] inline SinCos sin_cos(double x) { return detail::poly_sin_cos(x); }
 
-// fmod(x, 2pi) where |x| >= 2pi, x itself below (as sgp4.cpp's wrap_two_pi), without a call.
+// fmod(x, 2pi) where |x| >= 2pi, x itself below, to rounding: the value of the scalar propagator's
+// detail::fmod_two_pi without its branches (its off-by-one correction and its libm fallback for
+// huge x), so that the loops over lanes vectorise.
 [[gnu::always_inline]] inline double wrap_two_pi(double x) {
   const double t = x * (1.0 / kTwoPi);
   const double k = t >= 0.0 ? std::floor(t) : -std::floor(-t);
