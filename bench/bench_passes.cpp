@@ -100,12 +100,18 @@ long replay_once(const std::vector<Sgp4>& sats, const Trace& tr) {
   return static_cast<long>(tr.tsince.size());
 }
 
+// The counters every benchmark here reports: the catalogue's size, the passes found (negative:
+// not counted) and the propagations per set.
+void catalogue_counters(benchmark::State& state, const std::vector<Sgp4>& sats, long passes, double props_per_set) {
+  state.counters["sets"] = static_cast<double>(sats.size());
+  if (passes >= 0) state.counters["passes"] = static_cast<double>(passes);
+  state.counters["props/set"] = props_per_set;
+}
+
 void search(benchmark::State& state, const std::vector<Sgp4>& sats) {
   long passes = 0, props = 0;
   for (auto _ : state) props = search_once(sats, passes);
-  state.counters["sets"] = static_cast<double>(sats.size());
-  state.counters["passes"] = static_cast<double>(passes);
-  state.counters["props/set"] = static_cast<double>(props) / static_cast<double>(sats.size());
+  catalogue_counters(state, sats, passes, static_cast<double>(props) / static_cast<double>(sats.size()));
   state.counters["s/step"] = benchmark::Counter(static_cast<double>(props),
                                                 benchmark::Counter::kIsIterationInvariantRate |
                                                     benchmark::Counter::kInvert);
@@ -116,8 +122,7 @@ void sgp4_only(benchmark::State& state, const std::vector<Sgp4>& sats) {
   static const Trace tr = record(sats);
   long props = 0;
   for (auto _ : state) props = replay_once(sats, tr);
-  state.counters["sets"] = static_cast<double>(sats.size());
-  state.counters["props/set"] = static_cast<double>(props) / static_cast<double>(sats.size());
+  catalogue_counters(state, sats, -1, static_cast<double>(props) / static_cast<double>(sats.size()));
   state.counters["s/sgp4"] = benchmark::Counter(static_cast<double>(props),
                                                 benchmark::Counter::kIsIterationInvariantRate |
                                                     benchmark::Counter::kInvert);
@@ -137,10 +142,8 @@ void step_ratio(benchmark::State& state, const std::vector<Sgp4>& sats) {
     sgp4_ns += thread_cpu_ns() - t1;
     search_ns += t1 - t0;
   }
-  state.counters["sets"] = static_cast<double>(sats.size());
-  state.counters["passes"] = static_cast<double>(passes);
-  state.counters["props/set"] =
-      static_cast<double>(props) / static_cast<double>(state.iterations()) / static_cast<double>(sats.size());
+  catalogue_counters(state, sats, passes,
+                     static_cast<double>(props) / static_cast<double>(state.iterations()) / static_cast<double>(sats.size()));
   const double step = search_ns / static_cast<double>(props), sgp4 = sgp4_ns / static_cast<double>(replayed);
   state.counters["ns/step"] = step;
   state.counters["ns/sgp4"] = sgp4;
@@ -164,9 +167,7 @@ void step_every_minute(benchmark::State& state, const std::vector<Sgp4>& sats) {
       }
     }
   }
-  state.counters["sets"] = static_cast<double>(sats.size());
-  state.counters["passes"] = static_cast<double>(passes);
-  state.counters["props/set"] = 1440.0;
+  catalogue_counters(state, sats, passes, 1440.0);
 }
 
 void BM_Passes_RealCatalogue(benchmark::State& state) {
