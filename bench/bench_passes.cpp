@@ -2,20 +2,19 @@
 // one-minute stepping, and against SGP4 alone at the very times the search propagates (what a step
 // costs beyond its propagation). Run a Release build: bench_passes --benchmark_counters_tabular=true
 #include <benchmark/benchmark.h>
-#include "test_paths.h"  // TRAKBOX_SOURCE_DIR, ...
-
-#include <time.h>
 
 #include <cmath>
 #include <cstddef>
-#include <fstream>
-#include <sstream>
 #include <vector>
+
+#include "bench_support.h"
+#include "support/gpredict_sets.h"
 
 #include "orbit/elements.h"
 #include "orbit/passes.h"
 
 using namespace tb::orbit;
+using tb::bench::thread_cpu_ns;
 
 namespace {
 
@@ -25,12 +24,7 @@ const UtcTime kStop = from_civil(2018, 1, 22);
 
 // The 979 sets of Debian's gpredict (epochs within a few days of the window).
 const std::vector<Elements>& real_sets() {
-  static const std::vector<Elements> sets = [] {
-    std::ifstream f(TRAKBOX_GPREDICT_SATDATA);
-    std::stringstream ss;
-    ss << f.rdbuf();
-    return parse_gpredict_satdata(ss.str()).sets;
-  }();
+  static const std::vector<Elements> sets = tb::testing::gpredict_catalogue_sets();
   return sets;
 }
 
@@ -49,13 +43,6 @@ std::vector<Sgp4> catalogue(std::size_t n) {
     out.emplace_back(e);
   }
   return out;
-}
-
-// This thread's CPU time, ns (what the benchmark library reports as CPU time, per part of an iteration).
-double thread_cpu_ns() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) * 1e9 + static_cast<double>(ts.tv_nsec);
 }
 
 // The (set, tsince) pairs the search propagates, in its order: tsince[first[i] .. first[i + 1]) for set i.

@@ -9,10 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <fstream>
 #include <limits>
-#include <sstream>
-#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -70,15 +67,8 @@ inline void store(const Propagation& p, std::size_t k, std::vector<double>& r, s
 }
 
 std::vector<Sgp4> gpredict_catalogue() {
-  std::ifstream in(TRAKBOX_GPREDICT_SATDATA, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " TRAKBOX_GPREDICT_SATDATA);
-  std::ostringstream text;
-  text << in.rdbuf();
-  const ParseResult parsed = parse_gpredict_satdata(text.str(), TRAKBOX_GPREDICT_SATDATA);
-  std::vector<Sgp4> sats;
-  sats.reserve(parsed.sets.size());
-  for (const Elements& e : parsed.sets) sats.emplace_back(e);
-  return sats;
+  const std::vector<Elements> sets = tb::testing::gpredict_catalogue_sets();
+  return {sets.begin(), sets.end()};
 }
 
 // Every set at 2018-01-21 00:00 UTC + k minutes, k = 0..1439 (the file's epochs are 2017 Dec 23

@@ -12,11 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <ctime>
-#include <fstream>
 #include <limits>
-#include <sstream>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -26,8 +22,10 @@
 #include "orbit/sgp4.h"
 #include "orbit/sgp4_batch.h"
 #include "support/gpredict_sets.h"
+#include "../bench_support.h"
 
 using namespace tb::orbit;
+using tb::bench::thread_cpu_ns;
 
 namespace {
 
@@ -47,13 +45,8 @@ elsetrec vallado_init(const Sgp4& sat) {
 }
 
 std::vector<Sgp4> catalogue() {
-  std::ifstream in(TRAKBOX_GPREDICT_SATDATA, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " TRAKBOX_GPREDICT_SATDATA);
-  std::ostringstream text;
-  text << in.rdbuf();
-  std::vector<Sgp4> sats;
-  for (const Elements& e : parse_gpredict_satdata(text.str(), TRAKBOX_GPREDICT_SATDATA).sets) sats.emplace_back(e);
-  return sats;
+  const std::vector<Elements> sets = tb::testing::gpredict_catalogue_sets();
+  return {sets.begin(), sets.end()};
 }
 
 // The catalogue, or (Arg 1) its near-earth sets or (Arg 2) its deep-space sets only.
@@ -231,12 +224,6 @@ void BM_Batch_Catalogue_Trakbox(benchmark::State& state) { trakbox_catalogue(sta
 // ---- both in one loop: set by set, Vallado's day then trakbox's (the order alternating), each
 // timed on the thread's CPU clock, so that the machine's load falls on both alike. Counters:
 // ns per propagation of each and their ratio. Arg as above; Arg 10 + k: trakbox's batch instead.
-double thread_cpu_ns() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) * 1e9 + static_cast<double>(ts.tv_nsec);
-}
-
 void BM_Ratio_Catalogue(benchmark::State& state) {
   const bool batch = state.range(0) >= 10;
   const std::int64_t which = state.range(0) % 10;

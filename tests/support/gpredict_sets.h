@@ -1,12 +1,27 @@
-// Two element sets of Debian gpredict's satellites.dat, written out value by value (no parser
-// involved), for the SGP4 tests and benchmarks. Header-only; needs tb_orbit.
+// Debian gpredict's satellites.dat for the SGP4 and pass tests and the benchmarks: the whole
+// catalogue as parsed from the file, and two of its sets written out value by value (no parser
+// involved). Header-only; needs tb_orbit.
 #pragma once
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "orbit/elements.h"
+#include "test_paths.h"  // TRAKBOX_GPREDICT_SATDATA
 
 namespace tb::testing {
+
+// Every element set of the file (979; epochs 2017 Dec 23 to 2018 Jan 22). A missing file throws.
+inline std::vector<orbit::Elements> gpredict_catalogue_sets() {
+  std::ifstream in(TRAKBOX_GPREDICT_SATDATA, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " TRAKBOX_GPREDICT_SATDATA);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return orbit::parse_gpredict_satdata(text.str(), TRAKBOX_GPREDICT_SATDATA).sets;
+}
 
 // An element set from the values SGP4 reads, in the order of the two lines; the other fields keep
 // their defaults.

@@ -3,14 +3,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <map>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "orbit/elements.h"
 #include "orbit/passes.h"
+#include "support/gpredict_sets.h"
 
 using namespace tb::orbit;
 
@@ -19,11 +18,8 @@ namespace {
 // The 979 element sets of Debian's gpredict, by catalog number (epochs 2017-12 .. 2018-01-22).
 const std::map<int, Elements>& catalog() {
   static const std::map<int, Elements> sets = [] {
-    std::ifstream f(TRAKBOX_GPREDICT_SATDATA);
-    std::stringstream ss;
-    ss << f.rdbuf();
     std::map<int, Elements> m;
-    for (const Elements& e : parse_gpredict_satdata(ss.str()).sets) m.emplace(e.catalog_number, e);
+    for (const Elements& e : tb::testing::gpredict_catalogue_sets()) m.emplace(e.catalog_number, e);
     return m;
   }();
   return sets;

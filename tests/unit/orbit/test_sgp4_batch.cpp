@@ -3,7 +3,7 @@
 // the kernel's vectorised long-period, Kepler and short-period stages) over three days around their
 // epochs, and Vallado's verification sets, which include the failure cases.
 #include <doctest/doctest.h>
-#include "test_paths.h"  // TRAKBOX_SGP4_DATA_DIR, TRAKBOX_GPREDICT_SATDATA
+#include "test_paths.h"  // TRAKBOX_SGP4_DATA_DIR
 
 #include <algorithm>
 #include <cmath>
@@ -15,6 +15,7 @@
 #include "orbit/elements.h"
 #include "orbit/sgp4.h"
 #include "orbit/sgp4_batch.h"
+#include "support/gpredict_sets.h"
 
 using namespace tb::orbit;
 
@@ -77,11 +78,11 @@ void compare(const Sgp4& sat, const std::vector<double>& t, Worst& w, const char
 }  // namespace
 
 TEST_CASE("Batch SGP4 agrees with the scalar propagator to 1e-9 km over gpredict's catalogue") {
-  const ParseResult parsed = parse_gpredict_satdata(slurp(TRAKBOX_GPREDICT_SATDATA), TRAKBOX_GPREDICT_SATDATA);
-  REQUIRE(parsed.sets.size() > 900);
+  const std::vector<Elements> sets = tb::testing::gpredict_catalogue_sets();
+  REQUIRE(sets.size() > 900);
   std::vector<double> t;
   for (double m = -1440.0; m <= 2880.0; m += 7.3) t.push_back(m);  // not a multiple of the block size
-  std::vector<Sgp4> sats(parsed.sets.begin(), parsed.sets.end());
+  std::vector<Sgp4> sats(sets.begin(), sets.end());
   // Every kernel this processor has (the chosen one first), not only the one dispatch picks.
   for (const char* isa : batch_kernels_available()) {
     Worst w;
@@ -118,9 +119,9 @@ TEST_CASE("Batch SGP4 gives Vallado's error codes where the scalar propagator do
 }
 
 TEST_CASE("Sgp4Batch lays out set-major results on a common time grid") {
-  const ParseResult parsed = parse_gpredict_satdata(slurp(TRAKBOX_GPREDICT_SATDATA), TRAKBOX_GPREDICT_SATDATA);
+  const std::vector<Elements> sets = tb::testing::gpredict_catalogue_sets();
   std::vector<Sgp4> sats;
-  for (std::size_t k = 0; k < 5; ++k) sats.emplace_back(parsed.sets[k * 150]);
+  for (std::size_t k = 0; k < 5; ++k) sats.emplace_back(sets[k * 150]);
   const Sgp4Batch batch(sats);
   std::vector<UtcTime> times;
   for (int k = 0; k < 70; ++k) times.push_back(sats[0].epoch() + std::chrono::seconds(97 * k));
