@@ -101,7 +101,9 @@ SatnogsImport import_satnogs(Database& db, std::string_view json_text, bool repl
     radio.uplink_hz = pick->up_low ? centre(*pick->up_low, pick->up_high) : 0;
     radio.uplink_offset_hz = 0;
     radio.alternate_uplinks_hz.clear();  // the list has one uplink per transmitter
-    const bool linear = pick->type == "Transponder" && pick->down_high && pick->up_high;
+    // A transponder needs all four edges (down_low every kept transmitter has); one that lacks an
+    // uplink edge is taken as a downlink alone.
+    const bool linear = pick->type == "Transponder" && pick->down_high && pick->up_low && pick->up_high;
     // The passband edges, for dial follow (radio/doppler.h); none for other transmitters.
     radio.downlink_low_hz = linear ? *pick->down_low : 0;
     radio.downlink_high_hz = linear ? *pick->down_high : 0;

@@ -3,6 +3,9 @@
 // alive, status, type, uplink/downlink low/high in Hz, mode, invert).
 #include <doctest/doctest.h>
 
+#include <string>
+#include <string_view>
+
 #include "store/satnogs.h"
 
 using namespace tb;
@@ -72,6 +75,34 @@ TEST_CASE("SatNOGS: transceivers, inverting transponders, beacons; dead transmit
   CHECK_FALSE(iss.has_passbands());
   CHECK_FALSE(db.satellites[2].radio.has_downlink());
   CHECK(db.satellites[3].radio.uplink_mode == radio::Mode::none);
+}
+
+TEST_CASE("SatNOGS: a transponder with an uplink edge missing is a downlink alone") {
+  // Found by fuzz_satnogs (a corpus file): uplink_high without uplink_low read the missing edge.
+  for (const char* missing : {R"("uplink_low":null,"uplink_high":145995000)", R"("uplink_high":145995000)",
+                              R"("uplink_low":145935000,"uplink_high":null)"}) {
+    CAPTURE(missing);
+    Database db = db_of({{44909, "RS-44"}});
+    const std::string list = std::string(R"([{"description":"Mode U/V linear","alive":true,"status":"active",
+      "type":"Transponder",)") + missing +
+                             R"(,"downlink_low":435610000,"downlink_high":435670000,"mode":"SSB","invert":true,
+      "norad_cat_id":44909}])";
+    const SatnogsImport r = import_satnogs(db, list, false);
+    REQUIRE(r.ok());
+    const radio::SatelliteRadio& rs44 = db.satellites[0].radio;
+    CHECK_FALSE(rs44.has_passbands());
+    CHECK_FALSE(rs44.inverting);
+    CHECK(rs44.downlink_hz == 435'640'000);
+    CHECK(rs44.downlink_mode == radio::Mode::usb);
+    if (std::string_view(missing).find("145935000") != std::string_view::npos) {
+      CHECK(rs44.uplink_hz == 145'935'000);  // the one edge there is
+      CHECK(r.updated == std::vector<std::string>{"RS-44: downlink 435.640 USB, uplink 145.935 USB (Mode U/V linear)"});
+    } else {
+      CHECK(rs44.uplink_hz == 0);
+      CHECK(rs44.uplink_mode == radio::Mode::none);
+      CHECK(r.updated == std::vector<std::string>{"RS-44: downlink 435.640 USB (Mode U/V linear)"});
+    }
+  }
 }
 
 TEST_CASE("SatNOGS: the operator's own records stay unless replace is asked") {
