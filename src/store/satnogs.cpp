@@ -101,8 +101,8 @@ SatnogsImport import_satnogs(Database& db, std::string_view json_text, bool repl
     radio.uplink_hz = pick->up_low ? centre(*pick->up_low, pick->up_high) : 0;
     radio.uplink_offset_hz = 0;
     radio.alternate_uplinks_hz.clear();  // the list has one uplink per transmitter
-    // A transponder needs all four edges (down_low every kept transmitter has); one that lacks an
-    // uplink edge is taken as a downlink alone.
+    // A transponder needs all four edges to be followed (down_low every kept transmitter has);
+    // without one it has no passbands, and its uplink is the low edge when it has one.
     const bool linear = pick->type == "Transponder" && pick->down_high && pick->up_low && pick->up_high;
     // The passband edges, for dial follow (radio/doppler.h); none for other transmitters.
     radio.downlink_low_hz = linear ? *pick->down_low : 0;

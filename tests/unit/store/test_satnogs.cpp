@@ -77,7 +77,7 @@ TEST_CASE("SatNOGS: transceivers, inverting transponders, beacons; dead transmit
   CHECK(db.satellites[3].radio.uplink_mode == radio::Mode::none);
 }
 
-TEST_CASE("SatNOGS: a transponder with an uplink edge missing is a downlink alone") {
+TEST_CASE("SatNOGS: a transponder with an uplink edge missing has no passbands to follow") {
   // Found by fuzz_satnogs (a corpus file): uplink_high without uplink_low read the missing edge.
   for (const char* missing : {R"("uplink_low":null,"uplink_high":145995000)", R"("uplink_high":145995000)",
                               R"("uplink_low":145935000,"uplink_high":null)"}) {
