@@ -4,7 +4,6 @@
 #include <doctest/doctest.h>
 
 #include <string>
-#include <string_view>
 
 #include "store/satnogs.h"
 
@@ -79,12 +78,22 @@ TEST_CASE("SatNOGS: transceivers, inverting transponders, beacons; dead transmit
 
 TEST_CASE("SatNOGS: a transponder with an uplink edge missing has no passbands to follow") {
   // Found by fuzz_satnogs (a corpus file): uplink_high without uplink_low read the missing edge.
-  for (const char* missing : {R"("uplink_low":null,"uplink_high":145995000)", R"("uplink_high":145995000)",
-                              R"("uplink_low":145935000,"uplink_high":null)"}) {
-    CAPTURE(missing);
+  struct Case {
+    const char* uplink;  // the entry's uplink fields
+    radio::Hz uplink_hz;
+    radio::Mode uplink_mode;
+    const char* updated;
+  };
+  for (const Case& c : {Case{R"("uplink_low":null,"uplink_high":145995000)", 0, radio::Mode::none,
+                             "RS-44: downlink 435.640 USB (Mode U/V linear)"},
+                        Case{R"("uplink_high":145995000)", 0, radio::Mode::none,
+                             "RS-44: downlink 435.640 USB (Mode U/V linear)"},
+                        Case{R"("uplink_low":145935000,"uplink_high":null)", 145'935'000, radio::Mode::usb,  // the one edge there is
+                             "RS-44: downlink 435.640 USB, uplink 145.935 USB (Mode U/V linear)"}}) {
+    CAPTURE(c.uplink);
     Database db = db_of({{44909, "RS-44"}});
     const std::string list = std::string(R"([{"description":"Mode U/V linear","alive":true,"status":"active",
-      "type":"Transponder",)") + missing +
+      "type":"Transponder",)") + c.uplink +
                              R"(,"downlink_low":435610000,"downlink_high":435670000,"mode":"SSB","invert":true,
       "norad_cat_id":44909}])";
     const SatnogsImport r = import_satnogs(db, list, false);
@@ -94,14 +103,9 @@ TEST_CASE("SatNOGS: a transponder with an uplink edge missing has no passbands t
     CHECK_FALSE(rs44.inverting);
     CHECK(rs44.downlink_hz == 435'640'000);
     CHECK(rs44.downlink_mode == radio::Mode::usb);
-    if (std::string_view(missing).find("145935000") != std::string_view::npos) {
-      CHECK(rs44.uplink_hz == 145'935'000);  // the one edge there is
-      CHECK(r.updated == std::vector<std::string>{"RS-44: downlink 435.640 USB, uplink 145.935 USB (Mode U/V linear)"});
-    } else {
-      CHECK(rs44.uplink_hz == 0);
-      CHECK(rs44.uplink_mode == radio::Mode::none);
-      CHECK(r.updated == std::vector<std::string>{"RS-44: downlink 435.640 USB (Mode U/V linear)"});
-    }
+    CHECK(rs44.uplink_hz == c.uplink_hz);
+    CHECK(rs44.uplink_mode == c.uplink_mode);
+    CHECK(r.updated == std::vector<std::string>{c.updated});
   }
 }
 
