@@ -70,7 +70,7 @@ void menu_6_7_radio_cat(term::Terminal& t, Services& s) {
         t.line("  " + parsed.error);
       } else if (!spec.empty()) {
         radio::MakeRadio made;
-        if (!next.empty()) made = radio::make_radio(*parsed.spec, s.model.radio);
+        if (!next.empty()) made = radio::make_radio(*parsed.spec, s.model.radio, {}, radio::RadioRole::uplink);
         if (!next.empty() && !made.driver) {
           t.line("  " + made.error);
         } else {
