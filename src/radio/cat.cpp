@@ -143,6 +143,11 @@ Bytes select_vfo(std::uint8_t to, Vfo vfo, std::uint8_t from) {
 
 Bytes read_frequency(std::uint8_t to, std::uint8_t from) { return frame(to, from, 0x03); }
 
+Bytes read_transmit_frequency(std::uint8_t to, std::uint8_t from) {
+  const std::uint8_t data[] = {0x03};
+  return frame(to, from, 0x1C, data);
+}
+
 Bytes satellite_mode(std::uint8_t to, std::uint8_t cmd, std::uint8_t sub, bool on, std::uint8_t from) {
   const std::uint8_t data[] = {sub, static_cast<std::uint8_t>(on ? 0x01 : 0x00)};
   return frame(to, from, cmd, data);
@@ -174,6 +179,11 @@ std::optional<Frame> decode_frame(std::span<const std::uint8_t> b) {
 }
 
 std::optional<Hz> decode_frequency(const Frame& f) {
+  if (f.cmd == 0x1C && f.data.size() == 6 && f.data[0] == 0x03) {
+    auto v = decode_bcd_little_endian(std::span(f.data).subspan(1));
+    if (!v) return std::nullopt;
+    return static_cast<Hz>(*v);
+  }
   if (f.cmd != kCmdSetFrequency && f.cmd != 0x03 && f.cmd != 0x00) return std::nullopt;
   if (f.data.size() != 5 && f.data.size() != 4) return std::nullopt;
   auto v = decode_bcd_little_endian(f.data);

@@ -65,6 +65,8 @@ Bytes select_band(std::uint8_t to, Band band, std::uint8_t from = kController); 
 Bytes select_vfo(std::uint8_t to, Vfo vfo, std::uint8_t from = kController);     // 07 00 / 07 01
 // Read the selected band's frequency: 03 (the radio answers FE FE E0 <to> 03 <5 BCD> FD).
 Bytes read_frequency(std::uint8_t to, std::uint8_t from = kController);
+// Read the transmit frequency: 1C 03 (the answer: FE FE E0 <to> 1C 03 <5 BCD> FD).
+Bytes read_transmit_frequency(std::uint8_t to, std::uint8_t from = kController);
 // Satellite mode on/off: 16 5A 01|00 (IC-9700, IC-9100) or 1A 07 01|00 (IC-910H), cmd and sub given.
 Bytes satellite_mode(std::uint8_t to, std::uint8_t cmd, std::uint8_t sub, bool on, std::uint8_t from = kController);
 // CTCSS: 1B 00 <tone, 3 bytes BCD, tenths of Hz, most significant first> (67.0 Hz: 00 06 70), and
@@ -84,7 +86,7 @@ struct Frame {
 };
 // Exactly one complete frame (FE FE ... FD); nullopt otherwise.
 std::optional<Frame> decode_frame(std::span<const std::uint8_t> bytes);
-// The frequency of a 05 (set) or 03/00 (read / transceive) frame.
+// The frequency of a 05 (set), 03/00 (read / transceive) or 1C 03 (transmit frequency) frame.
 std::optional<Hz> decode_frequency(const Frame& f);
 std::optional<Mode> decode_mode(const Frame& f);
 

@@ -222,10 +222,12 @@ Hz IcomLink::read_frequency(Link l) {
   const std::uint8_t to = address(l);
   if (!can_read(l)) return RadioLink::read_frequency(l);
   ensure_satellite_mode();
-  select_band(l);
-  const auto answer = exchange(icom::read_frequency(to), Expect::data);
+  const icom::Band band = l == opt_.main_link ? icom::Band::main : icom::Band::sub;
+  const bool tx = opt_.satellite_cmd != 0 && l == Link::uplink && opt_.reads_tx_1c03 && selected_ != band;
+  if (!tx) select_band(l);
+  const auto answer = exchange(tx ? icom::read_transmit_frequency(to) : icom::read_frequency(to), Expect::data);
   const auto hz = answer ? icom::decode_frequency(*answer) : std::nullopt;
-  if (!hz) throw LinkError(Action::retry, who(to) + " answered 03 without a frequency");
+  if (!hz) throw LinkError(Action::retry, who(to) + " answered " + (tx ? "1C 03" : "03") + " without a frequency");
   return *hz;
 }
 

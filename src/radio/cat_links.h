@@ -36,6 +36,9 @@ struct IcomOptions {
   std::uint8_t satellite_cmd = 0, satellite_sub = 0;
   Link main_link = Link::uplink;
   bool reads = false;            // 03 after the band select reads a link's frequency (dial follow)
+  // 1C 03 reads the transmit frequency in satellite mode without a band select (IC-9700): the
+  // uplink is read so, and no select goes back and forth between the two reads of a tick.
+  bool reads_tx_1c03 = false;
   bool ctcss = false;            // 1B 00 tone and 16 42 TONE on the uplink's band
   std::string model;             // "IC-9700" in messages ("" for the family form)
   static IcomOptions from(const RadioConfig& c);

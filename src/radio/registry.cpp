@@ -24,6 +24,7 @@ IcomOptions icom_options(const RadioModel& m, const RadioSpec& spec, const Radio
     o.width = m.four_byte_frequency ? icom::FrequencyWidth::four_bytes : icom::FrequencyWidth::five_bytes;
     o.baud = spec.baud > 0 ? spec.baud : m.baud;
     o.reads = m.caps.reads;
+    o.reads_tx_1c03 = m.name == "ic9700";   // radios-2026.md: the IC-9700 reads its TX frequency so
     o.ctcss = m.caps.ctcss;
     o.model = std::string(m.label.substr(m.label.find(' ') + 1));
     if (role == RadioRole::both && m.caps.links == 2) {

@@ -57,7 +57,8 @@ std::vector<std::string> hex_all(const std::vector<Bytes>& frames) {
 }
 
 // An IC-9700 at A2h (CI-V reference guide): FB/FA answers, 05/06 on the selected band, 07 D0/D1
-// selects Main/Sub, 03 answers the selected band's frequency, 16 5A satellite mode, 1B 00 tone,
+// selects Main/Sub, 03 answers the selected band's frequency, 1C 03 the transmit frequency (Sub in
+// satellite mode), 16 5A satellite mode, 1B 00 tone,
 // 16 42 TONE. With echo (a CI-V bus) every frame comes back first; without (USB, Echo Back OFF)
 // only the answer. turn() moves a band's dial as the knob would and sends the transceive frame.
 class Ic9700 {
@@ -127,6 +128,11 @@ class Ic9700 {
           answer(true);
         } else if (f->cmd == 0x03 && d.empty()) {
           end_.write(icom::frame(icom::kController, kAddr, 0x03, bcd_little_endian(static_cast<std::uint64_t>(hz_[band]), 5)));
+        } else if (f->cmd == 0x1C && d.size() == 1 && d[0] == 0x03) {   // the TX frequency: Sub in satellite mode
+          Bytes a{0x03};
+          const Bytes bcd = bcd_little_endian(static_cast<std::uint64_t>(hz_[sat_ ? 1 : band]), 5);
+          a.insert(a.end(), bcd.begin(), bcd.end());
+          end_.write(icom::frame(icom::kController, kAddr, 0x1C, a));
         } else if (f->cmd == 0x16 && d.size() == 2 && d[0] == 0x5A) {
           if (!refuse_satmode) sat_ = d[1] == 0x01;
           answer(!refuse_satmode);
@@ -224,16 +230,35 @@ TEST_CASE("IC-9700, echo on and off: satellite mode, Main down / Sub up, read-ba
     CHECK(count_cmd(rig.frames(), 0x05) == 0);
     radio.set_frequency(Link::downlink, 435'653'580);   // unguarded again: no more idle reads
     REQUIRE(radio.wait_idle(10000ms));
+
+    // The Sub (uplink) dial, with Main selected: read with 1C 03 (the transmit frequency), no select.
+    rig.clear();
+    rig.turn(icom::Band::sub, -5'000);
+    radio.set_frequency_guarded(Link::uplink, 145'963'930, 60);
+    REQUIRE(radio.wait_idle(10000ms));
+    CHECK(radio.take_dial_turn(Link::uplink) == 145'958'930);
+    const auto tx_read = hex_all(rig.frames());
+    REQUIRE_FALSE(tx_read.empty());
+    CHECK(tx_read.front() == "FE FE A2 E0 1C 03 FD");
+    CHECK(count_cmd(rig.frames(), 0x07) == 0);
+    radio.set_frequency(Link::uplink, 145'958'930);
+    REQUIRE(radio.wait_idle(10000ms));
     CHECK(radio.status().reads_downlink);
     CHECK(radio.status().reads_uplink);
 
-    // CTCSS on the uplink's band (Sub): 1B 00 tone, then TONE on.
+    // CTCSS on the uplink's band (Sub, selected already by the uplink's write): 1B 00 tone, TONE on.
     rig.clear();
     radio.set_ctcss_tone(670);
     REQUIRE(radio.wait_idle(10000ms));
-    CHECK(hex_all(rig.frames()) ==
-          std::vector<std::string>{"FE FE A2 E0 07 D1 FD", "FE FE A2 E0 1B 00 00 06 70 FD", "FE FE A2 E0 16 42 01 FD"});
+    CHECK(hex_all(rig.frames()) == std::vector<std::string>{"FE FE A2 E0 1B 00 00 06 70 FD", "FE FE A2 E0 16 42 01 FD"});
     CHECK(rig.tone() == 670);
+    rig.clear();
+    radio.set_frequency(Link::downlink, 435'653'570);   // Main selected; a tone off selects Sub first
+    radio.set_ctcss_tone(0);
+    REQUIRE(radio.wait_idle(10000ms));
+    CHECK(hex_all(rig.frames()) == std::vector<std::string>{"FE FE A2 E0 07 D0 FD", "FE FE A2 E0 05 70 35 65 35 04 FD",
+                                                            "FE FE A2 E0 07 D1 FD", "FE FE A2 E0 16 42 00 FD"});
+    CHECK(rig.tone() == 0);
 
     // Closing turns satellite mode off.
     rig.clear();
