@@ -452,3 +452,80 @@ TEST_CASE("An FT-817 alone refuses the uplink with a message") {
         "the FT-817 carries one link (the downlink): the uplink needs a second radio (--uplink-radio)");
   CHECK(rig.commands().empty());
 }
+
+namespace {
+
+// A TS-2000 (Kenwood's PC command reference): FA/FB set VFO A/B (11 digits of Hz), FA; / FB; answer
+// them, MD the mode, FN the VFO the mode goes to.
+class Ts2000 {
+ public:
+  explicit Ts2000(const std::string& path) : end_(path) { thread_ = std::thread([this] { run(); }); }
+  ~Ts2000() {
+    stop_ = true;
+    thread_.join();
+  }
+  std::vector<std::string> commands() {
+    std::lock_guard lock(mu_);
+    return cmds_;
+  }
+  void clear() {
+    std::lock_guard lock(mu_);
+    cmds_.clear();
+  }
+  void turn(char vfo, Hz delta) {
+    std::lock_guard lock(mu_);
+    hz_[vfo] += delta;
+  }
+
+ private:
+  void run() {
+    std::string text;
+    while (!stop_) {
+      auto bytes = end_.read(64, 20ms);
+      text.append(bytes.begin(), bytes.end());
+      std::string rest;
+      for (const std::string& c : kenwood::split_commands(text, &rest)) {
+        std::lock_guard lock(mu_);
+        cmds_.push_back(c);
+        if (auto f = kenwood::decode_frequency(c)) hz_[f->vfo == kenwood::Vfo::a ? 'A' : 'B'] = f->hz;
+        if (c == "FA;" || c == "FB;") {
+          const std::string answer = kenwood::set_frequency(c[1] == 'A' ? kenwood::Vfo::a : kenwood::Vfo::b, hz_[c[1]]);
+          end_.write(std::vector<std::uint8_t>(answer.begin(), answer.end()));
+        }
+      }
+      text = rest;
+    }
+  }
+  PtyEnd end_;
+  std::atomic<bool> stop_{false};
+  std::mutex mu_;
+  std::vector<std::string> cmds_;
+  std::map<char, Hz> hz_;
+  std::thread thread_;
+};
+
+}  // namespace
+
+TEST_CASE("TS-2000: VFO A down, VFO B up, the dial read back with FA; / FB;") {
+  if (!have_socat()) return;
+  PtyPair pair;
+  REQUIRE(pair.ok());
+  Ts2000 rig(pair.test_side());
+  auto made = make_radio("ts2000:" + pair.radio_side(), RadioConfig{}, timing());
+  RadioDriver& radio = *made.driver;
+  radio.set_mode(Link::downlink, Mode::usb);
+  radio.set_frequency(Link::downlink, 435'643'780);
+  radio.set_mode(Link::uplink, Mode::lsb);
+  radio.set_frequency(Link::uplink, 145'963'730);
+  REQUIRE(radio.wait_idle(10000ms));
+  REQUIRE(eventually([&] { return rig.commands().size() >= 7; }));
+  CHECK(rig.commands() == std::vector<std::string>{"FN0;", "MD2;", "FA00435643780;", "FN1;", "MD1;", "FN0;", "FB00145963730;"});
+  CHECK(radio.status().reads_uplink);
+  rig.clear();
+  rig.turn('B', 2'000);
+  radio.set_frequency_guarded(Link::uplink, 145'963'770, 60);
+  REQUIRE(radio.wait_idle(10000ms));
+  CHECK(radio.take_dial_turn(Link::uplink) == 145'965'730);
+  REQUIRE(eventually([&] { return !rig.commands().empty(); }));
+  CHECK(rig.commands().front() == "FB;");
+}
