@@ -308,15 +308,13 @@ TEST_CASE("A model without a CTCSS encoder refuses a tone with a message, never 
 
 namespace {
 
-// An FT-847 (Hamlib ft847.c): 5-byte commands, nothing acknowledged; 03/13/23 answer 4 BCD bytes
-// of 10 Hz and the mode. And an FT-817 (ft817.c): 01 / 07 / 03 on its one VFO.
-class Yaesu5 {
+// A radio that takes commands and may answer: the pty, the thread reading it and the log of the
+// commands it took (as text), shared by the FT-847/FT-817 and TS-2000 responders. A derived
+// responder's take() cuts what came in into commands, records and answers them (mu_ held).
+class CommandResponder {
  public:
-  explicit Yaesu5(const std::string& path) : end_(path) { thread_ = std::thread([this] { run(); }); }
-  ~Yaesu5() {
-    stop_ = true;
-    thread_.join();
-  }
+  explicit CommandResponder(const std::string& path) : end_(path) {}
+  virtual ~CommandResponder() = default;
   std::vector<std::string> commands() {
     std::lock_guard lock(mu_);
     return cmds_;
@@ -325,42 +323,59 @@ class Yaesu5 {
     std::lock_guard lock(mu_);
     cmds_.clear();
   }
-  Hz frequency(std::uint8_t vfo_nibble) {
-    std::lock_guard lock(mu_);
-    return hz_[vfo_nibble];
+
+ protected:
+  void start() { thread_ = std::thread([this] { run(); }); }
+  void stop() {
+    stop_ = true;
+    thread_.join();
   }
+  virtual void take(const std::vector<std::uint8_t>& bytes) = 0;
+  PtyEnd end_;
+  std::mutex mu_;
+  std::vector<std::string> cmds_;
+
+ private:
+  void run() {
+    while (!stop_) {
+      auto bytes = end_.read(64, 20ms);
+      std::lock_guard lock(mu_);
+      take(bytes);
+    }
+  }
+  std::atomic<bool> stop_{false};
+  std::thread thread_;
+};
+
+// An FT-847 (Hamlib ft847.c): 5-byte commands, nothing acknowledged; 03/13/23 answer 4 BCD bytes
+// of 10 Hz and the mode. And an FT-817 (ft817.c): 01 / 07 / 03 on its one VFO.
+class Yaesu5 final : public CommandResponder {
+ public:
+  explicit Yaesu5(const std::string& path) : CommandResponder(path) { start(); }
+  ~Yaesu5() override { stop(); }
   void turn(std::uint8_t vfo_nibble, Hz delta) {
     std::lock_guard lock(mu_);
     hz_[vfo_nibble] += delta;
   }
 
  private:
-  void run() {
-    Bytes buf;
-    while (!stop_) {
-      auto bytes = end_.read(64, 20ms);
-      buf.insert(buf.end(), bytes.begin(), bytes.end());
-      while (buf.size() >= 5) {
-        const Bytes c(buf.begin(), buf.begin() + 5);
-        buf.erase(buf.begin(), buf.begin() + 5);
-        std::lock_guard lock(mu_);
-        cmds_.push_back(to_hex(c));
-        const std::uint8_t op = c[4] & 0x0F, vfo = c[4] & 0xF0;
-        if (op == 0x01) hz_[vfo] = static_cast<Hz>(*decode_bcd_big_endian(std::span(c).first(4)) * 10);
-        if (op == 0x03) {
-          Bytes a = bcd_big_endian(static_cast<std::uint64_t>(hz_[vfo] / 10), 4);
-          a.push_back(0x01);
-          end_.write(a);
-        }
+  void take(const std::vector<std::uint8_t>& bytes) override {
+    buf_.insert(buf_.end(), bytes.begin(), bytes.end());
+    while (buf_.size() >= 5) {
+      const Bytes c(buf_.begin(), buf_.begin() + 5);
+      buf_.erase(buf_.begin(), buf_.begin() + 5);
+      cmds_.push_back(to_hex(c));
+      const std::uint8_t op = c[4] & 0x0F, vfo = c[4] & 0xF0;
+      if (op == 0x01) hz_[vfo] = static_cast<Hz>(*decode_bcd_big_endian(std::span(c).first(4)) * 10);
+      if (op == 0x03) {
+        Bytes a = bcd_big_endian(static_cast<std::uint64_t>(hz_[vfo] / 10), 4);
+        a.push_back(0x01);
+        end_.write(a);
       }
     }
   }
-  PtyEnd end_;
-  std::atomic<bool> stop_{false};
-  std::mutex mu_;
-  std::vector<std::string> cmds_;
+  Bytes buf_;
   std::map<std::uint8_t, Hz> hz_;
-  std::thread thread_;
 };
 
 }  // namespace
@@ -457,51 +472,31 @@ namespace {
 
 // A TS-2000 (Kenwood's PC command reference): FA/FB set VFO A/B (11 digits of Hz), FA; / FB; answer
 // them, MD the mode, FN the VFO the mode goes to.
-class Ts2000 {
+class Ts2000 final : public CommandResponder {
  public:
-  explicit Ts2000(const std::string& path) : end_(path) { thread_ = std::thread([this] { run(); }); }
-  ~Ts2000() {
-    stop_ = true;
-    thread_.join();
-  }
-  std::vector<std::string> commands() {
-    std::lock_guard lock(mu_);
-    return cmds_;
-  }
-  void clear() {
-    std::lock_guard lock(mu_);
-    cmds_.clear();
-  }
+  explicit Ts2000(const std::string& path) : CommandResponder(path) { start(); }
+  ~Ts2000() override { stop(); }
   void turn(char vfo, Hz delta) {
     std::lock_guard lock(mu_);
     hz_[vfo] += delta;
   }
 
  private:
-  void run() {
-    std::string text;
-    while (!stop_) {
-      auto bytes = end_.read(64, 20ms);
-      text.append(bytes.begin(), bytes.end());
-      std::string rest;
-      for (const std::string& c : kenwood::split_commands(text, &rest)) {
-        std::lock_guard lock(mu_);
-        cmds_.push_back(c);
-        if (auto f = kenwood::decode_frequency(c)) hz_[f->vfo == kenwood::Vfo::a ? 'A' : 'B'] = f->hz;
-        if (c == "FA;" || c == "FB;") {
-          const std::string answer = kenwood::set_frequency(c[1] == 'A' ? kenwood::Vfo::a : kenwood::Vfo::b, hz_[c[1]]);
-          end_.write(std::vector<std::uint8_t>(answer.begin(), answer.end()));
-        }
+  void take(const std::vector<std::uint8_t>& bytes) override {
+    text_.append(bytes.begin(), bytes.end());
+    std::string rest;
+    for (const std::string& c : kenwood::split_commands(text_, &rest)) {
+      cmds_.push_back(c);
+      if (auto f = kenwood::decode_frequency(c)) hz_[f->vfo == kenwood::Vfo::a ? 'A' : 'B'] = f->hz;
+      if (c == "FA;" || c == "FB;") {
+        const std::string answer = kenwood::set_frequency(c[1] == 'A' ? kenwood::Vfo::a : kenwood::Vfo::b, hz_[c[1]]);
+        end_.write(std::vector<std::uint8_t>(answer.begin(), answer.end()));
       }
-      text = rest;
     }
+    text_ = rest;
   }
-  PtyEnd end_;
-  std::atomic<bool> stop_{false};
-  std::mutex mu_;
-  std::vector<std::string> cmds_;
+  std::string text_;
   std::map<char, Hz> hz_;
-  std::thread thread_;
 };
 
 }  // namespace
