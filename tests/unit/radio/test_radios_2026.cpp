@@ -161,6 +161,15 @@ class Ic9700 {
   std::thread thread_;
 };
 
+// A pass's first update (RS-44: USB down on 435, LSB up on 145), as apply() sends it.
+void rs44_first_update(RadioDriver& radio) {
+  radio.set_mode(Link::downlink, Mode::usb);
+  radio.set_frequency(Link::downlink, 435'643'780);
+  radio.set_mode(Link::uplink, Mode::lsb);
+  radio.set_frequency(Link::uplink, 145'963'730);
+  REQUIRE(radio.wait_idle(10000ms));
+}
+
 int count_cmd(const std::vector<Bytes>& frames, std::uint8_t cmd) {
   int n = 0;
   for (const auto& b : frames)
@@ -182,11 +191,7 @@ TEST_CASE("IC-9700, echo on and off: satellite mode, Main down / Sub up, read-ba
     RadioDriver& radio = *made.driver;
 
     // A pass's first update (RS-44: USB down on 435, LSB up on 145), as apply() sends it.
-    radio.set_mode(Link::downlink, Mode::usb);
-    radio.set_frequency(Link::downlink, 435'643'780);
-    radio.set_mode(Link::uplink, Mode::lsb);
-    radio.set_frequency(Link::uplink, 145'963'730);
-    REQUIRE(radio.wait_idle(10000ms));
+    rs44_first_update(radio);
     CHECK_FALSE(radio.status().fault);
     CHECK(hex_all(rig.frames()) == std::vector<std::string>{
                                        "FE FE A2 E0 16 5A 01 FD",         // satellite mode on, first
@@ -387,11 +392,7 @@ TEST_CASE("FT-847: CAT on, satellite mode, SAT RX / SAT TX opcodes, read-back, C
   Yaesu5 rig(pair.test_side());
   auto made = make_radio("ft847:" + pair.radio_side(), RadioConfig{}, timing());
   RadioDriver& radio = *made.driver;
-  radio.set_mode(Link::downlink, Mode::usb);
-  radio.set_frequency(Link::downlink, 435'643'780);
-  radio.set_mode(Link::uplink, Mode::lsb);
-  radio.set_frequency(Link::uplink, 145'963'730);
-  REQUIRE(radio.wait_idle(10000ms));
+  rs44_first_update(radio);
   REQUIRE(eventually([&] { return rig.commands().size() >= 6; }));
   CHECK(rig.commands() == std::vector<std::string>{"00 00 00 00 00", "00 00 00 00 4E", "01 00 00 00 17",
                                                     "43 56 43 78 11", "00 00 00 00 27", "14 59 63 73 21"});
@@ -508,11 +509,7 @@ TEST_CASE("TS-2000: VFO A down, VFO B up, the dial read back with FA; / FB;") {
   Ts2000 rig(pair.test_side());
   auto made = make_radio("ts2000:" + pair.radio_side(), RadioConfig{}, timing());
   RadioDriver& radio = *made.driver;
-  radio.set_mode(Link::downlink, Mode::usb);
-  radio.set_frequency(Link::downlink, 435'643'780);
-  radio.set_mode(Link::uplink, Mode::lsb);
-  radio.set_frequency(Link::uplink, 145'963'730);
-  REQUIRE(radio.wait_idle(10000ms));
+  rs44_first_update(radio);
   REQUIRE(eventually([&] { return rig.commands().size() >= 7; }));
   CHECK(rig.commands() == std::vector<std::string>{"FN0;", "MD2;", "FA00435643780;", "FN1;", "MD1;", "FN0;", "FB00145963730;"});
   CHECK(radio.status().reads_uplink);
