@@ -63,7 +63,8 @@ std::vector<std::string> hex_all(const std::vector<Bytes>& frames) {
 // only the answer. turn() moves a band's dial as the knob would and sends the transceive frame.
 class Ic9700 {
  public:
-  explicit Ic9700(const std::string& path, bool echo) : end_(path), echo_(echo) {
+  // Also an IC-9100 (7Ch, satellite mode 16 5A as the IC-9700) or IC-910H (60h, 1A 07).
+  Ic9700(const std::string& path, bool echo, std::uint8_t address = 0xA2) : end_(path), echo_(echo), kAddr(address) {
     thread_ = std::thread([this] { run(); });
   }
   ~Ic9700() {
@@ -100,7 +101,6 @@ class Ic9700 {
     end_.write(icom::frame(0x00, kAddr, 0x00, bcd_little_endian(static_cast<std::uint64_t>(hz), 5)));
   }
 
-  static constexpr std::uint8_t kAddr = 0xA2;
 
  private:
   void answer(bool ok) { end_.write({0xFE, 0xFE, icom::kController, kAddr, ok ? icom::kOk : icom::kNg, 0xFD}); }
@@ -133,7 +133,7 @@ class Ic9700 {
           const Bytes bcd = bcd_little_endian(static_cast<std::uint64_t>(hz_[sat_ ? 1 : band]), 5);
           a.insert(a.end(), bcd.begin(), bcd.end());
           end_.write(icom::frame(icom::kController, kAddr, 0x1C, a));
-        } else if (f->cmd == 0x16 && d.size() == 2 && d[0] == 0x5A) {
+        } else if ((f->cmd == 0x16 && d.size() == 2 && d[0] == 0x5A) || (f->cmd == 0x1A && d.size() == 2 && d[0] == 0x07)) {
           if (!refuse_satmode) sat_ = d[1] == 0x01;
           answer(!refuse_satmode);
         } else if (f->cmd == 0x1B && d.size() == 4 && d[0] == 0x00) {
@@ -150,6 +150,7 @@ class Ic9700 {
   }
   PtyEnd end_;
   const bool echo_;
+  const std::uint8_t kAddr;
   std::atomic<bool> stop_{false};
   std::mutex mu_;
   std::vector<Bytes> frames_;
@@ -298,6 +299,40 @@ TEST_CASE("IC-9700: a refused tone and a refused satellite mode are reported; Do
   CHECK(rig.frequency(icom::Band::sub) == 145'850'100);
   const auto frames = hex_all(rig.frames());
   CHECK(std::count(frames.begin(), frames.end(), "FE FE A2 E0 16 5A 01 FD") == 1);   // asked once, not every second
+}
+
+TEST_CASE("IC-9100 and IC-910H: their addresses and satellite-mode commands, Main up / Sub down") {
+  if (!have_socat()) return;
+  struct Case {
+    const char* spec;
+    std::uint8_t address;
+    std::vector<std::string> first;
+  };
+  const Case cases[] = {
+      {"ic9100:", 0x7C, {"FE FE 7C E0 16 5A 01 FD", "FE FE 7C E0 07 D1 FD", "FE FE 7C E0 06 01 FD", "FE FE 7C E0 05 80 37 64 35 04 FD",
+                         "FE FE 7C E0 07 D0 FD", "FE FE 7C E0 06 00 FD", "FE FE 7C E0 05 30 37 96 45 01 FD"}},
+      {"ic910h:", 0x60, {"FE FE 60 E0 1A 07 01 FD", "FE FE 60 E0 07 D1 FD", "FE FE 60 E0 06 01 FD", "FE FE 60 E0 05 80 37 64 35 04 FD",
+                         "FE FE 60 E0 07 D0 FD", "FE FE 60 E0 06 00 FD", "FE FE 60 E0 05 30 37 96 45 01 FD"}},
+  };
+  for (const Case& c : cases) {
+    CAPTURE(c.spec);
+    PtyPair pair;
+    REQUIRE(pair.ok());
+    Ic9700 rig(pair.test_side(), true, c.address);   // a CI-V bus: with the echo
+    auto made = make_radio(std::string(c.spec) + pair.radio_side(), RadioConfig{}, timing());
+    rs44_first_update(*made.driver);
+    CHECK(hex_all(rig.frames()) == c.first);
+    CHECK(rig.frequency(icom::Band::sub) == 435'643'780);
+    CHECK(rig.frequency(icom::Band::main) == 145'963'730);
+  }
+  // :maindown puts the downlink on Main.
+  PtyPair pair;
+  REQUIRE(pair.ok());
+  Ic9700 rig(pair.test_side(), false, 0x7C);
+  auto made = make_radio("ic9100:" + pair.radio_side() + ":maindown", RadioConfig{}, timing());
+  rs44_first_update(*made.driver);
+  CHECK(rig.frequency(icom::Band::main) == 435'643'780);
+  CHECK(rig.frequency(icom::Band::sub) == 145'963'730);
 }
 
 TEST_CASE("A model without a CTCSS encoder refuses a tone with a message, never silently") {
