@@ -215,7 +215,13 @@ TEST_CASE("IC-9700, echo on and off: satellite mode, Main down / Sub up, read-ba
     }
     const auto upd = rig.frames();
     CHECK(count_cmd(upd, 0x05) == 10);
-    CHECK(count_cmd(upd, 0x07) <= count_cmd(upd, 0x05));
+    CHECK(count_cmd(upd, 0x07) == 10);   // one per band change, here every frequency: never more
+    // The CAT line per update (both links): 36 bytes to the radio (2 selects of 7, 2 frequencies
+    // of 11), 24 back (4 FB of 6), 36 more echoed on a CI-V bus: 60 bytes/s at one update a second
+    // without the echo, 96 with it.
+    std::size_t sent = 0;
+    for (const auto& f : upd) sent += f.size();
+    CHECK(sent == 5 * 36);
     CHECK(hex_all(upd)[0] == "FE FE A2 E0 07 D0 FD");
     CHECK(hex_all(upd)[1] == "FE FE A2 E0 05 40 37 64 35 04 FD");   // 435.643740
 
