@@ -169,6 +169,13 @@ const RadioModel* find_radio_model(std::string_view name) {
   return nullptr;
 }
 
+const RadioModel* find_radio_model_by_hamlib(int hamlib_model) {
+  if (hamlib_model <= 2) return nullptr;   // the dummy and NET rigctl are no radio
+  for (const RadioModel& m : kModels)
+    if (m.hamlib_model == hamlib_model) return &m;
+  return nullptr;
+}
+
 std::string spec_form(const RadioModel& m) {
   const std::string n(m.name);
   switch (m.form) {

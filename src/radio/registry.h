@@ -79,6 +79,9 @@ struct RadioModel {
 std::span<const RadioModel> radio_models();
 // The entry named so (exact, lower case as listed); nullptr when none.
 const RadioModel* find_radio_model(std::string_view name);
+// The model entry for a Hamlib rig model number (3081 -> ic9700), for the Hamlib path's satellite
+// mode defaults (which band transmits); nullptr when the registry has no such model.
+const RadioModel* find_radio_model_by_hamlib(int hamlib_model);
 // The spec form as --radio list prints it: "ic9700:DEVICE[:BAUD]".
 std::string spec_form(const RadioModel& m);
 // `trakbox --radio list`: one line per entry, a header first.

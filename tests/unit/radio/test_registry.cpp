@@ -49,6 +49,11 @@ TEST_CASE("registry: the satellite rigs' defaults") {
   CHECK(find_radio_model("ft817")->caps.links == 1);
   CHECK(find_radio_model("ft736")->caps.reads == false);
   CHECK(find_radio_model("ts2000")->hamlib_model == 2014);
+  CHECK(find_radio_model_by_hamlib(3081) == &ic9700);
+  CHECK(find_radio_model_by_hamlib(1001) == find_radio_model("ft847"));
+  CHECK(find_radio_model_by_hamlib(2) == nullptr);   // rigctld is no radio model
+  CHECK(find_radio_model_by_hamlib(1) == nullptr);
+  CHECK(find_radio_model_by_hamlib(3073) == nullptr);
 }
 
 TEST_CASE("--radio MODEL:DEVICE[:BAUD]: parsed from the table") {
