@@ -8,7 +8,7 @@ knob would: the downlink stays where the knob put it and the uplink (RS-44 inver
 within 2 s plus the Tuner's knob-rest delay. The bytes per second on the CAT line are printed.
 
 SO-50 (2026-05-21 14:10 UTC, near its culmination) with its 67.0 Hz tone, which this radio
-refuses (FA): the refusal is reported and the Doppler goes on.
+refuses (FA): the refusal is reported and the Doppler goes on. Then RS-44 again with the echo on.
 Every wait polls for its condition with a deadline.
 """
 import os
@@ -39,13 +39,14 @@ def expected(clock_at, sat, down_spot, up_spot):
     return down_spot * (1 - rr / C), up_spot / (1 - rr / C)
 
 
-def on_ic9700(start_at, sat_key, test, refuse_tone=False):
+def on_ic9700(start_at, sat_key, test, refuse_tone=False, echo=False):
     """trakbox tracking one entry of the shipped list (single tracking, from start_at) with an
-    IC-9700 responder (no echo) on a pty pair: test(rig, trakbox, state_dir, clock_now)."""
+    IC-9700 responder (USB: no echo; or a CI-V bus) on a pty pair: test(rig, trakbox, state_dir,
+    clock_now)."""
     pair = SerialPair()
     state = tempfile.mkdtemp(prefix="trakbox-ic9700-")
     procs = []
-    rig = IC9700(pair.terminal_side, echo=False, refuse_tone=refuse_tone)
+    rig = IC9700(pair.terminal_side, echo=echo, refuse_tone=refuse_tone)
     try:
         t0 = time.time()
         tb = subprocess.Popen([BIN, "--state", state, "--line", "--satrak-port", "0",
@@ -105,7 +106,7 @@ def rs44(rig, tb, state, clock_now):
     check(last == "FE FE A2 E0 16 5A 00 FD", f"satellite mode off at the end: {last}")
     log = open(os.path.join(state, "trakbox.log")).read()
     check("downlink dial turned" in log, "the log names the turn of the dial")
-    print(f"ic9700 RS-44: first update {first}; {freqs} frequency and {selects} select frames in 10 s, "
+    print(f"ic9700 RS-44 (echo {'on' if rig.echo else 'off'}): first update {first}; {freqs} frequency and {selects} select frames in 10 s, "
           f"{rate:.0f} bytes/s on the CAT line; downlink {d1} -> {d1 + 10_000} (knob) -> {d2}; "
           f"uplink {u1} -> {u2}, moved {moved_after:.2f} s after the turn")
 
@@ -132,6 +133,8 @@ def main():
         skip("socat not installed")
     on_ic9700(datetime(2026, 5, 21, 10, 57, 0, tzinfo=timezone.utc), b"12", rs44)   # RS-44 is #12
     on_ic9700(datetime(2026, 5, 21, 14, 10, 0, tzinfo=timezone.utc), b"5", so50, refuse_tone=True)   # SO-50 #5
+    # The same radio on a CI-V bus (CI-V USB Echo Back ON): every frame echoed first.
+    on_ic9700(datetime(2026, 5, 21, 10, 57, 0, tzinfo=timezone.utc), b"12", rs44, echo=True)
 
 
 if __name__ == "__main__":
