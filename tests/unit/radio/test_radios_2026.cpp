@@ -350,6 +350,12 @@ TEST_CASE("A model without a CTCSS encoder refuses a tone with a message, never 
   made.driver->set_ctcss_tone(670);
   REQUIRE(eventually([&] { return made.driver->status().fault; }));
   CHECK(made.driver->status().message == "the IC-910H has no CTCSS encoder trakbox can set: tone 67.0 Hz not sent");
+  // The families of menu 6-7 neither: a tone is refused with the same message, never dropped silently.
+  for (const char* spec : {"kenwood:", "yaesu:", "icom:"}) {
+    auto fam = make_radio(std::string(spec) + pair.radio_side(), RadioConfig{}, timing());
+    fam.driver->set_ctcss_tone(885);
+    REQUIRE(eventually([&] { return fam.driver->status().message.find("tone 88.5 Hz not sent") != std::string::npos; }));
+  }
 }
 
 namespace {
