@@ -54,6 +54,9 @@ IcomLink::IcomLink(std::string device, IcomOptions options, SerialSettings seria
     : port_(std::move(device), serial), opt_(options) {}
 
 std::string IcomLink::describe() const {
+  if (!opt_.model.empty())   // a model of the registry: one address
+    return "Icom " + opt_.model + " CI-V on " + port_.device() + " (" + hexaddr(opt_.rx_address) +
+           (opt_.satellite_cmd ? ", satellite mode)" : ")");
   return "Icom CI-V on " + port_.device() + " (RX " + hexaddr(opt_.rx_address) + ", TX " +
          hexaddr(opt_.tx_address) + ")";
 }
