@@ -214,11 +214,11 @@ class Session : public std::enable_shared_from_this<Session> {
     return true;
   }
 
-  // A secret given: answered when this address's earlier wrong guesses have been paid for
-  // (GuessGuard), with reading paused until then so nothing after it runs first.
+  // A secret given: answered when this address is free of its earlier wrong guesses (GuessGuard),
+  // with reading paused until then so nothing sent after it runs first.
   void attempt(const std::string& secret_given) {
     const auto now = std::chrono::steady_clock::now();
-    const auto at = core_->guesses.slot(address_, now);
+    const auto at = core_->guesses.free_at(address_, now);
     if (at <= now) {
       answer(secret_given);
       return;
@@ -230,10 +230,11 @@ class Session : public std::enable_shared_from_this<Session> {
       if (ec || self->closed_) return;
       self->paused_ = false;
       std::string s = std::move(self->pending_secret_);
-      self->answer(s);
+      self->attempt(s);  // another connection of the address may have been answered first: wait again
+      if (self->paused_ || self->closed_) return;
       std::string rest;
       rest.swap(self->backlog_);
-      if (!rest.empty() && !self->closed_ && !self->closing_) self->feed(rest.data(), rest.size());
+      if (!rest.empty() && !self->closing_) self->feed(rest.data(), rest.size());
       self->go_on();
     });
   }
@@ -323,7 +324,7 @@ class Session : public std::enable_shared_from_this<Session> {
   bool authenticated_;   // no secret, or the client gave it
   int auth_failures_ = 0;
   asio::steady_timer auth_timer_;
-  bool paused_ = false;          // a secret waits for its answer's slot
+  bool paused_ = false;          // a secret waits until its address may be answered
   std::string pending_secret_;   // that secret
   std::string backlog_;          // what the client sent after it
   asio::steady_timer guess_timer_;
