@@ -260,6 +260,13 @@ class Session : public std::enable_shared_from_this<Session> {
                    std::chrono::duration_cast<std::chrono::seconds>(left).count(),
                    core_->guesses.policy().lockout_after);
       closing_ = true;
+      // Its other connections (waiting for answers, or logged out) go too: none holds a slot for
+      // the lockout's ten minutes.
+      std::vector<std::shared_ptr<Session>> same;
+      for (auto& [p, w] : core_->sessions)
+        if (auto s = w.lock(); s && s.get() != this && s->address() == address_) same.push_back(std::move(s));
+      for (auto& s : same)
+        if (!s->authenticated_) s->close("its address is locked out");
     } else if (++auth_failures_ >= core_->options.max_auth_failures) {
       spdlog::warn("{}: client {} gave a wrong secret {} times; closed", core_->options.name, peer_, auth_failures_);
       closing_ = true;
