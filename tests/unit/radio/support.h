@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -23,6 +24,8 @@
 #include <string>
 #include <thread>
 #include <vector>
+
+#include "radio/cat.h"
 
 extern char** environ;
 
@@ -310,6 +313,19 @@ inline std::string run_capture(const std::string& command) {
     ::pclose(f);
   }
   return out;
+}
+
+// The radio's side of a CI-V line: reads the pty until stop, cuts what comes into frames (a lone
+// jam code too) and hands each to on_frame, on the calling thread (a responder's own thread).
+template <typename OnFrame>
+void read_civ_frames(PtyEnd& end, const std::atomic<bool>& stop, OnFrame on_frame) {
+  tb::radio::icom::FrameReader reader;
+  while (!stop) {
+    auto bytes = end.read(256, 20ms);
+    if (bytes.empty()) continue;
+    reader.feed(bytes);
+    while (auto f = reader.next()) on_frame(*f);
+  }
 }
 
 }  // namespace tbtest
