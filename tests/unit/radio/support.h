@@ -1,6 +1,7 @@
 // Test helpers for the radio tests: child processes (socat, rigctld), pseudo-terminal peers,
 // free TCP ports, bounded waiting. POSIX only.
 #pragma once
+#include <doctest/doctest.h>
 #include <arpa/inet.h>
 #include <fcntl.h>
 #include <netinet/in.h>
@@ -313,6 +314,13 @@ inline std::string run_capture(const std::string& command) {
     ::pclose(f);
   }
   return out;
+}
+
+// socat makes the pty pairs the serial tests run on; without it they are skipped with a message.
+inline bool have_socat() {
+  if (which("socat")) return true;
+  MESSAGE("socat not installed: serial CAT pty tests skipped");
+  return false;
 }
 
 // The radio's side of a CI-V line: reads the pty until stop, cuts what comes into frames (a lone

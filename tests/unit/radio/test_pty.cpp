@@ -13,6 +13,7 @@
 using namespace tb::radio;
 using namespace std::chrono_literals;
 using tbtest::eventually;
+using tbtest::have_socat;
 using tbtest::PtyEnd;
 using tbtest::PtyPair;
 
@@ -25,12 +26,6 @@ IcomOptions patient(IcomOptions o = {}) {
   o.echo_margin = 1000ms;
   o.reply_timeout = 1000ms;
   return o;
-}
-
-bool have_socat() {
-  if (tbtest::which("socat")) return true;
-  MESSAGE("socat not installed: serial CAT pty tests skipped");
-  return false;
 }
 
 // The Icom side of the one-wire CI-V bus: every frame comes back as its echo; a radio that is

@@ -28,6 +28,7 @@ struct StringMaker<std::vector<std::string>> {
 using namespace tb::radio;
 using namespace std::chrono_literals;
 using tbtest::eventually;
+using tbtest::have_socat;
 using tbtest::PtyEnd;
 using tbtest::PtyPair;
 
@@ -42,12 +43,6 @@ DriverTiming timing() {
   t.icom_echo_margin = 1000ms;   // patient: a loaded machine is no collision
   t.icom_reply_timeout = 1000ms;
   return t;
-}
-
-bool have_socat() {
-  if (tbtest::which("socat")) return true;
-  MESSAGE("socat not installed: radio responder tests skipped");
-  return false;
 }
 
 std::vector<std::string> hex_all(const std::vector<Bytes>& frames) {
