@@ -103,6 +103,7 @@ std::vector<Note> Monitor::on_link(Link l, const std::string& detail) {
   const Link before = link_;
   link_ = l;
   link_detail_ = detail;
+  if (l != Link::receiving) filter_.lose();  // confirmed again once it is heard again
   const std::string at = "gpsd at " + source_.substr(source_.find(':') + 1);
   const std::string why = detail.empty() ? std::string() : " (" + detail + ")";
   switch (l) {
@@ -110,7 +111,8 @@ std::vector<Note> Monitor::on_link(Link l, const std::string& detail) {
     case Link::connecting:
       break;
     case Link::no_gpsd:
-      if (before != Link::no_gpsd)
+      // Said once: again and again while it stays away, and not after "went away".
+      if (before != Link::no_gpsd && before != Link::lost)
         notes.push_back({true, "GPS: no " + at + why + "; the station keeps its position; trying again every 2 s"});
       break;
     case Link::lost:

@@ -59,6 +59,12 @@ class PositionFilter {
   const std::optional<Position>& confirmed() const { return confirmed_; }
   // The receiver has a confirmed fix now (not lost since).
   bool fixed() const { return fixed_; }
+  // The receiver cannot be heard (gpsd gone): as a lost fix, without a report.
+  void lose() {
+    fixed_ = false;
+    if (main_) main_->run = 0;
+    other_.reset();
+  }
 
  private:
   struct Chain {
