@@ -58,7 +58,13 @@ def write(name, comment, cycles):
         t0 = first[0].split(",")[1][:6]
         t = (datetime.datetime.strptime(t0, "%H%M%S") - datetime.timedelta(seconds=k)).strftime("%H%M%S")
         lead.append([sentence(s.replace(t0 + ".00", t + ".00", 1)) for s in first])
-    cycles = lead + cycles
+    # And a tail the tests never feed: gpsfake -1 ends (and takes its gpsd down) after the last
+    # sentence, so the last cycle a test feeds is never the log's last.
+    last = [s[1:s.index("*")] for s in cycles[-1]]
+    t1 = last[0].split(",")[1][:6]
+    t = (datetime.datetime.strptime(t1, "%H%M%S") + datetime.timedelta(seconds=1)).strftime("%H%M%S")
+    tail = [sentence(s.replace(t1 + ".00", t + ".00", 1)) for s in last]
+    cycles = lead + cycles + [tail]
     with open(os.path.join(HERE, name), "w", newline="") as f:
         f.write("# %s\n# written by make_logs.py from the NMEA 0183 GGA, GSA and RMC formats\n" % comment)
         for c in cycles:
