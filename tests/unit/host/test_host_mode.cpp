@@ -3,8 +3,8 @@
 #include <cmath>
 #include <memory>
 
-#include "gps/monitor.h"
 #include "host/host_mode.h"
+#include "support/gps_fix.h"
 #include "support/sim_station.h"
 
 using namespace tb;
@@ -268,17 +268,8 @@ TEST_CASE("?A with a GPS receiver: a second line with its fix") {
   gps::Monitor receiver("gpsd:localhost:2947");
   s.station->set_gps(&receiver);
   CHECK(s.cmd("?A").lines.at(1) == "GPS no fix [GPS CONNECTING]");
-  receiver.on_link(gps::Link::receiving);
   const orbit::UtcTime t = orbit::from_civil(2017, 10, 19, 6, 0, 0);
-  for (int i = 0; i < 3; ++i) {
-    gps::Report r;
-    r.mode = 3;
-    r.lat_deg = 41.01;
-    r.lon_deg = 29.17;
-    r.alt_m = 120.0;
-    r.time = orbit::add_seconds(t, i);
-    receiver.on_report(r, orbit::add_seconds(t, i));
-  }
+  testing::feed_gps_fix(receiver, t, t);
   const auto a = s.cmd("?A");
   REQUIRE(a.lines.size() == 2);
   CHECK(host::parse_az_el(a.lines[0]).args);

@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "fixture.h"
-#include "gps/monitor.h"
+#include "support/gps_fix.h"
 #include "menus/realtime_display.h"
 
 using namespace tb;
@@ -198,85 +198,63 @@ TEST_CASE("Line mode: the realtime display reports a rotator or radio fault and 
 }
 
 namespace {
-// A receiver that has confirmed 41.01N 29.17E (120 m, or 2D) with GPS time `gps` at clock time `clock`.
-void confirm(gps::Monitor& m, orbit::UtcTime gps, orbit::UtcTime clock, int mode = 3) {
-  m.on_link(gps::Link::receiving);
-  for (int i = 0; i < 3; ++i) {
-    gps::Report r;
-    r.mode = mode;
-    r.lat_deg = 41.01;
-    r.lon_deg = 29.17;
-    if (mode == 3) r.alt_m = 120.0;
-    r.time = orbit::add_seconds(gps, i);
-    m.on_report(r, orbit::add_seconds(clock, i));
+const orbit::UtcTime kGpsT0 = orbit::from_civil(2017, 10, 19, 6, 0, 0);
+// A menu fixture whose station has a receiver, fed a fix of `mode` (3D, 2D; 0: none) at kGpsT0.
+struct WithReceiver {
+  explicit WithReceiver(std::string input, int mode = 3) : f(std::move(input)) {
+    f.station->set_gps(&receiver);
+    if (mode) testing::feed_gps_fix(receiver, kGpsT0, f.clock.now(), mode);
   }
-}
+  ~WithReceiver() { f.station->set_gps(nullptr); }
+  testing::MenuFixture f;
+  gps::Monitor receiver{"gpsd:localhost:2947"};
+};
 }  // namespace
 
 TEST_CASE("Menu 4 with a GPS receiver: where the position came from, following it, its threshold") {
-  testing::MenuFixture f("\r\r\r\r\r\rY\r250\r");
-  gps::Monitor receiver("gpsd:localhost:2947");
-  f.station->set_gps(&receiver);
-  const orbit::UtcTime t = orbit::from_civil(2017, 10, 19, 6, 0, 0);
-  confirm(receiver, t, t);
-  menus::menu_4_station_elements(f.term, *f.services);
-  const std::string& out = f.term.output();
+  WithReceiver w("\r\r\r\r\r\rY\r250\r");
+  menus::menu_4_station_elements(w.f.term, *w.f.services);
+  const std::string& out = w.f.term.output();
   CHECK(out.find("Position from      typed in") != std::string::npos);
   CHECK(out.find("GPS receiver      gpsd:localhost:2947: 3D fix 41.0100N 29.1700E 120.0 m at 2017-10-19T06:00:02Z") !=
         std::string::npos);
-  CHECK(f.model.gps.follow);
-  CHECK(f.model.gps.threshold_m == 250.0);
+  const store::Model& m = w.f.model;
+  CHECK(m.gps.follow);
+  CHECK(m.gps.threshold_m == 250.0);
   // Following: the confirmed fix at once, saved once.
-  CHECK(f.model.station.lat_deg == 41.01);
-  CHECK(f.model.station.lon_deg == 29.17);
-  CHECK(f.model.station.height_m == 120.0);
-  CHECK(f.model.gps.position_from_gps);
-  CHECK(f.model.gps.position_time == orbit::add_seconds(t, 2));
-  CHECK(f.saves == 1);
-  // Menu 4 again: the origin shown; a latitude typed in ends following's hold on the position.
-  testing::MenuFixture g("\r\r\r\r\r\r\r\r");
-  g.model = f.model;
-  g.station->set_gps(&receiver);
-  menus::menu_4_station_elements(g.term, *g.services);
-  CHECK(g.term.output().find("Position from      GPS fix of 2017-10-19T06:00:02Z") != std::string::npos);
-  f.station->set_gps(nullptr);
-  g.station->set_gps(nullptr);
+  CHECK(m.station.lat_deg == 41.01);
+  CHECK(m.station.lon_deg == 29.17);
+  CHECK(m.station.height_m == 120.0);
+  CHECK(m.gps.position_from_gps);
+  CHECK(m.gps.position_time == orbit::add_seconds(kGpsT0, 2));
+  CHECK(w.f.saves == 1);
+  // Menu 4 again: the origin shown.
+  WithReceiver again("\r\r\r\r\r\r\r\r");
+  again.f.model = m;
+  menus::menu_4_station_elements(again.f.term, *again.f.services);
+  CHECK(again.f.term.output().find("Position from      GPS fix of 2017-10-19T06:00:02Z") != std::string::npos);
 }
 
 TEST_CASE("Menu 4: a 2D fix keeps the stored height") {
-  testing::MenuFixture f("\r\r\r\r\r\rY\r\r");
-  gps::Monitor receiver("gpsd:localhost:2947");
-  f.station->set_gps(&receiver);
-  const orbit::UtcTime t = orbit::from_civil(2017, 10, 19, 6, 0, 0);
-  confirm(receiver, t, t, 2);
-  menus::menu_4_station_elements(f.term, *f.services);
-  CHECK(f.model.station.lat_deg == 41.01);
-  CHECK(f.model.station.height_m == 50.0);  // the factory height
-  f.station->set_gps(nullptr);
+  WithReceiver w("\r\r\r\r\r\rY\r\r", 2);
+  menus::menu_4_station_elements(w.f.term, *w.f.services);
+  CHECK(w.f.model.station.lat_deg == 41.01);
+  CHECK(w.f.model.station.height_m == 50.0);  // the factory height
 }
 
 TEST_CASE("Menu 5 G: the clock from GPS time; refused without a fix") {
-  testing::MenuFixture f("G");
-  gps::Monitor receiver("gpsd:localhost:2947");
-  f.station->set_gps(&receiver);
-  // GPS time is 06:00:00 when the clock reads 12:00:00 (2026-05-21): the clock is set back by the difference.
-  const orbit::UtcTime gps = orbit::from_civil(2017, 10, 19, 6, 0, 0);
-  confirm(receiver, gps, f.clock.now());
-  const auto source_before = f.now;
-  menus::menu_5_realtime_clock(f.term, *f.services);
-  CHECK(f.clock.now() == gps + (f.now - source_before));  // GPS time, and what the menu's waits took
-  CHECK(f.model.clock_offset == f.clock.offset());
-  CHECK(f.term.output().find("Enter 'G' for the clock from GPS time (3D fix 41.0100N 29.1700E 120.0 m") !=
+  // GPS time is 06:00:00 (2017) when the clock reads 12:00:00 (2026-05-21): the clock goes back by the difference.
+  WithReceiver w("G");
+  const auto source_before = w.f.now;
+  menus::menu_5_realtime_clock(w.f.term, *w.f.services);
+  CHECK(w.f.clock.now() == kGpsT0 + (w.f.now - source_before));  // GPS time, and what the menu's waits took
+  CHECK(w.f.model.clock_offset == w.f.clock.offset());
+  CHECK(w.f.term.output().find("Enter 'G' for the clock from GPS time (3D fix 41.0100N 29.1700E 120.0 m") !=
         std::string::npos);
-  CHECK(f.term.output().find("Present Time:UTC ") != std::string::npos);
-  f.station->set_gps(nullptr);
 
-  testing::MenuFixture g("GQ");
-  gps::Monitor none("gpsd:localhost:2947");
-  g.station->set_gps(&none);
-  const auto offset = g.clock.offset();
-  menus::menu_5_realtime_clock(g.term, *g.services);
-  CHECK(g.term.output().find("no GPS fix: the clock is left alone") != std::string::npos);
-  CHECK(g.clock.offset() == offset);
-  g.station->set_gps(nullptr);
+  WithReceiver none("GQ", 0);
+  const auto offset = none.f.clock.offset();
+  menus::menu_5_realtime_clock(none.f.term, *none.f.services);
+  CHECK(none.f.term.output().find("no GPS fix: the clock is left alone") != std::string::npos);
+  CHECK(none.f.clock.offset() == offset);
 }

@@ -1,6 +1,7 @@
 // A scripted Satrak session on a simulated station: every command of the seed, what it does to the
 // station, and every kind of bad request answered with its error code and nothing changed.
 #include "fixture.h"
+#include "support/gps_fix.h"
 
 #include "rotator/pass_plan.h"
 #include "satrak/settings.h"
@@ -911,20 +912,10 @@ TEST_CASE("GPS: a receiver through gpsd; GPS_DATA? answers its fix and time as t
   CHECK(acu.cmd("RTC_REUPDATE=") == "RTC_REUPDATE=,ERR,8,NO GPS FIX");
   receiver.on_link(gps::Link::receiving);
   CHECK(acu.errstatus(12) == "0");
-  auto report = [&](int s) {
-    gps::Report r;
-    r.mode = 3;
-    r.lat_deg = 41.01;
-    r.lon_deg = 29.17;
-    r.alt_m = 120.0;
-    r.time = orbit::add_seconds(gps0, s);
-    receiver.on_report(r, acu.clock.now());
-  };
-  report(0);
-  report(1);
+  testing::feed_gps_fix(receiver, gps0, acu.clock.now(), 3, 2);
   // Not confirmed yet: the station's position, valid 0, the RTC's time.
   CHECK(acu.cmd("GPS_DATA?") == "GPS_DATA?,32.2590N,110.7780W,0,12,0,0,21,5,26");
-  report(2);
+  receiver.on_report(testing::gps_report(orbit::add_seconds(gps0, 2)), acu.clock.now());
   CHECK(acu.cmd("GPS_DATA?") == "GPS_DATA?,41.0100N,29.1700E,1,6,0,2,19,10,17");
   // The station follows only in GPS mode.
   CHECK(acu.model.station.lat_deg == doctest::Approx(32.259));
@@ -942,9 +933,7 @@ TEST_CASE("GPS: a receiver through gpsd; GPS_DATA? answers its fix and time as t
   CHECK(acu.status(10) == "1");
   CHECK(acu.model.clock_offset == acu.clock.offset());
   // The fix lost: the last position, valid 0, the RTC's time; gpsd gone: X12.
-  gps::Report lost;
-  lost.mode = 1;
-  receiver.on_report(lost, acu.clock.now());
+  receiver.on_report(testing::gps_report(orbit::add_seconds(gps0, 3), 1), acu.clock.now());
   CHECK(acu.cmd("GPS_DATA?") == "GPS_DATA?,41.0100N,29.1700E,0,6,0,2,19,10,17");
   CHECK(acu.errstatus(12) == "0");
   CHECK(acu.cmd("RTC_REUPDATE=") == "RTC_REUPDATE=,ERR,8,NO GPS FIX");
