@@ -942,3 +942,20 @@ TEST_CASE("GPS: a receiver through gpsd; GPS_DATA? answers its fix and time as t
   CHECK(acu.status(1) == "1");
   acu.loop->set_gps(nullptr);
 }
+
+TEST_CASE("GPS: SETTINGS X1 (RTC auto update) sets the clock from GPS time by itself once it is warned about") {
+  const orbit::UtcTime gps0 = orbit::from_civil(2017, 10, 19, 6, 0, 0);
+  Acu acu(kT0);
+  gps::Monitor receiver("gpsd:127.0.0.1:2947");
+  acu.loop->set_gps(&receiver);
+  testing::feed_gps_fix(receiver, gps0, acu.clock.now());
+  REQUIRE(receiver.clock_warned());
+  acu.step();
+  CHECK(acu.cmd("TIME?") == "TIME?,12,0,0,21,5,2026,100");  // X1 off: the clock is left alone
+  CHECK(acu.cmd("SETTINGS=,1,?,?,?,?,?,?,?,?,?,?") == "SETTINGS=,OK");
+  acu.step();
+  // The clock error measured at the report (GPS 06:00:02 at clock 12:00:02) moved the offset.
+  CHECK(acu.cmd("TIME?") == "TIME?,6,0,0,19,10,2017,200");
+  CHECK(acu.status(10) == "1");
+  acu.loop->set_gps(nullptr);
+}
