@@ -74,7 +74,8 @@ void StationLoop::follow_radio(int db_index, const orbit::Observation& obs) {
   // spot at once; the other link follows once the knob has rested (Tuner::settle).
   const std::optional<radio::Hz> turned_down = radio_->take_dial_turn(down);
   const std::optional<radio::Hz> turned_up = radio_->take_dial_turn(up);
-  const double now_s = std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  // The knob's rest is timed on the station's clock (real time, or --clock-rate's).
+  const double now_s = std::chrono::duration<double>(clock_.now().time_since_epoch()).count();
   if (follow && (turned_down || turned_up)) {
     using Turn = radio::Tuner::Turn;
     switch (tuner_.dial_turn(turned_down, turned_up, rr, now_s)) {
@@ -136,7 +137,7 @@ void StationLoop::adjust_correction(int direction) {
 std::optional<std::chrono::milliseconds> StationLoop::radio_due_in() const {
   const auto due = tuner_.settle_due_s();
   if (!due) return std::nullopt;
-  const double now_s = std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  const double now_s = std::chrono::duration<double>(clock_.now().time_since_epoch()).count();
   return std::chrono::milliseconds(std::max<long long>(0, static_cast<long long>((*due - now_s) * 1000.0) + 1));
 }
 
