@@ -212,6 +212,10 @@ void HamlibLink::set_mode(Link l, Mode mode) {
 Hz HamlibLink::read_frequency(Link l) {
   if (!impl_->rig) throw LinkError(Action::reconnect, describe() + " is not open");
   freq_t f = 0;
+  // Hamlib 4.5 answers get_freq from its cache whatever the cache timeout once it has seen the
+  // radio's transceive frames (use_cached_freq), and the IC-9700's carry no VFO: the Sub band then
+  // reads a stale value and dial follow would take it for a turn (seen against Hamlib's simic9700).
+  impl_->rig->state.use_cached_freq = 0;
   if (scheme_ == HamlibVfoScheme::main_sub) {
     require(rig_get_freq(impl_->rig, l == Link::downlink ? RIG_VFO_SUB : RIG_VFO_MAIN, &f),
             l == Link::downlink ? "get Sub frequency" : "get Main frequency");
