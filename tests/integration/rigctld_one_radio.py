@@ -11,6 +11,8 @@ protocol relay of this test's own, which counts the bytes each way and can play 
     on; the link never reconnects.
   - RS-44 with a radio that puts the split frequency on its receive VFO (the relay turns `I`/`i` into
     `F`/`f`): the uplink is refused once with a clear message, the downlink is put back and tuned.
+  - RS-44 through `rigctld --vfo`: satellite mode switched on before the first frequency, the downlink
+    on Sub and the uplink on Main; a turn of the Sub dial moves Main after the rest.
 Every wait polls for its condition with a deadline; the clock is fixed with --clock.
 """
 import os
@@ -22,12 +24,11 @@ import sys
 import tempfile
 import threading
 import time
-from datetime import datetime, timedelta, timezone
+from datetime import datetime, timezone
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, check, free_port, hamlib_dummy, reap, run_test, satellite_track, sh, skip  # noqa: E402
+from _tbharness import BIN, check, free_port, hamlib_dummy, reap, run_test, sh, skip, wait_listening  # noqa: E402
 
-C = 299792.458
 
 
 class Relay:
@@ -272,14 +273,56 @@ def rs44_one_vfo_radio(procs, rig_port):
         shutil.rmtree(state, ignore_errors=True)
 
 
+def rs44_satellite_mode(procs, rig_port):
+    """rigctld --vfo: satellite mode on, downlink on Sub and uplink on Main, a turn of the Sub dial."""
+    start = datetime(2026, 5, 21, 10, 57, 0, tzinfo=timezone.utc)
+    relay = Relay(rig_port)
+    state = tempfile.mkdtemp(prefix="trakbox-rigctld-sat-")
+    try:
+        tb = start_trakbox(state, relay.port, start.strftime("%Y-%m-%dT%H:%M:%SZ"), 12)
+        procs.append(tb)
+        d0 = poll("the downlink on Sub", lambda: near(rig_port, "f Sub", 435_640_000, 12_000), 30)
+        poll("the uplink on Main", lambda: near(rig_port, "f Main", 145_965_000, 5_000), 30)
+        check(ask(rig_port, "u Main SATMODE") == 1, "satellite mode is on")
+        sat_on = relay.sent("U Main SATMODE 1")
+        first_freq = next(i for i, c in enumerate(relay.sent("")) if c.startswith("F "))
+        check(sat_on and relay.sent("").index(sat_on[0]) < first_freq, "satellite mode before the first frequency")
+        u_before = ask(rig_port, "f Main")
+        turned = ask(rig_port, "f Sub") + 10_000
+        with socket.create_connection(("127.0.0.1", rig_port), timeout=2) as s:   # the operator's knob
+            s.sendall(f"F Sub {turned}\n".encode())
+            s.recv(64)
+        t_turn = time.time()
+        u1 = poll("the uplink on Main to move down 10 kHz",
+                  lambda: near(rig_port, "f Main", u_before - 10_000, 300), 10, every=0.02)
+        delay = time.time() - t_turn
+        check(0.95 <= delay <= 3.0, f"the uplink moved {delay:.2f} s after the turn (rest 1 s, then within 2 s)")
+        time.sleep(1.5)
+        d1 = ask(rig_port, "f Sub")
+        check(d1 is not None and abs(d1 - turned) < 400, f"downlink {d1} after the turn, expected near {turned}")
+        log = finish(tb, state)
+        procs.remove(tb)
+        check("satellite mode, downlink on Sub, uplink on Main" in log, "the log says how the links are carried")
+        print(f"rigctld_one_radio --vfo: satellite mode on, downlink {d0} -> {turned} on Sub, uplink {u_before} -> "
+              f"{u1} on Main {delay:.2f} s after the turn")
+    finally:
+        relay.close()
+        shutil.rmtree(state, ignore_errors=True)
+
+
 def main():
     if not shutil.which("rigctld") or not shutil.which("rigctl"):
         skip("rigctld/rigctl (Hamlib) not installed")
     procs = []
     try:
-        for case in (rs44_dial_follow, so50_tone_refused, rs44_one_vfo_radio):
+        for case in (rs44_dial_follow, so50_tone_refused, rs44_one_vfo_radio, rs44_satellite_mode):
             port = free_port()
-            rig = hamlib_dummy("rigctld", port)
+            if case is rs44_satellite_mode:   # rigctld addressing VFOs: Main and Sub
+                rig = subprocess.Popen(["rigctld", "-m", "1", "-T", "127.0.0.1", "-t", str(port), "--vfo"],
+                                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+                wait_listening(port, "rigctld --vfo", 10, rig)
+            else:
+                rig = hamlib_dummy("rigctld", port)
             procs.append(rig)
             case(procs, port)
             reap([rig])
