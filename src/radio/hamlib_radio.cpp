@@ -27,12 +27,6 @@ void quiet_hamlib_once() {
   std::call_once(once, [] { rig_set_debug(RIG_DEBUG_NONE); });
 }
 
-std::string error_text(int rc) {
-  std::string s = rigerror2(rc);
-  if (auto nl = s.find('\n'); nl != std::string::npos) s.resize(nl);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\r')) s.pop_back();
-  return s;
-}
 
 rmode_t to_hamlib(Mode m) {
   switch (m) {
@@ -45,6 +39,15 @@ rmode_t to_hamlib(Mode m) {
   return RIG_MODE_NONE;
 }
 
+}  // namespace
+
+std::string hamlib_error_text(int rc) {
+  std::string s = rigerror2(rc);
+  if (auto nl = s.find('\n'); nl != std::string::npos) s.resize(nl);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\r')) s.pop_back();
+  return s;
+}
+
 // Hamlib writes to sockets with write(): a dead rigctld must give EPIPE, not kill the program.
 // SIGPIPE is delivered to the thread that wrote, so blocking it on the worker thread is enough.
 void block_sigpipe_on_this_thread() {
@@ -53,8 +56,6 @@ void block_sigpipe_on_this_thread() {
   sigaddset(&set, SIGPIPE);
   pthread_sigmask(SIG_BLOCK, &set, nullptr);
 }
-
-}  // namespace
 
 struct HamlibLink::Impl {
   RIG* rig = nullptr;
@@ -99,7 +100,7 @@ void HamlibLink::open() {
   const int rc = rig_open(rig);
   if (rc != RIG_OK) {
     rig_cleanup(rig);
-    throw LinkError(Action::reconnect, describe() + ": cannot open: " + error_text(rc));
+    throw LinkError(Action::reconnect, describe() + ": cannot open: " + hamlib_error_text(rc));
   }
   impl_->rig = rig;
   // Dial follow reads the radio: a cached frequency would be trakbox's own last command.
@@ -118,7 +119,7 @@ void HamlibLink::open() {
   if (scheme_ == HamlibVfoScheme::main_sub && rig_has_set_func(rig, RIG_FUNC_SATMODE)) {
     const int on = rig_set_func(rig, RIG_VFO_CURR, RIG_FUNC_SATMODE, 1);
     satmode_on_ = on == RIG_OK;
-    if (!satmode_on_) note = "satellite mode refused: " + error_text(on) + "; Main/Sub without it";
+    if (!satmode_on_) note = "satellite mode refused: " + hamlib_error_text(on) + "; Main/Sub without it";
   } else if (scheme_ == HamlibVfoScheme::split && opt_.scheme == HamlibVfoScheme::automatic) {
     note = "Hamlib gives this model no satellite mode and no Main/Sub VFOs: the links go as split "
            "(downlink on the receive VFO, uplink on VFO B)";
@@ -155,7 +156,7 @@ void HamlibLink::check() {
 void HamlibLink::require(int rc, const std::string& what) {
   if (rc == RIG_OK) return;
   const int code = rc < 0 ? -rc : rc;
-  const std::string msg = describe() + ": " + what + " failed: " + error_text(rc);
+  const std::string msg = describe() + ": " + what + " failed: " + hamlib_error_text(rc);
   throw LinkError(RIG_IS_SOFT_ERRCODE(code) ? Action::drop : Action::reconnect, msg);
 }
 
@@ -166,7 +167,7 @@ void HamlibLink::require_aux(int rc, const std::string& what) {
   if (rc == RIG_OK) return;
   const int code = rc < 0 ? -rc : rc;
   if (code == RIG_EIO) require(rc, what);
-  throw LinkError(Action::drop, describe() + ": " + what + " refused: " + error_text(rc) + "; Doppler tuning goes on");
+  throw LinkError(Action::drop, describe() + ": " + what + " refused: " + hamlib_error_text(rc) + "; Doppler tuning goes on");
 }
 
 void HamlibLink::ensure_split() {

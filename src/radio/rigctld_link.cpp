@@ -4,7 +4,6 @@
 #include <hamlib/rig.h>
 #include <netdb.h>
 #include <poll.h>
-#include <signal.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -23,24 +22,7 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
-const char* rigctld_mode(Mode m) {
-  switch (m) {
-    case Mode::fm: return "FM";
-    case Mode::lsb: return "LSB";
-    case Mode::usb: return "USB";
-    case Mode::cw: return "CW";
-    case Mode::none: break;
-  }
-  return nullptr;
-}
-
-// rigctld's error codes are Hamlib's, negated: the text Hamlib gives them, first line only.
-std::string rprt_text(int rprt) {
-  std::string s = rigerror2(rprt);
-  if (auto nl = s.find('\n'); nl != std::string::npos) s.resize(nl);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\r')) s.pop_back();
-  return "RPRT " + std::to_string(rprt) + " (" + s + ")";
-}
+std::string rprt_text(int rprt) { return "RPRT " + std::to_string(rprt) + " (" + hamlib_error_text(rprt) + ")"; }
 
 bool starts_with(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
 
@@ -49,13 +31,6 @@ std::optional<Hz> parse_hz(const std::string& line) {
   const double v = std::strtod(line.c_str(), &end);
   if (end == line.c_str() || !std::isfinite(v) || v < 0) return std::nullopt;
   return static_cast<Hz>(std::llround(v));
-}
-
-void block_sigpipe_on_this_thread() {
-  sigset_t set;
-  sigemptyset(&set);
-  sigaddset(&set, SIGPIPE);
-  pthread_sigmask(SIG_BLOCK, &set, nullptr);
 }
 
 }  // namespace
@@ -301,8 +276,8 @@ void RigctldLink::set_frequency(Link l, Hz hz) {
 }
 
 void RigctldLink::set_mode(Link l, Mode mode) {
-  const char* name = rigctld_mode(mode);
-  if (!name) return;
+  if (mode == Mode::none) return;
+  const char* name = to_string(mode);   // rigctld's names: FM, LSB, USB, CW
   const bool split_cmd = l == Link::uplink && carry_ == Carry::split;
   if (l == Link::uplink && carry_ != Carry::main_sub) ensure_split();
   const Reply r = ask(std::string(split_cmd ? "X " : "M ") + vfo_arg(l) + name + " 0", 0);

@@ -15,6 +15,7 @@ protocol relay of this test's own, which counts the bytes each way and can play 
     on Sub and the uplink on Main; a turn of the Sub dial moves Main after the rest.
 Every wait polls for its condition with a deadline; the clock is fixed with --clock.
 """
+import contextlib
 import os
 import re
 import shutil
@@ -156,6 +157,21 @@ def start_trakbox(state, relay_port, clock, sat_no, extra=()):
     return tb
 
 
+@contextlib.contextmanager
+def session(procs, rig_port, start, sat_no, **relay_options):
+    """A relay in front of rigctld and trakbox tracking the shipped list's #sat_no from `start`
+    (--clock); yields (trakbox, relay, state directory) and cleans up."""
+    relay = Relay(rig_port, **relay_options)
+    state = tempfile.mkdtemp(prefix="trakbox-rigctld-one-")
+    try:
+        tb = start_trakbox(state, relay.port, start.strftime("%Y-%m-%dT%H:%M:%SZ"), sat_no)
+        procs.append(tb)
+        yield tb, relay, state
+    finally:
+        relay.close()
+        shutil.rmtree(state, ignore_errors=True)
+
+
 def finish(tb, state):
     tb.stdin.close()
     check(tb.wait(20) == 0, "trakbox leaves cleanly when input ends")
@@ -166,11 +182,7 @@ def finish(tb, state):
 def rs44_dial_follow(procs, rig_port):
     """RS-44, one radio: read back, the operator's turn kept, the uplink after the rest; bytes/s."""
     start = datetime(2026, 5, 21, 10, 57, 0, tzinfo=timezone.utc)
-    relay = Relay(rig_port)
-    state = tempfile.mkdtemp(prefix="trakbox-rigctld-one-")
-    try:
-        tb = start_trakbox(state, relay.port, start.strftime("%Y-%m-%dT%H:%M:%SZ"), 12)
-        procs.append(tb)
+    with session(procs, rig_port, start, 12) as (tb, relay, state):
         t0 = time.time()
         d0 = poll("the downlink on 435.640 MHz", lambda: near(rig_port, "f", 435_640_000, 12_000), 30)
         u0 = poll("the uplink (split) on 145.965 MHz", lambda: near(rig_port, "i", 145_965_000, 5_000), 30)
@@ -210,19 +222,12 @@ def rs44_dial_follow(procs, rig_port):
               f"{u_before} -> {u1} ({u1 - u_before:+d} Hz) {delay:.2f} s after the turn (rest 1.0 s: "
               f"{delay - 1.0:.2f} s after the rest); {bytes_per_s:.0f} bytes/s on the line at one update a "
               f"second; {time.time() - t0:.1f} s")
-    finally:
-        relay.close()
-        shutil.rmtree(state, ignore_errors=True)
 
 
 def so50_tone_refused(procs, rig_port):
     """SO-50 through a radio that does not answer the tone: Doppler goes on, no reconnect."""
     start = datetime(2026, 5, 21, 14, 11, 30, tzinfo=timezone.utc)
-    relay = Relay(rig_port, tone_rprt=-5)
-    state = tempfile.mkdtemp(prefix="trakbox-rigctld-tone-")
-    try:
-        tb = start_trakbox(state, relay.port, start.strftime("%Y-%m-%dT%H:%M:%SZ"), 5)
-        procs.append(tb)
+    with session(procs, rig_port, start, 5, tone_rprt=-5) as (tb, relay, state):
         poll("the CTCSS tone sent", lambda: relay.sent("C "), 30)
         d1 = poll("the downlink on 436.795 MHz", lambda: near(rig_port, "f", 436_795_000, 12_000), 30)
         u1 = poll("the uplink on 145.850 MHz", lambda: near(rig_port, "i", 145_850_000, 5_000), 30)
@@ -243,19 +248,12 @@ def so50_tone_refused(procs, rig_port):
         check("Doppler tuning goes on" in log, "the log says Doppler goes on")
         check("reconnected" not in log, f"a refused tone must not reconnect the link:\n{log}")
         print(f"rigctld_one_radio SO-50: tone refused (RPRT -5) once, downlink {sorted(seen)}, uplink {u1}")
-    finally:
-        relay.close()
-        shutil.rmtree(state, ignore_errors=True)
 
 
 def rs44_one_vfo_radio(procs, rig_port):
     """A radio that puts the split frequency on its receive VFO: the uplink is refused, clearly, once."""
     start = datetime(2026, 5, 21, 10, 57, 0, tzinfo=timezone.utc)
-    relay = Relay(rig_port, one_vfo=True)
-    state = tempfile.mkdtemp(prefix="trakbox-rigctld-vfoa-")
-    try:
-        tb = start_trakbox(state, relay.port, start.strftime("%Y-%m-%dT%H:%M:%SZ"), 12)
-        procs.append(tb)
+    with session(procs, rig_port, start, 12, one_vfo=True) as (tb, relay, state):
         poll("the uplink sent once", lambda: relay.sent("I "), 30)
         # After the check the downlink is put back and tuned with its Doppler; the uplink never again.
         time.sleep(3.0)
@@ -268,19 +266,12 @@ def rs44_one_vfo_radio(procs, rig_port):
         check(said == 1, f"the refusal is logged once ({said}):\n{log}")
         check("--vfo" in log and "--uplink-radio" in log, "the log says what to do")
         print(f"rigctld_one_radio one-VFO radio: uplink refused after one try, downlink {d}")
-    finally:
-        relay.close()
-        shutil.rmtree(state, ignore_errors=True)
 
 
 def rs44_satellite_mode(procs, rig_port):
     """rigctld --vfo: satellite mode on, downlink on Sub and uplink on Main, a turn of the Sub dial."""
     start = datetime(2026, 5, 21, 10, 57, 0, tzinfo=timezone.utc)
-    relay = Relay(rig_port)
-    state = tempfile.mkdtemp(prefix="trakbox-rigctld-sat-")
-    try:
-        tb = start_trakbox(state, relay.port, start.strftime("%Y-%m-%dT%H:%M:%SZ"), 12)
-        procs.append(tb)
+    with session(procs, rig_port, start, 12) as (tb, relay, state):
         d0 = poll("the downlink on Sub", lambda: near(rig_port, "f Sub", 435_640_000, 12_000), 30)
         poll("the uplink on Main", lambda: near(rig_port, "f Main", 145_965_000, 5_000), 30)
         check(ask(rig_port, "u Main SATMODE") == 1, "satellite mode is on")
@@ -305,9 +296,6 @@ def rs44_satellite_mode(procs, rig_port):
         check("satellite mode, downlink on Sub, uplink on Main" in log, "the log says how the links are carried")
         print(f"rigctld_one_radio --vfo: satellite mode on, downlink {d0} -> {turned} on Sub, uplink {u_before} -> "
               f"{u1} on Main {delay:.2f} s after the turn")
-    finally:
-        relay.close()
-        shutil.rmtree(state, ignore_errors=True)
 
 
 def main():

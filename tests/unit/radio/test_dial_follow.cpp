@@ -5,6 +5,7 @@
 
 #include "radio/config.h"
 #include "radio/doppler.h"
+#include "satellites.h"
 #include "radio/freqmode.h"
 #include "radio/simulated.h"
 #include "radio/two_radios.h"
@@ -12,31 +13,8 @@
 #include "support.h"
 
 using namespace tb::radio;
-
-namespace {
-
-// RS-44 as data/freqmode.txt has it: an inverting transponder.
-SatelliteRadio rs44() {
-  SatelliteRadio s;
-  s.downlink_hz = 435'640'000;
-  s.uplink_hz = 145'965'000;
-  s.downlink_mode = Mode::usb;
-  s.uplink_mode = Mode::lsb;
-  s.downlink_low_hz = 435'610'000;
-  s.downlink_high_hz = 435'670'000;
-  s.uplink_low_hz = 145'935'000;
-  s.uplink_high_hz = 145'995'000;
-  s.inverting = true;
-  return s;
-}
-
-RadioConfig full_orbit() {
-  RadioConfig c;
-  c.cat_policy = CatPolicy::full_orbit;
-  return c;
-}
-
-}  // namespace
+using tbtest::full_orbit;
+using tbtest::rs44;
 
 TEST_CASE("Dial follow: turning the downlink up 10 kHz on an inverting transponder moves the uplink down 10 kHz") {
   Tuner t(full_orbit());

@@ -6,24 +6,13 @@
 
 #include "radio/config.h"
 #include "radio/doppler.h"
+#include "satellites.h"
 
 using namespace tb::radio;
+using tbtest::full_orbit;
+using tbtest::rs44;
 
 namespace {
-
-SatelliteRadio rs44() {   // data/freqmode.txt: an inverting transponder
-  SatelliteRadio s;
-  s.downlink_hz = 435'640'000;
-  s.uplink_hz = 145'965'000;
-  s.downlink_mode = Mode::usb;
-  s.uplink_mode = Mode::lsb;
-  s.downlink_low_hz = 435'610'000;
-  s.downlink_high_hz = 435'670'000;
-  s.uplink_low_hz = 145'935'000;
-  s.uplink_high_hz = 145'995'000;
-  s.inverting = true;
-  return s;
-}
 
 SatelliteRadio so50() {   // data/freqmode.txt: FM, 67.0 Hz tone
   SatelliteRadio s;
@@ -33,12 +22,6 @@ SatelliteRadio so50() {   // data/freqmode.txt: FM, 67.0 Hz tone
   s.uplink_mode = Mode::fm;
   s.ctcss_tenths_hz = 670;
   return s;
-}
-
-RadioConfig full_orbit() {
-  RadioConfig c;
-  c.cat_policy = CatPolicy::full_orbit;
-  return c;
 }
 
 }  // namespace
