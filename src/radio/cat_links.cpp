@@ -21,6 +21,15 @@ std::string hexaddr(std::uint8_t a) {
 
 constexpr milliseconds kWriteSlack{1000};
 
+std::string tone_text(int tenths_hz) { return std::to_string(tenths_hz / 10) + "." + std::to_string(tenths_hz % 10) + " Hz"; }
+
+// A radio without a CTCSS encoder trakbox can set: a tone is refused with a message, never dropped
+// silently; turning the tone off is nothing to refuse.
+void refuse_tone(const std::string& radio, int tenths_hz) {
+  if (tenths_hz <= 0) return;
+  throw LinkError(LinkError::Action::drop, radio + " has no CTCSS encoder trakbox can set: tone " + tone_text(tenths_hz) + " not sent");
+}
+
 // A rig's standard serial settings at the configured speed (STATION.DAT line 4), when one is set.
 SerialSettings at_baud(SerialSettings s, int baud) {
   if (baud > 0) s.baud = static_cast<unsigned>(baud);
@@ -45,6 +54,9 @@ IcomLink::IcomLink(std::string device, IcomOptions options, SerialSettings seria
     : port_(std::move(device), serial), opt_(options) {}
 
 std::string IcomLink::describe() const {
+  if (!opt_.model.empty())   // a model of the registry: one address
+    return "Icom " + opt_.model + " CI-V on " + port_.device() + " (" + hexaddr(opt_.rx_address) +
+           (opt_.satellite_cmd ? ", satellite mode)" : ")");
   return "Icom CI-V on " + port_.device() + " (RX " + hexaddr(opt_.rx_address) + ", TX " +
          hexaddr(opt_.tx_address) + ")";
 }
@@ -233,12 +245,7 @@ Hz IcomLink::read_frequency(Link l) {
 
 void IcomLink::set_ctcss_tone(int tenths_hz) {
   const std::uint8_t to = address(Link::uplink);
-  if (!opt_.ctcss) {
-    if (tenths_hz <= 0) return;
-    throw LinkError(Action::drop, (opt_.model.empty() ? std::string("this Icom radio") : "the " + opt_.model) +
-                                      " has no CTCSS encoder trakbox can set: tone " + std::to_string(tenths_hz / 10) +
-                                      "." + std::to_string(tenths_hz % 10) + " Hz not sent");
-  }
+  if (!opt_.ctcss) return refuse_tone(opt_.model.empty() ? std::string("this Icom radio") : "the " + opt_.model, tenths_hz);
   const Bytes tone = tenths_hz > 0 ? icom::set_tone_frequency(to, tenths_hz) : Bytes{};
   ensure_satellite_mode();
   select_band(Link::uplink);
@@ -283,6 +290,8 @@ void KenwoodLink::set_mode(Link l, Mode mode) {
 }
 
 void KenwoodLink::send_raw(const std::string& bytes) { send(bytes); }
+
+void KenwoodLink::set_ctcss_tone(int tenths_hz) { refuse_tone("the " + opt_.model, tenths_hz); }
 
 Hz KenwoodLink::read_frequency(Link l) {
   if (!opt_.reads) return RadioLink::read_frequency(l);
@@ -356,6 +365,8 @@ void YaesuLink::set_mode(Link l, Mode mode) {
   auto cmd = yaesu::set_mode(target(l), mode, l == Link::downlink && opt_.wide_fm);
   if (cmd) send(*cmd);
 }
+
+void YaesuLink::set_ctcss_tone(int tenths_hz) { refuse_tone("the FT-736", tenths_hz); }
 
 void YaesuLink::send_raw(const std::string& raw) {
   send(std::span<const std::uint8_t>(reinterpret_cast<const std::uint8_t*>(raw.data()), raw.size()));
@@ -459,8 +470,7 @@ void Ft8xxLink::set_ctcss_tone(int tenths_hz) {
   }
   std::optional<yaesu::Command> tone = ft847 ? ft847::set_tone(t, tenths_hz) : std::optional(ft817::set_tone(tenths_hz));
   if (!tone)
-    throw LinkError(Action::drop, "the " + opt_.label + " has no CTCSS tone " + std::to_string(tenths_hz / 10) + "." +
-                                      std::to_string(tenths_hz % 10) + " Hz: not sent");
+    throw LinkError(Action::drop, "the " + opt_.label + " has no CTCSS tone " + tone_text(tenths_hz) + ": not sent");
   ensure_satellite_mode();
   send(*tone);
   send(ft847 ? ft847::tone_encoder(t, true) : ft817::tone_encoder(true));

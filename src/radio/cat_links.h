@@ -91,7 +91,7 @@ struct KenwoodOptions {
   int baud = 0;                   // the port's speed; 0: the standard 4800 (kenwood_serial)
   bool reads = false;             // read back with FA; / FB; (TS-2000)
   milliseconds reply_timeout{500};
-  std::string model = "Kenwood";  // in messages
+  std::string model = "Kenwood radio";  // in messages ("the Kenwood radio has ...")
   static KenwoodOptions from(const RadioConfig& c) {
     KenwoodOptions o;
     o.baud = c.cat_baud;
@@ -112,6 +112,7 @@ class KenwoodLink final : public RadioLink {
   // FA; / FB; answer FA00435123450; (menu 6-7's TS-790 family does not read: reads off).
   bool can_read(Link) const override { return opt_.reads; }
   Hz read_frequency(Link link) override;
+  void set_ctcss_tone(int tenths_hz) override;   // refused with a message: no encoder trakbox sets
 
  private:
   void send(const std::string& command);
@@ -136,6 +137,7 @@ class YaesuLink final : public RadioLink {
   void set_frequency(Link link, Hz hz) override;
   void set_mode(Link link, Mode mode) override;
   void send_raw(const std::string& bytes) override;
+  void set_ctcss_tone(int tenths_hz) override;   // refused with a message: no encoder trakbox sets
   void check() override { port_.check(); }
 
  private:

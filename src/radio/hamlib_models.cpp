@@ -83,11 +83,12 @@ HamlibModelLookup hamlib_rig_by_name(std::string_view name) {
     for (std::size_t i = 0; i < hits.size(); ++i) e += (i ? ", " : "") + label(*hits[i]);
     return {std::nullopt, e + "; give the number"};
   }
-  // Near matches: names that contain the key or are within two edits of it.
+  // Near matches: names that contain the key, or within an edit of it per four characters.
+  const std::size_t edits = std::max<std::size_t>(1, key.size() / 4);
   std::vector<std::pair<std::size_t, const Known*>> near;
   for (const Known& k : rigs) {
     const std::size_t d = std::min(distance(key, k.key), distance(key, k.full_key));
-    if (d <= 2 || (key.size() >= 3 && k.key.find(key) != std::string::npos)) near.push_back({d, &k});
+    if (d <= edits || (key.size() >= 3 && k.key.find(key) != std::string::npos)) near.push_back({d, &k});
   }
   std::stable_sort(near.begin(), near.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::string e = "Hamlib has no rig model named \"" + std::string(name) + "\"";

@@ -28,6 +28,7 @@ struct StringMaker<std::vector<std::string>> {
 using namespace tb::radio;
 using namespace std::chrono_literals;
 using tbtest::eventually;
+using tbtest::have_socat;
 using tbtest::PtyEnd;
 using tbtest::PtyPair;
 
@@ -42,12 +43,6 @@ DriverTiming timing() {
   t.icom_echo_margin = 1000ms;   // patient: a loaded machine is no collision
   t.icom_reply_timeout = 1000ms;
   return t;
-}
-
-bool have_socat() {
-  if (tbtest::which("socat")) return true;
-  MESSAGE("socat not installed: radio responder tests skipped");
-  return false;
 }
 
 std::vector<std::string> hex_all(const std::vector<Bytes>& frames) {
@@ -105,47 +100,42 @@ class Ic9700 {
  private:
   void answer(bool ok) { end_.write({0xFE, 0xFE, icom::kController, kAddr, ok ? icom::kOk : icom::kNg, 0xFD}); }
   void run() {
-    icom::FrameReader reader;
-    while (!stop_) {
-      auto bytes = end_.read(256, 20ms);
-      if (bytes.empty()) continue;
-      reader.feed(bytes);
-      while (auto raw = reader.next()) {
-        std::lock_guard lock(mu_);
-        frames_.push_back(*raw);
-        if (echo_) end_.write(*raw);
-        const auto f = icom::decode_frame(*raw);
-        if (!f || f->to != kAddr) continue;
-        const std::size_t band = selected_main_ ? 0 : 1;
-        const auto& d = f->data;
-        if (f->cmd == 0x05 && d.size() == 5) {
-          hz_[band] = static_cast<Hz>(*decode_bcd_little_endian(d));
-          answer(true);
-        } else if (f->cmd == 0x06) {
-          answer(!d.empty());
-        } else if (f->cmd == 0x07 && d.size() == 1 && (d[0] == 0xD0 || d[0] == 0xD1)) {
-          selected_main_ = d[0] == 0xD0;
-          answer(true);
-        } else if (f->cmd == 0x03 && d.empty()) {
-          end_.write(icom::frame(icom::kController, kAddr, 0x03, bcd_little_endian(static_cast<std::uint64_t>(hz_[band]), 5)));
-        } else if (f->cmd == 0x1C && d.size() == 1 && d[0] == 0x03) {   // the TX frequency: Sub in satellite mode
-          Bytes a{0x03};
-          const Bytes bcd = bcd_little_endian(static_cast<std::uint64_t>(hz_[sat_ ? 1 : band]), 5);
-          a.insert(a.end(), bcd.begin(), bcd.end());
-          end_.write(icom::frame(icom::kController, kAddr, 0x1C, a));
-        } else if ((f->cmd == 0x16 && d.size() == 2 && d[0] == 0x5A) || (f->cmd == 0x1A && d.size() == 2 && d[0] == 0x07)) {
-          if (!refuse_satmode) sat_ = d[1] == 0x01;
-          answer(!refuse_satmode);
-        } else if (f->cmd == 0x1B && d.size() == 4 && d[0] == 0x00) {
-          if (!refuse_tone) tone_ = static_cast<int>(*decode_bcd_big_endian(std::span(d).subspan(1)));
-          answer(!refuse_tone);
-        } else if (f->cmd == 0x16 && d.size() == 2 && d[0] == 0x42) {
-          if (!refuse_tone) tone_on_ = d[1] == 0x01;
-          answer(!refuse_tone);
-        } else {
-          answer(false);
-        }
-      }
+    tbtest::read_civ_frames(end_, stop_, [this](const Bytes& frame) { take(frame); });
+  }
+  void take(const Bytes& raw) {
+    std::lock_guard lock(mu_);
+    frames_.push_back(raw);
+    if (echo_) end_.write(raw);
+    const auto f = icom::decode_frame(raw);
+    if (!f || f->to != kAddr) return;
+    const std::size_t band = selected_main_ ? 0 : 1;
+    const auto& d = f->data;
+    if (f->cmd == 0x05 && d.size() == 5) {
+      hz_[band] = static_cast<Hz>(*decode_bcd_little_endian(d));
+      answer(true);
+    } else if (f->cmd == 0x06) {
+      answer(!d.empty());
+    } else if (f->cmd == 0x07 && d.size() == 1 && (d[0] == 0xD0 || d[0] == 0xD1)) {
+      selected_main_ = d[0] == 0xD0;
+      answer(true);
+    } else if (f->cmd == 0x03 && d.empty()) {
+      end_.write(icom::frame(icom::kController, kAddr, 0x03, bcd_little_endian(static_cast<std::uint64_t>(hz_[band]), 5)));
+    } else if (f->cmd == 0x1C && d.size() == 1 && d[0] == 0x03) {   // the TX frequency: Sub in satellite mode
+      Bytes a{0x03};
+      const Bytes bcd = bcd_little_endian(static_cast<std::uint64_t>(hz_[sat_ ? 1 : band]), 5);
+      a.insert(a.end(), bcd.begin(), bcd.end());
+      end_.write(icom::frame(icom::kController, kAddr, 0x1C, a));
+    } else if ((f->cmd == 0x16 && d.size() == 2 && d[0] == 0x5A) || (f->cmd == 0x1A && d.size() == 2 && d[0] == 0x07)) {
+      if (!refuse_satmode) sat_ = d[1] == 0x01;
+      answer(!refuse_satmode);
+    } else if (f->cmd == 0x1B && d.size() == 4 && d[0] == 0x00) {
+      if (!refuse_tone) tone_ = static_cast<int>(*decode_bcd_big_endian(std::span(d).subspan(1)));
+      answer(!refuse_tone);
+    } else if (f->cmd == 0x16 && d.size() == 2 && d[0] == 0x42) {
+      if (!refuse_tone) tone_on_ = d[1] == 0x01;
+      answer(!refuse_tone);
+    } else {
+      answer(false);
     }
   }
   PtyEnd end_;
@@ -350,6 +340,12 @@ TEST_CASE("A model without a CTCSS encoder refuses a tone with a message, never 
   made.driver->set_ctcss_tone(670);
   REQUIRE(eventually([&] { return made.driver->status().fault; }));
   CHECK(made.driver->status().message == "the IC-910H has no CTCSS encoder trakbox can set: tone 67.0 Hz not sent");
+  // The families of menu 6-7 neither: a tone is refused with the same message, never dropped silently.
+  for (const char* spec : {"kenwood:", "yaesu:", "icom:"}) {
+    auto fam = make_radio(std::string(spec) + pair.radio_side(), RadioConfig{}, timing());
+    fam.driver->set_ctcss_tone(885);
+    REQUIRE(eventually([&] { return fam.driver->status().message.find("tone 88.5 Hz not sent") != std::string::npos; }));
+  }
 }
 
 namespace {

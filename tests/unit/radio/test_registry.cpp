@@ -111,7 +111,11 @@ TEST_CASE("make_radio: each model's driver from the table, one of two radios wit
   RadioConfig cfg;
   auto ic = make_radio("ic9700:/nonexistent/tty", cfg);
   REQUIRE(ic.driver);
-  CHECK(ic.driver->describe() == "Icom CI-V on /nonexistent/tty (RX A2h, TX A2h)");
+  CHECK(ic.driver->describe() == "Icom IC-9700 CI-V on /nonexistent/tty (A2h, satellite mode)");
+  CHECK(make_radio("ic705:/nonexistent/tty", cfg).driver->describe() == "Icom IC-705 CI-V on /nonexistent/tty (A4h)");
+  // One of two radios: no satellite mode.
+  const auto spec = parse_radio_spec("ic9700:/nonexistent/tty");
+  CHECK(make_radio(*spec.spec, cfg, {}, RadioRole::downlink).driver->describe() == "Icom IC-9700 CI-V on /nonexistent/tty (A2h)");
   auto ft = make_radio("ft847:/nonexistent/tty", cfg);
   CHECK(ft.driver->describe() == "Yaesu FT-847 CAT on /nonexistent/tty");
   auto f8 = make_radio("ft817:/nonexistent/tty", cfg);
