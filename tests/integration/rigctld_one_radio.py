@@ -28,7 +28,7 @@ import time
 from datetime import datetime, timezone
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, check, free_port, hamlib_dummy, reap, run_test, sh, skip, wait_listening  # noqa: E402
+from _tbharness import BIN, check, free_port, hamlib_dummy, poll, reap, run_test, sh, skip, wait_listening  # noqa: E402
 
 
 
@@ -131,16 +131,6 @@ def ask(port, command):
             return int(line) if re.fullmatch(r"\d+", line) else None
     except OSError:
         return None
-
-
-def poll(what, pred, seconds, every=0.05):
-    deadline = time.time() + seconds
-    while time.time() < deadline:
-        v = pred()
-        if v:
-            return v
-        time.sleep(every)
-    check(False, f"timed out waiting for {what}")
 
 
 def near(port, command, target, within):
