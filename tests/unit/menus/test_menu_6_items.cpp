@@ -101,6 +101,38 @@ TEST_CASE("6-1 reaches the mechanical ends whatever the old span and limits say"
   CHECK(std::abs(f.truth().el - 45) <= 0.3);
 }
 
+TEST_CASE("6-1 and 6-2 in flip mode: the second elevation point is the 180-degree one") {
+  // The later firmware's example rotator (2 10 857 2 917 F): elevation pot 2 at the horizon, 917
+  // over the top at 180 degrees, where its end stop is.
+  testing::MenuFixture f("1\r42Y68YQ\r");
+  f.model.rotator.el_flip_allowed = true;
+  rotator::SimulatedRotatorParams p;
+  p.az_counts_at_ccw = 10;
+  p.az_counts_at_cw = 857;
+  p.el_counts_at_0 = 2;
+  p.el_counts_at_90 = 459.5;
+  p.el_max_deg = 180;
+  p.start = {180.0, 45.0};
+  rebuild(f, p);
+  f.station->set_rotor_control(true);
+  f.term.timeouts_before_key = 300;
+  menus::menu_6_configuration(f.term, *f.services);
+  CHECK(has(f.term.output(), "Elevation 180 degree (flip) position [Y/N] ? Y\n"));
+  CHECK(f.model.rotator.el_span == rotator::AxisSpan{2, 917});
+  CHECK(f.model.rotator.az_span == rotator::AxisSpan{10, 857});
+  // With the new span the antenna goes where it is told: 60 deg up reads 60.
+  f.station->point({90.0, 60.0});
+  f.run(90);
+  CHECK(std::abs(f.truth().el - 60) <= 0.5);
+
+  testing::MenuFixture g("2\r\r\r\r917\rQ\r");
+  g.model.rotator.el_flip_allowed = true;
+  menus::menu_6_configuration(g.term, *g.services);
+  CHECK(has(g.term.output(), "EL maximum (180 deg) value ? : "));
+  CHECK(g.model.rotator.el_span == rotator::AxisSpan{0, 917});
+  CHECK(g.model.rotator.el_flip_allowed);
+}
+
 TEST_CASE("The monitor line reproduces the manual's example numbers") {
   // The manual's numbers fit a span starting at 0 (docs/rotator.md): AZ 0-878, EL 0-462, South.
   rotator::RotatorConfig c;

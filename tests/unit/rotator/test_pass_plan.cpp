@@ -184,7 +184,7 @@ TEST_CASE("slew_seconds and an empty track") {
 TEST_CASE("Controller and simulated rotator follow a flipped pass without swinging through the stop") {
   spdlog::set_level(spdlog::level::off);
   RotatorConfig c;
-  c.el_flip_allowed = true;  // factory span 0..511 puts 180 deg at count 1022
+  c.el_flip_allowed = true;  // flip mode: the factory span 0..511 is 0..180 deg
   auto track = synthetic_pass(300.0, 120.0, 60.0, 480);
   PassPlan plan = plan_pass(track, PassGeometry::from(AdcModel(c, RotorStart::north)), 0.0);
   REQUIRE(plan.flip);

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "rotator/adc_model.h"
 #include "store/model.h"
 #include "store/station_file.h"
 #include "support/manual_samples.h"
@@ -293,4 +294,39 @@ TEST_CASE("rotator.cross_limit_sector: stored, optional (older states load as ba
   CHECK_FALSE(store::model_from_json(j).rotator.cross_limit_sector);
   j["rotator"]["cross_limit_sector"] = "yes";
   CHECK_THROWS_WITH(store::model_from_json(j), doctest::Contains("rotator.cross_limit_sector"));
+}
+
+// Flip mode (v3.30a, "If you select flip operation, you must calibrate the EL rotor at 0 and 180
+// degree point"): line 2's elevation span is 0..180 degrees. The firmware's own example and a span
+// like JA6FTL's (25-981, whose 180 degrees lay at count 1937 when the span was read as 0..90) apply.
+TEST_CASE("STATION.DAT in flip mode: the elevation span is 0..180 degrees and the file applies") {
+  struct Case {
+    const char* file;
+    rotator::AxisSpan el;
+    double count_at_90;
+  };
+  for (const Case& k : {Case{"STATION_FLIP.DAT", {2, 917}, 459.5}, Case{"STATION_JA6FTL.DAT", {25, 981}, 503.0}}) {
+    const std::string file = k.file;
+    CAPTURE(file);
+    const auto r = parse_station_file(read_data(k.file));
+    INFO(problems_text(r));
+    REQUIRE(r.ok());
+    store::Model m = store::factory_defaults();
+    const auto refused = store::apply_station_file(*r.file, m);
+    CHECK(refused.empty());
+    REQUIRE(m.rotator.el_flip_allowed);
+    REQUIRE(m.rotator.el_span == k.el);
+    CHECK(m.rotator.el_top_deg() == 180.0);
+    // The model: 0 deg at the minimum, 180 at the maximum, 90 half-way (without line 3's skew and
+    // line 7's limits, el 0..80).
+    m.rotator.el_skew = 0;
+    m.rotator.limits_enabled = false;
+    const rotator::AdcModel a(m.rotator, m.station.rotor_start);
+    CHECK(a.el_from_counts(k.el.min) == 0.0);
+    CHECK(a.el_from_counts(k.el.max) == doctest::Approx(180.0));
+    CHECK(a.counts_from_el(90.0) == doctest::Approx(k.count_at_90));
+    CHECK(a.deg_per_count(rotator::Axis::el) == doctest::Approx(180.0 / (k.el.max - k.el.min)));
+    CHECK(a.el_range().hi == doctest::Approx(180.0));
+    CHECK(a.counts_range(rotator::Axis::el).hi == doctest::Approx(k.el.max));
+  }
 }
