@@ -33,9 +33,18 @@ def check(cond, message):
 SKIP = 77  # CTest's SKIP_RETURN_CODE for tests/integration (tests/CMakeLists.txt)
 
 
+def in_ci():
+    """CI set to anything but "", "0" or "false": every tool is installed (scripts/install-deps.sh)."""
+    return os.environ.get("CI", "") not in ("", "0", "false")
+
+
 def skip(message):
-    """Ends the test as skipped (a tool it needs is missing), saying why."""
-    print(message)
+    """Ends the test as skipped (a tool it needs is missing), saying why; in CI, where every tool
+    is installed, a missing tool fails the test instead (a skip there would hide a broken set-up)."""
+    if in_ci():
+        print(f"FAILED (CI={os.environ['CI']}: every tool must be installed): {message}")
+        raise SystemExit(1)
+    print(f"SKIPPED: {message}")
     raise SystemExit(SKIP)
 
 

@@ -1,6 +1,7 @@
 // Test helpers for the radio tests: child processes (socat, rigctld), pseudo-terminal peers,
 // free TCP ports, bounded waiting. POSIX only.
 #pragma once
+#include "support/tools.h"
 #include <arpa/inet.h>
 #include <fcntl.h>
 #include <netinet/in.h>
@@ -46,20 +47,7 @@ inline bool eventually(const std::function<bool()>& pred, Ms timeout = 5000ms) {
   return pred();
 }
 
-inline std::optional<std::string> which(const std::string& name) {
-  const char* path = std::getenv("PATH");
-  std::string p = path ? path : "/usr/bin:/bin";
-  p += ":/usr/bin:/bin";
-  std::size_t start = 0;
-  while (start <= p.size()) {
-    std::size_t end = p.find(':', start);
-    if (end == std::string::npos) end = p.size();
-    std::string candidate = p.substr(start, end - start) + "/" + name;
-    if (::access(candidate.c_str(), X_OK) == 0) return candidate;
-    start = end + 1;
-  }
-  return std::nullopt;
-}
+inline std::optional<std::string> which(const std::string& name) { return tb::testing::find_tool(name); }
 
 // A child process; stderr optionally captured through a pipe. Killed (by its own pid) and
 // reaped when destroyed.

@@ -27,12 +27,6 @@ IcomOptions patient(IcomOptions o = {}) {
   return o;
 }
 
-bool have_socat() {
-  if (tbtest::which("socat")) return true;
-  MESSAGE("socat not installed: serial CAT pty tests skipped");
-  return false;
-}
-
 // The Icom side of the one-wire CI-V bus: every frame comes back as its echo; a radio that is
 // addressed directly answers FB (or FA for the frames the test marks as refused).
 class IcomBus {
@@ -100,8 +94,8 @@ std::vector<Hz> frequencies_to(const std::vector<Bytes>& frames, std::uint8_t to
 
 }  // namespace
 
-TEST_CASE("Icom CI-V over a pty: frequencies and modes to two radios, echo and FB read back") {
-  if (!have_socat()) return;
+TEST_CASE("Icom CI-V over a pty: frequencies and modes to two radios, echo and FB read back" * doctest::skip(tb::testing::skip_without({"socat"}))) {
+  tb::testing::require_tools({"socat"});
   PtyPair pair;
   REQUIRE(pair.ok());
   IcomBus bus(pair.test_side());
@@ -135,8 +129,8 @@ TEST_CASE("Icom CI-V over a pty: frequencies and modes to two radios, echo and F
   CHECK(to_hex(frames[2]) == "FE FE 14 E0 05 50 34 12 35 04 FD");
 }
 
-TEST_CASE("Icom CI-V over a pty: collision (jam instead of echo) is retried") {
-  if (!have_socat()) return;
+TEST_CASE("Icom CI-V over a pty: collision (jam instead of echo) is retried" * doctest::skip(tb::testing::skip_without({"socat"}))) {
+  tb::testing::require_tools({"socat"});
   PtyPair pair;
   REQUIRE(pair.ok());
   IcomBus bus(pair.test_side());
@@ -153,8 +147,8 @@ TEST_CASE("Icom CI-V over a pty: collision (jam instead of echo) is retried") {
   for (const auto& f : frames) CHECK(to_hex(f) == "FE FE 00 E0 05 00 00 95 45 01 FD");
 }
 
-TEST_CASE("Icom CI-V over a pty: no echo is the fault \"interface not echoing\", then it recovers") {
-  if (!have_socat()) return;
+TEST_CASE("Icom CI-V over a pty: no echo is the fault \"interface not echoing\", then it recovers" * doctest::skip(tb::testing::skip_without({"socat"}))) {
+  tb::testing::require_tools({"socat"});
   PtyPair pair;
   REQUIRE(pair.ok());
   IcomBus bus(pair.test_side());
@@ -171,8 +165,8 @@ TEST_CASE("Icom CI-V over a pty: no echo is the fault \"interface not echoing\",
   CHECK(radio->status().downlink_hz == 435'000'000);
 }
 
-TEST_CASE("Icom CI-V over a pty: a refused command (FA) is reported and dropped") {
-  if (!have_socat()) return;
+TEST_CASE("Icom CI-V over a pty: a refused command (FA) is reported and dropped" * doctest::skip(tb::testing::skip_without({"socat"}))) {
+  tb::testing::require_tools({"socat"});
   PtyPair pair;
   REQUIRE(pair.ok());
   IcomBus bus(pair.test_side());
@@ -201,8 +195,8 @@ TEST_CASE("Icom CI-V over a pty: a refused command (FA) is reported and dropped"
   CHECK(hex[5] == "FE FE 60 E0 05 00 00 90 45 01 FD");
 }
 
-TEST_CASE("Kenwood over a pty: FA/FB and MD read back") {
-  if (!have_socat()) return;
+TEST_CASE("Kenwood over a pty: FA/FB and MD read back" * doctest::skip(tb::testing::skip_without({"socat"}))) {
+  tb::testing::require_tools({"socat"});
   PtyPair pair;
   REQUIRE(pair.ok());
   PtyEnd peer(pair.test_side());
@@ -233,8 +227,8 @@ TEST_CASE("Kenwood over a pty: FA/FB and MD read back") {
   CHECK(decoded == down);
 }
 
-TEST_CASE("Yaesu FT-736 over a pty: CAT on, satellite mode, 5-byte commands, CAT off on close") {
-  if (!have_socat()) return;
+TEST_CASE("Yaesu FT-736 over a pty: CAT on, satellite mode, 5-byte commands, CAT off on close" * doctest::skip(tb::testing::skip_without({"socat"}))) {
+  tb::testing::require_tools({"socat"});
   PtyPair pair;
   REQUIRE(pair.ok());
   PtyEnd peer(pair.test_side());
@@ -288,8 +282,8 @@ TEST_CASE("Yaesu FT-736 over a pty: CAT on, satellite mode, 5-byte commands, CAT
   CHECK(cmds[9].kind == K::cat_off);
 }
 
-TEST_CASE("Serial driver: the cable goes away, the driver reports it and reopens") {
-  if (!have_socat()) return;
+TEST_CASE("Serial driver: the cable goes away, the driver reports it and reopens" * doctest::skip(tb::testing::skip_without({"socat"}))) {
+  tb::testing::require_tools({"socat"});
   std::string device;
   std::unique_ptr<RadioDriver> radio;
   {
@@ -310,8 +304,8 @@ TEST_CASE("Serial driver: the cable goes away, the driver reports it and reopens
   radio.reset();   // shutting down with the port gone is bounded
 }
 
-TEST_CASE("Serial driver: an idle port that goes away is reported without a command being sent") {
-  if (!have_socat()) return;
+TEST_CASE("Serial driver: an idle port that goes away is reported without a command being sent" * doctest::skip(tb::testing::skip_without({"socat"}))) {
+  tb::testing::require_tools({"socat"});
   const WorkerTiming timing{20ms, 100ms, 50ms};
   std::string device;
   std::unique_ptr<RadioDriver> radio;
