@@ -346,3 +346,36 @@ TEST_CASE("Limits that split the travel, crossing allowed: the piece that covers
   CHECK(*r.note == "antenna follows 64% (13:00:53-13:07:37) in 10.0-180.0");
   CHECK(r.err_end < 2.0);
 }
+
+TEST_CASE("The displays' tracks: one orbital period of ground track, a pass from AOS to LOS") {
+  store::Model m = shipped(station::RotorStart::north, 35.0, 139.0, 0.0);
+  const auto iss = m.db.find("ISS");
+  REQUIRE(iss);
+  const orbit::UtcTime t0 = orbit::from_civil(2026, 5, 21, 12, 0, 0);
+  station::ManualClock clock(t0);
+  tracker::Tracker t(m, clock);
+  // One period: 1440 / mean motion minutes (the Kozai mean motion of the set; SGP4's un-Kozai'd
+  // one differs by well under 0.1%).
+  const double period = 1440.0 / m.db.satellites[static_cast<std::size_t>(*iss)].elements.mean_motion_rev_per_day;
+  const auto ground = t.orbit_track(*iss, t0, 120);
+  REQUIRE(ground.size() == 121);
+  CHECK(ground.front().time == t0);
+  CHECK(orbit::minutes_between(t0, ground.back().time) == doctest::Approx(period).epsilon(1e-3));
+  // After one revolution the sub-point is back at the same latitude (the Earth turned under it).
+  CHECK(ground.back().sub_point.lat_deg == doctest::Approx(ground.front().sub_point.lat_deg).epsilon(0.02));
+
+  t.track_single(*iss);
+  t.tick();
+  REQUIRE(t.followed());
+  REQUIRE(t.followed()->pass);
+  const orbit::Pass pass = *t.followed()->pass;
+  const auto sky = t.pass_track(*iss, pass, 20);
+  REQUIRE(sky.size() == 21);
+  CHECK(sky.front().look.el_deg == doctest::Approx(-2.0).epsilon(0.01));  // AOS: the manual's -2.0 deg
+  CHECK(sky.back().look.el_deg == doctest::Approx(-2.0).epsilon(0.01));
+  CHECK(sky.front().time == pass.aos);
+
+  // Elements SGP4 cannot use: no track, rather than one drawn over a made-up period.
+  m.db.satellites[static_cast<std::size_t>(*iss)].elements.eccentricity = 1.5;
+  CHECK(t.orbit_track(*iss, t0, 120).empty());
+}
