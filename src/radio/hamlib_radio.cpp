@@ -6,6 +6,8 @@
 
 #include <mutex>
 
+#include "util/sigpipe.h"
+
 namespace tb::radio {
 
 using Action = LinkError::Action;
@@ -41,14 +43,6 @@ rmode_t to_hamlib(Mode m) {
   return RIG_MODE_NONE;
 }
 
-// Hamlib writes to sockets with write(): a dead rigctld must give EPIPE, not kill the program.
-// SIGPIPE is delivered to the thread that wrote, so blocking it on the worker thread is enough.
-void block_sigpipe_on_this_thread() {
-  sigset_t set;
-  sigemptyset(&set);
-  sigaddset(&set, SIGPIPE);
-  pthread_sigmask(SIG_BLOCK, &set, nullptr);
-}
 
 }  // namespace
 
@@ -79,7 +73,7 @@ std::string HamlibLink::describe() const {
 }
 
 void HamlibLink::open() {
-  block_sigpipe_on_this_thread();
+  sigpipe::block_on_this_thread();  // a dead rigctld gives EPIPE, not the end of the program
   close();
   std::lock_guard lock(hamlib_mutex());
   RIG* rig = rig_init(opt_.model);
