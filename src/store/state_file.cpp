@@ -13,6 +13,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "util/files.h"
+
 namespace tb::store {
 namespace fs = std::filesystem;
 
@@ -134,15 +136,12 @@ StateFile::StateFile(fs::path directory) : dir_(std::move(directory)) {}
 LoadOutcome StateFile::load() const {
   LoadOutcome out;
   const fs::path file = path();
-  std::ifstream in(file, std::ios::binary);
-  if (!in) {
+  const std::optional<std::string> read = files::read_whole_file(file);
+  if (!read) {
     out.kind = LoadOutcome::Kind::fresh;
     return out;
   }
-  std::stringstream ss;
-  ss << in.rdbuf();
-  in.close();
-  const std::string text = ss.str();
+  const std::string& text = *read;
 
   auto corrupt = [&](std::string reason) {
     out.kind = LoadOutcome::Kind::corrupt;
