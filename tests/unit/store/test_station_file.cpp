@@ -7,6 +7,7 @@
 #include "rotator/adc_model.h"
 #include "store/model.h"
 #include "store/station_file.h"
+#include "station_file_problems.h"
 #include "support/manual_samples.h"
 
 using namespace tb;
@@ -15,11 +16,7 @@ using store::parse_station_file;
 namespace {
 const char* const kSample = testing::kManualStationFile;
 
-std::string problems_text(const store::StationFileParse& r) {
-  std::string s;
-  for (const auto& p : r.problems) s += p.message() + "\n";
-  return s;
-}
+using testing::problems_text;
 }  // namespace
 
 TEST_CASE("The manual's sample station file") {

@@ -11,6 +11,7 @@
 #include "rotator/adc_model.h"
 #include "store/model.h"
 #include "store/station_file.h"
+#include "station_file_problems.h"
 #include "support/manual_samples.h"
 #include "support/shipped_model.h"
 
@@ -21,11 +22,7 @@ namespace {
 
 std::string read_data(const char* name) { return tb::testing::read_test_data(std::string("firmware/") + name); }
 
-std::string problems_text(const store::StationFileParse& r) {
-  std::string s;
-  for (const auto& p : r.problems) s += p.message() + "\n";
-  return s;
-}
+using testing::problems_text;
 
 }  // namespace
 
