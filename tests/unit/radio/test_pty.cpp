@@ -92,6 +92,20 @@ std::vector<Hz> frequencies_to(const std::vector<Bytes>& frames, std::uint8_t to
   return out;
 }
 
+// A Kenwood driver on a pty pair that is gone when this returns (socat ends: both ptys and their
+// links disappear), after one frequency went through: the port the driver has open vanished.
+std::unique_ptr<RadioDriver> kenwood_on_a_cable_that_goes(std::string& device, const WorkerTiming& timing) {
+  PtyPair pair;
+  REQUIRE(pair.ok());
+  PtyEnd peer(pair.test_side());
+  device = pair.radio_side();
+  auto radio = make_kenwood_radio(device, {}, timing);
+  radio->set_downlink_frequency(435'000'000);
+  REQUIRE(radio->wait_idle(5000ms));
+  CHECK(radio->status().connected);
+  return radio;
+}
+
 }  // namespace
 
 TEST_CASE("Icom CI-V over a pty: frequencies and modes to two radios, echo and FB read back" * doctest::skip(tb::testing::skip_without({"socat"}))) {
@@ -285,17 +299,7 @@ TEST_CASE("Yaesu FT-736 over a pty: CAT on, satellite mode, 5-byte commands, CAT
 TEST_CASE("Serial driver: the cable goes away, the driver reports it and reopens" * doctest::skip(tb::testing::skip_without({"socat"}))) {
   tb::testing::require_tools({"socat"});
   std::string device;
-  std::unique_ptr<RadioDriver> radio;
-  {
-    PtyPair pair;
-    REQUIRE(pair.ok());
-    PtyEnd peer(pair.test_side());
-    device = pair.radio_side();
-    radio = make_kenwood_radio(device, {}, kFast);
-    radio->set_downlink_frequency(435'000'000);
-    REQUIRE(radio->wait_idle(5000ms));
-    CHECK(radio->status().connected);
-  }   // socat ends: both ptys disappear
+  auto radio = kenwood_on_a_cable_that_goes(device, kFast);
   radio->set_downlink_frequency(435'000'010);
   // Under load this write may still reach the dying pty; the fault follows either way.
   REQUIRE(eventually([&] { const auto s = radio->status(); return s.fault && !s.connected; }));
@@ -308,17 +312,7 @@ TEST_CASE("Serial driver: an idle port that goes away is reported without a comm
   tb::testing::require_tools({"socat"});
   const WorkerTiming timing{20ms, 100ms, 50ms};
   std::string device;
-  std::unique_ptr<RadioDriver> radio;
-  {
-    PtyPair pair;
-    REQUIRE(pair.ok());
-    PtyEnd peer(pair.test_side());
-    device = pair.radio_side();
-    radio = make_kenwood_radio(device, {}, timing);
-    radio->set_downlink_frequency(435'000'000);
-    REQUIRE(radio->wait_idle(5000ms));
-    CHECK(radio->status().connected);
-  }  // socat ends: both ptys and their links disappear
+  auto radio = kenwood_on_a_cable_that_goes(device, timing);
   // Nothing more is sent: the idle check sees the hang-up (or the missing link) by itself.
   REQUIRE(eventually([&] { const auto s = radio->status(); return s.fault && !s.connected; }));
   CHECK(radio->status().message.find(device) != std::string::npos);
