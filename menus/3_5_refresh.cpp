@@ -16,6 +16,7 @@
 #include "store/satnogs.h"
 #include "tracker/elements_refresh.h"
 #include "tracker/station_loop.h"
+#include "util/files.h"
 
 namespace tb::menus {
 
@@ -88,11 +89,9 @@ void refresh_now(term::Terminal& t, Services& s) {
 // going (its key wait runs the event loop); any key cancels. The reason when there is no text.
 std::optional<std::string> fetch(term::Terminal& t, const std::string& where, std::string& text) {
   if (where.starts_with("/")) {
-    std::ifstream in(where, std::ios::binary);
-    if (!in) return "cannot read " + where;
-    std::stringstream ss;
-    ss << in.rdbuf();
-    text = ss.str();
+    auto read = files::read_whole_file(where);
+    if (!read) return "cannot read " + where;
+    text = std::move(*read);
     return std::nullopt;
   }
   struct Shared {

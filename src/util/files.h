@@ -1,6 +1,6 @@
 #pragma once
-// Reading a whole file: the one copy (the state file, the station's data files, Satrak's bounded
-// source files).
+// Reading a whole file: the one copy (the station's data files, Satrak's bounded source files,
+// 3-5's local sources, the test data). The state file opens its own, refusing a symbolic link.
 #include <filesystem>
 #include <fstream>
 #include <optional>
