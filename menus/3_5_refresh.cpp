@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include "menus/menus.h"
-#include "net/download.h"
+#include "download/download.h"
 #include "store/model.h"
 #include "store/refresh.h"
 #include "store/satnogs.h"
@@ -96,15 +96,15 @@ std::optional<std::string> fetch(term::Terminal& t, const std::string& where, st
   }
   struct Shared {
     std::atomic<bool> done{false};
-    net::DownloadResult result;
+    download::DownloadResult result;
   };
   auto shared = std::make_shared<Shared>();
-  net::Downloader worker;
-  net::DownloadRequest r;
+  download::Downloader worker;
+  download::DownloadRequest r;
   r.url = where;
   r.total_timeout = std::chrono::seconds(60);
   r.max_bytes = 16u << 20;  // the whole transmitter list is a few MB
-  worker.submit(r, [shared](net::DownloadResult res) {
+  worker.submit(r, [shared](download::DownloadResult res) {
     shared->result = std::move(res);
     shared->done = true;
   });
