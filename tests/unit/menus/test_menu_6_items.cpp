@@ -47,6 +47,14 @@ void run_6_1(testing::MenuFixture& f, const Pots& pots, int timeouts) {
   menus::menu_6_configuration(f.term, *f.services);
 }
 
+// The station file sample's limits: azimuth 270 -> 90 clockwise, elevation 0..45.
+void set_sample_limits(rotator::RotatorConfig& c) {
+  c.limits_enabled = true;
+  c.az_limit_min = 270;
+  c.az_limit_max = 90;
+  c.el_limit_max = 45;
+}
+
 using testing::kAzTol;
 using testing::kElTol;
 
@@ -86,10 +94,7 @@ TEST_CASE("6-1 reaches the mechanical ends whatever the old span and limits say"
   // on (the station file sample's): calibration still drives to both stops and records them, and the
   // limits are in force again afterwards.
   testing::MenuFixture f("1\r42Y68YQ\r");
-  f.model.rotator.limits_enabled = true;
-  f.model.rotator.az_limit_min = 270;
-  f.model.rotator.az_limit_max = 90;
-  f.model.rotator.el_limit_max = 45;
+  set_sample_limits(f.model.rotator);
   run_6_1(f, {20, 1000, 10, 900, 90, {180.0, 20.0}}, 200);
   CHECK(has(f.term.output(), "ADC span value AZ:0020-1000 EL:0010-0900\n"));
   CHECK(f.model.rotator.az_span == rotator::AxisSpan{20, 1000});
@@ -155,10 +160,7 @@ TEST_CASE("6-6-1 keyboard control stops at the rotation limits") {
 TEST_CASE("6-6-2 never leaves the rotation limits, even for a target outside them") {
   // The station file sample's limits (270 -> 90 clockwise, el 0..45), rotor start South, antenna north.
   testing::MenuFixture f("6\r2\r120\r60\rQ\rQ\r");
-  f.model.rotator.limits_enabled = true;
-  f.model.rotator.az_limit_min = 270;
-  f.model.rotator.az_limit_max = 90;
-  f.model.rotator.el_limit_max = 45;
+  set_sample_limits(f.model.rotator);
   rotator::SimulatedRotatorParams p = rotator::SimulatedRotatorParams::matching(f.model.rotator);
   p.start = {180.0, 0.0};
   rebuild(f, p);

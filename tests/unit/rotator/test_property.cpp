@@ -13,11 +13,11 @@
 #include "rotator/controller.h"
 #include "rotator/simulated.h"
 
-using namespace tb::rotator;
-using namespace std::chrono_literals;
-using tb::orbit::from_civil;
-using tb::station::ManualClock;
 using tb::station::RotorStart;
+using tb::station::ManualClock;
+using tb::orbit::from_civil;
+using namespace std::chrono_literals;
+using namespace tb::rotator;
 
 namespace {
 

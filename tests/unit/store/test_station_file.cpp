@@ -41,11 +41,7 @@ TEST_CASE("The manual's sample station file") {
   CHECK(f.radio.icom_tx_address == 0x14);
   CHECK(f.rotator.parking_enabled);
   CHECK(f.rotator.parking == rotator::AzEl{90.0, 0.0});
-  CHECK(f.rotator.limits_enabled);
-  CHECK(f.rotator.az_limit_min == 270.0);
-  CHECK(f.rotator.az_limit_max == 90.0);
-  CHECK(f.rotator.el_limit_min == 0.0);
-  CHECK(f.rotator.el_limit_max == 45.0);
+  CHECK(testing::limits_of(f.rotator) == std::tuple(true, 270.0, 90.0, 0.0, 45.0));
 }
 
 TEST_CASE("The shipped data/station.txt is the manual's sample") {

@@ -3,6 +3,8 @@
 // tests/data/firmware/ were written from the format description
 // (/work/shared/reference/element-data-2026.md, "TrakBox files of the later firmware").
 #include <doctest/doctest.h>
+
+#include <tuple>
 #include "support/data_files.h"
 
 
@@ -75,11 +77,7 @@ TEST_CASE("STATION.DAT: the seven lines and what each item sets") {
   CHECK(f.radio.parking.tx_mode == radio::Mode::usb);
   CHECK(f.rotator.stall_s == 45.0);
   // 7: a range through North
-  CHECK(f.rotator.limits_enabled);
-  CHECK(f.rotator.az_limit_min == 270.0);
-  CHECK(f.rotator.az_limit_max == 90.0);
-  CHECK(f.rotator.el_limit_min == 0.0);
-  CHECK(f.rotator.el_limit_max == 80.0);
+  CHECK(testing::limits_of(f.rotator) == std::tuple(true, 270.0, 90.0, 0.0, 80.0));
 }
 
 TEST_CASE("STATION.DAT applied to the model, written back, and kept by the state document") {
@@ -115,11 +113,9 @@ TEST_CASE("STATION.DAT applied to the model, written back, and kept by the state
   CHECK(*back.file == *r.file);
 
   const store::Model restored = store::model_from_json(store::to_json(m));
-  CHECK(restored.station == m.station);
-  CHECK(restored.rotator == m.rotator);
-  CHECK(restored.radio == m.radio);
-  CHECK(restored.pass_events == m.pass_events);
-  CHECK(restored.rotator_error_detection == m.rotator_error_detection);
+  CHECK(std::tie(restored.station, restored.rotator, restored.radio, restored.pass_events,
+                 restored.rotator_error_detection) ==
+        std::tie(m.station, m.rotator, m.radio, m.pass_events, m.rotator_error_detection));
 }
 
 TEST_CASE("A state document written before the new fields still loads, with their defaults") {
