@@ -209,12 +209,26 @@ def sh(*args, timeout=20):
     return p.returncode, p.stdout, p.stderr
 
 
+def read_log(state):
+    """The trakbox.log of the state directory `state`."""
+    with open(os.path.join(state, "trakbox.log")) as f:
+        return f.read()
+
+
 def stop_and_read_log(proc, state):
     """Ends a trakbox started on `state` (SIGTERM, as a service stop) and returns its trakbox.log."""
     proc.terminate()
     proc.wait(20)
-    with open(os.path.join(state, "trakbox.log")) as f:
-        return f.read()
+    return read_log(state)
+
+
+def start_line_trakbox(state, start, *args):
+    """trakbox on the serial-line front end (its stdin a pipe, stdout discarded, stderr kept) with
+    the state directory `state`, the clock starting at `start` (a datetime), the Satrak port
+    off, and `args` (drivers, ports)."""
+    clock = start.strftime("%Y-%m-%dT%H:%M:%SZ")
+    return subprocess.Popen([BIN, "--state", state, "--line", "--satrak-port", "0", "--clock", clock, *args],
+                            stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
 
 
 def reap(procs):
