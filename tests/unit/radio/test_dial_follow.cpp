@@ -17,9 +17,17 @@ namespace {
 
 // RS-44 as data/freqmode.txt has it: an inverting transponder.
 SatelliteRadio rs44() {
-  return {.downlink_hz = 435'640'000, .uplink_hz = 145'965'000, .downlink_mode = Mode::usb, .uplink_mode = Mode::lsb,
-          .downlink_low_hz = 435'610'000, .downlink_high_hz = 435'670'000, .uplink_low_hz = 145'935'000,
-          .uplink_high_hz = 145'995'000, .inverting = true};
+  SatelliteRadio s;
+  s.downlink_hz = 435'640'000;
+  s.uplink_hz = 145'965'000;
+  s.downlink_mode = Mode::usb;
+  s.uplink_mode = Mode::lsb;
+  s.downlink_low_hz = 435'610'000;
+  s.downlink_high_hz = 435'670'000;
+  s.uplink_low_hz = 145'935'000;
+  s.uplink_high_hz = 145'995'000;
+  s.inverting = true;
+  return s;
 }
 
 RadioConfig full_orbit() {

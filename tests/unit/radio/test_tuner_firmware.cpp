@@ -12,7 +12,12 @@ namespace {
 
 // FO-29-like linear transponder, CAT, no Doppler (range rate 0) so the numbers are the nominal ones.
 SatelliteRadio linear() {
-  return {.downlink_hz = 435'850'000, .uplink_hz = 145'950'000, .downlink_mode = Mode::usb, .uplink_mode = Mode::lsb};
+  SatelliteRadio s;
+  s.downlink_hz = 435'850'000;
+  s.uplink_hz = 145'950'000;
+  s.downlink_mode = Mode::usb;
+  s.uplink_mode = Mode::lsb;
+  return s;
 }
 
 RadioConfig parking_config() {
