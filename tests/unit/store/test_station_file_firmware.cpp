@@ -223,7 +223,7 @@ TEST_CASE("The form is told by line 5; a seven-line file missing lines says whic
   CHECK(old.file->radio.rig == radio::Rig::icom);
 }
 
-TEST_CASE("A 1994 file does not touch what only the later file sets") {
+TEST_CASE("A 1994 file does not touch what only the later file sets, but its span means 0..90: flip goes off") {
   store::Model m = store::factory_defaults();
   m.rotator.el_flip_allowed = true;
   m.rotator.stall_s = 7.0;
@@ -232,7 +232,8 @@ TEST_CASE("A 1994 file does not touch what only the later file sets") {
   const auto r = parse_station_file(testing::kManualStationFile);
   REQUIRE(r.ok());
   REQUIRE(store::apply_station_file(*r.file, m).empty());
-  CHECK(m.rotator.el_flip_allowed);
+  // Flip mode says what line 2's elevation span means (0..180); a 1994 file's span is 0..90.
+  CHECK_FALSE(m.rotator.el_flip_allowed);
   CHECK(m.rotator.stall_s == 7.0);
   CHECK(m.pass_events.rotor_start_el_deg == 3.0);
   CHECK(m.radio.parking.enabled);
