@@ -4,6 +4,7 @@
 #include <cstdlib>
 
 #include "app/build_info.h"
+#include "app/rotator_registry.h"
 #include "station/clock.h"
 #include "menus/term/line_terminal.h"
 #include "store/refresh.h"
@@ -29,9 +30,12 @@ std::vector<OptionSpec> tracker_option_specs() {
                       "freq/mode files"},
       {"clock", "ISO8601", "start the real-time clock at this UTC time (e.g. 2026-05-21T12:00:00Z)"},
       {"clock-rate", "R", "run the clock R times faster than real time, R at most 200 (with or without --clock)"},
-      {"rotator", "SPEC", "simulated (default), hamlib:MODEL:DEVICE[:BAUD], rotctld:HOST[:PORT]"},
-      {"radio", "SPEC", "simulated (default), icom:DEV, kenwood:DEV, yaesu:DEV, cat:DEV (rig of menu 6-7), "
-                        "hamlib:MODEL:DEV[:BAUD], rigctld[:HOST[:PORT]]"},
+      {"rotator", "SPEC", "simulated (default), hamlib:MODEL:DEVICE[:BAUD], rotctld:HOST[:PORT], satrak:HOST[:PORT] "
+                          "(trakbox --rotator list)"},
+      {"radio", "SPEC", "simulated (default), a model MODEL:DEV[:BAUD] (ic9700, ic9100, ic910h, ft847, ft817, "
+                        "ts2000 ...; `trakbox --radio list` prints them all), icom:DEV, kenwood:DEV, yaesu:DEV, "
+                        "cat:DEV (rig of menu 6-7), hamlib:MODEL:DEV[:BAUD] (MODEL a number or a name such as "
+                        "IC-9700), rigctld[:HOST[:PORT]]"},
       {"uplink-radio", "SPEC", "a second radio for the uplink, in the same forms as --radio (which then drives "
                                "the downlink); stored, so later starts use it too; none: one radio again"},
       {"tick-ms", "MS", "tracking interval in milliseconds, 100 to 1000 (default 1000)"},
@@ -87,16 +91,11 @@ std::optional<spdlog::level::level_enum> log_level_named(const std::string& l) {
 
 // The device specs, checked before anything starts.
 void read_devices(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
-  const std::string rot_text = o.value("rotator").value_or("simulated");
-  if (rot_text.rfind("satrak:", 0) == 0) {
-    std::string err;
-    c.satrak_rotator = satrak::parse_rotator_spec(rot_text, err);
-    if (!c.satrak_rotator) r.fail("--rotator", err);
-  } else {
-    rotator::SpecResult rot_spec = rotator::parse_rotator_spec(rot_text);
-    c.rotator = rot_spec.spec;
-    if (!rot_spec.spec) r.fail("--rotator", rot_spec.error);
-  }
+  // One table of rotators (app/rotator_registry.h) chooses the parser.
+  RotatorParse rot = parse_rotator(o.value("rotator").value_or("simulated"));
+  c.satrak_rotator = rot.choice.satrak;
+  c.rotator = rot.choice.rotator;
+  if (!rot.error.empty()) r.fail("--rotator", rot.error);
   const auto radio_spec = radio::parse_radio_spec(o.value("radio").value_or("simulated"));
   if (radio_spec.spec) c.radio = *radio_spec.spec;
   else r.fail("--radio", radio_spec.error);

@@ -50,30 +50,24 @@ class IcomBus {
 
  private:
   void run() {
-    icom::FrameReader reader;
-    while (!stop_) {
-      auto bytes = end_.read(256, 20ms);
-      if (bytes.empty()) continue;
-      reader.feed(bytes);
-      while (auto f = reader.next()) {
-        {
-          std::lock_guard lock(mu_);
-          frames_.push_back(*f);
-        }
-        if (jam_next > 0) {
-          --jam_next;
-          end_.write({0xFE, 0xFE, 0xFC, 0xFC, 0xFC, 0xFD});   // the bus was jammed
-          continue;
-        }
-        if (!echo) continue;
-        end_.write(*f);
-        const auto frame = icom::decode_frame(*f);
-        if (frame && frame->to != icom::kBroadcast) {
-          const bool ng = refuse_modes && frame->cmd == icom::kCmdSetMode;
-          end_.write({0xFE, 0xFE, icom::kController, frame->to, ng ? icom::kNg : icom::kOk, 0xFD});
-        }
+    tbtest::read_civ_frames(end_, stop_, [this](const Bytes& f) {
+      {
+        std::lock_guard lock(mu_);
+        frames_.push_back(f);
       }
-    }
+      if (jam_next > 0) {
+        --jam_next;
+        end_.write({0xFE, 0xFE, 0xFC, 0xFC, 0xFC, 0xFD});   // the bus was jammed
+        return;
+      }
+      if (!echo) return;
+      end_.write(f);
+      const auto frame = icom::decode_frame(f);
+      if (frame && frame->to != icom::kBroadcast) {
+        const bool ng = refuse_modes && frame->cmd == icom::kCmdSetMode;
+        end_.write({0xFE, 0xFE, icom::kController, frame->to, ng ? icom::kNg : icom::kOk, 0xFD});
+      }
+    });
   }
   PtyEnd end_;
   std::atomic<bool> stop_{false};
