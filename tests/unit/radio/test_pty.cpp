@@ -10,11 +10,11 @@
 #include "radio/cat_links.h"
 #include "support.h"
 
-using namespace tb::radio;
-using namespace std::chrono_literals;
-using tbtest::eventually;
-using tbtest::PtyEnd;
 using tbtest::PtyPair;
+using tbtest::PtyEnd;
+using tbtest::eventually;
+using namespace std::chrono_literals;
+using namespace tb::radio;
 
 namespace {
 
