@@ -15,12 +15,8 @@ import time
 from datetime import datetime, timedelta, timezone
 
 sys.path.insert(0, os.path.dirname(__file__))
-<<<<<<< HEAD
-from _tbharness import (check, free_port, hamlib_dummy, reap, run_test, satellite_track, sh, skip,  # noqa: E402
+from _tbharness import (check, free_port, hamlib_dummy, poll, reap, run_test, satellite_track, sh, skip,  # noqa: E402
                         start_line_trakbox)
-=======
-from _tbharness import BIN, check, free_port, hamlib_dummy, poll, reap, run_test, satellite_track, sh, skip  # noqa: E402
->>>>>>> main
 
 START = datetime(2026, 5, 21, 10, 57, 0, tzinfo=timezone.utc)
 C = 299792.458
