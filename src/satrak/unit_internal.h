@@ -58,7 +58,7 @@ struct StatusFields {
   bool y_minus_limit = false;          // X7: down
   bool tracking = false;               // X8
   int window_status = 0;               // X9: TrackStatus
-  bool rtc_updated_by_gps = false;     // X10: no GPS here
+  bool rtc_updated_by_gps = false;     // X10: the clock was set from GPS time
   int gps_lock_delay_s = 0;            // X11
   int x_motion = 0;                    // X12: -1, 0, 1
   int y_motion = 0;                    // X13
