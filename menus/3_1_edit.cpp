@@ -250,12 +250,11 @@ void menu_3_1_edit(term::Terminal& t, Services& s) {
   edit_radio(t, r);
 
   // Every line was answered: store the satellite.
-  const orbit::Sgp4 check(e);
-  const auto at_epoch = check.propagate_minutes(0.0);
+  const orbit::Sgp4Error at_epoch = orbit::error_at_epoch(e);
   s.model.db.satellites[index] = std::move(sat);
   t.line("Satellite (" + s.model.db.satellites[index].name() + ") updated.");
-  if (!at_epoch.ok())
-    t.line(std::string("Warning: SGP4 finds no orbit in these elements: ") + orbit::describe(at_epoch.error));
+  if (at_epoch != orbit::Sgp4Error::none)
+    t.line(std::string("Warning: SGP4 finds no orbit in these elements: ") + orbit::describe(at_epoch));
   s.station.reconfigure();  // the radio is tuned again from the new frequencies
   save_or_report(t, s);
 }

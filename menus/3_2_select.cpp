@@ -66,9 +66,9 @@ void menu_3_2_select(term::Terminal& t, Services& s) {
     t.line("No satellite selected: the tracking list is unchanged.");
     return;
   }
-  // The '*' of menus 1 and 2 stays on the same satellite when it is still listed, else #1.
-  const auto old_marked = old.marked_index();
-  db.marked = old_marked && db.list_number(*old_marked) ? db.list_number(*old_marked) - 1 : 0;
+  // The '*' of menus 1, 2 and M is where 3-2 showed it: on the satellite selected last (the
+  // manual's "the asterisk (*) mark indicates the satellite last selected").
+  db.marked = db.list_number(last) - 1;
   db.normalise();
   // A satellite followed alone that left the list: stop rather than follow something unlisted.
   const auto followed = s.tracker.last_decision().followed;

@@ -10,12 +10,13 @@
 #include <sstream>
 
 #include "menus/menus.h"
-#include "net/download.h"
+#include "download/download.h"
 #include "store/model.h"
 #include "store/refresh.h"
 #include "store/satnogs.h"
 #include "tracker/elements_refresh.h"
 #include "tracker/station_loop.h"
+#include "util/files.h"
 
 namespace tb::menus {
 
@@ -88,24 +89,22 @@ void refresh_now(term::Terminal& t, Services& s) {
 // going (its key wait runs the event loop); any key cancels. The reason when there is no text.
 std::optional<std::string> fetch(term::Terminal& t, const std::string& where, std::string& text) {
   if (where.starts_with("/")) {
-    std::ifstream in(where, std::ios::binary);
-    if (!in) return "cannot read " + where;
-    std::stringstream ss;
-    ss << in.rdbuf();
-    text = ss.str();
+    auto read = files::read_whole_file(where);
+    if (!read) return "cannot read " + where;
+    text = std::move(*read);
     return std::nullopt;
   }
   struct Shared {
     std::atomic<bool> done{false};
-    net::DownloadResult result;
+    download::DownloadResult result;
   };
   auto shared = std::make_shared<Shared>();
-  net::Downloader worker;
-  net::DownloadRequest r;
+  download::Downloader worker;
+  download::DownloadRequest r;
   r.url = where;
   r.total_timeout = std::chrono::seconds(60);
   r.max_bytes = 16u << 20;  // the whole transmitter list is a few MB
-  worker.submit(r, [shared](net::DownloadResult res) {
+  worker.submit(r, [shared](download::DownloadResult res) {
     shared->result = std::move(res);
     shared->done = true;
   });

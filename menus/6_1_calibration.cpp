@@ -7,7 +7,9 @@
 // both spans the whole ADC (0..1023), so keyboard drive reaches the mechanical ends whatever the old
 // span was (an elevation pot reading above the old 90-degree count could not be reached otherwise).
 // An axis driven into its end stop stalls and is stopped by the controller: that is the reading
-// wanted. Elevation must be stopped (5) straight up if the rotator goes on past 90 degrees. The
+// wanted. Elevation must be stopped (5) straight up if the rotator goes on past 90 degrees; in the
+// later firmware's flip mode (STATION.DAT's F, rotator.el_flip_allowed) the second point is the
+// 180-degree one instead ("you must calibrate the EL rotor at 0 and 180 degree point"). The
 // degrees on the monitor line are the old calibration's; the model is put back on leaving.
 #include <cctype>
 
@@ -62,8 +64,10 @@ void menu_6_1_calibration(term::Terminal& t, Services& s) {
     const char* where;
     const char* prompt;
   };
+  const bool flip = s.model.rotator.el_flip_allowed;
   const Point points[2] = {{"Rotate the antenna to fully CCW and", "Elevation minimum position [Y/N] ? "},
-                           {"Rotate the antenna to fully CW and", "Elevation maximum position [Y/N] ? "}};
+                           {"Rotate the antenna to fully CW and",
+                            flip ? "Elevation 180 degree (flip) position [Y/N] ? " : "Elevation maximum position [Y/N] ? "}};
   rotator::SpanCalibration cal;
   std::optional<CalibrationDrive> drive(std::in_place, s);
   for (int i = 0; i < 2; ++i) {

@@ -26,7 +26,10 @@ void menu_6_2_adc_span(term::Terminal& t, Services& s) {
   c.az_span.max = whole(cfg::ask_number(t, "AZ maximum value ? : ", c.az_span.max, lo, top, true));
   t.line(span_of("EL", c.el_span));
   c.el_span.min = whole(cfg::ask_number(t, "EL minimum value ? : ", c.el_span.min, lo, top, true));
-  c.el_span.max = whole(cfg::ask_number(t, "EL maximum value ? : ", c.el_span.max, lo, top, true));
+  // Flip mode (the later firmware) calibrates the elevation at 0 and 180 degrees: the maximum is
+  // the 180-degree count.
+  const char* el_max = c.el_flip_allowed ? "EL maximum (180 deg) value ? : " : "EL maximum value ? : ";
+  c.el_span.max = whole(cfg::ask_number(t, el_max, c.el_span.max, lo, top, true));
   // Limits that leave two pieces of travel (the rotor stop inside them) are said so, with what is
   // reachable. Whether they may be crossed is not asked here, so the manual's dialogue (whose own
   // example splits the travel on the factory South start) keeps its keystrokes: --cross-limit-sector.
@@ -47,7 +50,7 @@ void menu_6_3_dead_band_skew(term::Terminal& t, Services& s) {
 
 void menu_6_4_parking_limits(term::Terminal& t, Services& s) {
   rotator::RotatorConfig c = s.model.rotator;
-  const double el_top = c.el_flip_allowed ? 180.0 : 90.0;
+  const double el_top = c.el_top_deg();
   auto prompt = [](const char* label, double current) { return std::string(label) + " : " + cfg::fmt1(current) + "  "; };
   c.parking_enabled = cfg::ask_choice(t, "Set Antenna Parking position ? [Y/N] ", "YN") == 'Y';
   if (c.parking_enabled) {

@@ -86,7 +86,7 @@ void menu_6_6_3_presets(term::Terminal& t, Services& s) {
         const std::string head = " Preset position " + std::to_string(i + 1) + " ";
         p.az = cfg::ask_number(t, head + "Az: " + cfg::fmt1(p.az) + "  ", p.az, 0.0, 360.0);
         p.el = cfg::ask_number(t, std::string(head.size(), ' ') + "El: " + cfg::fmt1(p.el) + "  ", p.el, 0.0,
-                               c.el_flip_allowed ? 180.0 : 90.0);
+                               c.el_top_deg());
       }
       cfg::commit_rotator(t, s, c);
       return MenuStep::again;

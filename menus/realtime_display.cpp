@@ -67,23 +67,14 @@ term::Graphics make_graphics(Services& s, const tracker::SatNow& n) {
   g.title = n.name + (n.pass ? "  pass " + format_time(n.pass->aos) + "-" + format_time(n.pass->los) : "");
   if (n.pass) {
     const double minutes = orbit::minutes_between(n.pass->aos, n.pass->los);
-    const int steps = std::clamp(static_cast<int>(minutes * 2), 2, 240);
-    for (int k = 0; k <= steps; ++k) {
-      const auto t = orbit::add_minutes(n.pass->aos, minutes * k / steps);
-      if (const auto p = s.tracker.observe(n.db_index, t); p && p->obs.ok())
-        g.pass_track.push_back({p->obs.look.az_deg, p->obs.look.el_deg});
-    }
+    for (const auto& o : s.tracker.pass_track(n.db_index, *n.pass, std::clamp(static_cast<int>(minutes * 2), 2, 240)))
+      g.pass_track.push_back({o.look.az_deg, o.look.el_deg});
   }
   if (n.obs.ok()) {
     g.satellite = term::SkyPoint{n.obs.look.az_deg, n.obs.look.el_deg};
     g.sub_point = std::pair{n.obs.sub_point.lat_deg, n.obs.sub_point.lon_deg};
-    const orbit::Sgp4* sgp4 = s.tracker.propagator(n.db_index);
-    const double period = sgp4 ? sgp4->period_minutes() : 100.0;
-    for (int k = 0; k <= 120; ++k) {
-      const auto t = orbit::add_minutes(n.obs.time, period * k / 120.0);
-      if (const auto p = s.tracker.observe(n.db_index, t); p && p->obs.ok())
-        g.ground_track.emplace_back(p->obs.sub_point.lat_deg, p->obs.sub_point.lon_deg);
-    }
+    for (const auto& o : s.tracker.orbit_track(n.db_index, n.obs.time, 120))
+      g.ground_track.emplace_back(o.sub_point.lat_deg, o.sub_point.lon_deg);
   }
   if (const auto a = s.station.antenna()) g.antenna = term::SkyPoint{a->az, a->el};
   g.station = std::pair{s.model.station.lat_deg, s.model.station.lon_deg};
@@ -153,6 +144,53 @@ std::string elements_age_line(Services& s, int db_index) {
   std::string line = "Elements: epoch " + format_date(e.epoch()) + " " + format_time(e.epoch()) + " UTC, age " + age.text();
   if (age.stale()) line += "  WARNING: " + age.warning();
   return line;
+}
+
+// A key typed under the live display, other than Q and the end of the input: E, Y, U, D, +, -, 0.
+void realtime_key(term::Terminal& t, Services& s, int k) {
+  switch (k) {
+    case term::kTimeout: break;
+    case 'e':
+    case 'E':
+      s.station.set_rotor_control(!s.model.rotor_control);
+      save_or_report(t, s);
+      // Full screen shows it in the status line; a serial terminal gets a line (issue 18, item 6).
+      if (!t.full_screen()) t.line(s.model.rotor_control ? "Rotor control ON" : "Rotor control OFF");
+      break;
+    case 'y':
+    case 'Y':
+      s.clock.zero_seconds();
+      s.model.clock_offset = s.clock.offset();
+      save_or_report(t, s);
+      break;
+    case 'u':
+    case 'U':
+      // The later firmware's alternative uplinks (FREQ.DAT): the next channel, kept.
+      if (const auto up = s.station.next_uplink()) {
+        save_or_report(t, s);
+        t.line("Uplink " + radio::format_mhz(*up) + " MHz");
+      } else {
+        t.line("No other uplink for this satellite (FREQ.DAT lists up to four)");
+      }
+      break;
+    case 'd':
+    case 'D':
+      // Dial follow on linear transponders: the spot reached so far stays.
+      s.model.radio.dial_follow = !s.model.radio.dial_follow;
+      s.station.tuner().set_config(s.model.radio);
+      save_or_report(t, s);
+      if (!t.full_screen()) t.line(s.model.radio.dial_follow ? "Dial follow ON" : "Dial follow OFF");
+      break;
+    case '+':
+    case '-':
+    case '0':
+      s.station.adjust_correction(k == '+' ? 1 : k == '-' ? -1 : 0);
+      save_or_report(t, s);  // the correction is remembered for this satellite and mode
+      if (!t.full_screen()) t.line("Frequency offset " + std::string(s.station.tuner().rit_hz() > 0 ? "+" : "") +
+                                   std::to_string(s.station.tuner().rit_hz()) + " Hz");
+      break;
+    default: break;
+  }
 }
 
 }  // namespace
@@ -240,54 +278,12 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
     // Sooner when a link waits for the operator's knob to rest, so it moves as soon as it has.
     const int k = t.read_key(std::min(std::chrono::milliseconds(1000),
                                       s.station.radio_due_in().value_or(std::chrono::milliseconds(1000))));
-    switch (k) {
-      case term::kTimeout: break;
-      case term::kEndOfInput: throw InputClosed{};
-      case 'q':
-      case 'Q':
-        t.end_live();
-        return RealtimeExit::quit;
-      case 'e':
-      case 'E':
-        s.station.set_rotor_control(!s.model.rotor_control);
-        save_or_report(t, s);
-        // Full screen shows it in the status line; a serial terminal gets a line (issue 18, item 6).
-        if (!t.full_screen()) t.line(s.model.rotor_control ? "Rotor control ON" : "Rotor control OFF");
-        break;
-      case 'y':
-      case 'Y':
-        s.clock.zero_seconds();
-        s.model.clock_offset = s.clock.offset();
-        save_or_report(t, s);
-        break;
-      case 'u':
-      case 'U':
-        // The later firmware's alternative uplinks (FREQ.DAT): the next channel, kept.
-        if (const auto up = s.station.next_uplink()) {
-          save_or_report(t, s);
-          t.line("Uplink " + radio::format_mhz(*up) + " MHz");
-        } else {
-          t.line("No other uplink for this satellite (FREQ.DAT lists up to four)");
-        }
-        break;
-      case 'd':
-      case 'D':
-        // Dial follow on linear transponders: the spot reached so far stays.
-        s.model.radio.dial_follow = !s.model.radio.dial_follow;
-        s.station.tuner().set_config(s.model.radio);
-        save_or_report(t, s);
-        if (!t.full_screen()) t.line(s.model.radio.dial_follow ? "Dial follow ON" : "Dial follow OFF");
-        break;
-      case '+':
-      case '-':
-      case '0':
-        s.station.adjust_correction(k == '+' ? 1 : k == '-' ? -1 : 0);
-        save_or_report(t, s);   // the correction is remembered for this satellite and mode
-        if (!t.full_screen()) t.line("Frequency offset " + std::string(s.station.tuner().rit_hz() > 0 ? "+" : "") +
-                                     std::to_string(s.station.tuner().rit_hz()) + " Hz");
-        break;
-      default: break;
+    if (k == term::kEndOfInput) throw InputClosed{};
+    if (k == 'q' || k == 'Q') {
+      t.end_live();
+      return RealtimeExit::quit;
     }
+    realtime_key(t, s, k);
   }
 }
 

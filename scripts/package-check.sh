@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # package-check.sh [BUILD_DIR]: builds the Debian package from the build tree (cpack -G DEB),
-# checks it with lintian (no errors), installs it with dpkg, runs the installed trakbox from / with
+# checks it with lintian (no errors) and scripts/hardening-check.sh (the build's hardening), installs it with dpkg, runs the installed trakbox from / with
 # an empty state directory (--version, passes on the installed data, host mode ?A through the
 # unattended --service mode, man -w, systemd-analyze verify on the unit), then removes the package.
 # Run by scripts/test.sh in CI (a fresh machine, as root); docs/install.md.
@@ -16,6 +16,7 @@ echo "== package: $deb"
 lintian_out=$(lintian "$deb" 2>&1 | grep -v "running with root privileges" || true)
 echo "${lintian_out:-lintian: nothing to report}"
 if grep -q '^E:' <<<"$lintian_out"; then echo "lintian reports errors"; exit 1; fi
+scripts/hardening-check.sh "$deb"
 
 if dpkg-query -W -f='${Status}' trakbox 2>/dev/null | grep -q "install ok installed"; then
   echo "trakbox is installed already: not touching it"; exit 1

@@ -9,7 +9,9 @@ scripts/install-deps.sh
 jobs=$(nproc)
 
 start=$SECONDS
-scripts/build.sh build -DTRAKBOX_WERROR=ON
+# Hardened as the package is (Debian's flags and libstdc++'s assertions): the tests run the binary
+# that package-check.sh then packs.
+scripts/build.sh build -DTRAKBOX_WERROR=ON -DTRAKBOX_HARDENING=ON
 echo "== build: $((SECONDS - start)) s"
 (cd build && ctest --output-on-failure -j"$jobs")
 echo "== tests: $((SECONDS - start)) s"

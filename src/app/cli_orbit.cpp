@@ -21,6 +21,7 @@
 #include "orbit/sgp4_batch.h"
 #include "orbit/sgp4.h"
 #include "orbit/state_lines.h"
+#include "util/format.h"
 #include "util/text.h"
 
 namespace tb::app {
@@ -32,22 +33,7 @@ using orbit::UtcTime;
 // ---------------------------------------------------------------------------------------------
 // Text helpers
 
-std::string strprintf(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
-std::string strprintf(const char* fmt, ...) {
-  char buf[512];
-  va_list ap;
-  va_start(ap, fmt);
-  const int n = std::vsnprintf(buf, sizeof buf, fmt, ap);
-  va_end(ap);
-  if (n < 0) return {};
-  if (static_cast<std::size_t>(n) < sizeof buf) return std::string(buf, static_cast<std::size_t>(n));
-  std::string big(static_cast<std::size_t>(n) + 1, '\0');
-  va_start(ap, fmt);
-  std::vsnprintf(big.data(), big.size(), fmt, ap);
-  va_end(ap);
-  big.resize(static_cast<std::size_t>(n));
-  return big;
-}
+using text::printf_string;
 
 void out(const std::string& s) { std::fwrite(s.data(), 1, s.size(), stdout); }
 
@@ -61,7 +47,7 @@ std::string json_string(std::string_view s) {
       case '\r': r += "\\r"; break;
       case '\t': r += "\\t"; break;
       default:
-        if (static_cast<unsigned char>(c) < 0x20) r += strprintf("\\u%04x", static_cast<unsigned char>(c));
+        if (static_cast<unsigned char>(c) < 0x20) r += printf_string("\\u%04x", static_cast<unsigned char>(c));
         else r += c;
     }
   }
@@ -164,7 +150,7 @@ std::string list_choices(const std::vector<Elements>& sets) {
   constexpr std::size_t kMax = 30;
   std::string s;
   for (std::size_t i = 0; i < sets.size() && i < kMax; ++i) s += (i ? ", " : "") + choice_label(sets[i]);
-  if (sets.size() > kMax) s += strprintf(", ... (%zu more)", sets.size() - kMax);
+  if (sets.size() > kMax) s += printf_string(", ... (%zu more)", sets.size() - kMax);
   return s;
 }
 
@@ -218,7 +204,7 @@ std::vector<Elements> select_sats(const std::vector<Elements>& sets, const std::
   std::vector<Elements> chosen;
   if (keys.empty()) {
     if (sets.size() == 1 || allow_all) return sets;
-    in.fail("ELEMENTS", strprintf("'%s' holds %zu element sets; choose one with --sat NAME|NUMBER: ", path.c_str(),
+    in.fail("ELEMENTS", printf_string("'%s' holds %zu element sets; choose one with --sat NAME|NUMBER: ", path.c_str(),
                                   sets.size()) + list_choices(sets));
     return chosen;
   }
@@ -371,7 +357,7 @@ int run_propagate(std::vector<std::string> args) {
   const auto stop = in.number("stop", true, "MIN, minutes from epoch");
   const auto step = in.number("step", true, "MIN, a number of minutes > 0", Range{0.0, std::nullopt, true});
   if (in.ok() && *stop < *start)
-    in.fail("--stop", strprintf("expected MIN >= --start (%g), found '%s'", *start, run.parsed.value("stop")->c_str()));
+    in.fail("--stop", printf_string("expected MIN >= --start (%g), found '%s'", *start, run.parsed.value("stop")->c_str()));
   if (in.ok() && (*stop - *start) / *step > 1e7)
     in.fail("--step", "too small: more than 10000000 lines between --start and --stop");
   std::vector<Elements> sats;
@@ -413,7 +399,7 @@ int run_propagate(std::vector<std::string> args) {
       const orbit::Propagation& p = states[k];
       if (!p.ok()) {
         flush();
-        out(strprintf("# sgp4 error %d at tsince %.8f min (%s): %s\n", static_cast<int>(p.error), times[k],
+        out(printf_string("# sgp4 error %d at tsince %.8f min (%s): %s\n", static_cast<int>(p.error), times[k],
                       orbit::format_iso8601(orbit::add_minutes(sat.epoch(), times[k]), 6).c_str(),
                       orbit::describe(p.error)));
         return kExitFailure;
@@ -483,13 +469,13 @@ int run_schedule(std::vector<std::string> args) {
     out("utc,az_deg,el_deg,range_km,range_rate_km_s,alt_km,lat_deg,lon_deg,phase256,doppler_hz\n");
   if (format == OutputFormat::json) out("[");
   if (format == OutputFormat::table) {
-    out(strprintf("%s  station %.4f, %.4f, %.0f m  elements epoch %s, age %s%s\n", choice_label(sats.front()).c_str(),
+    out(printf_string("%s  station %.4f, %.4f, %.0f m  elements epoch %s, age %s%s\n", choice_label(sats.front()).c_str(),
                   station->lat_deg, station->lon_deg, station->height_m,
                   orbit::format_iso8601(sats.front().epoch(), 0).c_str(),
                   orbit::element_age(sats.front(), *start).text().c_str(),
-                  freq ? strprintf("  Doppler at %lld Hz", static_cast<long long>(*freq)).c_str() : ""));
+                  freq ? printf_string("  Doppler at %lld Hz", static_cast<long long>(*freq)).c_str() : ""));
     const int time_width = static_cast<int>(manual_time(*start, decimals).size());
-    out(strprintf("%-*s  %-11s  %6s  %8s  %10s  %10s  %8s  %8s\n", time_width,
+    out(printf_string("%-*s  %-11s  %6s  %8s  %10s  %10s  %8s  %8s\n", time_width,
                   "DATE       TIME", "AZ/EL", "Phase", "Doppler", "Range km", "Alt km", "Lat deg", "Lon deg"));
   }
   int status = kExitOk;
@@ -516,12 +502,12 @@ int run_schedule(std::vector<std::string> args) {
     const double doppler = orbit::doppler_shift_hz(f, o.look.range_rate_km_s);
     switch (format) {
       case OutputFormat::csv:
-        out(strprintf("%s,%.6f,%.6f,%.6f,%.9f,%.6f,%.6f,%.6f,%.4f,%.3f\n", orbit::format_iso8601(t, decimals).c_str(),
+        out(printf_string("%s,%.6f,%.6f,%.6f,%.9f,%.6f,%.6f,%.6f,%.4f,%.3f\n", orbit::format_iso8601(t, decimals).c_str(),
                       o.look.az_deg, o.look.el_deg, o.look.range_km, o.look.range_rate_km_s, o.sub_point.alt_km,
                       o.sub_point.lat_deg, o.sub_point.lon_deg, o.phase256, doppler));
         break;
       case OutputFormat::json:
-        out(strprintf("%s\n  {\"utc\": %s, \"az_deg\": %.6f, \"el_deg\": %.6f, \"range_km\": %.6f, "
+        out(printf_string("%s\n  {\"utc\": %s, \"az_deg\": %.6f, \"el_deg\": %.6f, \"range_km\": %.6f, "
                       "\"range_rate_km_s\": %.9f, \"alt_km\": %.6f, \"lat_deg\": %.6f, \"lon_deg\": %.6f, "
                       "\"phase256\": %.4f, \"doppler_hz\": %.3f}",
                       i ? "," : "", json_string(orbit::format_iso8601(t, decimals)).c_str(), o.look.az_deg,
@@ -529,9 +515,9 @@ int run_schedule(std::vector<std::string> args) {
                       o.sub_point.lon_deg, o.phase256, doppler));
         break;
       case OutputFormat::table:
-        out(strprintf("%s  %5.1f/%5.1f  %6.1f  %8s  %10.1f  %10.1f  %8.1f  %8.1f\n", manual_time(t, decimals).c_str(),
+        out(printf_string("%s  %5.1f/%5.1f  %6.1f  %8s  %10.1f  %10.1f  %8.1f  %8.1f\n", manual_time(t, decimals).c_str(),
                       o.look.az_deg, o.look.el_deg, o.phase256,
-                      freq ? strprintf("%+.0f", doppler).c_str() : "-", o.look.range_km, o.sub_point.alt_km,
+                      freq ? printf_string("%+.0f", doppler).c_str() : "-", o.look.range_km, o.sub_point.alt_km,
                       o.sub_point.lat_deg, o.sub_point.lon_deg));
         break;
     }
@@ -575,7 +561,7 @@ std::string elements_ages(const std::vector<Elements>& sats, UtcTime at) {
   if (sats.size() <= 4) {
     std::string out;
     for (const Elements& e : sats)
-      out += strprintf("elements %s epoch %s, age %s\n", choice_label(e).c_str(),
+      out += printf_string("elements %s epoch %s, age %s\n", choice_label(e).c_str(),
                        orbit::format_iso8601(e.epoch(), 0).c_str(), orbit::element_age(e, at).text().c_str());
     return out;
   }
@@ -585,7 +571,7 @@ std::string elements_ages(const std::vector<Elements>& sats, UtcTime at) {
     lo = std::min(lo, days);
     hi = std::max(hi, days);
   }
-  return strprintf("elements of %zu satellites, age %.1f to %.1f days at the start\n", sats.size(), lo, hi);
+  return printf_string("elements of %zu satellites, age %.1f to %.1f days at the start\n", sats.size(), lo, hi);
 }
 
 // What `passes` owes its reader about one set over the window: its age at the window's start and
@@ -659,7 +645,7 @@ int run_passes(std::vector<std::string> args) {
     case OutputFormat::csv:
       out("sat,aos_utc,tca_utc,los_utc,max_el_deg,aos_az_deg,los_az_deg\n");
       for (const SatPass& s : passes)
-        out(strprintf("%s,%s,%s,%s,%.4f,%.4f,%.4f\n", csv_field(s.sat).c_str(), iso3(s.pass.aos).c_str(),
+        out(printf_string("%s,%s,%s,%s,%.4f,%.4f,%.4f\n", csv_field(s.sat).c_str(), iso3(s.pass.aos).c_str(),
                       iso3(s.pass.tca).c_str(), iso3(s.pass.los).c_str(), s.pass.max_el_deg, s.pass.aos_az_deg,
                       s.pass.los_az_deg));
       break;
@@ -667,7 +653,7 @@ int run_passes(std::vector<std::string> args) {
       out("[");
       for (std::size_t i = 0; i < passes.size(); ++i) {
         const SatPass& s = passes[i];
-        out(strprintf("%s\n  {\"sat\": %s, \"aos_utc\": %s, \"tca_utc\": %s, \"los_utc\": %s, \"max_el_deg\": %.4f, "
+        out(printf_string("%s\n  {\"sat\": %s, \"aos_utc\": %s, \"tca_utc\": %s, \"los_utc\": %s, \"max_el_deg\": %.4f, "
                       "\"aos_az_deg\": %.4f, \"los_az_deg\": %.4f}",
                       i ? "," : "", json_string(s.sat).c_str(), json_string(iso3(s.pass.aos)).c_str(),
                       json_string(iso3(s.pass.tca)).c_str(), json_string(iso3(s.pass.los)).c_str(), s.pass.max_el_deg,
@@ -676,17 +662,17 @@ int run_passes(std::vector<std::string> args) {
       out("\n]\n");
       break;
     case OutputFormat::table: {
-      out(strprintf("station %.4f, %.4f, %.0f m  from %s for %g h  AOS/LOS at %.1f deg\n", station->lat_deg,
+      out(printf_string("station %.4f, %.4f, %.0f m  from %s for %g h  AOS/LOS at %.1f deg\n", station->lat_deg,
                     station->lon_deg, station->height_m, orbit::format_iso8601(*start, 0).c_str(), *hours,
                     orbit::kAosThresholdDeg));
       out(elements_ages(sats, *start));
-      out(strprintf("%-24s  %-20s  %-9s  %-9s  %6s  %6s  %6s  %8s\n", "SAT", "AOS (UTC)", "TCA", "LOS", "MAX EL",
+      out(printf_string("%-24s  %-20s  %-9s  %-9s  %6s  %6s  %6s  %8s\n", "SAT", "AOS (UTC)", "TCA", "LOS", "MAX EL",
                     "AOS AZ", "LOS AZ", "DURATION"));
       for (const SatPass& s : passes) {
         const std::string aos = manual_time(s.pass.aos, 0), tca = manual_time(s.pass.tca, 0),
                           los = manual_time(s.pass.los, 0);
         const auto dur = std::chrono::duration_cast<std::chrono::seconds>(s.pass.los - s.pass.aos).count();
-        out(strprintf("%-24.24s  %s%c  %s   %s%c  %6.1f  %6.1f  %6.1f  %5lld:%02lld\n", s.sat.c_str(), aos.c_str(),
+        out(printf_string("%-24.24s  %s%c  %s   %s%c  %6.1f  %6.1f  %6.1f  %5lld:%02lld\n", s.sat.c_str(), aos.c_str(),
                       s.pass.up_at_start ? '<' : ' ', tca.substr(11).c_str(), los.substr(11).c_str(),
                       s.pass.up_at_end ? '>' : ' ', s.pass.max_el_deg, s.pass.aos_az_deg, s.pass.los_az_deg,
                       static_cast<long long>(dur / 60), static_cast<long long>(dur % 60)));

@@ -26,19 +26,14 @@
 #include "store/station_file.h"
 #include "tracker/elements_refresh.h"
 #include "tracker/station_loop.h"
+#include "util/files.h"
 
 namespace tb::app {
 
 namespace asio = boost::asio;
 
 namespace {
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return {};
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+std::string read_text(const std::string& path) { return files::read_whole_file(path).value_or(""); }
 
 // The first of `names` that exists in data_dir ("" when none does).
 std::string data_file(const std::string& data_dir, std::initializer_list<const char*> names) {

@@ -225,7 +225,7 @@ std::optional<std::string> start_netctl(StationApp& app, const TrackerConfig& c,
 // on standard error and in the log.
 void warn_open_endpoints(const TrackerConfig& c, const Servers& s, spdlog::logger& log) {
   const auto open_to_all = [&](const std::string& what, const std::string& address, bool on) {
-    if (!on || !c.allow.empty() || net::is_loopback(address)) return;
+    if (!on || !c.allow.empty() || inet::is_loopback(address)) return;
     const std::string msg = what + " listens on " + address +
                             " for every address: anyone who can reach it can move the antenna and tune the radio "
                             "(name the stations with --allow CIDR; docs/security.md)";

@@ -56,7 +56,7 @@ struct TrackerConfig {
   std::string satrak_bind = "127.0.0.1";
   std::optional<int> rotctld_port, rigctld_port, host_port;
   std::string listen = "127.0.0.1";
-  std::vector<net::Cidr> allow;
+  std::vector<inet::Cidr> allow;
   // Shared secrets of the rotctld, rigctld and host-mode servers (read from --*-secret-file; empty:
   // none) and how long a client has to give one.
   std::string rotctld_secret, rigctld_secret, host_secret;

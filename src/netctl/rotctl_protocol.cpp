@@ -39,7 +39,11 @@ const std::vector<LineProtocol::Command>& RotctlProtocol::commands() const {
   return table;
 }
 
-double RotctlProtocol::max_el() const { return station_.rotator().config().el_flip_allowed ? 180.0 : 90.0; }
+double RotctlProtocol::max_el() const { return station_.rotator().config().el_top_deg(); }
+
+double RotctlProtocol::in_frame(double compass_az, double frame_lo) {
+  return frame_lo < 0.0 && compass_az > 180.0 ? compass_az - 360.0 : compass_az;
+}
 
 Outcome RotctlProtocol::execute(int id, const std::vector<std::string>& args) {
   switch (id) {
@@ -78,6 +82,9 @@ Outcome RotctlProtocol::set_pos(const std::vector<std::string>& args) {
   const auto el = parse_double(args[1]);
   if (!az || !el || *az < kMinAz || *az > kMaxAz || *el < 0.0 || *el > max_el()) return Outcome::fail(Error::invalid);
   if (const Error e = cannot_move(); e != Error::none) return Outcome::fail(e);
+  // The client's frame, as far as this azimuth tells it (0..180 is the same in both).
+  if (*az < 0.0) az_frame_lo_ = -180.0;
+  if (*az > 180.0) az_frame_lo_ = 0.0;
   station_.point(rotator::AzEl{rotator::wrap360(*az), *el});
   return {};
 }
@@ -85,7 +92,7 @@ Outcome RotctlProtocol::set_pos(const std::vector<std::string>& args) {
 Outcome RotctlProtocol::get_pos() {
   const auto& s = station_.rotator().status();
   if (!s.link.ok() || !s.has_position) return Outcome::fail(Error::io);
-  return Outcome{}.add("Azimuth", fixed2(s.az.deg)).add("Elevation", fixed2(s.el.deg));
+  return Outcome{}.add("Azimuth", fixed2(in_frame(s.az.deg, az_frame_lo_))).add("Elevation", fixed2(s.el.deg));
 }
 
 Outcome RotctlProtocol::stop() {

@@ -16,6 +16,10 @@
 //    range: outside it the request is refused (RPRT -1) and nothing changes. Inside it the azimuth
 //    is taken modulo 360, and a position outside trakbox's rotation limits or span is clamped to the
 //    nearest limit (as trakbox's own tracking does), RPRT 0; p then says where the antenna went.
+//  * p answers the azimuth in the frame the client uses, as its own P shows it: after a P with a
+//    negative azimuth (Gpredict set to -180..180) in (-180, 180], after one above 180 (a 0..360
+//    client) and before any P in [0, 360). A client that compares p with what it sent (Gpredict
+//    re-sends P whenever they differ by more than its threshold) then sees the antenna arrive.
 //  * with rotor control off (the E key) P, K and M are refused (RPRT -9) and nothing changes;
 //    S always works. K with parking disabled: RPRT -9. A rotator link in fault: P, K, M and p
 //    answer RPRT -6.
@@ -38,6 +42,11 @@ class RotctlProtocol final : public LineProtocol {
   static constexpr double kMaxAz = 540.0;
   double max_el() const;  // 90, or 180 where the elevation may flip over the top
 
+  // The azimuth frame p answers in: the lowest azimuth it reports, 0 (0..360) or -180 (-180..180).
+  double az_frame_lo() const { return az_frame_lo_; }
+  // A compass azimuth [0, 360) in a frame starting at frame_lo (0 or -180).
+  static double in_frame(double compass_az, double frame_lo);
+
  protected:
   const std::vector<Command>& commands() const override;
   Outcome execute(int id, const std::vector<std::string>& args) override;
@@ -57,6 +66,7 @@ class RotctlProtocol final : public LineProtocol {
   Error cannot_move();
 
   tracker::StationLoop& station_;
+  double az_frame_lo_ = 0.0;  // set by the azimuths P receives
 };
 
 }  // namespace tb::netctl

@@ -425,7 +425,7 @@ void LineServer::accept() {
       if (core->protocol) asio::write(socket, asio::buffer(core->protocol->refusal(why)), ignored);
       socket.close(ignored);
     };
-    if (!net::allowed(core->options.allow, who)) {
+    if (!inet::allowed(core->options.allow, who)) {
       ++core->stats.refused_not_allowed;
       spdlog::warn("{}: connection from {} refused: not in --allow", core->options.name, who);
       refuse(Refusal::not_allowed);
@@ -434,7 +434,7 @@ void LineServer::accept() {
       spdlog::warn("{}: connection from {} refused: locked out for wrong secrets", core->options.name, who);
       refuse(Refusal::locked_out);
     } else if (per_address(*core, who) >= core->options.max_per_address &&
-               !(!core->options.per_address_exempt.empty() && net::allowed(core->options.per_address_exempt, who))) {
+               !(!core->options.per_address_exempt.empty() && inet::allowed(core->options.per_address_exempt, who))) {
       ++core->stats.refused_per_address;
       spdlog::warn("{}: connection from {} refused: it has {} connections already (at most {} an address)",
                    core->options.name, who, per_address(*core, who), core->options.max_per_address);
@@ -447,7 +447,7 @@ void LineServer::accept() {
     } else {
       error_code ignored;
       socket.set_option(tcp::no_delay(true), ignored);
-      net::enable_keepalive(socket.native_handle());
+      inet::enable_keepalive(socket.native_handle());
       auto s = std::make_shared<Session>(std::move(socket), core);
       core->sessions.emplace(s.get(), s);
       s->start();

@@ -48,7 +48,7 @@ struct ServerOptions {
   std::chrono::milliseconds evict_idle_after{10000};  // see above
   // Clients allowed to connect (--allow); empty: everyone. Others are refused at accept with the
   // protocol's refusal line, and the log names their address.
-  std::vector<net::Cidr> allow;
+  std::vector<inet::Cidr> allow;
   std::string name = "netctl";             // for the log: "rotctld", "rigctld", "host"
   // A CR ends a line as well as a LF (a CR LF pair ends one line): terminal programs send CR.
   bool cr_ends_line = false;
@@ -66,7 +66,7 @@ struct ServerOptions {
   // every connection. Loopback clients are this machine's own programs. Attackers with many
   // addresses are kept out by --allow (docs/security.md).
   std::size_t max_per_address = 8;
-  std::vector<net::Cidr> per_address_exempt = {*net::parse_cidr("127.0.0.0/8"), *net::parse_cidr("::1")};
+  std::vector<inet::Cidr> per_address_exempt = {*inet::parse_cidr("127.0.0.0/8"), *inet::parse_cidr("::1")};
 };
 
 // What a server has refused and why, since it started (for the log's reader and `trakbox status`).

@@ -108,15 +108,6 @@ ParseProblem make_problem(std::string_view file, int line, int column, std::stri
   return p;
 }
 
-std::string printf_string(const char* format, ...) {
-  char buf[128];
-  va_list args;
-  va_start(args, format);
-  const int n = std::vsnprintf(buf, sizeof buf, format, args);
-  va_end(args);
-  return n < 0 ? std::string() : std::string(buf, std::min<std::size_t>(static_cast<std::size_t>(n), sizeof buf - 1));
-}
-
 std::string round_trip_fixed(double v, int decimals) {
   std::string t = printf_string("%.*f", decimals, v);
   if (parse_fixed(t) == v) return t;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "orbit/elements.h"
+#include "util/format.h"
 #include "util/text.h"
 
 namespace tb::orbit::detail {
@@ -62,7 +63,7 @@ std::optional<std::string> out_of_range(double v, double low, double high, bool 
 // ---------------------------------------------------------------------------------------------
 // Writers
 
-std::string printf_string(const char* format, ...) __attribute__((format(printf, 1, 2)));
+using text::printf_string;  // util/format.h
 // Fixed-point text with at least `decimals` decimals, more when needed to give back the value.
 std::string round_trip_fixed(double v, int decimals);
 // "YYDDD.DDDDDDDD" (also columns 19-32 of line 1).

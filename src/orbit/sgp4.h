@@ -97,6 +97,10 @@ class Sgp4 {
   std::shared_ptr<const Model> model_;  // shared by copies; never mutated
 };
 
+// What SGP4 makes of a set at its epoch (none: an orbit it can propagate); the check of a set
+// edited by hand (menu 3-1).
+inline Sgp4Error error_at_epoch(const Elements& e) { return Sgp4(e).propagate_minutes(0.0).error; }
+
 namespace detail {
 // For tests: the same set with the resonance integrator's checkpoints dropped, so that every
 // propagation integrates from epoch as the reference does (sgp4.cpp, kCheckpointStride).

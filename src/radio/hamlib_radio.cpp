@@ -9,6 +9,7 @@
 #include <spdlog/spdlog.h>
 
 #include "radio/rigctld_link.h"
+#include "util/sigpipe.h"
 
 namespace tb::radio {
 
@@ -48,15 +49,6 @@ std::string hamlib_error_text(int rc) {
   return s;
 }
 
-// Hamlib writes to sockets with write(): a dead rigctld must give EPIPE, not kill the program.
-// SIGPIPE is delivered to the thread that wrote, so blocking it on the worker thread is enough.
-void block_sigpipe_on_this_thread() {
-  sigset_t set;
-  sigemptyset(&set);
-  sigaddset(&set, SIGPIPE);
-  pthread_sigmask(SIG_BLOCK, &set, nullptr);
-}
-
 struct HamlibLink::Impl {
   RIG* rig = nullptr;
 };
@@ -84,7 +76,7 @@ std::string HamlibLink::describe() const {
 }
 
 void HamlibLink::open() {
-  block_sigpipe_on_this_thread();
+  sigpipe::block_on_this_thread();  // a dead rigctld gives EPIPE, not the end of the program
   close();
   std::lock_guard lock(hamlib_mutex());
   RIG* rig = rig_init(opt_.model);

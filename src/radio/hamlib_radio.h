@@ -79,6 +79,6 @@ std::string hamlib_model_name(int model);
 // Shared by the Hamlib and rigctld links: Hamlib's text for an error code (its first line; rigctld's
 // RPRT codes are Hamlib's, negated), and SIGPIPE blocked on the calling (worker) thread.
 std::string hamlib_error_text(int rc);
-void block_sigpipe_on_this_thread();
+
 
 }  // namespace tb::radio

@@ -9,6 +9,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include "util/sigpipe.h"
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -59,7 +61,7 @@ void RigctldLink::transport(const std::string& what) {
 }
 
 void RigctldLink::open() {
-  block_sigpipe_on_this_thread();
+  sigpipe::block_on_this_thread();
   close();
   addrinfo hints{};
   hints.ai_family = AF_UNSPEC;

@@ -44,7 +44,7 @@ double AdcModel::corrected(Axis a, double raw) const { return raw + (a == Axis::
 double AdcModel::raw(Axis a, double corrected) const { return corrected - (a == Axis::az ? c_.az_skew : c_.el_skew); }
 
 double AdcModel::deg_per_count(Axis a) const {
-  return a == Axis::az ? c_.az_travel_deg / span_width(c_.az_span) : 90.0 / span_width(c_.el_span);
+  return a == Axis::az ? c_.az_travel_deg / span_width(c_.az_span) : c_.el_top_deg() / span_width(c_.el_span);
 }
 
 double AdcModel::az_travel_from_counts(double counts) const {
@@ -53,8 +53,8 @@ double AdcModel::az_travel_from_counts(double counts) const {
 double AdcModel::counts_from_az_travel(double travel) const {
   return c_.az_span.min + travel * span_width(c_.az_span) / c_.az_travel_deg;
 }
-double AdcModel::el_from_counts(double counts) const { return (counts - c_.el_span.min) * 90.0 / span_width(c_.el_span); }
-double AdcModel::counts_from_el(double el) const { return c_.el_span.min + el * span_width(c_.el_span) / 90.0; }
+double AdcModel::el_from_counts(double counts) const { return (counts - c_.el_span.min) * c_.el_top_deg() / span_width(c_.el_span); }
+double AdcModel::counts_from_el(double el) const { return c_.el_span.min + el * span_width(c_.el_span) / c_.el_top_deg(); }
 double AdcModel::compass_from_travel(double travel) const { return wrap360(travel + start_deg()); }
 
 std::vector<Range> AdcModel::limit_pieces() const {
@@ -134,12 +134,11 @@ Range AdcModel::az_limit_travel() const {
 Range AdcModel::az_travel_range() const { return intersect(az_limit_travel(), mech_travel()); }
 
 Range AdcModel::el_range() const {
-  Range r{0.0, c_.el_flip_allowed ? 180.0 : 90.0};
+  Range r{0.0, c_.el_top_deg()};
   if (c_.limits_enabled) r = intersect(r, {c_.el_limit_min, c_.el_limit_max});
-  // Raw counts the elevation may reach: the span (0..90), or its linear extension to 180 for a
-  // flip rotator; never outside the ADC.
-  double raw_hi = c_.el_flip_allowed ? c_.el_span.min + 2.0 * c_.el_span.width() : c_.el_span.max;
-  raw_hi = std::min<double>(raw_hi, kAdcMaxCount);
+  // Raw counts the elevation may reach: the span (0..90, or 0..180 in flip mode); never outside
+  // the ADC.
+  const double raw_hi = std::min<double>(c_.el_span.max, kAdcMaxCount);
   double raw_lo = std::max(0, c_.el_span.min);
   Range mech{el_from_counts(corrected(Axis::el, raw_lo)), el_from_counts(corrected(Axis::el, raw_hi))};
   return intersect(r, mech);

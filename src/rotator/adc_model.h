@@ -8,12 +8,12 @@
 //               TrakBox). It is what the potentiometer measures, and it is unambiguous where compass
 //               azimuth is not (0 and 360 are both north for a North-start rotator).
 //   compass az  degrees from north through east, [0, 360): travel + 180 for a South start.
-//   el          degrees above the horizon; 0..90 over the span, extrapolated to 180 for rotators
-//               allowed to flip over the top.
+//   el          degrees above the horizon; 0..90 over the span, or 0..180 for rotators allowed to
+//               flip over the top (the later firmware's flip mode calibrates 0 and 180 degrees).
 //
 //   travel(c) = (c - az_span.min) * az_travel_deg / (az_span.max - az_span.min)
 //   compass   = (travel + start) mod 360,   start = 0 (rotor start North) or 180 (South)
-//   el(c)     = (c - el_span.min) * 90 / (el_span.max - el_span.min)
+//   el(c)     = (c - el_span.min) * top / (el_span.max - el_span.min),  top = 90, or 180 with flip
 // with c the corrected count. See docs/rotator.md.
 #pragma once
 #include <limits>

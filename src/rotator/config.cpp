@@ -45,7 +45,7 @@ std::vector<std::string> validate(const RotatorConfig& c) {
   check_counts("elevation dead band", c.el_dead_band, limits::kDeadBand);
   check_counts("azimuth skew", c.az_skew, limits::kSkew);
   check_counts("elevation skew", c.el_skew, limits::kSkew);
-  const double el_top = c.el_flip_allowed ? 180.0 : 90.0;
+  const double el_top = c.el_top_deg();
   auto az_ok = [](double a) { return std::isfinite(a) && a >= 0.0 && a <= 360.0; };
   auto el_ok = [&](double e) { return std::isfinite(e) && e >= 0.0 && e <= el_top; };
   const std::string el_expect = c.el_flip_allowed ? "0..180" : "0..90";
@@ -69,12 +69,6 @@ std::vector<std::string> validate(const RotatorConfig& c) {
       out.push_back("preset " + std::to_string(i + 1) + " " + num(p.az) + "/" + num(p.el) +
                     ": expected azimuth 0..360 and elevation " + el_expect);
   }
-  if (c.el_flip_allowed && c.el_span.min + 2 * c.el_span.width() > kAdcMaxCount)
-    out.push_back("elevation flip allowed but the span " + std::to_string(c.el_span.min) + "-" +
-                  std::to_string(c.el_span.max) + " puts 180 deg at count " +
-                  std::to_string(c.el_span.min + 2 * c.el_span.width()) +
-                  ", beyond the ADC (1023): set the pot so 90 deg reads at most " +
-                  std::to_string((kAdcMaxCount + c.el_span.min) / 2));
   if (!(c.az_rate_deg_s > 0.0) || !(c.el_rate_deg_s > 0.0))
     out.push_back("motor rates must be positive (deg/s)");
   if (!(c.coast_s >= 0.0 && c.coast_s <= limits::kCoastMaxS))

@@ -91,9 +91,13 @@ struct RotatorConfig {
   // 6-6-3: five preset positions.
   std::array<AzEl, 5> presets{};
 
-  // Elevation over the top (rotators whose elevation goes to 180 deg): the model extrapolates the
-  // 0..90 span linearly up to 180 and the pass planner may use el' = 180 - el, az' = az + 180.
+  // Elevation over the top (rotators whose elevation goes to 180 deg): the later firmware's flip
+  // mode (v3.30a: "you must calibrate the EL rotor at 0 and 180 degree point"). The elevation span
+  // then covers 0..180 degrees, not 0..90, and the pass planner may use el' = 180 - el,
+  // az' = az + 180.
   bool el_flip_allowed = false;
+  // The degrees the elevation span covers and the elevation may reach: 180 in flip mode, else 90.
+  double el_top_deg() const { return el_flip_allowed ? 180.0 : 90.0; }
 
   // The motors as the control loop models them: full-speed rate and the time constant with which a
   // motor spins up and coasts down (first-order). They time the drive pulses so that an axis stops

@@ -11,6 +11,8 @@
 #include <mutex>
 #include <pthread.h>
 
+#include "util/sigpipe.h"
+
 namespace tb::rotator {
 
 namespace {
@@ -48,23 +50,6 @@ std::string hamlib_error(int rc) {
   return s;
 }
 
-// A broken TCP link must not kill the process with SIGPIPE: block it on the worker thread (the
-// write then fails with EPIPE) and drain any that is pending.
-void block_sigpipe() {
-  sigset_t set;
-  sigemptyset(&set);
-  sigaddset(&set, SIGPIPE);
-  pthread_sigmask(SIG_BLOCK, &set, nullptr);
-}
-void drain_sigpipe() {
-  sigset_t set;
-  sigemptyset(&set);
-  sigaddset(&set, SIGPIPE);
-  timespec zero{0, 0};
-  while (sigtimedwait(&set, nullptr, &zero) > 0) {
-  }
-}
-
 std::string default_label(const HamlibOptions& o) {
   if (o.model == ROT_MODEL_NETROTCTL) return "rotctld " + o.pathname;
   std::string s = "hamlib " + std::to_string(o.model) + " " + o.pathname;
@@ -85,7 +70,7 @@ class HamlibLink final : public RotatorLink {
   ~HamlibLink() override { close(); }
 
   bool open(std::string& error) override {
-    block_sigpipe();
+    sigpipe::block_on_this_thread();  // a broken rotctld link gives EPIPE, not the end of the program
     last_.reset();
     rot_ = rot_init(opt_.model);
     if (!rot_) {
@@ -101,7 +86,7 @@ class HamlibLink final : public RotatorLink {
     conf("retry", "0");
     if (opt_.baud > 0) conf("serial_speed", std::to_string(opt_.baud));
     const int rc = rot_open(rot_);
-    drain_sigpipe();
+    sigpipe::drain_pending();
     if (rc != RIG_OK) {
       error = hamlib_error(rc);
       rot_cleanup(rot_);
@@ -116,7 +101,7 @@ class HamlibLink final : public RotatorLink {
     rot_close(rot_);
     rot_cleanup(rot_);
     rot_ = nullptr;
-    drain_sigpipe();
+    sigpipe::drain_pending();
   }
 
   Range az_range() override { return {rot_->state.min_az, rot_->state.max_az}; }
@@ -146,7 +131,7 @@ class HamlibLink final : public RotatorLink {
 
  private:
   bool done(int rc, std::string& error) {
-    drain_sigpipe();
+    sigpipe::drain_pending();
     if (rc == RIG_OK) return true;
     error = hamlib_error(rc);
     return false;

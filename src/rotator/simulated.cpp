@@ -17,8 +17,9 @@ SimulatedRotatorParams SimulatedRotatorParams::matching(const RotatorConfig& c) 
   p.az_counts_at_ccw = c.az_span.min;
   p.az_counts_at_cw = c.az_span.max;
   p.el_counts_at_0 = c.el_span.min;
-  p.el_counts_at_90 = c.el_span.max;
-  p.el_max_deg = c.el_flip_allowed ? 180.0 : 90.0;
+  // The span covers 0..el_top_deg() (180 in flip mode): 90 degrees reads at its share of it.
+  p.el_counts_at_90 = c.el_span.min + c.el_span.width() * 90.0 / c.el_top_deg();
+  p.el_max_deg = c.el_top_deg();
   p.az_rate_deg_s = c.az_rate_deg_s;
   p.el_rate_deg_s = c.el_rate_deg_s;
   p.coast_s = c.coast_s;

@@ -185,7 +185,7 @@ void accept(const std::shared_ptr<Server::State>& state) {
     boost::system::error_code peer_ec;
     const auto peer = socket.remote_endpoint(peer_ec);
     const std::string who = peer_ec ? std::string() : peer.address().to_string();
-    if (!net::allowed(s->opt.allow, who)) {
+    if (!inet::allowed(s->opt.allow, who)) {
       ++s->stats.refused;
       spdlog::warn("satrak: connection from {} refused: not in --allow", who);
       boost::system::error_code ignored;
@@ -193,7 +193,7 @@ void accept(const std::shared_ptr<Server::State>& state) {
       socket.close(ignored);
     } else if (const std::size_t held = static_cast<std::size_t>(std::count_if(
                    s->sessions.begin(), s->sessions.end(), [&](const auto& x) { return x->address() == who; }));
-               held >= s->opt.max_per_address && !net::is_loopback(who)) {
+               held >= s->opt.max_per_address && !inet::is_loopback(who)) {
       ++s->stats.refused;
       ++s->stats.refused_per_address;
       spdlog::warn("satrak: connection from {} refused: it has {} connections already (at most {} an address)", who,
@@ -212,7 +212,7 @@ void accept(const std::shared_ptr<Server::State>& state) {
       ++s->stats.accepted;
       boost::system::error_code ignored;
       socket.set_option(tcp::no_delay(true), ignored);
-      net::enable_keepalive(socket.native_handle());
+      inet::enable_keepalive(socket.native_handle());
       if (s->opt.send_buffer > 0) socket.set_option(asio::socket_base::send_buffer_size(s->opt.send_buffer), ignored);
       auto session = std::make_shared<Session>(std::move(socket), weak, s->opt.max_line, s->opt.max_output);
       s->sessions.insert(session);

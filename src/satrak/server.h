@@ -34,7 +34,7 @@ struct ServerOptions {
   // Connections one address other than loopback may hold at once (half of max_clients: one remote
   // host can never take them all; docs/security.md, "slowloris").
   std::size_t max_per_address = 8;
-  std::vector<net::Cidr> allow;  // --allow: clients allowed (empty: everyone); others get ERR,8 and are closed
+  std::vector<inet::Cidr> allow;  // --allow: clients allowed (empty: everyone); others get ERR,8 and are closed
   std::size_t max_line = Decoder::kDefaultMaxLine;
   std::size_t max_output = 64 * 1024;  // bytes of replies queued for one client before it is dropped
   int send_buffer = 0;                 // SO_SNDBUF of client sockets; 0: the system's (tests set it small)

@@ -47,6 +47,46 @@ std::string optional_text(const json& j, const std::string& where, const char* k
   return text(j, where, key, max_len);
 }
 
+// The plain fields, one row each: written by to_json and read by settings_from_json from the same
+// table (key, member, the range the reader accepts).
+struct BoolField {
+  const char* key;
+  bool Settings::*member;
+};
+struct IntField {
+  const char* key;
+  int Settings::*member;
+  long long lo, hi;
+};
+struct NumField {
+  const char* key;
+  double Settings::*member;
+  double lo, hi;
+};
+using namespace limits;
+constexpr BoolField kBoolFields[] = {
+    {"rtc_auto_update", &Settings::rtc_auto_update},
+    {"auto_track", &Settings::auto_track},
+    {"gps_auto", &Settings::gps_auto},
+};
+constexpr IntField kIntFields[] = {
+    {"time_offset_ms", &Settings::time_offset_ms, -kTimeOffsetMs, kTimeOffsetMs},
+    {"go_to_start_before_ms", &Settings::go_to_start_before_ms, 0, kGoToStartBeforeMs},
+    {"position_base", &Settings::position_base, 0, 1},
+    {"sspa_manual", &Settings::sspa_manual, 0, 2},
+    {"sspa_auto_option", &Settings::sspa_auto_option, 0, 3},
+};
+constexpr NumField kNumFields[] = {
+    {"az_offset_deg", &Settings::az_offset_deg, -kAzOffsetDeg, kAzOffsetDeg},
+    {"el_offset_deg", &Settings::el_offset_deg, -kElOffsetDeg, kElOffsetDeg},
+    {"min_elevation_deg", &Settings::min_elevation_deg, kMinElevationLo, kMinElevationHi},
+    {"north_offset_deg", &Settings::north_offset_deg, -kNorthOffsetDeg, kNorthOffsetDeg},
+    {"el_threshold_deg", &Settings::el_threshold_deg, kThresholdLo, kThresholdHi},
+    {"tle_period_days", &Settings::tle_period_days, 0, kPeriodDays},
+    {"reduction_x", &Settings::reduction_x, 1e-6, kReductionMax},
+    {"reduction_y", &Settings::reduction_y, 1e-6, kReductionMax},
+};
+
 }  // namespace
 
 double adc_from_sensor(double sensor_counts) {
@@ -72,30 +112,19 @@ bool safe_file_name(std::string_view name) {
 
 json to_json(const Settings& s) {
   json j;
-  j["rtc_auto_update"] = s.rtc_auto_update;
-  j["time_offset_ms"] = s.time_offset_ms;
-  j["az_offset_deg"] = s.az_offset_deg;
-  j["el_offset_deg"] = s.el_offset_deg;
-  j["go_to_start_before_ms"] = s.go_to_start_before_ms;
-  j["position_base"] = s.position_base;
-  j["min_elevation_deg"] = s.min_elevation_deg;
-  j["north_offset_deg"] = s.north_offset_deg;
-  j["sspa_manual"] = s.sspa_manual;
-  j["sspa_auto_option"] = s.sspa_auto_option;
+  for (const auto& f : kBoolFields) j[f.key] = s.*f.member;
+  for (const auto& f : kIntFields) j[f.key] = s.*f.member;
+  for (const auto& f : kNumFields) j[f.key] = s.*f.member;
   j["source"] = static_cast<int>(s.source);
-  j["el_threshold_deg"] = s.el_threshold_deg;
   if (s.window) j["window"] = {{"start", orbit::format_iso8601(s.window->start)}, {"stop", orbit::format_iso8601(s.window->stop)}};
   else j["window"] = nullptr;
-  j["auto_track"] = s.auto_track;
   j["tle_file"] = s.tle_file;
   j["satellite"] = s.satellite;
-  j["tle_period_days"] = s.tle_period_days;
   j["http"] = {{"url", s.http.url}, {"period_days", s.http.period_days}, {"on_error", static_cast<int>(s.http.on_error)}};
   j["ftp"] = {{"host", s.ftp.host},           {"user", s.ftp.user},
               {"password", s.ftp.password},   {"port", s.ftp.port},
               {"file", s.ftp.file},           {"satellite", s.ftp.satellite},
               {"period_days", s.ftp.period_days}, {"on_error", static_cast<int>(s.ftp.on_error)}};
-  j["gps_auto"] = s.gps_auto;
   j["gps_lat_text"] = s.gps_lat_text;
   j["gps_lon_text"] = s.gps_lon_text;
   // 16: the sensor references are the protocol's 16-bit counts. Files without the key (written
@@ -105,36 +134,23 @@ json to_json(const Settings& s) {
   j["el_sensor_ref"] = s.el_sensor_ref;
   j["az_angle_ref"] = s.az_angle_ref;
   j["el_angle_ref"] = s.el_angle_ref;
-  j["reduction_x"] = s.reduction_x;
-  j["reduction_y"] = s.reduction_y;
   return j;
 }
 
 Settings settings_from_json(const json& j, const std::string& w) {
-  using namespace limits;
   Settings s;
-  s.rtc_auto_update = boolean(j, w, "rtc_auto_update");
-  s.time_offset_ms = static_cast<int>(integer(j, w, "time_offset_ms", -kTimeOffsetMs, kTimeOffsetMs));
-  s.az_offset_deg = num(j, w, "az_offset_deg", -kAzOffsetDeg, kAzOffsetDeg);
-  s.el_offset_deg = num(j, w, "el_offset_deg", -kElOffsetDeg, kElOffsetDeg);
-  s.go_to_start_before_ms = static_cast<int>(integer(j, w, "go_to_start_before_ms", 0, kGoToStartBeforeMs));
-  s.position_base = static_cast<int>(integer(j, w, "position_base", 0, 1));
-  s.min_elevation_deg = num(j, w, "min_elevation_deg", kMinElevationLo, kMinElevationHi);
-  s.north_offset_deg = num(j, w, "north_offset_deg", -kNorthOffsetDeg, kNorthOffsetDeg);
-  s.sspa_manual = static_cast<int>(integer(j, w, "sspa_manual", 0, 2));
-  s.sspa_auto_option = static_cast<int>(integer(j, w, "sspa_auto_option", 0, 3));
+  for (const auto& f : kBoolFields) s.*f.member = boolean(j, w, f.key);
+  for (const auto& f : kIntFields) s.*f.member = static_cast<int>(integer(j, w, f.key, f.lo, f.hi));
+  for (const auto& f : kNumFields) s.*f.member = num(j, w, f.key, f.lo, f.hi);
   s.source = static_cast<TleSource>(integer(j, w, "source", 0, 2));
-  s.el_threshold_deg = num(j, w, "el_threshold_deg", kThresholdLo, kThresholdHi);
   const json& win = field(j, w, "window");
   if (!win.is_null()) {
     TrackWindow tw{time_of(win, w + ".window", "start"), time_of(win, w + ".window", "stop")};
     if (tw.stop <= tw.start) bad(w + ".window", "stop must be after start");
     s.window = tw;
   }
-  s.auto_track = boolean(j, w, "auto_track");
   s.tle_file = file_name(j, w, "tle_file");
   s.satellite = text(j, w, "satellite", kNameMax);
-  s.tle_period_days = num(j, w, "tle_period_days", 0, kPeriodDays);
   {
     const std::string wh = w + ".http";
     const json& h = field(j, w, "http");
@@ -154,7 +170,6 @@ Settings settings_from_json(const json& j, const std::string& w) {
     s.ftp.period_days = num(f, wf, "period_days", 0, kPeriodDays);
     s.ftp.on_error = static_cast<ErrorAction>(integer(f, wf, "on_error", 0, 1));
   }
-  s.gps_auto = boolean(j, w, "gps_auto");
   s.gps_lat_text = optional_text(j, w, "gps_lat_text", 40);
   if (!s.gps_lat_text.empty() && !parse_latitude(s.gps_lat_text))
     bad(path(w, "gps_lat_text"), "expected a latitude like 41.02N, found '" + s.gps_lat_text + "'");
@@ -182,8 +197,6 @@ Settings settings_from_json(const json& j, const std::string& w) {
   };
   s.az_angle_ref = angle("az_angle_ref", -kAzAngleRefDeg, kAzAngleRefDeg);
   s.el_angle_ref = angle("el_angle_ref", kElAngleRefLo, kElAngleRefHi);
-  s.reduction_x = num(j, w, "reduction_x", 1e-6, kReductionMax);
-  s.reduction_y = num(j, w, "reduction_y", 1e-6, kReductionMax);
   return s;
 }
 

@@ -6,6 +6,8 @@
 #include <sstream>
 #include <string_view>
 
+#include "util/files.h"
+
 namespace tb::satrak {
 namespace fs = std::filesystem;
 
@@ -17,10 +19,7 @@ std::string read_small_file(const fs::path& p, bool& too_big) {
     too_big = true;
     return {};
   }
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  return files::read_whole_file(p).value_or("");
 }
 
 std::optional<std::pair<std::int64_t, std::uintmax_t>> stat_file(const fs::path& p) {

@@ -30,7 +30,7 @@
 #include "orbit/passes.h"
 #include "rotator/pass_plan.h"
 #include "satrak/commands.h"
-#include "net/download.h"
+#include "download/download.h"
 #include "satrak/frame.h"
 #include "satrak/settings.h"
 #include "station/clock.h"
@@ -184,7 +184,7 @@ class Unit {
   void check_file(orbit::UtcTime now);
   void schedule_download(orbit::UtcTime now);
   void start_download();
-  void on_download(TleSource source, std::uint64_t generation, net::DownloadResult r);
+  void on_download(TleSource source, std::uint64_t generation, download::DownloadResult r);
   void download_failed();
   std::string active_file() const;
   std::string active_satellite() const;
@@ -255,7 +255,7 @@ class Unit {
   std::optional<orbit::UtcTime> next_download_;
   std::uint64_t download_generation_ = 0;
   bool download_in_flight_ = false;
-  std::unique_ptr<net::Downloader> downloader_;
+  std::unique_ptr<download::Downloader> downloader_;
   std::shared_ptr<int> alive_ = std::make_shared<int>(0);
 
   bool rtc_from_gps_ = false;                 // STATUS X10: the RTC was set from GPS

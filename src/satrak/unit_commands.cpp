@@ -133,13 +133,23 @@ Unit::Reply Unit::cmd_status(const Command& c) {
   if (!c.fields.empty()) return reply_error(c.head(), Error::parameter_count);
   const auto& st = station_.rotator().status();
   const Faults f = faults();
-  const double x = st.has_position ? st.az.deg : 0.0, y = st.has_position ? st.el.deg : 0.0;
-  const double true_az = st.has_position ? rotator::wrap360(x + s_.north_offset_deg) : 0.0;
-  return reply_values(c.head(), {b(f.any()), f2(true_az), f2(y), b(st.az.at_high_limit), b(st.az.at_low_limit),
-                                 b(st.el.at_high_limit), b(st.el.at_low_limit), b(tracking_),
-                                 std::to_string(static_cast<int>(track_status())), b(rtc_from_gps_), "0",
-                                 std::to_string(rotator::sign(st.az.moving)), std::to_string(rotator::sign(st.el.moving)),
-                                 f2(x), f2(y), b(s_.auto_track)});
+  StatusFields r;
+  r.fault = f.any();
+  r.x_deg = st.has_position ? st.az.deg : 0.0;
+  r.y_deg = st.has_position ? st.el.deg : 0.0;
+  r.true_az_deg = st.has_position ? rotator::wrap360(r.x_deg + s_.north_offset_deg) : 0.0;
+  r.el_deg = r.y_deg;
+  r.x_plus_limit = st.az.at_high_limit;
+  r.x_minus_limit = st.az.at_low_limit;
+  r.y_plus_limit = st.el.at_high_limit;
+  r.y_minus_limit = st.el.at_low_limit;
+  r.tracking = tracking_;
+  r.window_status = static_cast<int>(track_status());
+  r.rtc_updated_by_gps = rtc_from_gps_;
+  r.x_motion = rotator::sign(st.az.moving);
+  r.y_motion = rotator::sign(st.el.moving);
+  r.auto_track = s_.auto_track;
+  return reply_values(c.head(), r.fields());
 }
 
 Unit::Reply Unit::cmd_errstatus(const Command& c) {

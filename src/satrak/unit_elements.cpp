@@ -154,7 +154,7 @@ void Unit::schedule_download(orbit::UtcTime now) {
 }
 
 void Unit::start_download() {
-  net::DownloadRequest r;
+  download::DownloadRequest r;
   if (s_.source == TleSource::web) {
     r.url = s_.http.url;
   } else if (s_.source == TleSource::ftp) {
@@ -170,11 +170,11 @@ void Unit::start_download() {
   next_download_.reset();
   const std::uint64_t gen = ++download_generation_;
   const TleSource src = s_.source;
-  if (!downloader_) downloader_ = std::make_unique<net::Downloader>();
+  if (!downloader_) downloader_ = std::make_unique<download::Downloader>();
   spdlog::info("satrak: downloading {}", redact_url(r.url));
   std::weak_ptr<int> alive = alive_;
   boost::asio::io_context& io = io_;
-  downloader_->submit(std::move(r), [this, alive, &io, src, gen](net::DownloadResult res) {
+  downloader_->submit(std::move(r), [this, alive, &io, src, gen](download::DownloadResult res) {
     boost::asio::post(io, [this, alive, src, gen, res = std::move(res)]() mutable {
       if (alive.expired()) return;
       on_download(src, gen, std::move(res));
@@ -194,7 +194,7 @@ void Unit::download_failed() {
   }
 }
 
-void Unit::on_download(TleSource src, std::uint64_t gen, net::DownloadResult r) {
+void Unit::on_download(TleSource src, std::uint64_t gen, download::DownloadResult r) {
   if (gen != download_generation_) return;  // settings changed since: a newer download runs
   download_in_flight_ = false;
   if (src != s_.source) return;

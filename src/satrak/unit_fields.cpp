@@ -23,6 +23,15 @@ std::string num_text(double v) {
   return buf;
 }
 
+std::vector<std::string> StatusFields::fields() const {
+  return {b(fault),        f2(true_az_deg),         f2(el_deg),
+          b(x_plus_limit), b(x_minus_limit),        b(y_plus_limit),
+          b(y_minus_limit), b(tracking),            std::to_string(window_status),
+          b(rtc_updated_by_gps), std::to_string(gps_lock_delay_s), std::to_string(x_motion),
+          std::to_string(y_motion), f2(x_deg),      f2(y_deg),
+          b(auto_track)};
+}
+
 std::string field_text(std::string_view s) {
   std::string out;
   for (unsigned char c : s) out += (c < 0x20 || c == ',' || c == '*' || c == '$' || c >= 0x7F) ? ' ' : static_cast<char>(c);

@@ -46,6 +46,28 @@ std::string field_text(std::string_view s);
 // Hour, minute, second, day, month, year[, ms] of t.
 std::vector<std::string> civil_fields(orbit::UtcTime t, bool with_ms, bool two_digit_year = false);
 
+// STATUS?'s 16 fields by name, in the reply's order (the seed's X1..X16; docs/satrak.md "STATUS?
+// (16 fields)").
+struct StatusFields {
+  bool fault = false;                  // X1: any ERRSTATUS flag set
+  double true_az_deg = 0.0;            // X2: axis azimuth + north offset
+  double el_deg = 0.0;                 // X3
+  bool x_plus_limit = false;           // X4: CW end
+  bool x_minus_limit = false;          // X5: CCW end
+  bool y_plus_limit = false;           // X6: up
+  bool y_minus_limit = false;          // X7: down
+  bool tracking = false;               // X8
+  int window_status = 0;               // X9: TrackStatus
+  bool rtc_updated_by_gps = false;     // X10: the clock was set from GPS time
+  int gps_lock_delay_s = 0;            // X11
+  int x_motion = 0;                    // X12: -1, 0, 1
+  int y_motion = 0;                    // X13
+  double x_deg = 0.0;                  // X14: axis angles
+  double y_deg = 0.0;                  // X15
+  bool auto_track = false;             // X16
+  std::vector<std::string> fields() const;
+};
+
 // Request fields.
 bool valid_http_url(std::string_view u);
 bool valid_text_field(std::string_view s, std::size_t max_len);

@@ -594,6 +594,9 @@ std::vector<std::string> apply_station_file(const StationFile& f, Model& m) {
   rotator::RotatorConfig& r = next.rotator;
   const rotator::RotatorConfig& fr = f.rotator;
   std::tie(r.az_span, r.el_span) = std::tie(fr.az_span, fr.el_span);
+  // Flip mode says what the elevation span means (0..180 rather than 0..90), so it goes with the
+  // span: a 1994 file's span is 0..90, whatever was set before.
+  r.el_flip_allowed = f.later_firmware && fr.el_flip_allowed;
   std::tie(r.az_dead_band, r.el_dead_band, r.az_skew, r.el_skew) =
       std::tie(fr.az_dead_band, fr.el_dead_band, fr.az_skew, fr.el_skew);
   std::tie(r.parking_enabled, r.parking, r.limits_enabled, r.az_limit_min, r.az_limit_max, r.el_limit_min,
@@ -606,7 +609,6 @@ std::vector<std::string> apply_station_file(const StationFile& f, Model& m) {
   if (f.wide_fm_given) rc.ft736_wide_fm = frc.ft736_wide_fm;
   if (f.cat_baud_given) rc.cat_baud = frc.cat_baud;
   if (f.later_firmware) {
-    r.el_flip_allowed = fr.el_flip_allowed;
     r.stall_s = fr.stall_s;
     rc.mic_click.park_pulse_width_digit = frc.mic_click.park_pulse_width_digit;
     rc.mic_click.park_pulse_interval_digit = frc.mic_click.park_pulse_interval_digit;

@@ -2,7 +2,7 @@
 
 #include <spdlog/spdlog.h>
 
-#include "net/download.h"
+#include "download/download.h"
 #include "orbit/elements.h"
 #include "store/model.h"
 #include "store/refresh.h"
@@ -11,7 +11,7 @@ namespace tb::tracker {
 
 struct ElementsRefresh::Outcome {
   std::string url;
-  net::DownloadResult result;
+  download::DownloadResult result;
 };
 
 namespace {
@@ -57,12 +57,12 @@ std::string ElementsRefresh::status_word() const {
 }
 
 void ElementsRefresh::start(std::int64_t now_unix) {
-  if (!downloader_) downloader_ = std::make_unique<net::Downloader>();
+  if (!downloader_) downloader_ = std::make_unique<download::Downloader>();
   model_.refresh.last_attempt_unix = now_unix;
   outcomes_.clear();
   pending_ = static_cast<int>(model_.refresh.sources.size());
   for (const store::RefreshSource& src : model_.refresh.sources) {
-    net::DownloadRequest r;
+    download::DownloadRequest r;
     r.url = transfer_url(src.url);
     r.allow_file = true;
     r.if_none_match = src.etag;
@@ -72,7 +72,7 @@ void ElementsRefresh::start(std::int64_t now_unix) {
     r.max_bytes = 8u << 20;  // a whole CelesTrak group as XML is a few MB at most
     spdlog::info("elements: refreshing from {}", src.url);
     std::weak_ptr<int> alive = alive_;
-    downloader_->submit(std::move(r), [this, alive, url = src.url](net::DownloadResult res) {
+    downloader_->submit(std::move(r), [this, alive, url = src.url](download::DownloadResult res) {
       post_([this, alive, url, res = std::move(res)]() mutable {
         if (alive.expired()) return;
         finished(url, std::move(res));
@@ -82,7 +82,7 @@ void ElementsRefresh::start(std::int64_t now_unix) {
   changed_();  // the attempt's time is kept across restarts
 }
 
-void ElementsRefresh::finished(const std::string& url, net::DownloadResult r) {
+void ElementsRefresh::finished(const std::string& url, download::DownloadResult r) {
   outcomes_.push_back(Outcome{url, std::move(r)});
   if (--pending_ == 0) complete();
 }
@@ -92,7 +92,7 @@ void ElementsRefresh::complete() {
   std::vector<std::string> failures;
   int not_modified = 0;
   for (Outcome& o : outcomes_) {
-    const net::DownloadResult& r = o.result;
+    const download::DownloadResult& r = o.result;
     store::RefreshSource* src = nullptr;
     for (auto& s : model_.refresh.sources)
       if (s.url == o.url) src = &s;

@@ -1,7 +1,7 @@
 // The scheduled refresh of the menu-3 database (issue 12, "Keeping the database current"): every
 // RefreshSettings::interval_hours of wall time (never more often than every 2 hours) and on
 // "refresh now" (menu 3-5, host mode RF), each configured source is downloaded on a worker thread
-// (net::Downloader: redirects followed, conditional requests with the last answer's validators)
+// (download::Downloader: redirects followed, conditional requests with the last answer's validators)
 // and the sets it holds replace older sets of the same catalog number (store::apply_refresh).
 //
 // Nothing here blocks the event loop: downloads run on the worker, their results are posted back
@@ -18,10 +18,10 @@
 #include <string>
 #include <vector>
 
-namespace tb::net {
+namespace tb::download {
 class Downloader;
 struct DownloadResult;
-}  // namespace tb::net
+}  // namespace tb::download
 namespace tb::store {
 struct Model;
 }
@@ -61,13 +61,13 @@ class ElementsRefresh {
  private:
   struct Outcome;
   void start(std::int64_t now_unix);
-  void finished(const std::string& url, net::DownloadResult r);
+  void finished(const std::string& url, download::DownloadResult r);
   void complete();
 
   store::Model& model_;
   Post post_;
   std::function<void()> changed_;
-  std::unique_ptr<net::Downloader> downloader_;
+  std::unique_ptr<download::Downloader> downloader_;
   std::shared_ptr<int> alive_ = std::make_shared<int>(0);
   std::chrono::milliseconds timeout_{60000};
   int pending_ = 0;

@@ -98,6 +98,26 @@ SatNow Tracker::compute(int db_index, orbit::UtcTime t, bool with_pass) const {
   return s;
 }
 
+std::vector<orbit::Observation> Tracker::track(int db_index, orbit::UtcTime from, double minutes,
+                                              int intervals) const {
+  std::vector<orbit::Observation> out;
+  if (intervals < 1 || !(minutes > 0.0)) return out;
+  for (int k = 0; k <= intervals; ++k)
+    if (const auto n = observe(db_index, orbit::add_minutes(from, minutes * k / intervals)); n && n->obs.ok())
+      out.push_back(n->obs);
+  return out;
+}
+
+std::vector<orbit::Observation> Tracker::orbit_track(int db_index, orbit::UtcTime from, int intervals) const {
+  const orbit::Sgp4* sgp4 = propagator(db_index);
+  if (!sgp4 || !sgp4->propagate(from).ok()) return {};
+  return track(db_index, from, sgp4->period_minutes(), intervals);
+}
+
+std::vector<orbit::Observation> Tracker::pass_track(int db_index, const orbit::Pass& pass, int intervals) const {
+  return track(db_index, pass.aos, orbit::minutes_between(pass.aos, pass.los), intervals);
+}
+
 std::optional<SatNow> Tracker::observe(int db_index, orbit::UtcTime t) const {
   if (db_index < 0 || db_index >= static_cast<int>(model_.db.satellites.size())) return std::nullopt;
   return compute(db_index, t, false);

@@ -66,12 +66,18 @@ class Tracker {
   std::optional<SatNow> observe(int db_index, orbit::UtcTime t) const;
   // A propagator for a database entry (cached; rebuilt when its elements change).
   const orbit::Sgp4* propagator(int db_index) const;
+  // For the displays' pictures, `intervals` + 1 evenly spaced observations (those SGP4 can
+  // compute): over one orbital period from `from` (the ground track), or from a pass's AOS to its
+  // LOS (its path in the sky). Empty when the entry has no usable orbit.
+  std::vector<orbit::Observation> orbit_track(int db_index, orbit::UtcTime from, int intervals) const;
+  std::vector<orbit::Observation> pass_track(int db_index, const orbit::Pass& pass, int intervals) const;
 
   // How long before AOS the antenna moves to the AOS position.
   static constexpr double kPrepositionMinutes = 5.0;
 
  private:
   SatNow compute(int db_index, orbit::UtcTime t, bool with_pass) const;
+  std::vector<orbit::Observation> track(int db_index, orbit::UtcTime from, double minutes, int intervals) const;
   const store::Model& model_;
   const station::Clock& clock_;
   Mode mode_ = Mode::off;

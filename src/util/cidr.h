@@ -13,7 +13,7 @@
 #include <string_view>
 #include <vector>
 
-namespace tb::net {
+namespace tb::inet {
 
 struct Cidr {
   bool v6 = false;
@@ -97,4 +97,4 @@ inline bool is_loopback(const std::string& listen_address) {
   return contains(v4, listen_address) || contains(v6, listen_address) || listen_address == "localhost";
 }
 
-}  // namespace tb::net
+}  // namespace tb::inet

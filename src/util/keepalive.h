@@ -6,7 +6,7 @@
 #include <netinet/tcp.h>
 #include <sys/socket.h>
 
-namespace tb::net {
+namespace tb::inet {
 
 inline void enable_keepalive(int fd) {
   const int on = 1, idle = 60, interval = 10, count = 3;
@@ -16,4 +16,4 @@ inline void enable_keepalive(int fd) {
   ::setsockopt(fd, IPPROTO_TCP, TCP_KEEPCNT, &count, sizeof count);
 }
 
-}  // namespace tb::net
+}  // namespace tb::inet

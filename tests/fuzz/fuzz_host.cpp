@@ -12,24 +12,20 @@
 
 using namespace tb;
 
-namespace {
-bool clean(std::string_view s) { return fuzz::no_control_but(s, "\r\n"); }
-}  // namespace
-
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  if (size < 1) return 0;
-  const std::uint8_t mode = data[0];
-  const std::string_view input = fuzz::as_text(data + 1, size - 1);
-
-  fuzz::ProtocolStation st(mode);
+  fuzz::ProtocolRun run(data, size);
+  if (!run) return 0;
+  const std::uint8_t mode = run.mode;
+  const std::string_view input = run.input;
+  fuzz::ProtocolStation& st = *run.st;
   host::Interpreter interpreter(*st.station);
   netctl::HostProtocol protocol(*st.station);
-  if (mode & 1) TB_FUZZ_CHECK(clean(protocol.greeting()), protocol.greeting());
+  if (mode & 1) TB_FUZZ_CHECK(fuzz::clean_host_reply(protocol.greeting()), protocol.greeting());
 
   for (const auto line : fuzz::split_lines(input, 64)) {
     if (mode & 1) {
       const netctl::Reply r = protocol.handle(line);
-      TB_FUZZ_CHECK(clean(r.text), r.text);
+      TB_FUZZ_CHECK(fuzz::clean_host_reply(r.text), r.text);
       if (r.close) break;
     } else {
       const auto target = st.station->rotator().status().target;

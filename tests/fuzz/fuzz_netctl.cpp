@@ -12,16 +12,11 @@
 
 using namespace tb;
 
-namespace {
-bool clean(std::string_view s) { return fuzz::no_control_but(s, "\n\t"); }  // dump_caps has "Key:\tvalue"
-}  // namespace
-
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  if (size < 1) return 0;
-  const std::uint8_t mode = data[0];
-  const std::string_view input = fuzz::as_text(data + 1, size - 1);
-
-  fuzz::ProtocolStation st(mode);
+  fuzz::ProtocolRun run(data, size);
+  if (!run) return 0;
+  fuzz::ProtocolStation& st = *run.st;
+  const std::string_view input = run.input;
 #ifdef FUZZ_RIGCTL
   const auto protocol = std::make_unique<netctl::RigctlProtocol>(*st.station);
 #else
@@ -32,7 +27,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const auto target = st.station->rotator().status().target;
     const auto sent = st.radio_sim->history().size();
     const netctl::Reply r = protocol->handle(line);
-    TB_FUZZ_CHECK(clean(r.text), r.text);
+    TB_FUZZ_CHECK(fuzz::clean_hamlib_reply(r.text), r.text);
     if (r.text.find("RPRT -") != std::string::npos) {
       TB_FUZZ_CHECK(st.station->rotator().status().target == target, std::string(line) + " -> " + r.text);
       TB_FUZZ_CHECK(st.radio_sim->history().size() == sent, std::string(line) + " -> " + r.text);
@@ -41,7 +36,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     st.step();
   }
   // The overlong-line answer, as the server sends it.
-  TB_FUZZ_CHECK(clean(protocol->overlong().text), protocol->overlong().text);
+  TB_FUZZ_CHECK(fuzz::clean_hamlib_reply(protocol->overlong().text), protocol->overlong().text);
   fuzz::check_model_reads_back(st.model, input);
   return 0;
 }

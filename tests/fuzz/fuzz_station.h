@@ -4,6 +4,7 @@
 // lines. Everything a target builds from its input is built fresh for each input, so that one input
 // always does the same thing (libFuzzer needs that to minimise and to replay a crash).
 #pragma once
+#include <optional>
 #include <unistd.h>
 
 #include <nlohmann/json.hpp>
@@ -124,9 +125,29 @@ inline bool no_control_but(std::string_view s, std::string_view allowed) {
   return true;
 }
 
+// What the protocol targets accept in a reply: host mode's lines end in CR LF; Hamlib's dump_caps
+// has "Key:\tvalue" lines.
+inline bool clean_host_reply(std::string_view s) { return no_control_but(s, "\r\n"); }
+inline bool clean_hamlib_reply(std::string_view s) { return no_control_but(s, "\n\t"); }
+
 inline std::string_view as_text(const std::uint8_t* data, std::size_t size) {
   return {reinterpret_cast<const char*>(data), size};
 }
+
+// A protocol target's run: the input's first byte sets up the station and picks the variant, the
+// rest is the lines. No station (false) for an empty input.
+struct ProtocolRun {
+  ProtocolRun(const std::uint8_t* data, std::size_t size) {
+    if (size < 1) return;
+    mode = data[0];
+    input = as_text(data + 1, size - 1);
+    st.emplace(mode);
+  }
+  explicit operator bool() const { return st.has_value(); }
+  std::uint8_t mode = 0;
+  std::string_view input;
+  std::optional<ProtocolStation> st;
+};
 
 // A property a target checks beyond "no crash": a violation is reported and aborts, so libFuzzer
 // keeps the input as a crash.

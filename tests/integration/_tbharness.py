@@ -33,9 +33,18 @@ def check(cond, message):
 SKIP = 77  # CTest's SKIP_RETURN_CODE for tests/integration (tests/CMakeLists.txt)
 
 
+def in_ci():
+    """CI set to anything but "", "0" or "false": every tool is installed (scripts/install-deps.sh)."""
+    return os.environ.get("CI", "") not in ("", "0", "false")
+
+
 def skip(message):
-    """Ends the test as skipped (a tool it needs is missing), saying why."""
-    print(message)
+    """Ends the test as skipped (a tool it needs is missing), saying why; in CI, where every tool
+    is installed, a missing tool fails the test instead (a skip there would hide a broken set-up)."""
+    if in_ci():
+        print(f"FAILED (CI={os.environ['CI']}: every tool must be installed): {message}")
+        raise SystemExit(1)
+    print(f"SKIPPED: {message}")
     raise SystemExit(SKIP)
 
 
@@ -211,12 +220,26 @@ def sh(*args, timeout=20):
     return p.returncode, p.stdout, p.stderr
 
 
+def read_log(state):
+    """The trakbox.log of the state directory `state`."""
+    with open(os.path.join(state, "trakbox.log")) as f:
+        return f.read()
+
+
 def stop_and_read_log(proc, state):
     """Ends a trakbox started on `state` (SIGTERM, as a service stop) and returns its trakbox.log."""
     proc.terminate()
     proc.wait(20)
-    with open(os.path.join(state, "trakbox.log")) as f:
-        return f.read()
+    return read_log(state)
+
+
+def start_line_trakbox(state, start, *args):
+    """trakbox on the serial-line front end (its stdin a pipe, stdout discarded, stderr kept) with
+    the state directory `state`, the clock starting at `start` (a datetime), the Satrak port
+    off, and `args` (drivers, ports)."""
+    clock = start.strftime("%Y-%m-%dT%H:%M:%SZ")
+    return subprocess.Popen([BIN, "--state", state, "--line", "--satrak-port", "0", "--clock", clock, *args],
+                            stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
 
 
 def reap(procs):

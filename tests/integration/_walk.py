@@ -646,14 +646,17 @@ def set_clock(ui, when):
     return ui.prompt(MAIN)
 
 
-def start_m(ui, mode_key, marker):
+def start_m(ui, mode_key, marker, marked=1, choose="\r"):
+    """M in mode_key's mode; the LCD list shows `marker` on entry `marked`; `choose` answers it."""
     ui.send("M\r")
     ui.prompt(r"Normal or Priority mode \? \[N/P\] \(Enter = [NP]\) ")
     ui.send(mode_key if mode_key == "\r" else mode_key + "\r")  # "N <ENTER>": one answer (issue 18)
     out = ui.prompt(r"Select :")
     must(out, r"\*\*\* LCD display satellite \*\*\*", "M asks for the LCD satellite")
-    must(out, rf" 1\.{re.escape(marker)}ISS\s+2\. AO-27\s+3\. FO-29\s*$", f"the three, '{marker}' on the last chosen")
-    ui.send("\r")
+    rows = r"\s+".join(rf"{n}\.{re.escape(marker) if n == marked else ' '}{name}"
+                       for n, name in ((1, "ISS"), (2, "AO-27"), (3, "FO-29")))
+    must(out, rf" {rows}\s*$", f"the three, '{marker}' on #{marked}")
+    ui.send(choose)
 
 
 def walk_menu_m(ui, names):
@@ -666,16 +669,16 @@ def walk_menu_m(ui, names):
     ui.send("Q\r")
     ui.prompt(MAIN)
 
-    # S: single tracking marks the last satellite chosen with '*'.
+    # S: single tracking marks the last satellite chosen (in 3-2, FO-29) with '*'.
     ui.send("S\r")
     out = ui.prompt(r"Select :")
-    must(out, r" 1\.\*ISS\s+2\. AO-27\s+3\. FO-29\s*$", "single tracking's '*'")
+    must(out, r" 1\. ISS\s+2\. AO-27\s+3\.\*FO-29\s*$", "single tracking's '*'")
     ui.send("Q\r")
     ui.prompt(MAIN)
 
     # Nothing of the three is up at 12:20: the table, '!' on the LCD satellite, the next AOS times.
     set_clock(ui, "26/05/21 12:20:00")
-    start_m(ui, "N", "!")
+    start_m(ui, "N", "!", marked=3, choose="1\r")  # the ISS on the LCD from here on
     ui.wait(r"=========== Multiple Tracking \[2026/05/21\] Normal mode ===========")
     rows = ui.wait(r"Rotor control ON   LCD \|12:2\d:\d\d!ISS    \|Az[ \d.-]{6}El[ \d.-]{6}\| LED off")
     # AOS 13:44:29.661 and 13:38:12.744 (trakbox passes): to the second, either way.
@@ -746,7 +749,7 @@ def group_2_3(s, page_rows):
     walk_menu_3_2(ui, [4, 2, 3, 7], names)
     data = load_state(s.state_file)
     check(data["db"]["selected"] == [3, 1, 2, 6], f"the tracking list in the order chosen: {data['db']}")
-    check(data["db"]["marked"] == 0, "the '*' goes to #1 when the marked satellite left the list")
+    check(data["db"]["marked"] == 3, "the '*' on the last satellite chosen (#4, AO-73), as 3-2 showed it")
 
     walk_menu_3_4(ui, 3, 4)
     before_uploads = load_state(s.state_file)

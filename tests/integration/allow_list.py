@@ -10,7 +10,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, CLOCK, check, frame, free_port, run_test, tcp_exchange  # noqa: E402
+from _tbharness import BIN, CLOCK, check, frame, free_port, read_log, run_test, tcp_exchange  # noqa: E402
 
 
 def start(state, ports, allow):
@@ -44,8 +44,7 @@ def main():
         finally:
             p.terminate()
             p.wait(20)
-        with open(os.path.join(state, "trakbox.log")) as f:
-            log = f.read()
+        log = read_log(state)
         check(log.count("connection from 127.0.0.2 refused: not in --allow") == 4, "each refusal logged")
 
         p = start(state, ports, ["127.0.0.0/8"])

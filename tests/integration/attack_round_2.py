@@ -21,7 +21,7 @@ import time
 import zlib
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, CLOCK, Satrak, check, free_port, run_test, wait_listening  # noqa: E402
+from _tbharness import BIN, CLOCK, Satrak, check, free_port, read_log, run_test, wait_listening  # noqa: E402
 
 LOST = "Data in RAM was lost !! Set default parameter !"
 SECRETS = ["HttpPass77", "FtpPw55", "RealSecret42", "WrongGuess31"]
@@ -41,8 +41,7 @@ def nested_state(state):
     check(LOST in out, "nested state: the manual's RAM-lost message")
     kept = [n for n in os.listdir(state) if n.startswith("trakbox-state.json.corrupt-")]
     check(len(kept) == 1, f"nested state: kept aside once ({kept})")
-    with open(os.path.join(state, "trakbox.log")) as f:
-        log = f.read()
+    log = read_log(state)
     check("nested more than 64 levels deep" in log, "nested state: the log says why")
     # The next start loads the defaults it saved.
     p = subprocess.run([BIN, "--state", state, "--clock", CLOCK, "--satrak-port", "0"], input=b"",
@@ -105,8 +104,7 @@ def credentials(state):
     finally:
         p.terminate()
         p.wait(10)
-    with open(os.path.join(state, "trakbox.log")) as f:
-        log = f.read()
+    log = read_log(state)
     check("satrak: download failed: http://op:<redacted>@127.0.0.1:1/x.txt" in log
           or "download failed: HTTP://op:<redacted>@" in log, "the failed download is logged, redacted")
     for secret in SECRETS:
@@ -140,8 +138,7 @@ def refusal_flood(state):
     check(first.startswith(b"ERROR not allowed"), f"host mode names the refusal: {first!r}")
     print(f"{n} refused connections: the log grew {grown} bytes ({grown / n:.2f} bytes a connection)")
     check(grown < 4000, f"the log stays bounded under a refusal flood ({grown} bytes for {n} connections)")
-    with open(os.path.join(state, "trakbox.log")) as f:
-        log = f.read()
+    log = read_log(state)
     check("more lines like this left out of the log" in log, "the log says how many lines it left out")
 
 

@@ -13,7 +13,7 @@ import shutil
 import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, CLOCK, Satrak, check, free_port, run_test, tcp_exchange  # noqa: E402
+from _tbharness import BIN, CLOCK, Satrak, check, free_port, read_log, run_test, tcp_exchange  # noqa: E402
 
 HOLDERS = 20
 
@@ -66,8 +66,7 @@ def main():
         check(b"\n" in poll(), "the polling client was never closed")
         acu = until(lambda: _satrak_served(sat), 40)
         check(acu, "a well-behaved Satrak client is served while idle holders pile up")
-        with open(os.path.join(state, "trakbox.log")) as f:
-            log = f.read()
+        log = read_log(state)
         check("silent for" in log and "to serve a new client" in log, "the log says who made room")
         poller.close()
     finally:

@@ -59,6 +59,15 @@ def station_6_9(ui, state_file):
     check((data["rotator_error_detection"], rot["stall_s"]) == (True, 45.0), "line 6: rotator error")
     check((rot["limits_enabled"], rot["az_limit_min"], rot["az_limit_max"], rot["el_limit_min"],
            rot["el_limit_max"]) == (True, 270.0, 90.0, 0.0, 80.0), f"line 7: limits through North {rot}")
+    # Flip mode (v3.30a: the EL rotor calibrated at 0 and 180 degrees): the firmware's own example
+    # line and a span like JA6FTL's (25-981, refused while the span was read as 0..90) apply.
+    for name, el_span in (("STATION_FLIP.DAT", [2, 917]), ("STATION_JA6FTL.DAT", [25, 981])):
+        w.start_6_9(ui)
+        ui.upload(fw(name))
+        out = ui.prompt(w.UPDATE)
+        w.must(out, r"Station file loaded\. Verify it with 6-0", f"{name} is taken")
+        rot = load_state(state_file)["rotator"]
+        check((rot["el_span"], rot["el_flip_allowed"]) == (el_span, True), f"{name}: line 2 {rot}")
     ui.send("Q\r")
     ui.prompt(w.MAIN)
 

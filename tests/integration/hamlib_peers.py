@@ -6,15 +6,14 @@ the factory station (27.391 N, 128.657 E) is tracked from two minutes before its
 import os
 import re
 import shutil
-import subprocess
 import sys
 import tempfile
 import time
 from datetime import datetime, timedelta, timezone
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import (BIN, check, free_port, hamlib_dummy, pointing_error, reap, run_test, satellite_track,  # noqa: E402
-                        sh)
+from _tbharness import (check, free_port, hamlib_dummy, pointing_error, reap, run_test, satellite_track,  # noqa: E402
+                        sh, start_line_trakbox)
 
 START = datetime(2026, 5, 21, 5, 37, 0, tzinfo=timezone.utc)
 
@@ -35,11 +34,8 @@ def main():
     try:
         procs.append(hamlib_dummy("rotctld", rot_port))
         procs.append(hamlib_dummy("rigctld", rig_port))
-        clock = START.strftime("%Y-%m-%dT%H:%M:%SZ")
-        tb = subprocess.Popen([BIN, "--state", state, "--line", "--satrak-port", "0", "--clock", clock,
-                               "--rotator", f"rotctld:127.0.0.1:{rot_port}",
-                               "--radio", f"rigctld:127.0.0.1:{rig_port}"],
-                              stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+        tb = start_line_trakbox(state, START, "--rotator", f"rotctld:127.0.0.1:{rot_port}",
+                                "--radio", f"rigctld:127.0.0.1:{rig_port}")
         procs.append(tb)
         t0 = time.time()
         # S: single tracking with rotor control on; the ISS is #4 of the shipped tracking list.

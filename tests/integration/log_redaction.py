@@ -12,7 +12,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, CLOCK, Satrak, check, free_port, run_test  # noqa: E402
+from _tbharness import BIN, CLOCK, Satrak, check, free_port, read_log, run_test  # noqa: E402
 
 FTP_SECRET = "Sup3rS3cretFtp"
 HTTP_SECRET = "Sup3rS3cretHttp"
@@ -44,8 +44,7 @@ def main():
         with open(os.path.join(state, "trakbox-state.json")) as f:
             doc = json.load(f)
         check(doc["data"]["satrak"]["ftp"]["password"] == FTP_SECRET, "the stored password survived the write-back")
-        with open(os.path.join(state, "trakbox.log")) as f:
-            log = f.read()
+        log = read_log(state)
         check("SATELLITE_FTP=" in log, "the debug log records the Satrak commands")
         check("<redacted>" in log, "and shows where a secret was")
         check(FTP_SECRET not in log, "the FTP password is not in the log")

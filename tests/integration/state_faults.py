@@ -24,7 +24,7 @@ import time
 import zlib
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, CLOCK, Satrak, check, frame, free_port, run_test  # noqa: E402
+from _tbharness import BIN, CLOCK, Satrak, check, frame, free_port, read_log, run_test  # noqa: E402
 
 LOST = "Data in RAM was lost !! Set default parameter !"
 
@@ -99,8 +99,7 @@ def modes(state):
     check(code == 0, f"exit {code}")
     check(stat.S_IMODE(os.stat(state).st_mode) == 0o700, "state directory tightened to 0700")
     check(stat.S_IMODE(os.stat(state_path(state)).st_mode) == 0o600, "state document tightened to 0600")
-    with open(os.path.join(state, "trakbox.log")) as f:
-        log = f.read()
+    log = read_log(state)
     check("mode 755" in log and "mode 644" in log, "the log says what was tightened")
     fresh = os.path.join(state, "new", "deeper")
     code, _, _ = run_once(fresh)
@@ -126,8 +125,7 @@ def failed_save(state):
     finally:
         p.terminate()
         p.wait(20)
-    with open(os.path.join(state, "trakbox.log")) as f:
-        log = f.read()
+    log = read_log(state)
     check("not on disk" in log, "the log says the change is in memory but not on disk")
     with open(state_path(state)) as f:
         check(json.load(f)["data"]["satrak"]["reduction_x"] == 3000, "the last acknowledged value is stored")

@@ -9,14 +9,14 @@ Every wait polls for its condition with a deadline.
 import os
 import re
 import shutil
-import subprocess
 import sys
 import tempfile
 import time
 from datetime import datetime, timedelta, timezone
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, check, free_port, hamlib_dummy, poll, reap, run_test, satellite_track, sh, skip  # noqa: E402
+from _tbharness import (check, free_port, hamlib_dummy, poll, reap, run_test, satellite_track, sh, skip,  # noqa: E402
+                        start_line_trakbox)
 
 START = datetime(2026, 5, 21, 10, 57, 0, tzinfo=timezone.utc)
 C = 299792.458
@@ -54,11 +54,8 @@ def main():
             procs.append(hamlib_dummy("rigctld", port))
         for port in (down_port, up_port):
             poll(f"rigctld on port {port}", lambda p=port: read_freq(p) is not None, 10)
-        clock = START.strftime("%Y-%m-%dT%H:%M:%SZ")
-        tb = subprocess.Popen([BIN, "--state", state, "--line", "--satrak-port", "0", "--clock", clock,
-                               "--radio", f"rigctld:127.0.0.1:{down_port}",
-                               "--uplink-radio", f"rigctld:127.0.0.1:{up_port}"],
-                              stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+        tb = start_line_trakbox(state, START, "--radio", f"rigctld:127.0.0.1:{down_port}",
+                                "--uplink-radio", f"rigctld:127.0.0.1:{up_port}")
         procs.append(tb)
         t0 = time.time()
         clock_now = lambda: START + timedelta(seconds=time.time() - t0)  # noqa: E731

@@ -226,8 +226,14 @@ TEST_CASE("Menu 3-2: the manual's transcript — Y, then numbers build the list 
   CHECK(has(out, "  Enter 1 to 20, or Q (or Enter) to finish\n"));
   CHECK(has(out, "Tracking list: 2 satellite(s) selected.\n"));
   CHECK(f.model.db.selected == std::vector<int>{0, 10});
-  CHECK(f.model.db.marked == 0);  // AO-07 was marked and is still listed: it keeps the '*'
+  // The '*' stays where the list showed it last: on JO-97, #2 (the manual's "the asterisk (*) mark
+  // indicates the satellite last selected"); menu 1 offers it on Enter.
+  CHECK(f.model.db.marked == 1);
   CHECK(f.saves == 1);
+  testing::MenuFixture g("Q\r");
+  g.model.db = f.model.db;
+  menus::menu_1_realtime_tracking(g.term, *g.services);
+  CHECK(has(g.term.output(), " 1. AO-07       2.*JO-97\n"));
 }
 
 TEST_CASE("Menu 3-2: at most 15; Enter ends; N and an empty choice keep the old list") {
@@ -262,7 +268,7 @@ TEST_CASE("Menu 3-2: the satellite followed alone stops being followed when it l
   f.station->tick();
   menus::menu_3_2_select(f.term, *f.services);
   CHECK(f.model.db.selected == std::vector<int>{1, 2});
-  CHECK(f.model.db.marked == 0);
+  CHECK(f.model.db.marked == 1);  // #2, the one selected last
   CHECK(f.tracker.mode() == tracker::Mode::off);
   CHECK(has(f.term.output(), "Tracking stopped"));
 

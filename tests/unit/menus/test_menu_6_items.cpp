@@ -26,6 +26,35 @@ void rebuild(testing::MenuFixture& f, rotator::SimulatedRotatorParams p) {
   f.station->tick();
 }
 
+// A simulated rotator whose pots read az_ccw..az_cw over the azimuth travel, el_0 at the horizon
+// and el_90 straight up, its elevation stop at el_max degrees; then menu 6 run from the fixture's
+// keys with rotor control on, `timeouts` timeouts (0.5 s each) before each key.
+struct Pots {
+  double az_ccw, az_cw, el_0, el_90, el_max;
+  rotator::RotatorPosition start;
+};
+void run_6_1(testing::MenuFixture& f, const Pots& pots, int timeouts) {
+  rotator::SimulatedRotatorParams p;
+  p.az_counts_at_ccw = pots.az_ccw;
+  p.az_counts_at_cw = pots.az_cw;
+  p.el_counts_at_0 = pots.el_0;
+  p.el_counts_at_90 = pots.el_90;
+  p.el_max_deg = pots.el_max;
+  p.start = pots.start;
+  rebuild(f, p);
+  f.station->set_rotor_control(true);
+  f.term.timeouts_before_key = timeouts;
+  menus::menu_6_configuration(f.term, *f.services);
+}
+
+// The station file sample's limits: azimuth 270 -> 90 clockwise, elevation 0..45.
+void set_sample_limits(rotator::RotatorConfig& c) {
+  c.limits_enabled = true;
+  c.az_limit_min = 270;
+  c.az_limit_max = 90;
+  c.el_limit_max = 45;
+}
+
 using testing::kAzTol;
 using testing::kElTol;
 
@@ -38,17 +67,7 @@ TEST_CASE("6-1 calibration records the simulated rotator's counts at its end sto
   // an elevation end stop at 90: the calibration the manual's example shows. Configured with the
   // factory span, antenna somewhere in the middle.
   testing::MenuFixture f("1\r42Y68YQ\r");
-  rotator::SimulatedRotatorParams p;
-  p.az_counts_at_ccw = 3;
-  p.az_counts_at_cw = 837;
-  p.el_counts_at_0 = 1;
-  p.el_counts_at_90 = 460;
-  p.el_max_deg = 90;
-  p.start = {180.0, 45.0};
-  rebuild(f, p);
-  f.station->set_rotor_control(true);
-  f.term.timeouts_before_key = 200;  // 100 s before each key: time to reach the stop
-  menus::menu_6_configuration(f.term, *f.services);
+  run_6_1(f, {3, 837, 1, 460, 90, {180.0, 45.0}}, 200);  // 100 s before each key: time to reach the stop
   const std::string& out = f.term.output();
   CHECK(has(out, "ADC span value AZ:0000-1023 EL:0000-0511\n"));
   CHECK(has(out, "Rotate the antenna to fully CCW and\n"));
@@ -75,21 +94,8 @@ TEST_CASE("6-1 reaches the mechanical ends whatever the old span and limits say"
   // on (the station file sample's): calibration still drives to both stops and records them, and the
   // limits are in force again afterwards.
   testing::MenuFixture f("1\r42Y68YQ\r");
-  f.model.rotator.limits_enabled = true;
-  f.model.rotator.az_limit_min = 270;
-  f.model.rotator.az_limit_max = 90;
-  f.model.rotator.el_limit_max = 45;
-  rotator::SimulatedRotatorParams p;
-  p.az_counts_at_ccw = 20;
-  p.az_counts_at_cw = 1000;
-  p.el_counts_at_0 = 10;
-  p.el_counts_at_90 = 900;
-  p.el_max_deg = 90;
-  p.start = {180.0, 20.0};
-  rebuild(f, p);
-  f.station->set_rotor_control(true);
-  f.term.timeouts_before_key = 200;
-  menus::menu_6_configuration(f.term, *f.services);
+  set_sample_limits(f.model.rotator);
+  run_6_1(f, {20, 1000, 10, 900, 90, {180.0, 20.0}}, 200);
   CHECK(has(f.term.output(), "ADC span value AZ:0020-1000 EL:0010-0900\n"));
   CHECK(f.model.rotator.az_span == rotator::AxisSpan{20, 1000});
   CHECK(f.model.rotator.el_span == rotator::AxisSpan{10, 900});
@@ -99,6 +105,28 @@ TEST_CASE("6-1 reaches the mechanical ends whatever the old span and limits say"
   f.station->point({0.0, 80.0});
   f.run(60);
   CHECK(std::abs(f.truth().el - 45) <= 0.3);
+}
+
+TEST_CASE("6-1 and 6-2 in flip mode: the second elevation point is the 180-degree one") {
+  // The later firmware's example rotator (2 10 857 2 917 F): elevation pot 2 at the horizon, 917
+  // over the top at 180 degrees, where its end stop is.
+  testing::MenuFixture f("1\r42Y68YQ\r");
+  f.model.rotator.el_flip_allowed = true;
+  run_6_1(f, {10, 857, 2, 459.5, 180, {180.0, 45.0}}, 300);
+  CHECK(has(f.term.output(), "Elevation 180 degree (flip) position [Y/N] ? Y\n"));
+  CHECK(f.model.rotator.el_span == rotator::AxisSpan{2, 917});
+  CHECK(f.model.rotator.az_span == rotator::AxisSpan{10, 857});
+  // With the new span the antenna goes where it is told: 60 deg up reads 60.
+  f.station->point({90.0, 60.0});
+  f.run(90);
+  CHECK(std::abs(f.truth().el - 60) <= 0.5);
+
+  testing::MenuFixture g("2\r\r\r\r917\rQ\r");
+  g.model.rotator.el_flip_allowed = true;
+  menus::menu_6_configuration(g.term, *g.services);
+  CHECK(has(g.term.output(), "EL maximum (180 deg) value ? : "));
+  CHECK(g.model.rotator.el_span == rotator::AxisSpan{0, 917});
+  CHECK(g.model.rotator.el_flip_allowed);
 }
 
 TEST_CASE("The monitor line reproduces the manual's example numbers") {
@@ -132,10 +160,7 @@ TEST_CASE("6-6-1 keyboard control stops at the rotation limits") {
 TEST_CASE("6-6-2 never leaves the rotation limits, even for a target outside them") {
   // The station file sample's limits (270 -> 90 clockwise, el 0..45), rotor start South, antenna north.
   testing::MenuFixture f("6\r2\r120\r60\rQ\rQ\r");
-  f.model.rotator.limits_enabled = true;
-  f.model.rotator.az_limit_min = 270;
-  f.model.rotator.az_limit_max = 90;
-  f.model.rotator.el_limit_max = 45;
+  set_sample_limits(f.model.rotator);
   rotator::SimulatedRotatorParams p = rotator::SimulatedRotatorParams::matching(f.model.rotator);
   p.start = {180.0, 0.0};
   rebuild(f, p);

@@ -139,20 +139,6 @@ class LoopThread {
   std::thread thread_;
 };
 
-inline std::optional<std::string> which(const std::string& name) {
-  const char* path = std::getenv("PATH");
-  std::string p = path ? path : "";
-  p += ":/usr/bin:/bin";
-  std::stringstream ss(p);
-  std::string dir;
-  while (std::getline(ss, dir, ':')) {
-    if (dir.empty()) continue;
-    const std::string c = dir + "/" + name;
-    if (::access(c.c_str(), X_OK) == 0) return c;
-  }
-  return std::nullopt;
-}
-
 // Runs a program to completion with a time limit, capturing stdout and stderr. Killed (by its
 // pid) and reaped when the limit passes.
 struct RunResult {

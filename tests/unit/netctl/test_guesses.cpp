@@ -182,7 +182,7 @@ TEST_CASE("server: one address holds at most max_per_address connections; host m
   o.per_address_exempt.clear();  // loopback is exempt by default: the test's clients are all loopback
   netctl::HostServer host(io, 0, *st.loop, o);
   netctl::ServerOptions only_other = netctl::HostServer::defaults();
-  only_other.allow.push_back(*net::parse_cidr("192.0.2.0/24"));
+  only_other.allow.push_back(*inet::parse_cidr("192.0.2.0/24"));
   netctl::HostServer fenced(io, 0, *st.loop, only_other);
   LoopThread lt(io, st);
   RawClient a(host.port()), b(host.port());

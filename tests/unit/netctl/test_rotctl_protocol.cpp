@@ -334,3 +334,42 @@ TEST_CASE("rotctl: _ / \\get_info, \\dump_state, 1 / \\dump_caps, q / Q") {
   CHECK(p.handle("\\quit").close);
   CHECK(!p.handle("p").close);
 }
+
+// Gpredict's rotator controller (gtk-rot-ctrl.c) each cycle reads p and sends P again when either
+// axis differs from its target by more than its tolerance (5 deg by default); set to -180..180 it
+// sends azimuths above 180 as az - 360. Answered in the other frame, the two never agree and it
+// re-sends P every cycle (31 in 30 s against about 20). Both settings follow a target moving
+// from 300 to 312 deg of azimuth in 30 one-second cycles.
+TEST_CASE("rotctl: p answers in the azimuth frame of the client's P (Gpredict -180..180 and 0..360)") {
+  for (const bool minus180 : {true, false}) {
+    CAPTURE(minus180);
+    SimStation st;
+    RotctlProtocol p(*st.loop);
+    auto frame = [minus180](double az) { return minus180 && az > 180.0 ? az - 360.0 : az; };
+    auto send_p = [&](double az, double el) {
+      char line[64];
+      std::snprintf(line, sizeof line, "P %.2f %.2f", frame(az), el);
+      CHECK(ask(p, line) == "RPRT 0\n");
+    };
+    send_p(300.0, 20.0);
+    REQUIRE(st.settle());
+    int sent = 0;
+    for (int cycle = 0; cycle < 30; ++cycle) {
+      const double az = 300.0 + 0.4 * cycle, el = 20.0 + 0.1 * cycle;
+      const auto [read_az, read_el] = pos_of(ask(p, "p"));
+      // In the client's own frame: what it reads is comparable with what it sends.
+      CHECK(read_az == doctest::Approx(frame(st.loop->rotator().status().az.deg)).epsilon(1e-3));
+      if (std::abs(frame(az) - read_az) > 5.0 || std::abs(el - read_el) > 5.0) {
+        send_p(az, el);
+        ++sent;
+      }
+      for (int k = 0; k < 10; ++k) st.step();
+    }
+    CHECK(sent <= 3);
+    CHECK(p.az_frame_lo() == (minus180 ? -180.0 : 0.0));
+  }
+  // 0..180 says nothing about the frame; an azimuth above 180 puts it back to 0..360.
+  CHECK(RotctlProtocol::in_frame(307.39, -180.0) == doctest::Approx(-52.61));
+  CHECK(RotctlProtocol::in_frame(180.0, -180.0) == 180.0);
+  CHECK(RotctlProtocol::in_frame(307.39, 0.0) == 307.39);
+}

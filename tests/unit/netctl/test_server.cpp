@@ -3,6 +3,7 @@
 // read or stay silent do not stall the loop or the other clients. Every wait is bounded; every
 // child process is reaped.
 #include <doctest/doctest.h>
+#include "support/tools.h"
 #include <arpa/inet.h>
 #include <netinet/in.h>
 #include <netinet/tcp.h>
@@ -38,12 +39,9 @@ bool eventually(LoopThread& lt, F cond, std::chrono::milliseconds limit = 30s) {
 
 }  // namespace
 
-TEST_CASE("server: Hamlib's rotctl -m 2 moves and reads the simulated antenna") {
-  const auto rotctl = which("rotctl");
-  if (!rotctl) {
-    MESSAGE("rotctl not installed (libhamlib-utils): skipped");
-    return;
-  }
+TEST_CASE("server: Hamlib's rotctl -m 2 moves and reads the simulated antenna" * doctest::skip(tb::testing::skip_without({"rotctl"}))) {
+  tb::testing::require_tools({"rotctl"});
+  const auto rotctl = tb::testing::find_tool("rotctl");
   SimStation st;
   boost::asio::io_context io;
   netctl::RotctldServer server(io, 0, *st.loop);
@@ -82,12 +80,9 @@ TEST_CASE("server: Hamlib's rotctl -m 2 moves and reads the simulated antenna") 
   CHECK(lt.ticks() > 10);  // the station ticked all along
 }
 
-TEST_CASE("server: Hamlib's rigctl -m 2 tunes the downlink (F / f) and the uplink (I / i)") {
-  const auto rigctl = which("rigctl");
-  if (!rigctl) {
-    MESSAGE("rigctl not installed (libhamlib-utils): skipped");
-    return;
-  }
+TEST_CASE("server: Hamlib's rigctl -m 2 tunes the downlink (F / f) and the uplink (I / i)" * doctest::skip(tb::testing::skip_without({"rigctl"}))) {
+  tb::testing::require_tools({"rigctl"});
+  const auto rigctl = tb::testing::find_tool("rigctl");
   SimStation st;
   boost::asio::io_context io;
   netctl::RigctldServer server(io, 0, *st.loop);

@@ -677,22 +677,26 @@ TEST_CASE("AMSAT problems: bad values and missing lines") {
         "b.txt:3:0: Mean motion: found nothing, expected a 'Mean motion:' line in the block");
   CHECK(r.sets.size() == 1);
 
-  r = parse_amsat(replace_line(two, "Epoch time:      12256.61218065", "Epoch time:      12367.61218065"), "b.txt");
-  REQUIRE(r.problems.size() == 1);
-  check_problem(r.problems[0], 19, 18, "Epoch time", "12367.61218065", "day of year in [1, 367)");
-
-  r = parse_amsat(replace_line(two, "Element set:     479", "Element set:     4x9"), "b.txt");
-  REQUIRE(r.problems.size() == 1);
-  check_problem(r.problems[0], 20, 18, "Element set", "4x9", "digits 0-9");
-
-  r = parse_amsat(replace_line(two, "Mean motion:   12.53591141", "Mean motion:   -12.5359114"), "b.txt");
-  REQUIRE(r.problems.size() == 1);
-  check_problem(r.problems[0], 26, 16, "Mean motion", "-12.5359114", "number > 0");
-
-  r = parse_amsat(replace_line(two, "Epoch rev:           73100\n", "Epoch rev:           73100\nEpoch rev: 1\n"),
-                  "b.txt");
-  REQUIRE(r.problems.size() == 1);
-  check_problem(r.problems[0], 29, 12, "Epoch rev", "1", "one 'Epoch rev:' line in the block");
+  // One damaged line each: where the problem is reported, and what was found and expected.
+  struct Damage {
+    const char *from, *to;
+    int line, column;
+    const char *field, *found, *expected;
+  };
+  for (const Damage& d : {
+           Damage{"Epoch time:      12256.61218065", "Epoch time:      12367.61218065", 19, 18, "Epoch time",
+                  "12367.61218065", "day of year in [1, 367)"},
+           Damage{"Element set:     479", "Element set:     4x9", 20, 18, "Element set", "4x9", "digits 0-9"},
+           Damage{"Mean motion:   12.53591141", "Mean motion:   -12.5359114", 26, 16, "Mean motion", "-12.5359114",
+                  "number > 0"},
+           Damage{"Epoch rev:           73100\n", "Epoch rev:           73100\nEpoch rev: 1\n", 29, 12, "Epoch rev",
+                  "1", "one 'Epoch rev:' line in the block"},
+       }) {
+    CAPTURE(d.to);
+    r = parse_amsat(replace_line(two, d.from, d.to), "b.txt");
+    REQUIRE(r.problems.size() == 1);
+    check_problem(r.problems[0], d.line, d.column, d.field, d.found, d.expected);
+  }
 }
 
 TEST_CASE("Files: auto-detection and unreadable files") {

@@ -2,6 +2,7 @@
 // free TCP ports, bounded waiting. POSIX only.
 #pragma once
 #include <doctest/doctest.h>
+#include "support/tools.h"
 #include <arpa/inet.h>
 #include <fcntl.h>
 #include <netinet/in.h>
@@ -50,20 +51,7 @@ inline bool eventually(const std::function<bool()>& pred, Ms timeout = 5000ms) {
   return pred();
 }
 
-inline std::optional<std::string> which(const std::string& name) {
-  const char* path = std::getenv("PATH");
-  std::string p = path ? path : "/usr/bin:/bin";
-  p += ":/usr/bin:/bin";
-  std::size_t start = 0;
-  while (start <= p.size()) {
-    std::size_t end = p.find(':', start);
-    if (end == std::string::npos) end = p.size();
-    std::string candidate = p.substr(start, end - start) + "/" + name;
-    if (::access(candidate.c_str(), X_OK) == 0) return candidate;
-    start = end + 1;
-  }
-  return std::nullopt;
-}
+inline std::optional<std::string> which(const std::string& name) { return tb::testing::find_tool(name); }
 
 // A child process; stderr optionally captured through a pipe. Killed (by its own pid) and
 // reaped when destroyed.
@@ -317,12 +305,6 @@ inline std::string run_capture(const std::string& command) {
 }
 
 // socat makes the pty pairs the serial tests run on; without it they are skipped with a message.
-inline bool have_socat() {
-  if (which("socat")) return true;
-  MESSAGE("socat not installed: serial CAT pty tests skipped");
-  return false;
-}
-
 // The radio's side of a CI-V line: reads the pty until stop, cuts what comes into frames (a lone
 // jam code too) and hands each to on_frame, on the calling thread (a responder's own thread).
 template <typename OnFrame>

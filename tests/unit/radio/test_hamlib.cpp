@@ -20,12 +20,6 @@ extern "C" const char* __lsan_default_suppressions() { return "leak:libhamlib.so
 
 namespace {
 
-bool have_hamlib_utils() {
-  if (tbtest::which("rigctld") && tbtest::which("rigctl")) return true;
-  MESSAGE("rigctld/rigctl not installed (libhamlib-utils): Hamlib peer tests skipped");
-  return false;
-}
-
 std::unique_ptr<tbtest::Child> start_rigctld(int port, bool vfo_mode = false) {
   std::vector<std::string> args{*tbtest::which("rigctld"), "-m", "1", "-T", "127.0.0.1", "-t", std::to_string(port)};
   if (vfo_mode) args.push_back("--vfo");
@@ -55,8 +49,8 @@ std::string rigctld_query(int port, const std::string& cmd, int lines) {
 
 }  // namespace
 
-TEST_CASE("Hamlib: tune a rigctld dummy, read back, survive a daemon restart") {
-  if (!have_hamlib_utils()) return;
+TEST_CASE("Hamlib: tune a rigctld dummy, read back, survive a daemon restart" * doctest::skip(tb::testing::skip_without({"rigctld", "rigctl"}))) {
+  tb::testing::require_tools({"rigctld", "rigctl"});
   const int port = tbtest::free_tcp_port();
   REQUIRE(port > 0);
   auto daemon = start_rigctld(port);
@@ -151,7 +145,7 @@ TEST_CASE("Hamlib: nothing listening is a fault with Hamlib's reason, retried wi
   CHECK_FALSE(st.connected);
 }
 
-TEST_CASE("Hamlib: dial follow reads the radio back (dummy backend, both schemes); the CTCSS tone reaches rigctld") {
+TEST_CASE("Hamlib: dial follow reads the radio back (dummy backend, Main/Sub)") {
   // Main/Sub. (Split is not checked on the dummy: Hamlib 4.5.4's dummy, read with the cache off,
   // holds the split TX frequency in VFO A, so the current VFO reads the uplink; docs/radio.md.)
   HamlibLink link({1, "", 0, HamlibVfoScheme::main_sub});
@@ -162,7 +156,10 @@ TEST_CASE("Hamlib: dial follow reads the radio back (dummy backend, both schemes
   CHECK(link.read_frequency(Link::downlink) == 435'640'850);
   CHECK(link.read_frequency(Link::uplink) == 145'964'720);
   link.close();
-  if (!have_hamlib_utils()) return;
+}
+
+TEST_CASE("Hamlib: the CTCSS tone reaches rigctld" * doctest::skip(tb::testing::skip_without({"rigctld", "rigctl"}))) {
+  tb::testing::require_tools({"rigctld", "rigctl"});
   const int port = tbtest::free_tcp_port();
   REQUIRE(port > 0);
   auto daemon = start_rigctld(port);
@@ -193,8 +190,8 @@ TEST_CASE("Hamlib: a backend with RIG_FUNC_SATMODE gets satellite mode at open a
   split.close();
 }
 
-TEST_CASE("rigctld --vfo: satellite mode on, downlink on Sub and uplink on Main, both read back, tone on Main") {
-  if (!have_hamlib_utils()) return;
+TEST_CASE("rigctld --vfo: satellite mode on, downlink on Sub and uplink on Main, both read back, tone on Main" * doctest::skip(tb::testing::skip_without({"rigctld", "rigctl"}))) {
+  tb::testing::require_tools({"rigctld", "rigctl"});
   const int port = tbtest::free_tcp_port();
   REQUIRE(port > 0);
   auto daemon = start_rigctld(port, true);
@@ -221,8 +218,8 @@ TEST_CASE("rigctld --vfo: satellite mode on, downlink on Sub and uplink on Main,
   link.close();
 }
 
-TEST_CASE("rigctld without --vfo: split as Gpredict does it, both links read back with f and i") {
-  if (!have_hamlib_utils()) return;
+TEST_CASE("rigctld without --vfo: split as Gpredict does it, both links read back with f and i" * doctest::skip(tb::testing::skip_without({"rigctld", "rigctl"}))) {
+  tb::testing::require_tools({"rigctld", "rigctl"});
   const int port = tbtest::free_tcp_port();
   REQUIRE(port > 0);
   auto daemon = start_rigctld(port);

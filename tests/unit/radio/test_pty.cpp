@@ -10,12 +10,11 @@
 #include "radio/cat_links.h"
 #include "support.h"
 
-using namespace tb::radio;
-using namespace std::chrono_literals;
-using tbtest::eventually;
-using tbtest::have_socat;
-using tbtest::PtyEnd;
 using tbtest::PtyPair;
+using tbtest::PtyEnd;
+using tbtest::eventually;
+using namespace std::chrono_literals;
+using namespace tb::radio;
 
 namespace {
 
@@ -87,10 +86,24 @@ std::vector<Hz> frequencies_to(const std::vector<Bytes>& frames, std::uint8_t to
   return out;
 }
 
+// A Kenwood driver on a pty pair that is gone when this returns (socat ends: both ptys and their
+// links disappear), after one frequency went through: the port the driver has open vanished.
+std::unique_ptr<RadioDriver> kenwood_on_a_cable_that_goes(std::string& device, const WorkerTiming& timing) {
+  PtyPair pair;
+  REQUIRE(pair.ok());
+  PtyEnd peer(pair.test_side());
+  device = pair.radio_side();
+  auto radio = make_kenwood_radio(device, {}, timing);
+  radio->set_downlink_frequency(435'000'000);
+  REQUIRE(radio->wait_idle(5000ms));
+  CHECK(radio->status().connected);
+  return radio;
+}
+
 }  // namespace
 
-TEST_CASE("Icom CI-V over a pty: frequencies and modes to two radios, echo and FB read back") {
-  if (!have_socat()) return;
+TEST_CASE("Icom CI-V over a pty: frequencies and modes to two radios, echo and FB read back" * doctest::skip(tb::testing::skip_without({"socat"}))) {
+  tb::testing::require_tools({"socat"});
   PtyPair pair;
   REQUIRE(pair.ok());
   IcomBus bus(pair.test_side());
@@ -124,8 +137,8 @@ TEST_CASE("Icom CI-V over a pty: frequencies and modes to two radios, echo and F
   CHECK(to_hex(frames[2]) == "FE FE 14 E0 05 50 34 12 35 04 FD");
 }
 
-TEST_CASE("Icom CI-V over a pty: collision (jam instead of echo) is retried") {
-  if (!have_socat()) return;
+TEST_CASE("Icom CI-V over a pty: collision (jam instead of echo) is retried" * doctest::skip(tb::testing::skip_without({"socat"}))) {
+  tb::testing::require_tools({"socat"});
   PtyPair pair;
   REQUIRE(pair.ok());
   IcomBus bus(pair.test_side());
@@ -142,8 +155,8 @@ TEST_CASE("Icom CI-V over a pty: collision (jam instead of echo) is retried") {
   for (const auto& f : frames) CHECK(to_hex(f) == "FE FE 00 E0 05 00 00 95 45 01 FD");
 }
 
-TEST_CASE("Icom CI-V over a pty: no echo is the fault \"interface not echoing\", then it recovers") {
-  if (!have_socat()) return;
+TEST_CASE("Icom CI-V over a pty: no echo is the fault \"interface not echoing\", then it recovers" * doctest::skip(tb::testing::skip_without({"socat"}))) {
+  tb::testing::require_tools({"socat"});
   PtyPair pair;
   REQUIRE(pair.ok());
   IcomBus bus(pair.test_side());
@@ -160,8 +173,8 @@ TEST_CASE("Icom CI-V over a pty: no echo is the fault \"interface not echoing\",
   CHECK(radio->status().downlink_hz == 435'000'000);
 }
 
-TEST_CASE("Icom CI-V over a pty: a refused command (FA) is reported and dropped") {
-  if (!have_socat()) return;
+TEST_CASE("Icom CI-V over a pty: a refused command (FA) is reported and dropped" * doctest::skip(tb::testing::skip_without({"socat"}))) {
+  tb::testing::require_tools({"socat"});
   PtyPair pair;
   REQUIRE(pair.ok());
   IcomBus bus(pair.test_side());
@@ -190,8 +203,8 @@ TEST_CASE("Icom CI-V over a pty: a refused command (FA) is reported and dropped"
   CHECK(hex[5] == "FE FE 60 E0 05 00 00 90 45 01 FD");
 }
 
-TEST_CASE("Kenwood over a pty: FA/FB and MD read back") {
-  if (!have_socat()) return;
+TEST_CASE("Kenwood over a pty: FA/FB and MD read back" * doctest::skip(tb::testing::skip_without({"socat"}))) {
+  tb::testing::require_tools({"socat"});
   PtyPair pair;
   REQUIRE(pair.ok());
   PtyEnd peer(pair.test_side());
@@ -222,8 +235,8 @@ TEST_CASE("Kenwood over a pty: FA/FB and MD read back") {
   CHECK(decoded == down);
 }
 
-TEST_CASE("Yaesu FT-736 over a pty: CAT on, satellite mode, 5-byte commands, CAT off on close") {
-  if (!have_socat()) return;
+TEST_CASE("Yaesu FT-736 over a pty: CAT on, satellite mode, 5-byte commands, CAT off on close" * doctest::skip(tb::testing::skip_without({"socat"}))) {
+  tb::testing::require_tools({"socat"});
   PtyPair pair;
   REQUIRE(pair.ok());
   PtyEnd peer(pair.test_side());
@@ -277,20 +290,10 @@ TEST_CASE("Yaesu FT-736 over a pty: CAT on, satellite mode, 5-byte commands, CAT
   CHECK(cmds[9].kind == K::cat_off);
 }
 
-TEST_CASE("Serial driver: the cable goes away, the driver reports it and reopens") {
-  if (!have_socat()) return;
+TEST_CASE("Serial driver: the cable goes away, the driver reports it and reopens" * doctest::skip(tb::testing::skip_without({"socat"}))) {
+  tb::testing::require_tools({"socat"});
   std::string device;
-  std::unique_ptr<RadioDriver> radio;
-  {
-    PtyPair pair;
-    REQUIRE(pair.ok());
-    PtyEnd peer(pair.test_side());
-    device = pair.radio_side();
-    radio = make_kenwood_radio(device, {}, kFast);
-    radio->set_downlink_frequency(435'000'000);
-    REQUIRE(radio->wait_idle(5000ms));
-    CHECK(radio->status().connected);
-  }   // socat ends: both ptys disappear
+  auto radio = kenwood_on_a_cable_that_goes(device, kFast);
   radio->set_downlink_frequency(435'000'010);
   // Under load this write may still reach the dying pty; the fault follows either way.
   REQUIRE(eventually([&] { const auto s = radio->status(); return s.fault && !s.connected; }));
@@ -299,21 +302,11 @@ TEST_CASE("Serial driver: the cable goes away, the driver reports it and reopens
   radio.reset();   // shutting down with the port gone is bounded
 }
 
-TEST_CASE("Serial driver: an idle port that goes away is reported without a command being sent") {
-  if (!have_socat()) return;
+TEST_CASE("Serial driver: an idle port that goes away is reported without a command being sent" * doctest::skip(tb::testing::skip_without({"socat"}))) {
+  tb::testing::require_tools({"socat"});
   const WorkerTiming timing{20ms, 100ms, 50ms};
   std::string device;
-  std::unique_ptr<RadioDriver> radio;
-  {
-    PtyPair pair;
-    REQUIRE(pair.ok());
-    PtyEnd peer(pair.test_side());
-    device = pair.radio_side();
-    radio = make_kenwood_radio(device, {}, timing);
-    radio->set_downlink_frequency(435'000'000);
-    REQUIRE(radio->wait_idle(5000ms));
-    CHECK(radio->status().connected);
-  }  // socat ends: both ptys and their links disappear
+  auto radio = kenwood_on_a_cable_that_goes(device, timing);
   // Nothing more is sent: the idle check sees the hang-up (or the missing link) by itself.
   REQUIRE(eventually([&] { const auto s = radio->status(); return s.fault && !s.connected; }));
   CHECK(radio->status().message.find(device) != std::string::npos);

@@ -28,7 +28,6 @@ struct StringMaker<std::vector<std::string>> {
 using namespace tb::radio;
 using namespace std::chrono_literals;
 using tbtest::eventually;
-using tbtest::have_socat;
 using tbtest::PtyEnd;
 using tbtest::PtyPair;
 
@@ -170,8 +169,8 @@ int count_cmd(const std::vector<Bytes>& frames, std::uint8_t cmd) {
 
 }  // namespace
 
-TEST_CASE("IC-9700, echo on and off: satellite mode, Main down / Sub up, read-back, CTCSS, no select thrash") {
-  if (!have_socat()) return;
+TEST_CASE("IC-9700, echo on and off: satellite mode, Main down / Sub up, read-back, CTCSS, no select thrash" * doctest::skip(tb::testing::skip_without({"socat"}))) {
+  tb::testing::require_tools({"socat"});
   for (const bool echo : {false, true}) {
     CAPTURE(echo);
     PtyPair pair;
@@ -271,8 +270,8 @@ TEST_CASE("IC-9700, echo on and off: satellite mode, Main down / Sub up, read-ba
   }
 }
 
-TEST_CASE("IC-9700: a refused tone and a refused satellite mode are reported; Doppler goes on") {
-  if (!have_socat()) return;
+TEST_CASE("IC-9700: a refused tone and a refused satellite mode are reported; Doppler goes on" * doctest::skip(tb::testing::skip_without({"socat"}))) {
+  tb::testing::require_tools({"socat"});
   PtyPair pair;
   REQUIRE(pair.ok());
   Ic9700 rig(pair.test_side(), false);
@@ -297,8 +296,8 @@ TEST_CASE("IC-9700: a refused tone and a refused satellite mode are reported; Do
   CHECK(std::count(frames.begin(), frames.end(), "FE FE A2 E0 16 5A 01 FD") == 1);   // asked once, not every second
 }
 
-TEST_CASE("IC-9100 and IC-910H: their addresses and satellite-mode commands, Main up / Sub down") {
-  if (!have_socat()) return;
+TEST_CASE("IC-9100 and IC-910H: their addresses and satellite-mode commands, Main up / Sub down" * doctest::skip(tb::testing::skip_without({"socat"}))) {
+  tb::testing::require_tools({"socat"});
   struct Case {
     const char* spec;
     std::uint8_t address;
@@ -331,8 +330,8 @@ TEST_CASE("IC-9100 and IC-910H: their addresses and satellite-mode commands, Mai
   CHECK(rig.frequency(icom::Band::sub) == 145'963'730);
 }
 
-TEST_CASE("A model without a CTCSS encoder refuses a tone with a message, never silently") {
-  if (!have_socat()) return;
+TEST_CASE("A model without a CTCSS encoder refuses a tone with a message, never silently" * doctest::skip(tb::testing::skip_without({"socat"}))) {
+  tb::testing::require_tools({"socat"});
   PtyPair pair;
   REQUIRE(pair.ok());
   PtyEnd peer(pair.test_side());
@@ -422,8 +421,8 @@ class Yaesu5 final : public CommandResponder {
 
 }  // namespace
 
-TEST_CASE("FT-847: CAT on, satellite mode, SAT RX / SAT TX opcodes, read-back, CTCSS, off at close") {
-  if (!have_socat()) return;
+TEST_CASE("FT-847: CAT on, satellite mode, SAT RX / SAT TX opcodes, read-back, CTCSS, off at close" * doctest::skip(tb::testing::skip_without({"socat"}))) {
+  tb::testing::require_tools({"socat"});
   PtyPair pair;
   REQUIRE(pair.ok());
   Yaesu5 rig(pair.test_side());
@@ -463,8 +462,8 @@ TEST_CASE("FT-847: CAT on, satellite mode, SAT RX / SAT TX opcodes, read-back, C
   CHECK(rig.commands() == std::vector<std::string>{"00 00 00 00 8E", "00 00 00 00 80"});
 }
 
-TEST_CASE("FT-817 pair: each radio one link on its VFO, read-back, tone on the uplink radio") {
-  if (!have_socat()) return;
+TEST_CASE("FT-817 pair: each radio one link on its VFO, read-back, tone on the uplink radio" * doctest::skip(tb::testing::skip_without({"socat"}))) {
+  tb::testing::require_tools({"socat"});
   PtyPair a, b;
   REQUIRE(a.ok());
   REQUIRE(b.ok());
@@ -493,8 +492,8 @@ TEST_CASE("FT-817 pair: each radio one link on its VFO, read-back, tone on the u
   CHECK(down.commands().front() == "00 00 00 00 03");
 }
 
-TEST_CASE("An FT-817 alone refuses the uplink with a message") {
-  if (!have_socat()) return;
+TEST_CASE("An FT-817 alone refuses the uplink with a message" * doctest::skip(tb::testing::skip_without({"socat"}))) {
+  tb::testing::require_tools({"socat"});
   PtyPair pair;
   REQUIRE(pair.ok());
   Yaesu5 rig(pair.test_side());
@@ -539,8 +538,8 @@ class Ts2000 final : public CommandResponder {
 
 }  // namespace
 
-TEST_CASE("TS-2000: VFO A down, VFO B up, the dial read back with FA; / FB;") {
-  if (!have_socat()) return;
+TEST_CASE("TS-2000: VFO A down, VFO B up, the dial read back with FA; / FB;" * doctest::skip(tb::testing::skip_without({"socat"}))) {
+  tb::testing::require_tools({"socat"});
   PtyPair pair;
   REQUIRE(pair.ok());
   Ts2000 rig(pair.test_side());

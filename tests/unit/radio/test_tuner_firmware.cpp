@@ -2,6 +2,9 @@
 // the FREQ.DAT `ir`/`kr` swap of the two radios or VFOs, and the CAT port speed (line 4).
 #include <doctest/doctest.h>
 
+#include <tuple>
+#include <utility>
+
 #include "radio/cat_links.h"
 #include "radio/config.h"
 #include "radio/doppler.h"
@@ -13,10 +16,8 @@ namespace {
 // FO-29-like linear transponder, CAT, no Doppler (range rate 0) so the numbers are the nominal ones.
 SatelliteRadio linear() {
   SatelliteRadio s;
-  s.downlink_hz = 435'850'000;
-  s.uplink_hz = 145'950'000;
-  s.downlink_mode = Mode::usb;
-  s.uplink_mode = Mode::lsb;
+  std::tie(s.downlink_mode, s.uplink_mode) = std::pair(Mode::usb, Mode::lsb);
+  std::tie(s.downlink_hz, s.uplink_hz) = std::pair<Hz, Hz>(435'850'000, 145'950'000);
   return s;
 }
 

@@ -230,19 +230,22 @@ TEST_CASE("Limit sectors in travel, for both rotor starts (station file sample: 
   CHECK(validate(c).size() == 1);
 }
 
-TEST_CASE("Elevation beyond 90 for rotators allowed to flip") {
+TEST_CASE("Elevation beyond 90 for rotators allowed to flip: the span is 0..180 degrees") {
   RotatorConfig c;
-  c.el_flip_allowed = true;  // factory span 0-511: 180 deg at 1022
+  c.el_flip_allowed = true;  // flip mode calibrates 0 and 180 degrees: factory span 0-511 is 0..180
   AdcModel m(c, RotorStart::north);
   CHECK(m.el_range().hi == doctest::Approx(180.0));
-  CHECK(m.counts_from_el(180.0) == doctest::Approx(1022.0));
-  CHECK(m.el_from_counts(766.5) == doctest::Approx(135.0));
+  CHECK(m.counts_from_el(180.0) == doctest::Approx(511.0));
+  CHECK(m.counts_from_el(90.0) == doctest::Approx(255.5));
+  CHECK(m.el_from_counts(383.25) == doctest::Approx(135.0));
+  CHECK(m.deg_per_count(Axis::el) == doctest::Approx(180.0 / 511.0));
   CHECK(m.clamp({100.0, 150.0}).el == doctest::Approx(150.0));
   c.el_flip_allowed = false;
+  CHECK(AdcModel(c, RotorStart::north).counts_from_el(90.0) == doctest::Approx(511.0));
   CHECK(AdcModel(c, RotorStart::north).clamp({100.0, 150.0}).el == doctest::Approx(90.0));
-  // A span that puts 180 deg beyond the ADC cannot flip.
+  // The firmware's example, 2 10 857 2 917 F: the whole span is usable, nothing extrapolated.
   c.el_flip_allowed = true;
-  c.el_span = {0, 600};
-  REQUIRE(validate(c).size() == 1);
-  CHECK(validate(c)[0].find("set the pot so 90 deg reads at most 511") != std::string::npos);
+  c.el_span = {2, 917};
+  CHECK(validate(c).empty());
+  CHECK(AdcModel(c, RotorStart::north).counts_range(Axis::el).hi == doctest::Approx(917.0));
 }

@@ -2,6 +2,8 @@
 // keyboard control, the E key, faults, stalls, calibration and the monitor line.
 #include <doctest/doctest.h>
 
+#include <tuple>
+
 #include <cmath>
 
 #include "fixture.h"  // Rig
@@ -92,10 +94,7 @@ TEST_CASE("From 350 to 10 degrees the antenna goes the way the travel allows, ne
 TEST_CASE("Targets are clamped to the limits and the antenna stops there") {
   RotatorConfig c;
   c.limits_enabled = true;
-  c.az_limit_min = 0;
-  c.az_limit_max = 340;
-  c.el_limit_min = 0;
-  c.el_limit_max = 60;
+  std::tie(c.az_limit_min, c.az_limit_max, c.el_limit_min, c.el_limit_max) = std::tuple(0.0, 340.0, 0.0, 60.0);
   Rig rig(c);
   RotatorPosition t = rig.ctl->set_target(AzEl{345.0, 80.0});
   CHECK(t == RotatorPosition{340.0, 60.0});

@@ -3,6 +3,7 @@
 // `rotctl -m 2 -r 127.0.0.1:PORT p`, kill rotctld mid-move and check the fault is reported, motion
 // stops and the driver reconnects when it comes back. Skipped (with a message) when rotctld is absent.
 #include <doctest/doctest.h>
+#include "support/tools.h"
 #include <spdlog/spdlog.h>
 
 #include <arpa/inet.h>
@@ -34,17 +35,6 @@ using namespace std::chrono_literals;
 using SteadyClock = std::chrono::steady_clock;
 
 namespace {
-
-std::string find_program(const char* name) {
-  const char* path = std::getenv("PATH");
-  std::stringstream ss(path ? path : "/usr/bin:/bin");
-  std::string dir;
-  while (std::getline(ss, dir, ':')) {
-    std::string p = dir + "/" + name;
-    if (access(p.c_str(), X_OK) == 0) return p;
-  }
-  return {};
-}
 
 int free_port() {
   int fd = socket(AF_INET, SOCK_STREAM, 0);
@@ -132,12 +122,10 @@ std::optional<AzEl> rotctl_position(const std::string& rotctl, int port) {
 
 }  // namespace
 
-TEST_CASE("HamlibRotator against rotctld: drive, read back, lose the daemon, reconnect") {
-  const std::string rotctld = find_program("rotctld"), rotctl = find_program("rotctl");
-  if (rotctld.empty() || rotctl.empty()) {
-    MESSAGE("skipped: rotctld/rotctl not found (Debian package libhamlib-utils)");
-    return;
-  }
+TEST_CASE("HamlibRotator against rotctld: drive, read back, lose the daemon, reconnect" *
+          doctest::skip(tb::testing::skip_without({"rotctld", "rotctl"}))) {
+  tb::testing::require_tools({"rotctld", "rotctl"});
+  const std::string rotctld = *tb::testing::find_tool("rotctld"), rotctl = *tb::testing::find_tool("rotctl");
   spdlog::set_level(spdlog::level::off);
   const int port = free_port();
   auto daemon = start_rotctld(rotctld, port);

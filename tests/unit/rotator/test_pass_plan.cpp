@@ -67,14 +67,20 @@ void check_follows(const PassPlan& plan, const std::vector<TrackPoint>& track, b
   check_no_swing(plan, track);
 }
 
+// A plan that cannot follow the pass without a flip: not flipped, the antenna held at the stop,
+// no swing through it.
+void check_held(const PassPlan& plan, const std::vector<TrackPoint>& track) {
+  CHECK_FALSE(plan.flip);
+  CHECK(plan.held_at_stop);
+  check_no_swing(plan, track);
+}
+
 }  // namespace
 
 TEST_CASE("A pass crossing north, North-start rotator, no flip: the antenna waits at the stop") {
   auto track = synthetic_pass(300.0, 120.0, 40.0);  // 300 -> 0 -> 60
   PassPlan plan = plan_pass(track, geometry(RotorStart::north, false));
-  CHECK_FALSE(plan.flip);
-  CHECK(plan.held_at_stop);
-  check_no_swing(plan, track);
+  check_held(plan, track);
   CHECK(plan.max_error_deg > 30.0);  // it cannot follow it all
 }
 
@@ -94,9 +100,7 @@ TEST_CASE("A pass crossing north, North-start rotator, flip allowed: over the to
 TEST_CASE("A pass crossing south, South-start rotator: held without flip, flipped with it") {
   auto track = synthetic_pass(120.0, 120.0, 55.0);  // 120 -> 180 -> 240
   PassPlan held = plan_pass(track, geometry(RotorStart::south, false));
-  CHECK_FALSE(held.flip);
-  CHECK(held.held_at_stop);
-  check_no_swing(held, track);
+  check_held(held, track);
 
   PassPlan flipped = plan_pass(track, geometry(RotorStart::south, true));
   check_follows(flipped, track, /*flip=*/true);
@@ -184,7 +188,7 @@ TEST_CASE("slew_seconds and an empty track") {
 TEST_CASE("Controller and simulated rotator follow a flipped pass without swinging through the stop") {
   spdlog::set_level(spdlog::level::off);
   RotatorConfig c;
-  c.el_flip_allowed = true;  // factory span 0..511 puts 180 deg at count 1022
+  c.el_flip_allowed = true;  // flip mode: the factory span 0..511 is 0..180 deg
   auto track = synthetic_pass(300.0, 120.0, 60.0, 480);
   PassPlan plan = plan_pass(track, PassGeometry::from(AdcModel(c, RotorStart::north)), 0.0);
   REQUIRE(plan.flip);

@@ -13,11 +13,11 @@
 #include "rotator/controller.h"
 #include "rotator/simulated.h"
 
-using namespace tb::rotator;
-using namespace std::chrono_literals;
-using tb::orbit::from_civil;
-using tb::station::ManualClock;
 using tb::station::RotorStart;
+using tb::station::ManualClock;
+using tb::orbit::from_civil;
+using namespace std::chrono_literals;
+using namespace tb::rotator;
 
 namespace {
 
@@ -37,8 +37,7 @@ Case random_case(std::mt19937& rng) {
   c.az_span.min = pick(0, 300);
   c.az_span.max = pick(c.az_span.min + 150, kAdcMaxCount);
   c.el_span.min = pick(0, 200);
-  const int el_top = c.el_flip_allowed ? (kAdcMaxCount + c.el_span.min) / 2 : kAdcMaxCount;
-  c.el_span.max = pick(c.el_span.min + 60, std::max(c.el_span.min + 60, el_top));
+  c.el_span.max = pick(c.el_span.min + 60, kAdcMaxCount);
   c.az_dead_band = pick(1, 6);
   c.el_dead_band = pick(1, 3);
   c.az_skew = pick(-15, 15);
@@ -92,9 +91,7 @@ TEST_CASE("Property: the commanded position never leaves the limits") {
       CHECK(m.raw(Axis::az, ca) >= k.config.az_span.min);
       CHECK(m.raw(Axis::az, ca) <= k.config.az_span.max);
       CHECK(m.raw(Axis::el, ce) >= k.config.el_span.min);
-      CHECK(m.raw(Axis::el, ce) <= std::min(kAdcMaxCount, k.config.el_flip_allowed
-                                                                 ? k.config.el_span.min + 2 * k.config.el_span.width()
-                                                                 : k.config.el_span.max));
+      CHECK(m.raw(Axis::el, ce) <= k.config.el_span.max);
       // Rotator coordinates clamp the same way (what a pass plan hands over).
       RotatorPosition q = m.clamp({ucur(rng), uel(rng)});
       CHECK(az.contains(q.az_travel));

@@ -5,7 +5,7 @@
 
 #include "fixture.h"
 #include "net.h"
-#include "net/download.h"
+#include "download/download.h"
 
 using namespace satrak_test;
 using namespace std::chrono_literals;
@@ -25,8 +25,8 @@ print(s.server_address[1], flush=True)
 s.serve_forever()
 )";
 
-net::DownloadRequest get(std::string url) {
-  net::DownloadRequest r;
+download::DownloadRequest get(std::string url) {
+  download::DownloadRequest r;
   r.url = std::move(url);
   return r;
 }
@@ -76,20 +76,20 @@ TEST_CASE("download(): HTTP body, HTTP 404, a refused connection, a size bound, 
   Child http({kPython, "-c", kHttpServer, www.path.string()});
   REQUIRE(http.port() != 0);
   const std::string base = "http://127.0.0.1:" + std::to_string(http.port());
-  auto r = net::download(get(base + "/iss.tle"));
+  auto r = download::download(get(base + "/iss.tle"));
   CHECK(r.ok);
   CHECK(r.body == iss_file(777));
-  r = net::download(get(base + "/missing.tle"));
+  r = download::download(get(base + "/missing.tle"));
   CHECK_FALSE(r.ok);
   CHECK(r.error.find("404") != std::string::npos);
-  r = net::download(get("http://127.0.0.1:" + std::to_string(unused_port()) + "/x"));
+  r = download::download(get("http://127.0.0.1:" + std::to_string(unused_port()) + "/x"));
   CHECK_FALSE(r.ok);
-  net::DownloadRequest small = get(base + "/iss.tle");
+  download::DownloadRequest small = get(base + "/iss.tle");
   small.max_bytes = 50;
-  r = net::download(small);
+  r = download::download(small);
   CHECK_FALSE(r.ok);
   CHECK(r.error.find("larger than 50 bytes") != std::string::npos);
-  r = net::download(get("file:///etc/passwd"));
+  r = download::download(get("file:///etc/passwd"));
   CHECK_FALSE(r.ok);  // only http(s), ftp(s) and sftp
 
   // A server that accepts and never answers: the destructor aborts the transfer at once.
@@ -104,8 +104,8 @@ TEST_CASE("download(): HTTP body, HTTP 404, a refused connection, a size bound, 
   std::atomic<bool> called{false};
   const auto t0 = std::chrono::steady_clock::now();
   {
-    net::Downloader d;
-    d.submit(get("http://127.0.0.1:" + std::to_string(ntohs(a.sin_port)) + "/slow"), [&](net::DownloadResult) { called = true; });
+    download::Downloader d;
+    d.submit(get("http://127.0.0.1:" + std::to_string(ntohs(a.sin_port)) + "/slow"), [&](download::DownloadResult) { called = true; });
     std::this_thread::sleep_for(300ms);
     CHECK(d.busy() == 1);
   }

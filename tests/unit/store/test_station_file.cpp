@@ -7,6 +7,7 @@
 #include "rotator/adc_model.h"
 #include "store/model.h"
 #include "store/station_file.h"
+#include "station_file_problems.h"
 #include "support/manual_samples.h"
 
 using namespace tb;
@@ -15,11 +16,7 @@ using store::parse_station_file;
 namespace {
 const char* const kSample = testing::kManualStationFile;
 
-std::string problems_text(const store::StationFileParse& r) {
-  std::string s;
-  for (const auto& p : r.problems) s += p.message() + "\n";
-  return s;
-}
+using testing::problems_text;
 }  // namespace
 
 TEST_CASE("The manual's sample station file") {
@@ -44,11 +41,7 @@ TEST_CASE("The manual's sample station file") {
   CHECK(f.radio.icom_tx_address == 0x14);
   CHECK(f.rotator.parking_enabled);
   CHECK(f.rotator.parking == rotator::AzEl{90.0, 0.0});
-  CHECK(f.rotator.limits_enabled);
-  CHECK(f.rotator.az_limit_min == 270.0);
-  CHECK(f.rotator.az_limit_max == 90.0);
-  CHECK(f.rotator.el_limit_min == 0.0);
-  CHECK(f.rotator.el_limit_max == 45.0);
+  CHECK(testing::limits_of(f.rotator) == std::tuple(true, 270.0, 90.0, 0.0, 45.0));
 }
 
 TEST_CASE("The shipped data/station.txt is the manual's sample") {

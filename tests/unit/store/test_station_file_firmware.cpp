@@ -3,13 +3,17 @@
 // tests/data/firmware/ were written from the format description
 // (/work/shared/reference/element-data-2026.md, "TrakBox files of the later firmware").
 #include <doctest/doctest.h>
+
+#include <tuple>
 #include "support/data_files.h"
 
 
 #include <nlohmann/json.hpp>
 
+#include "rotator/adc_model.h"
 #include "store/model.h"
 #include "store/station_file.h"
+#include "station_file_problems.h"
 #include "support/manual_samples.h"
 #include "support/shipped_model.h"
 
@@ -20,11 +24,7 @@ namespace {
 
 std::string read_data(const char* name) { return tb::testing::read_test_data(std::string("firmware/") + name); }
 
-std::string problems_text(const store::StationFileParse& r) {
-  std::string s;
-  for (const auto& p : r.problems) s += p.message() + "\n";
-  return s;
-}
+using testing::problems_text;
 
 }  // namespace
 
@@ -77,11 +77,7 @@ TEST_CASE("STATION.DAT: the seven lines and what each item sets") {
   CHECK(f.radio.parking.tx_mode == radio::Mode::usb);
   CHECK(f.rotator.stall_s == 45.0);
   // 7: a range through North
-  CHECK(f.rotator.limits_enabled);
-  CHECK(f.rotator.az_limit_min == 270.0);
-  CHECK(f.rotator.az_limit_max == 90.0);
-  CHECK(f.rotator.el_limit_min == 0.0);
-  CHECK(f.rotator.el_limit_max == 80.0);
+  CHECK(testing::limits_of(f.rotator) == std::tuple(true, 270.0, 90.0, 0.0, 80.0));
 }
 
 TEST_CASE("STATION.DAT applied to the model, written back, and kept by the state document") {
@@ -117,11 +113,9 @@ TEST_CASE("STATION.DAT applied to the model, written back, and kept by the state
   CHECK(*back.file == *r.file);
 
   const store::Model restored = store::model_from_json(store::to_json(m));
-  CHECK(restored.station == m.station);
-  CHECK(restored.rotator == m.rotator);
-  CHECK(restored.radio == m.radio);
-  CHECK(restored.pass_events == m.pass_events);
-  CHECK(restored.rotator_error_detection == m.rotator_error_detection);
+  CHECK(std::tie(restored.station, restored.rotator, restored.radio, restored.pass_events,
+                 restored.rotator_error_detection) ==
+        std::tie(m.station, m.rotator, m.radio, m.pass_events, m.rotator_error_detection));
 }
 
 TEST_CASE("A state document written before the new fields still loads, with their defaults") {
@@ -229,7 +223,7 @@ TEST_CASE("The form is told by line 5; a seven-line file missing lines says whic
   CHECK(old.file->radio.rig == radio::Rig::icom);
 }
 
-TEST_CASE("A 1994 file does not touch what only the later file sets") {
+TEST_CASE("A 1994 file does not touch what only the later file sets, but its span means 0..90: flip goes off") {
   store::Model m = store::factory_defaults();
   m.rotator.el_flip_allowed = true;
   m.rotator.stall_s = 7.0;
@@ -238,7 +232,8 @@ TEST_CASE("A 1994 file does not touch what only the later file sets") {
   const auto r = parse_station_file(testing::kManualStationFile);
   REQUIRE(r.ok());
   REQUIRE(store::apply_station_file(*r.file, m).empty());
-  CHECK(m.rotator.el_flip_allowed);
+  // Flip mode says what line 2's elevation span means (0..180); a 1994 file's span is 0..90.
+  CHECK_FALSE(m.rotator.el_flip_allowed);
   CHECK(m.rotator.stall_s == 7.0);
   CHECK(m.pass_events.rotor_start_el_deg == 3.0);
   CHECK(m.radio.parking.enabled);
@@ -293,4 +288,39 @@ TEST_CASE("rotator.cross_limit_sector: stored, optional (older states load as ba
   CHECK_FALSE(store::model_from_json(j).rotator.cross_limit_sector);
   j["rotator"]["cross_limit_sector"] = "yes";
   CHECK_THROWS_WITH(store::model_from_json(j), doctest::Contains("rotator.cross_limit_sector"));
+}
+
+// Flip mode (v3.30a, "If you select flip operation, you must calibrate the EL rotor at 0 and 180
+// degree point"): line 2's elevation span is 0..180 degrees. The firmware's own example and a span
+// like JA6FTL's (25-981, whose 180 degrees lay at count 1937 when the span was read as 0..90) apply.
+TEST_CASE("STATION.DAT in flip mode: the elevation span is 0..180 degrees and the file applies") {
+  struct Case {
+    const char* file;
+    rotator::AxisSpan el;
+    double count_at_90;
+  };
+  for (const Case& k : {Case{"STATION_FLIP.DAT", {2, 917}, 459.5}, Case{"STATION_JA6FTL.DAT", {25, 981}, 503.0}}) {
+    const std::string file = k.file;
+    CAPTURE(file);
+    const auto r = parse_station_file(read_data(k.file));
+    INFO(problems_text(r));
+    REQUIRE(r.ok());
+    store::Model m = store::factory_defaults();
+    const auto refused = store::apply_station_file(*r.file, m);
+    CHECK(refused.empty());
+    REQUIRE(m.rotator.el_flip_allowed);
+    REQUIRE(m.rotator.el_span == k.el);
+    CHECK(m.rotator.el_top_deg() == 180.0);
+    // The model: 0 deg at the minimum, 180 at the maximum, 90 half-way (without line 3's skew and
+    // line 7's limits, el 0..80).
+    m.rotator.el_skew = 0;
+    m.rotator.limits_enabled = false;
+    const rotator::AdcModel a(m.rotator, m.station.rotor_start);
+    CHECK(a.el_from_counts(k.el.min) == 0.0);
+    CHECK(a.el_from_counts(k.el.max) == doctest::Approx(180.0));
+    CHECK(a.counts_from_el(90.0) == doctest::Approx(k.count_at_90));
+    CHECK(a.deg_per_count(rotator::Axis::el) == doctest::Approx(180.0 / (k.el.max - k.el.min)));
+    CHECK(a.el_range().hi == doctest::Approx(180.0));
+    CHECK(a.counts_range(rotator::Axis::el).hi == doctest::Approx(k.el.max));
+  }
 }

@@ -18,6 +18,20 @@ store::Model shipped(station::RotorStart start, double lat, double lon, double h
   return m;
 }
 
+// The shipped database at a South-start station (Amami, 27.391 N 128.657 E), the ISS tracked
+// alone from t0.
+struct IssAlone {
+  explicit IssAlone(orbit::UtcTime t0)
+      : m(shipped(station::RotorStart::south, 27.391, 128.657, 50.0)), iss(m.db.find("ISS")), clock(t0), t(m, clock) {
+    REQUIRE(iss);
+    t.track_single(*iss);
+  }
+  store::Model m;
+  std::optional<int> iss;
+  station::ManualClock clock;
+  tracker::Tracker t;
+};
+
 // The whole simulated station on a model of the test's own, its clock at t0.
 struct Station : testing::StationFixture {
   Station(store::Model m, orbit::UtcTime t0) : StationFixture(t0, std::move(m)) { build_station(); }
@@ -34,14 +48,10 @@ TEST_CASE("Multi-tracking choice: normal stays with the current one, priority ta
 }
 
 TEST_CASE("Single tracking decides point / pre-position / park from the satellite's pass") {
-  store::Model m = shipped(station::RotorStart::south, 27.391, 128.657, 50.0);
+  IssAlone s(orbit::from_civil(2026, 5, 21, 12, 0, 0));
+  auto& [m, iss, clock, t] = s;
   m.rotator.parking_enabled = true;
   m.rotator.parking = {90.0, 10.0};
-  const auto iss = m.db.find("ISS");
-  REQUIRE(iss);
-  station::ManualClock clock(orbit::from_civil(2026, 5, 21, 12, 0, 0));
-  tracker::Tracker t(m, clock);
-  t.track_single(*iss);
   const auto d0 = t.tick();
   REQUIRE(t.followed());
   REQUIRE(t.followed()->pass);
@@ -61,12 +71,8 @@ TEST_CASE("Single tracking decides point / pre-position / park from the satellit
 }
 
 TEST_CASE("The rotor follows above the rotor start elevation: waits at AOS while the satellite climbs, stays once it sets") {
-  store::Model m = shipped(station::RotorStart::south, 27.391, 128.657, 50.0);
-  const auto iss = m.db.find("ISS");
-  REQUIRE(iss);
-  station::ManualClock clock(orbit::from_civil(2026, 5, 21, 12, 0, 0));
-  tracker::Tracker t(m, clock);
-  t.track_single(*iss);
+  IssAlone s(orbit::from_civil(2026, 5, 21, 12, 0, 0));
+  auto& [m, iss, clock, t] = s;
   // The first pass of the day that climbs above 20 deg.
   std::optional<orbit::Pass> found;
   for (int k = 0; k < 12 && !found; ++k) {
@@ -111,12 +117,8 @@ TEST_CASE("The rotor follows above the rotor start elevation: waits at AOS while
 }
 
 TEST_CASE("The clock set back (menu 5): the pass shown is the one then, not the one found from later") {
-  store::Model m = shipped(station::RotorStart::south, 27.391, 128.657, 50.0);
-  const auto iss = m.db.find("ISS");
-  REQUIRE(iss);
-  station::ManualClock clock(orbit::from_civil(2026, 5, 21, 0, 0, 0));
-  tracker::Tracker t(m, clock);
-  t.track_single(*iss);
+  IssAlone s(orbit::from_civil(2026, 5, 21, 0, 0, 0));
+  auto& [m, iss, clock, t] = s;
   t.tick();
   REQUIRE(t.followed()->pass);
   const orbit::Pass first = *t.followed()->pass;
@@ -345,4 +347,37 @@ TEST_CASE("Limits that split the travel, crossing allowed: the piece that covers
   REQUIRE(r.note);
   CHECK(*r.note == "antenna follows 64% (13:00:53-13:07:37) in 10.0-180.0");
   CHECK(r.err_end < 2.0);
+}
+
+TEST_CASE("The displays' tracks: one orbital period of ground track, a pass from AOS to LOS") {
+  store::Model m = shipped(station::RotorStart::north, 35.0, 139.0, 0.0);
+  const auto iss = m.db.find("ISS");
+  REQUIRE(iss);
+  const orbit::UtcTime t0 = orbit::from_civil(2026, 5, 21, 12, 0, 0);
+  station::ManualClock clock(t0);
+  tracker::Tracker t(m, clock);
+  // One period: 1440 / mean motion minutes (the Kozai mean motion of the set; SGP4's un-Kozai'd
+  // one differs by well under 0.1%).
+  const double period = 1440.0 / m.db.satellites[static_cast<std::size_t>(*iss)].elements.mean_motion_rev_per_day;
+  const auto ground = t.orbit_track(*iss, t0, 120);
+  REQUIRE(ground.size() == 121);
+  CHECK(ground.front().time == t0);
+  CHECK(orbit::minutes_between(t0, ground.back().time) == doctest::Approx(period).epsilon(1e-3));
+  // After one revolution the sub-point is back at the same latitude (the Earth turned under it).
+  CHECK(ground.back().sub_point.lat_deg == doctest::Approx(ground.front().sub_point.lat_deg).epsilon(0.02));
+
+  t.track_single(*iss);
+  t.tick();
+  REQUIRE(t.followed());
+  REQUIRE(t.followed()->pass);
+  const orbit::Pass pass = *t.followed()->pass;
+  const auto sky = t.pass_track(*iss, pass, 20);
+  REQUIRE(sky.size() == 21);
+  CHECK(sky.front().look.el_deg == doctest::Approx(-2.0).epsilon(0.01));  // AOS: the manual's -2.0 deg
+  CHECK(sky.back().look.el_deg == doctest::Approx(-2.0).epsilon(0.01));
+  CHECK(sky.front().time == pass.aos);
+
+  // Elements SGP4 cannot use: no track, rather than one drawn over a made-up period.
+  m.db.satellites[static_cast<std::size_t>(*iss)].elements.eccentricity = 1.5;
+  CHECK(t.orbit_track(*iss, t0, 120).empty());
 }

@@ -2,7 +2,7 @@
 
 #include <doctest/doctest.h>
 
-using namespace tb::net;
+using namespace tb::inet;
 
 TEST_CASE("CIDR ranges: IPv4, IPv6, single addresses and IPv4-mapped clients") {
   const auto lan = parse_cidr("192.168.1.0/24");

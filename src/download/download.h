@@ -16,7 +16,7 @@
 #include <string>
 #include <thread>
 
-namespace tb::net {
+namespace tb::download {
 
 struct DownloadRequest {
   std::string url;           // http://, https://, ftp://, ftps:// or sftp://
@@ -73,4 +73,4 @@ class Downloader {
 // The transfer itself (blocking; what the worker runs). `abort` is polled during the transfer.
 DownloadResult download(const DownloadRequest& request, const std::function<bool()>& abort = {});
 
-}  // namespace tb::net
+}  // namespace tb::download

@@ -1,4 +1,4 @@
-#include "net/download.h"
+#include "download/download.h"
 
 #include <curl/curl.h>
 
@@ -8,7 +8,7 @@
 #include "util/redact.h"
 #include "util/text.h"
 
-namespace tb::net {
+namespace tb::download {
 
 namespace {
 
@@ -176,4 +176,4 @@ void Downloader::run() {
   }
 }
 
-}  // namespace tb::net
+}  // namespace tb::download

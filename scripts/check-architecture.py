@@ -1,0 +1,103 @@
+#!/usr/bin/env python3
+"""check-architecture.py [SOURCE_DIR]: docs/ARCHITECTURE.md's module table against the code.
+
+Each folder's dependencies are derived from the #include "..." lines of the files directly in it
+(src/NAME, menus, menus/term): an include "orbit/sgp4.h" is a dependency on orbit, "menus/term/x.h"
+on term. The table's "depends on" cell must name exactly those folders (by their last path part;
+"nothing" or an empty cell for none). Outside libraries in the cell (libcurl, ncurses, ...) are
+not checked here: CMake's target_link_libraries says what links. Every folder must have a row.
+Exits 1 naming each folder and each dependency on which the two disagree; run by CTest
+(`architecture_table`).
+"""
+import os
+import re
+import sys
+
+ROOT = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), ".."))
+DOC = os.path.join(ROOT, "docs", "ARCHITECTURE.md")
+EXTERNAL = {"nlohmann-json", "pugixml", "libcurl", "libgps", "ncurses", "boost.asio", "spdlog", "hamlib", "nothing", "—", "-", ""}
+
+
+def modules():
+    """{'src/orbit': 'orbit', ..., 'menus': 'menus', 'menus/term': 'term'}"""
+    out = {}
+    for name in sorted(os.listdir(os.path.join(ROOT, "src"))):
+        if os.path.isdir(os.path.join(ROOT, "src", name)):
+            out[f"src/{name}"] = name
+    out["menus"] = "menus"
+    out["menus/term"] = "term"
+    return out
+
+
+def include_target(path, mods):
+    """The module an include path names, if any: the longest folder it starts with."""
+    candidates = []
+    for folder, short in mods.items():
+        rel = folder[len("src/"):] if folder.startswith("src/") else folder
+        if path.startswith(rel + "/"):
+            candidates.append((len(rel), short))
+    return max(candidates)[1] if candidates else None
+
+
+def derived(mods):
+    deps = {}
+    for folder, short in mods.items():
+        d = os.path.join(ROOT, folder)
+        found = {}
+        for f in sorted(os.listdir(d)):
+            if not f.endswith((".cpp", ".h")):
+                continue
+            with open(os.path.join(d, f), encoding="utf-8") as fh:
+                for line in fh:
+                    m = re.match(r'\s*#\s*include\s+"([^"]+)"', line)
+                    if not m:
+                        continue
+                    target = include_target(m.group(1), mods)
+                    if target and target != short:
+                        found.setdefault(target, f"{folder}/{f}: #include \"{m.group(1)}\"")
+        deps[short] = (folder, found)
+    return deps
+
+
+def documented(mods):
+    rows = {}
+    with open(DOC, encoding="utf-8") as fh:
+        for line in fh:
+            m = re.match(r"\|\s*`([^`]+)`\s*\|.*\|\s*([^|]*)\|\s*$", line)
+            if not m:
+                continue
+            folder = m.group(1).rstrip("/")
+            if folder not in mods:
+                continue
+            names = {n.strip().lower() for n in m.group(2).split(",")}
+            rows[mods[folder]] = {n for n in names if n not in EXTERNAL}
+    return rows
+
+
+def main():
+    mods = modules()
+    code = derived(mods)
+    doc = documented(mods)
+    problems = []
+    shorts = set(mods.values())
+    for short, (folder, found) in sorted(code.items()):
+        if short not in doc:
+            problems.append(f"{folder}: no row in the module table of docs/ARCHITECTURE.md")
+            continue
+        for name in sorted(doc[short] - shorts):
+            problems.append(f"{folder}: the table names '{name}', which is neither a folder nor a known library")
+        for name in sorted(set(found) - doc[short]):
+            problems.append(f"{folder}: depends on {name} ({found[name]}) but the table does not say so")
+        for name in sorted((doc[short] & shorts) - set(found)):
+            problems.append(f"{folder}: the table says it depends on {name}, but no file in it includes {name}/")
+    if problems:
+        print("docs/ARCHITECTURE.md's module table disagrees with the includes:")
+        for p in problems:
+            print("  " + p)
+        return 1
+    print(f"module table matches the includes of {len(code)} folders")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
