@@ -5,6 +5,7 @@
 
 #include "app/build_info.h"
 #include "app/rotator_registry.h"
+#include "gps/gpsd_client.h"
 #include "station/clock.h"
 #include "menus/term/line_terminal.h"
 #include "store/refresh.h"
@@ -60,6 +61,11 @@ std::vector<OptionSpec> tracker_option_specs() {
       {"cross-limit-sector", "yes|no", "when the rotator limits split its travel (the rotor stop inside them): yes, "
                                        "they are pointing limits the antenna may cross between passes; no (the "
                                        "factory setting), they are barriers (stored)"},
+      {"gps", "SPEC", "a GPS receiver through gpsd: gpsd (localhost:2947), gpsd:HOST or gpsd:HOST:PORT; none: no "
+                      "receiver (stored). Position, fix and time; the clock is checked against GPS time"},
+      {"gps-follow", "yes|no", "yes: the station's position follows the receiver's confirmed fix (stored; menu 4)"},
+      {"gps-threshold", "M", "metres the fix must move before the station follows, 1 to 100000 (default 100; "
+                             "stored)"},
       {"log-level", "LEVEL", "what trakbox.log in the state directory keeps: error, warn, info (default) or "
                              "debug (every remote command and its reply)"},
   };
@@ -149,6 +155,22 @@ void read_refresh(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
     c.elements_timeout_s = static_cast<int>(*v);
 }
 
+// The GPS receiver: its gpsd, whether the station follows it, and how far it must move first.
+void read_gps(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
+  if (const auto g = o.value("gps")) {
+    std::string why;
+    if (*g == "none") c.gps_source = "";
+    else if (const auto e = gps::parse_gps_spec(*g, why)) c.gps_source = e->text();
+    else r.fail("--gps", why);
+  }
+  if (const auto f = o.value("gps-follow")) {
+    if (*f == "yes" || *f == "no") c.gps_follow = *f == "yes";
+    else r.fail("--gps-follow", "expected yes or no; found '" + *f + "'");
+  }
+  c.gps_threshold_m = r.number("gps-threshold", false, "metres, 1 to 100000",
+                               Range{station::kGpsThresholdMinM, station::kGpsThresholdMaxM});
+}
+
 // Front ends that cannot go together.
 void check_front_end(const ParsedOptions& o, OptionReader& r, FrontEnd front_end) {
   const bool service = o.has("service");
@@ -207,6 +229,7 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
     if (*x == "yes" || *x == "no") c.cross_limit_sector = *x == "yes";
     else r.fail("--cross-limit-sector", "expected yes or no; found '" + *x + "'");
   }
+  read_gps(o, r, c);
   if (const auto l = o.value("log-level")) {
     if (const auto level = log_level_named(*l)) c.log_level = *level;
     else r.fail("--log-level", "expected error, warn, info or debug; found '" + *l + "'");
