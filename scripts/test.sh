@@ -5,11 +5,11 @@
 # builds, installs, runs and removes the Debian package.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/install-deps.sh
+scripts/install-deps.sh all
 jobs=$(nproc)
 
 start=$SECONDS
-scripts/build.sh build -DTRAKBOX_WERROR=ON
+scripts/build.sh build -DTRAKBOX_WERROR=ON -DTRAKBOX_TESTS=ON
 echo "== build: $((SECONDS - start)) s"
 (cd build && ctest --output-on-failure -j"$jobs")
 echo "== tests: $((SECONDS - start)) s"
