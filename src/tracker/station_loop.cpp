@@ -238,14 +238,18 @@ std::string StationLoop::status_line() const {
     };
     rig = "D " + mhz(radio.downlink_hz) + " U " + mhz(radio.uplink_hz);
   }
-  std::snprintf(buf, sizeof buf, " %04d/%02d/%02d %02d:%02d:%02d UTC | %s | Rotor %s %s | Radio %s", c.year, c.month,
-                c.day, c.hour, c.minute, static_cast<int>(c.second), sat.c_str(),
-                model_.rotor_control ? "ON " : "OFF", rot.c_str(), rig.c_str());
+  std::snprintf(buf, sizeof buf, " %04d/%02d/%02d %02d:%02d:%02d UTC | %s", c.year, c.month, c.day, c.hour, c.minute,
+                static_cast<int>(c.second), sat.c_str());
   std::string line = buf;
+  // What needs the operator comes before the antenna and radio readings, which are on other
+  // screens too: a terminal narrower than the line cuts its end (issue 30).
+  if (save_failure_) line += " | STATE NOT SAVED";
+  if (!notice_.empty()) line += " | " + notice_;
+  std::snprintf(buf, sizeof buf, " | Rotor %s %s | Radio %s", model_.rotor_control ? "ON " : "OFF", rot.c_str(),
+                rig.c_str());
+  line += buf;
   if (const SatNow* f = tracker_.followed(); f && tracker_.mode() != Mode::off)
     if (const auto note = coverage_note(f->db_index)) line += " | " + *note;
-  if (!notice_.empty()) line += " | " + notice_;
-  if (save_failure_) line += " | STATE NOT SAVED";
   return line;
 }
 
