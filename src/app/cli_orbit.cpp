@@ -12,6 +12,7 @@
 #include <iterator>
 #include <optional>
 
+#include "app/cli_defaults.h"
 #include "app/cli_elements.h"
 #include "app/options.h"
 #include "orbit/element_age.h"
@@ -168,8 +169,8 @@ std::string list_choices(const std::vector<Elements>& sets) {
   return s;
 }
 
-// --sat KEY: the name exactly, then the name ignoring case and surrounding blanks, then the catalog
-// number (digits or Alpha-5). Several matching sets: the newest epoch wins, with a warning.
+}  // namespace
+
 std::optional<std::size_t> match_sat(const std::vector<Elements>& sets, const std::string& key, std::string& why) {
   std::vector<std::size_t> hits;
   for (std::size_t i = 0; i < sets.size(); ++i)
@@ -211,6 +212,8 @@ std::optional<std::size_t> match_sat(const std::vector<Elements>& sets, const st
   return best;
 }
 
+namespace {
+
 // The sets named by --sat (in command-line order), or the only set of the file. With allow_all,
 // no --sat selects every set.
 std::vector<Elements> select_sats(const std::vector<Elements>& sets, const std::vector<std::string>& keys,
@@ -243,30 +246,44 @@ OptionSpec repeatable(OptionSpec spec) {
   return spec;
 }
 
-const OptionSpec kStationOption{"station", "LAT,LON,HEIGHT_M",
-                                "station: degrees north, degrees east, metres above the WGS-84 ellipsoid"};
-std::optional<orbit::Observer> read_station(OptionReader& in) {
-  const char* expected = "LAT,LON,HEIGHT_M (degrees north -90..90, degrees east -180..360, metres -1000..100000)";
-  const auto text = in.text("station", true, expected);
-  if (!text) return std::nullopt;
-  const auto v = to_double_list(*text);
-  if (!v || v->size() != 3 || !Range{-90.0, 90.0}.contains((*v)[0]) || !Range{-180.0, 360.0}.contains((*v)[1]) ||
-      !Range{-1000.0, 100000.0}.contains((*v)[2])) {
-    in.fail("--station", std::string("expected ") + expected + ", found '" + *text + "'");
-    return std::nullopt;
+const OptionSpec kStationOption{"station", "LAT,LON[,HEIGHT_M]|LOCATOR",
+                                "station: degrees north, degrees east (or 48.85N,2.35E), metres above the "
+                                "WGS-84 ellipsoid (default 0), or a Maidenhead locator (JN18du); default the "
+                                "stored station (menu 4)"};
+const OptionSpec kStateOption{"state", "DIR", "the state the menus keep (default as for the menus): its station, "
+                                              "database and tracking list stand in for what is not given"};
+// --station, else the stored station.
+std::optional<orbit::Observer> read_station(OptionReader& in, StoredStation& stored) {
+  const auto text = in.text("station", false, "");
+  if (!text) {
+    const auto o = stored.station();
+    if (!o) in.fail("--station", "missing, and " + stored.error());
+    return o;
   }
-  double lon = (*v)[1];
-  if (lon > 180.0) lon -= 360.0;
-  return orbit::Observer{(*v)[0], lon, (*v)[2]};
+  const Parsed<orbit::Observer> p = parse_station_text(*text);
+  if (!p.value) in.fail("--station", p.error);
+  return p.value;
 }
 
-std::optional<UtcTime> read_time(OptionReader& in, std::string_view name) {
-  const char* expected = "ISO8601 UTC (YYYY-MM-DD or YYYY-MM-DDTHH:MM[:SS[.fff]][Z])";
-  const auto text = in.text(name, true, expected);
+// --NAME as a time (ISO 8601, now, +2h), else now.
+std::optional<UtcTime> read_time(OptionReader& in, std::string_view name, UtcTime now) {
+  const auto text = in.text(name, false, "");
+  if (!text) return now;
+  const Parsed<UtcTime> p = parse_time_text(*text, now);
+  if (!p.value) in.fail(OptionReader::option_label(name), p.error);
+  return p.value;
+}
+
+UtcTime wall_now() {
+  return std::chrono::time_point_cast<std::chrono::microseconds>(std::chrono::system_clock::now());
+}
+
+std::optional<std::int64_t> read_frequency(OptionReader& in, std::string_view name) {
+  const auto text = in.text(name, false, "");
   if (!text) return std::nullopt;
-  const auto t = orbit::parse_iso8601(*text);
-  if (!t) in.fail(OptionReader::option_label(name), std::string("expected ") + expected + ", found '" + *text + "'");
-  return t;
+  const Parsed<std::int64_t> p = parse_frequency_text(*text);
+  if (!p.value) in.fail(OptionReader::option_label(name), p.error);
+  return p.value;
 }
 
 const OptionSpec kDut1Option{"dut1", "S", "UT1-UTC in seconds (default 0)"};
@@ -289,6 +306,7 @@ struct Command {
   const char* synopsis;
   const char* description;
   std::vector<OptionSpec> specs;
+  bool stored_database = false;  // ELEMENTS may be left out: the stored database (--state)
 };
 
 std::string usage(const Command& c) {
@@ -317,9 +335,11 @@ struct CommandRun {
       return;
     }
     const auto& pos = parsed.positional();
-    if (pos.empty()) done = usage_error(c, {"ELEMENTS", std::string("missing; expected ") + kElementsHelp});
+    if (pos.empty() && !c.stored_database)
+      done = usage_error(c, {"ELEMENTS", std::string("missing; expected ") + kElementsHelp});
     else if (pos.size() > 1) done = usage_error(c, {pos[1], "unexpected argument (ELEMENTS is given once)"});
-    else path = pos[0];
+    else if (!pos.empty()) path = pos[0];
+    if (const auto dir = parsed.value("state")) stored = StoredStation(std::filesystem::path(*dir));
   }
   CommandRun(const CommandRun&) = delete;
   CommandRun& operator=(const CommandRun&) = delete;
@@ -331,6 +351,7 @@ struct CommandRun {
   // the command cannot go on.
   std::optional<int> load_sats(bool allow_all, std::vector<Elements>& sats) {
     if (!in.ok()) return error(*in.error());
+    if (path.empty()) return load_stored(allow_all, sats);
     const LoadedElements loaded = load_elements(path, !parsed.has("no-checksum"));
     if (loaded.error) return error(*loaded.error);
     sats = select_sats(loaded.sets, parsed.values("sat"), allow_all, path, in);
@@ -338,9 +359,26 @@ struct CommandRun {
     return std::nullopt;
   }
 
+  // No ELEMENTS: the stored database; without --sat its tracking list (all of it with allow_all,
+  // else its first satellite).
+  std::optional<int> load_stored(bool allow_all, std::vector<Elements>& sats) {
+    const auto keys = parsed.values("sat");
+    const auto sets = keys.empty() ? stored.tracking_list() : stored.database();
+    if (!sets) return error({"ELEMENTS", "missing, and " + stored.error()});
+    if (sets->empty()) return error({"ELEMENTS", "missing, and the stored database is empty (" + stored.source() + ")"});
+    if (keys.empty()) {
+      sats = allow_all ? *sets : std::vector<Elements>{sets->front()};
+      return std::nullopt;
+    }
+    sats = select_sats(*sets, keys, allow_all, "the stored database (" + stored.source() + ")", in);
+    if (!in.ok()) return error(*in.error());
+    return std::nullopt;
+  }
+
   const Command& command;
   ParsedOptions parsed;  // --no-checksum is read from here by load_sats
-  std::string path;  // ELEMENTS
+  StoredStation stored{std::nullopt};  // --state
+  std::string path;  // ELEMENTS; empty: the stored database
   OptionReader in{parsed};
   std::optional<int> done;
 };
@@ -433,24 +471,30 @@ namespace {
 
 const Command kSchedule{
     "schedule",
-    "ELEMENTS [--sat NAME|NUMBER] --station LAT,LON,HEIGHT_M --start ISO8601 --step SECONDS --count N\n"
-    "                        [--freq HZ] [--dut1 S] [--csv|--json] [--no-checksum]",
+    "[ELEMENTS] [--sat NAME|NUMBER] [--station LAT,LON[,HEIGHT_M]|LOCATOR] [--start ISO8601|now|+2h]\n"
+    "                        --step SECONDS --count N [--freq HZ|MHZ.] [--state DIR] [--dut1 S] [--csv|--json]\n"
+    "                        [--no-checksum]",
     "The TrakBox menu-2 schedule: where one satellite is, seen from the station, at --count times\n"
     "--step seconds apart. Azimuth/elevation (deg), phase (256ths of an orbit), Doppler shift at\n"
     "--freq (Hz, + approaching), range (km), range rate (km/s, + receding), and the sub-satellite\n"
     "point (altitude km above the WGS-84 ellipsoid, latitude, longitude). CSV and JSON columns:\n"
-    "utc, az_deg, el_deg, range_km, range_rate_km_s, alt_km, lat_deg, lon_deg, phase256, doppler_hz.",
+    "utc, az_deg, el_deg, range_km, range_rate_km_s, alt_km, lat_deg, lon_deg, phase256, doppler_hz.\n"
+    "Without ELEMENTS, the stored database (--state) and, without --sat, the first of its tracking list.",
     {kSatOption,
      kStationOption,
-     {"start", "ISO8601", "first time, UTC (2018-01-21T03:37:10Z)"},
+     {"start", "ISO8601|now|+2h", "first time, UTC (2018-01-21T03:37:10Z), now (the default), or now plus an "
+                                  "amount (+2h, +30m, -1d)"},
      {"step", "SECONDS", "seconds between rows (> 0)"},
      {"count", "N", "number of rows (1..10000000)"},
-     {"freq", "HZ", "downlink frequency in Hz for the Doppler column (default: none, 0)"},
+     {"freq", "HZ|MHZ.", "downlink frequency for the Doppler column: hertz (437800000), MHz with a decimal "
+                         "point (437.8), or with a unit (437.8MHz) (default: none, 0)"},
+     kStateOption,
      kDut1Option,
      kCsvOption,
      {"json", "", "a JSON array of row objects"},
      kNoChecksumOption,
-     kHelpOption}};
+     kHelpOption},
+    true};
 
 }  // namespace
 
@@ -458,11 +502,11 @@ int run_schedule(std::vector<std::string> args) {
   CommandRun run(kSchedule, args);
   if (run.done) return *run.done;
   OptionReader& in = run.in;
-  const auto station = read_station(in);
-  const auto start = read_time(in, "start");
+  const auto station = read_station(in, run.stored);
+  const auto start = read_time(in, "start", wall_now());
   const auto step_s = in.number("step", true, "SECONDS, a number > 0 (at most one day)", Range{0.0, 86400.0, true});
   const auto count = in.integer("count", true, "N, a whole number 1..10000000", Range{1.0, 1e7});
-  const auto freq = in.integer("freq", false, "HZ, a whole number of hertz >= 0", Range{0.0, 1e12});
+  const auto freq = read_frequency(in, "freq");
   const orbit::EarthOrientation eo = read_dut1(in);
   const OutputFormat format = read_format(in);
   std::chrono::microseconds step{0};
@@ -547,23 +591,27 @@ namespace {
 
 const Command kPasses{
     "passes",
-    "ELEMENTS [--sat NAME|NUMBER]... --station LAT,LON,HEIGHT_M --start ISO8601 --hours H\n"
-    "                      [--min-el DEG] [--dut1 S] [--csv|--json] [--no-checksum]",
+    "[ELEMENTS] [--sat NAME|NUMBER]... [--station LAT,LON[,HEIGHT_M]|LOCATOR]\n"
+    "                      [--start ISO8601|now|+2h] [--hours H] [--min-el DEG] [--state DIR] [--dut1 S]\n"
+    "                      [--csv|--json] [--no-checksum]",
     "Passes over the station between --start and --start + --hours, sorted by AOS: AOS and LOS are\n"
     "the crossings of -2.0 deg elevation (the manual's AOS rule), TCA the time of maximum elevation.\n"
     "Without --sat, every satellite of the file. CSV and JSON columns: sat, aos_utc, tca_utc, los_utc,\n"
     "max_el_deg, aos_az_deg, los_az_deg. A pass already up at --start begins there; one still up at\n"
-    "the end stops there (marked < and > in the table).",
+    "the end stops there (marked < and > in the table). Without ELEMENTS, the stored database (--state)\n"
+    "and, without --sat, its tracking list; without --station the stored station; from now for 24 h.",
     {repeatable(kSatOption),
      kStationOption,
-     {"start", "ISO8601", "start of the window, UTC"},
-     {"hours", "H", "length of the window in hours (> 0, at most 8784)"},
+     {"start", "ISO8601|now|+2h", "start of the window, UTC, now (the default), or now plus an amount (+2h)"},
+     {"hours", "H", "length of the window in hours (> 0, at most 8784; default 24)"},
      {"min-el", "DEG", "only passes whose maximum elevation reaches DEG (default: all)"},
      kDut1Option,
      kCsvOption,
      {"json", "", "a JSON array of pass objects"},
+     kStateOption,
      kNoChecksumOption,
-     kHelpOption}};
+     kHelpOption},
+    true};
 
 struct SatPass {
   std::string sat;
@@ -628,16 +676,17 @@ int run_passes(std::vector<std::string> args) {
   CommandRun run(kPasses, args);
   if (run.done) return *run.done;
   OptionReader& in = run.in;
-  const auto station = read_station(in);
-  const auto start = read_time(in, "start");
-  const auto hours = in.number("hours", true, "H, a number of hours > 0 (at most 8784)", Range{0.0, 8784.0, true});
+  const auto station = read_station(in, run.stored);
+  const auto start = read_time(in, "start", wall_now());
+  const auto hours = in.number("hours", false, "H, a number of hours > 0 (at most 8784)", Range{0.0, 8784.0, true})
+                         .value_or(24.0);
   const auto min_el = in.number("min-el", false, "DEG, an elevation -90..90", Range{-90.0, 90.0});
   const orbit::EarthOrientation eo = read_dut1(in);
   const OutputFormat format = read_format(in);
   std::vector<Elements> sats;
   if (auto done = run.load_sats(true, sats)) return *done;
 
-  const UtcTime stop = orbit::add_seconds(*start, *hours * 3600.0);
+  const UtcTime stop = orbit::add_seconds(*start, hours * 3600.0);
   orbit::PassOptions options;
   options.horizon_deg = orbit::kAosThresholdDeg;
   if (min_el) options.min_max_elevation_deg = *min_el;
@@ -676,9 +725,10 @@ int run_passes(std::vector<std::string> args) {
       out("\n]\n");
       break;
     case OutputFormat::table: {
-      out(strprintf("station %.4f, %.4f, %.0f m  from %s for %g h  AOS/LOS at %.1f deg\n", station->lat_deg,
-                    station->lon_deg, station->height_m, orbit::format_iso8601(*start, 0).c_str(), *hours,
-                    orbit::kAosThresholdDeg));
+      out(strprintf("station %.4f, %.4f, %.0f m%s  from %s for %g h  AOS/LOS at %.1f deg\n", station->lat_deg,
+                    station->lon_deg, station->height_m,
+                    run.parsed.has("station") ? "" : (" (" + run.stored.source() + ")").c_str(),
+                    orbit::format_iso8601(*start, 0).c_str(), hours, orbit::kAosThresholdDeg));
       out(elements_ages(sats, *start));
       out(strprintf("%-24s  %-20s  %-9s  %-9s  %6s  %6s  %6s  %8s\n", "SAT", "AOS (UTC)", "TCA", "LOS", "MAX EL",
                     "AOS AZ", "LOS AZ", "DURATION"));
@@ -702,6 +752,7 @@ std::string orbit_commands_summary() {
   return "  propagate   SGP4 state vectors (TEME) from minutes after epoch, as Vallado's tcppver.out\n"
          "  schedule    the menu-2 table: look angles, phase, Doppler, range and sub-point at fixed steps\n"
          "  passes      AOS, TCA and LOS of passes over the station\n"
+         "  next        the next pass of each satellite (the tracking list), one line each; --watch\n"
          "  elements    list the element sets of files (age, format, orbit), or convert them (--to)\n";
 }
 
