@@ -189,7 +189,7 @@ bool StoredStation::load() {
   const std::filesystem::path dir = dir_ ? *dir_ : store::default_state_directory();
   store::Model m;
   const store::StateFile file(dir);
-  const store::LoadOutcome loaded = file.load();
+  const store::LoadOutcome loaded = file.load(/*read_only=*/true);
   if (loaded.kind == store::LoadOutcome::Kind::loaded) {
     try {
       m = store::model_from_json(loaded.data);

@@ -130,9 +130,32 @@ const char* const kElementsHelp =
 struct LoadedElements {
   std::vector<Elements> sets;
   std::optional<ArgError> error;
+  // With `defer`: what would have been reported on stderr, for the caller to report or sum up.
+  std::vector<orbit::ParseProblem> problems;
 };
 
-LoadedElements load_elements(const std::string& path, bool verify_checksums) {
+// Problems the caller deferred: every one when the chosen satellites were not found, else one line
+// (the sets it refused are other satellites than the ones asked for; issue 30: Vallado's file made
+// the README's propagate example print three checksum errors for sets it never used).
+void report_deferred(const LoadedElements& l, const std::string& path, bool chosen) {
+  if (l.problems.empty()) return;
+  if (!chosen) {
+    report_problems(l.problems, stderr);
+    return;
+  }
+  std::string lines;
+  int refused = 0;
+  for (const auto& p : l.problems)
+    if (!p.warning) {
+      ++refused;
+      lines += (lines.empty() ? "" : ", ") + std::to_string(p.line) + (p.field.empty() ? "" : " (" + p.field + ")");
+    }
+  if (refused > 0)
+    std::fprintf(stderr, "trakbox: note: %s: %d other set(s) refused, at line %s (trakbox elements FILE lists them)\n",
+                 path.c_str(), refused, lines.c_str());
+}
+
+LoadedElements load_elements(const std::string& path, bool verify_checksums, bool defer = false) {
   LoadedElements r;
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) {
@@ -151,8 +174,9 @@ LoadedElements load_elements(const std::string& path, bool verify_checksums) {
   }
   // parse_elements recognises the format (OMM encodings, AMSAT blocks, gpredict keys, NASA lines).
   orbit::ParseResult parsed = orbit::parse_elements(text, path, checked_options(verify_checksums));
-  report_problems(parsed.problems, stderr);
-  if (!verify_checksums) report_accepted_checksums(text, path, stderr);
+  if (defer) r.problems = parsed.problems;
+  else report_problems(parsed.problems, stderr);
+  if (!verify_checksums && !defer) report_accepted_checksums(text, path, stderr);
   if (parsed.sets.empty()) {
     r.error = ArgError{"ELEMENTS", "no usable element set in '" + path + "'; expected " + kElementsHelp};
     return r;
@@ -352,9 +376,14 @@ struct CommandRun {
   std::optional<int> load_sats(bool allow_all, std::vector<Elements>& sats) {
     if (!in.ok()) return error(*in.error());
     if (path.empty()) return load_stored(allow_all, sats);
-    const LoadedElements loaded = load_elements(path, !parsed.has("no-checksum"));
-    if (loaded.error) return error(*loaded.error);
+    const bool named = !parsed.values("sat").empty();
+    const LoadedElements loaded = load_elements(path, !parsed.has("no-checksum"), named);
+    if (loaded.error) {
+      report_deferred(loaded, path, false);
+      return error(*loaded.error);
+    }
     sats = select_sats(loaded.sets, parsed.values("sat"), allow_all, path, in);
+    report_deferred(loaded, path, in.ok());
     if (!in.ok()) return error(*in.error());
     return std::nullopt;
   }
