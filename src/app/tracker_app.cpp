@@ -25,6 +25,8 @@
 #include "satrak/server.h"
 #include "satrak/unit.h"
 #include "station/clock.h"
+#include "app/stored_drivers.h"
+#include "store/drivers.h"
 #include "tracker/elements_refresh.h"
 #include "tracker/station_loop.h"
 
@@ -74,6 +76,7 @@ struct Startup {
   bool ram_lost = false;           // the state did not load: defaults, the damaged file kept aside
   std::string kept;                // where it was kept
   std::vector<std::string> notes;  // shown to the operator (and logged by a service)
+  std::vector<std::string> drivers_said;  // the stored drivers in use: under the sign-on banner
 };
 
 // The battery-backed RAM test: the stored state, or factory defaults with the shipped database.
@@ -246,7 +249,9 @@ std::unique_ptr<term::Terminal> open_terminal(StationApp& app, const TrackerConf
 // The menus (or standalone tracking, or host mode) until the operator leaves or a signal comes.
 void run_front_end(StationApp& app, const TrackerConfig& c, const Startup& s, term::Terminal& terminal) {
   menus::Services services{app.model(), app.clock(), app.tracker(), app.station(), [&app] { return app.save(); },
-                           kVersion};
+                           kVersion, {}};
+  // Over a serial line the main menu's Q detaches: the line is the box's own terminal.
+  if (c.tty) services.leave = menus::detach_serial_line;
   try {
     if (s.ram_lost) {
       terminal.line("Data in RAM was lost !! Set default parameter !");
@@ -257,6 +262,7 @@ void run_front_end(StationApp& app, const TrackerConfig& c, const Startup& s, te
     else if (c.standalone) menus::standalone(terminal, services, *c.standalone);
     else {
       menus::sign_on(terminal, services);
+      for (const auto& line : s.drivers_said) terminal.line(line);
       menus::main_menu(terminal, services);
     }
   } catch (const menus::InputClosed&) {
@@ -297,12 +303,22 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
     std::fputs(outcome.print.c_str(), stdout);
     return kExitOk;
   }
-  const TrackerConfig& c = *outcome.config;
+  TrackerConfig c = *outcome.config;
   if (auto err = prepare_state_dir(c.state_dir)) return usage_error(*err);
   auto log = open_log(c);
   store::StateFile file(c.state_dir);
   Startup startup = load_state(file, c, *log);
   if (c.cross_limit_sector) startup.model.rotator.cross_limit_sector = *c.cross_limit_sector;
+  {
+    std::vector<std::string> said;
+    if (auto err = apply_stored_drivers(c, startup.model, said)) return usage_error(*err);
+    for (const auto& line : said) {
+      log->info("{}", line);
+      if (c.service) continue;
+      if (c.front_end == FrontEnd::host) std::fprintf(stderr, "trakbox: %s\n", line.c_str());
+      else startup.drivers_said.push_back(line);
+    }
+  }
 
   StationApp app(startup.model, file, log);
   if (auto err = build_station(app, c)) return usage_error(*err);

@@ -85,21 +85,38 @@ std::optional<spdlog::level::level_enum> log_level_named(const std::string& l) {
   return std::nullopt;
 }
 
+}  // namespace
+
+std::optional<std::string> set_rotator_spec(TrackerConfig& c, const std::string& text) {
+  c.satrak_rotator.reset();
+  c.rotator.reset();
+  if (text.rfind("satrak:", 0) == 0) {
+    std::string err;
+    c.satrak_rotator = satrak::parse_rotator_spec(text, err);
+    if (!c.satrak_rotator) return err;
+    return std::nullopt;
+  }
+  rotator::SpecResult rot_spec = rotator::parse_rotator_spec(text);
+  c.rotator = rot_spec.spec;
+  if (!rot_spec.spec) return rot_spec.error;
+  return std::nullopt;
+}
+
+std::optional<std::string> set_radio_spec(TrackerConfig& c, const std::string& text) {
+  const auto radio_spec = radio::parse_radio_spec(text);
+  if (!radio_spec.spec) return radio_spec.error;
+  c.radio = *radio_spec.spec;
+  return std::nullopt;
+}
+
+namespace {
+
 // The device specs, checked before anything starts.
 void read_devices(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
-  const std::string rot_text = o.value("rotator").value_or("simulated");
-  if (rot_text.rfind("satrak:", 0) == 0) {
-    std::string err;
-    c.satrak_rotator = satrak::parse_rotator_spec(rot_text, err);
-    if (!c.satrak_rotator) r.fail("--rotator", err);
-  } else {
-    rotator::SpecResult rot_spec = rotator::parse_rotator_spec(rot_text);
-    c.rotator = rot_spec.spec;
-    if (!rot_spec.spec) r.fail("--rotator", rot_spec.error);
-  }
-  const auto radio_spec = radio::parse_radio_spec(o.value("radio").value_or("simulated"));
-  if (radio_spec.spec) c.radio = *radio_spec.spec;
-  else r.fail("--radio", radio_spec.error);
+  c.rotator_text = o.value("rotator");
+  c.radio_text = o.value("radio");
+  if (const auto err = set_rotator_spec(c, c.rotator_text.value_or("simulated"))) r.fail("--rotator", *err);
+  if (const auto err = set_radio_spec(c, c.radio_text.value_or("simulated"))) r.fail("--radio", *err);
   if (const auto up = o.value("uplink-radio")) {
     c.uplink_radio_text = *up == "none" ? "" : *up;
     if (!c.uplink_radio_text->empty()) {

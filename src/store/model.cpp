@@ -274,6 +274,7 @@ json to_json(const Model& m) {
                       {"output_on_el_deg", m.pass_events.output_on_el_deg},
                       {"output_off_el_deg", m.pass_events.output_off_el_deg}};
   j["rotator_error_detection"] = m.rotator_error_detection;
+  j["drivers"] = {{"rotator", m.rotator_driver}, {"radio", m.radio_driver}};
   return j;
 }
 
@@ -440,6 +441,11 @@ Model model_from_json(const json& j) {
     m.pass_events.output_off_el_deg = num(p, "pass_events", "output_off_el_deg", -90, 90);
   }
   if (j.contains("rotator_error_detection")) m.rotator_error_detection = boolean(j, "", "rotator_error_detection");
+  // Absent in state files written before the drivers were remembered (issue 30).
+  if (j.contains("drivers")) {
+    m.rotator_driver = text(j["drivers"], "drivers", "rotator", 256);
+    m.radio_driver = text(j["drivers"], "drivers", "radio", 256);
+  }
   return m;
 }
 

@@ -66,7 +66,7 @@ std::string refresh_status_text(const RefreshState& s) {
   std::snprintf(old, sizeof old, "ELEMENTS %.0f DAYS OLD", *s.stale_days);
   if (!s.has_sources) return old + std::string(", NO REFRESH SOURCE") + todo;
   if (s.running) return old + std::string(", REFRESHING");
-  if (!s.attempted) return old + std::string(", REFRESH PENDING");
+  if (!s.attempted) return old + std::string(", NO REFRESH SINCE START") + todo;
   if (s.failed) return old + std::string(", REFRESH FAILED") + todo;
   return old + std::string(", SOURCE HAS NO NEWER") + todo;
 }

@@ -27,7 +27,7 @@ TEST_CASE("refresh status: old elements say their age and the refresh's state") 
   s.stale_days = 190.3;
   CHECK(refresh_status_text(s) == "ELEMENTS 190 DAYS OLD, NO REFRESH SOURCE, SEE MENU 3-5");
   s.has_sources = true;
-  CHECK(refresh_status_text(s) == "ELEMENTS 190 DAYS OLD, REFRESH PENDING");
+  CHECK(refresh_status_text(s) == "ELEMENTS 190 DAYS OLD, NO REFRESH SINCE START, SEE MENU 3-5");
   s.running = true;
   CHECK(refresh_status_text(s) == "ELEMENTS 190 DAYS OLD, REFRESHING");
   s.running = false;
