@@ -6,6 +6,7 @@
 
 #include "app/station_app.h"
 #include "app/tracker_config.h"
+#include "station/station.h"
 #include "store/model.h"
 #include "store/state_file.h"
 #include "util/text.h"
@@ -19,25 +20,12 @@ std::string upper(std::string_view s) {
   return r;
 }
 
-// "48.85", "48.85N", "48.85 S", "-2.35": the value with the hemisphere's sign. `pos`/`neg` are the
-// letters allowed ('N','S' or 'E','W'); `letter` says whether one was written.
+// The value with the hemisphere's sign, and whether a letter was written.
 std::optional<double> signed_degrees(std::string_view item, char pos, char neg, bool& letter) {
-  std::string s(text::trim(item));
-  letter = false;
-  if (s.empty()) return std::nullopt;
-  const char last = static_cast<char>(std::toupper(static_cast<unsigned char>(s.back())));
-  double sign = 1.0;
-  if (last == pos || last == neg) {
-    letter = true;
-    sign = last == neg ? -1.0 : 1.0;
-    s = std::string(text::trim(std::string_view(s).substr(0, s.size() - 1)));
-    if (!s.empty() && (s[0] == '-' || s[0] == '+')) return std::nullopt;  // 48.85S or -48.85, not both
-  }
-  if (s.empty() || !(std::isdigit(static_cast<unsigned char>(s[0])) || s[0] == '-' || s[0] == '+' || s[0] == '.'))
-    return std::nullopt;
-  const auto v = text::parse_double(s);
-  if (!v) return std::nullopt;
-  return sign * *v;
+  const std::string_view t = text::trim(item);
+  letter = !t.empty() && (std::toupper(static_cast<unsigned char>(t.back())) == pos ||
+                          std::toupper(static_cast<unsigned char>(t.back())) == neg);
+  return station::parse_hemisphere_degrees(t, pos, neg);
 }
 
 std::vector<std::string_view> split(std::string_view s, char sep) {

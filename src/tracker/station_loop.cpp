@@ -247,13 +247,13 @@ std::string StationLoop::status_line() const {
   // screens too: a terminal narrower than the line cuts its end (issue 30).
   if (save_failure_) line += " | STATE NOT SAVED";
   if (!notice_.empty()) line += " | " + notice_;
+  if (const SatNow* f = tracker_.followed(); f && tracker_.mode() != Mode::off)
+    if (const auto note = coverage_note(f->db_index)) line += " | " + *note;
   // The drivers by name (issue 30): "Rotor SIM ON ...", "Radio hamlib 3081 D ...".
   std::snprintf(buf, sizeof buf, " | Rotor %s %s %s | Radio %s %s", store::driver_label(model_.rotator_driver).c_str(),
                 model_.rotor_control ? "ON " : "OFF", rot.c_str(), store::driver_label(model_.radio_driver).c_str(),
                 rig.c_str());
   line += buf;
-  if (const SatNow* f = tracker_.followed(); f && tracker_.mode() != Mode::off)
-    if (const auto note = coverage_note(f->db_index)) line += " | " + *note;
   return line;
 }
 

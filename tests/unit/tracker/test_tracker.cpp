@@ -333,8 +333,8 @@ TEST_CASE("Limits that split the travel, as barriers: the antenna keeps to its p
   CHECK(r.hi <= 170.5);  // never into the excluded 350..10 (travel 170..190)
   CHECK(r.lo >= 150.0);
   REQUIRE(r.note);
-  CHECK(*r.note == "antenna follows 20% (12:57:00-12:59:02) in 180.0-350.0");
-  CHECK(r.status.find(" | antenna follows 20% (12:57:00-12:59:02) in 180.0-350.0") != std::string::npos);
+  CHECK(*r.note == "antenna on target 12:57:00-12:59:02 (20% of the pass): it reaches azimuth 180.0-350.0");
+  CHECK(r.status.find(" | antenna on target 12:57:00-12:59:02 (20% of the pass): it reaches azimuth 180.0-350.0") != std::string::npos);
   CHECK(r.err_end > 40.0);  // held at 350 while the ISS is in the east
 }
 
@@ -343,6 +343,6 @@ TEST_CASE("Limits that split the travel, crossing allowed: the piece that covers
   CHECK(r.lo >= 189.5);  // in 10..180 for the whole pass: crossed before AOS, not during it
   CHECK(r.hi <= 360.0);
   REQUIRE(r.note);
-  CHECK(*r.note == "antenna follows 64% (13:00:53-13:07:37) in 10.0-180.0");
+  CHECK(*r.note == "antenna on target 13:00:53-13:07:37 (64% of the pass): it reaches azimuth 10.0-180.0");
   CHECK(r.err_end < 2.0);
 }
