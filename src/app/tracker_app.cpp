@@ -172,8 +172,7 @@ std::optional<std::string> start_satrak(StationApp& app, const TrackerConfig& c,
   try {
     out.satrak = std::make_unique<satrak::Server>(app.io(), *out.satrak_unit, so);
     out.satrak_unit->start();
-    app.set_satrak(out.satrak_unit.get());
-    app.log().info("Satrak server on {}:{}", so.address, out.satrak->port());
+    app.set_satrak(out.satrak_unit.get());  // the server logs "satrak: listening on ..." itself
   } catch (const std::exception& e) {
     const std::string msg =
         "Satrak server not started on " + so.address + ":" + std::to_string(c.satrak_port) + ": " + e.what();
@@ -320,6 +319,15 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
     }
   }
 
+  // "trakbox stopped" is the log's last line: written after the station, its drivers' workers and
+  // the servers are gone, whose last words (a link closing) came after it before (issue 30).
+  struct StoppedLine {
+    std::shared_ptr<spdlog::logger> log;
+    bool started = false;
+    ~StoppedLine() {
+      if (started) log->info("trakbox stopped");
+    }
+  } stopped_line{log};
   StationApp app(startup.model, file, log);
   if (auto err = build_station(app, c)) return usage_error(*err);
   configure_refresh(app, c);
@@ -335,6 +343,7 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   app.start(std::chrono::milliseconds(c.tick_ms));
   if (startup.ram_lost || startup.fresh) app.save();
   log->info("trakbox {} started, state {}", kVersion, file.path().string());
+  stopped_line.started = true;
 
   int code = kExitOk;
   if (c.service) {
@@ -355,7 +364,6 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   }
   app.set_satrak(nullptr);
   servers.satrak_unit.reset();
-  log->info("trakbox stopped");
   return code;
 }
 
