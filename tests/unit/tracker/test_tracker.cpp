@@ -110,6 +110,30 @@ TEST_CASE("The rotor follows above the rotor start elevation: waits at AOS while
   CHECK(t.tick().antenna == A::point);
 }
 
+TEST_CASE("The station moved (menu 4): the pass shown is the new station's, not the one found for the old") {
+  store::Model m = shipped(station::RotorStart::south, 27.391, 128.657, 50.0);
+  const auto iss = m.db.find("ISS");
+  REQUIRE(iss);
+  station::ManualClock clock(orbit::from_civil(2026, 5, 21, 0, 0, 0));
+  tracker::Tracker t(m, clock);
+  t.track_single(*iss);
+  t.tick();
+  REQUIRE(t.followed()->pass);
+  const orbit::Pass old_place = *t.followed()->pass;
+  m.station.lat_deg = 48.85;  // Paris
+  m.station.lon_deg = 2.35;
+  m.station.height_m = 35.0;
+  t.tick();
+  REQUIRE(t.followed()->pass);
+  orbit::PassOptions po;
+  po.precision_s = 1.0;
+  const auto expected = orbit::next_pass(orbit::Sgp4(m.db.satellites[static_cast<std::size_t>(*iss)].elements),
+                                         m.station.observer(), clock.now(), 10.0, po);
+  REQUIRE(expected);
+  CHECK(t.followed()->pass->aos != old_place.aos);
+  CHECK(std::abs(orbit::minutes_between(t.followed()->pass->aos, expected->aos)) * 60.0 < 1.0);
+}
+
 TEST_CASE("The clock set back (menu 5): the pass shown is the one then, not the one found from later") {
   store::Model m = shipped(station::RotorStart::south, 27.391, 128.657, 50.0);
   const auto iss = m.db.find("ISS");
