@@ -195,12 +195,18 @@ bool StoredStation::load() {
     return false;
   }
   station_ = m.station.observer();
+  model_ = std::make_shared<store::Model>(m);
   for (const auto& s : m.db.satellites) db_.push_back(s.elements);
   for (const int i : m.db.selected)
     if (i >= 0 && static_cast<std::size_t>(i) < db_.size()) list_.push_back(db_[static_cast<std::size_t>(i)]);
   if (list_.empty()) list_ = db_;
   ok_ = true;
   return true;
+}
+
+const store::Model* StoredStation::model() {
+  if (!load()) return nullptr;
+  return model_.get();
 }
 
 std::optional<orbit::Observer> StoredStation::station() {

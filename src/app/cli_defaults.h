@@ -11,6 +11,7 @@
 #pragma once
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -19,6 +20,7 @@
 #include "orbit/elements.h"
 #include "orbit/observe.h"
 #include "orbit/time.h"
+#include "store/model.h"
 
 namespace tb::app {
 
@@ -47,6 +49,8 @@ class StoredStation {
   std::optional<std::vector<orbit::Elements>> database();
   std::optional<std::vector<orbit::Elements>> tracking_list();
   // "state /var/lib/trakbox" or "shipped data (no state in DIR yet)": where the values came from.
+  // The whole stored model (the rotator's settings for the pass plots' antenna plan).
+  const store::Model* model();
   const std::string& source() const { return source_; }
   const std::string& error() const { return error_; }
 
@@ -55,6 +59,7 @@ class StoredStation {
   std::optional<std::filesystem::path> dir_;
   bool tried_ = false, ok_ = false;
   orbit::Observer station_;
+  std::shared_ptr<store::Model> model_;
   std::vector<orbit::Elements> db_, list_;
   std::string source_, error_;
 };

@@ -14,6 +14,7 @@
 
 #include "app/cli_defaults.h"
 #include "app/cli_elements.h"
+#include "app/pass_plot.h"
 #include "app/options.h"
 #include "orbit/element_age.h"
 #include "orbit/elements.h"
@@ -22,6 +23,8 @@
 #include "orbit/sgp4_batch.h"
 #include "orbit/sgp4.h"
 #include "orbit/state_lines.h"
+#include "rotator/pass_plan.h"
+#include "store/model.h"
 #include "util/text.h"
 
 namespace tb::app {
@@ -637,6 +640,8 @@ const Command kPasses{
      kDut1Option,
      kCsvOption,
      {"json", "", "a JSON array of pass objects"},
+     {"plot", "FILE", "draw each pass as a polar plot, PNG or SVG by FILE's extension (several passes: FILE-1.png, "
+                      "...): track, AOS/TCA/LOS, the antenna's planned path for the stored rotator"},
      kStateOption,
      kNoChecksumOption,
      kHelpOption},
@@ -645,7 +650,37 @@ const Command kPasses{
 struct SatPass {
   std::string sat;
   orbit::Pass pass;
+  std::size_t set = 0;  // index into the satellites' sets
 };
+
+// --plot FILE: each pass as a polar plot (pass_plot.h); FILE itself for one pass, FILE-N.EXT for
+// several. The antenna's plan is the stored rotator's (the factory one when no state is readable).
+int plot_passes(const std::string& file, const std::vector<SatPass>& passes, const std::vector<Elements>& sats,
+                const orbit::Observer& station, StoredStation& stored) {
+  const store::Model* m = stored.model();
+  const store::Model factory = store::factory_defaults();
+  if (!m) m = &factory;
+  const rotator::PassGeometry geometry = rotator::PassGeometry::from(rotator::AdcModel(m->rotator, m->station.rotor_start));
+  const std::size_t dot = file.find_last_of('.');
+  for (std::size_t i = 0; i < passes.size(); ++i) {
+    const SatPass& s = passes[i];
+    PassPicture pic;
+    pic.title = s.sat;
+    pic.pass = s.pass;
+    pic.track = sample_pass(orbit::Sgp4(sats[s.set]), station, s.pass);
+    pic.plan = rotator::plan_pass(pic.track, geometry, std::nullopt);
+    const std::string name = passes.size() == 1 || dot == std::string::npos
+                                 ? file
+                                 : file.substr(0, dot) + "-" + std::to_string(i + 1) + file.substr(dot);
+    if (const auto err = write_pass_plot(pic, name)) {
+      std::fprintf(stderr, "trakbox passes: --plot: %s\n", err->c_str());
+      return kExitFailure;
+    }
+    std::fprintf(stderr, "trakbox passes: %s %s: %s\n", s.sat.c_str(), orbit::format_iso8601(s.pass.aos, 0).c_str(),
+                 name.c_str());
+  }
+  return kExitOk;
+}
 
 // The header line(s) with the sets' ages at the window's start: one per set for a few, else the range.
 std::string elements_ages(const std::vector<Elements>& sats, UtcTime at) {
@@ -712,6 +747,9 @@ int run_passes(std::vector<std::string> args) {
   const auto min_el = in.number("min-el", false, "DEG, an elevation -90..90", Range{-90.0, 90.0});
   const orbit::EarthOrientation eo = read_dut1(in);
   const OutputFormat format = read_format(in);
+  const auto plot = in.text("plot", false, "");
+  if (plot && plot->find_last_of('.') == std::string::npos)
+    in.fail("--plot", "expected FILE.png or FILE.svg, found '" + *plot + "'");
   std::vector<Elements> sats;
   if (auto done = run.load_sats(true, sats)) return *done;
 
@@ -721,13 +759,14 @@ int run_passes(std::vector<std::string> args) {
   if (min_el) options.min_max_elevation_deg = *min_el;
   std::vector<SatPass> passes;
   int status = kExitOk;
-  for (const Elements& e : sats) {
+  for (std::size_t set = 0; set < sats.size(); ++set) {
+    const Elements& e = sats[set];
     const orbit::Sgp4 sat(e);
     if (!check_window(e, sat, *start, stop)) status = kExitFailure;
     if (sat.init_error() != orbit::Sgp4Error::none) continue;
     const std::string label = trim(e.name).empty() ? std::to_string(e.catalog_number) : trim(e.name);
     for (const orbit::Pass& p : orbit::find_passes(sat, *station, *start, stop, options, eo))
-      passes.push_back({label, p});
+      passes.push_back({label, p, set});
   }
   std::stable_sort(passes.begin(), passes.end(),
                    [](const SatPass& a, const SatPass& b) { return a.pass.aos < b.pass.aos; });
@@ -774,6 +813,8 @@ int run_passes(std::vector<std::string> args) {
       break;
     }
   }
+  std::fflush(stdout);
+  if (plot && plot_passes(*plot, passes, sats, *station, run.stored) != kExitOk) return kExitFailure;
   return status;
 }
 

@@ -80,6 +80,8 @@ RotatorPosition PassPlan::map(double az_deg, double el_deg) const {
   return p;
 }
 
+AzEl PassPlan::pointing_at(double az_deg, double el_deg) const { return pointing(geometry, map(az_deg, el_deg)); }
+
 namespace {
 PassPlan plan_in_piece(std::span<const TrackPoint> track, const PassGeometry& g,
                        std::optional<double> current_travel);
