@@ -110,14 +110,21 @@ TEST_CASE("The rotor follows above the rotor start elevation: waits at AOS while
   CHECK(t.tick().antenna == A::point);
 }
 
-TEST_CASE("The station moved (menu 4): the pass shown is the new station's, not the one found for the old") {
+// The ISS tracked alone from the factory station at 2026-05-21 00:00, after one tick.
+struct IssTracked {
   store::Model m = shipped(station::RotorStart::south, 27.391, 128.657, 50.0);
-  const auto iss = m.db.find("ISS");
-  REQUIRE(iss);
-  station::ManualClock clock(orbit::from_civil(2026, 5, 21, 0, 0, 0));
-  tracker::Tracker t(m, clock);
-  t.track_single(*iss);
-  t.tick();
+  int iss = *m.db.find("ISS");
+  station::ManualClock clock{orbit::from_civil(2026, 5, 21, 0, 0, 0)};
+  tracker::Tracker t{m, clock};
+  IssTracked() {
+    t.track_single(iss);
+    t.tick();
+  }
+};
+
+TEST_CASE("The station moved (menu 4): the pass shown is the new station's, not the one found for the old") {
+  IssTracked run;
+  auto& [m, iss, clock, t] = run;
   REQUIRE(t.followed()->pass);
   const orbit::Pass old_place = *t.followed()->pass;
   m.station.lat_deg = 48.85;  // Paris
@@ -127,7 +134,7 @@ TEST_CASE("The station moved (menu 4): the pass shown is the new station's, not 
   REQUIRE(t.followed()->pass);
   orbit::PassOptions po;
   po.precision_s = 1.0;
-  const auto expected = orbit::next_pass(orbit::Sgp4(m.db.satellites[static_cast<std::size_t>(*iss)].elements),
+  const auto expected = orbit::next_pass(orbit::Sgp4(m.db.satellites[static_cast<std::size_t>(iss)].elements),
                                          m.station.observer(), clock.now(), 10.0, po);
   REQUIRE(expected);
   CHECK(t.followed()->pass->aos != old_place.aos);
@@ -135,13 +142,8 @@ TEST_CASE("The station moved (menu 4): the pass shown is the new station's, not 
 }
 
 TEST_CASE("The clock set back (menu 5): the pass shown is the one then, not the one found from later") {
-  store::Model m = shipped(station::RotorStart::south, 27.391, 128.657, 50.0);
-  const auto iss = m.db.find("ISS");
-  REQUIRE(iss);
-  station::ManualClock clock(orbit::from_civil(2026, 5, 21, 0, 0, 0));
-  tracker::Tracker t(m, clock);
-  t.track_single(*iss);
-  t.tick();
+  IssTracked run;
+  auto& [m, iss, clock, t] = run;
   REQUIRE(t.followed()->pass);
   const orbit::Pass first = *t.followed()->pass;
   // Past that pass: the next one is found.
