@@ -146,6 +146,11 @@ void report_deferred(const LoadedElements& l, const std::string& path, bool chos
     report_problems(l.problems, stderr);
     return;
   }
+  // Warnings are about sets that were taken, perhaps the one asked for: said in full.
+  std::vector<orbit::ParseProblem> warnings;
+  for (const auto& p : l.problems)
+    if (p.warning) warnings.push_back(p);
+  report_problems(warnings, stderr);
   std::string lines;
   int refused = 0;
   for (const auto& p : l.problems)
@@ -380,7 +385,9 @@ struct CommandRun {
     if (!in.ok()) return error(*in.error());
     if (path.empty()) return load_stored(allow_all, sats);
     const bool named = !parsed.values("sat").empty();
-    const LoadedElements loaded = load_elements(path, !parsed.has("no-checksum"), named);
+    // With --no-checksum every accepted set's checksum is named: nothing is deferred then.
+    const bool verify = !parsed.has("no-checksum");
+    const LoadedElements loaded = load_elements(path, verify, named && verify);
     if (loaded.error) {
       report_deferred(loaded, path, false);
       return error(*loaded.error);

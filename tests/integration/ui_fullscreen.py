@@ -83,7 +83,7 @@ def main():
         keys("VK2XYZ", "Enter")
         for _ in range(5):
             keys("Enter")
-        wait_for(r"COM port baud rate : 9600\s*\n----- MAIN MENU -----")
+        wait_for(r"COM port baud rate : 9600\s*\nStation saved: VK2XYZ .*\n----- MAIN MENU -----")
 
         # Ctrl-C leaves trakbox; the state is saved.
         keys("C-c")
