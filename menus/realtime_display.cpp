@@ -250,6 +250,9 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
       case 'q':
       case 'Q':
         t.end_live();
+        // The sky plot and map stay on a full screen until cleared: the menu after them printed
+        // over their remains (issue 30).
+        if (t.full_screen()) t.clear();
         return RealtimeExit::quit;
       case 'e':
       case 'E':

@@ -57,3 +57,12 @@ TEST_CASE("menu 4: a latitude that is no number of degrees is asked again, namin
   CHECK(f.model.station.lat_deg == -48.85);
   CHECK(f.term.output().find("'-48.85N' is not a number of degrees (a sign, or N or S after it)") != std::string::npos);
 }
+
+TEST_CASE("realtime display: Q on a full screen clears the sky plot and map before the menu (issue 30 item 6)") {
+  testing::MenuFixture f("\rQ");
+  f.term.set_full_screen(true);
+  f.term.timeouts_before_key = 6;  // a few seconds of display: the graphics are drawn
+  menus::menu_1_realtime_tracking(f.term, *f.services);
+  REQUIRE(f.term.graphics_count() > 0);
+  CHECK_FALSE(f.term.graphics_shown());
+}
