@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "gps/monitor.h"
 #include "menus/menus.h"
 #include "menus/term/line_terminal.h"
 #include "store/model.h"
@@ -37,6 +38,14 @@ double edit_degrees(term::Terminal& t, std::string_view label, double current, c
 void menu_4_station_elements(term::Terminal& t, Services& s) {
   station::StationConfig st = s.model.station;  // edited as a copy, committed at the end
   t.line("====== Update Station Element =======");
+  const gps::Monitor* g = s.station.gps();
+  if (g || s.model.gps.position_from_gps) {
+    const auto& gs = s.model.gps;
+    t.line(std::string("Position from      ") +
+           (gs.position_from_gps ? "GPS fix of " + (gs.position_time ? orbit::format_iso8601(*gs.position_time) : "?")
+                                 : std::string("typed in")));
+    t.line("GPS receiver      " + (g ? g->source() + ": " + g->describe() : std::string("none (--gps)")));
+  }
   st.callsign = edit_text(t, "Callsign          ", st.callsign, [](const std::string& a) -> std::optional<std::string> {
     if (a.size() > 10) return "a callsign has at most 10 characters";
     for (char c : a)
@@ -63,17 +72,37 @@ void menu_4_station_elements(term::Terminal& t, Services& s) {
     t.line("  1200, 2400, 4800, 9600 or 19200");
     st.com_baud = edit_int(t, "COM port baud rate", 9600, 1200, 19200);
   }
+  station::GpsSettings gs = s.model.gps;
+  if (g) {
+    const std::string follow = edit_text(t, "Follow GPS [Y/N]  ", gs.follow ? "Y" : "N",
+                                         [](const std::string& a) -> std::optional<std::string> {
+                                           const char c = static_cast<char>(std::toupper(static_cast<unsigned char>(a[0])));
+                                           if (c != 'Y' && c != 'N') return "Y (the position follows the receiver) or N";
+                                           return std::nullopt;
+                                         });
+    gs.follow = std::toupper(static_cast<unsigned char>(follow[0])) == 'Y';
+    gs.threshold_m = edit_number(t, "GPS threshold [m] ", gs.threshold_m, fmt("%.0f", gs.threshold_m),
+                                 station::kGpsThresholdMinM, station::kGpsThresholdMaxM);
+  }
+  if (st.lat_deg != s.model.station.lat_deg || st.lon_deg != s.model.station.lon_deg ||
+      st.height_m != s.model.station.height_m) {
+    gs.position_from_gps = false;  // typed in
+    gs.position_time.reset();
+  }
   s.model.station = st;
+  s.model.gps = gs;
   s.station.reconfigure();  // the rotor start changes how the antenna's travel maps to the compass
+  s.station.apply_gps_position();  // following: the confirmed fix, now
   if (const auto err = s.save()) {
     t.bell();
     t.line("State not saved: " + *err);
     return;
   }
   // Said, not silent (issue 30): what was stored, in words an operator checks at a glance.
-  t.line(fmt("Station saved: %s  %.3f %c  %.3f %c  %.0f m  rotor start %s", st.callsign.c_str(), std::abs(st.lat_deg),
-             st.lat_deg < 0 ? 'S' : 'N', std::abs(st.lon_deg), st.lon_deg < 0 ? 'W' : 'E', st.height_m,
-             station::to_string(st.rotor_start)));
+  const station::StationConfig& saved = s.model.station;
+  t.line(fmt("Station saved: %s  %.3f %c  %.3f %c  %.0f m  rotor start %s", saved.callsign.c_str(),
+             std::abs(saved.lat_deg), saved.lat_deg < 0 ? 'S' : 'N', std::abs(saved.lon_deg),
+             saved.lon_deg < 0 ? 'W' : 'E', saved.height_m, station::to_string(saved.rotor_start)));
 }
 
 }  // namespace tb::menus

@@ -76,6 +76,12 @@ class StationApp {
   // Writes the state document; the reason when it could not.
   std::optional<std::string> save();
 
+  // The GPS receiver of model().gps.source (nothing when none): its client thread reports to the
+  // loop, which logs each problem once, follows the receiver when model().gps.follow says so (and
+  // saves then), and shows the GPS word on the status line. stop_gps() ends the thread.
+  void start_gps();
+  void stop_gps();
+
   // --service: tracks what the stored configuration says, serves, re-reads the data directory's
   // element and freq/mode files on SIGHUP, and on SIGTERM parks (when parking is on). Returns the
   // exit status; the caller saves.

@@ -323,6 +323,9 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
       else startup.drivers_said.push_back(line);
     }
   }
+  if (c.gps_source) startup.model.gps.source = *c.gps_source;
+  if (c.gps_follow) startup.model.gps.follow = *c.gps_follow;
+  if (c.gps_threshold_m) startup.model.gps.threshold_m = *c.gps_threshold_m;
 
   // "trakbox stopped" is the log's last line: written after the station, its drivers' workers and
   // the servers are gone, whose last words (a link closing) came after it before (issue 30).
@@ -336,6 +339,7 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   StationApp app(startup.model, file, log);
   if (auto err = build_station(app, c)) return usage_error(*err);
   configure_refresh(app, c);
+  app.start_gps();
   app.set_satrak_saved(startup.satrak_saved);
   Servers servers;
   if (auto err = start_satrak(app, c, startup, servers)) return usage_error(*err);
@@ -369,6 +373,7 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   }
   app.set_satrak(nullptr);
   servers.satrak_unit.reset();
+  app.stop_gps();
   return code;
 }
 

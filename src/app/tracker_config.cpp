@@ -4,6 +4,8 @@
 #include <cstdlib>
 
 #include "app/build_info.h"
+#include "app/rotator_registry.h"
+#include "gps/gpsd_client.h"
 #include "station/clock.h"
 #include "menus/term/line_terminal.h"
 #include "store/refresh.h"
@@ -29,9 +31,12 @@ std::vector<OptionSpec> tracker_option_specs() {
                       "freq/mode files"},
       {"clock", "ISO8601", "start the real-time clock at this UTC time (e.g. 2026-05-21T12:00:00Z)"},
       {"clock-rate", "R", "run the clock R times faster than real time, R at most 200 (with or without --clock)"},
-      {"rotator", "SPEC", "simulated (default), hamlib:MODEL:DEVICE[:BAUD], rotctld:HOST[:PORT]"},
-      {"radio", "SPEC", "simulated (default), icom:DEV, kenwood:DEV, yaesu:DEV, cat:DEV (rig of menu 6-7), "
-                        "hamlib:MODEL:DEV[:BAUD], rigctld[:HOST[:PORT]]"},
+      {"rotator", "SPEC", "simulated (default), hamlib:MODEL:DEVICE[:BAUD], rotctld:HOST[:PORT], satrak:HOST[:PORT] "
+                          "(trakbox --rotator list)"},
+      {"radio", "SPEC", "simulated (default), a model MODEL:DEV[:BAUD] (ic9700, ic9100, ic910h, ft847, ft817, "
+                        "ts2000 ...; `trakbox --radio list` prints them all), icom:DEV, kenwood:DEV, yaesu:DEV, "
+                        "cat:DEV (rig of menu 6-7), hamlib:MODEL:DEV[:BAUD] (MODEL a number or a name such as "
+                        "IC-9700), rigctld[:HOST[:PORT]]"},
       {"uplink-radio", "SPEC", "a second radio for the uplink, in the same forms as --radio (which then drives "
                                "the downlink); stored, so later starts use it too; none: one radio again"},
       {"tick-ms", "MS", "tracking interval in milliseconds, 100 to 1000 (default 1000)"},
@@ -56,6 +61,11 @@ std::vector<OptionSpec> tracker_option_specs() {
       {"cross-limit-sector", "yes|no", "when the rotator limits split its travel (the rotor stop inside them): yes, "
                                        "they are pointing limits the antenna may cross between passes; no (the "
                                        "factory setting), they are barriers (stored)"},
+      {"gps", "SPEC", "a GPS receiver through gpsd: gpsd (localhost:2947), gpsd:HOST or gpsd:HOST:PORT; none: no "
+                      "receiver (stored). Position, fix and time; the clock is checked against GPS time"},
+      {"gps-follow", "yes|no", "yes: the station's position follows the receiver's confirmed fix (stored; menu 4)"},
+      {"gps-threshold", "M", "metres the fix must move before the station follows, 1 to 100000 (default 100; "
+                             "stored)"},
       {"log-level", "LEVEL", "what trakbox.log in the state directory keeps: error, warn, info (default) or "
                              "debug (every remote command and its reply)"},
   };
@@ -88,17 +98,11 @@ std::optional<spdlog::level::level_enum> log_level_named(const std::string& l) {
 }  // namespace
 
 std::optional<std::string> set_rotator_spec(TrackerConfig& c, const std::string& text) {
-  c.satrak_rotator.reset();
-  c.rotator.reset();
-  if (text.rfind("satrak:", 0) == 0) {
-    std::string err;
-    c.satrak_rotator = satrak::parse_rotator_spec(text, err);
-    if (!c.satrak_rotator) return err;
-    return std::nullopt;
-  }
-  rotator::SpecResult rot_spec = rotator::parse_rotator_spec(text);
-  c.rotator = rot_spec.spec;
-  if (!rot_spec.spec) return rot_spec.error;
+  // One table of rotators (app/rotator_registry.h) chooses the parser.
+  RotatorParse rot = parse_rotator(text);
+  c.satrak_rotator = rot.choice.satrak;
+  c.rotator = rot.choice.rotator;
+  if (!rot.error.empty()) return rot.error;
   return std::nullopt;
 }
 
@@ -167,6 +171,22 @@ void read_refresh(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
     c.elements_timeout_s = static_cast<int>(*v);
 }
 
+// The GPS receiver: its gpsd, whether the station follows it, and how far it must move first.
+void read_gps(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
+  if (const auto g = o.value("gps")) {
+    std::string why;
+    if (*g == "none") c.gps_source = "";
+    else if (const auto e = gps::parse_gps_spec(*g, why)) c.gps_source = e->text();
+    else r.fail("--gps", why);
+  }
+  if (const auto f = o.value("gps-follow")) {
+    if (*f == "yes" || *f == "no") c.gps_follow = *f == "yes";
+    else r.fail("--gps-follow", "expected yes or no; found '" + *f + "'");
+  }
+  c.gps_threshold_m = r.number("gps-threshold", false, "metres, 1 to 100000",
+                               Range{station::kGpsThresholdMinM, station::kGpsThresholdMaxM});
+}
+
 // Front ends that cannot go together.
 void check_front_end(const ParsedOptions& o, OptionReader& r, FrontEnd front_end) {
   const bool service = o.has("service");
@@ -225,6 +245,7 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
     if (*x == "yes" || *x == "no") c.cross_limit_sector = *x == "yes";
     else r.fail("--cross-limit-sector", "expected yes or no; found '" + *x + "'");
   }
+  read_gps(o, r, c);
   if (const auto l = o.value("log-level")) {
     if (const auto level = log_level_named(*l)) c.log_level = *level;
     else r.fail("--log-level", "expected error, warn, info or debug; found '" + *l + "'");

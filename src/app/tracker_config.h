@@ -67,6 +67,11 @@ struct TrackerConfig {
   // --cross-limit-sector yes|no: whether limits that split the rotator's travel may be crossed
   // between passes (RotatorConfig::cross_limit_sector); stored in the state when given.
   std::optional<bool> cross_limit_sector;
+  // --gps gpsd[:HOST[:PORT]] (canonical "gpsd:HOST:PORT") or none (""), --gps-follow, --gps-threshold:
+  // stored in the state when given (docs/gps.md).
+  std::optional<std::string> gps_source;
+  std::optional<bool> gps_follow;
+  std::optional<double> gps_threshold_m;
   std::vector<std::string> warnings;  // e.g. a secret file others can read: said at start
   spdlog::level::level_enum log_level = spdlog::level::info;
 };

@@ -44,6 +44,7 @@ struct Model {
   // without them drives these (store/drivers.h).
   std::string rotator_driver;
   std::string radio_driver;
+  station::GpsSettings gps;                   // --gps, menu 4: the receiver and the position's origin
 };
 
 // The factory defaults (menu 6-9 without a station file), with the shipped database when given.
