@@ -31,8 +31,14 @@ void show_refresh(term::Terminal& t, const store::RefreshSettings& r, const trac
   t.line(every);
   if (live) {
     if (live->running()) t.line(" Last refresh: running now");
-    else if (!live->last_result().empty())
+    else if (!live->last_result().empty()) {
       t.line(std::string(" Last refresh: ") + (live->last_failed() ? "FAILED " : "ok ") + live->last_result());
+      // What the operator can do about it (issue 30): the database is not left silently stale.
+      if (live->last_failed()) {
+        t.line(" The last good sets stay in use. Without a network: A with a file's path, 3-3, or");
+        t.line(" trakbox --elements-url FILE; R tries again.");
+      }
+    }
     else t.line(" Last refresh: none since start");
   }
   t.line("A. Add a source (URL or file)   D. Delete a source   I. Interval   R. Refresh now");

@@ -1,5 +1,6 @@
 // Menu 4: Update Station Elements. Each prompt shows the current value; Enter keeps it.
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 
 #include "gps/monitor.h"
@@ -10,10 +11,27 @@
 
 namespace tb::menus {
 namespace {
-std::string fmt(const char* f, double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, f, v);
+template <class... A>
+std::string fmt(const char* f, A... v) {
+  char buf[160];
+  std::snprintf(buf, sizeof buf, f, v...);
   return buf;
+}
+}  // namespace
+
+namespace {
+// A latitude or longitude: a signed number of degrees or one with its hemisphere's letter.
+double edit_degrees(term::Terminal& t, std::string_view label, double current, char pos, char neg, double limit) {
+  double result = current;
+  edit_text(t, label, fmt("%+.3f", current), [&](const std::string& a) -> std::optional<std::string> {
+    const auto v = station::parse_hemisphere_degrees(a, pos, neg);
+    if (!v) return "'" + a + "' is not a number of degrees (a sign, or " + std::string(1, pos) + " or " +
+                   std::string(1, neg) + " after it)";
+    if (std::abs(*v) > limit) return a + fmt(" is out of range: expected %g to %g", -limit, limit);
+    result = *v;
+    return std::nullopt;
+  });
+  return result;
 }
 }  // namespace
 
@@ -35,8 +53,11 @@ void menu_4_station_elements(term::Terminal& t, Services& s) {
     return std::nullopt;
   });
   for (auto& c : st.callsign) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  st.lat_deg = edit_number(t, "Latitude  [deg]   ", st.lat_deg, fmt("%+.3f", st.lat_deg), -90.0, 90.0);
-  st.lon_deg = edit_number(t, "Longitude [deg]   ", st.lon_deg, fmt("%+.3f", st.lon_deg), -180.0, 180.0);
+  // trakbox's hint (issue 30): which sign is north and east (PREDICT counts longitude west), and
+  // that N, S, E, W after the number work too.
+  t.line("  (+ north / - south, + east / - west; or 48.85N, 2.35E, 122.4W)");
+  st.lat_deg = edit_degrees(t, "Latitude  [deg]   ", st.lat_deg, 'N', 'S', 90.0);
+  st.lon_deg = edit_degrees(t, "Longitude [deg]   ", st.lon_deg, 'E', 'W', 180.0);
   st.height_m = edit_number(t, "Height    [m]     ", st.height_m, fmt("%.3f", st.height_m), -500.0, 9000.0);
   const std::string rs = edit_text(t, "Rotor start [N/S] ", station::to_string(st.rotor_start),
                                    [](const std::string& a) -> std::optional<std::string> {
@@ -70,9 +91,18 @@ void menu_4_station_elements(term::Terminal& t, Services& s) {
   }
   s.model.station = st;
   s.model.gps = gs;
-  s.station.reconfigure();
-  s.station.apply_gps_position();  // following: the confirmed fix, now  // the rotor start changes how the antenna's travel maps to the compass
-  save_or_report(t, s);
+  s.station.reconfigure();  // the rotor start changes how the antenna's travel maps to the compass
+  s.station.apply_gps_position();  // following: the confirmed fix, now
+  if (const auto err = s.save()) {
+    t.bell();
+    t.line("State not saved: " + *err);
+    return;
+  }
+  // Said, not silent (issue 30): what was stored, in words an operator checks at a glance.
+  const station::StationConfig& saved = s.model.station;
+  t.line(fmt("Station saved: %s  %.3f %c  %.3f %c  %.0f m  rotor start %s", saved.callsign.c_str(),
+             std::abs(saved.lat_deg), saved.lat_deg < 0 ? 'S' : 'N', std::abs(saved.lon_deg),
+             saved.lon_deg < 0 ? 'W' : 'E', saved.height_m, station::to_string(saved.rotor_start)));
 }
 
 }  // namespace tb::menus

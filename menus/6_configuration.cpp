@@ -1,5 +1,6 @@
 // Menu 6: Configuration. The list of items 0-9, the 6-0 display, and what the items share.
 #include "menus/6_configuration.h"
+#include "store/drivers.h"
 
 #include <cctype>
 #include <cmath>
@@ -149,6 +150,13 @@ std::vector<std::string> configuration_lines(const store::Model& m) {
     out.push_back(label("AOS/LOS line") + "On above EL:" + cfg::fmt1(pe.output_on_el_deg) +
                   "  Off below EL:" + cfg::fmt1(pe.output_off_el_deg));
   if (!m.rotator_error_detection) out.push_back(label("Rotator error") + "Detection off");
+  // trakbox's line (issue 30): which drivers the antenna and the radio are on.
+  auto driver = [](const std::string& spec) {
+    const std::string name = store::driver_label(spec);
+    return spec.empty() || spec == "simulated" ? name + " (simulated)" : name + " (" + spec + ")";
+  };
+  out.push_back(label("Drivers") + "Rotor " + driver(m.rotator_driver) + "  Radio " + driver(m.radio_driver) +
+                (rc.uplink_radio.empty() ? "" : "  Uplink " + driver(rc.uplink_radio)));
   return out;
 }
 

@@ -1,4 +1,4 @@
-// The sign-on banner and the MAIN MENU: Select [1-8,S,M].
+// The sign-on banner and the MAIN MENU: Select [1-8,S,M], and Q to leave (trakbox's addition).
 #include "menus/menus.h"
 
 namespace tb::menus {
@@ -23,8 +23,19 @@ void show_main_menu(term::Terminal& t) {
   t.line("     6. Configuration.");
   t.line("     7. Host mode.");
   t.line("     8. Direct Antenna control.");
+  t.line("     Q. Leave trakbox.");  // trakbox's line (issue 30; docs/menus/README.md)
 }
 }  // namespace
+
+bool leave_trakbox(term::Terminal& t) { return ask_yes_no(t, "     leave trakbox? [Y/N]"); }
+
+bool detach_serial_line(term::Terminal& t) {
+  if (!ask_yes_no(t, "     detach from trakbox? [Y/N]")) return false;
+  t.line("     Detached: trakbox keeps tracking. Any key brings the menu back.");
+  t.flush();
+  if (!t.read_choice({}, true)) throw InputClosed{};
+  return false;
+}
 
 void main_menu(term::Terminal& t, Services& s) {
   run_menu(t, [&] { show_main_menu(t); }, "     Select [1-8,S,M]:", [&](char key) {
@@ -39,6 +50,7 @@ void main_menu(term::Terminal& t, Services& s) {
       case '8': menu_8_direct_antenna(t, s); break;
       case 'S': menu_s_single_tracking(t, s); break;
       case 'M': menu_m_multiple_tracking(t, s); break;
+      case 'Q': return (s.leave ? s.leave(t) : leave_trakbox(t)) ? MenuStep::back : MenuStep::again;
       default: return MenuStep::unknown;
     }
     return MenuStep::again;

@@ -23,7 +23,17 @@ struct Services {
   std::function<std::optional<std::string>()> save;
   // Program version for the banner.
   std::string version;
+  // The main menu's Q (issue 30): asks and returns true when the menus should end. Empty: the
+  // local terminal's way, leave_trakbox(). A serial line (and an attach client) sets its own,
+  // which detaches the operator and leaves trakbox running.
+  std::function<bool(term::Terminal&)> leave;
 };
+
+// Asks "leave trakbox? [Y/N]"; true for Y (trakbox then saves and exits).
+bool leave_trakbox(term::Terminal& t);
+// A serial line's Q: "detach from trakbox? [Y/N]"; Y says trakbox keeps running and waits for a
+// key to bring the menu back. Never ends the menus (the line is the box's own terminal).
+bool detach_serial_line(term::Terminal& t);
 
 // The sign-on banner and the main menu loop (returns when input closes).
 void main_menu(term::Terminal& t, Services& s);

@@ -142,7 +142,13 @@ std::string elements_age_line(Services& s, int db_index) {
   const orbit::Elements& e = s.model.db.satellites[static_cast<std::size_t>(db_index)].elements;
   const orbit::ElementAge age = orbit::element_age(e, s.clock.now());
   std::string line = "Elements: epoch " + format_date(e.epoch()) + " " + format_time(e.epoch()) + " UTC, age " + age.text();
-  if (age.stale()) line += "  WARNING: " + age.warning();
+  // The warning on a line of its own, short enough for 80 columns: appended, it wrapped
+  // mid-sentence (issue 30).
+  if (age.stale()) {
+    char w[96];
+    std::snprintf(w, sizeof w, "WARNING: elements too old (limit %.0f days): positions unreliable, see 3-5", age.limit_days);
+    line += "\n" + std::string(w);
+  }
   return line;
 }
 
@@ -234,7 +240,13 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
     if (f && (!shown || *shown != f->db_index)) {
       t.end_live();
       t.line(std::string("[Satellite:") + marker + f->name + "]");
-      t.line(elements_age_line(s, f->db_index));
+      {
+        const std::string age = elements_age_line(s, f->db_index);
+        for (std::size_t a = 0, b; a <= age.size(); a = b + 1) {
+          b = std::min(age.find('\n', a), age.size());
+          t.line(std::string_view(age).substr(a, b - a));
+        }
+      }
       t.line(kHeader1);
       t.line(kHeader2);
       shown = f->db_index;
@@ -281,6 +293,9 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
     if (k == term::kEndOfInput) throw InputClosed{};
     if (k == 'q' || k == 'Q') {
       t.end_live();
+      // The sky plot and map stay on a full screen until cleared: the menu after them printed
+      // over their remains (issue 30).
+      if (t.full_screen()) t.clear();
       return RealtimeExit::quit;
     }
     realtime_key(t, s, k);

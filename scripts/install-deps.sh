@@ -1,10 +1,17 @@
 #!/usr/bin/env bash
-# Installs the Debian packages trakbox needs to build, run and test. Installs only what is missing.
+# install-deps.sh [run|all]: installs the Debian packages trakbox needs, only those missing.
+#   run  what building and running the trakbox program needs (scripts/run.sh)
+#   all  that, and what the tests, their independent references and the package checks need
+#        (scripts/test.sh, CI); the default
 set -euo pipefail
-pkgs=(
-  cmake ninja-build g++ pkg-config python3
-  libncurses-dev libboost-dev libspdlog-dev libfmt-dev nlohmann-json3-dev doctest-dev
-  libcurl4-openssl-dev libhamlib-dev libbenchmark-dev libpugixml-dev
+what=${1:-all}
+run_pkgs=(
+  cmake ninja-build g++ pkg-config
+  libncurses-dev libboost-dev libspdlog-dev libfmt-dev nlohmann-json3-dev
+  libcurl4-openssl-dev libhamlib-dev libpugixml-dev libcairo2-dev
+)
+test_pkgs=(
+  python3 doctest-dev libbenchmark-dev
   # test peers and independent references
   libhamlib-utils python3-sgp4 python3-skyfield gpredict socat tmux python3-pyftpdlib
   # the GPS receiver: libgps to build, gpsd and gpsfake (gpsd-clients) to test against
@@ -12,6 +19,11 @@ pkgs=(
   # the Debian package and its checks (scripts/package-check.sh), the completion test
   dpkg-dev lintian man-db groff-base systemd bash-completion
 )
+case "$what" in
+  run) pkgs=("${run_pkgs[@]}") ;;
+  all) pkgs=("${run_pkgs[@]}" "${test_pkgs[@]}") ;;
+  *) echo "install-deps.sh: '$what': expected run or all" >&2; exit 2 ;;
+esac
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -5,13 +5,13 @@
 # builds, installs, runs and removes the Debian package.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/install-deps.sh
+scripts/install-deps.sh all
 jobs=$(nproc)
 
 start=$SECONDS
 # Hardened as the package is (Debian's flags and libstdc++'s assertions): the tests run the binary
 # that package-check.sh then packs.
-scripts/build.sh build -DTRAKBOX_WERROR=ON -DTRAKBOX_HARDENING=ON
+scripts/build.sh build -DTRAKBOX_WERROR=ON -DTRAKBOX_HARDENING=ON -DTRAKBOX_TESTS=ON
 echo "== build: $((SECONDS - start)) s"
 (cd build && ctest --output-on-failure -j"$jobs")
 echo "== tests: $((SECONDS - start)) s"

@@ -23,15 +23,26 @@ class ScriptTerminal final : public Terminal {
 
   void write(std::string_view text) override { out_.append(text); }
   void bell() override { out_.push_back('\a'); }
-  void clear() override { out_.append("\n"); }
+  void clear() override {
+    out_.append("\n");
+    graphics_shown_ = false;
+  }
   void flush() override {}
   void live(const std::vector<std::string>& lines) override {
     for (const auto& l : lines) out_.append(l).append("\n");
   }
   void end_live() override {}
   void status(std::string_view text) override { status_.assign(text); }
-  void graphics(const Graphics& g) override { graphics_ = g; ++graphics_count_; }
-  bool full_screen() const override { return false; }
+  void graphics(const Graphics& g) override {
+    graphics_ = g;
+    ++graphics_count_;
+    graphics_shown_ = true;
+  }
+  bool full_screen() const override { return full_screen_; }
+  // Plays a full-screen terminal (whose graphics stay on the screen until it is cleared).
+  void set_full_screen(bool on) { full_screen_ = on; }
+  // Graphics drawn since the last clear(): on a full screen, still there.
+  bool graphics_shown() const { return graphics_shown_; }
   int columns() const override { return 80; }
   int rows() const override { return 24; }
   bool closed() const override { return pos_ >= input_.size(); }
@@ -58,6 +69,8 @@ class ScriptTerminal final : public Terminal {
   std::string out_;
   std::string status_;
   Graphics graphics_;
+  bool full_screen_ = false;
+  bool graphics_shown_ = false;
   int graphics_count_ = 0;
   int waited_ = 0;
 };

@@ -58,10 +58,11 @@ int main(int argc, char** argv) {
     if (command == "propagate") return run_propagate(std::move(rest));
     if (command == "schedule") return run_schedule(std::move(rest));
     if (command == "passes") return run_passes(std::move(rest));
+    if (command == "next") return run_next(std::move(rest));
     if (command == "elements") return run_elements(std::move(rest));
     if (command == "host") return run_tracker(rest, FrontEnd::host);
     if (command == "satrak") return satrak::run_cli(rest, std::cout, std::cerr);
-    std::fprintf(stderr, "trakbox: %s: unknown command; expected propagate, schedule, passes, elements, host or satrak (see trakbox --help)\n",
+    std::fprintf(stderr, "trakbox: %s: unknown command; expected propagate, schedule, passes, next, elements, host or satrak (see trakbox --help)\n",
                  command.c_str());
     return kExitUsage;
   }

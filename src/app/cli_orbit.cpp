@@ -12,7 +12,9 @@
 #include <iterator>
 #include <optional>
 
+#include "app/cli_defaults.h"
 #include "app/cli_elements.h"
+#include "app/pass_plot.h"
 #include "app/options.h"
 #include "orbit/element_age.h"
 #include "orbit/elements.h"
@@ -21,6 +23,8 @@
 #include "orbit/sgp4_batch.h"
 #include "orbit/sgp4.h"
 #include "orbit/state_lines.h"
+#include "rotator/pass_plan.h"
+#include "store/model.h"
 #include "util/format.h"
 #include "util/text.h"
 
@@ -115,9 +119,37 @@ const char* const kElementsHelp =
 struct LoadedElements {
   std::vector<Elements> sets;
   std::optional<ArgError> error;
+  // With `defer`: what would have been reported on stderr, for the caller to report or sum up.
+  std::vector<orbit::ParseProblem> problems;
 };
 
-LoadedElements load_elements(const std::string& path, bool verify_checksums) {
+// Problems the caller deferred: every one when the chosen satellites were not found, else one line
+// (the sets it refused are other satellites than the ones asked for; issue 30: Vallado's file made
+// the README's propagate example print three checksum errors for sets it never used).
+void report_deferred(const LoadedElements& l, const std::string& path, bool chosen) {
+  if (l.problems.empty()) return;
+  if (!chosen) {
+    report_problems(l.problems, stderr);
+    return;
+  }
+  // Warnings are about sets that were taken, perhaps the one asked for: said in full.
+  std::vector<orbit::ParseProblem> warnings;
+  for (const auto& p : l.problems)
+    if (p.warning) warnings.push_back(p);
+  report_problems(warnings, stderr);
+  std::string lines;
+  int refused = 0;
+  for (const auto& p : l.problems)
+    if (!p.warning) {
+      ++refused;
+      lines += (lines.empty() ? "" : ", ") + std::to_string(p.line) + (p.field.empty() ? "" : " (" + p.field + ")");
+    }
+  if (refused > 0)
+    std::fprintf(stderr, "trakbox: note: %s: %d other set(s) refused, at line %s (trakbox elements FILE lists them)\n",
+                 path.c_str(), refused, lines.c_str());
+}
+
+LoadedElements load_elements(const std::string& path, bool verify_checksums, bool defer = false) {
   LoadedElements r;
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) {
@@ -136,8 +168,9 @@ LoadedElements load_elements(const std::string& path, bool verify_checksums) {
   }
   // parse_elements recognises the format (OMM encodings, AMSAT blocks, gpredict keys, NASA lines).
   orbit::ParseResult parsed = orbit::parse_elements(text, path, checked_options(verify_checksums));
-  report_problems(parsed.problems, stderr);
-  if (!verify_checksums) report_accepted_checksums(text, path, stderr);
+  if (defer) r.problems = parsed.problems;
+  else report_problems(parsed.problems, stderr);
+  if (!verify_checksums && !defer) report_accepted_checksums(text, path, stderr);
   if (parsed.sets.empty()) {
     r.error = ArgError{"ELEMENTS", "no usable element set in '" + path + "'; expected " + kElementsHelp};
     return r;
@@ -154,8 +187,8 @@ std::string list_choices(const std::vector<Elements>& sets) {
   return s;
 }
 
-// --sat KEY: the name exactly, then the name ignoring case and surrounding blanks, then the catalog
-// number (digits or Alpha-5). Several matching sets: the newest epoch wins, with a warning.
+}  // namespace
+
 std::optional<std::size_t> match_sat(const std::vector<Elements>& sets, const std::string& key, std::string& why) {
   std::vector<std::size_t> hits;
   for (std::size_t i = 0; i < sets.size(); ++i)
@@ -197,6 +230,8 @@ std::optional<std::size_t> match_sat(const std::vector<Elements>& sets, const st
   return best;
 }
 
+namespace {
+
 // The sets named by --sat (in command-line order), or the only set of the file. With allow_all,
 // no --sat selects every set.
 std::vector<Elements> select_sats(const std::vector<Elements>& sets, const std::vector<std::string>& keys,
@@ -229,30 +264,44 @@ OptionSpec repeatable(OptionSpec spec) {
   return spec;
 }
 
-const OptionSpec kStationOption{"station", "LAT,LON,HEIGHT_M",
-                                "station: degrees north, degrees east, metres above the WGS-84 ellipsoid"};
-std::optional<orbit::Observer> read_station(OptionReader& in) {
-  const char* expected = "LAT,LON,HEIGHT_M (degrees north -90..90, degrees east -180..360, metres -1000..100000)";
-  const auto text = in.text("station", true, expected);
-  if (!text) return std::nullopt;
-  const auto v = to_double_list(*text);
-  if (!v || v->size() != 3 || !Range{-90.0, 90.0}.contains((*v)[0]) || !Range{-180.0, 360.0}.contains((*v)[1]) ||
-      !Range{-1000.0, 100000.0}.contains((*v)[2])) {
-    in.fail("--station", std::string("expected ") + expected + ", found '" + *text + "'");
-    return std::nullopt;
+const OptionSpec kStationOption{"station", "LAT,LON[,HEIGHT_M]|LOCATOR",
+                                "station: degrees north, degrees east (or 48.85N,2.35E), metres above the "
+                                "WGS-84 ellipsoid (default 0), or a Maidenhead locator (JN18du); default the "
+                                "stored station (menu 4)"};
+const OptionSpec kStateOption{"state", "DIR", "the state the menus keep (default as for the menus): its station, "
+                                              "database and tracking list stand in for what is not given"};
+// --station, else the stored station.
+std::optional<orbit::Observer> read_station(OptionReader& in, StoredStation& stored) {
+  const auto text = in.text("station", false, "");
+  if (!text) {
+    const auto o = stored.station();
+    if (!o) in.fail("--station", "missing, and " + stored.error());
+    return o;
   }
-  double lon = (*v)[1];
-  if (lon > 180.0) lon -= 360.0;
-  return orbit::Observer{(*v)[0], lon, (*v)[2]};
+  const Parsed<orbit::Observer> p = parse_station_text(*text);
+  if (!p.value) in.fail("--station", p.error);
+  return p.value;
 }
 
-std::optional<UtcTime> read_time(OptionReader& in, std::string_view name) {
-  const char* expected = "ISO8601 UTC (YYYY-MM-DD or YYYY-MM-DDTHH:MM[:SS[.fff]][Z])";
-  const auto text = in.text(name, true, expected);
+// --NAME as a time (ISO 8601, now, +2h), else now.
+std::optional<UtcTime> read_time(OptionReader& in, std::string_view name, UtcTime now) {
+  const auto text = in.text(name, false, "");
+  if (!text) return now;
+  const Parsed<UtcTime> p = parse_time_text(*text, now);
+  if (!p.value) in.fail(OptionReader::option_label(name), p.error);
+  return p.value;
+}
+
+UtcTime wall_now() {
+  return std::chrono::time_point_cast<std::chrono::microseconds>(std::chrono::system_clock::now());
+}
+
+std::optional<std::int64_t> read_frequency(OptionReader& in, std::string_view name) {
+  const auto text = in.text(name, false, "");
   if (!text) return std::nullopt;
-  const auto t = orbit::parse_iso8601(*text);
-  if (!t) in.fail(OptionReader::option_label(name), std::string("expected ") + expected + ", found '" + *text + "'");
-  return t;
+  const Parsed<std::int64_t> p = parse_frequency_text(*text);
+  if (!p.value) in.fail(OptionReader::option_label(name), p.error);
+  return p.value;
 }
 
 const OptionSpec kDut1Option{"dut1", "S", "UT1-UTC in seconds (default 0)"};
@@ -275,6 +324,7 @@ struct Command {
   const char* synopsis;
   const char* description;
   std::vector<OptionSpec> specs;
+  bool stored_database = false;  // ELEMENTS may be left out: the stored database (--state)
 };
 
 std::string usage(const Command& c) {
@@ -303,9 +353,11 @@ struct CommandRun {
       return;
     }
     const auto& pos = parsed.positional();
-    if (pos.empty()) done = usage_error(c, {"ELEMENTS", std::string("missing; expected ") + kElementsHelp});
+    if (pos.empty() && !c.stored_database)
+      done = usage_error(c, {"ELEMENTS", std::string("missing; expected ") + kElementsHelp});
     else if (pos.size() > 1) done = usage_error(c, {pos[1], "unexpected argument (ELEMENTS is given once)"});
-    else path = pos[0];
+    else if (!pos.empty()) path = pos[0];
+    if (const auto dir = parsed.value("state")) stored = StoredStation(std::filesystem::path(*dir));
   }
   CommandRun(const CommandRun&) = delete;
   CommandRun& operator=(const CommandRun&) = delete;
@@ -317,16 +369,41 @@ struct CommandRun {
   // the command cannot go on.
   std::optional<int> load_sats(bool allow_all, std::vector<Elements>& sats) {
     if (!in.ok()) return error(*in.error());
-    const LoadedElements loaded = load_elements(path, !parsed.has("no-checksum"));
-    if (loaded.error) return error(*loaded.error);
+    if (path.empty()) return load_stored(allow_all, sats);
+    const bool named = !parsed.values("sat").empty();
+    // With --no-checksum every accepted set's checksum is named: nothing is deferred then.
+    const bool verify = !parsed.has("no-checksum");
+    const LoadedElements loaded = load_elements(path, verify, named && verify);
+    if (loaded.error) {
+      report_deferred(loaded, path, false);
+      return error(*loaded.error);
+    }
     sats = select_sats(loaded.sets, parsed.values("sat"), allow_all, path, in);
+    report_deferred(loaded, path, in.ok());
+    if (!in.ok()) return error(*in.error());
+    return std::nullopt;
+  }
+
+  // No ELEMENTS: the stored database; without --sat its tracking list (all of it with allow_all,
+  // else its first satellite).
+  std::optional<int> load_stored(bool allow_all, std::vector<Elements>& sats) {
+    const auto keys = parsed.values("sat");
+    const auto sets = keys.empty() ? stored.tracking_list() : stored.database();
+    if (!sets) return error({"ELEMENTS", "missing, and " + stored.error()});
+    if (sets->empty()) return error({"ELEMENTS", "missing, and the stored database is empty (" + stored.source() + ")"});
+    if (keys.empty()) {
+      sats = allow_all ? *sets : std::vector<Elements>{sets->front()};
+      return std::nullopt;
+    }
+    sats = select_sats(*sets, keys, allow_all, "the stored database (" + stored.source() + ")", in);
     if (!in.ok()) return error(*in.error());
     return std::nullopt;
   }
 
   const Command& command;
   ParsedOptions parsed;  // --no-checksum is read from here by load_sats
-  std::string path;  // ELEMENTS
+  StoredStation stored{std::nullopt};  // --state
+  std::string path;  // ELEMENTS; empty: the stored database
   OptionReader in{parsed};
   std::optional<int> done;
 };
@@ -419,24 +496,30 @@ namespace {
 
 const Command kSchedule{
     "schedule",
-    "ELEMENTS [--sat NAME|NUMBER] --station LAT,LON,HEIGHT_M --start ISO8601 --step SECONDS --count N\n"
-    "                        [--freq HZ] [--dut1 S] [--csv|--json] [--no-checksum]",
+    "[ELEMENTS] [--sat NAME|NUMBER] [--station LAT,LON[,HEIGHT_M]|LOCATOR] [--start ISO8601|now|+2h]\n"
+    "                        --step SECONDS --count N [--freq HZ|MHZ.] [--state DIR] [--dut1 S] [--csv|--json]\n"
+    "                        [--no-checksum]",
     "The TrakBox menu-2 schedule: where one satellite is, seen from the station, at --count times\n"
     "--step seconds apart. Azimuth/elevation (deg), phase (256ths of an orbit), Doppler shift at\n"
     "--freq (Hz, + approaching), range (km), range rate (km/s, + receding), and the sub-satellite\n"
     "point (altitude km above the WGS-84 ellipsoid, latitude, longitude). CSV and JSON columns:\n"
-    "utc, az_deg, el_deg, range_km, range_rate_km_s, alt_km, lat_deg, lon_deg, phase256, doppler_hz.",
+    "utc, az_deg, el_deg, range_km, range_rate_km_s, alt_km, lat_deg, lon_deg, phase256, doppler_hz.\n"
+    "Without ELEMENTS, the stored database (--state) and, without --sat, the first of its tracking list.",
     {kSatOption,
      kStationOption,
-     {"start", "ISO8601", "first time, UTC (2018-01-21T03:37:10Z)"},
+     {"start", "ISO8601|now|+2h", "first time, UTC (2018-01-21T03:37:10Z), now (the default), or now plus an "
+                                  "amount (+2h, +30m, -1d)"},
      {"step", "SECONDS", "seconds between rows (> 0)"},
      {"count", "N", "number of rows (1..10000000)"},
-     {"freq", "HZ", "downlink frequency in Hz for the Doppler column (default: none, 0)"},
+     {"freq", "HZ|MHZ.", "downlink frequency for the Doppler column: hertz (437800000), MHz with a decimal "
+                         "point (437.8), or with a unit (437.8MHz) (default: none, 0)"},
+     kStateOption,
      kDut1Option,
      kCsvOption,
      {"json", "", "a JSON array of row objects"},
      kNoChecksumOption,
-     kHelpOption}};
+     kHelpOption},
+    true};
 
 }  // namespace
 
@@ -444,11 +527,11 @@ int run_schedule(std::vector<std::string> args) {
   CommandRun run(kSchedule, args);
   if (run.done) return *run.done;
   OptionReader& in = run.in;
-  const auto station = read_station(in);
-  const auto start = read_time(in, "start");
+  const auto station = read_station(in, run.stored);
+  const auto start = read_time(in, "start", wall_now());
   const auto step_s = in.number("step", true, "SECONDS, a number > 0 (at most one day)", Range{0.0, 86400.0, true});
   const auto count = in.integer("count", true, "N, a whole number 1..10000000", Range{1.0, 1e7});
-  const auto freq = in.integer("freq", false, "HZ, a whole number of hertz >= 0", Range{0.0, 1e12});
+  const auto freq = read_frequency(in, "freq");
   const orbit::EarthOrientation eo = read_dut1(in);
   const OutputFormat format = read_format(in);
   std::chrono::microseconds step{0};
@@ -533,28 +616,64 @@ namespace {
 
 const Command kPasses{
     "passes",
-    "ELEMENTS [--sat NAME|NUMBER]... --station LAT,LON,HEIGHT_M --start ISO8601 --hours H\n"
-    "                      [--min-el DEG] [--dut1 S] [--csv|--json] [--no-checksum]",
+    "[ELEMENTS] [--sat NAME|NUMBER]... [--station LAT,LON[,HEIGHT_M]|LOCATOR]\n"
+    "                      [--start ISO8601|now|+2h] [--hours H] [--min-el DEG] [--state DIR] [--dut1 S]\n"
+    "                      [--csv|--json] [--no-checksum]",
     "Passes over the station between --start and --start + --hours, sorted by AOS: AOS and LOS are\n"
     "the crossings of -2.0 deg elevation (the manual's AOS rule), TCA the time of maximum elevation.\n"
     "Without --sat, every satellite of the file. CSV and JSON columns: sat, aos_utc, tca_utc, los_utc,\n"
     "max_el_deg, aos_az_deg, los_az_deg. A pass already up at --start begins there; one still up at\n"
-    "the end stops there (marked < and > in the table).",
+    "the end stops there (marked < and > in the table). Without ELEMENTS, the stored database (--state)\n"
+    "and, without --sat, its tracking list; without --station the stored station; from now for 24 h.",
     {repeatable(kSatOption),
      kStationOption,
-     {"start", "ISO8601", "start of the window, UTC"},
-     {"hours", "H", "length of the window in hours (> 0, at most 8784)"},
+     {"start", "ISO8601|now|+2h", "start of the window, UTC, now (the default), or now plus an amount (+2h)"},
+     {"hours", "H", "length of the window in hours (> 0, at most 8784; default 24)"},
      {"min-el", "DEG", "only passes whose maximum elevation reaches DEG (default: all)"},
      kDut1Option,
      kCsvOption,
      {"json", "", "a JSON array of pass objects"},
+     {"plot", "FILE", "draw each pass as a polar plot, PNG or SVG by FILE's extension (several passes: FILE-1.png, "
+                      "...): track, AOS/TCA/LOS, the antenna's planned path for the stored rotator"},
+     kStateOption,
      kNoChecksumOption,
-     kHelpOption}};
+     kHelpOption},
+    true};
 
 struct SatPass {
   std::string sat;
   orbit::Pass pass;
+  std::size_t set = 0;  // index into the satellites' sets
 };
+
+// --plot FILE: each pass as a polar plot (pass_plot.h); FILE itself for one pass, FILE-N.EXT for
+// several. The antenna's plan is the stored rotator's (the factory one when no state is readable).
+int plot_passes(const std::string& file, const std::vector<SatPass>& passes, const std::vector<Elements>& sats,
+                const orbit::Observer& station, StoredStation& stored) {
+  const store::Model* m = stored.model();
+  const store::Model factory = store::factory_defaults();
+  if (!m) m = &factory;
+  const rotator::PassGeometry geometry = rotator::PassGeometry::from(rotator::AdcModel(m->rotator, m->station.rotor_start));
+  const std::size_t dot = file.find_last_of('.');
+  for (std::size_t i = 0; i < passes.size(); ++i) {
+    const SatPass& s = passes[i];
+    PassPicture pic;
+    pic.title = s.sat;
+    pic.pass = s.pass;
+    pic.track = sample_pass(orbit::Sgp4(sats[s.set]), station, s.pass);
+    pic.plan = rotator::plan_pass(pic.track, geometry, std::nullopt);
+    const std::string name = passes.size() == 1 || dot == std::string::npos
+                                 ? file
+                                 : file.substr(0, dot) + "-" + std::to_string(i + 1) + file.substr(dot);
+    if (const auto err = write_pass_plot(pic, name)) {
+      std::fprintf(stderr, "trakbox passes: --plot: %s\n", err->c_str());
+      return kExitFailure;
+    }
+    std::fprintf(stderr, "trakbox passes: %s %s: %s\n", s.sat.c_str(), orbit::format_iso8601(s.pass.aos, 0).c_str(),
+                 name.c_str());
+  }
+  return kExitOk;
+}
 
 // The header line(s) with the sets' ages at the window's start: one per set for a few, else the range.
 std::string elements_ages(const std::vector<Elements>& sats, UtcTime at) {
@@ -614,28 +733,33 @@ int run_passes(std::vector<std::string> args) {
   CommandRun run(kPasses, args);
   if (run.done) return *run.done;
   OptionReader& in = run.in;
-  const auto station = read_station(in);
-  const auto start = read_time(in, "start");
-  const auto hours = in.number("hours", true, "H, a number of hours > 0 (at most 8784)", Range{0.0, 8784.0, true});
+  const auto station = read_station(in, run.stored);
+  const auto start = read_time(in, "start", wall_now());
+  const auto hours = in.number("hours", false, "H, a number of hours > 0 (at most 8784)", Range{0.0, 8784.0, true})
+                         .value_or(24.0);
   const auto min_el = in.number("min-el", false, "DEG, an elevation -90..90", Range{-90.0, 90.0});
   const orbit::EarthOrientation eo = read_dut1(in);
   const OutputFormat format = read_format(in);
+  const auto plot = in.text("plot", false, "");
+  if (plot && plot->find_last_of('.') == std::string::npos)
+    in.fail("--plot", "expected FILE.png or FILE.svg, found '" + *plot + "'");
   std::vector<Elements> sats;
   if (auto done = run.load_sats(true, sats)) return *done;
 
-  const UtcTime stop = orbit::add_seconds(*start, *hours * 3600.0);
+  const UtcTime stop = orbit::add_seconds(*start, hours * 3600.0);
   orbit::PassOptions options;
   options.horizon_deg = orbit::kAosThresholdDeg;
   if (min_el) options.min_max_elevation_deg = *min_el;
   std::vector<SatPass> passes;
   int status = kExitOk;
-  for (const Elements& e : sats) {
+  for (std::size_t set = 0; set < sats.size(); ++set) {
+    const Elements& e = sats[set];
     const orbit::Sgp4 sat(e);
     if (!check_window(e, sat, *start, stop)) status = kExitFailure;
     if (sat.init_error() != orbit::Sgp4Error::none) continue;
     const std::string label = trim(e.name).empty() ? std::to_string(e.catalog_number) : trim(e.name);
     for (const orbit::Pass& p : orbit::find_passes(sat, *station, *start, stop, options, eo))
-      passes.push_back({label, p});
+      passes.push_back({label, p, set});
   }
   std::stable_sort(passes.begin(), passes.end(),
                    [](const SatPass& a, const SatPass& b) { return a.pass.aos < b.pass.aos; });
@@ -662,9 +786,10 @@ int run_passes(std::vector<std::string> args) {
       out("\n]\n");
       break;
     case OutputFormat::table: {
-      out(printf_string("station %.4f, %.4f, %.0f m  from %s for %g h  AOS/LOS at %.1f deg\n", station->lat_deg,
-                    station->lon_deg, station->height_m, orbit::format_iso8601(*start, 0).c_str(), *hours,
-                    orbit::kAosThresholdDeg));
+      out(printf_string("station %.4f, %.4f, %.0f m%s  from %s for %g h  AOS/LOS at %.1f deg\n", station->lat_deg,
+                    station->lon_deg, station->height_m,
+                    run.parsed.has("station") ? "" : (" (" + run.stored.source() + ")").c_str(),
+                    orbit::format_iso8601(*start, 0).c_str(), hours, orbit::kAosThresholdDeg));
       out(elements_ages(sats, *start));
       out(printf_string("%-24s  %-20s  %-9s  %-9s  %6s  %6s  %6s  %8s\n", "SAT", "AOS (UTC)", "TCA", "LOS", "MAX EL",
                     "AOS AZ", "LOS AZ", "DURATION"));
@@ -681,6 +806,8 @@ int run_passes(std::vector<std::string> args) {
       break;
     }
   }
+  std::fflush(stdout);
+  if (plot && plot_passes(*plot, passes, sats, *station, run.stored) != kExitOk) return kExitFailure;
   return status;
 }
 
@@ -688,6 +815,7 @@ std::string orbit_commands_summary() {
   return "  propagate   SGP4 state vectors (TEME) from minutes after epoch, as Vallado's tcppver.out\n"
          "  schedule    the menu-2 table: look angles, phase, Doppler, range and sub-point at fixed steps\n"
          "  passes      AOS, TCA and LOS of passes over the station\n"
+         "  next        the next pass of each satellite (the tracking list), one line each; --watch\n"
          "  elements    list the element sets of files (age, format, orbit), or convert them (--to)\n";
 }
 

@@ -23,6 +23,7 @@
 #include "satrak/unit.h"
 #include "station/clock.h"
 #include "store/database.h"
+#include "store/refresh.h"
 #include "store/station_file.h"
 #include "tracker/elements_refresh.h"
 #include "tracker/station_loop.h"
@@ -61,6 +62,9 @@ store::Model defaults_with_data(const std::string& data_dir, std::vector<std::st
   const auto fm = radio::parse_freqmode(read_text(fm_path));
   for (const auto& p : fm.problems) notes.push_back(fm_path + ": " + p.message());
   m.db = store::make_database(sets.sets, fm.records);
+  // Current elements by default: the shipped sets are the offline fallback, refreshed from
+  // CelesTrak at the first tick (the status line says when that fails and what to do).
+  m.refresh.sources.push_back(store::RefreshSource{store::kDefaultElementsUrl, "", ""});
   // The operator's station file as the firmware named it (1994 or later form), as a 6-9 upload
   // would apply it: all of it or, when it has a problem, none of it. (The shipped station.txt is
   // the manual's sample for 6-9, not a station: it is not read here.)
@@ -107,7 +111,7 @@ struct StationApp::Impl {
       station->tick();
       if (refresh) {
         refresh->poll(tracker::ElementsRefresh::wall_now());
-        station->set_notice(refresh->status_word());
+        station->set_notice(refresh->status_word(clock.now()));
       }
       if (terminal) terminal->status(station->status_line());
       schedule_tick();

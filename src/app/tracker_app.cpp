@@ -26,6 +26,8 @@
 #include "satrak/server.h"
 #include "satrak/unit.h"
 #include "station/clock.h"
+#include "app/stored_drivers.h"
+#include "store/drivers.h"
 #include "tracker/elements_refresh.h"
 #include "tracker/station_loop.h"
 
@@ -79,6 +81,7 @@ struct Startup {
   bool ram_lost = false;           // the state did not load: defaults, the damaged file kept aside
   std::string kept;                // where it was kept
   std::vector<std::string> notes;  // shown to the operator (and logged by a service)
+  std::vector<std::string> drivers_said;  // the stored drivers in use: under the sign-on banner
 };
 
 // The battery-backed RAM test: the stored state, or factory defaults with the shipped database.
@@ -179,8 +182,7 @@ std::optional<std::string> start_satrak(StationApp& app, const TrackerConfig& c,
   try {
     out.satrak = std::make_unique<satrak::Server>(app.io(), *out.satrak_unit, so);
     out.satrak_unit->start();
-    app.set_satrak(out.satrak_unit.get());
-    app.log().info("Satrak server on {}:{}", so.address, out.satrak->port());
+    app.set_satrak(out.satrak_unit.get());  // the server logs "satrak: listening on ..." itself
   } catch (const std::exception& e) {
     const std::string msg =
         "Satrak server not started on " + so.address + ":" + std::to_string(c.satrak_port) + ": " + e.what();
@@ -256,7 +258,9 @@ std::unique_ptr<term::Terminal> open_terminal(StationApp& app, const TrackerConf
 // The menus (or standalone tracking, or host mode) until the operator leaves or a signal comes.
 void run_front_end(StationApp& app, const TrackerConfig& c, const Startup& s, term::Terminal& terminal) {
   menus::Services services{app.model(), app.clock(), app.tracker(), app.station(), [&app] { return app.save(); },
-                           kVersion};
+                           kVersion, {}};
+  // Over a serial line the main menu's Q detaches: the line is the box's own terminal.
+  if (c.tty) services.leave = menus::detach_serial_line;
   try {
     if (s.ram_lost) {
       terminal.line("Data in RAM was lost !! Set default parameter !");
@@ -267,6 +271,7 @@ void run_front_end(StationApp& app, const TrackerConfig& c, const Startup& s, te
     else if (c.standalone) menus::standalone(terminal, services, *c.standalone);
     else {
       menus::sign_on(terminal, services);
+      for (const auto& line : s.drivers_said) terminal.line(line);
       menus::main_menu(terminal, services);
     }
   } catch (const menus::InputClosed&) {
@@ -307,16 +312,35 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
     std::fputs(outcome.print.c_str(), stdout);
     return kExitOk;
   }
-  const TrackerConfig& c = *outcome.config;
+  TrackerConfig c = *outcome.config;
   if (auto err = prepare_state_dir(c.state_dir)) return usage_error(*err);
   auto log = open_log(c);
   store::StateFile file(c.state_dir);
   Startup startup = load_state(file, c, *log);
   if (c.cross_limit_sector) startup.model.rotator.cross_limit_sector = *c.cross_limit_sector;
+  {
+    std::vector<std::string> said;
+    if (auto err = apply_stored_drivers(c, startup.model, said)) return usage_error(*err);
+    for (const auto& line : said) {
+      log->info("{}", line);
+      if (c.service) continue;
+      if (c.front_end == FrontEnd::host) std::fprintf(stderr, "trakbox: %s\n", line.c_str());
+      else startup.drivers_said.push_back(line);
+    }
+  }
   if (c.gps_source) startup.model.gps.source = *c.gps_source;
   if (c.gps_follow) startup.model.gps.follow = *c.gps_follow;
   if (c.gps_threshold_m) startup.model.gps.threshold_m = *c.gps_threshold_m;
 
+  // "trakbox stopped" is the log's last line: written after the station, its drivers' workers and
+  // the servers are gone, whose last words (a link closing) came after it before (issue 30).
+  struct StoppedLine {
+    std::shared_ptr<spdlog::logger> log;
+    bool started = false;
+    ~StoppedLine() {
+      if (started) log->info("trakbox stopped");
+    }
+  } stopped_line{log};
   StationApp app(startup.model, file, log);
   if (auto err = build_station(app, c)) return usage_error(*err);
   configure_refresh(app, c);
@@ -333,6 +357,7 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   app.start(std::chrono::milliseconds(c.tick_ms));
   if (startup.ram_lost || startup.fresh) app.save();
   log->info("trakbox {} started, state {}", kVersion, file.path().string());
+  stopped_line.started = true;
 
   int code = kExitOk;
   if (c.service) {
@@ -354,7 +379,6 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   app.set_satrak(nullptr);
   servers.satrak_unit.reset();
   app.stop_gps();
-  log->info("trakbox stopped");
   return code;
 }
 

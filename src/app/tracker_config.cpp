@@ -99,16 +99,32 @@ std::optional<spdlog::level::level_enum> log_level_named(const std::string& l) {
   return std::nullopt;
 }
 
-// The device specs, checked before anything starts.
-void read_devices(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
+}  // namespace
+
+std::optional<std::string> set_rotator_spec(TrackerConfig& c, const std::string& text) {
   // One table of rotators (app/rotator_registry.h) chooses the parser.
-  RotatorParse rot = parse_rotator(o.value("rotator").value_or("simulated"));
+  RotatorParse rot = parse_rotator(text);
   c.satrak_rotator = rot.choice.satrak;
   c.rotator = rot.choice.rotator;
-  if (!rot.error.empty()) r.fail("--rotator", rot.error);
-  const auto radio_spec = radio::parse_radio_spec(o.value("radio").value_or("simulated"));
-  if (radio_spec.spec) c.radio = *radio_spec.spec;
-  else r.fail("--radio", radio_spec.error);
+  if (!rot.error.empty()) return rot.error;
+  return std::nullopt;
+}
+
+std::optional<std::string> set_radio_spec(TrackerConfig& c, const std::string& text) {
+  const auto radio_spec = radio::parse_radio_spec(text);
+  if (!radio_spec.spec) return radio_spec.error;
+  c.radio = *radio_spec.spec;
+  return std::nullopt;
+}
+
+namespace {
+
+// The device specs, checked before anything starts.
+void read_devices(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
+  c.rotator_text = o.value("rotator");
+  c.radio_text = o.value("radio");
+  if (const auto err = set_rotator_spec(c, c.rotator_text.value_or("simulated"))) r.fail("--rotator", *err);
+  if (const auto err = set_radio_spec(c, c.radio_text.value_or("simulated"))) r.fail("--radio", *err);
   if (const auto up = o.value("uplink-radio")) {
     c.uplink_radio_text = *up == "none" ? "" : *up;
     if (!c.uplink_radio_text->empty()) {

@@ -49,6 +49,8 @@ struct TrackerConfig {
   // --dial-rest, --doppler-step (SSB/CW, FM): the operating practice, stored in the model's radio.
   std::optional<int> dial_rest_ms;
   std::optional<std::pair<radio::Hz, radio::Hz>> doppler_steps;
+  // --rotator and --radio as given; unset: the stored ones (store::Model::rotator_driver, ...).
+  std::optional<std::string> rotator_text, radio_text;
   // Endpoints. satrak_port 0 is off; explicit says --satrak-port was given (a busy port is then an
   // error rather than a note).
   int satrak_port = 4001;
@@ -93,5 +95,9 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
 // Where the shipped data lives: --data, else $TRAKBOX_DATA, else PREFIX/share/trakbox of an installed
 // binary, else (a binary in its own build tree) the source tree's data/.
 std::string default_data_directory();
+
+// Sets c's rotator (or Satrak rotator) / radio from a spec; the reason when it is not one.
+std::optional<std::string> set_rotator_spec(TrackerConfig& c, const std::string& text);
+std::optional<std::string> set_radio_spec(TrackerConfig& c, const std::string& text);
 
 }  // namespace tb::app

@@ -80,6 +80,8 @@ RotatorPosition PassPlan::map(double az_deg, double el_deg) const {
   return p;
 }
 
+AzEl PassPlan::pointing_at(double az_deg, double el_deg) const { return pointing(geometry, map(az_deg, el_deg)); }
+
 namespace {
 PassPlan plan_in_piece(std::span<const TrackPoint> track, const PassGeometry& g,
                        std::optional<double> current_travel);
@@ -111,7 +113,7 @@ Followed followed_by(const PassPlan& plan, std::span<const TrackPoint> track) {
 
 std::string PassPlan::coverage_text() const {
   const std::string piece = compass_sector_text(geometry.start, geometry.az_travel);
-  if (coverage.followed == 0) return "PASS OUTSIDE LIMITS (antenna keeps to " + piece + ")";
+  if (coverage.followed == 0) return "PASS OUT OF ANTENNA REACH (it reaches azimuth " + piece + ")";
   auto hms = [](orbit::UtcTime t) {
     const auto c = orbit::to_civil(t);
     char b[16];
@@ -120,7 +122,9 @@ std::string PassPlan::coverage_text() const {
   };
   char pct[16];
   std::snprintf(pct, sizeof pct, "%d%%", static_cast<int>(std::floor(coverage.fraction * 100.0 + 1e-9)));
-  return std::string("antenna follows ") + pct + " (" + hms(*coverage.from) + "-" + hms(*coverage.to) + ") in " + piece;
+  // What the operator needs first: when the antenna is on the satellite, then why not all the pass.
+  return "antenna on target " + hms(*coverage.from) + "-" + hms(*coverage.to) + " (" + pct +
+         " of the pass): it reaches azimuth " + piece;
 }
 
 PassPlan plan_pass(std::span<const TrackPoint> track, const PassGeometry& g, std::optional<double> current_travel) {

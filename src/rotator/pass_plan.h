@@ -70,9 +70,12 @@ struct PassPlan {
 
   // A target during the pass, in rotator coordinates for Controller::set_target.
   RotatorPosition map(double az_deg, double el_deg) const;
+  // Where the antenna points (compass az/el) while the satellite is at az/el: map() seen from the
+  // sky, the flip undone (for the pass plots).
+  AzEl pointing_at(double az_deg, double el_deg) const;
   // What the antenna does of the pass, for the displays and status:
-  //   "antenna follows 13% (10:00:00-10:02:30) in 180.0-350.0", or
-  //   "PASS OUTSIDE LIMITS (antenna keeps to 180.0-350.0)" when it follows none of it.
+  //   "antenna on target 10:00:00-10:02:30 (13% of the pass): it reaches azimuth 180.0-350.0", or
+  //   "PASS OUT OF ANTENNA REACH (it reaches azimuth 180.0-350.0)" when it follows none of it.
   std::string coverage_text() const;
 };
 

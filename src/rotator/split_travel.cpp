@@ -15,6 +15,9 @@ std::string deg1(double v) {
 
 std::string compass_sector_text(station::RotorStart start, const Range& travel) {
   if (travel.empty()) return "nothing";
+  // A whole turn or more ("180.0-180.0" read as nothing to an operator; issue 30), or one azimuth.
+  if (travel.width() >= 360.0 - 1e-9) return "all azimuths";
+  if (travel.width() <= 0.0) return deg1(wrap360(travel.lo + rotor_start_deg(start))) + " only";
   const double lo = wrap360(travel.lo + rotor_start_deg(start));
   double hi = wrap360(travel.hi + rotor_start_deg(start));
   if (hi == 0.0 && travel.width() > 0.0) hi = 360.0;

@@ -2,6 +2,7 @@
 #pragma once
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "orbit/observe.h"
 
@@ -37,5 +38,10 @@ struct GpsSettings {
 };
 
 const char* to_string(RotorStart r);  // "North" / "South"
+
+// Degrees as an operator types them: "48.85", "-2.35", or with the hemisphere after the number,
+// "48.85N", "2.35 W" (`pos` and `neg` are 'N','S' or 'E','W', either case). A letter and a sign
+// together ("-48.85N") are refused. Nothing when it is not one of these.
+std::optional<double> parse_hemisphere_degrees(std::string_view text, char pos, char neg);
 
 }  // namespace tb::station

@@ -279,6 +279,7 @@ json to_json(const Model& m) {
                       {"output_on_el_deg", m.pass_events.output_on_el_deg},
                       {"output_off_el_deg", m.pass_events.output_off_el_deg}};
   j["rotator_error_detection"] = m.rotator_error_detection;
+  j["drivers"] = {{"rotator", m.rotator_driver}, {"radio", m.radio_driver}};
   j["gps"] = {{"source", m.gps.source},
               {"follow", m.gps.follow},
               {"threshold_m", m.gps.threshold_m},
@@ -475,6 +476,11 @@ Model model_from_json(const json& j) {
     m.pass_events.output_off_el_deg = num(p, "pass_events", "output_off_el_deg", -90, 90);
   }
   if (j.contains("rotator_error_detection")) m.rotator_error_detection = boolean(j, "", "rotator_error_detection");
+  // Absent in state files written before the drivers were remembered (issue 30).
+  if (j.contains("drivers")) {
+    m.rotator_driver = text(j["drivers"], "drivers", "rotator", 256);
+    m.radio_driver = text(j["drivers"], "drivers", "radio", 256);
+  }
   // Absent in state files written before the GPS receiver existed.
   if (j.contains("gps")) m.gps = gps_from(j["gps"]);
   return m;

@@ -40,6 +40,10 @@ struct Model {
   // STATION.DAT line 6 of the later firmware: a stalled rotator is declared in error (after
   // rotator.stall_s): the controller's stall watch (off: Controller::set_error_detection).
   bool rotator_error_detection = true;
+  // --rotator and --radio as last given ("" or "simulated": the simulated station); a start
+  // without them drives these (store/drivers.h).
+  std::string rotator_driver;
+  std::string radio_driver;
   station::GpsSettings gps;                   // --gps, menu 4: the receiver and the position's origin
 };
 

@@ -20,6 +20,10 @@ inline constexpr double kRefreshDefaultHours = 12.0;  // "a few times a day"
 inline constexpr double kRefreshMaxHours = 24.0 * 30;
 inline constexpr std::size_t kRefreshMaxSources = 8;
 inline constexpr std::size_t kRefreshMaxUrl = 400;
+// A fresh state's refresh source (issue 30): CelesTrak's amateur group as OMM JSON, which also
+// carries the satellites with catalog numbers past 99999 that have no TLE. The shipped data stays
+// the offline fallback until the first refresh succeeds.
+inline constexpr const char* kDefaultElementsUrl = "https://celestrak.org/NORAD/elements/gp.php?GROUP=amateur&FORMAT=json";
 
 struct RefreshSource {
   std::string url;            // http(s)://, ftp(s)://, file:// or an absolute path

@@ -133,13 +133,13 @@ std::vector<fs::path> remove_stale_temporaries(const fs::path& dir) {
 
 StateFile::StateFile(fs::path directory) : dir_(std::move(directory)) {}
 
-LoadOutcome StateFile::load() const {
+LoadOutcome StateFile::load(bool read_only) const {
   LoadOutcome out;
   const fs::path file = path();
   auto corrupt = [&](std::string reason) {
     out.kind = LoadOutcome::Kind::corrupt;
     out.reason = std::move(reason);
-    out.kept_aside = store::keep_aside(file);
+    if (!read_only) out.kept_aside = store::keep_aside(file);
     out.data = nlohmann::json();
     return out;
   };

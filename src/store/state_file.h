@@ -42,7 +42,8 @@ class StateFile {
   const std::filesystem::path& directory() const { return dir_; }
   std::filesystem::path path() const { return dir_ / kFileName; }
 
-  LoadOutcome load() const;
+  // read_only (the command line reading the menus' state): a corrupt file is reported, not moved.
+  LoadOutcome load(bool read_only = false) const;
   // Returns false with a one-line reason on failure (the old file is then untouched). The file is
   // written mode 0600, and a directory this creates 0700: the document holds the credentials of
   // the element downloads.

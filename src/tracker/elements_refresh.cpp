@@ -3,7 +3,12 @@
 #include <spdlog/spdlog.h>
 
 #include "download/download.h"
+#include <cmath>
+#include <cstdio>
+
+#include "orbit/element_age.h"
 #include "orbit/elements.h"
+#include "orbit/time.h"
 #include "store/model.h"
 #include "store/refresh.h"
 
@@ -49,11 +54,38 @@ std::optional<std::string> ElementsRefresh::refresh_now(std::int64_t now_unix) {
   return std::nullopt;
 }
 
-std::string ElementsRefresh::status_word() const {
-  if (last_result_.empty() || pending_ > 0) return "";
-  if (last_failed_) return "ELEMENTS NOT REFRESHED";
-  if (last_updated_ > 0) return "ELEMENTS " + std::to_string(last_updated_) + " UPDATED";
-  return "";
+std::string refresh_status_text(const RefreshState& s) {
+  const std::string todo = ", SEE MENU 3-5";
+  if (!s.stale_days) {
+    if (s.running || !s.attempted) return "";
+    if (s.failed) return "ELEMENTS NOT REFRESHED" + todo;
+    if (s.updated > 0) return "ELEMENTS " + std::to_string(s.updated) + " UPDATED";
+    return "";
+  }
+  char old[48];
+  std::snprintf(old, sizeof old, "ELEMENTS %.0f DAYS OLD", *s.stale_days);
+  if (!s.has_sources) return old + std::string(", NO REFRESH SOURCE") + todo;
+  if (s.running) return old + std::string(", REFRESHING");
+  if (!s.attempted) return old + std::string(", NO REFRESH SINCE START") + todo;
+  if (s.failed) return old + std::string(", REFRESH FAILED") + todo;
+  return old + std::string(", SOURCE HAS NO NEWER") + todo;
+}
+
+std::string ElementsRefresh::status_word(orbit::UtcTime now) const {
+  RefreshState st;
+  st.has_sources = !model_.refresh.sources.empty();
+  st.running = pending_ > 0;
+  st.attempted = !last_result_.empty();
+  st.failed = last_failed_;
+  st.updated = last_updated_;
+  std::optional<double> youngest;
+  for (const auto& sat : model_.db.satellites) {
+    const orbit::ElementAge age = orbit::element_age(sat.elements, now);
+    if (!age.stale()) return refresh_status_text(st);  // one current set: the database is usable
+    if (!youngest || std::abs(age.days) < std::abs(*youngest)) youngest = age.days;
+  }
+  st.stale_days = youngest;
+  return refresh_status_text(st);
 }
 
 void ElementsRefresh::start(std::int64_t now_unix) {

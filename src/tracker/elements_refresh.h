@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include "orbit/time.h"
+
 namespace tb::download {
 class Downloader;
 struct DownloadResult;
@@ -27,6 +29,18 @@ struct Model;
 }
 
 namespace tb::tracker {
+
+// What the status line says of the elements (pure, for the tests): nothing while they are current
+// and nothing went wrong; otherwise how old they are and what to do about it.
+struct RefreshState {
+  bool has_sources = false;
+  bool running = false;
+  bool attempted = false;  // a refresh finished since the start
+  bool failed = false;     // ... and a source of it failed
+  int updated = 0;
+  std::optional<double> stale_days;  // the database's youngest set, when every set is too old
+};
+std::string refresh_status_text(const RefreshState& s);
 
 class ElementsRefresh {
  public:
@@ -52,8 +66,8 @@ class ElementsRefresh {
   // The outcome of the last refresh, one line ("" before the first); whether it failed (any source).
   const std::string& last_result() const { return last_result_; }
   bool last_failed() const { return last_failed_; }
-  // A short form for the status line: "" (nothing to say), "ELEMENTS 3 UPDATED", "ELEMENTS NOT REFRESHED".
-  std::string status_word() const;
+  // A short form for the status line at the station's time `now` (refresh_status_text).
+  std::string status_word(orbit::UtcTime now) const;
 
   // Bounds of one download (default 60 s; `--elements-timeout`).
   void set_timeout(std::chrono::milliseconds t) { timeout_ = t; }

@@ -1,5 +1,7 @@
 #include "tracker/station_loop.h"
 
+#include "store/drivers.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -298,16 +300,22 @@ std::string StationLoop::status_line() const {
     };
     rig = "D " + mhz(radio.downlink_hz) + " U " + mhz(radio.uplink_hz);
   }
-  std::snprintf(buf, sizeof buf, " %04d/%02d/%02d %02d:%02d:%02d UTC | %s | Rotor %s %s | Radio %s", c.year, c.month,
-                c.day, c.hour, c.minute, static_cast<int>(c.second), sat.c_str(),
-                model_.rotor_control ? "ON " : "OFF", rot.c_str(), rig.c_str());
+  std::snprintf(buf, sizeof buf, " %04d/%02d/%02d %02d:%02d:%02d UTC | %s", c.year, c.month, c.day, c.hour, c.minute,
+                static_cast<int>(c.second), sat.c_str());
   std::string line = buf;
-  if (const SatNow* f = tracker_.followed(); f && tracker_.mode() != Mode::off)
-    if (const auto note = coverage_note(f->db_index)) line += " | " + *note;
+  // What needs the operator comes before the antenna and radio readings, which are on other
+  // screens too: a terminal narrower than the line cuts its end (issue 30).
+  if (save_failure_) line += " | STATE NOT SAVED";
   if (!notice_.empty()) line += " | " + notice_;
   if (gps_)
     if (const std::string w = gps_->status_word(); !w.empty()) line += " | " + w;
-  if (save_failure_) line += " | STATE NOT SAVED";
+  if (const SatNow* f = tracker_.followed(); f && tracker_.mode() != Mode::off)
+    if (const auto note = coverage_note(f->db_index)) line += " | " + *note;
+  // The drivers by name (issue 30): "Rotor SIM ON ...", "Radio hamlib 3081 D ...".
+  std::snprintf(buf, sizeof buf, " | Rotor %s %s %s | Radio %s %s", store::driver_label(model_.rotator_driver).c_str(),
+                model_.rotor_control ? "ON " : "OFF", rot.c_str(), store::driver_label(model_.radio_driver).c_str(),
+                rig.c_str());
+  line += buf;
   return line;
 }
 

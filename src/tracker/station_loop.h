@@ -149,8 +149,8 @@ class StationLoop {
   // The plan in force, if any (for displays and tests).
   const rotator::PassPlan* current_plan() const { return planned_ ? &planned_->plan : nullptr; }
   // When the plan for this satellite's pass does not follow all of it (limits, a split travel, the
-  // stop): "antenna follows 20% (12:57:01-12:59:02) in 180.0-350.0" or "PASS OUTSIDE LIMITS
-  // (antenna keeps to 180.0-350.0)". The realtime display and the status line show it.
+  // stop): "antenna on target 12:57:01-12:59:02 (20% of the pass): it reaches azimuth 180.0-350.0"
+  // or "PASS OUT OF ANTENNA REACH (it reaches azimuth 180.0-350.0)". The realtime display and the status line show it.
   std::optional<std::string> coverage_note(int db_index) const;
 };
 

@@ -26,7 +26,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                              ++saves;
                              return std::nullopt;
                            },
-                           "fuzz"};
+                           "fuzz", {}};
   term::ScriptTerminal term{std::string(keys)};
   term.timeouts_before_key = data[0] & 3;
   term.on_wait = [&st](std::optional<term::Duration> timeout) {

@@ -31,5 +31,7 @@ has trakbox passes x.tle --sat IS 'ISS.*' || fail "satellite names: $(complete_o
 has trakbox schedule --du --dut1 || fail "schedule options"
 has trakbox passes x.tle --no- --no-checksum || fail "--no-checksum"
 has trakbox el elements || fail "the elements command"
+has trakbox ne next || fail "the next command"
+has trakbox next ISS --wa --watch || fail "next --watch"
 has trakbox elements x.json --to omm-k omm-kvn || fail "--to formats: $(complete_of trakbox elements x.json --to omm-k)"
 echo "bash_completion.sh: passed"

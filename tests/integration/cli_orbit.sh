@@ -147,8 +147,11 @@ badarg --sat propagate "$TLE" --sat 12345 --start 0 --stop 10 --step 1
 badarg --sat propagate "$TLE" --sat 28872 --sat 5 --start 0 --stop 10 --step 1
 badarg ELEMENTS propagate "$TLE" --start 0 --stop 10 --step 1
 S=(schedule "$TLE" --sat 5 --start 2000-06-28 --step 60 --count 3)
-badarg --station "${S[@]}"
-badarg --station "${S[@]}" --station 1,2
+# No --station: the stored one (issue 30); a state that cannot be read is named, and kept as it is.
+mkdir -p "$TMP/badstate" && echo 'not a state' >"$TMP/badstate/trakbox-state.json"
+badarg --station "${S[@]}" --state "$TMP/badstate"
+expect "a state the command line cannot read stays where it is" 'grep -q "not a state" "$TMP/badstate/trakbox-state.json"'
+badarg --station "${S[@]}" --station 1,2,3,4
 badarg --station "${S[@]}" --station 95,0,0
 badarg --station "${S[@]}" --station 10,20,abc
 badarg --start schedule "$TLE" --sat 5 --station 1,2,3 --start 2000-13-01 --step 60 --count 3

@@ -48,9 +48,9 @@ def main():
     check(r.returncode == 0, f"tmux: {r.stderr}")
     try:
         wait_for(r"Select \[1-8,S,M\]:")
-        s = wait_for(r"UTC \| .* \| Rotor OFF")
+        s = wait_for(r"UTC \| .* \| Rotor SIM OFF")
         last = s.rstrip("\n").splitlines()[-1]
-        check(re.search(r"2026/05/21 12:0\d:\d\d UTC \| .* \| Rotor OFF", last), f"status line: {last!r}")
+        check(re.search(r"2026/05/21 12:0\d:\d\d UTC \| .* \| Rotor SIM OFF", last), f"status line: {last!r}")
 
         # S: single tracking with rotor control on; the ISS rises at 12:09:09 from this station.
         keys("S", "Enter")
@@ -83,7 +83,7 @@ def main():
         keys("VK2XYZ", "Enter")
         for _ in range(5):
             keys("Enter")
-        wait_for(r"COM port baud rate : 9600\s*\n----- MAIN MENU -----")
+        wait_for(r"COM port baud rate : 9600\s*\nStation saved: VK2XYZ .*\n----- MAIN MENU -----")
 
         # Ctrl-C leaves trakbox; the state is saved.
         keys("C-c")

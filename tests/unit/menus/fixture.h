@@ -28,7 +28,7 @@ struct MenuFixture : StationFixture {
     services = std::make_unique<menus::Services>(menus::Services{model, clock, tracker, *station, [this]() -> std::optional<std::string> {
       ++saves;
       return std::nullopt;
-    }, "test"});
+    }, "test", {}});
   }
 
   std::unique_ptr<menus::Services> services;

@@ -332,7 +332,8 @@ TEST_CASE("6-9 the station file round trip through the menu") {
 TEST_CASE("6-0 shows the later firmware's items only when they differ from the factory values") {
   store::Model m = store::factory_defaults();
   const auto factory = menus::configuration_lines(m);
-  CHECK(factory.size() == 13);   // the manual's screen
+  REQUIRE(factory.size() == 14);  // the manual's screen and trakbox's Drivers line (issue 30)
+  CHECK(factory.back() == "Drivers          Rotor SIM (simulated)  Radio SIM (simulated)");
   m.radio.rig = radio::Rig::yaesu;
   m.radio.rig_model = radio::RigModel::yaesu_847;
   m.radio.cat_baud = 9600;
@@ -340,10 +341,24 @@ TEST_CASE("6-0 shows the later firmware's items only when they differ from the f
   m.radio.parking = {true, 145'800'000, 0, radio::Mode::fm, radio::Mode::none};
   m.rotator_error_detection = false;
   const auto lines = menus::configuration_lines(m);
-  REQUIRE(lines.size() == 16);
+  REQUIRE(lines.size() == 17);
   CHECK(lines[6] == "CAT Rig          YAESU AOS  FT-847  9600 Bd");
   CHECK(lines[11] == "Rotor start      " + std::string(station::to_string(m.station.rotor_start)) + "  above EL:-1.5");
   CHECK(lines[13] == "Radio parking    On  RX:145.800 FM TX:- None");
   CHECK(lines[14] == "AOS/LOS line     On above EL:0.5  Off below EL:-0.5");
   CHECK(lines[15] == "Rotator error    Detection off");
+}
+
+TEST_CASE("6-0 and the status bar name the drivers (issue 30)") {
+  store::Model m = store::factory_defaults();
+  m.rotator_driver = "hamlib:603:/dev/ttyUSB0";
+  m.radio_driver = "rigctld:localhost:4532";
+  m.radio.uplink_radio = "icom:/dev/ttyUSB1";
+  CHECK(menus::configuration_lines(m).back() ==
+        "Drivers          Rotor hamlib 603 (hamlib:603:/dev/ttyUSB0)  Radio rigctld localhost "
+        "(rigctld:localhost:4532)  Uplink icom (icom:/dev/ttyUSB1)");
+  testing::MenuFixture f;
+  f.model.rotator_driver = "hamlib:603:/dev/ttyUSB0";
+  CHECK(f.station->status_line().find("| Rotor hamlib 603 OFF") != std::string::npos);
+  CHECK(f.station->status_line().find("| Radio SIM D ") != std::string::npos);
 }

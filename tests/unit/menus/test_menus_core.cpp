@@ -73,8 +73,11 @@ TEST_CASE("The realtime display warns when the elements are past their orbit's l
   testing::MenuFixture f("\rQ", orbit::from_civil(2031, 5, 21, 12, 0, 0));
   f.term.timeouts_before_key = 1;
   menus::menu_1_realtime_tracking(f.term, *f.services);
-  CHECK(f.term.output().find("Elements: epoch 2026/05/21 07:40:41 UTC, age 1826.2 days  WARNING: elements 1826.2 days "
-                             "old (more than 14 for a low orbit): positions are unreliable\n") != std::string::npos);
+  // On a line of its own, within 80 columns (issue 30: appended, it wrapped mid-sentence).
+  const std::string warning = "WARNING: elements too old (limit 14 days): positions unreliable, see 3-5";
+  CHECK(f.term.output().find("Elements: epoch 2026/05/21 07:40:41 UTC, age 1826.2 days\n" + warning + "\n") !=
+        std::string::npos);
+  CHECK(warning.size() < 80);
 }
 
 TEST_CASE("Line mode: U steps the followed satellite's uplink through its FREQ.DAT channels") {

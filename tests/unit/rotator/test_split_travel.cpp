@@ -125,7 +125,7 @@ TEST_CASE("Planner on the ISS pass 335 -> 101, South start, limits 10..350") {
     CHECK(plan.geometry.piece == 1);
     CHECK(plan.coverage.samples == 64);
     CHECK(plan.coverage.followed == 41);  // 13 samples lie in 180..350, 10 in the excluded 350..10
-    CHECK(plan.coverage_text() == "antenna follows 64% (13:00:53-13:07:37) in 10.0-180.0");
+    CHECK(plan.coverage_text() == "antenna on target 13:00:53-13:07:37 (64% of the pass): it reaches azimuth 10.0-180.0");
     CHECK(plan.aos.az_travel == doctest::Approx(190.0));  // waits at 10 for the satellite to come round
     // Once the pass has begun, no crossing: the piece in force only.
     const PassPlan during = plan_pass(track, PassGeometry::from(m, false), 160.0);
@@ -137,7 +137,7 @@ TEST_CASE("Planner on the ISS pass 335 -> 101, South start, limits 10..350") {
     const PassPlan plan = plan_pass(track, PassGeometry::from(m, true), 160.0);
     CHECK(plan.geometry.piece == 0);
     CHECK(plan.coverage.followed == 13);
-    CHECK(plan.coverage_text() == "antenna follows 20% (12:57:01-12:59:02) in 180.0-350.0");
+    CHECK(plan.coverage_text() == "antenna on target 12:57:01-12:59:02 (20% of the pass): it reaches azimuth 180.0-350.0");
     CHECK_FALSE(plan.coverage.full());
     for (const TrackPoint& p : track) CHECK(plan.map(p.az_deg, p.el_deg).az_travel <= 170.0);
   }
@@ -147,7 +147,7 @@ TEST_CASE("Planner on the ISS pass 335 -> 101, South start, limits 10..350") {
     std::vector<TrackPoint> east(track.end() - 20, track.end());  // 30..101 deg, in the other piece
     const PassPlan plan = plan_pass(east, PassGeometry::from(m, true), 160.0);
     CHECK(plan.coverage.followed == 0);
-    CHECK(plan.coverage_text() == "PASS OUTSIDE LIMITS (antenna keeps to 180.0-350.0)");
+    CHECK(plan.coverage_text() == "PASS OUT OF ANTENNA REACH (it reaches azimuth 180.0-350.0)");
   }
 }
 
@@ -210,4 +210,12 @@ TEST_CASE("Crossing allowed: the antenna moves to the other piece when asked, th
   CHECK(rig.ctl->model().az_piece() == 1);
   CHECK(rig.ctl->status().target->az_travel == doctest::Approx(210.0));
   CHECK_FALSE(rig.ctl->select_az_piece(2));
+}
+
+TEST_CASE("compass sectors an operator reads: a whole turn, one azimuth, a sector (issue 30)") {
+  using tb::rotator::compass_sector_text;
+  CHECK(compass_sector_text(tb::station::RotorStart::south, {0.0, 360.0}) == "all azimuths");
+  CHECK(compass_sector_text(tb::station::RotorStart::south, {0.0, 450.0}) == "all azimuths");
+  CHECK(compass_sector_text(tb::station::RotorStart::south, {10.0, 10.0}) == "190.0 only");
+  CHECK(compass_sector_text(tb::station::RotorStart::north, {10.0, 180.0}) == "10.0-180.0");
 }

@@ -116,10 +116,40 @@ TEST_CASE("The rotor follows above the rotor start elevation: waits at AOS while
   CHECK(t.tick().antenna == A::point);
 }
 
-TEST_CASE("The clock set back (menu 5): the pass shown is the one then, not the one found from later") {
-  IssAlone s(orbit::from_civil(2026, 5, 21, 0, 0, 0));
-  auto& [m, iss, clock, t] = s;
+// The ISS tracked alone from the factory station at 2026-05-21 00:00, after one tick.
+struct IssTracked {
+  store::Model m = shipped(station::RotorStart::south, 27.391, 128.657, 50.0);
+  int iss = *m.db.find("ISS");
+  station::ManualClock clock{orbit::from_civil(2026, 5, 21, 0, 0, 0)};
+  tracker::Tracker t{m, clock};
+  IssTracked() {
+    t.track_single(iss);
+    t.tick();
+  }
+};
+
+TEST_CASE("The station moved (menu 4): the pass shown is the new station's, not the one found for the old") {
+  IssTracked run;
+  auto& [m, iss, clock, t] = run;
+  REQUIRE(t.followed()->pass);
+  const orbit::Pass old_place = *t.followed()->pass;
+  m.station.lat_deg = 48.85;  // Paris
+  m.station.lon_deg = 2.35;
+  m.station.height_m = 35.0;
   t.tick();
+  REQUIRE(t.followed()->pass);
+  orbit::PassOptions po;
+  po.precision_s = 1.0;
+  const auto expected = orbit::next_pass(orbit::Sgp4(m.db.satellites[static_cast<std::size_t>(iss)].elements),
+                                         m.station.observer(), clock.now(), 10.0, po);
+  REQUIRE(expected);
+  CHECK(t.followed()->pass->aos != old_place.aos);
+  CHECK(std::abs(orbit::minutes_between(t.followed()->pass->aos, expected->aos)) * 60.0 < 1.0);
+}
+
+TEST_CASE("The clock set back (menu 5): the pass shown is the one then, not the one found from later") {
+  IssTracked run;
+  auto& [m, iss, clock, t] = run;
   REQUIRE(t.followed()->pass);
   const orbit::Pass first = *t.followed()->pass;
   // Past that pass: the next one is found.
@@ -335,8 +365,8 @@ TEST_CASE("Limits that split the travel, as barriers: the antenna keeps to its p
   CHECK(r.hi <= 170.5);  // never into the excluded 350..10 (travel 170..190)
   CHECK(r.lo >= 150.0);
   REQUIRE(r.note);
-  CHECK(*r.note == "antenna follows 20% (12:57:00-12:59:02) in 180.0-350.0");
-  CHECK(r.status.find(" | antenna follows 20% (12:57:00-12:59:02) in 180.0-350.0") != std::string::npos);
+  CHECK(*r.note == "antenna on target 12:57:00-12:59:02 (20% of the pass): it reaches azimuth 180.0-350.0");
+  CHECK(r.status.find(" | antenna on target 12:57:00-12:59:02 (20% of the pass): it reaches azimuth 180.0-350.0") != std::string::npos);
   CHECK(r.err_end > 40.0);  // held at 350 while the ISS is in the east
 }
 
@@ -345,7 +375,7 @@ TEST_CASE("Limits that split the travel, crossing allowed: the piece that covers
   CHECK(r.lo >= 189.5);  // in 10..180 for the whole pass: crossed before AOS, not during it
   CHECK(r.hi <= 360.0);
   REQUIRE(r.note);
-  CHECK(*r.note == "antenna follows 64% (13:00:53-13:07:37) in 10.0-180.0");
+  CHECK(*r.note == "antenna on target 13:00:53-13:07:37 (64% of the pass): it reaches azimuth 10.0-180.0");
   CHECK(r.err_end < 2.0);
 }
 

@@ -1,0 +1,38 @@
+// A pass as a polar plot (issue 30, "pictures of a pass"): the sky seen from the station, north up
+// and east right, the horizon the outer circle and the zenith the centre. The satellite's track
+// (blue) with AOS, TCA and LOS marked and timed; the antenna's planned path (orange, from the
+// rotator's pass plan: flip, limits); the part of the track the antenna cannot follow (red); the
+// azimuths the rotator cannot reach (grey). Drawn with cairo, as PNG or SVG by the file's
+// extension.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "orbit/passes.h"
+#include "rotator/pass_plan.h"
+
+namespace tb::app {
+
+struct PassPicture {
+  std::string title;                       // "ISS (ZARYA)"
+  orbit::Pass pass;
+  std::vector<rotator::TrackPoint> track;  // AOS to LOS
+  std::optional<rotator::PassPlan> plan;   // the antenna's plan, when the rotator is known
+};
+
+inline constexpr int kPlotSize = 640;      // pixels (PNG) or points (SVG), square
+inline constexpr double kPlotRadius = 270; // the horizon's radius
+inline constexpr double kPlotCentre = 320; // x and y of the zenith
+
+// Pixel position of az/el on the plot (elevations below 0 lie outside the horizon circle).
+void plot_position(double az_deg, double el_deg, double& x, double& y);
+
+// Writes the picture to `path` (.png or .svg); the reason when it cannot.
+std::optional<std::string> write_pass_plot(const PassPicture& p, const std::string& path);
+
+// Samples a pass every `step_s` seconds from AOS to LOS (LOS included).
+std::vector<rotator::TrackPoint> sample_pass(const orbit::Sgp4& sat, const orbit::Observer& o, const orbit::Pass& p,
+                                             double step_s = 5.0);
+
+}  // namespace tb::app

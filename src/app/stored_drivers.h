@@ -1,0 +1,17 @@
+// --rotator and --radio are remembered like --uplink-radio (issue 30): given, they are stored;
+// left out, the stored ones are driven, and the operator is told so.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/tracker_config.h"
+#include "store/model.h"
+
+namespace tb::app {
+
+// Stores the drivers c names, or puts the stored ones into c. The lines to tell the operator go to
+// `said`; a stored spec this trakbox cannot use is the error returned.
+std::optional<std::string> apply_stored_drivers(TrackerConfig& c, store::Model& m, std::vector<std::string>& said);
+
+}  // namespace tb::app
