@@ -1,9 +1,13 @@
 // Full-screen ncurses front end: the menus' text in a scrolling area, live blocks redrawn in place,
 // a status line at the bottom, and (in realtime tracking) a polar sky plot and a world map.
 #pragma once
+#include <cstdio>
 #include <memory>
+#include <string>
 
 #include "menus/term/terminal.h"
+
+struct screen;  // ncurses' SCREEN
 
 namespace tb::term {
 
@@ -11,6 +15,14 @@ class CursesTerminal final : public Terminal {
  public:
   // Takes over the controlling terminal (stdin/stdout). Restores it on destruction.
   explicit CursesTerminal(WaitReadable wait);
+  // Output only, on a screen of the caller's (newterm on another terminal's streams: an attached
+  // client, app/attach_server.cpp); every call selects it first, so several can live in one
+  // process. Takes the screen over (endwin and delscreen on destruction); keys come from elsewhere.
+  explicit CursesTerminal(::screen* screen);
+  // Such a screen on the streams of a terminal of type term_type (its output is written to `out`),
+  // rows x cols; null when the type is unknown here (the caller falls back to plain lines).
+  static std::unique_ptr<CursesTerminal> open_on(const std::string& term_type, std::FILE* out, std::FILE* in,
+                                                 int rows, int cols);
   ~CursesTerminal() override;
   CursesTerminal(const CursesTerminal&) = delete;
   CursesTerminal& operator=(const CursesTerminal&) = delete;
@@ -26,6 +38,8 @@ class CursesTerminal final : public Terminal {
   bool full_screen() const override { return true; }
   int columns() const override;
   int rows() const override;
+  // The terminal's size changed: the windows are laid out again (empty: the caller redraws).
+  void resize(int rows, int cols);
   // True once Ctrl-C was typed: it ends the input for good (every later read sees the end).
   bool closed() const override;
 

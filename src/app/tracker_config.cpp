@@ -56,6 +56,13 @@ std::vector<OptionSpec> tracker_option_specs() {
       {"cross-limit-sector", "yes|no", "when the rotator limits split its travel (the rotor stop inside them): yes, "
                                        "they are pointing limits the antenna may cross between passes; no (the "
                                        "factory setting), they are barriers (stored)"},
+      {"socket", "PATH", "the station's socket for trakbox attach, status and events (default STATE/trakbox.sock; "
+                         "the system service's is /run/trakbox/trakbox.sock), made for the user and group only"},
+      {"on-event", "[KIND,...=]CMD", "run CMD (with /bin/sh) on every event, or on the kinds named: aos, los, "
+                                     "elements, link-lost, link-back, save-failed; the event is in its environment "
+                                     "(TRAKBOX_EVENT, TRAKBOX_SATELLITE, TRAKBOX_AOS, ...; docs/service.md)", true},
+      {"hook-timeout", "S", "seconds an --on-event command may run before it is killed, 1 to 3600 (default 60)"},
+      {"event-lead", "S", "the AOS event comes S seconds before AOS, 0 to 3600 (default 0)"},
       {"log-level", "LEVEL", "what trakbox.log in the state directory keeps: error, warn, info (default) or "
                              "debug (every remote command and its reply)"},
   };
@@ -217,6 +224,15 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
     if (const auto cidr = net::parse_cidr(a)) c.allow.push_back(*cidr);
     else r.fail("--allow", "expected an address or ADDRESS/PREFIX (192.168.1.0/24, ::1); found '" + a + "'");
   }
+  for (const std::string& h : o.values("on-event")) {
+    std::string why;
+    if (auto hook = parse_event_hook(h, why)) c.hooks.push_back(std::move(*hook));
+    else r.fail("--on-event", why);
+  }
+  if (const auto v = r.integer("hook-timeout", false, "seconds, 1 to 3600", Range{1, 3600}))
+    c.hook_timeout_s = static_cast<int>(*v);
+  if (const auto v = r.integer("event-lead", false, "seconds, 0 to 3600", Range{0, 3600}))
+    c.event_lead_s = static_cast<int>(*v);
   check_front_end(o, r, front_end);
   read_secrets(o, r, c);
   read_refresh(o, r, c);
@@ -229,6 +245,7 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
   c.listen = o.value("listen").value_or("127.0.0.1");
   c.state_dir = o.value("state") ? std::filesystem::path(*o.value("state")) : store::default_state_directory();
   c.data_dir = o.value("data").value_or(default_data_directory());
+  c.socket = o.value("socket").value_or((c.state_dir / "trakbox.sock").string());
   return ConfigOutcome::run(std::move(c));
 }
 

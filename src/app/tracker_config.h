@@ -10,6 +10,7 @@
 
 #include <spdlog/common.h>
 
+#include "app/event_hooks.h"
 #include "app/options.h"
 #include "orbit/time.h"
 #include "radio/factory.h"
@@ -65,6 +66,12 @@ struct TrackerConfig {
   // --cross-limit-sector yes|no: whether limits that split the rotator's travel may be crossed
   // between passes (RotatorConfig::cross_limit_sector); stored in the state when given.
   std::optional<bool> cross_limit_sector;
+  // The station's socket (attach, status, events): --socket, else STATE_DIR/trakbox.sock.
+  std::string socket;
+  // --on-event hooks, their time limit (--hook-timeout) and the AOS event's lead (--event-lead).
+  std::vector<EventHook> hooks;
+  int hook_timeout_s = 60;
+  int event_lead_s = 0;
   std::vector<std::string> warnings;  // e.g. a secret file others can read: said at start
   spdlog::level::level_enum log_level = spdlog::level::info;
 };
