@@ -183,7 +183,7 @@ CursesTerminal::CursesTerminal(WaitReadable wait) : impl_(std::make_unique<Impl>
   doupdate();
 }
 
-CursesTerminal::CursesTerminal(::screen* screen) : impl_(std::make_unique<Impl>()) {
+CursesTerminal::CursesTerminal(::screen* screen, int rows, int cols) : impl_(std::make_unique<Impl>()) {
   impl_->screen = screen;
   impl_->select();
   noecho();
@@ -196,18 +196,11 @@ CursesTerminal::CursesTerminal(::screen* screen) : impl_(std::make_unique<Impl>(
     init_pair(3, COLOR_CYAN, -1);
     impl_->colors = true;
   }
-  impl_->layout();
-  impl_->draw_status();
-  doupdate();
+  resize(rows, cols);
 }
 
-std::unique_ptr<CursesTerminal> CursesTerminal::open_on(const std::string& term_type, std::FILE* out, std::FILE* in,
-                                                        int rows, int cols) {
-  SCREEN* scr = newterm(term_type.c_str(), out, in);
-  if (!scr) return nullptr;
-  auto t = std::make_unique<CursesTerminal>(scr);
-  t->resize(rows, cols);
-  return t;
+::screen* new_screen(const std::string& term_type, std::FILE* out, std::FILE* in) {
+  return newterm(term_type.c_str(), out, in);
 }
 
 CursesTerminal::~CursesTerminal() {
@@ -215,7 +208,6 @@ CursesTerminal::~CursesTerminal() {
   if (impl_->text) delwin(impl_->text);
   if (impl_->status) delwin(impl_->status);
   endwin();
-  if (!impl_->wait && impl_->screen) delscreen(impl_->screen);
 }
 
 int CursesTerminal::columns() const {

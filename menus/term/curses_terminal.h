@@ -15,14 +15,11 @@ class CursesTerminal final : public Terminal {
  public:
   // Takes over the controlling terminal (stdin/stdout). Restores it on destruction.
   explicit CursesTerminal(WaitReadable wait);
-  // Output only, on a screen of the caller's (newterm on another terminal's streams: an attached
-  // client, app/attach_server.cpp); every call selects it first, so several can live in one
-  // process. Takes the screen over (endwin and delscreen on destruction); keys come from elsewhere.
-  explicit CursesTerminal(::screen* screen);
-  // Such a screen on the streams of a terminal of type term_type (its output is written to `out`),
-  // rows x cols; null when the type is unknown here (the caller falls back to plain lines).
-  static std::unique_ptr<CursesTerminal> open_on(const std::string& term_type, std::FILE* out, std::FILE* in,
-                                                 int rows, int cols);
+  // Output only, on a screen of the caller's (new_screen: an attached client's terminal,
+  // app/attach_server.cpp); every call selects it first, so several can live in one process. The
+  // screen stays the caller's: on destruction the windows go and the screen is left with endwin,
+  // ready for another CursesTerminal. Keys come from elsewhere.
+  CursesTerminal(::screen* screen, int rows, int cols);
   ~CursesTerminal() override;
   CursesTerminal(const CursesTerminal&) = delete;
   CursesTerminal& operator=(const CursesTerminal&) = delete;
@@ -50,6 +47,11 @@ class CursesTerminal final : public Terminal {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+// A screen of terminal type term_type writing to `out` (input `in` is never read); null when the
+// type is unknown here. Screens are never deleted: ncurses 6.4's delscreen frees the windows of
+// every screen, not only its own, so a caller keeps a screen for the next client of its type.
+::screen* new_screen(const std::string& term_type, std::FILE* out, std::FILE* in);
 
 // Pure drawing helpers (tested without a screen): a character grid for a polar sky plot and for an
 // equirectangular world map with a ground track.

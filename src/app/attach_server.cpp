@@ -200,28 +200,38 @@ std::string peer_name(int fd, const std::string& tty) {
   return t.empty() ? user : user + " " + t;
 }
 
+// A curses screen on a pipe this side drains, kept for the next client of its terminal type
+// (curses_terminal.h: screens are never deleted).
+struct ScreenSlot {
+  std::string type;
+  ::screen* screen = nullptr;
+  FILE* out = nullptr;
+  FILE* in = nullptr;
+  int pipe_rd = -1;
+};
+
 struct Member {
   int id = 0;
   std::string who;
   std::shared_ptr<Outbox> out;
   std::unique_ptr<term::Terminal> screen;
   term::CursesTerminal* curses = nullptr;  // screen, when full screen
-  int pipe_rd = -1;                        // the curses screen's output
-  FILE* curses_out = nullptr;
-  FILE* curses_in = nullptr;
+  ScreenSlot slot;                         // its curses screen and the pipe of its output
+  std::vector<ScreenSlot>* pool = nullptr; // where the slot goes back
   FrameDecoder frames;
   std::deque<int> keys;
   std::array<char, 4096> rbuf{};
   bool gone = false;
   std::string told;  // the keyboard note last given to a line client
+  std::chrono::steady_clock::time_point told_at{};
 
   // What the curses screen wrote, to the client.
   void drain() {
-    if (pipe_rd < 0) return;
-    if (curses_out) std::fflush(curses_out);
+    if (slot.pipe_rd < 0) return;
+    std::fflush(slot.out);
     std::array<char, 16384> buf{};
     for (;;) {
-      const ssize_t n = ::read(pipe_rd, buf.data(), buf.size());
+      const ssize_t n = ::read(slot.pipe_rd, buf.data(), buf.size());
       if (n <= 0) break;
       if (!out->send(std::string_view(buf.data(), static_cast<std::size_t>(n)))) break;
     }
@@ -229,9 +239,13 @@ struct Member {
   ~Member() {
     screen.reset();  // endwin: the client's terminal is given back as it was
     drain();
-    if (curses_out) std::fclose(curses_out);
-    if (curses_in) std::fclose(curses_in);
-    if (pipe_rd >= 0) ::close(pipe_rd);
+    if (slot.screen && pool) {
+      // Whatever the client did not take is not for the next one.
+      std::array<char, 16384> buf{};
+      while (::read(slot.pipe_rd, buf.data(), buf.size()) > 0) {
+      }
+      pool->push_back(slot);
+    }
     if (!out->closed) {
       out->send("\r\n[detached from trakbox: the station goes on]\r\n");
       out->finish();
@@ -275,6 +289,7 @@ struct AttachServer::Impl {
   spdlog::logger& log;
   stream::acceptor acceptor;
   MuxTerminal mux;
+  std::vector<ScreenSlot> pool;  // before the members: they give their screens back to it
   std::vector<std::unique_ptr<Member>> members;
   std::vector<std::shared_ptr<Outbox>> subscribers;
   int next_id = 1;
@@ -294,9 +309,13 @@ struct AttachServer::Impl {
     for (auto& m : members) {
       if (m->gone) continue;
       f(*m->screen, *m);
-      m->drain();
-      if (m->out->closed) gone(*m, m->out->overflowed ? "stopped reading (output backed up): disconnected" : "");
+      sent(*m);
     }
+  }
+  // What a member's screen wrote goes to its client; a client whose output backed up is gone.
+  void sent(Member& m) {
+    m.drain();
+    if (m.out->closed) gone(m, m.out->overflowed ? "stopped reading (output backed up): disconnected" : "");
   }
   void gone(Member& m, const std::string& why) {
     if (m.gone) return;
@@ -330,10 +349,11 @@ struct AttachServer::Impl {
         const std::string note = keyboard_note(*m);
         if (note != m->told) {
           m->told = note;
+          m->told_at = std::chrono::steady_clock::now();
           m->screen->write("\n*** " + note + "***\n");
         }
       }
-      m->drain();
+      sent(*m);
     }
   }
   // The screen as it was, for a client that just came (or whose screen was laid out again).
@@ -354,7 +374,7 @@ struct AttachServer::Impl {
     if (!live_block.empty()) t.live(live_block);
     if (m.curses) t.status(keyboard_note(m) + status_text);
     t.flush();
-    m.drain();
+    sent(m);
   }
 
   void accept() {
@@ -429,26 +449,36 @@ struct AttachServer::Impl {
   }
   static bool m_is_line(const Member& m) { return m.curses == nullptr; }
 
-  // A curses screen of the client's type on a pipe this side drains into the client's outbox.
+  // A curses screen of the client's type (one kept from an earlier client, else a new one on a
+  // pipe this side drains into the client's outbox).
   void open_screen(Member& m, const std::string& term_type, int rows, int cols) {
-    int p[2];
-    if (::pipe2(p, O_CLOEXEC) != 0) return;
-    ::fcntl(p[1], F_SETPIPE_SZ, 1 << 20);
-    ::fcntl(p[0], F_SETFL, O_NONBLOCK);
-    FILE* o = ::fdopen(p[1], "w");
-    FILE* i = std::fopen("/dev/null", "r");
-    std::unique_ptr<term::CursesTerminal> c = (o && i) ? term::CursesTerminal::open_on(term_type, o, i, rows, cols) : nullptr;
-    if (!c) {
-      if (o) std::fclose(o);
-      else ::close(p[1]);
-      if (i) std::fclose(i);
-      ::close(p[0]);
-      log.info("attach: terminal type '{}' unknown here: plain lines", term_type);
-      return;
+    ScreenSlot slot;
+    if (const auto kept = std::find_if(pool.begin(), pool.end(), [&](const ScreenSlot& s) { return s.type == term_type; });
+        kept != pool.end()) {
+      slot = *kept;
+      pool.erase(kept);
+    } else {
+      int p[2];
+      if (::pipe2(p, O_CLOEXEC) != 0) return;
+      ::fcntl(p[1], F_SETPIPE_SZ, 1 << 20);
+      ::fcntl(p[0], F_SETFL, O_NONBLOCK);
+      slot.type = term_type;
+      slot.out = ::fdopen(p[1], "w");
+      slot.in = std::fopen("/dev/null", "r");
+      slot.pipe_rd = p[0];
+      slot.screen = (slot.out && slot.in) ? term::new_screen(term_type, slot.out, slot.in) : nullptr;
+      if (!slot.screen) {
+        if (slot.out) std::fclose(slot.out);
+        else ::close(p[1]);
+        if (slot.in) std::fclose(slot.in);
+        ::close(p[0]);
+        log.info("attach: terminal type '{}' unknown here: plain lines", term_type);
+        return;
+      }
     }
-    m.pipe_rd = p[0];
-    m.curses_out = o;
-    m.curses_in = i;
+    m.slot = slot;
+    m.pool = &pool;
+    auto c = std::make_unique<term::CursesTerminal>(slot.screen, rows, cols);
     m.curses = c.get();
     m.screen = std::move(c);
   }
@@ -480,7 +510,8 @@ struct AttachServer::Impl {
       replay(m);
     }
     for (const int key : decode_keys(f.bytes)) {
-      if (key == kDetachKey) {
+      // Ctrl-C leaves trakbox at its console; attached, leaving is detaching.
+      if (key == kDetachKey || key == 3) {
         gone(m, "");
         return;
       }
@@ -492,8 +523,12 @@ struct AttachServer::Impl {
         }
         if (key == kTakeOverKey) continue;
       }
-      if (keyboard == m.id) m.keys.push_back(key);
-      else if (!m.curses) m.told.clear(), announce_keyboard();  // say again who has it
+      if (keyboard == m.id) {
+        m.keys.push_back(key);
+      } else if (!m.curses && std::chrono::steady_clock::now() - m.told_at > std::chrono::seconds(2)) {
+        m.told.clear();  // say again who has it (at most every 2 s, however many keys come)
+        announce_keyboard();
+      }
     }
   }
 };

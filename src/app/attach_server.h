@@ -29,7 +29,7 @@ namespace tb::app {
 class MuxTerminal;
 
 // The keys of an attached terminal.
-inline constexpr int kDetachKey = 0x1d;    // Ctrl-]
+inline constexpr int kDetachKey = 0x1d;    // Ctrl-] (Ctrl-C detaches too)
 inline constexpr int kTakeOverKey = 0x14;  // Ctrl-T
 // What a client may have unsent before it is disconnected.
 inline constexpr std::size_t kAttachOutputLimit = 256 * 1024;
