@@ -8,6 +8,7 @@
 
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/local/stream_protocol.hpp>
+#include <boost/asio/posix/stream_descriptor.hpp>
 #include <boost/asio/read_until.hpp>
 #include <boost/asio/steady_timer.hpp>
 #include <boost/asio/streambuf.hpp>
@@ -100,8 +101,9 @@ constexpr int kMaxRows = 100, kMaxCols = 250;  // a screen's refresh stays far b
 // A connection's output: a bounded queue written asynchronously. Over the bound the connection is
 // closed: the station never waits for a reader.
 struct Outbox : std::enable_shared_from_this<Outbox> {
-  Outbox(stream::socket s, std::size_t limit) : sock(std::move(s)), limit(limit) {}
-  stream::socket sock;
+  // Any stream: a client's socket, or the serial port of --tty.
+  Outbox(asio::posix::stream_descriptor s, std::size_t limit) : sock(std::move(s)), limit(limit) {}
+  asio::posix::stream_descriptor sock;
   std::size_t limit;
   std::string pending, inflight;
   bool writing = false, closed = false, overflowed = false, close_when_sent = false;
@@ -141,7 +143,7 @@ struct Outbox : std::enable_shared_from_this<Outbox> {
     if (closed) return;
     closed = true;
     boost::system::error_code ec;
-    sock.shutdown(stream::socket::shutdown_both, ec);
+    ::shutdown(sock.native_handle(), SHUT_RDWR);  // (a serial port says ENOTSOCK: nothing to do)
     sock.close(ec);
   }
 };
@@ -222,6 +224,7 @@ struct Member {
   std::deque<int> keys;
   std::array<char, 4096> rbuf{};
   bool gone = false;
+  bool permanent = false;  // the serial port of --tty: no detaching, and a lost port is only logged
   std::string told;  // the keyboard note last given to a line client
   std::chrono::steady_clock::time_point told_at{};
 
@@ -386,7 +389,7 @@ struct AttachServer::Impl {
   }
   // The first line says what the client wants: "status", "events" or "attach {json}".
   void greet(stream::socket sock) {
-    auto out = std::make_shared<Outbox>(std::move(sock), opt.output_limit);
+    auto out = std::make_shared<Outbox>(asio::posix::stream_descriptor(io, sock.release()), opt.output_limit);
     auto buf = std::make_shared<asio::streambuf>(4096);
     auto timer = std::make_shared<asio::steady_timer>(io, std::chrono::seconds(10));
     timer->async_wait([out](const boost::system::error_code& ec) {
@@ -448,6 +451,23 @@ struct AttachServer::Impl {
     read(ref);
   }
   static bool m_is_line(const Member& m) { return m.curses == nullptr; }
+
+  // --tty with --service: the serial port is a client for good (it never detaches).
+  void add_serial(int fd, const std::string& who) {
+    auto out = std::make_shared<Outbox>(asio::posix::stream_descriptor(io, fd), opt.output_limit);
+    auto m = std::make_unique<Member>();
+    m->id = next_id++;
+    m->out = out;
+    m->who = who;
+    m->permanent = true;
+    Member* raw = m.get();
+    m->screen = std::make_unique<LineSink>([raw](std::string_view s) { raw->out->send(s); }, true);
+    log.info("attach: the menus on {} too", who);
+    Member& ref = *m;
+    members.push_back(std::move(m));
+    replay(ref);
+    read(ref);
+  }
 
   // A curses screen of the client's type (one kept from an earlier client, else a new one on a
   // pipe this side drains into the client's outbox).
@@ -511,7 +531,7 @@ struct AttachServer::Impl {
     }
     for (const int key : decode_keys(f.bytes)) {
       // Ctrl-C leaves trakbox at its console; attached, leaving is detaching.
-      if (key == kDetachKey || key == 3) {
+      if ((key == kDetachKey || key == 3) && !m.permanent) {
         gone(m, "");
         return;
       }
@@ -644,6 +664,8 @@ void AttachServer::publish(const nlohmann::json& event) {
     if (!s->send(line) && s->overflowed) impl_->log.warn("events: a reader stopped reading: disconnected");
   std::erase_if(impl_->subscribers, [](const auto& s) { return s->closed; });
 }
+
+void AttachServer::add_serial(int fd, const std::string& who) { impl_->add_serial(fd, who); }
 
 void AttachServer::detach_keyboard() {
   if (Member* h = impl_->holder()) impl_->gone(*h, "");

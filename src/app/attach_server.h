@@ -57,6 +57,9 @@ class AttachServer {
   term::Terminal& terminal();
   // One JSON line to every `trakbox events` client.
   void publish(const nlohmann::json& event);
+  // The serial port of --tty (open, set up; taken over) as a client that stays: plain lines, its
+  // keys like any client's (who: "/dev/ttyS0").
+  void add_serial(int fd, const std::string& who);
   // Detaches the client that has the keyboard (the main menu's leave, when attached).
   void detach_keyboard();
   // Who is attached ("alice pts/3"), and who has the keyboard ("" for nobody).

@@ -387,6 +387,14 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
     std::fprintf(stderr, "trakbox: WARNING: %s\n", w.c_str());
   }
   std::unique_ptr<AttachServer> attach = open_socket(app, c, *lock);
+  if (c.service && c.tty) {
+    // The box's serial port: the service's menus there as well, for good.
+    if (!attach) return usage_error("--tty: the service's menus need its socket");
+    std::string err;
+    const int fd = term::LineTerminal::open_serial_fd(*c.tty, c.baud.value_or(app.model().station.com_baud), err);
+    if (fd < 0) return usage_error(err);
+    attach->add_serial(fd, *c.tty);
+  }
   EventHooks hooks(app.io(), c.hooks, std::chrono::seconds(c.hook_timeout_s), *log);
   app.set_events(
       [&](const tracker::Event& e) {

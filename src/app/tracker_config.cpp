@@ -19,7 +19,8 @@ std::vector<OptionSpec> tracker_option_specs() {
       {"state", "DIR", "state directory (default $XDG_STATE_HOME/trakbox)"},
       {"data", "DIR", "shipped data for a fresh start (default $TRAKBOX_DATA, else PREFIX/share/trakbox of an "
                       "installed trakbox, else the source tree's data/ for a build that is not installed)"},
-      {"tty", "DEVICE", "run the menus as plain lines on this serial port (e.g. /dev/ttyS0)"},
+      {"tty", "DEVICE", "run the menus as plain lines on this serial port (e.g. /dev/ttyS0); with --service, "
+                        "the service's menus are there too"},
       {"baud", "N", "serial port speed with --tty: 1200, 2400, 4800, 9600 (default) or 19200, 8N1"},
       {"line", "", "plain lines on stdin/stdout even when they are a terminal"},
       {"standalone", "N", "track selector position N (1-15) with no menus: LCD and AOS LED"},
@@ -160,7 +161,7 @@ void read_refresh(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
 // Front ends that cannot go together.
 void check_front_end(const ParsedOptions& o, OptionReader& r, FrontEnd front_end) {
   const bool service = o.has("service");
-  for (const char* other : {"tty", "line", "standalone"})
+  for (const char* other : {"line", "standalone"})
     if (service && o.has(other)) r.fail("--service", std::string("not with --") + other + " (a service has no terminal)");
   if (service && front_end == FrontEnd::host) r.fail("--service", "not with trakbox host");
   if (front_end == FrontEnd::host && (o.has("tty") || o.has("standalone")))
