@@ -4,13 +4,14 @@
 // standalone, host mode or the unattended service), and the final save.
 #include "app/tracker_app.h"
 
+#include "app/log_guard.h"
+
 #include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 
-#include <spdlog/sinks/basic_file_sink.h>
 #include <spdlog/sinks/stdout_sinks.h>
 #include <spdlog/spdlog.h>
 
@@ -57,17 +58,21 @@ std::optional<std::string> prepare_state_dir(const std::filesystem::path& state_
 // stamps the time itself), made the default logger: drivers and servers log there, never on the
 // terminal the menus own.
 std::shared_ptr<spdlog::logger> open_log(const TrackerConfig& c) {
-  std::vector<spdlog::sink_ptr> sinks{
-      std::make_shared<spdlog::sinks::basic_file_sink_mt>((c.state_dir / "trakbox.log").string())};
-  if (c.service) {
+  LogFile file = open_log_file(c.state_dir, LogLimits{});
+  std::vector<spdlog::sink_ptr> sinks;
+  if (file.sink) sinks.push_back(std::move(file.sink));
+  if (c.service || !file.notes.empty()) {
     auto err = std::make_shared<spdlog::sinks::stderr_sink_mt>();
     err->set_pattern("trakbox[%l]: %v");
     sinks.push_back(std::move(err));
   }
-  auto log = std::make_shared<spdlog::logger>("trakbox", sinks.begin(), sinks.end());
+  // Every line passes the guard: credentials scrubbed, floods of one kind of line counted, not written.
+  auto guarded = std::make_shared<GuardedSink>(std::move(sinks), LogLimits{});
+  auto log = std::make_shared<spdlog::logger>("trakbox", guarded);
   log->set_level(c.log_level);
   log->flush_on(std::min(c.log_level, spdlog::level::info));  // a debug log is read while it grows
   spdlog::set_default_logger(log);
+  for (const auto& note : file.notes) log->warn("{}", note);
   return log;
 }
 

@@ -222,8 +222,15 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
   }
   if (o.has("tty") && o.has("line")) r.fail("--line", "not with --tty (a serial port is always plain lines)");
   for (const std::string& a : o.values("allow")) {
-    if (const auto cidr = net::parse_cidr(a)) c.allow.push_back(*cidr);
-    else r.fail("--allow", "expected an address or ADDRESS/PREFIX (192.168.1.0/24, ::1); found '" + a + "'");
+    if (const auto cidr = net::parse_cidr(a)) {
+      c.allow.push_back(*cidr);
+      if (net::has_host_bits(*cidr))
+        c.warnings.push_back("--allow " + a + ": the address has bits set beyond /" + std::to_string(cidr->prefix) +
+                             "; the whole range is allowed, as if the host bits were zero");
+    } else {
+      r.fail("--allow", "expected an address or ADDRESS/PREFIX (192.168.1.0/24, ::1, ::ffff:192.0.2.0/120); found '" +
+                            a + "'");
+    }
   }
   for (const std::string& h : o.values("on-event")) {
     std::string why;

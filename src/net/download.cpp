@@ -5,6 +5,7 @@
 #include <memory>
 #include <string_view>
 
+#include "util/redact.h"
 #include "util/text.h"
 
 namespace tb::net {
@@ -114,11 +115,12 @@ DownloadResult download(const DownloadRequest& r, const std::function<bool()>& a
     return out;
   }
   if (t.too_big || rc == CURLE_FILESIZE_EXCEEDED) {
-    out.error = r.url + ": larger than " + std::to_string(r.max_bytes) + " bytes";
+    out.error = redact::url_credentials(r.url) + ": larger than " + std::to_string(r.max_bytes) + " bytes";
   } else if (rc == CURLE_ABORTED_BY_CALLBACK) {
-    out.error = r.url + ": cancelled";
+    out.error = redact::url_credentials(r.url) + ": cancelled";
   } else {
-    out.error = r.url + ": " + (errbuf[0] ? std::string(errbuf) : std::string(curl_easy_strerror(rc)));
+    // libcurl's own text may quote the URL: no error text carries its credentials.
+    out.error = redact::text(r.url + ": " + (errbuf[0] ? std::string(errbuf) : std::string(curl_easy_strerror(rc))));
   }
   return out;
 }

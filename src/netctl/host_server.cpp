@@ -36,7 +36,12 @@ Reply HostProtocol::handle(std::string_view line) {
   return {lines_then_prompt(r.lines), false};
 }
 
-std::string HostProtocol::refusal() const {
+std::string HostProtocol::refusal(Refusal why) const {
+  switch (why) {
+    case Refusal::not_allowed: return "ERROR not allowed: this address is not in the station's --allow list\r\n";
+    case Refusal::locked_out: return "ERROR locked out: too many wrong secrets from this address; try again later\r\n";
+    case Refusal::busy: break;
+  }
   return "ERROR busy: every host-mode connection is taken and in use; try again later\r\n";
 }
 

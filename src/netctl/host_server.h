@@ -25,7 +25,7 @@ class HostProtocol final : public LineHandler {
   Reply handle(std::string_view line) override;
   Reply overlong() const override;
   std::string greeting() const override;
-  std::string refusal() const override;  // "ERROR busy: ..."
+  std::string refusal(Refusal why) const override;  // "ERROR busy: ...", "ERROR not allowed: ..."
   // With a secret (--host-secret-file): "PASS SECRET" first; before it only Q works.
   Gate gate(std::string_view line) const override;
   std::string auth_reply(bool ok) const override;
@@ -42,6 +42,7 @@ class HostServer {
              ServerOptions options = defaults());
   std::uint16_t port() const { return server_.port(); }
   std::size_t client_count() const { return server_.client_count(); }
+  const LineServer& server() const { return server_; }
   void close() { server_.close(); }
 
   static ServerOptions defaults();

@@ -1,5 +1,7 @@
 #include "netctl/protocol.h"
 
+#include "util/text.h"
+
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -109,12 +111,13 @@ Reply LineProtocol::handle(std::string_view line) {
   return {format_reply(*req, req->name, false, Outcome::fail(Error::not_available)), false};
 }
 
-std::string LineProtocol::refusal() const { return rprt(Error::rejected) + "\n"; }
+std::string LineProtocol::refusal(Refusal) const { return rprt(Error::rejected) + "\n"; }
 
 LineHandler::Gate LineProtocol::gate(std::string_view line) const {
   const std::optional<Request> req = parse_request(line);
   if (!req) return {Gate::Kind::allowed, {}};  // a blank line or a comment: nothing happens
-  if (req->long_name && req->name == "password") return {Gate::Kind::password, req->args.empty() ? "" : req->args[0]};
+  // Any case: "\PASSWORD x" is a secret too, and must never reach handle() and the debug log.
+  if (req->long_name && text::iequals(req->name, "password")) return {Gate::Kind::password, req->args.empty() ? "" : req->args[0]};
   const bool quit = req->long_name ? req->name == "quit" : (req->name == "q" || req->name == "Q");
   const bool handshake = req->long_name && (req->name == "chk_vfo" || req->name == "dump_state");
   return {quit || handshake ? Gate::Kind::allowed : Gate::Kind::refused, {}};

@@ -65,6 +65,13 @@ struct Reply {
   bool close = false;  // q / Q: send text, then close
 };
 
+// Why a connection is refused at accept.
+enum class Refusal {
+  not_allowed,  // its address is not in --allow
+  busy,         // every connection (or every one its address may hold) is taken
+  locked_out,   // its address gave too many wrong secrets
+};
+
 // What a LineServer drives: one call a line, in order, on the event loop.
 class LineHandler {
  public:
@@ -75,8 +82,12 @@ class LineHandler {
   virtual Reply overlong() const = 0;
   // Sent to each client as it connects (empty: nothing).
   virtual std::string greeting() const { return {}; }
-  // Sent to a client refused because every connection is taken and busy (empty: just closed).
-  virtual std::string refusal() const { return {}; }
+  // Sent to a client refused at accept, in the protocol's words, for the reason given (empty: just
+  // closed).
+  virtual std::string refusal(Refusal why) const {
+    (void)why;
+    return {};
+  }
 
   // Authentication, when the endpoint has a shared secret (ServerOptions::secret): until a client
   // has given it, each line goes to gate() instead of handle(). A line is the protocol's password
@@ -100,7 +111,7 @@ class LineProtocol : public LineHandler {
  public:
   // One line without its newline (a trailing '\r' is ignored).
   Reply handle(std::string_view line) override;
-  std::string refusal() const override;  // "RPRT -9": rejected
+  std::string refusal(Refusal why) const override;  // "RPRT -9" (rejected) whatever the reason
   // Hamlib's rigctld: "\password SECRET" answers RPRT 0, or RPRT -1 when wrong; before it only
   // \chk_vfo, \dump_state and quitting work, anything else is answered RPRT -19 (RIG_ESECURITY).
   Gate gate(std::string_view line) const override;

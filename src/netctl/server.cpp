@@ -1,5 +1,6 @@
 #include "netctl/server.h"
 
+#include "netctl/guesses.h"
 #include "util/secret.h"
 
 #include <spdlog/spdlog.h>
@@ -8,6 +9,7 @@
 #include <boost/asio/write.hpp>
 #include <chrono>
 #include <cstring>
+#include <ctime>
 #include <system_error>
 #include <unordered_map>
 #include <vector>
@@ -29,6 +31,8 @@ struct LineServer::Core {
   ServerOptions options;
   bool open = true;
   std::unordered_map<Session*, std::weak_ptr<Session>> sessions;
+  GuessGuard guesses;
+  ServerStats stats;
 };
 
 namespace {
@@ -40,6 +44,24 @@ std::string describe(const tcp::socket& s) {
   return ep.address().to_string() + ":" + std::to_string(ep.port());
 }
 
+std::string address_of(const tcp::socket& s) {
+  error_code ec;
+  const tcp::endpoint ep = s.remote_endpoint(ec);
+  return ec ? std::string() : ep.address().to_string();
+}
+
+// "12:34:56 UTC", some duration from now: when a lockout ends, for the log.
+std::string utc_after(std::chrono::steady_clock::duration d) {
+  const std::time_t t =
+      std::chrono::system_clock::to_time_t(std::chrono::system_clock::now() +
+                                           std::chrono::duration_cast<std::chrono::system_clock::duration>(d));
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char buf[16];
+  std::strftime(buf, sizeof buf, "%H:%M:%S", &tm);
+  return std::string(buf) + " UTC";
+}
+
 // One client: reads lines, hands them to the protocol in order, queues the replies.
 class Session : public std::enable_shared_from_this<Session> {
  public:
@@ -47,12 +69,15 @@ class Session : public std::enable_shared_from_this<Session> {
       : socket_(std::move(socket)),
         core_(std::move(core)),
         peer_(describe(socket_)),
+        address_(address_of(socket_)),
         authenticated_(core_->options.secret.empty()),
-        auth_timer_(socket_.get_executor()) {}
+        auth_timer_(socket_.get_executor()),
+        guess_timer_(socket_.get_executor()) {}
 
   // How long the client has sent nothing.
   std::chrono::steady_clock::duration silent() const { return std::chrono::steady_clock::now() - last_heard_; }
   const std::string& peer() const { return peer_; }
+  const std::string& address() const { return address_; }
 
   void start() {
     spdlog::info("{}: client {} connected", core_->options.name, peer_);
@@ -66,6 +91,7 @@ class Session : public std::enable_shared_from_this<Session> {
     if (closed_) return;
     closed_ = true;
     auth_timer_.cancel();
+    guess_timer_.cancel();
     error_code ec;
     socket_.shutdown(tcp::socket::shutdown_both, ec);
     socket_.close(ec);
@@ -94,9 +120,13 @@ class Session : public std::enable_shared_from_this<Session> {
       write();
       return;
     }
-    last_heard_ = std::chrono::steady_clock::now();
     feed(buf_.data(), n);
-    if (closed_) return;
+    go_on();
+  }
+
+  // After a batch of input: read more, unless the session closes or waits to answer a secret.
+  void go_on() {
+    if (closed_ || paused_) return;
     if (closing_) {
       write();  // q: no more reading; close once the reply is out
       return;
@@ -108,7 +138,7 @@ class Session : public std::enable_shared_from_this<Session> {
     const char* const end = p + n;
     const std::size_t max_line = core_->options.max_line;
     const bool cr = core_->options.cr_ends_line;
-    while (p < end && !closed_ && !closing_) {
+    while (p < end && !closed_ && !closing_ && !paused_) {
       if (after_cr_) {  // the LF of a CR LF pair: that line has been handled
         after_cr_ = false;
         if (*p == '\n') {
@@ -130,6 +160,9 @@ class Session : public std::enable_shared_from_this<Session> {
         }
       }
       if (!nl) break;
+      // Silence is counted from the last line, not the last byte: a client trickling bytes that never
+      // make a line ("slowloris") is as silent as one that sends nothing, and makes room.
+      last_heard_ = std::chrono::steady_clock::now();
       if (discarding_) {
         discarding_ = false;
       } else {
@@ -139,6 +172,8 @@ class Session : public std::enable_shared_from_this<Session> {
       after_cr_ = *nl == '\r';
       p = nl + 1;
     }
+    // Waiting to answer a secret: what came after it is read when the answer has been given.
+    if (paused_ && p < end) backlog_.append(p, end);
   }
 
   static const char* line_end(const char* p, const char* end) {
@@ -152,6 +187,10 @@ class Session : public std::enable_shared_from_this<Session> {
     auth_timer_.expires_after(core_->options.auth_deadline);
     auth_timer_.async_wait([self = shared_from_this()](const error_code& ec) {
       if (ec || self->closed_ || self->authenticated_) return;
+      if (self->paused_) {  // it gave a secret in time, which waits for its answer (GuessGuard)
+        self->arm_auth_deadline();
+        return;
+      }
       spdlog::warn("{}: client {} did not give the secret within {} s; closed", self->core_->options.name, self->peer_,
                    std::chrono::duration_cast<std::chrono::seconds>(self->core_->options.auth_deadline).count());
       self->queue(self->core_->protocol ? self->core_->protocol->auth_required() : std::string());
@@ -160,34 +199,77 @@ class Session : public std::enable_shared_from_this<Session> {
     });
   }
 
-  // Before the secret: the password command is checked (never logged), the handshake lines pass,
-  // the rest is refused. True when the line has been dealt with here.
+  // The password command is checked here, whenever it comes (never logged, never handed to the
+  // protocol, never echoed); before the secret only the handshake lines pass and the rest is refused.
+  // True when the line has been dealt with here.
   bool gate_line() {
     const LineHandler::Gate g = core_->protocol->gate(line_);
-    if (g.kind == LineHandler::Gate::Kind::allowed) return false;
-    if (g.kind == LineHandler::Gate::Kind::refused) {
-      spdlog::debug("{}: client {}: a command before the secret: refused", core_->options.name, peer_);
-      queue(core_->protocol->auth_required());
+    if (g.kind == LineHandler::Gate::Kind::password && !core_->options.secret.empty()) {
+      attempt(g.password);
       return true;
     }
-    const bool ok = secret::equal(g.password, core_->options.secret);
+    if (authenticated_ || g.kind == LineHandler::Gate::Kind::allowed) return false;
+    spdlog::debug("{}: client {}: a command before the secret: refused", core_->options.name, peer_);
+    queue(core_->protocol->auth_required());
+    return true;
+  }
+
+  // A secret given: answered when this address's earlier wrong guesses have been paid for
+  // (GuessGuard), with reading paused until then so nothing after it runs first.
+  void attempt(const std::string& secret_given) {
+    const auto now = std::chrono::steady_clock::now();
+    const auto at = core_->guesses.slot(address_, now);
+    if (at <= now) {
+      answer(secret_given);
+      return;
+    }
+    paused_ = true;
+    pending_secret_ = secret_given;
+    guess_timer_.expires_at(at);
+    guess_timer_.async_wait([self = shared_from_this()](const error_code& ec) {
+      if (ec || self->closed_) return;
+      self->paused_ = false;
+      std::string s = std::move(self->pending_secret_);
+      self->answer(s);
+      std::string rest;
+      rest.swap(self->backlog_);
+      if (!rest.empty() && !self->closed_ && !self->closing_) self->feed(rest.data(), rest.size());
+      self->go_on();
+    });
+  }
+
+  void answer(const std::string& secret_given) {
+    const bool ok = secret::equal(secret_given, core_->options.secret);
     queue(core_->protocol->auth_reply(ok));
     if (ok) {
+      core_->guesses.right(address_);
+      if (authenticated_) return;
       authenticated_ = true;
       auth_timer_.cancel();
       spdlog::info("{}: client {} authenticated", core_->options.name, peer_);
+      return;
+    }
+    ++core_->stats.wrong_secrets;
+    const auto now = std::chrono::steady_clock::now();
+    if (core_->guesses.wrong(address_, now)) {
+      ++core_->stats.lockouts;
+      const auto left = core_->guesses.locked_until(address_, now) - now;
+      spdlog::warn("{}: {} locked out until {} ({} s) after {} wrong secrets; its connections are refused until then",
+                   core_->options.name, address_, utc_after(left),
+                   std::chrono::duration_cast<std::chrono::seconds>(left).count(),
+                   core_->guesses.policy().lockout_after);
+      closing_ = true;
     } else if (++auth_failures_ >= core_->options.max_auth_failures) {
       spdlog::warn("{}: client {} gave a wrong secret {} times; closed", core_->options.name, peer_, auth_failures_);
       closing_ = true;
     } else {
       spdlog::warn("{}: client {} gave a wrong secret", core_->options.name, peer_);
     }
-    return true;
   }
 
   void handle_line() {
     if (!core_->protocol) return;
-    if (!authenticated_ && gate_line()) return;
+    if (gate_line()) return;
     const Reply r = core_->protocol->handle(line_);
     if (spdlog::should_log(spdlog::level::debug))  // --log-level debug: what a client asked, what it got
       spdlog::debug("{}: client {}: '{}' -> '{}'", core_->options.name, peer_, one_line(line_.substr(0, 200)),
@@ -228,6 +310,7 @@ class Session : public std::enable_shared_from_this<Session> {
   tcp::socket socket_;
   std::shared_ptr<LineServer::Core> core_;
   std::string peer_;
+  std::string address_;  // the peer's address alone: what --allow, the guess delay and the per-address cap see
   std::array<char, 4096> buf_{};
   std::string line_;
   std::chrono::steady_clock::time_point last_heard_ = std::chrono::steady_clock::now();
@@ -240,6 +323,10 @@ class Session : public std::enable_shared_from_this<Session> {
   bool authenticated_;   // no secret, or the client gave it
   int auth_failures_ = 0;
   asio::steady_timer auth_timer_;
+  bool paused_ = false;          // a secret waits for its answer's slot
+  std::string pending_secret_;   // that secret
+  std::string backlog_;          // what the client sent after it
+  asio::steady_timer guess_timer_;
 };
 
 }  // namespace
@@ -248,6 +335,7 @@ LineServer::LineServer(asio::io_context& io, std::uint16_t port, LineHandler& pr
     : acceptor_(io), retry_(io), core_(std::make_shared<Core>()) {
   core_->protocol = &protocol;
   core_->options = std::move(options);
+  core_->guesses = GuessGuard(core_->options.guesses);
   const std::string where = core_->options.address + ":" + std::to_string(port);
   error_code ec;
   const asio::ip::address addr = asio::ip::make_address(core_->options.address, ec);
@@ -267,6 +355,8 @@ LineServer::~LineServer() { close(); }
 
 std::size_t LineServer::client_count() const { return core_->sessions.size(); }
 
+const ServerStats& LineServer::stats() const { return core_->stats; }
+
 const ServerOptions& LineServer::options() const { return core_->options; }
 
 void LineServer::close() {
@@ -285,10 +375,11 @@ void LineServer::close() {
 
 namespace {
 
-std::string address_of(const tcp::socket& s) {
-  error_code ec;
-  const tcp::endpoint ep = s.remote_endpoint(ec);
-  return ec ? std::string() : ep.address().to_string();
+std::size_t per_address(const LineServer::Core& core, const std::string& address) {
+  std::size_t n = 0;
+  for (const auto& [p, w] : core.sessions)
+    if (auto s = w.lock(); s && s->address() == address) ++n;
+  return n;
 }
 
 // Every connection is taken: closes the one silent longest if it has been silent long enough.
@@ -319,17 +410,32 @@ void LineServer::accept() {
       });
       return;
     }
-    if (const std::string who = address_of(socket); !net::allowed(core->options.allow, who)) {
-      spdlog::warn("{}: connection from {} refused: not in --allow", core->options.name, who);
+    const std::string who = address_of(socket);
+    const auto now = std::chrono::steady_clock::now();
+    auto refuse = [&](Refusal why) {
       error_code ignored;
-      if (core->protocol) asio::write(socket, asio::buffer(core->protocol->refusal()), ignored);
+      if (core->protocol) asio::write(socket, asio::buffer(core->protocol->refusal(why)), ignored);
       socket.close(ignored);
+    };
+    if (!net::allowed(core->options.allow, who)) {
+      ++core->stats.refused_not_allowed;
+      spdlog::warn("{}: connection from {} refused: not in --allow", core->options.name, who);
+      refuse(Refusal::not_allowed);
+    } else if (core->guesses.locked_until(who, now) > now) {
+      ++core->stats.refused_locked_out;
+      spdlog::warn("{}: connection from {} refused: locked out for wrong secrets", core->options.name, who);
+      refuse(Refusal::locked_out);
+    } else if (per_address(*core, who) >= core->options.max_per_address &&
+               !(!core->options.per_address_exempt.empty() && net::allowed(core->options.per_address_exempt, who))) {
+      ++core->stats.refused_per_address;
+      spdlog::warn("{}: connection from {} refused: it has {} connections already (at most {} an address)",
+                   core->options.name, who, per_address(*core, who), core->options.max_per_address);
+      refuse(Refusal::busy);
     } else if (core->sessions.size() >= core->options.max_clients && !make_room(*core)) {
+      ++core->stats.refused_busy;
       spdlog::warn("{}: {} clients already, none silent for {} s; connection from {} refused", core->options.name,
                    core->sessions.size(), core->options.evict_idle_after.count() / 1000.0, describe(socket));
-      error_code ignored;
-      if (core->protocol) asio::write(socket, asio::buffer(core->protocol->refusal()), ignored);
-      socket.close(ignored);
+      refuse(Refusal::busy);
     } else {
       error_code ignored;
       socket.set_option(tcp::no_delay(true), ignored);

@@ -10,10 +10,12 @@
 // stops reading, never sends a newline or floods is dealt with without stalling the loop:
 //  * a line longer than max_line is answered "RPRT -8" once and discarded up to its newline;
 //  * a client whose unsent replies exceed max_output (it sends but does not read) is disconnected;
-//  * at most max_clients connections. When a new client finds them all taken, the connection that
-//    has been silent longest makes room for it if it has been silent for evict_idle_after or more
-//    (idle holders and dead peers cannot lock the port; a client that polls, as Gpredict does, is
-//    never the longest silent); otherwise the newcomer gets the protocol's refusal
+//  * at most max_clients connections, max_per_address of them from one remote address. When a new
+//    client finds them all taken, the connection that has been silent longest (counted from its last
+//    whole line, so a client trickling bytes that never end a line counts as silent) makes room for
+//    it if it has been silent for evict_idle_after or more (idle holders, "slowloris" clients and
+//    dead peers cannot lock the port; a client that polls, as Gpredict does, is never the longest
+//    silent); otherwise the newcomer gets the protocol's refusal
 //    (LineHandler::refusal(), e.g. "RPRT -9") and is closed. Every connection has TCP keepalive
 //    (60 s idle, then 3 probes 10 s apart), so a peer that vanished is found and closed.
 #pragma once
@@ -30,6 +32,7 @@
 #include <memory>
 #include <string>
 
+#include "netctl/guesses.h"
 #include "netctl/protocol.h"
 #include "netctl/rigctl_protocol.h"
 #include "netctl/rotctl_protocol.h"
@@ -55,6 +58,25 @@ struct ServerOptions {
   std::string secret;
   std::chrono::milliseconds auth_deadline{10000};
   int max_auth_failures = 3;
+  // Wrong secrets from one address wait longer and longer for their answer, then lock the address out
+  // (netctl/guesses.h: about 10 guesses in 12 minutes).
+  GuessPolicy guesses;
+  // Connections one address other than loopback may hold at once: half of max_clients, so that one
+  // remote host (a program that leaks connections, a client that keeps many open) can never take
+  // every connection. Loopback clients are this machine's own programs. Attackers with many
+  // addresses are kept out by --allow (docs/security.md).
+  std::size_t max_per_address = 8;
+  std::vector<net::Cidr> per_address_exempt = {*net::parse_cidr("127.0.0.0/8"), *net::parse_cidr("::1")};
+};
+
+// What a server has refused and why, since it started (for the log's reader and `trakbox status`).
+struct ServerStats {
+  std::uint64_t refused_not_allowed = 0;   // not in --allow
+  std::uint64_t refused_busy = 0;          // every connection taken, none silent long enough
+  std::uint64_t refused_per_address = 0;   // that address holds max_per_address already
+  std::uint64_t refused_locked_out = 0;    // that address is locked out for wrong secrets
+  std::uint64_t wrong_secrets = 0;
+  std::uint64_t lockouts = 0;
 };
 
 // A TCP server handing each line of each client to one LineHandler, in order of arrival; the
@@ -69,6 +91,7 @@ class LineServer {
 
   std::uint16_t port() const { return port_; }
   std::size_t client_count() const;
+  const ServerStats& stats() const;
   const ServerOptions& options() const;
   // Stops listening and drops every client. Also done by the destructor.
   void close();
@@ -91,6 +114,7 @@ class RotctldServer {
                 ServerOptions options = named("rotctld"));
   std::uint16_t port() const { return server_.port(); }
   std::size_t client_count() const { return server_.client_count(); }
+  const LineServer& server() const { return server_; }
   RotctlProtocol& protocol() { return protocol_; }
   void close() { server_.close(); }
 
@@ -113,6 +137,7 @@ class RigctldServer {
                 ServerOptions options = RotctldServer::named("rigctld"));
   std::uint16_t port() const { return server_.port(); }
   std::size_t client_count() const { return server_.client_count(); }
+  const LineServer& server() const { return server_; }
   RigctlProtocol& protocol() { return protocol_; }
   void close() { server_.close(); }
 

@@ -1,6 +1,7 @@
 // The OMM encodings read as text: JSON (CelesTrak's numbers, Space-Track's strings), CSV and KVN.
 // Each turns its text into objects of keywords (elements_omm_internal.h); elements_omm.cpp makes the
 // element sets.
+#include "util/json_limits.h"
 #include <nlohmann/json.hpp>
 
 #include "orbit/elements_fields.h"
@@ -145,6 +146,12 @@ std::string_view without_units(std::string_view v) {
 ParseResult parse_omm_json(std::string_view text, std::string_view file_name) {
   ParseResult r;
   if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
+  if (json_limits::too_deep(text)) {
+    r.problems.push_back(detail::make_problem(file_name, 1, 0, "JSON", std::string(text.substr(0, 20)),
+                                              "JSON nested at most " + std::to_string(json_limits::kMaxDepth) +
+                                                  " levels deep (an OMM document has 2)"));
+    return r;
+  }
   nlohmann::json doc;
   try {
     doc = nlohmann::json::parse(text.begin(), text.end());

@@ -2,25 +2,12 @@
 
 #include <vector>
 
+#include "util/redact.h"
 #include "util/text.h"
 
 namespace tb::satrak {
 
-std::string redact_url(std::string_view url) {
-  const auto scheme = url.find("://");
-  if (scheme == std::string_view::npos) return std::string(url);
-  const auto authority = scheme + 3;
-  const auto end = url.find_first_of("/?#", authority);
-  const std::string_view auth = url.substr(authority, end == std::string_view::npos ? url.npos : end - authority);
-  const auto at = auth.rfind('@');
-  if (at == std::string_view::npos) return std::string(url);
-  const auto colon = auth.substr(0, at).find(':');
-  if (colon == std::string_view::npos) return std::string(url);  // a user name alone is no secret
-  std::string out(url.substr(0, authority + colon + 1));
-  out += kRedacted;
-  out += url.substr(authority + at);
-  return out;
-}
+std::string redact_url(std::string_view url) { return redact::url_credentials(url); }
 
 std::string redact_payload(std::string_view payload) {
   std::vector<std::string_view> fields = text::split(payload, ',');

@@ -6,9 +6,11 @@
 #include <string>
 #include <string_view>
 
+#include "util/redact.h"
+
 namespace tb::satrak {
 
-inline constexpr std::string_view kRedacted = "<redacted>";
+inline constexpr std::string_view kRedacted = redact::kRedacted;
 
 // "ftp://user:secret@host/x" -> "ftp://user:<redacted>@host/x"; a URL without a password as it is.
 std::string redact_url(std::string_view url);

@@ -1,4 +1,6 @@
 #include "satrak/server.h"
+
+#include <algorithm>
 #include "satrak/redact.h"
 #include "util/keepalive.h"
 
@@ -38,11 +40,13 @@ class Session : public std::enable_shared_from_this<Session> {
     boost::system::error_code ec;
     const auto ep = socket_.remote_endpoint(ec);
     peer_ = ec ? std::string("?") : ep.address().to_string() + ":" + std::to_string(ep.port());
+    address_ = ec ? std::string() : ep.address().to_string();
   }
 
   // How long the client has sent nothing.
   std::chrono::steady_clock::duration silent() const { return std::chrono::steady_clock::now() - last_heard_; }
   const std::string& peer() const { return peer_; }
+  const std::string& address() const { return address_; }
 
   void start() {
     spdlog::info("satrak: client {} connected", peer_);
@@ -81,9 +85,11 @@ class Session : public std::enable_shared_from_this<Session> {
       close();
       return;
     }
-    last_heard_ = std::chrono::steady_clock::now();
     events_.clear();
     decoder_.feed(std::string_view(buf_.data(), n), events_);
+    // Silence is counted from the last whole frame, not the last byte: a client trickling bytes that
+    // never make a frame ("slowloris") is as silent as one that sends nothing, and makes room.
+    if (!events_.empty()) last_heard_ = std::chrono::steady_clock::now();
     for (const Decoded& d : events_) {
       if (d.kind == Decoded::Kind::overlong) spdlog::warn("satrak: client {}: line longer than {} bytes discarded", peer_, decoder_.max_line());
       ++state->stats.frames;
@@ -143,6 +149,7 @@ class Session : public std::enable_shared_from_this<Session> {
   bool writing_ = false;
   bool closed_ = false;
   std::string peer_;
+  std::string address_;
   std::chrono::steady_clock::time_point last_heard_ = std::chrono::steady_clock::now();
 };
 
@@ -181,6 +188,16 @@ void accept(const std::shared_ptr<Server::State>& state) {
     if (!net::allowed(s->opt.allow, who)) {
       ++s->stats.refused;
       spdlog::warn("satrak: connection from {} refused: not in --allow", who);
+      boost::system::error_code ignored;
+      asio::write(socket, asio::buffer(encode(reply_error("", Error::not_allowed))), ignored);
+      socket.close(ignored);
+    } else if (const std::size_t held = static_cast<std::size_t>(std::count_if(
+                   s->sessions.begin(), s->sessions.end(), [&](const auto& x) { return x->address() == who; }));
+               held >= s->opt.max_per_address && !net::is_loopback(who)) {
+      ++s->stats.refused;
+      ++s->stats.refused_per_address;
+      spdlog::warn("satrak: connection from {} refused: it has {} connections already (at most {} an address)", who,
+                   held, s->opt.max_per_address);
       boost::system::error_code ignored;
       asio::write(socket, asio::buffer(encode(reply_error("", Error::not_allowed))), ignored);
       socket.close(ignored);

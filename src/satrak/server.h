@@ -31,6 +31,9 @@ struct ServerOptions {
   unsigned short port = 4001;         // 0: a free port (tests); see Server::port()
   std::size_t max_clients = 16;
   std::chrono::milliseconds evict_idle_after{10000};
+  // Connections one address other than loopback may hold at once (half of max_clients: one remote
+  // host can never take them all; docs/security.md, "slowloris").
+  std::size_t max_per_address = 8;
   std::vector<net::Cidr> allow;  // --allow: clients allowed (empty: everyone); others get ERR,8 and are closed
   std::size_t max_line = Decoder::kDefaultMaxLine;
   std::size_t max_output = 64 * 1024;  // bytes of replies queued for one client before it is dropped
@@ -50,7 +53,8 @@ class Server {
   // Counters for logs and tests.
   struct Stats {
     std::size_t accepted = 0;
-    std::size_t refused = 0;       // beyond max_clients, none silent long enough
+    std::size_t refused = 0;       // refused at accept, for any reason
+    std::size_t refused_per_address = 0;  // that address holds max_per_address already
     std::size_t evicted = 0;       // closed, silent longest, to make room for a new client
     std::size_t dropped_slow = 0;  // output queue over max_output
     std::size_t frames = 0;        // lines answered

@@ -1,5 +1,7 @@
 // The Satrak commands that choose where element sets come from (a file, HTTP, FTP) and load an
 // image (docs/satrak.md).
+#include "util/json_limits.h"
+#include "util/redact.h"
 #include <spdlog/spdlog.h>
 
 #include "satrak/source_files.h"
@@ -59,12 +61,16 @@ Unit::Reply Unit::cmd_satellite(const Command& c) {
 Unit::Reply Unit::cmd_satellite_http(const Command& c) {
   if (c.kind == Kind::query) {
     if (!c.fields.empty()) return reply_error(c.head(), Error::parameter_count);
-    return reply_values(c.head(), {field_text(s_.http.url), num_text(s_.http.period_days),
+    // A password inside the URL is answered as <redacted>; writing that answer back keeps it.
+    return reply_values(c.head(), {field_text(redact::url_credentials(s_.http.url)), num_text(s_.http.period_days),
                                    std::to_string(static_cast<int>(s_.http.on_error))});
   }
   if (c.fields.size() != 4) return reply_error(c.head(), Error::parameter_count);
   Reader r(c.fields);
-  if (!valid_http_url(c.fields[0])) r.fail(Error::bad_value);
+  // What SATELLITE_HTTP? answered (the URL with its password as <redacted>) keeps the stored URL.
+  const bool keep_url = !s_.http.url.empty() && c.fields[0] == redact::url_credentials(s_.http.url);
+  const std::string url = keep_url ? s_.http.url : c.fields[0];
+  if (!valid_http_url(url)) r.fail(Error::bad_value);
   const double period = r.number(1, 0.0, limits::kPeriodDays);
   const bool cont = r.flag(2);
   const bool keep_tracking = r.flag(3);
@@ -76,7 +82,7 @@ Unit::Reply Unit::cmd_satellite_http(const Command& c) {
     fallback = default_source();
     if (!fallback) return reply_error(c.head(), Error::not_allowed, "NO SATELLITE: SATELLITE= FIRST");
   }
-  s_.http = HttpSource{c.fields[0], period, cont ? ErrorAction::continue_last_data : ErrorAction::stop_tracking};
+  s_.http = HttpSource{url, period, cont ? ErrorAction::continue_last_data : ErrorAction::stop_tracking};
   if (fallback) {
     s_.tle_file = fallback->file;
     s_.satellite = fallback->satellite;
@@ -96,7 +102,7 @@ Unit::Reply Unit::cmd_satellite_http(const Command& c) {
 Unit::Reply Unit::cmd_satellite_ftp(const Command& c) {
   if (c.kind == Kind::query) {
     if (!c.fields.empty()) return reply_error(c.head(), Error::parameter_count);
-    return reply_values(c.head(), {field_text(s_.ftp.host), field_text(s_.ftp.user),
+    return reply_values(c.head(), {field_text(redact::url_credentials(s_.ftp.host)), field_text(s_.ftp.user),
                                    s_.ftp.password.empty() ? "" : kKeepPassword, std::to_string(s_.ftp.port),
                                    field_text(s_.ftp.file), field_text(s_.ftp.satellite), num_text(s_.ftp.period_days),
                                    std::to_string(static_cast<int>(s_.ftp.on_error))});
@@ -107,7 +113,10 @@ Unit::Reply Unit::cmd_satellite_ftp(const Command& c) {
   Reader r(c.fields);
   FtpSource f = s_.ftp;
   f.host = c.fields[0];
-  if (f.host.empty() || !valid_text_field(f.host, limits::kUrlMax) || f.host.find(' ') != std::string::npos)
+  // Credentials go in the user and password fields, never in the host ("ftp://u:PW@host" would be
+  // answered back by SATELLITE_FTP? and written to the log).
+  if (f.host.empty() || !valid_text_field(f.host, limits::kUrlMax) || f.host.find(' ') != std::string::npos ||
+      f.host.find('@') != std::string::npos)
     r.fail(Error::bad_value);
   // "?" (as SATELLITE_FTP? shows a stored password) keeps it, so a client that reads the settings and
   // writes them back changes nothing; "***", what trakbox answered before, is read the same way.
@@ -178,6 +187,7 @@ Unit::Reply Unit::cmd_load_image(const Command& c) {
   const std::string text = read_small_file(path, too_big);
   if (too_big) return fail(Error::invalid_file, "larger than 4 MiB");
   // The image is a state document: format, checksum, then every field of the data.
+  if (json_limits::too_deep(text)) return fail(Error::invalid_file, "JSON nested too deep");
   const nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
   if (doc.is_discarded() || !doc.is_object()) return fail(Error::invalid_file, "not a JSON document");
   if (doc.value("format", "") != "trakbox-state") return fail(Error::invalid_file, "not a trakbox state document");

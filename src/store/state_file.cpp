@@ -13,6 +13,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "util/json_limits.h"
+
 namespace tb::store {
 namespace fs = std::filesystem;
 
@@ -134,16 +136,6 @@ StateFile::StateFile(fs::path directory) : dir_(std::move(directory)) {}
 LoadOutcome StateFile::load() const {
   LoadOutcome out;
   const fs::path file = path();
-  std::ifstream in(file, std::ios::binary);
-  if (!in) {
-    out.kind = LoadOutcome::Kind::fresh;
-    return out;
-  }
-  std::stringstream ss;
-  ss << in.rdbuf();
-  in.close();
-  const std::string text = ss.str();
-
   auto corrupt = [&](std::string reason) {
     out.kind = LoadOutcome::Kind::corrupt;
     out.reason = std::move(reason);
@@ -151,6 +143,44 @@ LoadOutcome StateFile::load() const {
     out.data = nlohmann::json();
     return out;
   };
+  // Opened without following a symbolic link: the state is a file of this directory, never
+  // whatever a link points at (a link is kept aside like a corrupt file, its target untouched).
+  const int fd = ::open(file.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK);
+  if (fd < 0) {
+    if (errno == ENOENT) {
+      out.kind = LoadOutcome::Kind::fresh;
+      return out;
+    }
+    if (errno == ELOOP) return corrupt(file.string() + ": a symbolic link, not a file; not followed");
+    return corrupt(file.string() + ": cannot open: " + std::strerror(errno));
+  }
+  struct stat st {};
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    ::close(fd);
+    return corrupt(file.string() + ": not a regular file");
+  }
+  if (static_cast<std::uintmax_t>(st.st_size) > kMaxBytes) {
+    ::close(fd);
+    return corrupt(file.string() + ": " + std::to_string(st.st_size) + " bytes, more than a state document may have (" +
+                   std::to_string(kMaxBytes) + ")");
+  }
+  std::string text;
+  text.resize(static_cast<std::size_t>(st.st_size));
+  std::size_t got = 0;
+  while (got < text.size()) {
+    const ssize_t n = ::read(fd, text.data() + got, text.size() - got);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    got += static_cast<std::size_t>(n);
+  }
+  ::close(fd);
+  text.resize(got);
+
+  // Copying, comparing and dump() recurse once per level of nesting: a document nested deeper than
+  // any trakbox writes is refused before it is parsed.
+  if (json_limits::too_deep(text))
+    return corrupt(file.string() + ": nested more than " + std::to_string(json_limits::kMaxDepth) +
+                   " levels deep, which no trakbox state document is");
 
   // Every member is checked for its type before it is read: a document of the wrong shape (say
   // {"format":{}}) is a corrupt file like any other, never an exception.
@@ -195,8 +225,14 @@ std::vector<std::string> StateFile::tighten_permissions() const {
   std::vector<std::string> notes;
   std::error_code ec;
   const auto tighten = [&](const fs::path& p, fs::perms wanted) {
-    const fs::file_status st = fs::status(p, ec);
+    // Never through a symbolic link: chmod would change the link's target. A linked state file is
+    // kept aside by load(); a linked directory is the operator's choice, reported and left alone.
+    const fs::file_status st = fs::symlink_status(p, ec);
     if (ec || !fs::exists(st)) return;
+    if (fs::is_symlink(st)) {
+      notes.push_back(p.string() + " is a symbolic link: its permissions were not checked or changed");
+      return;
+    }
     const fs::perms now = st.permissions() & fs::perms::all;
     if ((now & ~wanted) == fs::perms::none) return;
     fs::permissions(p, now & wanted, ec);

@@ -20,7 +20,8 @@ struct LoadOutcome {
   enum class Kind {
     fresh,    // no state file yet: defaults, nothing lost
     loaded,   // the document is in data
-    corrupt,  // checksum or syntax failed: the file was kept aside, defaults apply
+    corrupt,  // checksum, syntax, size or nesting failed, or a symbolic link: the file (or the link) was
+              // kept aside, defaults apply
   };
   Kind kind = Kind::fresh;
   nlohmann::json data;              // the saved data when loaded
@@ -32,6 +33,9 @@ class StateFile {
  public:
   static constexpr const char* kFileName = "trakbox-state.json";
   static constexpr int kVersion = 1;
+  // A state document is about 1 MB with a large database; a file beyond this is refused (kept aside)
+  // before it is read, so a hostile or runaway file cannot take the memory and the start-up time.
+  static constexpr std::uintmax_t kMaxBytes = 64u * 1024 * 1024;
 
   explicit StateFile(std::filesystem::path directory);
 

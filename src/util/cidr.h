@@ -40,23 +40,36 @@ inline std::optional<std::pair<bool, std::array<std::uint8_t, 16>>> parse_addres
 }  // namespace detail
 
 // "ADDRESS[/PREFIX]"; nothing when it is not one (the caller names the option in its message).
+// An IPv4-mapped IPv6 range ("::ffff:192.0.2.0/120") is the IPv4 range it maps (192.0.2.0/24):
+// its prefix must reach past the 96 bits of the mapping.
 inline std::optional<Cidr> parse_cidr(std::string_view text) {
   const auto slash = text.find('/');
-  const auto a = detail::parse_address(std::string(text.substr(0, slash)));
+  const std::string address(text.substr(0, slash));
+  const auto a = detail::parse_address(address);
   if (!a) return std::nullopt;
   Cidr c;
   c.v6 = a->first;
   c.bytes = a->second;
-  const int max = c.v6 ? 128 : 32;
-  c.prefix = max;
+  const bool mapped = !c.v6 && address.find(':') != std::string::npos;
+  const int max = c.v6 || mapped ? 128 : 32;
+  c.prefix = c.v6 ? 128 : 32;
   if (slash != std::string_view::npos) {
     const std::string_view p = text.substr(slash + 1);
     int n = -1;
     const auto [end, ec] = std::from_chars(p.data(), p.data() + p.size(), n);
     if (p.empty() || ec != std::errc() || end != p.data() + p.size() || n < 0 || n > max) return std::nullopt;
-    c.prefix = n;
+    if (mapped && n < 96) return std::nullopt;
+    c.prefix = mapped ? n - 96 : n;
   }
   return c;
+}
+
+// True when the address has bits set past its prefix ("127.0.0.2/8"): the range is still the
+// network's (127.0.0.0/8), but the operator may have meant something else, so it is worth a word.
+inline bool has_host_bits(const Cidr& c) {
+  for (int bit = c.prefix; bit < (c.v6 ? 128 : 32); ++bit)
+    if (c.bytes[static_cast<std::size_t>(bit / 8)] & (0x80u >> (bit % 8))) return true;
+  return false;
 }
 
 inline bool contains(const Cidr& c, const std::string& address) {

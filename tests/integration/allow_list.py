@@ -26,7 +26,7 @@ CASES = [  # (index of the port, request, what a served client sees, the refusal
     (0, frame("VERSION?"), b"$VERSION?,", b"$ERR,8*"),
     (1, b"p\n", b"\n", b"RPRT -9\n"),
     (2, b"f\n", b"\n", b"RPRT -9\n"),
-    (3, b"?A\r\n", b"TrakBox>>AZ", b"ERROR busy"),
+    (3, b"?A\r\n", b"TrakBox>>AZ", b"ERROR not allowed"),
 ]
 
 

@@ -166,3 +166,86 @@ TEST_CASE("Temporary files of saves that were killed are removed; a live process
   CHECK(fs::exists(live));
   CHECK(fs::exists(other));
 }
+
+// Issue 33, defect 1: a checksum-valid state file nested 100,000 objects deep crashed trakbox at
+// every start (dump() recursing once per level) and was never kept aside. The checksum below is the
+// CRC-32 of the nested data as nlohmann::json dumps it, computed here without recursion.
+TEST_CASE("A state file nested deeper than any trakbox writes is kept aside, not parsed into a crash") {
+  TempDir d;
+  StateFile f(d.path);
+  for (const bool arrays : {false, true}) {
+    constexpr int kLevels = 100000;
+    std::string data;
+    for (int i = 0; i < kLevels; ++i) data += arrays ? "[" : "{\"a\":";
+    data += "1";
+    for (int i = 0; i < kLevels; ++i) data += arrays ? "]" : "}";
+    if (arrays) data = "{\"a\":" + data + "}";
+    char crc[9];
+    std::snprintf(crc, sizeof crc, "%08x", crc32(data));
+    {
+      std::ofstream out(f.path());
+      out << "{\"checksum\":\"" << crc << "\",\"data\":" << data << ",\"format\":\"trakbox-state\",\"version\":1}";
+    }
+    const LoadOutcome o = f.load();
+    CHECK(o.kind == LoadOutcome::Kind::corrupt);
+    CHECK(o.reason.find("nested more than 64 levels") != std::string::npos);
+    CHECK(!o.kept_aside.empty());
+    CHECK(fs::exists(o.kept_aside));
+    CHECK(!fs::exists(f.path()));
+  }
+  CHECK(count_corrupt(d.path) == 2);
+  // 64 levels is still a document (the limit is inclusive).
+  std::string data;
+  for (int i = 0; i < 63; ++i) data += "{\"a\":";
+  data += "1";
+  for (int i = 0; i < 63; ++i) data += "}";
+  std::string err;
+  REQUIRE(f.save(nlohmann::json::parse(data), err));
+  CHECK(f.load().kind == LoadOutcome::Kind::loaded);
+}
+
+TEST_CASE("A state file larger than a state document may be is refused before it is read") {
+  TempDir d;
+  StateFile f(d.path);
+  {
+    std::ofstream out(f.path());
+    out << "{\"format\":\"trakbox-state\",\"data\":{\"x\":\"";
+  }
+  fs::resize_file(f.path(), StateFile::kMaxBytes + 1);  // sparse: no 64 MiB written
+  const LoadOutcome o = f.load();
+  CHECK(o.kind == LoadOutcome::Kind::corrupt);
+  CHECK(o.reason.find(std::to_string(StateFile::kMaxBytes + 1) + " bytes, more than a state document may have") !=
+        std::string::npos);
+  CHECK(fs::exists(o.kept_aside));
+}
+
+// Issue 33, defect 5: a state file that is a symbolic link is never followed: not read, its target's
+// mode never changed; the link is kept aside and defaults apply.
+TEST_CASE("A symbolic link in place of the state file or directory is not followed") {
+  TempDir d;
+  const fs::path target = d.path / "elsewhere.json";
+  {
+    std::ofstream out(target);
+    out << "{}";
+  }
+  fs::permissions(target, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read | fs::perms::others_read);
+  const fs::path state = d.path / "state";
+  fs::create_directory(state);
+  fs::permissions(state, fs::perms::owner_all);
+  StateFile f(state);
+  fs::create_symlink(target, f.path());
+  const auto notes = f.tighten_permissions();
+  REQUIRE(notes.size() == 1);
+  CHECK(notes[0].find("is a symbolic link: its permissions were not checked or changed") != std::string::npos);
+  CHECK((fs::status(target).permissions() & fs::perms::others_read) == fs::perms::others_read);  // untouched
+  const LoadOutcome o = f.load();
+  CHECK(o.kind == LoadOutcome::Kind::corrupt);
+  CHECK(o.reason.find("a symbolic link, not a file; not followed") != std::string::npos);
+  CHECK(fs::is_symlink(fs::symlink_status(o.kept_aside)));  // the link moved aside, as a link
+  CHECK(read(target) == "{}");
+  // A later save writes a real file where the link was.
+  std::string err;
+  REQUIRE(f.save(nlohmann::json::object(), err));
+  CHECK(!fs::is_symlink(fs::symlink_status(f.path())));
+  CHECK(read(target) == "{}");
+}

@@ -39,3 +39,26 @@ TEST_CASE("An empty allow-list allows everyone; loopback listeners are recognise
   CHECK_FALSE(is_loopback("::"));
   CHECK_FALSE(is_loopback("192.168.1.10"));
 }
+
+// Issue 33, defect 6: "::ffff:127.0.0.2/128" was refused at start while the mapped address itself
+// was served; "127.0.0.2/8" was taken without a word about its host bits.
+TEST_CASE("IPv4-mapped ranges are the IPv4 ranges they map; host bits are noticed") {
+  const auto one = parse_cidr("::ffff:127.0.0.2/128");
+  REQUIRE(one);
+  CHECK_FALSE(one->v6);
+  CHECK(one->prefix == 32);
+  CHECK(contains(*one, "127.0.0.2"));
+  CHECK(contains(*one, "::ffff:127.0.0.2"));
+  CHECK_FALSE(contains(*one, "127.0.0.3"));
+  const auto net = parse_cidr("::ffff:192.0.2.0/120");
+  REQUIRE(net);
+  CHECK(net->prefix == 24);
+  CHECK(contains(*net, "192.0.2.200"));
+  CHECK_FALSE(parse_cidr("::ffff:192.0.2.0/95"));  // a prefix inside the mapping's 96 bits
+  CHECK(parse_cidr("::ffff:192.0.2.0/96")->prefix == 0);
+  CHECK(has_host_bits(*parse_cidr("127.0.0.2/8")));
+  CHECK_FALSE(has_host_bits(*parse_cidr("127.0.0.0/8")));
+  CHECK_FALSE(has_host_bits(*parse_cidr("127.0.0.2")));
+  CHECK(has_host_bits(*parse_cidr("2001:db8::1/32")));
+  CHECK_FALSE(has_host_bits(*parse_cidr("2001:db8::/32")));
+}

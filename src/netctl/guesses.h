@@ -1,0 +1,58 @@
+// How fast one address may guess an endpoint's secret (issue 33). Every wrong secret from an
+// address makes its next answer wait longer, whichever connection it comes on: the answers to one
+// address's guesses are served one after another, each `delay` after the one before, so opening more
+// connections buys an attacker nothing. After `lockout_after` wrong secrets the address is locked
+// out for `lockout_for`: its connections are refused at accept. A right secret forgets the address;
+// so does `forget_after` without a wrong one. Pure: the caller passes the time.
+//
+// With the defaults the first ten guesses take 0.5+1+2+4+8+16+30+30+30 s (about 2 minutes), then
+// the address is locked out for 10 minutes: at most 10 guesses in 12 minutes, about 0.014 a second.
+#pragma once
+#include <chrono>
+#include <cstddef>
+#include <string>
+#include <unordered_map>
+
+namespace tb::netctl {
+
+struct GuessPolicy {
+  std::chrono::milliseconds first_delay{500};      // after the first wrong secret
+  std::chrono::milliseconds max_delay{30000};      // the delay doubles up to this
+  int lockout_after = 10;                          // wrong secrets in a row from one address
+  std::chrono::milliseconds lockout_for{600000};
+  std::chrono::milliseconds forget_after{900000};  // no wrong secret for this long: a clean slate
+  std::size_t max_addresses = 4096;                // remembered at once (the oldest forgotten first)
+};
+
+class GuessGuard {
+ public:
+  using Clock = std::chrono::steady_clock;
+  explicit GuessGuard(GuessPolicy p = {}) : p_(p) {}
+
+  // When an attempt from `address` that arrives at `now` may be answered (now, or later when earlier
+  // wrong guesses from it are still being paid for). Takes the slot: the next attempt waits for it.
+  Clock::time_point slot(const std::string& address, Clock::time_point now);
+  // The attempt answered at `now` was wrong: true when it locked the address out.
+  bool wrong(const std::string& address, Clock::time_point now);
+  // The right secret: the address is forgotten.
+  void right(const std::string& address) { table_.erase(address); }
+  // Until when `address` is locked out (a time <= now when it is not).
+  Clock::time_point locked_until(const std::string& address, Clock::time_point now);
+  int failures(const std::string& address) const;
+  const GuessPolicy& policy() const { return p_; }
+
+ private:
+  struct Entry {
+    int failures = 0;
+    Clock::time_point next_answer{};   // the earliest time the next attempt is answered
+    Clock::time_point last_wrong{};
+    Clock::time_point locked_until{};
+  };
+  Entry& entry(const std::string& address, Clock::time_point now);
+  std::chrono::milliseconds delay_after(int failures) const;
+
+  GuessPolicy p_;
+  std::unordered_map<std::string, Entry> table_;
+};
+
+}  // namespace tb::netctl
