@@ -156,6 +156,7 @@ nlohmann::json station_status(StationApp& app, const StatusContext& cx) {
                                     : nlohmann::json(nullptr)},
                {"failure", app.station().save_failure() ? nlohmann::json(*app.station().save_failure())
                                                         : nlohmann::json(nullptr)}};
+  j["servers"] = cx.servers ? cx.servers() : nlohmann::json::array();
   j["attached"] = cx.attached;
   j["keyboard"] = cx.keyboard.empty() ? nlohmann::json(nullptr) : nlohmann::json(cx.keyboard);
   j["status_line"] = app.station().status_line();
@@ -223,6 +224,15 @@ std::string format_status(const nlohmann::json& s) {
   const auto& rf = s.at("elements_refresh");
   line("  elements  " + std::to_string(rf.value("sources", 0)) + " refresh source(s)" +
        (rf.value("last_result", "").empty() ? std::string() : ": " + rf.value("last_result", "")));
+  for (const auto& srv : s.value("servers", nlohmann::json::array())) {
+    std::string l = "  server    " + srv.value("name", "") + " port " + std::to_string(srv.value("port", 0)) + ", " +
+                    std::to_string(srv.value("clients", 0)) + " client(s)";
+    for (const auto& [key, value] : srv.items())
+      if (key.rfind("refused", 0) == 0 || key == "wrong_secrets" || key == "lockouts" || key == "evicted" ||
+          key == "dropped_slow")
+        if (value.is_number() && value.get<long long>() > 0) l += ", " + key + " " + std::to_string(value.get<long long>());
+    line(l);
+  }
   const auto& sv = s.at("save");
   line("  saved     " + (sv.at("last_saved").is_null() ? std::string("not yet") : sv["last_saved"].get<std::string>()));
   if (const auto& who = s.at("attached"); !who.empty()) {

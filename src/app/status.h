@@ -2,6 +2,7 @@
 // event loop, sent over the attach socket), the text `trakbox status` prints from it, and the
 // exit status a script reads (docs/service.md).
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,9 @@ struct StatusContext {
   std::vector<std::string> attached;  // who is attached
   std::string keyboard;               // who has the keyboard
   bool service = false;
+  // The TCP servers that run: port, clients, what they refused and why (netctl::ServerStats,
+  // satrak::Server::Stats); none when not given.
+  std::function<nlohmann::json()> servers;
 };
 
 nlohmann::json station_status(StationApp& app, const StatusContext& context);

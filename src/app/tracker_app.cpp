@@ -317,13 +317,46 @@ int state_in_use(const TrackerConfig& c, const LockHolder& holder, const std::st
 
 // The station's socket: status and events always, the menus too for a service. A socket that
 // cannot be made is said and the station runs without it.
-std::unique_ptr<AttachServer> open_socket(StationApp& app, const TrackerConfig& c, StateLock& lock) {
+// The servers that run, with what they refused (issue 33's counters) for `trakbox status`.
+nlohmann::json servers_json(const Servers& s) {
+  nlohmann::json out = nlohmann::json::array();
+  const auto line = [&out](const char* name, const netctl::LineServer& srv) {
+    const netctl::ServerStats& st = srv.stats();
+    out.push_back({{"name", name},
+                   {"port", srv.port()},
+                   {"clients", srv.client_count()},
+                   {"refused_not_allowed", st.refused_not_allowed},
+                   {"refused_busy", st.refused_busy},
+                   {"refused_per_address", st.refused_per_address},
+                   {"refused_locked_out", st.refused_locked_out},
+                   {"wrong_secrets", st.wrong_secrets},
+                   {"lockouts", st.lockouts}});
+  };
+  if (s.satrak) {
+    const satrak::Server::Stats st = s.satrak->stats();
+    out.push_back({{"name", "satrak"},
+                   {"port", s.satrak->port()},
+                   {"clients", s.satrak->clients()},
+                   {"accepted", st.accepted},
+                   {"refused", st.refused},
+                   {"refused_per_address", st.refused_per_address},
+                   {"evicted", st.evicted},
+                   {"dropped_slow", st.dropped_slow}});
+  }
+  if (s.rotctld) line("rotctld", s.rotctld->server());
+  if (s.rigctld) line("rigctld", s.rigctld->server());
+  if (s.host) line("host", s.host->server());
+  return out;
+}
+
+std::unique_ptr<AttachServer> open_socket(StationApp& app, const TrackerConfig& c, StateLock& lock,
+                                          const Servers& servers) {
   AttachServerOptions o;
   o.path = c.socket;
   o.menus = c.service;
   AttachServer* self = nullptr;
-  o.status = [&app, &c, &self] {
-    StatusContext cx{kVersion, c.state_dir.string(), {}, {}, c.service};
+  o.status = [&app, &c, &self, &servers] {
+    StatusContext cx{kVersion, c.state_dir.string(), {}, {}, c.service, [&servers] { return servers_json(servers); }};
     if (self) cx.attached = self->attached(), cx.keyboard = self->keyboard();
     return station_status(app, cx);
   };
@@ -391,7 +424,7 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
     log->warn("{}", w);
     std::fprintf(stderr, "trakbox: WARNING: %s\n", w.c_str());
   }
-  std::unique_ptr<AttachServer> attach = open_socket(app, c, *lock);
+  std::unique_ptr<AttachServer> attach = open_socket(app, c, *lock, servers);
   if (c.service && c.tty) {
     // The box's serial port: the service's menus there as well, for good.
     if (!attach) return usage_error("--tty: the service's menus need its socket");

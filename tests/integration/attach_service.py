@@ -68,14 +68,25 @@ class Readings(threading.Thread):
         return [r for r in self.rows if a <= r[0] <= b and r[1] is not None]
 
 
-def moving(rows, what):
-    """The readings changed over the window: the station tracked through it."""
+def answered(rows, what):
+    """The readings kept coming over the window, each promptly: the station was never stalled."""
     check(len(rows) >= 5, f"{what}: readings kept coming ({len(rows)})")
-    azs = {round(r[1], 1) for r in rows}
-    check(len(azs) >= 3, f"{what}: the rotator moved (azimuths {sorted(azs)[:8]})")
     check(all(r[3] > 100e6 for r in rows), f"{what}: the radio answered with its frequency every time")
     slowest = max(r[4] for r in rows)
     check(slowest < 2.0, f"{what}: every reading answered within 2 s (slowest {slowest:.2f} s)")
+
+
+def moving(rows, what):
+    """And the antenna followed the satellite through it."""
+    answered(rows, what)
+    azs = {round(r[1], 1) for r in rows}
+    check(len(azs) >= 3, f"{what}: the rotator moved (azimuths {sorted(azs)[:8]})")
+
+
+def station_time(state):
+    r = subprocess.run([BIN, "status", "--state", state, "--json"], capture_output=True, text=True, timeout=20)
+    check(r.returncode in (0, 1), f"status: {r.returncode} {r.stderr}")
+    return json.loads(r.stdout)["time"]
 
 
 def line_client(state):
@@ -213,6 +224,7 @@ def main():
         # A client that stops reading is disconnected; the station answers all the while.
         frozen = frozen_client(sock)
         t_frozen = time.time()
+        clock_before = station_time(state)
         # Each new size is a whole screen to send again: a terminal resized while its output is stuck.
         frames = b"".join(b"\xffW" + struct.pack(">HH", 100 - k % 2, 250) for k in range(50))
         for _ in range(200):
@@ -231,7 +243,9 @@ def main():
         time.sleep(2)
         t_end = time.time()
         moving(readings.between(t_start, t_detached), "while attached")
-        moving(readings.between(t_frozen, t_end), "with a frozen client")
+        answered(readings.between(t_frozen, t_end), "with a frozen client")
+        clock_after = station_time(state)
+        check(clock_after > clock_before, f"the station's clock went on: {clock_before} -> {clock_after}")
         st = subprocess.run([BIN, "status", "--state", state, "--json"], capture_output=True, text=True, timeout=20)
         check(st.returncode == 0, f"status after all that: {st.returncode} {st.stderr}")
         check(json.loads(st.stdout)["attached"] == [], "nobody is attached any more")

@@ -71,6 +71,11 @@ def check_status(state, svc, rot, rig):
     check(wrap(pos["az_deg"] - float(p[0])) < 5 and abs(pos["el_deg"] - float(p[1])) < 5,
           f"antenna {pos} where rotctld says {p[:2]}")
     check(abs(s["radios"][0]["downlink_hz"] - f) < 5000, f"radio {s['radios'][0]['downlink_hz']} Hz, rigctld {f}")
+    servers = {srv["name"]: srv for srv in s["servers"]}
+    check(set(servers) == {"rotctld", "rigctld"}, f"the servers that run: {sorted(servers)}")
+    check(servers["rotctld"]["port"] == rot and servers["rigctld"]["port"] == rig, "with their ports")
+    check(all(servers[n][k] == 0 for n in servers for k in servers[n] if k.startswith("refused")),
+          f"nothing refused yet: {servers}")
     # The next passes: those `trakbox passes` predicts for the same station from the status's time.
     st = data["station"]
     code, out, err = sh(BIN, "passes", os.path.join(SOURCE, "data", "amateur.tle"), "--station",
