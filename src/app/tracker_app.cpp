@@ -290,6 +290,9 @@ int run_service(StationApp& app, const TrackerConfig& c, const Startup& s, Attac
       try {
         menus::sign_on(t, services);
         menus::main_menu(t, services);
+        // The operator left the main menu: attached, leaving is detaching; the menus start again
+        // for the next one.
+        attach->detach_keyboard();
       } catch (const menus::InputClosed&) {
       }
     }
