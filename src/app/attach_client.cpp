@@ -266,15 +266,30 @@ int run_attach(const std::vector<std::string>& args) {
   return attach_to(a->socket, a->options.has("line"));
 }
 
-int run_status(const std::vector<std::string>& args) {
-  int code = kExitOk;
-  const auto a = read_args("status", args, code);
-  if (!a) return code;
+// The options of `command`, a connection to the station, and the request sent; -1 with the exit
+// status in `code` when it ends here.
+int request(const std::string& command, const std::vector<std::string>& args, std::optional<ClientArgs>& a, int& code) {
+  code = kExitOk;
+  a = read_args(command, args, code);
+  if (!a) return -1;
   bool not_running = false;
-  const int fd = connect_station(a->socket, "status", not_running);
-  if (fd < 0) return not_running ? kStatusNotRunning : kExitFailure;
-  const bool sent = send_all(fd, "status\n");
-  const auto text = sent ? read_to_end(fd) : std::nullopt;
+  const int fd = connect_station(a->socket, command, not_running);
+  code = not_running ? kStatusNotRunning : kExitFailure;
+  if (fd < 0) return -1;
+  if (!send_all(fd, command + "\n")) {
+    std::fprintf(stderr, "trakbox %s: %s: the station closed the connection\n", command.c_str(), a->socket.c_str());
+    ::close(fd);
+    return -1;
+  }
+  return fd;
+}
+
+int run_status(const std::vector<std::string>& args) {
+  std::optional<ClientArgs> a;
+  int code = kExitOk;
+  const int fd = request("status", args, a, code);
+  if (fd < 0) return code;
+  const auto text = read_to_end(fd);
   ::close(fd);
   const nlohmann::json doc = text ? nlohmann::json::parse(*text, nullptr, false) : nlohmann::json();
   if (!doc.is_object() || !doc.contains("antenna")) {
@@ -288,13 +303,10 @@ int run_status(const std::vector<std::string>& args) {
 }
 
 int run_events(const std::vector<std::string>& args) {
+  std::optional<ClientArgs> a;
   int code = kExitOk;
-  const auto a = read_args("events", args, code);
-  if (!a) return code;
-  bool not_running = false;
-  const int fd = connect_station(a->socket, "events", not_running);
-  if (fd < 0) return not_running ? kStatusNotRunning : kExitFailure;
-  if (!send_all(fd, "events\n")) return kExitFailure;
+  const int fd = request("events", args, a, code);
+  if (fd < 0) return code;
   char buf[8192];
   for (;;) {
     const ssize_t n = ::read(fd, buf, sizeof buf);

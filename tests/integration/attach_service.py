@@ -18,7 +18,7 @@ import time
 import zlib
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import (BIN, CLOCK, Failure, ScreenUI, Terminal, check, free_port, load_state,  # noqa: E402
+from _tbharness import (BIN, CLOCK, ScreenUI, Terminal, check, free_port, load_state, reap,  # noqa: E402
                         run_test, skip, tcp_exchange, wait_listening)
 
 MAIN = r"Select \[1-8,S,M\]:"
@@ -265,10 +265,7 @@ def main():
             u.close()
         for fd in fds:
             os.close(fd)
-        for p in procs:
-            if p.poll() is None:
-                p.kill()
-                p.wait()
+        reap(procs)
         shutil.rmtree(state, ignore_errors=True)
 
 

@@ -15,8 +15,8 @@ import threading
 import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import (BIN, CLOCK, SOURCE, check, free_port, load_state, run_test, sh,  # noqa: E402
-                        tcp_exchange, wait_listening)
+from _tbharness import (BIN, CLOCK, SOURCE, check, free_port, load_state, reap, run_test,  # noqa: E402
+                        sh, tcp_exchange, wait_listening)
 
 RATE = 10
 UNTIL = "2026-05-21T12:18:00Z"  # after the LOS of AO-91, the last of the passes up at the start
@@ -203,10 +203,7 @@ def main():
         check("exit status 0" in log, "the file hook's exit status is in the log")
         print(f"{len(expected)} AOS/LOS events, latest {worst:.2f} s after the prediction; {killed} hooks killed")
     finally:
-        for p in procs:
-            if p.poll() is None:
-                p.kill()
-                p.wait()
+        reap(procs)
         for d in (state, other, scratch):
             shutil.rmtree(d, ignore_errors=True)
 

@@ -9,7 +9,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, CLOCK, SerialPair, Terminal, check, run_test, skip  # noqa: E402
+from _tbharness import BIN, CLOCK, SerialPair, Terminal, check, reap, run_test, skip  # noqa: E402
 
 
 def main():
@@ -44,10 +44,7 @@ def main():
     finally:
         if fd is not None:
             os.close(fd)
-        for p in procs:
-            if p.poll() is None:
-                p.kill()
-                p.wait()
+        reap(procs)
         pair.close()
         shutil.rmtree(state, ignore_errors=True)
 
