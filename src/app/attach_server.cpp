@@ -225,6 +225,7 @@ struct Member {
   std::array<char, 4096> rbuf{};
   bool gone = false;
   bool permanent = false;  // the serial port of --tty: no detaching, and a lost port is only logged
+  bool input_ended = false;  // a script's input ended: it detaches once the menus took its keys
   std::string told;  // the keyboard note last given to a line client
   std::chrono::steady_clock::time_point told_at{};
 
@@ -509,6 +510,10 @@ struct AttachServer::Impl {
       Member* m = find(id);
       if (!m || m->gone) return;
       if (ec) {
+        if (ec == asio::error::eof && keyboard == m->id && !m->keys.empty()) {
+          m->input_ended = true;  // its answers are still to come (next_key detaches it after)
+          return;
+        }
         gone(*m, "");
         return;
       }
@@ -608,6 +613,8 @@ int MuxTerminal::next_key(std::optional<term::Duration> timeout) {
       const int k = h->keys.front();
       h->keys.pop_front();
       return k;
+    } else if (h && h->input_ended) {
+      s_.gone(*h, "");  // every key it sent was taken, and the menus answered
     }
     term::Duration step = std::chrono::milliseconds(50);
     if (deadline) {

@@ -1,8 +1,10 @@
 """trakbox --service --tty DEV (issue 29): the service keeps the box's serial port. Its menus are on
 the serial line (a socat pty pair at 9600 bps) and, at the same time, to an attach client; the serial
 terminal answers a menu, a client attached meanwhile sees it, and Ctrl-] on the serial line does not
-take the port away."""
+take the port away; a script on a pipe takes the keyboard, answers, and is detached when its input
+has been used."""
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -36,6 +38,13 @@ def main():
         out = r.stdout.decode(errors="replace")
         check(r.returncode == 0, f"attach exit {r.returncode}: {r.stderr}")
         check("Callsign" in out and "detached from trakbox" in out, f"the client saw the serial terminal's menu:\n{out}")
+        # A script: it takes the keyboard (Ctrl-T), keeps the callsign (Enter); its input ends, and
+        # it is detached once the menus have taken its keys and answered them.
+        r = subprocess.run([BIN, "attach", "--state", state], input=b"\x14\r", capture_output=True, timeout=20)
+        out = r.stdout.decode(errors="replace")
+        check(r.returncode == 0 and re.search(r"Latitude\s+\[deg\]", out) and "detached from trakbox" in out,
+              f"the script's Enter was answered before it was detached:\n{out}")
+        t.expect(r"Latitude\s+\[deg\]")  # the serial terminal saw it too
         check(svc.poll() is None, "the service runs on")
         svc.terminate()
         _, err = svc.communicate(timeout=60)
