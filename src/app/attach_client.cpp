@@ -245,6 +245,20 @@ int attach_to(const std::string& socket_path, bool line) {
     ::close(fd);
     return kExitFailure;
   }
+  // "ok", then the session; else why not.
+  std::string answer;
+  for (char c = 0; answer.size() < 1024;) {
+    pollfd p{fd, POLLIN, 0};
+    if (::poll(&p, 1, 10000) <= 0 || ::read(fd, &c, 1) != 1 || c == '\n') break;
+    answer.push_back(c);
+  }
+  if (answer != "ok") {
+    std::fprintf(stderr, "trakbox attach: %s\n",
+                 answer.rfind("refused: ", 0) == 0 ? answer.substr(9).c_str()
+                                                   : ("no answer from the station on " + socket_path).c_str());
+    ::close(fd);
+    return kExitFailure;
+  }
   int code = kExitOk;
   {
     RawTerminal raw;

@@ -413,7 +413,7 @@ struct AttachServer::Impl {
         subscribers.push_back(out);
         std::erase_if(subscribers, [](const auto& s) { return s->closed; });
       } else if (line.rfind("attach", 0) == 0 && !opt.menus) {
-        out->send("trakbox: this trakbox's menus are on its own terminal (pid " + std::to_string(::getpid()) +
+        out->send("refused: this trakbox's menus are on its own terminal (pid " + std::to_string(::getpid()) +
                   "); status and events answer here\n");
         out->finish();
       } else if (line.rfind("attach", 0) == 0) {
@@ -444,6 +444,7 @@ struct AttachServer::Impl {
     log.info("attach: {} attached ({})", m->who, m->curses ? "full screen " + term_type : std::string("lines"));
     Member& ref = *m;
     members.push_back(std::move(m));
+    out->send("ok\n");  // the session follows
     if (!m_is_line(ref)) ref.screen->status(keyboard_note(ref) + status_text);
     else ref.screen->write("trakbox: attached to the running station; Ctrl-] detaches, Ctrl-T takes the keyboard\n");
     replay(ref);

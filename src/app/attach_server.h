@@ -1,6 +1,7 @@
 // The running station on a local socket (docs/service.md): `trakbox attach` (the TrakBox menus on
 // the attached terminal, several at once, one with the keyboard), `trakbox status` (the station's
-// facts as JSON) and `trakbox events` (its events as JSON lines). A Unix socket only, for its
+// facts as JSON) and `trakbox events` (its events as JSON lines). An attach is answered "ok\n",
+// then the session, or "refused: WHY\n". A Unix socket only, for its
 // owner and group (0660): who may attach is who may open it; nothing here listens on a network.
 //
 // The menus run once, on the station's own event loop, against terminal(): what they write goes

@@ -357,16 +357,17 @@ std::unique_ptr<AttachServer> open_socket(StationApp& app, const TrackerConfig& 
   AttachServerOptions o;
   o.path = c.socket;
   o.menus = c.service;
-  AttachServer* self = nullptr;
-  o.status = [&app, &c, &self, &servers] {
+  // The server itself, once made (who is attached is part of the status).
+  auto self = std::make_shared<AttachServer*>(nullptr);
+  o.status = [&app, &c, self, &servers] {
     StatusContext cx{kVersion, c.state_dir.string(), {}, {}, c.service, [&servers] { return servers_json(servers); }};
-    if (self) cx.attached = self->attached(), cx.keyboard = self->keyboard();
+    if (*self) cx.attached = (*self)->attached(), cx.keyboard = (*self)->keyboard();
     return station_status(app, cx);
   };
   try {
     auto server = std::make_unique<AttachServer>(
         app.io(), [&app](int fd, std::optional<term::Duration> t) { return app.wait_readable(fd, t); }, o, app.log());
-    self = server.get();
+    *self = server.get();
     lock.announce(c.socket);
     app.log().info("socket {} (trakbox attach, status, events)", c.socket);
     return server;

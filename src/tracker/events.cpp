@@ -103,9 +103,14 @@ std::vector<Event> PassEventSource::step(orbit::UtcTime now) {
       out.push_back(pass_event("aos", i, w, now));
     }
     if (w.pass && now >= w.pass->los) {
-      if (w.aos_fired) out.push_back(pass_event("los", i, w, now));
-      w.aos_fired = false;
-      w.pass.reset();  // the next one is searched at the next step (after this LOS)
+      if (w.pass->up_at_end) {
+        // Still up where the search stopped (a geostationary satellite): no LOS; search on.
+        w.pass.reset();
+      } else {
+        if (w.aos_fired) out.push_back(pass_event("los", i, w, now));
+        w.aos_fired = false;
+        w.pass.reset();  // the next one is searched at the next step (after this LOS)
+      }
     }
     kept[el.catalog_number] = w;
   }

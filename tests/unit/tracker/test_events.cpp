@@ -38,9 +38,9 @@ struct Run {
     model.db.selected.clear();
     for (const auto& n : list) model.db.selected.push_back(index_of(model, n));
   }
-  // One step a second from 12:08:30 to `until`.
-  void step(tracker::PassEventSource& source, orbit::UtcTime until) {
-    for (; clock.now() <= until; clock.set(clock.now() + std::chrono::seconds(1)))
+  // One step a second (or every `every`) from 12:08:30 to `until`.
+  void step(tracker::PassEventSource& source, orbit::UtcTime until, std::chrono::seconds every = std::chrono::seconds(1)) {
+    for (; clock.now() <= until; clock.set(clock.now() + every))
       for (auto& e : source.step(clock.now())) events.push_back(std::move(e));
   }
   const tracker::Event* find(const std::string& kind, const std::string& sat) const {
@@ -107,6 +107,17 @@ TEST_CASE("a satellite taken off the list is forgotten; one put on it is watched
   CHECK_FALSE(r.find("los", "AO-91"));  // no LOS for a satellite no longer watched
   CHECK(r.find("aos", "ISS"));
   CHECK(r.find("los", "ISS"));
+}
+
+TEST_CASE("a satellite that never sets (QO-100, geostationary, seen from Berlin) has its AOS and no LOS") {
+  Run r({"QO-100"});
+  r.model.station.lat_deg = 52.52;
+  r.model.station.lon_deg = 13.40;
+  tracker::PassEventSource source(r.model, r.tracker);
+  r.step(source, at(12, 8, 30) + std::chrono::hours(24 * 5), std::chrono::seconds(60));
+  REQUIRE(r.events.size() == 1);
+  CHECK(r.events[0].kind == "aos");
+  CHECK(r.events[0].time == at(12, 8, 30));
 }
 
 TEST_CASE("an event's JSON line and environment") {
