@@ -29,21 +29,16 @@ std::chrono::milliseconds GuessGuard::delay_after(int failures) const {
   return std::min(d, p_.max_delay);
 }
 
-GuessGuard::Clock::time_point GuessGuard::slot(const std::string& address, Clock::time_point now) {
-  auto it = table_.find(address);
-  if (it == table_.end()) return now;  // never wrong: answered at once, nothing remembered
-  Entry& e = entry(address, now);
-  const Clock::time_point at = std::max(now, e.next_answer);
-  // The slot is taken: the attempt after it waits the delay again, on any connection.
-  e.next_answer = at + delay_after(e.failures);
-  return at;
+GuessGuard::Clock::time_point GuessGuard::free_at(const std::string& address, Clock::time_point now) {
+  if (table_.find(address) == table_.end()) return now;  // never wrong: answered at once
+  return std::max(now, entry(address, now).next_answer);
 }
 
 bool GuessGuard::wrong(const std::string& address, Clock::time_point now) {
   Entry& e = entry(address, now);
   ++e.failures;
   e.last_wrong = now;
-  e.next_answer = std::max(e.next_answer, now + delay_after(e.failures));
+  e.next_answer = now + delay_after(e.failures);
   if (e.failures >= p_.lockout_after && e.locked_until <= now) {
     // Each wrong secret after the lockout locks the address out again, until forget_after has passed
     // without one.

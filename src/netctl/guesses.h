@@ -1,7 +1,8 @@
 // How fast one address may guess an endpoint's secret (issue 33). Every wrong secret from an
-// address makes its next answer wait longer, whichever connection it comes on: the answers to one
-// address's guesses are served one after another, each `delay` after the one before, so opening more
-// connections buys an attacker nothing. After `lockout_after` wrong secrets the address is locked
+// address makes its next answer wait longer, whichever connection it comes on: an attempt is answered
+// only when the address is free again (free_at), and each answer, taken on the spot, sets when that
+// is, so the answers to one address's guesses come one after another, each `delay` after the one
+// before, and opening more connections buys an attacker nothing. After `lockout_after` wrong secrets the address is locked
 // out for `lockout_for`: its connections are refused at accept. A right secret forgets the address;
 // so does `forget_after` without a wrong one. Pure: the caller passes the time.
 //
@@ -29,10 +30,12 @@ class GuessGuard {
   using Clock = std::chrono::steady_clock;
   explicit GuessGuard(GuessPolicy p = {}) : p_(p) {}
 
-  // When an attempt from `address` that arrives at `now` may be answered (now, or later when earlier
-  // wrong guesses from it are still being paid for). Takes the slot: the next attempt waits for it.
-  Clock::time_point slot(const std::string& address, Clock::time_point now);
-  // The attempt answered at `now` was wrong: true when it locked the address out.
+  // When an attempt from `address` may be answered: `now`, or later while its earlier wrong secrets
+  // are being paid for. A caller that must wait asks again when the time comes (another connection
+  // of the address may have been answered meanwhile).
+  Clock::time_point free_at(const std::string& address, Clock::time_point now);
+  // An attempt answered at `now` (only when free_at(address, now) <= now) was wrong: the address is
+  // busy for the delay its failures have earned. True when this locked the address out.
   bool wrong(const std::string& address, Clock::time_point now);
   // The right secret: the address is forgotten.
   void right(const std::string& address) { table_.erase(address); }

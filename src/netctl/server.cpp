@@ -214,11 +214,11 @@ class Session : public std::enable_shared_from_this<Session> {
     return true;
   }
 
-  // A secret given: answered when this address's earlier wrong guesses have been paid for
-  // (GuessGuard), with reading paused until then so nothing after it runs first.
+  // A secret given: answered when this address is free of its earlier wrong guesses (GuessGuard),
+  // with reading paused until then so nothing sent after it runs first.
   void attempt(const std::string& secret_given) {
     const auto now = std::chrono::steady_clock::now();
-    const auto at = core_->guesses.slot(address_, now);
+    const auto at = core_->guesses.free_at(address_, now);
     if (at <= now) {
       answer(secret_given);
       return;
@@ -230,10 +230,11 @@ class Session : public std::enable_shared_from_this<Session> {
       if (ec || self->closed_) return;
       self->paused_ = false;
       std::string s = std::move(self->pending_secret_);
-      self->answer(s);
+      self->attempt(s);  // another connection of the address may have been answered first: wait again
+      if (self->paused_ || self->closed_) return;
       std::string rest;
       rest.swap(self->backlog_);
-      if (!rest.empty() && !self->closed_ && !self->closing_) self->feed(rest.data(), rest.size());
+      if (!rest.empty() && !self->closing_) self->feed(rest.data(), rest.size());
       self->go_on();
     });
   }
@@ -259,6 +260,13 @@ class Session : public std::enable_shared_from_this<Session> {
                    std::chrono::duration_cast<std::chrono::seconds>(left).count(),
                    core_->guesses.policy().lockout_after);
       closing_ = true;
+      // Its other connections (waiting for answers, or logged out) go too: none holds a slot for
+      // the lockout's ten minutes.
+      std::vector<std::shared_ptr<Session>> same;
+      for (auto& [p, w] : core_->sessions)
+        if (auto s = w.lock(); s && s.get() != this && s->address() == address_) same.push_back(std::move(s));
+      for (auto& s : same)
+        if (!s->authenticated_) s->close("its address is locked out");
     } else if (++auth_failures_ >= core_->options.max_auth_failures) {
       spdlog::warn("{}: client {} gave a wrong secret {} times; closed", core_->options.name, peer_, auth_failures_);
       closing_ = true;
@@ -323,7 +331,7 @@ class Session : public std::enable_shared_from_this<Session> {
   bool authenticated_;   // no secret, or the client gave it
   int auth_failures_ = 0;
   asio::steady_timer auth_timer_;
-  bool paused_ = false;          // a secret waits for its answer's slot
+  bool paused_ = false;          // a secret waits until its address may be answered
   std::string pending_secret_;   // that secret
   std::string backlog_;          // what the client sent after it
   asio::steady_timer guess_timer_;
