@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <array>
 #include <cerrno>
+#include <csignal>
 #include <cstring>
 #include <deque>
 #include <filesystem>
@@ -630,6 +631,9 @@ int MuxTerminal::next_key(std::optional<term::Duration> timeout) {
 AttachServer::AttachServer(asio::io_context& io, term::WaitReadable wait, AttachServerOptions options,
                            spdlog::logger& log)
     : impl_(std::make_unique<Impl>(io, std::move(wait), std::move(options), log)) {
+  // Clients are written to as descriptors (write(2), not send with MSG_NOSIGNAL): one that went
+  // away must be an EPIPE for that client, never a SIGPIPE that ends the station.
+  std::signal(SIGPIPE, SIG_IGN);
   const std::string& path = impl_->opt.path;
   if (path.size() >= sizeof(sockaddr_un{}.sun_path))
     throw std::runtime_error(path + ": too long for a Unix socket (at most 107 bytes)");

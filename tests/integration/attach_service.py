@@ -221,6 +221,17 @@ def main():
         c.send("\x1d")
         check(c.exited() == 0, "the second trakbox detached with 0")
 
+        # Clients that vanish at once (reset, while the station writes their first screen) cost the
+        # station nothing: it goes on answering.
+        for _ in range(30):
+            q = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+            q.connect(sock)
+            q.setsockopt(socket.SOL_SOCKET, socket.SO_LINGER, struct.pack("ii", 1, 0))
+            q.sendall(b'attach {"full_screen":true,"term":"xterm","rows":60,"cols":200}\n' +
+                      b"\xffW" + struct.pack(">HH", 60, 200))
+            q.close()
+        check(svc.poll() is None, "the service outlived clients that vanished")
+
         # A client that stops reading is disconnected; the station answers all the while.
         frozen = frozen_client(sock)
         t_frozen = time.time()
