@@ -1,8 +1,13 @@
 // Menu 5: Update Realtime Clock. Y zeroes the seconds, Q leaves, Enter sets the clock.
 // The clock is system time plus an offset: setting it changes the stored offset only.
+#include <chrono>
+#include <cmath>
+
+#include "gps/monitor.h"
 #include "menus/menus.h"
 #include "station/clock.h"
 #include "store/model.h"
+#include "tracker/station_loop.h"
 
 namespace tb::menus {
 
@@ -10,6 +15,8 @@ void menu_5_realtime_clock(term::Terminal& t, Services& s) {
   t.line("Enter 'Y' for zero sec. adjustment");
   t.line("Enter 'Q' for exit");
   t.line("Enter 'Ret' for Real Time Clock set");
+  const gps::Monitor* g = s.station.gps();
+  if (g) t.line("Enter 'G' for the clock from GPS time (" + g->describe() + ")");
   for (;;) {
     const auto now = s.clock.now();
     t.live({"Present Time:UTC " + format_date(now) + " " + format_time(now)});
@@ -22,6 +29,19 @@ void menu_5_realtime_clock(term::Terminal& t, Services& s) {
       s.model.clock_offset = s.clock.offset();
       save_or_report(t, s);
       t.line("Present Time:UTC " + format_date(s.clock.now()) + " " + format_time(s.clock.now()));
+      return;
+    }
+    if (g && (k == 'g' || k == 'G')) {
+      // GPS time minus the clock at the receiver's last report becomes part of the offset.
+      if (!g->filter().fixed() || g->link() != gps::Link::receiving || !g->clock_error_s()) {
+        t.line("  no GPS fix: the clock is left alone");
+        continue;
+      }
+      s.clock.set_offset(s.clock.offset() +
+                         std::chrono::microseconds(std::llround(*g->clock_error_s() * 1e6)));
+      s.model.clock_offset = s.clock.offset();
+      save_or_report(t, s);
+      t.line("Present Time:UTC " + format_date(s.clock.now()) + " " + format_time(s.clock.now()) + " (from GPS)");
       return;
     }
     if (k == 'q' || k == 'Q') return;

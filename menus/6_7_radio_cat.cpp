@@ -4,7 +4,8 @@
 // command line (--radio cat:DEVICE builds the driver for the rig chosen here when trakbox starts);
 // the corrections and F/A apply at once. trakbox's additions at the first question: D turns dial
 // follow on linear transponders on or off, U names a second radio for the uplink (a spec as
-// --uplink-radio takes) or none; both apply at once.
+// --uplink-radio takes: a model of the radio registry, a family, Hamlib) or none, L lists the radio
+// registry (radio/registry.h, as trakbox --radio list); D and U apply at once.
 #include <cctype>
 #include <charconv>
 #include <cstdio>
@@ -12,6 +13,7 @@
 #include "menus/6_configuration.h"
 #include "radio/cat.h"
 #include "radio/factory.h"
+#include "radio/registry.h"
 #include "store/model.h"
 #include "tracker/station_loop.h"
 
@@ -51,26 +53,35 @@ void menu_6_7_radio_cat(term::Terminal& t, Services& s) {
   auto extras = [&] {
     t.line(std::string("Dial follow ") + (s.model.radio.dial_follow ? "ON" : "OFF") + "   Uplink radio: " +
            (s.model.radio.uplink_radio.empty() ? "none (one radio)" : s.model.radio.uplink_radio) +
-           "   (D: dial follow on/off, U: uplink radio)");
+           "   (D: dial follow on/off, U: uplink radio, L: radio list)");
   };
   extras();
   char rig = 0;
   while (!rig) {
-    const char k = cfg::ask_choice(t, "CAT Rig KENWOOD,YAESU,ICOM [K/Y/I] ? ", "KYINDU");
+    const char k = cfg::ask_choice(t, "CAT Rig KENWOOD,YAESU,ICOM [K/Y/I] ? ", "KYINDUL");
     if (k == 'D') {
       s.model.radio.dial_follow = c.dial_follow = !s.model.radio.dial_follow;
       s.station.tuner().set_config(s.model.radio);
       save_or_report(t, s);
       extras();
+    } else if (k == 'L') {   // the radio registry, as trakbox --radio list prints it
+      std::string list = radio::radio_list_text();
+      for (std::size_t at = 0, nl; at < list.size(); at = nl + 1) {
+        nl = list.find('\n', at);
+        if (nl == std::string::npos) nl = list.size();
+        t.line(list.substr(at, nl - at));
+      }
+      extras();
     } else if (k == 'U') {
       const std::string spec =
-          cfg::answer(t, "Uplink radio, as --radio (sim, icom:DEV, hamlib:MODEL:DEV, rigctld:HOST:PORT ...; none) ? ");
+          cfg::answer(t, "Uplink radio, as --radio (a model of the list L such as ft817:DEV, or icom:DEV, hamlib:MODEL:DEV, "
+                         "rigctld:HOST:PORT ...; none) ? ");
       const std::string next = spec == "none" ? "" : spec;
       if (const auto parsed = radio::parse_radio_spec(next, "uplink radio"); !next.empty() && !parsed.spec) {
         t.line("  " + parsed.error);
       } else if (!spec.empty()) {
         radio::MakeRadio made;
-        if (!next.empty()) made = radio::make_radio(*parsed.spec, s.model.radio);
+        if (!next.empty()) made = radio::make_radio(*parsed.spec, s.model.radio, {}, radio::RadioRole::uplink);
         if (!next.empty() && !made.driver) {
           t.line("  " + made.error);
         } else {

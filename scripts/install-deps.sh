@@ -7,6 +7,8 @@ pkgs=(
   libcurl4-openssl-dev libhamlib-dev libbenchmark-dev libpugixml-dev
   # test peers and independent references
   libhamlib-utils python3-sgp4 python3-skyfield gpredict socat tmux python3-pyftpdlib
+  # the GPS receiver: libgps to build, gpsd and gpsfake (gpsd-clients) to test against
+  libgps-dev gpsd gpsd-clients
   # the Debian package and its checks (scripts/package-check.sh), the completion test
   dpkg-dev lintian man-db groff-base systemd bash-completion
 )

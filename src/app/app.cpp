@@ -8,7 +8,9 @@
 #include "app/cli_elements.h"
 #include "app/cli_orbit.h"
 #include "app/options.h"
+#include "app/rotator_registry.h"
 #include "app/tracker_app.h"
+#include "radio/registry.h"
 #include "satrak/client.h"
 
 #include <iostream>
@@ -45,6 +47,15 @@ int main(int argc, char** argv) {
   std::vector<std::string> args(argv + (argc > 0 ? 1 : 0), argv + argc);
   if (!args.empty() && (args[0] == "--help" || args[0] == "-h" || args[0] == "help")) {
     std::fputs(usage().c_str(), stdout);
+    return kExitOk;
+  }
+  // The device registries: every radio (radio/registry.h) with its spec form and what it can do.
+  if (args.size() == 2 && args[0] == "--radio" && args[1] == "list") {
+    std::fputs(radio::radio_list_text().c_str(), stdout);
+    return kExitOk;
+  }
+  if (args.size() == 2 && args[0] == "--rotator" && args[1] == "list") {
+    std::fputs(rotator_list_text().c_str(), stdout);
     return kExitOk;
   }
   if (!args.empty() && args[0].rfind('-', 0) != 0) {

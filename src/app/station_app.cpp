@@ -17,6 +17,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "gps/gpsd_client.h"
 #include "radio/freqmode.h"
 #include "rotator/split_travel.h"
 #include "satrak/unit.h"
@@ -197,6 +198,32 @@ void StationApp::set_events(std::function<void(const tracker::Event&)> sink, std
 
 std::optional<std::chrono::system_clock::time_point> StationApp::last_saved() const { return impl_->last_saved; }
 
+  std::unique_ptr<gps::Monitor> gps;
+  std::unique_ptr<gps::GpsdClient> gps_client;  // after gps: stopped before it goes
+  void log_notes(const std::vector<gps::Note>& notes) {
+    for (const auto& n : notes) {
+      if (n.warning) log->warn("{}", n.text);
+      else log->info("{}", n.text);
+    }
+  }
+  void show_status() {
+    if (terminal && station) terminal->status(station->status_line());
+  }
+  void on_gps_report(const gps::Report& r, StationApp& app);
+};
+
+void StationApp::Impl::on_gps_report(const gps::Report& r, StationApp& app) {
+  const std::string before = gps->status_word();
+  log_notes(gps->on_report(r, clock.now()));
+  if (station && station->apply_gps_position()) {
+    const auto& st = model.station;
+    log->info("GPS: the station is now at {:.6f} {:.6f} {:.1f} m (fix of {})", st.lat_deg, st.lon_deg, st.height_m,
+              model.gps.position_time ? orbit::format_iso8601(*model.gps.position_time) : std::string("?"));
+    app.save();
+  }
+  if (gps->status_word() != before) show_status();
+}
+
 StationApp::StationApp(store::Model model, store::StateFile file, std::shared_ptr<spdlog::logger> log)
     : impl_(std::make_unique<Impl>(std::move(model), std::move(file), std::move(log))) {
   impl_->refresh = std::make_unique<tracker::ElementsRefresh>(
@@ -285,6 +312,38 @@ std::optional<std::string> StationApp::save() {
     m.station->set_save_failure(std::nullopt);
   }
   return std::nullopt;
+}
+
+void StationApp::start_gps() {
+  Impl& m = *impl_;
+  if (m.model.gps.source.empty()) return;
+  std::string why;
+  const auto endpoint = gps::parse_gps_spec(m.model.gps.source, why);
+  if (!endpoint) {  // the state reader checked it: not reached
+    m.log->error("GPS: {}", why);
+    return;
+  }
+  m.gps = std::make_unique<gps::Monitor>(endpoint->text());
+  if (m.station) m.station->set_gps(m.gps.get());
+  m.log->info("GPS: {} (the station {} the receiver, threshold {:.0f} m)", endpoint->text(),
+              m.model.gps.follow ? "follows" : "does not follow", m.model.gps.threshold_m);
+  gps::GpsdClient::Sink sink;
+  sink.link = [&m](gps::Link l, const std::string& detail) {
+    m.log_notes(m.gps->on_link(l, detail));
+    m.show_status();
+  };
+  sink.devices = [&m](int n) {
+    m.log_notes(m.gps->on_devices(n));
+    m.show_status();
+  };
+  sink.report = [&m, this](const gps::Report& r) { m.on_gps_report(r, *this); };
+  m.gps_client = std::make_unique<gps::GpsdClient>(
+      *endpoint, [&m](std::function<void()> f) { asio::post(m.io, std::move(f)); }, std::move(sink));
+}
+
+void StationApp::stop_gps() {
+  impl_->gps_client.reset();
+  if (impl_->station) impl_->station->set_gps(nullptr);
 }
 
 // --service: what the stored configuration says to track. The first multi_count satellites of the

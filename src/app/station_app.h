@@ -84,6 +84,11 @@ class StationApp {
   // refreshes, links lost and back, failed saves), found on every tick; lead: the AOS event comes
   // this long before AOS.
   void set_events(std::function<void(const tracker::Event&)> sink, std::chrono::seconds lead);
+  // The GPS receiver of model().gps.source (nothing when none): its client thread reports to the
+  // loop, which logs each problem once, follows the receiver when model().gps.follow says so (and
+  // saves then), and shows the GPS word on the status line. stop_gps() ends the thread.
+  void start_gps();
+  void stop_gps();
 
   // --service: tracks what the stored configuration says, serves, re-reads the data directory's
   // element and freq/mode files on SIGHUP, and on SIGTERM parks (when parking is on). `menus`,

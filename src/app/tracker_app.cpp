@@ -415,10 +415,14 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   store::StateFile file(c.state_dir);
   Startup startup = load_state(file, c, *log);
   if (c.cross_limit_sector) startup.model.rotator.cross_limit_sector = *c.cross_limit_sector;
+  if (c.gps_source) startup.model.gps.source = *c.gps_source;
+  if (c.gps_follow) startup.model.gps.follow = *c.gps_follow;
+  if (c.gps_threshold_m) startup.model.gps.threshold_m = *c.gps_threshold_m;
 
   StationApp app(startup.model, file, log);
   if (auto err = build_station(app, c)) return usage_error(*err);
   configure_refresh(app, c);
+  app.start_gps();
   app.set_satrak_saved(startup.satrak_saved);
   Servers servers;
   if (auto err = start_satrak(app, c, startup, servers)) return usage_error(*err);
@@ -471,6 +475,7 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   app.set_events({}, {});
   app.set_satrak(nullptr);
   servers.satrak_unit.reset();
+  app.stop_gps();
   attach.reset();
   log->info("trakbox stopped");
   return code;

@@ -4,6 +4,8 @@
 #include <cstdlib>
 
 #include "app/build_info.h"
+#include "app/rotator_registry.h"
+#include "gps/gpsd_client.h"
 #include "station/clock.h"
 #include "menus/term/line_terminal.h"
 #include "store/refresh.h"
@@ -30,9 +32,12 @@ std::vector<OptionSpec> tracker_option_specs() {
                       "freq/mode files"},
       {"clock", "ISO8601", "start the real-time clock at this UTC time (e.g. 2026-05-21T12:00:00Z)"},
       {"clock-rate", "R", "run the clock R times faster than real time, R at most 200 (with or without --clock)"},
-      {"rotator", "SPEC", "simulated (default), hamlib:MODEL:DEVICE[:BAUD], rotctld:HOST[:PORT]"},
-      {"radio", "SPEC", "simulated (default), icom:DEV, kenwood:DEV, yaesu:DEV, cat:DEV (rig of menu 6-7), "
-                        "hamlib:MODEL:DEV[:BAUD], rigctld[:HOST[:PORT]]"},
+      {"rotator", "SPEC", "simulated (default), hamlib:MODEL:DEVICE[:BAUD], rotctld:HOST[:PORT], satrak:HOST[:PORT] "
+                          "(trakbox --rotator list)"},
+      {"radio", "SPEC", "simulated (default), a model MODEL:DEV[:BAUD] (ic9700, ic9100, ic910h, ft847, ft817, "
+                        "ts2000 ...; `trakbox --radio list` prints them all), icom:DEV, kenwood:DEV, yaesu:DEV, "
+                        "cat:DEV (rig of menu 6-7), hamlib:MODEL:DEV[:BAUD] (MODEL a number or a name such as "
+                        "IC-9700), rigctld[:HOST[:PORT]]"},
       {"uplink-radio", "SPEC", "a second radio for the uplink, in the same forms as --radio (which then drives "
                                "the downlink); stored, so later starts use it too; none: one radio again"},
       {"tick-ms", "MS", "tracking interval in milliseconds, 100 to 1000 (default 1000)"},
@@ -64,6 +69,11 @@ std::vector<OptionSpec> tracker_option_specs() {
                                      "(TRAKBOX_EVENT, TRAKBOX_SATELLITE, TRAKBOX_AOS, ...; docs/service.md)", true},
       {"hook-timeout", "S", "seconds an --on-event command may run before it is killed, 1 to 3600 (default 60)"},
       {"event-lead", "S", "the AOS event comes S seconds before AOS, 0 to 3600 (default 0)"},
+      {"gps", "SPEC", "a GPS receiver through gpsd: gpsd (localhost:2947), gpsd:HOST or gpsd:HOST:PORT; none: no "
+                      "receiver (stored). Position, fix and time; the clock is checked against GPS time"},
+      {"gps-follow", "yes|no", "yes: the station's position follows the receiver's confirmed fix (stored; menu 4)"},
+      {"gps-threshold", "M", "metres the fix must move before the station follows, 1 to 100000 (default 100; "
+                             "stored)"},
       {"log-level", "LEVEL", "what trakbox.log in the state directory keeps: error, warn, info (default) or "
                              "debug (every remote command and its reply)"},
   };
@@ -95,16 +105,11 @@ std::optional<spdlog::level::level_enum> log_level_named(const std::string& l) {
 
 // The device specs, checked before anything starts.
 void read_devices(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
-  const std::string rot_text = o.value("rotator").value_or("simulated");
-  if (rot_text.rfind("satrak:", 0) == 0) {
-    std::string err;
-    c.satrak_rotator = satrak::parse_rotator_spec(rot_text, err);
-    if (!c.satrak_rotator) r.fail("--rotator", err);
-  } else {
-    rotator::SpecResult rot_spec = rotator::parse_rotator_spec(rot_text);
-    c.rotator = rot_spec.spec;
-    if (!rot_spec.spec) r.fail("--rotator", rot_spec.error);
-  }
+  // One table of rotators (app/rotator_registry.h) chooses the parser.
+  RotatorParse rot = parse_rotator(o.value("rotator").value_or("simulated"));
+  c.satrak_rotator = rot.choice.satrak;
+  c.rotator = rot.choice.rotator;
+  if (!rot.error.empty()) r.fail("--rotator", rot.error);
   const auto radio_spec = radio::parse_radio_spec(o.value("radio").value_or("simulated"));
   if (radio_spec.spec) c.radio = *radio_spec.spec;
   else r.fail("--radio", radio_spec.error);
@@ -156,6 +161,22 @@ void read_refresh(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
     c.elements_refresh_hours = *h;
   if (const auto v = r.integer("elements-timeout", false, "seconds, 1 to 600", Range{1, 600}))
     c.elements_timeout_s = static_cast<int>(*v);
+}
+
+// The GPS receiver: its gpsd, whether the station follows it, and how far it must move first.
+void read_gps(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
+  if (const auto g = o.value("gps")) {
+    std::string why;
+    if (*g == "none") c.gps_source = "";
+    else if (const auto e = gps::parse_gps_spec(*g, why)) c.gps_source = e->text();
+    else r.fail("--gps", why);
+  }
+  if (const auto f = o.value("gps-follow")) {
+    if (*f == "yes" || *f == "no") c.gps_follow = *f == "yes";
+    else r.fail("--gps-follow", "expected yes or no; found '" + *f + "'");
+  }
+  c.gps_threshold_m = r.number("gps-threshold", false, "metres, 1 to 100000",
+                               Range{station::kGpsThresholdMinM, station::kGpsThresholdMaxM});
 }
 
 // Front ends that cannot go together.
@@ -216,6 +237,7 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
     if (*x == "yes" || *x == "no") c.cross_limit_sector = *x == "yes";
     else r.fail("--cross-limit-sector", "expected yes or no; found '" + *x + "'");
   }
+  read_gps(o, r, c);
   if (const auto l = o.value("log-level")) {
     if (const auto level = log_level_named(*l)) c.log_level = *level;
     else r.fail("--log-level", "expected error, warn, info or debug; found '" + *l + "'");

@@ -72,6 +72,11 @@ struct TrackerConfig {
   std::vector<EventHook> hooks;
   int hook_timeout_s = 60;
   int event_lead_s = 0;
+  // --gps gpsd[:HOST[:PORT]] (canonical "gpsd:HOST:PORT") or none (""), --gps-follow, --gps-threshold:
+  // stored in the state when given (docs/gps.md).
+  std::optional<std::string> gps_source;
+  std::optional<bool> gps_follow;
+  std::optional<double> gps_threshold_m;
   std::vector<std::string> warnings;  // e.g. a secret file others can read: said at start
   spdlog::level::level_enum log_level = spdlog::level::info;
 };

@@ -289,6 +289,8 @@ Reply Interpreter::antenna() {
   }
   Reply r;
   r.lines.push_back(format_antenna(a->az, a->el));
+  // With a GPS receiver (--gps), a second line: its fix (docs/gps.md).
+  if (const gps::Monitor* g = station_.gps()) r.lines.push_back("GPS " + g->describe());
   return r;
 }
 

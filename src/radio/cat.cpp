@@ -141,6 +141,31 @@ Bytes select_vfo(std::uint8_t to, Vfo vfo, std::uint8_t from) {
   return frame(to, from, kCmdSelectVfo, data);
 }
 
+Bytes read_frequency(std::uint8_t to, std::uint8_t from) { return frame(to, from, 0x03); }
+
+Bytes read_transmit_frequency(std::uint8_t to, std::uint8_t from) {
+  const std::uint8_t data[] = {0x03};
+  return frame(to, from, 0x1C, data);
+}
+
+Bytes satellite_mode(std::uint8_t to, std::uint8_t cmd, std::uint8_t sub, bool on, std::uint8_t from) {
+  const std::uint8_t data[] = {sub, static_cast<std::uint8_t>(on ? 0x01 : 0x00)};
+  return frame(to, from, cmd, data);
+}
+
+Bytes set_tone_frequency(std::uint8_t to, int tenths_hz, std::uint8_t from) {
+  if (tenths_hz <= 0 || tenths_hz > 9999) throw std::invalid_argument("CTCSS tone " + std::to_string(tenths_hz) + " (tenths of Hz) out of range");
+  Bytes data{0x00};
+  const Bytes bcd = bcd_big_endian(static_cast<std::uint64_t>(tenths_hz), 3);
+  data.insert(data.end(), bcd.begin(), bcd.end());
+  return frame(to, from, 0x1B, data);
+}
+
+Bytes tone_function(std::uint8_t to, bool on, std::uint8_t from) {
+  const std::uint8_t data[] = {0x42, static_cast<std::uint8_t>(on ? 0x01 : 0x00)};
+  return frame(to, from, 0x16, data);
+}
+
 std::optional<Frame> decode_frame(std::span<const std::uint8_t> b) {
   if (b.size() < 6 || b[0] != kPreamble || b[1] != kPreamble || b.back() != kEnd) return std::nullopt;
   for (std::size_t i = 2; i + 1 < b.size(); ++i)
@@ -154,6 +179,11 @@ std::optional<Frame> decode_frame(std::span<const std::uint8_t> b) {
 }
 
 std::optional<Hz> decode_frequency(const Frame& f) {
+  if (f.cmd == 0x1C && f.data.size() == 6 && f.data[0] == 0x03) {
+    auto v = decode_bcd_little_endian(std::span(f.data).subspan(1));
+    if (!v) return std::nullopt;
+    return static_cast<Hz>(*v);
+  }
   if (f.cmd != kCmdSetFrequency && f.cmd != 0x03 && f.cmd != 0x00) return std::nullopt;
   if (f.data.size() != 5 && f.data.size() != 4) return std::nullopt;
   auto v = decode_bcd_little_endian(f.data);
@@ -239,6 +269,7 @@ std::optional<std::string> set_mode(Mode mode) {
 }
 
 std::string select_vfo(Vfo vfo) { return vfo == Vfo::a ? "FN0;" : "FN1;"; }
+std::string read_frequency(Vfo vfo) { return vfo == Vfo::a ? "FA;" : "FB;"; }
 std::string split(bool on) { return on ? "SP1;" : "SP0;"; }
 
 std::optional<Frequency> decode_frequency(std::string_view c) {
@@ -375,5 +406,101 @@ Decoded decode(const Command& c) {
 }
 
 }  // namespace yaesu
+
+// ---------------------------------------------------------------------------------------------
+namespace {
+
+// 8 BCD digits of 10 Hz, most significant first, for the FT-847 and FT-817 (below 1 GHz).
+yaesu::Command yaesu_frequency(Hz hz, std::uint8_t op, const char* what) {
+  if (hz < 0) throw std::invalid_argument(std::string(what) + ": negative frequency");
+  const std::uint64_t tens = static_cast<std::uint64_t>((hz + 5) / 10);
+  if (tens >= 100000000)
+    throw std::invalid_argument(std::string(what) + ": frequency " + std::to_string(hz) + " Hz out of range (below 1000 MHz)");
+  const Bytes d = bcd_big_endian(tens, 4);
+  return {d[0], d[1], d[2], d[3], op};
+}
+
+std::optional<Hz> yaesu_read_answer(std::span<const std::uint8_t> a) {
+  if (a.size() != 5) return std::nullopt;
+  auto v = decode_bcd_big_endian(a.first(4));
+  if (!v) return std::nullopt;
+  return static_cast<Hz>(*v * 10);
+}
+
+std::uint8_t vfo_nibble(yaesu::Target t) {
+  switch (t) {
+    case yaesu::Target::sat_rx: return 0x10;
+    case yaesu::Target::sat_tx: return 0x20;
+    case yaesu::Target::main: break;
+  }
+  return 0x00;
+}
+
+}  // namespace
+
+namespace ft847 {
+
+Command cat_on() { return {0x00, 0x00, 0x00, 0x00, 0x00}; }
+Command cat_off() { return {0x00, 0x00, 0x00, 0x00, 0x80}; }
+Command sat_mode_on() { return {0x00, 0x00, 0x00, 0x00, 0x4E}; }
+Command sat_mode_off() { return {0x00, 0x00, 0x00, 0x00, 0x8E}; }
+
+Command set_frequency(Target t, Hz hz) {
+  return yaesu_frequency(hz, static_cast<std::uint8_t>(vfo_nibble(t) | 0x01), "FT-847");
+}
+
+std::optional<Command> set_mode(Target t, Mode mode) {
+  auto code = yaesu::mode_code(mode);
+  if (!code) return std::nullopt;
+  return Command{*code, 0x00, 0x00, 0x00, static_cast<std::uint8_t>(vfo_nibble(t) | 0x07)};
+}
+
+Command read(Target t) { return {0x00, 0x00, 0x00, 0x00, static_cast<std::uint8_t>(vfo_nibble(t) | 0x03)}; }
+
+std::optional<Hz> decode_read(std::span<const std::uint8_t> answer) { return yaesu_read_answer(answer); }
+
+std::optional<Command> set_tone(Target t, int tenths_hz) {
+  // The FT-847's 39 tones and its CAT code for each (Hamlib ft847.c, ft847_ctcss_list / _cat).
+  static constexpr int kTones[] = {670,  693,  719,  744,  770,  797,  825,  854,  885,  915,  948,  974,  1000,
+                                   1035, 1072, 1109, 1148, 1188, 1230, 1273, 1318, 1365, 1413, 1462, 1514, 1567,
+                                   1622, 1679, 1738, 1799, 1862, 1928, 2035, 2107, 2181, 2257, 2336, 2418, 2503};
+  static constexpr std::uint8_t kCodes[] = {
+      0x3F, 0x39, 0x1F, 0x3E, 0x0F, 0x3D, 0x1E, 0x3C, 0x0E, 0x3B, 0x1D, 0x3A, 0x0D, 0x1C, 0x0C, 0x1B, 0x0B, 0x1A, 0x0A, 0x19,
+      0x09, 0x18, 0x08, 0x17, 0x07, 0x16, 0x06, 0x15, 0x05, 0x14, 0x04, 0x13, 0x03, 0x12, 0x02, 0x11, 0x01, 0x10, 0x00};
+  static_assert(std::size(kTones) == std::size(kCodes));
+  for (std::size_t i = 0; i < std::size(kTones); ++i)
+    if (kTones[i] == tenths_hz) return Command{kCodes[i], 0x00, 0x00, 0x00, static_cast<std::uint8_t>(vfo_nibble(t) | 0x0B)};
+  return std::nullopt;
+}
+
+Command tone_encoder(Target t, bool on) {
+  return {static_cast<std::uint8_t>(on ? 0x4A : 0x8A), 0x00, 0x00, 0x00, static_cast<std::uint8_t>(vfo_nibble(t) | 0x0A)};
+}
+
+}  // namespace ft847
+
+namespace ft817 {
+
+Command set_frequency(Hz hz) { return yaesu_frequency(hz, 0x01, "FT-817"); }
+
+std::optional<Command> set_mode(Mode mode) {
+  auto code = yaesu::mode_code(mode);
+  if (!code) return std::nullopt;
+  return Command{*code, 0x00, 0x00, 0x00, 0x07};
+}
+
+Command read() { return {0x00, 0x00, 0x00, 0x00, 0x03}; }
+
+std::optional<Hz> decode_read(std::span<const std::uint8_t> answer) { return yaesu_read_answer(answer); }
+
+Command set_tone(int tenths_hz) {
+  if (tenths_hz <= 0 || tenths_hz > 9999) throw std::invalid_argument("FT-817: CTCSS tone out of range");
+  const Bytes d = bcd_big_endian(static_cast<std::uint64_t>(tenths_hz), 2);
+  return {d[0], d[1], d[0], d[1], 0x0B};
+}
+
+Command tone_encoder(bool on) { return {static_cast<std::uint8_t>(on ? 0x4A : 0x8A), 0x00, 0x00, 0x00, 0x0A}; }
+
+}  // namespace ft817
 
 }  // namespace tb::radio

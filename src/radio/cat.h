@@ -63,6 +63,16 @@ Bytes set_frequency(std::uint8_t to, Hz hz, FrequencyWidth width = FrequencyWidt
 std::optional<Bytes> set_mode(std::uint8_t to, Mode mode, std::uint8_t from = kController);
 Bytes select_band(std::uint8_t to, Band band, std::uint8_t from = kController);  // 07 D0 / 07 D1
 Bytes select_vfo(std::uint8_t to, Vfo vfo, std::uint8_t from = kController);     // 07 00 / 07 01
+// Read the selected band's frequency: 03 (the radio answers FE FE E0 <to> 03 <5 BCD> FD).
+Bytes read_frequency(std::uint8_t to, std::uint8_t from = kController);
+// Read the transmit frequency: 1C 03 (the answer: FE FE E0 <to> 1C 03 <5 BCD> FD).
+Bytes read_transmit_frequency(std::uint8_t to, std::uint8_t from = kController);
+// Satellite mode on/off: 16 5A 01|00 (IC-9700, IC-9100) or 1A 07 01|00 (IC-910H), cmd and sub given.
+Bytes satellite_mode(std::uint8_t to, std::uint8_t cmd, std::uint8_t sub, bool on, std::uint8_t from = kController);
+// CTCSS: 1B 00 <tone, 3 bytes BCD, tenths of Hz, most significant first> (67.0 Hz: 00 06 70), and
+// the TONE function 16 42 01|00. Throws std::invalid_argument for a tone outside 0.1..999.9 Hz.
+Bytes set_tone_frequency(std::uint8_t to, int tenths_hz, std::uint8_t from = kController);
+Bytes tone_function(std::uint8_t to, bool on, std::uint8_t from = kController);
 
 std::optional<std::uint8_t> mode_code(Mode mode);     // LSB 00, USB 01, CW 03, FM 05
 std::optional<Mode> mode_from_code(std::uint8_t code);  // also CW-R 07 -> cw
@@ -76,7 +86,7 @@ struct Frame {
 };
 // Exactly one complete frame (FE FE ... FD); nullopt otherwise.
 std::optional<Frame> decode_frame(std::span<const std::uint8_t> bytes);
-// The frequency of a 05 (set) or 03/00 (read / transceive) frame.
+// The frequency of a 05 (set), 03/00 (read / transceive) or 1C 03 (transmit frequency) frame.
 std::optional<Hz> decode_frequency(const Frame& f);
 std::optional<Mode> decode_mode(const Frame& f);
 
@@ -112,6 +122,8 @@ std::string split(bool on);                         // SP1; / SP0;
 inline std::string up() { return "UP;"; }
 inline std::string down() { return "DN;"; }
 inline std::string identify() { return "ID;"; }
+// Read a VFO's frequency: FA; / FB; (the radio answers FA00435123450;).
+std::string read_frequency(Vfo vfo);
 
 std::optional<char> mode_digit(Mode mode);          // 1 LSB, 2 USB, 3 CW, 4 FM
 std::optional<Mode> mode_from_digit(char digit);    // also 7 CW-R -> cw
@@ -168,5 +180,49 @@ Decoded decode(const Command& c);
 std::optional<Hz> decode_frequency_digits(std::span<const std::uint8_t, 4> p);
 
 }  // namespace yaesu
+
+// ---------------------------------------------------------------------------------------------
+// Yaesu FT-847 (Hamlib's ft847.c): 5-byte commands like the FT-736 but its own opcodes. The low
+// nibble is the command, the high nibble the VFO: main 0x, satellite RX 1x, satellite TX 2x.
+namespace ft847 {
+
+using Command = yaesu::Command;
+using Target = yaesu::Target;
+
+Command cat_on();        // 00 00 00 00 00
+Command cat_off();       // 00 00 00 00 80
+Command sat_mode_on();   // 00 00 00 00 4E
+Command sat_mode_off();  // 00 00 00 00 8E
+// 8 BCD digits of 10 Hz, most significant first (below 1 GHz); opcode 01 / 11 / 21.
+Command set_frequency(Target t, Hz hz);
+// LSB 00, USB 01, CW 02, FM 08 in P1; opcode 07 / 17 / 27.
+std::optional<Command> set_mode(Target t, Mode mode);
+// Read frequency and mode: 00 00 00 00 03 / 13 / 23; the radio answers 4 BCD bytes and the mode.
+Command read(Target t);
+// The answer's frequency (and mode, when it is one of ours).
+std::optional<Hz> decode_read(std::span<const std::uint8_t> answer);
+// CTCSS tone: the radio's own code for one of its 39 tones in P1, opcode 0B / 1B / 2B; nullopt for
+// a tone it does not have. Encoder on: 4A 00 00 00 0A / 1A / 2A; off: 8A ... .
+std::optional<Command> set_tone(Target t, int tenths_hz);
+Command tone_encoder(Target t, bool on);
+
+}  // namespace ft847
+
+// ---------------------------------------------------------------------------------------------
+// Yaesu FT-817/818 (Hamlib's ft817.c): one VFO, 5-byte commands; never send 00 (that is LOCK ON).
+namespace ft817 {
+
+using Command = yaesu::Command;
+
+Command set_frequency(Hz hz);                  // 8 BCD digits of 10 Hz + 01
+std::optional<Command> set_mode(Mode mode);    // LSB 00, USB 01, CW 02, FM 08 + 07
+Command read();                                // 00 00 00 00 03 -> 4 BCD bytes + mode
+std::optional<Hz> decode_read(std::span<const std::uint8_t> answer);
+// Tone as 4 BCD digits of tenths twice (67.0 Hz: 06 70 06 70 0B), then encoder on 4A 00 00 00 0A;
+// off: 8A 00 00 00 0A.
+Command set_tone(int tenths_hz);
+Command tone_encoder(bool on);
+
+}  // namespace ft817
 
 }  // namespace tb::radio

@@ -1,7 +1,10 @@
 #include "radio/cat_links.h"
 
+#include <spdlog/spdlog.h>
+
 #include <cstdio>
 #include <thread>
+#include <utility>
 
 namespace tb::radio {
 
@@ -17,6 +20,15 @@ std::string hexaddr(std::uint8_t a) {
 }
 
 constexpr milliseconds kWriteSlack{1000};
+
+std::string tone_text(int tenths_hz) { return std::to_string(tenths_hz / 10) + "." + std::to_string(tenths_hz % 10) + " Hz"; }
+
+// A radio without a CTCSS encoder trakbox can set: a tone is refused with a message, never dropped
+// silently; turning the tone off is nothing to refuse.
+void refuse_tone(const std::string& radio, int tenths_hz) {
+  if (tenths_hz <= 0) return;
+  throw LinkError(LinkError::Action::drop, radio + " has no CTCSS encoder trakbox can set: tone " + tone_text(tenths_hz) + " not sent");
+}
 
 // A rig's standard serial settings at the configured speed (STATION.DAT line 4), when one is set.
 SerialSettings at_baud(SerialSettings s, int baud) {
@@ -42,6 +54,9 @@ IcomLink::IcomLink(std::string device, IcomOptions options, SerialSettings seria
     : port_(std::move(device), serial), opt_(options) {}
 
 std::string IcomLink::describe() const {
+  if (!opt_.model.empty())   // a model of the registry: one address
+    return "Icom " + opt_.model + " CI-V on " + port_.device() + " (" + hexaddr(opt_.rx_address) +
+           (opt_.satellite_cmd ? ", satellite mode)" : ")");
   return "Icom CI-V on " + port_.device() + " (RX " + hexaddr(opt_.rx_address) + ", TX " +
          hexaddr(opt_.tx_address) + ")";
 }
@@ -49,9 +64,27 @@ std::string IcomLink::describe() const {
 void IcomLink::open() {
   port_.open();
   reader_.clear();
+  echo_.reset();       // an interface may have been swapped: found again on the first exchange
+  selected_.reset();
+  satellite_on_ = false;
 }
 
-void IcomLink::close() noexcept { port_.close(); }
+void IcomLink::close() noexcept {
+  if (port_.is_open() && satellite_on_) {
+    try {   // leave the radio as it was found: satellite mode off
+      const std::uint8_t to = address(Link::downlink);
+      exchange(icom::satellite_mode(to, opt_.satellite_cmd, opt_.satellite_sub, false),
+               expects_reply(to) ? Expect::ack : Expect::nothing);
+    } catch (const std::exception&) {
+    }
+  }
+  satellite_on_ = false;
+  port_.close();
+}
+
+std::string IcomLink::who(std::uint8_t to) const {
+  return (opt_.model.empty() ? std::string("the Icom radio") : "the " + opt_.model) + " at address " + hexaddr(to);
+}
 
 std::optional<Bytes> IcomLink::read_frame(milliseconds timeout, bool& got_any) {
   const auto deadline = Clock::now() + timeout;
@@ -68,70 +101,161 @@ std::optional<Bytes> IcomLink::read_frame(milliseconds timeout, bool& got_any) {
 }
 
 void IcomLink::transact(const Bytes& frame, bool wait_reply) {
+  exchange(frame, wait_reply ? Expect::ack : Expect::nothing);
+}
+
+// Echo or not: on a one-wire CI-V bus every frame comes back as its echo before the radio answers;
+// the IC-9700's USB port (CI-V USB Echo Back OFF, Gpredict's setting) sends only the answer. The
+// first exchange after an open tells which: our own frame back (echo), or the radio's answer first
+// (no echo). With the echo, a mangled or foreign echo or a jam code is a collision (wait, retry);
+// without it there is no shared bus to collide on, and other traffic (transceive frames) is skipped.
+std::optional<icom::Frame> IcomLink::exchange(const Bytes& frame, Expect expect) {
   const std::uint8_t to = frame.size() > 2 ? frame[2] : 0;
+  const std::uint8_t cmd = frame.size() > 4 ? frame[4] : 0;
+  const bool answered = expect != Expect::nothing;
   for (int attempt = 1; attempt <= opt_.max_attempts; ++attempt) {
     if (attempt > 1) std::this_thread::sleep_for(opt_.collision_wait * (attempt - 1));
     port_.discard_input();
     reader_.clear();
     port_.write(frame, port_.wire_time(frame.size()) + kWriteSlack);
 
-    bool got_any = false;
-    auto echo = read_frame(port_.wire_time(frame.size()) + opt_.echo_margin, got_any);
-    if (!echo && !got_any)
-      throw LinkError(Action::retry, "interface not echoing (nothing came back from the CI-V bus on " +
-                                         port_.device() + ")");
-    if (!echo || *echo != frame) continue;   // collision: mangled or foreign echo, or FC
-    if (!wait_reply) return;
+    std::optional<Bytes> first;   // a frame already read that is the radio's answer (no echo)
+    if (echo_ != false) {
+      bool got_any = false;
+      // Not knowing yet whether an echo comes, wait as long as the answer could take.
+      const milliseconds wait = port_.wire_time(frame.size()) + opt_.echo_margin +
+                                (!echo_ && answered ? opt_.reply_timeout : milliseconds(0));
+      auto echo = read_frame(wait, got_any);
+      if (!echo && !got_any) {
+        if (echo_ || !answered)
+          throw LinkError(Action::retry, "interface not echoing (nothing came back from the CI-V bus on " +
+                                             port_.device() + ")");
+        selected_.reset();
+        throw LinkError(Action::retry, "no reply from " + who(to) + " (neither an echo nor an answer)");
+      }
+      if (echo && *echo == frame) {
+        echo_ = true;
+      } else {
+        const auto f = echo ? icom::decode_frame(*echo) : std::nullopt;
+        const bool from_radio = f && f->to == icom::kController && f->from == to;
+        if (!echo_ && answered && from_radio) {
+          echo_ = false;    // the radio answered first: no echo on this interface
+          first = echo;
+        } else {
+          selected_.reset();
+          continue;         // collision: mangled or foreign echo, or FC
+        }
+      }
+    }
+    if (!answered) return std::nullopt;
 
     const auto deadline = Clock::now() + opt_.reply_timeout;
     bool collided = false;
     while (!collided) {
-      const auto left = std::chrono::duration_cast<milliseconds>(deadline - Clock::now());
-      bool any = false;
-      auto reply = left > milliseconds(0) ? read_frame(left, any) : std::nullopt;
-      if (!reply)
-        throw LinkError(Action::retry, "no reply from the Icom radio at address " + hexaddr(to));
+      std::optional<Bytes> reply = std::exchange(first, std::nullopt);
+      if (!reply) {
+        const auto left = std::chrono::duration_cast<milliseconds>(deadline - Clock::now());
+        bool any = false;
+        reply = left > milliseconds(0) ? read_frame(left, any) : std::nullopt;
+      }
+      if (!reply) {
+        selected_.reset();
+        throw LinkError(Action::retry, "no reply from " + who(to));
+      }
       const auto kind = icom::parse_reply(*reply);
       const auto f = icom::decode_frame(*reply);
       if (kind == icom::Reply::collision) {
-        collided = true;
+        collided = echo_ == true;   // a jam only means something on a shared bus
       } else if (f && f->to == icom::kController && f->from == to) {
-        if (kind == icom::Reply::ok) return;
         if (kind == icom::Reply::ng)
-          throw LinkError(Action::drop, "the Icom radio at address " + hexaddr(to) +
-                                            " refused " + to_hex(frame) + " (NG)");
+          throw LinkError(Action::drop, who(to) + " refused " + to_hex(frame) + " (NG)");
+        if (expect == Expect::ack && kind == icom::Reply::ok) return std::nullopt;
+        if (expect == Expect::data && f->cmd == cmd) return f;
       }
-      // Anything else is other traffic on the bus: keep listening.
+      // Anything else is other traffic: another controller on the bus, a late echo of our own
+      // frame, or the radio's transceive frames (FE FE 00 <radio> 00 ... FD when the dial turns,
+      // which do not say Main or Sub: never trusted, the dial is read with 03 instead).
     }
+    selected_.reset();
   }
   throw LinkError(Action::retry, "CI-V bus collision: no clean echo after " +
                                      std::to_string(opt_.max_attempts) + " attempts");
 }
 
+void IcomLink::ensure_satellite_mode() {
+  if (opt_.satellite_cmd == 0 || satellite_on_) return;
+  const std::uint8_t to = address(Link::downlink);
+  const Bytes on = icom::satellite_mode(to, opt_.satellite_cmd, opt_.satellite_sub, true);
+  satellite_on_ = true;   // asked once per open: a radio that refuses it is not asked every second
+  try {
+    exchange(on, expects_reply(to) ? Expect::ack : Expect::nothing);
+  } catch (const LinkError& e) {
+    if (e.action != Action::drop) {
+      satellite_on_ = false;
+      throw;
+    }
+    // Refused: reported, and the Doppler goes on (each link still on its own band).
+    spdlog::warn("radio {}: satellite mode not switched on ({}); tuning goes on without it", describe(), e.what());
+  }
+}
+
 void IcomLink::select_band(Link l) {
-  if (opt_.band_select != IcomBandSelect::main_tx_sub_rx) return;
   const std::uint8_t to = address(l);
-  transact(icom::select_band(to, l == Link::uplink ? icom::Band::main : icom::Band::sub),
-           opt_.expect_reply && to != icom::kBroadcast);
+  if (opt_.satellite_cmd != 0) {
+    const icom::Band band = l == opt_.main_link ? icom::Band::main : icom::Band::sub;
+    if (selected_ == band) return;   // no select thrash: only when the band changes
+    selected_.reset();
+    exchange(icom::select_band(to, band), expects_reply(to) ? Expect::ack : Expect::nothing);
+    selected_ = band;
+    return;
+  }
+  if (opt_.band_select != IcomBandSelect::main_tx_sub_rx) return;
+  transact(icom::select_band(to, l == Link::uplink ? icom::Band::main : icom::Band::sub), expects_reply(to));
 }
 
 void IcomLink::set_frequency(Link l, Hz hz) {
   const std::uint8_t to = address(l);
   const Bytes frame = icom::set_frequency(to, hz, opt_.width);
+  ensure_satellite_mode();
   select_band(l);
-  transact(frame, opt_.expect_reply && to != icom::kBroadcast);
+  transact(frame, expects_reply(to));
 }
 
 void IcomLink::set_mode(Link l, Mode mode) {
   const std::uint8_t to = address(l);
   auto frame = icom::set_mode(to, mode);
   if (!frame) return;
+  ensure_satellite_mode();
   select_band(l);
-  transact(*frame, opt_.expect_reply && to != icom::kBroadcast);
+  transact(*frame, expects_reply(to));
+}
+
+Hz IcomLink::read_frequency(Link l) {
+  const std::uint8_t to = address(l);
+  if (!can_read(l)) return RadioLink::read_frequency(l);
+  ensure_satellite_mode();
+  const icom::Band band = l == opt_.main_link ? icom::Band::main : icom::Band::sub;
+  const bool tx = opt_.satellite_cmd != 0 && l == Link::uplink && opt_.reads_tx_1c03 && selected_ != band;
+  if (!tx) select_band(l);
+  const auto answer = exchange(tx ? icom::read_transmit_frequency(to) : icom::read_frequency(to), Expect::data);
+  const auto hz = answer ? icom::decode_frequency(*answer) : std::nullopt;
+  if (!hz) throw LinkError(Action::retry, who(to) + " answered " + (tx ? "1C 03" : "03") + " without a frequency");
+  return *hz;
+}
+
+void IcomLink::set_ctcss_tone(int tenths_hz) {
+  const std::uint8_t to = address(Link::uplink);
+  if (!opt_.ctcss) return refuse_tone(opt_.model.empty() ? std::string("this Icom radio") : "the " + opt_.model, tenths_hz);
+  const Bytes tone = tenths_hz > 0 ? icom::set_tone_frequency(to, tenths_hz) : Bytes{};
+  ensure_satellite_mode();
+  select_band(Link::uplink);
+  if (tenths_hz > 0) transact(tone, expects_reply(to));
+  transact(icom::tone_function(to, tenths_hz > 0), expects_reply(to));
 }
 
 void IcomLink::send_raw(const std::string& raw) {
   const Bytes bytes(raw.begin(), raw.end());
+  selected_.reset();   // the caller's frame may select a band
   if (icom::decode_frame(bytes)) {
     transact(bytes, false);   // checked against its echo like any frame; any reply is the caller's
   } else {
@@ -166,6 +290,27 @@ void KenwoodLink::set_mode(Link l, Mode mode) {
 }
 
 void KenwoodLink::send_raw(const std::string& bytes) { send(bytes); }
+
+void KenwoodLink::set_ctcss_tone(int tenths_hz) { refuse_tone("the " + opt_.model, tenths_hz); }
+
+Hz KenwoodLink::read_frequency(Link l) {
+  if (!opt_.reads) return RadioLink::read_frequency(l);
+  const kenwood::Vfo vfo = l == Link::downlink ? kenwood::Vfo::a : kenwood::Vfo::b;
+  port_.discard_input();
+  send(kenwood::read_frequency(vfo));
+  std::string text;
+  const auto deadline = Clock::now() + opt_.reply_timeout;
+  std::uint8_t buf[64];
+  while (Clock::now() < deadline) {
+    const auto left = std::chrono::duration_cast<milliseconds>(deadline - Clock::now());
+    const std::size_t n = port_.read_some(buf, left);
+    if (n == 0) break;
+    text.append(reinterpret_cast<const char*>(buf), n);
+    for (const std::string& c : kenwood::split_commands(text))   // AI answers may come first
+      if (auto f = kenwood::decode_frequency(c); f && f->vfo == vfo) return f->hz;
+  }
+  throw LinkError(Action::retry, "no answer from the " + opt_.model + " to " + kenwood::read_frequency(vfo));
+}
 
 // ---------------------------------------------------------------------------------------------
 YaesuOptions YaesuOptions::from(const RadioConfig& c) {
@@ -221,7 +366,117 @@ void YaesuLink::set_mode(Link l, Mode mode) {
   if (cmd) send(*cmd);
 }
 
+void YaesuLink::set_ctcss_tone(int tenths_hz) { refuse_tone("the FT-736", tenths_hz); }
+
 void YaesuLink::send_raw(const std::string& raw) {
+  send(std::span<const std::uint8_t>(reinterpret_cast<const std::uint8_t*>(raw.data()), raw.size()));
+}
+
+// ---------------------------------------------------------------------------------------------
+Ft8xxLink::Ft8xxLink(std::string device, Ft8xxOptions options, SerialSettings serial)
+    : port_(std::move(device), serial), opt_(std::move(options)) {}
+
+std::string Ft8xxLink::describe() const { return "Yaesu " + opt_.label + " CAT on " + port_.device(); }
+
+bool Ft8xxLink::carries(Link l) const {
+  return l == Link::downlink || (opt_.model == Ft8xxOptions::Model::ft847 && opt_.satellite_mode);
+}
+
+void Ft8xxLink::require(Link l) const {
+  if (!carries(l))
+    throw LinkError(Action::drop, "the " + opt_.label + " carries one link (the downlink): the " + to_string(l) +
+                                      " needs a second radio (--uplink-radio)");
+}
+
+yaesu::Target Ft8xxLink::target(Link l) const {
+  if (opt_.model != Ft8xxOptions::Model::ft847 || !opt_.satellite_mode) return yaesu::Target::main;
+  return l == Link::downlink ? yaesu::Target::sat_rx : yaesu::Target::sat_tx;
+}
+
+void Ft8xxLink::send(std::span<const std::uint8_t> c) {
+  for (std::uint8_t b : c) {
+    port_.write(std::span<const std::uint8_t>(&b, 1), port_.wire_time(1) + kWriteSlack);
+    if (opt_.byte_gap.count() > 0) std::this_thread::sleep_for(opt_.byte_gap);
+  }
+}
+
+void Ft8xxLink::open() {
+  port_.open();
+  satellite_on_ = false;
+  if (opt_.model == Ft8xxOptions::Model::ft847) send(ft847::cat_on());   // (on the FT-817, 00 is LOCK ON)
+}
+
+void Ft8xxLink::close() noexcept {
+  if (port_.is_open() && opt_.model == Ft8xxOptions::Model::ft847) {
+    try {
+      if (satellite_on_) send(ft847::sat_mode_off());
+      send(ft847::cat_off());
+    } catch (const std::exception&) {
+    }
+  }
+  satellite_on_ = false;
+  port_.close();
+}
+
+void Ft8xxLink::ensure_satellite_mode() {
+  if (satellite_on_ || target(Link::downlink) == yaesu::Target::main) return;
+  send(ft847::sat_mode_on());   // never acknowledged: sent once per open, before the first frequency
+  satellite_on_ = true;
+}
+
+void Ft8xxLink::set_frequency(Link l, Hz hz) {
+  require(l);
+  const yaesu::Command c = opt_.model == Ft8xxOptions::Model::ft847 ? ft847::set_frequency(target(l), hz)
+                                                                    : ft817::set_frequency(hz);
+  ensure_satellite_mode();
+  send(c);
+}
+
+void Ft8xxLink::set_mode(Link l, Mode mode) {
+  require(l);
+  const auto c = opt_.model == Ft8xxOptions::Model::ft847 ? ft847::set_mode(target(l), mode) : ft817::set_mode(mode);
+  if (!c) return;
+  ensure_satellite_mode();
+  send(*c);
+}
+
+Hz Ft8xxLink::read_frequency(Link l) {
+  require(l);
+  ensure_satellite_mode();
+  port_.discard_input();
+  send(opt_.model == Ft8xxOptions::Model::ft847 ? ft847::read(target(l)) : ft817::read());
+  Bytes answer;
+  const auto deadline = Clock::now() + opt_.reply_timeout;
+  std::uint8_t buf[16];
+  while (answer.size() < 5 && Clock::now() < deadline) {
+    const auto left = std::chrono::duration_cast<milliseconds>(deadline - Clock::now());
+    const std::size_t n = port_.read_some(std::span<std::uint8_t>(buf, std::min<std::size_t>(sizeof buf, 5 - answer.size())), left);
+    if (n == 0) break;
+    answer.insert(answer.end(), buf, buf + n);
+  }
+  const auto hz = ft847::decode_read(answer);   // the same 4 BCD bytes + mode on both radios
+  if (!hz) throw LinkError(Action::retry, "no answer from the " + opt_.label + " to its read command (" +
+                                             std::to_string(answer.size()) + " of 5 bytes)");
+  return *hz;
+}
+
+void Ft8xxLink::set_ctcss_tone(int tenths_hz) {
+  const bool ft847 = opt_.model == Ft8xxOptions::Model::ft847;
+  // The FT-817 as the uplink radio of two carries the uplink on its only VFO.
+  const yaesu::Target t = ft847 ? target(Link::uplink) : yaesu::Target::main;
+  if (tenths_hz <= 0) {
+    send(ft847 ? ft847::tone_encoder(t, false) : ft817::tone_encoder(false));
+    return;
+  }
+  std::optional<yaesu::Command> tone = ft847 ? ft847::set_tone(t, tenths_hz) : std::optional(ft817::set_tone(tenths_hz));
+  if (!tone)
+    throw LinkError(Action::drop, "the " + opt_.label + " has no CTCSS tone " + tone_text(tenths_hz) + ": not sent");
+  ensure_satellite_mode();
+  send(*tone);
+  send(ft847 ? ft847::tone_encoder(t, true) : ft817::tone_encoder(true));
+}
+
+void Ft8xxLink::send_raw(const std::string& raw) {
   send(std::span<const std::uint8_t>(reinterpret_cast<const std::uint8_t*>(raw.data()), raw.size()));
 }
 
@@ -237,6 +492,10 @@ std::unique_ptr<RadioDriver> make_kenwood_radio(const std::string& device, const
 
 std::unique_ptr<RadioDriver> make_yaesu_radio(const std::string& device, const YaesuOptions& o, WorkerTiming t) {
   return std::make_unique<WorkerRadio>(std::make_unique<YaesuLink>(device, o, at_baud(yaesu_serial(), o.baud)), t);
+}
+
+std::unique_ptr<RadioDriver> make_ft8xx_radio(const std::string& device, const Ft8xxOptions& o, WorkerTiming t) {
+  return std::make_unique<WorkerRadio>(std::make_unique<Ft8xxLink>(device, o, at_baud(yaesu_serial(), o.baud)), t);
 }
 
 }  // namespace tb::radio

@@ -29,6 +29,18 @@ struct IcomOptions {
   int max_attempts = 4;          // collisions: tries before giving up
   milliseconds collision_wait{60};   // times the attempt number
   int baud = 0;                  // the port's speed; 0: CI-V's standard 1200 (icom_serial)
+  // The radios of 2026 (IC-9700, IC-9100, IC-910H; radio/registry.h). One radio carries both links
+  // in its satellite mode: satellite_cmd/sub (16 5A, or 1A 07 on the IC-910H) switched on before the
+  // first frequency, off at close; each link on its band (main_link on Main, the other on Sub),
+  // a band selected only when it changes. 0: no satellite mode.
+  std::uint8_t satellite_cmd = 0, satellite_sub = 0;
+  Link main_link = Link::uplink;
+  bool reads = false;            // 03 after the band select reads a link's frequency (dial follow)
+  // 1C 03 reads the transmit frequency in satellite mode without a band select (IC-9700): the
+  // uplink is read so, and no select goes back and forth between the two reads of a tick.
+  bool reads_tx_1c03 = false;
+  bool ctcss = false;            // 1B 00 tone and 16 42 TONE on the uplink's band
+  std::string model;             // "IC-9700" in messages ("" for the family form)
   static IcomOptions from(const RadioConfig& c);
 };
 
@@ -42,19 +54,34 @@ class IcomLink final : public RadioLink {
   void set_mode(Link link, Mode mode) override;
   void send_raw(const std::string& bytes) override;
   void check() override { port_.check(); }
+  bool can_read(Link l) const override { return opt_.reads && address(l) != icom::kBroadcast; }
+  Hz read_frequency(Link link) override;
+  void set_ctcss_tone(int tenths_hz) override;
 
   // One CI-V transaction: write, read the echo back (collision: wait and retry), then the reply
   // when the radio is addressed directly. Throws LinkError.
   void transact(const Bytes& frame, bool wait_reply);
+  // Whether the interface echoes the controller's frames: found on the first exchange after each
+  // open (the echo comes back, or the radio's answer comes first); nullopt until then.
+  std::optional<bool> echo() const { return echo_; }
 
  private:
+  enum class Expect { nothing, ack, data };
+  // The transaction; for Expect::data the radio's answer with the same command.
+  std::optional<icom::Frame> exchange(const Bytes& frame, Expect expect);
   std::optional<Bytes> read_frame(milliseconds timeout, bool& got_any);
   std::uint8_t address(Link l) const { return l == Link::downlink ? opt_.rx_address : opt_.tx_address; }
+  bool expects_reply(std::uint8_t to) const { return opt_.expect_reply && to != icom::kBroadcast; }
   void select_band(Link l);
+  void ensure_satellite_mode();
+  std::string who(std::uint8_t to) const;
 
   SerialPort port_;
   IcomOptions opt_;
   icom::FrameReader reader_;
+  std::optional<bool> echo_;
+  std::optional<icom::Band> selected_;   // the band last selected (unknown after open or a failure)
+  bool satellite_on_ = false;            // satellite mode switched on since open
 };
 
 struct KenwoodOptions {
@@ -62,6 +89,9 @@ struct KenwoodOptions {
   // selects the receive VFO again.
   milliseconds command_gap{0};    // pause after each command
   int baud = 0;                   // the port's speed; 0: the standard 4800 (kenwood_serial)
+  bool reads = false;             // read back with FA; / FB; (TS-2000)
+  milliseconds reply_timeout{500};
+  std::string model = "Kenwood radio";  // in messages ("the Kenwood radio has ...")
   static KenwoodOptions from(const RadioConfig& c) {
     KenwoodOptions o;
     o.baud = c.cat_baud;
@@ -79,6 +109,10 @@ class KenwoodLink final : public RadioLink {
   void set_mode(Link link, Mode mode) override;
   void send_raw(const std::string& bytes) override;
   void check() override { port_.check(); }
+  // FA; / FB; answer FA00435123450; (menu 6-7's TS-790 family does not read: reads off).
+  bool can_read(Link) const override { return opt_.reads; }
+  Hz read_frequency(Link link) override;
+  void set_ctcss_tone(int tenths_hz) override;   // refused with a message: no encoder trakbox sets
 
  private:
   void send(const std::string& command);
@@ -103,6 +137,7 @@ class YaesuLink final : public RadioLink {
   void set_frequency(Link link, Hz hz) override;
   void set_mode(Link link, Mode mode) override;
   void send_raw(const std::string& bytes) override;
+  void set_ctcss_tone(int tenths_hz) override;   // refused with a message: no encoder trakbox sets
   void check() override { port_.check(); }
 
  private:
@@ -112,11 +147,47 @@ class YaesuLink final : public RadioLink {
   YaesuOptions opt_;
 };
 
+// Yaesu FT-847 (one radio, both links in its satellite mode) and FT-817/818 (one link each).
+struct Ft8xxOptions {
+  enum class Model { ft847, ft817 } model = Model::ft847;
+  std::string label = "FT-847";     // "FT-817", "FT-818" in messages
+  milliseconds byte_gap{50};        // between bytes (Hamlib's FT-847 write delay is 50 ms)
+  milliseconds reply_timeout{500};  // a read's 5-byte answer
+  bool satellite_mode = true;       // FT-847 with both links: satellite mode, RX / TX VFOs
+  int baud = 0;                     // 0: 4800
+};
+
+class Ft8xxLink final : public RadioLink {
+ public:
+  Ft8xxLink(std::string device, Ft8xxOptions options, SerialSettings serial);
+  std::string describe() const override;
+  void open() override;            // FT-847: CAT on
+  void close() noexcept override;  // FT-847: satellite mode off (when it was on), CAT off
+  void set_frequency(Link link, Hz hz) override;
+  void set_mode(Link link, Mode mode) override;
+  void send_raw(const std::string& bytes) override;
+  void check() override { port_.check(); }
+  bool can_read(Link l) const override { return carries(l); }
+  Hz read_frequency(Link link) override;
+  void set_ctcss_tone(int tenths_hz) override;
+
+ private:
+  bool carries(Link l) const;
+  yaesu::Target target(Link l) const;
+  void require(Link l) const;      // throws drop for a link this radio does not carry
+  void ensure_satellite_mode();
+  void send(std::span<const std::uint8_t> bytes);   // a byte at a time, byte_gap after each
+  SerialPort port_;
+  Ft8xxOptions opt_;
+  bool satellite_on_ = false;
+};
+
 std::unique_ptr<RadioDriver> make_icom_radio(const std::string& device, const IcomOptions& o = {},
                                              WorkerTiming t = {});
 std::unique_ptr<RadioDriver> make_kenwood_radio(const std::string& device, const KenwoodOptions& o = {},
                                                 WorkerTiming t = {});
 std::unique_ptr<RadioDriver> make_yaesu_radio(const std::string& device, const YaesuOptions& o = {},
                                               WorkerTiming t = {});
+std::unique_ptr<RadioDriver> make_ft8xx_radio(const std::string& device, const Ft8xxOptions& o, WorkerTiming t = {});
 
 }  // namespace tb::radio

@@ -1,10 +1,14 @@
-// --radio SPEC: which driver, where.
+// --radio SPEC: which driver, where. The forms come from the radio registry (radio/registry.h,
+// `trakbox --radio list`):
 //   sim | simulated | (empty)          the simulated radio (default)
+//   MODEL:DEVICE[:BAUD][:maindown|:mainup]   a model of the registry (ic9700, ft847, ts2000 ...)
+//                                      with its defaults (CI-V address, speed, satellite mode)
 //   icom:DEVICE                        Icom CI-V, 1200 8N2, addresses from menu 6-7
 //   kenwood:DEVICE                     Kenwood TS-790/711/811, 4800 8N2
 //   yaesu:DEVICE                       Yaesu FT-736, 4800 8N2
 //   cat:DEVICE                         the rig chosen in menu 6-7 (Icom/Kenwood/Yaesu)
-//   hamlib:MODEL:DEVICE[:BAUD][:split|:mainsub]   any Hamlib backend
+//   hamlib:MODEL:DEVICE[:BAUD][:split|:mainsub]   any Hamlib backend; MODEL is Hamlib's number or
+//                                                 its name (IC-9700, ic9700: rigctl -l)
 //   rigctld[:HOST[:PORT]][:split|:mainsub]        a rigctld daemon (Hamlib NET rigctl, model 2);
 //                                                 HOST defaults to 127.0.0.1, PORT to 4532
 // Parsing is separate from opening so a bad spec is reported before anything starts; opening
@@ -16,6 +20,7 @@
 #include <string_view>
 
 #include "radio/config.h"
+#include "radio/registry.h"
 #include "radio/driver.h"
 #include "radio/hamlib_radio.h"
 #include "radio/worker.h"
@@ -24,10 +29,12 @@ namespace tb::radio {
 
 struct RadioSpec {
   enum class Kind { simulated, icom, kenwood, yaesu, cat, hamlib, rigctld };
-  Kind kind = Kind::simulated;
+  Kind kind = Kind::simulated;     // the protocol family
+  std::string name = "sim";        // the registry entry (radio/registry.h): "ic9700", "icom", ...
+  std::optional<Link> main_link;   // :maindown / :mainup: overrides the model's satellite-mode band
   std::string device;          // icom/kenwood/yaesu/cat/hamlib
   int model = 0;               // hamlib
-  int baud = 0;                // hamlib (0: backend default)
+  int baud = 0;                // hamlib, registry models (0: the default)
   std::string host;            // rigctld
   int port = 0;                // rigctld
   HamlibVfoScheme scheme = HamlibVfoScheme::automatic;
@@ -43,6 +50,9 @@ RadioSpecParse parse_radio_spec(std::string_view text, std::string_view option =
 struct DriverTiming {
   WorkerTiming worker;
   std::chrono::milliseconds yaesu_byte_gap{50};
+  // The CI-V waits (tests on a loaded machine lengthen them).
+  std::chrono::milliseconds icom_echo_margin{250};
+  std::chrono::milliseconds icom_reply_timeout{300};
 };
 
 struct MakeRadio {
@@ -50,7 +60,8 @@ struct MakeRadio {
   std::string error;
 };
 // Builds the driver for a parsed spec with the station's menu 6-7 configuration.
-MakeRadio make_radio(const RadioSpec& spec, const RadioConfig& config, const DriverTiming& timing = {});
+MakeRadio make_radio(const RadioSpec& spec, const RadioConfig& config, const DriverTiming& timing = {},
+                     RadioRole role = RadioRole::both);
 MakeRadio make_radio(std::string_view spec, const RadioConfig& config, const DriverTiming& timing = {});
 // The downlink radio, and the uplink radio when uplink_spec names one: two radios as one driver
 // (radio/two_radios.h). nullopt uplink_spec: the downlink radio carries both links.

@@ -247,6 +247,8 @@ bool WorkerRadio::connect(Lock& lock) {
   next_check_ = std::chrono::steady_clock::now() + timing_.check_every;
   status_.connected = true;
   note_readable();
+  if (!status_.reads_downlink && !status_.reads_uplink && status_.connects == 0)   // said once
+    spdlog::info("radio {}: its dial cannot be read back: dial follow will not see a turn of it", description_);
   ++status_.connects;
   spdlog::info("radio {}: {}", description_, status_.connects > 1 ? "reconnected" : "connected");
   // The port is open: no fault to show (the endpoints take commands again). The backoff and the

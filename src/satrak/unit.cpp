@@ -30,6 +30,10 @@ Unit::Unit(boost::asio::io_context& io, tracker::StationLoop& station, store::Mo
       opt_(std::move(options)),
       hooks_(std::move(hooks)),
       timer_(std::make_unique<Timer>(io)) {
+  // GPS mode is the station's (menu 4, --gps-follow); a state written before it was, kept it here.
+  model_.gps.follow = model_.gps.follow || s_.gps_auto;
+  s_.gps_auto = model_.gps.follow;
+  position_generation_seen_ = station_.position_generation();
   std::error_code ec;
   if (!opt_.tle_dir.empty()) fs::create_directories(opt_.tle_dir, ec);
   if (!opt_.image_dir.empty()) fs::create_directories(opt_.image_dir, ec);

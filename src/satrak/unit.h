@@ -74,7 +74,7 @@ struct Faults {
   bool y_motor = false;         // X9 elevation stalled
   int x_sensor = 0;             // X10 0 ok, 1 configuration, 2 connection (no reading)
   int y_sensor = 0;             // X11
-  bool gps = false;             // X12 GPS mode selected but there is no receiver
+  bool gps = false;             // X12 a receiver is expected (--gps, GPS mode) and cannot be heard
   bool any() const {
     return link || tle_stale || tle_missing || sat_missing || download || tracking_stopped || setup || x_motor ||
            y_motor || x_sensor || y_sensor || gps;
@@ -198,6 +198,8 @@ class Unit {
   double active_period_days() const;
 
   void changed();  // settings or model changed: persist
+  // RTC_REUPDATE= and SETTINGS X1: the RTC's offset from the receiver's last report (false: no fix).
+  bool update_rtc_from_gps();
 
   boost::asio::io_context& io_;
   tracker::StationLoop& station_;
@@ -256,6 +258,8 @@ class Unit {
   std::unique_ptr<net::Downloader> downloader_;
   std::shared_ptr<int> alive_ = std::make_shared<int>(0);
 
+  bool rtc_from_gps_ = false;                 // STATUS X10: the RTC was set from GPS
+  std::uint64_t position_generation_seen_ = 0;  // StationLoop::position_generation at the last tick
   int image_status_ = 0;  // LOAD_IMAGE?: 0 none, 1 loaded, 2 failed
   std::optional<bool> sspa_last_;  // for logging changes
 };

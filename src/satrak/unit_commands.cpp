@@ -137,7 +137,7 @@ Unit::Reply Unit::cmd_status(const Command& c) {
   const double true_az = st.has_position ? rotator::wrap360(x + s_.north_offset_deg) : 0.0;
   return reply_values(c.head(), {b(f.any()), f2(true_az), f2(y), b(st.az.at_high_limit), b(st.az.at_low_limit),
                                  b(st.el.at_high_limit), b(st.el.at_low_limit), b(tracking_),
-                                 std::to_string(static_cast<int>(track_status())), "0", "0",
+                                 std::to_string(static_cast<int>(track_status())), b(rtc_from_gps_), "0",
                                  std::to_string(rotator::sign(st.az.moving)), std::to_string(rotator::sign(st.el.moving)),
                                  f2(x), f2(y), b(s_.auto_track)});
 }
@@ -333,8 +333,14 @@ Unit::Reply Unit::cmd_angle_settings(const Command& c) {
 
 Unit::Reply Unit::cmd_gps_data(const Command& c) {
   if (!c.fields.empty()) return reply_error(c.head(), Error::parameter_count);
-  std::vector<std::string> v = {format_latitude(model_.station.lat_deg), format_longitude(model_.station.lon_deg), "0"};
-  const auto t = civil_fields(clock_.now(), false, true);
+  // The receiver's confirmed position and the GPS time of that report while it has a fix; without
+  // one, its last confirmed position (else the station's), valid 0 and the RTC's time.
+  const gps::Monitor* g = station_.gps();
+  const auto& fix = g ? g->filter().confirmed() : std::nullopt;
+  const bool valid = g && fix && g->filter().fixed() && g->link() == gps::Link::receiving;
+  std::vector<std::string> v = {format_latitude(fix ? fix->lat_deg : model_.station.lat_deg),
+                                format_longitude(fix ? fix->lon_deg : model_.station.lon_deg), b(valid)};
+  const auto t = civil_fields(valid ? fix->time : clock_.now(), false, true);
   v.insert(v.end(), t.begin(), t.end());
   return reply_values(c.head(), v);
 }
@@ -396,7 +402,23 @@ Unit::Reply Unit::cmd_track_auto(const Command& c) {
 
 Unit::Reply Unit::cmd_rtc_reupdate(const Command& c) {
   if (!c.fields.empty()) return reply_error(c.head(), Error::parameter_count);
-  return reply_error(c.head(), Error::not_allowed, "NO GPS RECEIVER");  // never locked
+  if (!station_.gps()) return reply_error(c.head(), Error::not_allowed, "NO GPS RECEIVER");
+  if (!update_rtc_from_gps()) return reply_error(c.head(), Error::not_allowed, "NO GPS FIX");
+  changed();
+  return reply_ok(c.head());
+}
+
+bool Unit::update_rtc_from_gps() {
+  const gps::Monitor* g = station_.gps();
+  if (!g || !g->filter().fixed() || g->link() != gps::Link::receiving || !g->clock_error_s()) return false;
+  const auto error = std::chrono::microseconds(std::llround(*g->clock_error_s() * 1e6));
+  clock_.set_offset(clock_.offset() + error);
+  model_.clock_offset = clock_.offset();
+  pass_cache_ = {};
+  last_file_check_ = {};
+  rtc_from_gps_ = true;
+  spdlog::info("satrak: clock set from GPS time ({:+.3f} s)", *g->clock_error_s());
+  return true;
 }
 
 Unit::Reply Unit::cmd_gps_settings(const Command& c) {
@@ -408,7 +430,7 @@ Unit::Reply Unit::cmd_gps_settings(const Command& c) {
     const auto lon_given = s_.gps_lon_text.empty() ? std::nullopt : parse_longitude(s_.gps_lon_text);
     const bool lat_holds = lat_given && std::abs(*lat_given - model_.station.lat_deg) < 1e-9;
     const bool lon_holds = lon_given && std::abs(*lon_given - model_.station.lon_deg) < 1e-9;
-    return reply_values(c.head(), {b(s_.gps_auto), lat_holds ? s_.gps_lat_text : format_latitude(model_.station.lat_deg),
+    return reply_values(c.head(), {b(model_.gps.follow), lat_holds ? s_.gps_lat_text : format_latitude(model_.station.lat_deg),
                                    lon_holds ? s_.gps_lon_text : format_longitude(model_.station.lon_deg)});
   }
   if (c.fields.size() != 3) return reply_error(c.head(), Error::parameter_count);
@@ -425,6 +447,7 @@ Unit::Reply Unit::cmd_gps_settings(const Command& c) {
   }
   if (!r.ok()) return reply_error(c.head(), r.error());
   s_.gps_auto = automatic;
+  model_.gps.follow = automatic;  // the same choice as menu 4's: the station follows the receiver
   // Kept as written for GPS_SETTINGS?. A form the state file would not keep or a reply could not
   // carry (over 40 bytes, a tab between number and letter) reads back in four decimals.
   auto as_written = [](const std::string& f) { return valid_text_field(f, 40) ? f : std::string(); };
@@ -433,7 +456,15 @@ Unit::Reply Unit::cmd_gps_settings(const Command& c) {
   if (lat || lon) {
     if (lat) model_.station.lat_deg = *lat;
     if (lon) model_.station.lon_deg = *lon;
+    model_.gps.position_from_gps = false;
+    model_.gps.position_time.reset();
     station_.reconfigure();
+    if (commanded_) commanded_ = station_.rotator().status().target;
+    pass_cache_ = {};
+    pointing_changed();
+  }
+  if (automatic && station_.apply_gps_position()) {  // a confirmed fix is there: the station takes it
+    spdlog::info("satrak: GPS_SETTINGS=,1: the station takes the receiver's position");
     if (commanded_) commanded_ = station_.rotator().status().target;
     pass_cache_ = {};
     pointing_changed();

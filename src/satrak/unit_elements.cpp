@@ -255,7 +255,10 @@ Faults Unit::faults() const {
   const bool span_bad_az = model_.rotator.az_span.width() <= 0, span_bad_el = model_.rotator.el_span.width() <= 0;
   f.x_sensor = !st.has_position ? 2 : (span_bad_az ? 1 : 0);
   f.y_sensor = !st.has_position ? 2 : (span_bad_el ? 1 : 0);
-  f.gps = s_.gps_auto;
+  // A receiver is expected (--gps, or GPS mode chosen) and cannot be heard: none, no gpsd, gpsd
+  // without a receiver, gpsd gone. A receiver without a fix is heard: GPS_DATA? X3 says 0.
+  const gps::Monitor* g = station_.gps();
+  f.gps = g ? g->comm_error() : model_.gps.follow;
   return f;
 }
 }  // namespace tb::satrak

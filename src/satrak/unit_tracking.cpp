@@ -211,6 +211,13 @@ bool Unit::sspa_on() const {
 
 void Unit::tick() {
   const orbit::UtcTime now = clock_.now();
+  if (station_.position_generation() != position_generation_seen_) {  // the station moved (GPS, menu 4)
+    position_generation_seen_ = station_.position_generation();
+    pass_cache_ = {};
+    plan_cache_.reset();
+  }
+  // SETTINGS X1: the RTC follows GPS time by itself when the receiver has a fix and they differ.
+  if (s_.rtc_auto_update && station_.gps() && station_.gps()->clock_warned() && update_rtc_from_gps()) changed();
   check_takeover();
   update_window(now);
   if (tracking_) track(now);

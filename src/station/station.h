@@ -1,5 +1,6 @@
 // Station elements (menu 4): who and where the station is, and how its azimuth rotator is built.
 #pragma once
+#include <optional>
 #include <string>
 
 #include "orbit/observe.h"
@@ -21,6 +22,18 @@ struct StationConfig {
 
   orbit::Observer observer() const { return {lat_deg, lon_deg, height_m}; }
   friend bool operator==(const StationConfig&, const StationConfig&) = default;
+};
+
+// The GPS receiver (--gps, menus 4 and 5, Satrak GPS_SETTINGS=) and where the station's position
+// came from (docs/gps.md).
+inline constexpr double kGpsThresholdMinM = 1.0, kGpsThresholdMaxM = 100000.0;
+struct GpsSettings {
+  std::string source;           // "gpsd:HOST:PORT"; "" none
+  bool follow = false;          // the station's position follows the receiver's confirmed fix
+  double threshold_m = 100.0;   // moving only when the fix is farther than this from it
+  bool position_from_gps = false;            // the position was last set from the receiver
+  std::optional<orbit::UtcTime> position_time;  // the GPS time of that fix
+  friend bool operator==(const GpsSettings&, const GpsSettings&) = default;
 };
 
 const char* to_string(RotorStart r);  // "North" / "South"

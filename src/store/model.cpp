@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "gps/gpsd_client.h"
 #include "radio/factory.h"
 #include "store/json_fields.h"
 
@@ -274,6 +275,11 @@ json to_json(const Model& m) {
                       {"output_on_el_deg", m.pass_events.output_on_el_deg},
                       {"output_off_el_deg", m.pass_events.output_off_el_deg}};
   j["rotator_error_detection"] = m.rotator_error_detection;
+  j["gps"] = {{"source", m.gps.source},
+              {"follow", m.gps.follow},
+              {"threshold_m", m.gps.threshold_m},
+              {"position_from_gps", m.gps.position_from_gps},
+              {"position_time_us", m.gps.position_time ? json(m.gps.position_time->time_since_epoch().count()) : json()}};
   return j;
 }
 
@@ -417,6 +423,21 @@ Database database_from(const json& j) {
   return db;
 }
 
+station::GpsSettings gps_from(const json& g) {
+  station::GpsSettings s;
+  const std::string w = "gps";
+  s.source = text(g, w, "source", 300);
+  std::string why;
+  if (!s.source.empty() && !gps::parse_gps_spec(s.source, why)) bad(path(w, "source"), why);
+  s.follow = boolean(g, w, "follow");
+  s.threshold_m = num(g, w, "threshold_m", station::kGpsThresholdMinM, station::kGpsThresholdMaxM);
+  s.position_from_gps = boolean(g, w, "position_from_gps");
+  const json& t = field(g, w, "position_time_us");
+  if (!t.is_null())
+    s.position_time = orbit::UtcTime(std::chrono::microseconds(integer(g, w, "position_time_us", 0, 1LL << 52)));
+  return s;
+}
+
 }  // namespace
 
 Model model_from_json(const json& j) {
@@ -440,6 +461,8 @@ Model model_from_json(const json& j) {
     m.pass_events.output_off_el_deg = num(p, "pass_events", "output_off_el_deg", -90, 90);
   }
   if (j.contains("rotator_error_detection")) m.rotator_error_detection = boolean(j, "", "rotator_error_detection");
+  // Absent in state files written before the GPS receiver existed.
+  if (j.contains("gps")) m.gps = gps_from(j["gps"]);
   return m;
 }
 

@@ -40,6 +40,7 @@ struct Model {
   // STATION.DAT line 6 of the later firmware: a stalled rotator is declared in error (after
   // rotator.stall_s): the controller's stall watch (off: Controller::set_error_detection).
   bool rotator_error_detection = true;
+  station::GpsSettings gps;                   // --gps, menu 4: the receiver and the position's origin
 };
 
 // The factory defaults (menu 6-9 without a station file), with the shipped database when given.

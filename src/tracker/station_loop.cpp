@@ -1,6 +1,7 @@
 #include "tracker/station_loop.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include <spdlog/spdlog.h>
@@ -29,12 +30,30 @@ void StationLoop::set_rotor_control(bool on) {
 
 void StationLoop::reconfigure() {
   planned_.reset();  // the geometry may have changed
+  ++position_generation_;
   find_remote_in_database();  // the database may have changed too
   rotator_->set_config(model_.rotator, model_.station.rotor_start);
   rotator_->set_control_enabled(model_.rotor_control);
   rotator_->set_error_detection(model_.rotator_error_detection);
   tuner_.set_config(model_.radio);
   tuned_.reset();  // frequencies may have changed: select the satellite again
+}
+
+bool StationLoop::apply_gps_position() {
+  if (!gps_ || !model_.gps.follow) return false;
+  const auto& fix = gps_->filter().confirmed();
+  if (!fix || !gps_->filter().fixed()) return false;
+  station::StationConfig& st = model_.station;
+  const double moved = gps::distance_m(st.lat_deg, st.lon_deg, fix->lat_deg, fix->lon_deg);
+  const double climbed = fix->alt_m ? std::abs(*fix->alt_m - st.height_m) : 0.0;
+  if (model_.gps.position_from_gps && moved <= model_.gps.threshold_m && climbed <= model_.gps.threshold_m) return false;
+  st.lat_deg = fix->lat_deg;
+  st.lon_deg = fix->lon_deg;
+  if (fix->alt_m) st.height_m = std::clamp(*fix->alt_m, -500.0, 9000.0);  // the range menu 4 takes
+  model_.gps.position_from_gps = true;
+  model_.gps.position_time = fix->time;
+  reconfigure();
+  return true;
 }
 
 void StationLoop::remote_follow(std::optional<RemoteFollow> f) {
@@ -245,6 +264,8 @@ std::string StationLoop::status_line() const {
   if (const SatNow* f = tracker_.followed(); f && tracker_.mode() != Mode::off)
     if (const auto note = coverage_note(f->db_index)) line += " | " + *note;
   if (!notice_.empty()) line += " | " + notice_;
+  if (gps_)
+    if (const std::string w = gps_->status_word(); !w.empty()) line += " | " + w;
   if (save_failure_) line += " | STATE NOT SAVED";
   return line;
 }

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "gps/monitor.h"
 #include "radio/doppler.h"
 #include "radio/driver.h"
 #include "rotator/controller.h"
@@ -92,6 +93,20 @@ class StationLoop {
   // A word for the end of the status line ("ELEMENTS 3 UPDATED"); "" for none.
   void set_notice(std::string notice) { notice_ = std::move(notice); }
 
+  // The GPS receiver, when the program has one (--gps): menus 4 and 5, host mode and the Satrak
+  // unit read it through here. The status line carries its word (Monitor::status_word).
+  void set_gps(gps::Monitor* m) { gps_ = m; }
+  gps::Monitor* gps() const { return gps_; }
+  // When the station follows the receiver (model.gps.follow) and its confirmed position is farther
+  // than model.gps.threshold_m from the station's (or the position was typed in): the station moves
+  // there (a 2D fix keeps the stored height), the geometry is reconfigured and true is returned (the
+  // caller saves). Jitter within the threshold changes nothing.
+  bool apply_gps_position();
+  // Counts the station's moves (menu 4, GPS, GPS_SETTINGS=): whoever caches what depends on the
+  // position (the Satrak unit's pass) compares it.
+  std::uint64_t position_generation() const { return position_generation_; }
+  void position_changed() { ++position_generation_; }
+
  private:
   store::Model& model_;
   const station::Clock& clock_;
@@ -105,6 +120,8 @@ class StationLoop {
   std::optional<std::string> save_failure_;
   std::string notice_;
   ElementsRefresh* refresh_ = nullptr;
+  gps::Monitor* gps_ = nullptr;
+  std::uint64_t position_generation_ = 0;
   std::optional<int> remote_db_;  // remote_'s satellite in the database
   std::function<void()> wake_;
   void wake() {

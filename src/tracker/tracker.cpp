@@ -81,7 +81,11 @@ SatNow Tracker::compute(int db_index, orbit::UtcTime t, bool with_pass) const {
     // pass any more.
     const bool went_back = t < c.pass_searched_at;
     const bool past = !c.pass || t > c.pass->los;
-    if (went_back || (past && t >= c.pass_searched_until)) {
+    // The station moved (menu 4, the GPS receiver): the pass is another.
+    const bool moved = obs.lat_deg != c.pass_observer.lat_deg || obs.lon_deg != c.pass_observer.lon_deg ||
+                       obs.height_m != c.pass_observer.height_m;
+    if (went_back || moved || (past && t >= c.pass_searched_until)) {
+      c.pass_observer = obs;
       orbit::PassOptions po;
       po.precision_s = 1.0;
       c.pass = orbit::next_pass(*c.sgp4, obs, t, kPassSearchDays, po);

@@ -87,6 +87,7 @@ class Tracker {
     std::optional<orbit::Pass> pass;  // cached next/current pass, recomputed after its LOS
     orbit::UtcTime pass_searched_until{};
     orbit::UtcTime pass_searched_at{};  // the time the pass was searched from
+    orbit::Observer pass_observer{};    // the station the pass was searched for
   };
   mutable std::map<int, Cached> cache_;
   Cached& cached(int db_index) const;

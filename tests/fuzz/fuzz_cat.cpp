@@ -1,12 +1,14 @@
 // The CAT decoders of bytes that come back from a radio (src/radio/cat.h): the Icom CI-V frame
 // reader, frame decoder, reply and frequency/mode decoders (what IcomLink reads from the bus), the
-// Kenwood command splitter and decoders, the Yaesu FT-736 command decoder, and from_hex (host
+// Kenwood command splitter and decoders, the Yaesu FT-736 command decoder, the FT-847/FT-817 read
+// answers, and from_hex (host
 // mode's and the tests' byte strings).
 //
 // The first byte picks the family (and for Icom how the bytes are cut into reads).
 // Properties: the frame reader hands out every byte it takes at most once, each frame is one
 // FE FE ... FD (or a lone FC jam code); a decoded frame re-encodes to its bytes; a decoded
 // Kenwood frequency re-encodes to its command; what the encoders write decodes to what they took.
+#include <algorithm>
 #include <stdexcept>
 
 #include "fuzz_station.h"
@@ -85,6 +87,13 @@ void yaesu_family(std::span<const std::uint8_t> bytes) {
         TB_FUZZ_CHECK(again.kind == yaesu::Decoded::Kind::frequency && again.hz == d.hz, to_hex(c));
       } catch (const std::invalid_argument&) {
       }
+    }
+    // The same 5 bytes as an FT-847/FT-817 read answer (4 BCD bytes of 10 Hz and the mode): what
+    // decodes re-encodes to the same digits.
+    if (const auto hz = ft847::decode_read(std::span<const std::uint8_t>(c.data(), 5))) {
+      const yaesu::Command w = ft847::set_frequency(yaesu::Target::sat_rx, *hz);
+      TB_FUZZ_CHECK(std::equal(w.begin(), w.begin() + 4, c.begin()) && w[4] == 0x11, to_hex(c));
+      TB_FUZZ_CHECK(ft817::set_frequency(*hz)[3] == c[3], to_hex(c));
     }
   }
 }

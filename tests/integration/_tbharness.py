@@ -156,6 +156,17 @@ class Trakbox:
             shutil.rmtree(self.state_dir, ignore_errors=True)
 
 
+def poll(what, pred, seconds, every=0.2):
+    """pred() until it returns something true (returned), or fail after `seconds`."""
+    deadline = time.time() + seconds
+    while time.time() < deadline:
+        v = pred()
+        if v:
+            return v
+        time.sleep(every)
+    check(False, f"timed out waiting for {what}")
+
+
 def free_port():
     import socket
     with socket.socket() as s:

@@ -16,7 +16,7 @@ import time
 from datetime import datetime, timedelta, timezone
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, check, free_port, hamlib_dummy, reap, run_test, satellite_track, sh, skip  # noqa: E402
+from _tbharness import BIN, check, free_port, hamlib_dummy, poll, reap, run_test, satellite_track, sh, skip  # noqa: E402
 
 START = datetime(2026, 5, 21, 10, 57, 0, tzinfo=timezone.utc)
 C = 299792.458
@@ -31,17 +31,6 @@ def read_freq(port):
             return int(m.group(1))
         time.sleep(0.1)
     return None
-
-
-def poll(what, pred, seconds):
-    """pred() until it returns something true, or fail after `seconds`."""
-    deadline = time.time() + seconds
-    while time.time() < deadline:
-        v = pred()
-        if v:
-            return v
-        time.sleep(0.2)
-    check(False, f"timed out waiting for {what}")
 
 
 def expected(clock_at, down_spot, up_spot):

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "host/host_mode.h"
+#include "support/gps_fix.h"
 #include "support/sim_station.h"
 
 using namespace tb;
@@ -260,4 +261,20 @@ TEST_CASE("The ?A format") {
   CHECK(host::format_antenna(359.96, 0.0) == "AZ0.0 EL0.0");
   CHECK(host::format_antenna(0.0, -0.04) == "AZ0.0 EL0.0");
   CHECK(host::format_antenna(12.345, 89.96) == "AZ12.3 EL90.0");
+}
+
+TEST_CASE("?A with a GPS receiver: a second line with its fix") {
+  Station s;
+  gps::Monitor receiver("gpsd:localhost:2947");
+  s.station->set_gps(&receiver);
+  CHECK(s.cmd("?A").lines.at(1) == "GPS no fix [GPS CONNECTING]");
+  const orbit::UtcTime t = orbit::from_civil(2017, 10, 19, 6, 0, 0);
+  testing::feed_gps_fix(receiver, t, t);
+  const auto a = s.cmd("?A");
+  REQUIRE(a.lines.size() == 2);
+  CHECK(host::parse_az_el(a.lines[0]).args);
+  CHECK(a.lines[1] == "GPS 3D fix 41.0100N 29.1700E 120.0 m at 2017-10-19T06:00:02Z");
+  receiver.on_link(gps::Link::lost, "connection closed");
+  CHECK(s.cmd("?A").lines.at(1) == "GPS no fix (last 41.0100N 29.1700E 120.0 m) at 2017-10-19T06:00:02Z [GPSD LOST]");
+  s.station->set_gps(nullptr);
 }

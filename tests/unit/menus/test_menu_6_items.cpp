@@ -202,13 +202,23 @@ TEST_CASE("6-7: N is no rig; Q half way changes nothing") {
   CHECK(!g.model.radio.uplink_correction);
 }
 
+TEST_CASE("6-7: L lists the radio registry, the same table as trakbox --radio list") {
+  testing::MenuFixture f("7\rLQQ\r");
+  menus::menu_6_configuration(f.term, *f.services);
+  const std::string out = f.term.output();
+  CHECK(has(out, "ic9700:DEVICE[:BAUD][:maindown|:mainup]"));
+  CHECK(has(out, "ft847:DEVICE[:BAUD]"));
+  CHECK(has(out, "(D: dial follow on/off, U: uplink radio, L: radio list)\n"));
+  CHECK(f.saves == 0);
+}
+
 TEST_CASE("6-7: D turns dial follow off and on at once; U names an uplink radio at once, none goes back to one") {
   testing::MenuFixture f("7\rDQQ\r");
   menus::menu_6_configuration(f.term, *f.services);
   CHECK_FALSE(f.model.radio.dial_follow);
   CHECK_FALSE(f.station->tuner().config().dial_follow);
   CHECK(f.saves == 1);
-  CHECK(has(f.term.output(), "Dial follow OFF   Uplink radio: none (one radio)   (D: dial follow on/off, U: uplink radio)\n"));
+  CHECK(has(f.term.output(), "Dial follow OFF   Uplink radio: none (one radio)   (D: dial follow on/off, U: uplink radio, L: radio list)\n"));
   testing::MenuFixture g("7\rUsim\rQQ\r");
   menus::menu_6_configuration(g.term, *g.services);
   CHECK(g.model.radio.uplink_radio == "sim");

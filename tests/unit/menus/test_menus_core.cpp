@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "fixture.h"
+#include "support/gps_fix.h"
 #include "menus/realtime_display.h"
 
 using namespace tb;
@@ -194,4 +195,66 @@ TEST_CASE("Line mode: the realtime display reports a rotator or radio fault and 
   g.term.timeouts_before_key = 3;
   menus::menu_1_realtime_tracking(g.term, *g.services);
   CHECK(g.term.output().find("FAULT") == std::string::npos);  // nothing to report, nothing said
+}
+
+namespace {
+const orbit::UtcTime kGpsT0 = orbit::from_civil(2017, 10, 19, 6, 0, 0);
+// A menu fixture whose station has a receiver, fed a fix of `mode` (3D, 2D; 0: none) at kGpsT0.
+struct WithReceiver {
+  explicit WithReceiver(std::string input, int mode = 3) : f(std::move(input)) {
+    f.station->set_gps(&receiver);
+    if (mode) testing::feed_gps_fix(receiver, kGpsT0, f.clock.now(), mode);
+  }
+  ~WithReceiver() { f.station->set_gps(nullptr); }
+  testing::MenuFixture f;
+  gps::Monitor receiver{"gpsd:localhost:2947"};
+};
+}  // namespace
+
+TEST_CASE("Menu 4 with a GPS receiver: where the position came from, following it, its threshold") {
+  WithReceiver w("\r\r\r\r\r\rY\r250\r");
+  menus::menu_4_station_elements(w.f.term, *w.f.services);
+  const std::string& out = w.f.term.output();
+  CHECK(out.find("Position from      typed in") != std::string::npos);
+  CHECK(out.find("GPS receiver      gpsd:localhost:2947: 3D fix 41.0100N 29.1700E 120.0 m at 2017-10-19T06:00:02Z") !=
+        std::string::npos);
+  const store::Model& m = w.f.model;
+  CHECK(m.gps.follow);
+  CHECK(m.gps.threshold_m == 250.0);
+  // Following: the confirmed fix at once, saved once.
+  CHECK(m.station.lat_deg == 41.01);
+  CHECK(m.station.lon_deg == 29.17);
+  CHECK(m.station.height_m == 120.0);
+  CHECK(m.gps.position_from_gps);
+  CHECK(m.gps.position_time == orbit::add_seconds(kGpsT0, 2));
+  CHECK(w.f.saves == 1);
+  // Menu 4 again: the origin shown.
+  WithReceiver again("\r\r\r\r\r\r\r\r");
+  again.f.model = m;
+  menus::menu_4_station_elements(again.f.term, *again.f.services);
+  CHECK(again.f.term.output().find("Position from      GPS fix of 2017-10-19T06:00:02Z") != std::string::npos);
+}
+
+TEST_CASE("Menu 4: a 2D fix keeps the stored height") {
+  WithReceiver w("\r\r\r\r\r\rY\r\r", 2);
+  menus::menu_4_station_elements(w.f.term, *w.f.services);
+  CHECK(w.f.model.station.lat_deg == 41.01);
+  CHECK(w.f.model.station.height_m == 50.0);  // the factory height
+}
+
+TEST_CASE("Menu 5 G: the clock from GPS time; refused without a fix") {
+  // GPS time is 06:00:00 (2017) when the clock reads 12:00:00 (2026-05-21): the clock goes back by the difference.
+  WithReceiver w("G");
+  const auto source_before = w.f.now;
+  menus::menu_5_realtime_clock(w.f.term, *w.f.services);
+  CHECK(w.f.clock.now() == kGpsT0 + (w.f.now - source_before));  // GPS time, and what the menu's waits took
+  CHECK(w.f.model.clock_offset == w.f.clock.offset());
+  CHECK(w.f.term.output().find("Enter 'G' for the clock from GPS time (3D fix 41.0100N 29.1700E 120.0 m") !=
+        std::string::npos);
+
+  WithReceiver none("GQ", 0);
+  const auto offset = none.f.clock.offset();
+  menus::menu_5_realtime_clock(none.f.term, *none.f.services);
+  CHECK(none.f.term.output().find("no GPS fix: the clock is left alone") != std::string::npos);
+  CHECK(none.f.clock.offset() == offset);
 }

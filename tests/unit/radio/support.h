@@ -1,6 +1,7 @@
 // Test helpers for the radio tests: child processes (socat, rigctld), pseudo-terminal peers,
 // free TCP ports, bounded waiting. POSIX only.
 #pragma once
+#include <doctest/doctest.h>
 #include <arpa/inet.h>
 #include <fcntl.h>
 #include <netinet/in.h>
@@ -14,6 +15,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -23,6 +25,8 @@
 #include <string>
 #include <thread>
 #include <vector>
+
+#include "radio/cat.h"
 
 extern char** environ;
 
@@ -310,6 +314,26 @@ inline std::string run_capture(const std::string& command) {
     ::pclose(f);
   }
   return out;
+}
+
+// socat makes the pty pairs the serial tests run on; without it they are skipped with a message.
+inline bool have_socat() {
+  if (which("socat")) return true;
+  MESSAGE("socat not installed: serial CAT pty tests skipped");
+  return false;
+}
+
+// The radio's side of a CI-V line: reads the pty until stop, cuts what comes into frames (a lone
+// jam code too) and hands each to on_frame, on the calling thread (a responder's own thread).
+template <typename OnFrame>
+void read_civ_frames(PtyEnd& end, const std::atomic<bool>& stop, OnFrame on_frame) {
+  tb::radio::icom::FrameReader reader;
+  while (!stop) {
+    auto bytes = end.read(256, 20ms);
+    if (bytes.empty()) continue;
+    reader.feed(bytes);
+    while (auto f = reader.next()) on_frame(*f);
+  }
 }
 
 }  // namespace tbtest

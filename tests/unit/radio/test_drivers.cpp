@@ -372,7 +372,7 @@ TEST_CASE("--radio spec parsing") {
   auto unknown = parse_radio_spec("alinco:/dev/ttyS0");
   CHECK(unknown.error.find("unknown radio \"alinco\"") != std::string::npos);
   CHECK(unknown.error.find("rigctld:HOST:PORT") != std::string::npos);
-  CHECK(parse_radio_spec("hamlib:IC910:/dev/x").error.find("not a Hamlib model number") != std::string::npos);
+  CHECK(parse_radio_spec("hamlib:0:/dev/x").error.find("not a Hamlib model number") != std::string::npos);
   CHECK(parse_radio_spec("hamlib:3073").error.find("expected hamlib:MODEL:DEVICE") != std::string::npos);
   CHECK(parse_radio_spec("hamlib:3073:/dev/x:12345").error.find("not a serial speed") != std::string::npos);
   CHECK(parse_radio_spec("rigctld:h:99999").error.find("not a TCP port") != std::string::npos);

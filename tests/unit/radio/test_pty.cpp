@@ -13,6 +13,7 @@
 using namespace tb::radio;
 using namespace std::chrono_literals;
 using tbtest::eventually;
+using tbtest::have_socat;
 using tbtest::PtyEnd;
 using tbtest::PtyPair;
 
@@ -25,12 +26,6 @@ IcomOptions patient(IcomOptions o = {}) {
   o.echo_margin = 1000ms;
   o.reply_timeout = 1000ms;
   return o;
-}
-
-bool have_socat() {
-  if (tbtest::which("socat")) return true;
-  MESSAGE("socat not installed: serial CAT pty tests skipped");
-  return false;
 }
 
 // The Icom side of the one-wire CI-V bus: every frame comes back as its echo; a radio that is
@@ -56,30 +51,24 @@ class IcomBus {
 
  private:
   void run() {
-    icom::FrameReader reader;
-    while (!stop_) {
-      auto bytes = end_.read(256, 20ms);
-      if (bytes.empty()) continue;
-      reader.feed(bytes);
-      while (auto f = reader.next()) {
-        {
-          std::lock_guard lock(mu_);
-          frames_.push_back(*f);
-        }
-        if (jam_next > 0) {
-          --jam_next;
-          end_.write({0xFE, 0xFE, 0xFC, 0xFC, 0xFC, 0xFD});   // the bus was jammed
-          continue;
-        }
-        if (!echo) continue;
-        end_.write(*f);
-        const auto frame = icom::decode_frame(*f);
-        if (frame && frame->to != icom::kBroadcast) {
-          const bool ng = refuse_modes && frame->cmd == icom::kCmdSetMode;
-          end_.write({0xFE, 0xFE, icom::kController, frame->to, ng ? icom::kNg : icom::kOk, 0xFD});
-        }
+    tbtest::read_civ_frames(end_, stop_, [this](const Bytes& f) {
+      {
+        std::lock_guard lock(mu_);
+        frames_.push_back(f);
       }
-    }
+      if (jam_next > 0) {
+        --jam_next;
+        end_.write({0xFE, 0xFE, 0xFC, 0xFC, 0xFC, 0xFD});   // the bus was jammed
+        return;
+      }
+      if (!echo) return;
+      end_.write(f);
+      const auto frame = icom::decode_frame(f);
+      if (frame && frame->to != icom::kBroadcast) {
+        const bool ng = refuse_modes && frame->cmd == icom::kCmdSetMode;
+        end_.write({0xFE, 0xFE, icom::kController, frame->to, ng ? icom::kNg : icom::kOk, 0xFD});
+      }
+    });
   }
   PtyEnd end_;
   std::atomic<bool> stop_{false};

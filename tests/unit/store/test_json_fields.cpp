@@ -62,3 +62,23 @@ TEST_CASE("The state document's errors name the field") {
   CHECK_THROWS_WITH_AS(model_from_json(j), "radio.rig: 'collins' is not one of none, kenwood, yaesu, icom",
                        std::runtime_error);
 }
+
+TEST_CASE("the GPS settings round-trip; a bad source or threshold is refused by name; older states have none") {
+  Model m = factory_defaults();
+  m.gps.source = "gpsd:127.0.0.1:2947";
+  m.gps.follow = true;
+  m.gps.threshold_m = 250.0;
+  m.gps.position_from_gps = true;
+  m.gps.position_time = tb::orbit::from_civil(2017, 10, 19, 6, 0, 2);
+  json j = to_json(m);
+  CHECK(model_from_json(j).gps == m.gps);
+  j["gps"]["source"] = "nmea:/dev/ttyUSB0";
+  CHECK_THROWS_WITH_AS(model_from_json(j),
+                       "gps.source: expected gpsd, gpsd:HOST or gpsd:HOST:PORT; found 'nmea:/dev/ttyUSB0'",
+                       std::runtime_error);
+  j["gps"]["source"] = "";
+  j["gps"]["threshold_m"] = 0.5;
+  CHECK_THROWS_WITH_AS(model_from_json(j), "gps.threshold_m: value 0.5 outside 1.0 .. 100000.0", std::runtime_error);
+  j.erase("gps");
+  CHECK(model_from_json(j).gps == tb::station::GpsSettings{});
+}

@@ -1,0 +1,148 @@
+"""An Icom IC-9700 on a pseudo-terminal, written from Icom's IC-9700 CI-V reference guide and
+radios-2026.md: a helper of the integration tests, not a test.
+
+Frames FE FE <to> <from> <cmd> [data] FD; the radio is at A2h, the controller E0h. It answers
+FB (OK) / FA (NG); 07 D0 / D1 select Main / Sub; 05 / 06 set the selected band's frequency / mode;
+03 answers the selected band's frequency (5 BCD bytes, least significant first), 1C 03 the transmit
+frequency (Sub in satellite mode); 16 5A 01 / 00
+satellite mode; 1B 00 <3 BCD> the tone, 16 42 01 / 00 TONE. With echo (a CI-V bus) each frame comes
+back first; without (USB, Echo Back OFF) only the answer. turn() moves a dial as the knob would and
+sends the transceive frame FE FE 00 A2 00 <freq> FD, which does not say which band moved.
+"""
+import os
+import select
+import termios
+import threading
+import time
+import tty
+
+ADDR, CTRL = 0xA2, 0xE0
+
+
+def bcd_le(hz, n=5):
+    out = []
+    for _ in range(n):
+        lo = hz % 10
+        hz //= 10
+        hi = hz % 10
+        hz //= 10
+        out.append(hi << 4 | lo)
+    return bytes(out)
+
+
+def from_bcd_le(b):
+    v = 0
+    for x in reversed(b):
+        v = v * 100 + (x >> 4) * 10 + (x & 0x0F)
+    return v
+
+
+class IC9700:
+    def __init__(self, path, echo=False, refuse_tone=False):
+        self.fd = os.open(path, os.O_RDWR | os.O_NOCTTY)
+        tty.setraw(self.fd)
+        termios.tcflush(self.fd, termios.TCIOFLUSH)
+        self.echo = echo
+        self.refuse_tone = refuse_tone
+        self.lock = threading.Lock()
+        self.hz = {"main": 145_000_000, "sub": 435_000_000}
+        self.mode = {"main": None, "sub": None}
+        self.selected = "main"
+        self.satellite = False
+        self.tone = None          # tenths of Hz when TONE is on
+        self.frames = []          # (time, bytes) of every frame the controller sent
+        self.bytes_in = []        # (time, count) read from the controller
+        self.bytes_out = []       # (time, count) written to the controller
+        self.stop = False
+        self.thread = threading.Thread(target=self.run, daemon=True)
+        self.thread.start()
+
+    def close(self):
+        self.stop = True
+        self.thread.join(2)
+        os.close(self.fd)
+
+    def write(self, b):
+        os.write(self.fd, b)
+        self.bytes_out.append((time.time(), len(b)))
+
+    def answer(self, ok):
+        self.write(bytes([0xFE, 0xFE, CTRL, ADDR, 0xFB if ok else 0xFA, 0xFD]))
+
+    def turn(self, band, delta):
+        with self.lock:
+            self.hz[band] += delta
+            self.write(bytes([0xFE, 0xFE, 0x00, ADDR, 0x00]) + bcd_le(self.hz[band]) + b"\xfd")
+
+    def handle(self, f):
+        self.frames.append((time.time(), f))
+        if self.echo:
+            self.write(f)
+        if len(f) < 6 or f[2] != ADDR:
+            return
+        cmd, d = f[4], f[5:-1]
+        band = self.selected
+        if cmd == 0x05 and len(d) == 5:
+            self.hz[band] = from_bcd_le(d)
+            self.answer(True)
+        elif cmd == 0x06 and d:
+            self.mode[band] = d[0]
+            self.answer(True)
+        elif cmd == 0x07 and len(d) == 1 and d[0] in (0xD0, 0xD1):
+            self.selected = "main" if d[0] == 0xD0 else "sub"
+            self.answer(True)
+        elif cmd == 0x03 and not d:
+            self.write(bytes([0xFE, 0xFE, CTRL, ADDR, 0x03]) + bcd_le(self.hz[band]) + b"\xfd")
+        elif cmd == 0x1C and d == b"\x03":   # the transmit frequency: Sub in satellite mode
+            tx = "sub" if self.satellite else band
+            self.write(bytes([0xFE, 0xFE, CTRL, ADDR, 0x1C, 0x03]) + bcd_le(self.hz[tx]) + b"\xfd")
+        elif cmd == 0x16 and len(d) == 2 and d[0] == 0x5A:
+            self.satellite = d[1] == 1
+            self.answer(True)
+        elif cmd == 0x1B and len(d) == 4 and d[0] == 0x00:
+            if not self.refuse_tone:
+                self.pending_tone = int(d[1:].hex())
+            self.answer(not self.refuse_tone)
+        elif cmd == 0x16 and len(d) == 2 and d[0] == 0x42:
+            if not self.refuse_tone:
+                self.tone = getattr(self, "pending_tone", None) if d[1] == 1 else None
+            self.answer(not self.refuse_tone)
+        else:
+            self.answer(False)
+
+    def run(self):
+        buf = b""
+        while not self.stop:
+            r, _, _ = select.select([self.fd], [], [], 0.05)
+            if not r:
+                continue
+            try:
+                chunk = os.read(self.fd, 256)
+            except OSError:
+                return
+            self.bytes_in.append((time.time(), len(chunk)))
+            buf += chunk
+            while True:
+                start = buf.find(b"\xfe\xfe")
+                if start < 0:
+                    buf = b""
+                    break
+                end = buf.find(b"\xfd", start)
+                if end < 0:
+                    buf = buf[start:]
+                    break
+                f, buf = buf[start:end + 1], buf[end + 1:]
+                with self.lock:
+                    self.handle(f)
+
+    def get(self, band):
+        with self.lock:
+            return self.hz[band]
+
+    def count(self, cmd, since=0.0):
+        with self.lock:
+            return sum(1 for t, f in self.frames if t >= since and len(f) > 4 and f[3] == CTRL and f[4] == cmd)
+
+    def line_bytes(self, since, until):
+        """Bytes on the CAT line (both directions) between two times."""
+        return sum(n for t, n in self.bytes_in + self.bytes_out if since <= t < until)

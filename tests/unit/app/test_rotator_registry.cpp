@@ -1,0 +1,35 @@
+// The rotator registry (app/rotator_registry.h): one table chooses the parser for every --rotator.
+#include <doctest/doctest.h>
+
+#include "app/rotator_registry.h"
+
+using namespace tb;
+
+TEST_CASE("--rotator: one table for the drivers and a Satrak ACU") {
+  auto sim = app::parse_rotator("simulated");
+  REQUIRE(sim.error.empty());
+  REQUIRE(sim.choice.rotator);
+  CHECK(sim.choice.rotator->kind == rotator::RotatorSpec::Kind::simulated);
+  CHECK_FALSE(sim.choice.satrak);
+
+  auto ham = app::parse_rotator("hamlib:603:/dev/ttyUSB0:9600");
+  REQUIRE(ham.choice.rotator);
+  CHECK(ham.choice.rotator->model == 603);
+  CHECK(ham.choice.rotator->baud == 9600);
+
+  auto acu = app::parse_rotator("satrak:192.0.2.7");
+  REQUIRE(acu.choice.satrak);
+  CHECK(acu.choice.satrak->port == 4001);
+  CHECK_FALSE(acu.choice.rotator);
+
+  // Each kind's own parser says what is wrong; an unknown kind lists the table's forms.
+  CHECK(app::parse_rotator("rotctld:").error.find("missing HOST") != std::string::npos);
+  CHECK(app::parse_rotator("satrak:").error.find("expected satrak:HOST[:PORT]") != std::string::npos);
+  CHECK(app::parse_rotator("gs232:/dev/ttyS0").error ==
+        "bad --rotator 'gs232:/dev/ttyS0': unknown rotator 'gs232'; expected simulated, hamlib:MODEL:DEVICE[:BAUD], "
+        "rotctld:HOST[:PORT], satrak:HOST[:PORT] (trakbox --rotator list)");
+  CHECK_FALSE(app::parse_rotator("gs232").choice.rotator);
+
+  const std::string list = app::rotator_list_text();
+  for (const app::RotatorKind& k : app::rotator_kinds()) CHECK(list.find(std::string(k.form)) != std::string::npos);
+}

@@ -1,0 +1,560 @@
+// The satellite radios of 2026 over a socat pty pair, each against a responder written here from
+// the documented protocol (radios-2026.md; Icom's IC-9700 CI-V reference; Hamlib's ft847.c and
+// ft817.c): exact bytes of a pass's first update, a Doppler update, a dial turn read back,
+// satellite mode on and off, CTCSS; frames per update counted. Skipped without socat.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <atomic>
+#include <map>
+#include <mutex>
+#include <thread>
+
+#include "radio/cat.h"
+#include "radio/factory.h"
+#include "support.h"
+
+namespace doctest {
+template <>
+struct StringMaker<std::vector<std::string>> {
+  static String convert(const std::vector<std::string>& v) {
+    std::string s = "{";
+    for (const auto& x : v) s += (s.size() > 1 ? " | " : "") + x;
+    return (s + "}").c_str();
+  }
+};
+}  // namespace doctest
+
+using namespace tb::radio;
+using namespace std::chrono_literals;
+using tbtest::eventually;
+using tbtest::have_socat;
+using tbtest::PtyEnd;
+using tbtest::PtyPair;
+
+namespace {
+
+const WorkerTiming kFast{20ms, 100ms, 50ms};
+
+DriverTiming timing() {
+  DriverTiming t;
+  t.worker = kFast;
+  t.yaesu_byte_gap = 1ms;
+  t.icom_echo_margin = 1000ms;   // patient: a loaded machine is no collision
+  t.icom_reply_timeout = 1000ms;
+  return t;
+}
+
+std::vector<std::string> hex_all(const std::vector<Bytes>& frames) {
+  std::vector<std::string> out;
+  for (const auto& f : frames) out.push_back(to_hex(f));
+  return out;
+}
+
+// An IC-9700 at A2h (CI-V reference guide): FB/FA answers, 05/06 on the selected band, 07 D0/D1
+// selects Main/Sub, 03 answers the selected band's frequency, 1C 03 the transmit frequency (Sub in
+// satellite mode), 16 5A satellite mode, 1B 00 tone,
+// 16 42 TONE. With echo (a CI-V bus) every frame comes back first; without (USB, Echo Back OFF)
+// only the answer. turn() moves a band's dial as the knob would and sends the transceive frame.
+class Ic9700 {
+ public:
+  // Also an IC-9100 (7Ch, satellite mode 16 5A as the IC-9700) or IC-910H (60h, 1A 07).
+  Ic9700(const std::string& path, bool echo, std::uint8_t address = 0xA2) : end_(path), echo_(echo), kAddr(address) {
+    thread_ = std::thread([this] { run(); });
+  }
+  ~Ic9700() {
+    stop_ = true;
+    thread_.join();
+  }
+  std::atomic<bool> refuse_tone{false};
+  std::atomic<bool> refuse_satmode{false};
+
+  std::vector<Bytes> frames() {
+    std::lock_guard lock(mu_);
+    return frames_;
+  }
+  void clear() {
+    std::lock_guard lock(mu_);
+    frames_.clear();
+  }
+  Hz frequency(icom::Band b) {
+    std::lock_guard lock(mu_);
+    return hz_[b == icom::Band::main ? 0 : 1];
+  }
+  bool satellite() {
+    std::lock_guard lock(mu_);
+    return sat_;
+  }
+  int tone() {
+    std::lock_guard lock(mu_);
+    return tone_on_ ? tone_ : 0;
+  }
+  void turn(icom::Band b, Hz delta) {
+    std::lock_guard lock(mu_);
+    Hz& hz = hz_[b == icom::Band::main ? 0 : 1];
+    hz += delta;
+    end_.write(icom::frame(0x00, kAddr, 0x00, bcd_little_endian(static_cast<std::uint64_t>(hz), 5)));
+  }
+
+
+ private:
+  void answer(bool ok) { end_.write({0xFE, 0xFE, icom::kController, kAddr, ok ? icom::kOk : icom::kNg, 0xFD}); }
+  void run() {
+    tbtest::read_civ_frames(end_, stop_, [this](const Bytes& frame) { take(frame); });
+  }
+  void take(const Bytes& raw) {
+    std::lock_guard lock(mu_);
+    frames_.push_back(raw);
+    if (echo_) end_.write(raw);
+    const auto f = icom::decode_frame(raw);
+    if (!f || f->to != kAddr) return;
+    const std::size_t band = selected_main_ ? 0 : 1;
+    const auto& d = f->data;
+    if (f->cmd == 0x05 && d.size() == 5) {
+      hz_[band] = static_cast<Hz>(*decode_bcd_little_endian(d));
+      answer(true);
+    } else if (f->cmd == 0x06) {
+      answer(!d.empty());
+    } else if (f->cmd == 0x07 && d.size() == 1 && (d[0] == 0xD0 || d[0] == 0xD1)) {
+      selected_main_ = d[0] == 0xD0;
+      answer(true);
+    } else if (f->cmd == 0x03 && d.empty()) {
+      end_.write(icom::frame(icom::kController, kAddr, 0x03, bcd_little_endian(static_cast<std::uint64_t>(hz_[band]), 5)));
+    } else if (f->cmd == 0x1C && d.size() == 1 && d[0] == 0x03) {   // the TX frequency: Sub in satellite mode
+      Bytes a{0x03};
+      const Bytes bcd = bcd_little_endian(static_cast<std::uint64_t>(hz_[sat_ ? 1 : band]), 5);
+      a.insert(a.end(), bcd.begin(), bcd.end());
+      end_.write(icom::frame(icom::kController, kAddr, 0x1C, a));
+    } else if ((f->cmd == 0x16 && d.size() == 2 && d[0] == 0x5A) || (f->cmd == 0x1A && d.size() == 2 && d[0] == 0x07)) {
+      if (!refuse_satmode) sat_ = d[1] == 0x01;
+      answer(!refuse_satmode);
+    } else if (f->cmd == 0x1B && d.size() == 4 && d[0] == 0x00) {
+      if (!refuse_tone) tone_ = static_cast<int>(*decode_bcd_big_endian(std::span(d).subspan(1)));
+      answer(!refuse_tone);
+    } else if (f->cmd == 0x16 && d.size() == 2 && d[0] == 0x42) {
+      if (!refuse_tone) tone_on_ = d[1] == 0x01;
+      answer(!refuse_tone);
+    } else {
+      answer(false);
+    }
+  }
+  PtyEnd end_;
+  const bool echo_;
+  const std::uint8_t kAddr;
+  std::atomic<bool> stop_{false};
+  std::mutex mu_;
+  std::vector<Bytes> frames_;
+  Hz hz_[2] = {145'000'000, 435'000'000};
+  bool selected_main_ = true;
+  bool sat_ = false;
+  int tone_ = 885;
+  bool tone_on_ = false;
+  std::thread thread_;
+};
+
+// A pass's first update (RS-44: USB down on 435, LSB up on 145), as apply() sends it.
+void rs44_first_update(RadioDriver& radio) {
+  radio.set_mode(Link::downlink, Mode::usb);
+  radio.set_frequency(Link::downlink, 435'643'780);
+  radio.set_mode(Link::uplink, Mode::lsb);
+  radio.set_frequency(Link::uplink, 145'963'730);
+  REQUIRE(radio.wait_idle(10000ms));
+}
+
+int count_cmd(const std::vector<Bytes>& frames, std::uint8_t cmd) {
+  int n = 0;
+  for (const auto& b : frames)
+    if (auto f = icom::decode_frame(b); f && f->cmd == cmd && f->from == icom::kController) ++n;
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("IC-9700, echo on and off: satellite mode, Main down / Sub up, read-back, CTCSS, no select thrash") {
+  if (!have_socat()) return;
+  for (const bool echo : {false, true}) {
+    CAPTURE(echo);
+    PtyPair pair;
+    REQUIRE(pair.ok());
+    Ic9700 rig(pair.test_side(), echo);
+    auto made = make_radio("ic9700:" + pair.radio_side(), RadioConfig{}, timing());
+    REQUIRE(made.driver);
+    RadioDriver& radio = *made.driver;
+
+    // A pass's first update (RS-44: USB down on 435, LSB up on 145), as apply() sends it.
+    rs44_first_update(radio);
+    CHECK_FALSE(radio.status().fault);
+    CHECK(hex_all(rig.frames()) == std::vector<std::string>{
+                                       "FE FE A2 E0 16 5A 01 FD",         // satellite mode on, first
+                                       "FE FE A2 E0 07 D0 FD",            // Main: the downlink
+                                       "FE FE A2 E0 06 01 FD",            // USB
+                                       "FE FE A2 E0 05 80 37 64 35 04 FD",
+                                       "FE FE A2 E0 07 D1 FD",            // Sub: the uplink
+                                       "FE FE A2 E0 06 00 FD",            // LSB
+                                       "FE FE A2 E0 05 30 37 96 45 01 FD"});
+    CHECK(rig.satellite());
+    CHECK(rig.frequency(icom::Band::main) == 435'643'780);
+    CHECK(rig.frequency(icom::Band::sub) == 145'963'730);
+
+    // Doppler updates: one select per band change, never more selects than frequencies.
+    rig.clear();
+    for (int i = 1; i <= 5; ++i) {
+      radio.set_frequency(Link::downlink, 435'643'780 - 40 * i);
+      radio.set_frequency(Link::uplink, 145'963'730 + 40 * i);
+      REQUIRE(radio.wait_idle(10000ms));
+    }
+    const auto upd = rig.frames();
+    CHECK(count_cmd(upd, 0x05) == 10);
+    CHECK(count_cmd(upd, 0x07) == 10);   // one per band change, here every frequency: never more
+    // The CAT line per update (both links): 36 bytes to the radio (2 selects of 7, 2 frequencies
+    // of 11), 24 back (4 FB of 6), 36 more echoed on a CI-V bus: 60 bytes/s at one update a second
+    // without the echo, 96 with it.
+    std::size_t sent = 0;
+    for (const auto& f : upd) sent += f.size();
+    CHECK(sent == 5 * 36);
+    CHECK(hex_all(upd)[0] == "FE FE A2 E0 07 D0 FD");
+    CHECK(hex_all(upd)[1] == "FE FE A2 E0 05 40 37 64 35 04 FD");   // 435.643740
+
+    // The dial turned on the radio: read back with 03 after the band select (the transceive frame
+    // is not trusted), the guarded write dropped, the turn handed to the station.
+    rig.clear();
+    rig.turn(icom::Band::main, 10'000);
+    radio.set_frequency_guarded(Link::downlink, 435'643'540, 60);
+    REQUIRE(radio.wait_idle(10000ms));
+    CHECK(radio.take_dial_turn(Link::downlink) == 435'653'580);
+    CHECK(rig.frequency(icom::Band::main) == 435'653'580);       // not undone
+    // (With the echo, the transceive frame crossing the select is a collision: the select goes
+    // again. The idle check may read again: more 03s, never a 05.)
+    const auto read = hex_all(rig.frames());
+    REQUIRE(read.size() >= 2);
+    CHECK(read[0] == "FE FE A2 E0 07 D0 FD");
+    CHECK(std::find(read.begin(), read.end(), "FE FE A2 E0 03 FD") != read.end());
+    CHECK(count_cmd(rig.frames(), 0x05) == 0);
+    radio.set_frequency(Link::downlink, 435'653'580);   // unguarded again: no more idle reads
+    REQUIRE(radio.wait_idle(10000ms));
+
+    // The Sub (uplink) dial, with Main selected: read with 1C 03 (the transmit frequency), no select.
+    rig.clear();
+    rig.turn(icom::Band::sub, -5'000);
+    radio.set_frequency_guarded(Link::uplink, 145'963'930, 60);
+    REQUIRE(radio.wait_idle(10000ms));
+    CHECK(radio.take_dial_turn(Link::uplink) == 145'958'930);
+    const auto tx_read = hex_all(rig.frames());
+    REQUIRE_FALSE(tx_read.empty());
+    CHECK(tx_read.front() == "FE FE A2 E0 1C 03 FD");
+    CHECK(count_cmd(rig.frames(), 0x07) == 0);
+    radio.set_frequency(Link::uplink, 145'958'930);
+    REQUIRE(radio.wait_idle(10000ms));
+    CHECK(radio.status().reads_downlink);
+    CHECK(radio.status().reads_uplink);
+
+    // CTCSS on the uplink's band (Sub, selected already by the uplink's write): 1B 00 tone, TONE on.
+    rig.clear();
+    radio.set_ctcss_tone(670);
+    REQUIRE(radio.wait_idle(10000ms));
+    CHECK(hex_all(rig.frames()) == std::vector<std::string>{"FE FE A2 E0 1B 00 00 06 70 FD", "FE FE A2 E0 16 42 01 FD"});
+    CHECK(rig.tone() == 670);
+    rig.clear();
+    radio.set_frequency(Link::downlink, 435'653'570);   // Main selected; a tone off selects Sub first
+    radio.set_ctcss_tone(0);
+    REQUIRE(radio.wait_idle(10000ms));
+    CHECK(hex_all(rig.frames()) == std::vector<std::string>{"FE FE A2 E0 07 D0 FD", "FE FE A2 E0 05 70 35 65 35 04 FD",
+                                                            "FE FE A2 E0 07 D1 FD", "FE FE A2 E0 16 42 00 FD"});
+    CHECK(rig.tone() == 0);
+
+    // Closing turns satellite mode off.
+    rig.clear();
+    made.driver.reset();
+    REQUIRE(eventually([&] { return !rig.frames().empty(); }));
+    CHECK(hex_all(rig.frames()).back() == "FE FE A2 E0 16 5A 00 FD");
+    CHECK_FALSE(rig.satellite());
+  }
+}
+
+TEST_CASE("IC-9700: a refused tone and a refused satellite mode are reported; Doppler goes on") {
+  if (!have_socat()) return;
+  PtyPair pair;
+  REQUIRE(pair.ok());
+  Ic9700 rig(pair.test_side(), false);
+  rig.refuse_tone = true;
+  rig.refuse_satmode = true;
+  auto made = make_radio("ic9700:" + pair.radio_side(), RadioConfig{}, timing());
+  RadioDriver& radio = *made.driver;
+  radio.set_ctcss_tone(670);   // SO-50: selected with its tone
+  radio.set_mode(Link::downlink, Mode::fm);
+  radio.set_frequency(Link::downlink, 436'795'000);
+  radio.set_mode(Link::uplink, Mode::fm);
+  radio.set_frequency(Link::uplink, 145'850'000);
+  REQUIRE(radio.wait_idle(10000ms));
+  CHECK(radio.status().failures >= 1);   // the tone's NG was reported
+  CHECK(rig.frequency(icom::Band::main) == 436'795'000);
+  CHECK(rig.frequency(icom::Band::sub) == 145'850'000);
+  CHECK_FALSE(radio.status().fault);     // the frequencies went through after it
+  radio.set_frequency(Link::uplink, 145'850'100);
+  REQUIRE(radio.wait_idle(10000ms));
+  CHECK(rig.frequency(icom::Band::sub) == 145'850'100);
+  const auto frames = hex_all(rig.frames());
+  CHECK(std::count(frames.begin(), frames.end(), "FE FE A2 E0 16 5A 01 FD") == 1);   // asked once, not every second
+}
+
+TEST_CASE("IC-9100 and IC-910H: their addresses and satellite-mode commands, Main up / Sub down") {
+  if (!have_socat()) return;
+  struct Case {
+    const char* spec;
+    std::uint8_t address;
+    std::vector<std::string> first;
+  };
+  const Case cases[] = {
+      {"ic9100:", 0x7C, {"FE FE 7C E0 16 5A 01 FD", "FE FE 7C E0 07 D1 FD", "FE FE 7C E0 06 01 FD", "FE FE 7C E0 05 80 37 64 35 04 FD",
+                         "FE FE 7C E0 07 D0 FD", "FE FE 7C E0 06 00 FD", "FE FE 7C E0 05 30 37 96 45 01 FD"}},
+      {"ic910h:", 0x60, {"FE FE 60 E0 1A 07 01 FD", "FE FE 60 E0 07 D1 FD", "FE FE 60 E0 06 01 FD", "FE FE 60 E0 05 80 37 64 35 04 FD",
+                         "FE FE 60 E0 07 D0 FD", "FE FE 60 E0 06 00 FD", "FE FE 60 E0 05 30 37 96 45 01 FD"}},
+  };
+  for (const Case& c : cases) {
+    CAPTURE(c.spec);
+    PtyPair pair;
+    REQUIRE(pair.ok());
+    Ic9700 rig(pair.test_side(), true, c.address);   // a CI-V bus: with the echo
+    auto made = make_radio(std::string(c.spec) + pair.radio_side(), RadioConfig{}, timing());
+    rs44_first_update(*made.driver);
+    CHECK(hex_all(rig.frames()) == c.first);
+    CHECK(rig.frequency(icom::Band::sub) == 435'643'780);
+    CHECK(rig.frequency(icom::Band::main) == 145'963'730);
+  }
+  // :maindown puts the downlink on Main.
+  PtyPair pair;
+  REQUIRE(pair.ok());
+  Ic9700 rig(pair.test_side(), false, 0x7C);
+  auto made = make_radio("ic9100:" + pair.radio_side() + ":maindown", RadioConfig{}, timing());
+  rs44_first_update(*made.driver);
+  CHECK(rig.frequency(icom::Band::main) == 435'643'780);
+  CHECK(rig.frequency(icom::Band::sub) == 145'963'730);
+}
+
+TEST_CASE("A model without a CTCSS encoder refuses a tone with a message, never silently") {
+  if (!have_socat()) return;
+  PtyPair pair;
+  REQUIRE(pair.ok());
+  PtyEnd peer(pair.test_side());
+  auto made = make_radio("ic910h:" + pair.radio_side(), RadioConfig{}, timing());
+  made.driver->set_ctcss_tone(670);
+  REQUIRE(eventually([&] { return made.driver->status().fault; }));
+  CHECK(made.driver->status().message == "the IC-910H has no CTCSS encoder trakbox can set: tone 67.0 Hz not sent");
+  // The families of menu 6-7 neither: a tone is refused with the same message, never dropped silently.
+  for (const char* spec : {"kenwood:", "yaesu:", "icom:"}) {
+    auto fam = make_radio(std::string(spec) + pair.radio_side(), RadioConfig{}, timing());
+    fam.driver->set_ctcss_tone(885);
+    REQUIRE(eventually([&] { return fam.driver->status().message.find("tone 88.5 Hz not sent") != std::string::npos; }));
+  }
+}
+
+namespace {
+
+// A radio that takes commands and may answer: the pty, the thread reading it and the log of the
+// commands it took (as text), shared by the FT-847/FT-817 and TS-2000 responders. A derived
+// responder's take() cuts what came in into commands, records and answers them (mu_ held).
+class CommandResponder {
+ public:
+  explicit CommandResponder(const std::string& path) : end_(path) {}
+  virtual ~CommandResponder() = default;
+  std::vector<std::string> commands() {
+    std::lock_guard lock(mu_);
+    return cmds_;
+  }
+  void clear() {
+    std::lock_guard lock(mu_);
+    cmds_.clear();
+  }
+
+ protected:
+  void start() { thread_ = std::thread([this] { run(); }); }
+  void stop() {
+    stop_ = true;
+    thread_.join();
+  }
+  virtual void take(const std::vector<std::uint8_t>& bytes) = 0;
+  PtyEnd end_;
+  std::mutex mu_;
+  std::vector<std::string> cmds_;
+
+ private:
+  void run() {
+    while (!stop_) {
+      auto bytes = end_.read(64, 20ms);
+      std::lock_guard lock(mu_);
+      take(bytes);
+    }
+  }
+  std::atomic<bool> stop_{false};
+  std::thread thread_;
+};
+
+// An FT-847 (Hamlib ft847.c): 5-byte commands, nothing acknowledged; 03/13/23 answer 4 BCD bytes
+// of 10 Hz and the mode. And an FT-817 (ft817.c): 01 / 07 / 03 on its one VFO.
+class Yaesu5 final : public CommandResponder {
+ public:
+  explicit Yaesu5(const std::string& path) : CommandResponder(path) { start(); }
+  ~Yaesu5() override { stop(); }
+  void turn(std::uint8_t vfo_nibble, Hz delta) {
+    std::lock_guard lock(mu_);
+    hz_[vfo_nibble] += delta;
+  }
+
+ private:
+  void take(const std::vector<std::uint8_t>& bytes) override {
+    buf_.insert(buf_.end(), bytes.begin(), bytes.end());
+    while (buf_.size() >= 5) {
+      const Bytes c(buf_.begin(), buf_.begin() + 5);
+      buf_.erase(buf_.begin(), buf_.begin() + 5);
+      cmds_.push_back(to_hex(c));
+      const std::uint8_t op = c[4] & 0x0F, vfo = c[4] & 0xF0;
+      if (op == 0x01) hz_[vfo] = static_cast<Hz>(*decode_bcd_big_endian(std::span(c).first(4)) * 10);
+      if (op == 0x03) {
+        Bytes a = bcd_big_endian(static_cast<std::uint64_t>(hz_[vfo] / 10), 4);
+        a.push_back(0x01);
+        end_.write(a);
+      }
+    }
+  }
+  Bytes buf_;
+  std::map<std::uint8_t, Hz> hz_;
+};
+
+}  // namespace
+
+TEST_CASE("FT-847: CAT on, satellite mode, SAT RX / SAT TX opcodes, read-back, CTCSS, off at close") {
+  if (!have_socat()) return;
+  PtyPair pair;
+  REQUIRE(pair.ok());
+  Yaesu5 rig(pair.test_side());
+  auto made = make_radio("ft847:" + pair.radio_side(), RadioConfig{}, timing());
+  RadioDriver& radio = *made.driver;
+  rs44_first_update(radio);
+  REQUIRE(eventually([&] { return rig.commands().size() >= 6; }));
+  CHECK(rig.commands() == std::vector<std::string>{"00 00 00 00 00", "00 00 00 00 4E", "01 00 00 00 17",
+                                                    "43 56 43 78 11", "00 00 00 00 27", "14 59 63 73 21"});
+  rig.clear();
+  radio.set_frequency(Link::uplink, 145'963'770);   // a Doppler update: one command
+  REQUIRE(radio.wait_idle(10000ms));
+  REQUIRE(eventually([&] { return rig.commands().size() >= 1; }));
+  CHECK(rig.commands() == std::vector<std::string>{"14 59 63 77 21"});
+  rig.clear();
+  rig.turn(0x10, 10'000);   // the SAT RX dial
+  radio.set_frequency_guarded(Link::downlink, 435'643'740, 60);
+  REQUIRE(radio.wait_idle(10000ms));
+  CHECK(radio.take_dial_turn(Link::downlink) == 435'653'780);
+  REQUIRE(eventually([&] { return rig.commands().size() >= 1; }));
+  CHECK(rig.commands().front() == "00 00 00 00 13");
+  radio.set_frequency(Link::downlink, 435'653'780);   // unguarded again: no more idle reads
+  REQUIRE(radio.wait_idle(10000ms));
+  REQUIRE(eventually([&] { return rig.commands().back() == "43 56 53 78 11"; }));
+  rig.clear();
+  radio.set_ctcss_tone(670);
+  REQUIRE(radio.wait_idle(10000ms));
+  REQUIRE(eventually([&] { return rig.commands().size() >= 2; }));
+  CHECK(rig.commands() == std::vector<std::string>{"3F 00 00 00 2B", "4A 00 00 00 2A"});
+  rig.clear();
+  radio.set_ctcss_tone(671);   // not one of its 39 tones: refused with a message
+  REQUIRE(radio.wait_idle(10000ms));
+  CHECK(radio.status().message == "the FT-847 has no CTCSS tone 67.1 Hz: not sent");
+  CHECK(rig.commands().empty());
+  made.driver.reset();
+  REQUIRE(eventually([&] { return rig.commands().size() >= 2; }));
+  CHECK(rig.commands() == std::vector<std::string>{"00 00 00 00 8E", "00 00 00 00 80"});
+}
+
+TEST_CASE("FT-817 pair: each radio one link on its VFO, read-back, tone on the uplink radio") {
+  if (!have_socat()) return;
+  PtyPair a, b;
+  REQUIRE(a.ok());
+  REQUIRE(b.ok());
+  Yaesu5 down(a.test_side()), up(b.test_side());
+  auto down_spec = parse_radio_spec("ft817:" + a.radio_side());
+  auto up_spec = parse_radio_spec("ft818:" + b.radio_side(), "--uplink-radio");
+  auto made = make_radios(*down_spec.spec, *up_spec.spec, RadioConfig{}, timing());
+  REQUIRE(made.driver);
+  RadioDriver& radio = *made.driver;
+  radio.set_mode(Link::downlink, Mode::usb);
+  radio.set_frequency(Link::downlink, 435'643'780);
+  radio.set_mode(Link::uplink, Mode::lsb);
+  radio.set_frequency(Link::uplink, 145'963'730);
+  radio.set_ctcss_tone(670);
+  REQUIRE(radio.wait_idle(10000ms));
+  REQUIRE(eventually([&] { return down.commands().size() >= 2; }));
+  CHECK(down.commands() == std::vector<std::string>{"01 00 00 00 07", "43 56 43 78 01"});
+  REQUIRE(eventually([&] { return up.commands().size() >= 4; }));
+  CHECK(up.commands() == std::vector<std::string>{"00 00 00 00 07", "14 59 63 73 01", "06 70 06 70 0B", "4A 00 00 00 0A"});
+  down.clear();
+  down.turn(0x00, -5'000);
+  radio.set_frequency_guarded(Link::downlink, 435'643'740, 60);
+  REQUIRE(radio.wait_idle(10000ms));
+  CHECK(radio.take_dial_turn(Link::downlink) == 435'638'780);
+  REQUIRE(eventually([&] { return down.commands().size() >= 1; }));
+  CHECK(down.commands().front() == "00 00 00 00 03");
+}
+
+TEST_CASE("An FT-817 alone refuses the uplink with a message") {
+  if (!have_socat()) return;
+  PtyPair pair;
+  REQUIRE(pair.ok());
+  Yaesu5 rig(pair.test_side());
+  auto made = make_radio("ft817:" + pair.radio_side(), RadioConfig{}, timing());
+  made.driver->set_frequency(Link::uplink, 145'900'000);
+  REQUIRE(made.driver->wait_idle(10000ms));
+  CHECK(made.driver->status().message ==
+        "the FT-817 carries one link (the downlink): the uplink needs a second radio (--uplink-radio)");
+  CHECK(rig.commands().empty());
+}
+
+namespace {
+
+// A TS-2000 (Kenwood's PC command reference): FA/FB set VFO A/B (11 digits of Hz), FA; / FB; answer
+// them, MD the mode, FN the VFO the mode goes to.
+class Ts2000 final : public CommandResponder {
+ public:
+  explicit Ts2000(const std::string& path) : CommandResponder(path) { start(); }
+  ~Ts2000() override { stop(); }
+  void turn(char vfo, Hz delta) {
+    std::lock_guard lock(mu_);
+    hz_[vfo] += delta;
+  }
+
+ private:
+  void take(const std::vector<std::uint8_t>& bytes) override {
+    text_.append(bytes.begin(), bytes.end());
+    std::string rest;
+    for (const std::string& c : kenwood::split_commands(text_, &rest)) {
+      cmds_.push_back(c);
+      if (auto f = kenwood::decode_frequency(c)) hz_[f->vfo == kenwood::Vfo::a ? 'A' : 'B'] = f->hz;
+      if (c == "FA;" || c == "FB;") {
+        const std::string answer = kenwood::set_frequency(c[1] == 'A' ? kenwood::Vfo::a : kenwood::Vfo::b, hz_[c[1]]);
+        end_.write(std::vector<std::uint8_t>(answer.begin(), answer.end()));
+      }
+    }
+    text_ = rest;
+  }
+  std::string text_;
+  std::map<char, Hz> hz_;
+};
+
+}  // namespace
+
+TEST_CASE("TS-2000: VFO A down, VFO B up, the dial read back with FA; / FB;") {
+  if (!have_socat()) return;
+  PtyPair pair;
+  REQUIRE(pair.ok());
+  Ts2000 rig(pair.test_side());
+  auto made = make_radio("ts2000:" + pair.radio_side(), RadioConfig{}, timing());
+  RadioDriver& radio = *made.driver;
+  rs44_first_update(radio);
+  REQUIRE(eventually([&] { return rig.commands().size() >= 7; }));
+  CHECK(rig.commands() == std::vector<std::string>{"FN0;", "MD2;", "FA00435643780;", "FN1;", "MD1;", "FN0;", "FB00145963730;"});
+  CHECK(radio.status().reads_uplink);
+  rig.clear();
+  rig.turn('B', 2'000);
+  radio.set_frequency_guarded(Link::uplink, 145'963'770, 60);
+  REQUIRE(radio.wait_idle(10000ms));
+  CHECK(radio.take_dial_turn(Link::uplink) == 145'965'730);
+  REQUIRE(eventually([&] { return !rig.commands().empty(); }));
+  CHECK(rig.commands().front() == "FB;");
+}

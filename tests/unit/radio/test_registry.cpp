@@ -1,0 +1,128 @@
+// The radio registry (radio/registry.h) and the --radio parser that reads it: every entry's form
+// parses, defaults come from the table, bad specs say what is wrong, Hamlib models go by name too.
+#include <doctest/doctest.h>
+
+#include <set>
+
+#include "radio/factory.h"
+#include "radio/hamlib_models.h"
+#include "radio/registry.h"
+
+using namespace tb::radio;
+
+TEST_CASE("registry: names are unique, every model has a factory and a sane description") {
+  std::set<std::string_view> names;
+  for (const RadioModel& m : radio_models()) {
+    CAPTURE(m.name);
+    CHECK(names.insert(m.name).second);
+    CHECK(static_cast<bool>(m.make));
+    CHECK(!m.label.empty());
+    CHECK((m.caps.links == 1 || m.caps.links == 2));
+    CHECK(m.caps.step_hz > 0);
+    CHECK((m.satmode == SatCommand::none || m.caps.satellite_mode));
+    // A model named in the table is found by its name, and its spec form starts with it.
+    CHECK(find_radio_model(m.name) == &m);
+    CHECK(spec_form(m).rfind(std::string(m.name), 0) == 0);
+  }
+  for (const char* n : {"ic9700", "ic9100", "ic910h", "ic821h", "ic275", "ic970", "ic705", "ts2000", "ts790", "ft847",
+                        "ft817", "ft818", "ft736", "icom", "kenwood", "yaesu", "cat", "hamlib", "rigctld", "sim"})
+    CHECK_MESSAGE(find_radio_model(n) != nullptr, n);
+  CHECK(find_radio_model("simulated") == find_radio_model("sim"));
+  CHECK(find_radio_model("IC9700") == nullptr);   // names are lower case, as listed
+}
+
+TEST_CASE("registry: the satellite rigs' defaults") {
+  const RadioModel& ic9700 = *find_radio_model("ic9700");
+  CHECK(ic9700.civ_address == 0xA2);              // radios-2026.md, Hamlib ic9700.c
+  CHECK(ic9700.satmode == SatCommand::icom_16_5a);
+  CHECK(ic9700.main_link == Link::downlink);      // satellite mode: Main receives, Sub transmits
+  CHECK(ic9700.hamlib_model == 3081);
+  CHECK(ic9700.caps.links == 2);
+  CHECK(ic9700.caps.reads);
+  CHECK(ic9700.caps.ctcss);
+  CHECK(find_radio_model("ic9100")->civ_address == 0x7C);
+  CHECK(find_radio_model("ic910h")->civ_address == 0x60);
+  CHECK(find_radio_model("ic910h")->satmode == SatCommand::icom_1a_07);   // Hamlib ic910.c
+  CHECK(find_radio_model("ic910h")->main_link == Link::uplink);
+  CHECK(find_radio_model("ic705")->civ_address == 0xA4);
+  CHECK(find_radio_model("ft847")->satmode == SatCommand::ft847);
+  CHECK(find_radio_model("ft817")->caps.links == 1);
+  CHECK(find_radio_model("ft736")->caps.reads == false);
+  CHECK(find_radio_model("ts2000")->hamlib_model == 2014);
+  CHECK(find_radio_model_by_hamlib(3081) == &ic9700);
+  CHECK(find_radio_model_by_hamlib(1001) == find_radio_model("ft847"));
+  CHECK(find_radio_model_by_hamlib(2) == nullptr);   // rigctld is no radio model
+  CHECK(find_radio_model_by_hamlib(1) == nullptr);
+  CHECK(find_radio_model_by_hamlib(3073) == nullptr);
+}
+
+TEST_CASE("--radio MODEL:DEVICE[:BAUD]: parsed from the table") {
+  auto a = parse_radio_spec("ic9700:/dev/ttyUSB0");
+  REQUIRE(a.spec);
+  CHECK(a.spec->name == "ic9700");
+  CHECK(a.spec->kind == RadioSpec::Kind::icom);
+  CHECK(a.spec->device == "/dev/ttyUSB0");
+  CHECK(a.spec->baud == 0);
+  CHECK_FALSE(a.spec->main_link);
+  auto b = parse_radio_spec("ic9100:/dev/ttyUSB1:9600:maindown");
+  REQUIRE(b.spec);
+  CHECK(b.spec->baud == 9600);
+  CHECK(b.spec->main_link == Link::downlink);
+  CHECK(parse_radio_spec("ft847:/dev/ttyS0").spec->kind == RadioSpec::Kind::yaesu);
+  CHECK(parse_radio_spec("ts2000:/dev/ttyS0:57600").spec->baud == 57600);
+  CHECK(parse_radio_spec("ft818:/dev/ttyS0").spec->name == "ft818");
+
+  // Bad specs name what is wrong.
+  CHECK(parse_radio_spec("ic9700").error ==
+        "--radio \"ic9700\": missing DEVICE; expected ic9700:DEVICE[:BAUD][:maindown|:mainup], e.g. ic9700:/dev/ttyUSB0");
+  CHECK(parse_radio_spec("ic9700:/dev/x:12345").error == "--radio \"ic9700:/dev/x:12345\": BAUD 12345 is not a serial speed (300..230400)");
+  CHECK(parse_radio_spec("ic9700:/dev/x:fast").error.find("\"fast\" is not a serial speed") != std::string::npos);
+  CHECK(parse_radio_spec("ft817:/dev/x:mainup").error ==
+        "--radio \"ft817:/dev/x:mainup\": \"mainup\": the Yaesu FT-817 has no Main/Sub satellite mode to choose bands for");
+  CHECK(parse_radio_spec("ic9700:/dev/x:19200:7").error.find("too many fields") == std::string::npos);   // 7: not a speed
+  CHECK(parse_radio_spec("ic9700:/dev/x:19200:7").error.find("BAUD 7 is not a serial speed") != std::string::npos);
+  CHECK(parse_radio_spec("sim:/dev/x").error == "--radio \"sim:/dev/x\": sim takes no device");
+  const auto unknown = parse_radio_spec("ic9800:/dev/x", "--uplink-radio");
+  CHECK(unknown.error.rfind("--uplink-radio \"ic9800:/dev/x\": unknown radio \"ic9800\"; expected one of sim, icom,", 0) == 0);
+  CHECK(unknown.error.find("ic9700") != std::string::npos);
+}
+
+TEST_CASE("hamlib:NAME: Hamlib models by name, case and punctuation ignored") {
+  CHECK(parse_radio_spec("hamlib:IC-9700:/dev/ttyUSB0").spec->model == 3081);
+  CHECK(parse_radio_spec("hamlib:ic9700:/dev/ttyUSB0:19200").spec->model == 3081);
+  CHECK(parse_radio_spec("hamlib:ft-847:/dev/ttyUSB0").spec->model == 1001);
+  CHECK(parse_radio_spec("hamlib:TS2000:/dev/ttyUSB0").spec->model == 2014);
+  CHECK(hamlib_rig_by_name("Icom IC-9100").model == 3068);
+  CHECK(model_key("IC-9700") == "ic9700");
+  const auto near = parse_radio_spec("hamlib:IC-9701:/dev/x");
+  CHECK_FALSE(near.spec);
+  CHECK(near.error.find("Hamlib has no rig model named \"IC-9701\"; near: ") != std::string::npos);
+  CHECK(near.error.find("Icom IC-9700 (3081)") != std::string::npos);
+  CHECK(parse_radio_spec("hamlib:--:/dev/x").error.find("is not a Hamlib model number or name") != std::string::npos);
+}
+
+TEST_CASE("--radio list prints every entry of the table") {
+  const std::string text = radio_list_text();
+  for (const RadioModel& m : radio_models()) CHECK(text.find(spec_form(m)) != std::string::npos);
+  CHECK(text.find("ic9700:DEVICE[:BAUD][:maindown|:mainup]") != std::string::npos);
+}
+
+TEST_CASE("make_radio: each model's driver from the table, one of two radios without satellite mode") {
+  RadioConfig cfg;
+  auto ic = make_radio("ic9700:/nonexistent/tty", cfg);
+  REQUIRE(ic.driver);
+  CHECK(ic.driver->describe() == "Icom IC-9700 CI-V on /nonexistent/tty (A2h, satellite mode)");
+  CHECK(make_radio("ic705:/nonexistent/tty", cfg).driver->describe() == "Icom IC-705 CI-V on /nonexistent/tty (A4h)");
+  // One of two radios: no satellite mode.
+  const auto spec = parse_radio_spec("ic9700:/nonexistent/tty");
+  CHECK(make_radio(*spec.spec, cfg, {}, RadioRole::downlink).driver->describe() == "Icom IC-9700 CI-V on /nonexistent/tty (A2h)");
+  auto ft = make_radio("ft847:/nonexistent/tty", cfg);
+  CHECK(ft.driver->describe() == "Yaesu FT-847 CAT on /nonexistent/tty");
+  auto f8 = make_radio("ft817:/nonexistent/tty", cfg);
+  CHECK(f8.driver->describe() == "Yaesu FT-817 CAT on /nonexistent/tty");
+  // yaesu: with the FT-847 named in STATION.DAT line 4 gets the FT-847 driver, not the FT-736's.
+  cfg.rig_model = RigModel::yaesu_847;
+  CHECK(make_radio("yaesu:/nonexistent/tty", cfg).driver->describe() == "Yaesu FT-847 CAT on /nonexistent/tty");
+  cfg.rig_model = RigModel::yaesu_736;
+  CHECK(make_radio("yaesu:/nonexistent/tty", cfg).driver->describe() == "Yaesu FT-736 CAT on /nonexistent/tty");
+}
