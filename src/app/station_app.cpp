@@ -164,6 +164,18 @@ struct StationApp::Impl {
   std::unique_ptr<tracker::PassEventSource> pass_events;
   bool rotator_ok = true, radio_ok = true;
   std::string refresh_result;
+  std::unique_ptr<gps::Monitor> gps;
+  std::unique_ptr<gps::GpsdClient> gps_client;  // after gps: stopped before it goes
+  void log_notes(const std::vector<gps::Note>& notes) {
+    for (const auto& n : notes) {
+      if (n.warning) log->warn("{}", n.text);
+      else log->info("{}", n.text);
+    }
+  }
+  void show_status() {
+    if (terminal && station) terminal->status(station->status_line());
+  }
+  void on_gps_report(const gps::Report& r, StationApp& app);
 };
 
 void StationApp::Impl::find_events() {
@@ -198,19 +210,6 @@ void StationApp::set_events(std::function<void(const tracker::Event&)> sink, std
 
 std::optional<std::chrono::system_clock::time_point> StationApp::last_saved() const { return impl_->last_saved; }
 
-  std::unique_ptr<gps::Monitor> gps;
-  std::unique_ptr<gps::GpsdClient> gps_client;  // after gps: stopped before it goes
-  void log_notes(const std::vector<gps::Note>& notes) {
-    for (const auto& n : notes) {
-      if (n.warning) log->warn("{}", n.text);
-      else log->info("{}", n.text);
-    }
-  }
-  void show_status() {
-    if (terminal && station) terminal->status(station->status_line());
-  }
-  void on_gps_report(const gps::Report& r, StationApp& app);
-};
 
 void StationApp::Impl::on_gps_report(const gps::Report& r, StationApp& app) {
   const std::string before = gps->status_word();
