@@ -5,7 +5,9 @@
 // the corrections and F/A apply at once. trakbox's additions at the first question: D turns dial
 // follow on linear transponders on or off, U names a second radio for the uplink (a spec as
 // --uplink-radio takes: a model of the radio registry, a family, Hamlib) or none, L lists the radio
-// registry (radio/registry.h, as trakbox --radio list); D and U apply at once.
+// registry (radio/registry.h, as trakbox --radio list), P sets the operating practice (the knob's rest
+// before the other link moves, the least Doppler change sent for SSB/CW and for FM); D, U and P apply
+// at once.
 #include <cctype>
 #include <charconv>
 #include <cstdio>
@@ -54,12 +56,31 @@ void menu_6_7_radio_cat(term::Terminal& t, Services& s) {
     t.line(std::string("Dial follow ") + (s.model.radio.dial_follow ? "ON" : "OFF") + "   Uplink radio: " +
            (s.model.radio.uplink_radio.empty() ? "none (one radio)" : s.model.radio.uplink_radio) +
            "   (D: dial follow on/off, U: uplink radio, L: radio list)");
+    t.line("Knob rest " + std::to_string(s.model.radio.dial_rest_ms) + " ms   Doppler step SSB/CW " +
+           std::to_string(s.model.radio.doppler_step_ssb_hz) + " Hz, FM " + std::to_string(s.model.radio.doppler_step_fm_hz) +
+           " Hz   (P: change them)");
   };
   extras();
   char rig = 0;
   while (!rig) {
-    const char k = cfg::ask_choice(t, "CAT Rig KENWOOD,YAESU,ICOM [K/Y/I] ? ", "KYINDUL");
-    if (k == 'D') {
+    const char k = cfg::ask_choice(t, "CAT Rig KENWOOD,YAESU,ICOM [K/Y/I] ? ", "KYINDULP");
+    if (k == 'P') {
+      // Operating practice: how long the knob must rest before the other link moves, and the least
+      // Doppler change sent per mode. Applied at once.
+      radio::RadioConfig& r = s.model.radio;
+      r.dial_rest_ms = static_cast<int>(cfg::ask_number(t, "Knob rest before the other link moves, ms (0-10000) ? ",
+                                                        r.dial_rest_ms, 0, 10000, true));
+      r.doppler_step_ssb_hz = static_cast<radio::Hz>(cfg::ask_number(
+          t, "Least Doppler change sent, SSB/CW, Hz (10-1000) ? ", static_cast<double>(r.doppler_step_ssb_hz), 10, 1000, true));
+      r.doppler_step_fm_hz = static_cast<radio::Hz>(cfg::ask_number(
+          t, "Least Doppler change sent, FM, Hz (10-10000) ? ", static_cast<double>(r.doppler_step_fm_hz), 10, 10000, true));
+      c.dial_rest_ms = r.dial_rest_ms;
+      c.doppler_step_ssb_hz = r.doppler_step_ssb_hz;
+      c.doppler_step_fm_hz = r.doppler_step_fm_hz;
+      s.station.tuner().set_config(s.model.radio);
+      save_or_report(t, s);
+      extras();
+    } else if (k == 'D') {
       s.model.radio.dial_follow = c.dial_follow = !s.model.radio.dial_follow;
       s.station.tuner().set_config(s.model.radio);
       save_or_report(t, s);

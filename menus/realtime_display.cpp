@@ -1,6 +1,7 @@
 #include "menus/realtime_display.h"
 
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -136,6 +137,11 @@ std::string radio_line(Services& s) {
   } else if (sat.has_passbands()) {
     line += " | dial follow OFF";
   }
+  // The operator's correction for this satellite and mode, kept for its next pass ('0' forgets it).
+  if (tu.correction_remembered()) {
+    const radio::Hz c = tu.config().corrections.at(tu.correction_key());
+    line += " | correction " + std::string(c > 0 ? "+" : "") + std::to_string(c) + " Hz kept for " + tu.correction_key();
+  }
   return line;
 }
 
@@ -231,7 +237,9 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
       coverage_said = coverage.value_or("");
     }
     // Wait for a key until the next whole second of the (possibly accelerated) clock.
-    const int k = t.read_key(std::chrono::milliseconds(1000));
+    // Sooner when a link waits for the operator's knob to rest, so it moves as soon as it has.
+    const int k = t.read_key(std::min(std::chrono::milliseconds(1000),
+                                      s.station.radio_due_in().value_or(std::chrono::milliseconds(1000))));
     switch (k) {
       case term::kTimeout: break;
       case term::kEndOfInput: throw InputClosed{};
@@ -273,9 +281,8 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
       case '+':
       case '-':
       case '0':
-        if (k == '+') s.station.tuner().rit_up();
-        else if (k == '-') s.station.tuner().rit_down();
-        else s.station.tuner().rit_zero();
+        s.station.adjust_correction(k == '+' ? 1 : k == '-' ? -1 : 0);
+        save_or_report(t, s);   // the correction is remembered for this satellite and mode
         if (!t.full_screen()) t.line("Frequency offset " + std::string(s.station.tuner().rit_hz() > 0 ? "+" : "") +
                                      std::to_string(s.station.tuner().rit_hz()) + " Hz");
         break;

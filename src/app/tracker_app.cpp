@@ -127,6 +127,11 @@ std::optional<std::string> build_station(StationApp& app, const TrackerConfig& c
   if (c.clock_start) app.clock().start_at(*c.clock_start, c.clock_rate.value_or(1.0));
   else if (c.clock_rate) app.clock().start_at(station::system_now(), *c.clock_rate);
   if (c.uplink_radio_text) app.model().radio.uplink_radio = *c.uplink_radio_text;
+  if (c.dial_rest_ms) app.model().radio.dial_rest_ms = *c.dial_rest_ms;
+  if (c.doppler_steps) {
+    app.model().radio.doppler_step_ssb_hz = c.doppler_steps->first;
+    app.model().radio.doppler_step_fm_hz = c.doppler_steps->second;
+  }
   std::optional<radio::RadioSpec> uplink;
   if (const std::string& up = app.model().radio.uplink_radio; !up.empty()) {
     const auto parsed = radio::parse_radio_spec(up, "--uplink-radio");

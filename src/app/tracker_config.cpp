@@ -40,6 +40,10 @@ std::vector<OptionSpec> tracker_option_specs() {
                         "IC-9700), rigctld[:HOST[:PORT]]"},
       {"uplink-radio", "SPEC", "a second radio for the uplink, in the same forms as --radio (which then drives "
                                "the downlink); stored, so later starts use it too; none: one radio again"},
+      {"dial-rest", "MS", "dial follow: the other link moves once the operator's knob has rested this many "
+                          "milliseconds, 0 to 10000 (factory 1000; stored)"},
+      {"doppler-step", "SSB,FM", "least Doppler change sent to the radio, Hz, for SSB/CW and for FM links, e.g. "
+                                 "20,100 (the factory values; stored)"},
       {"tick-ms", "MS", "tracking interval in milliseconds, 100 to 1000 (default 1000)"},
       {"satrak-port", "N", "Satrak ACU protocol on TCP port N (default 4001; 0 turns it off)"},
       {"satrak-bind", "ADDR", "address the Satrak server listens on (default 127.0.0.1)"},
@@ -216,6 +220,22 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
   // ticks every 100 ms of simulated time, at least every few ms of wall time: docs/rotator.md).
   c.clock_rate = r.number("clock-rate", false, "a rate > 0 and at most 200 (1 is real time; 200 is the fastest "
                           "the tracker and the simulated rotator follow)", Range{0.0, station::kMaxClockRate, true});
+  if (const auto v = r.integer("dial-rest", false, "milliseconds, 0 to 10000", Range{0, 10000}))
+    c.dial_rest_ms = static_cast<int>(*v);
+  if (const auto v = o.value("doppler-step")) {
+    // SSB,FM: two whole numbers of Hz, each within what the state file takes.
+    const auto comma = v->find(',');
+    auto hz = [](const std::string& t, long long lo, long long hi) -> std::optional<long long> {
+      char* end = nullptr;
+      const long long n = t.empty() ? 0 : std::strtoll(t.c_str(), &end, 10);
+      if (t.empty() || *end != '\0' || n < lo || n > hi) return std::nullopt;
+      return n;
+    };
+    const auto ssb = comma == std::string::npos ? std::nullopt : hz(v->substr(0, comma), 10, 1000);
+    const auto fm = comma == std::string::npos ? std::nullopt : hz(v->substr(comma + 1), 10, 10000);
+    if (ssb && fm) c.doppler_steps = std::pair<radio::Hz, radio::Hz>{*ssb, *fm};
+    else r.fail("--doppler-step", "\"" + *v + "\": expected SSB,FM in Hz, SSB/CW 10 to 1000 and FM 10 to 10000, e.g. 20,100");
+  }
   if (const auto v = r.integer("tick-ms", false, "milliseconds, 100 to 1000", Range{100, 1000}))
     c.tick_ms = static_cast<int>(*v);
   if (const auto v = r.integer("satrak-port", false, "a TCP port 0 to 65535 (0: off)", Range{0, 65535})) {

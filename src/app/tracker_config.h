@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -46,6 +47,9 @@ struct TrackerConfig {
   radio::RadioSpec radio;
   // --uplink-radio: a second radio's spec ("" for none); unset: the stored choice (menu 6-7).
   std::optional<std::string> uplink_radio_text;
+  // --dial-rest, --doppler-step (SSB/CW, FM): the operating practice, stored in the model's radio.
+  std::optional<int> dial_rest_ms;
+  std::optional<std::pair<radio::Hz, radio::Hz>> doppler_steps;
   // Endpoints. satrak_port 0 is off; explicit says --satrak-port was given (a busy port is then an
   // error rather than a note).
   int satrak_port = 4001;

@@ -3,6 +3,7 @@
 // click). Values only; nothing here talks to hardware. Frequencies are integer Hz everywhere.
 #pragma once
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -157,6 +158,17 @@ struct RadioConfig {
   // The radio that carries the uplink when it is not the --radio one (--uplink-radio, menu 6-7):
   // a radio spec as --radio takes (radio/factory.h); empty: the one radio carries both links.
   std::string uplink_radio;
+  // Operating practice (the 6-7 P question, --dial-rest, --doppler-step). A turn of one link's dial
+  // moves the other link once the knob has rested this long (no further turn read back).
+  int dial_rest_ms = 1000;
+  // Doppler updates go to the radio when a link's frequency moved at least this far from the last
+  // one sent: SSB/CW (and a link without a mode) tens of Hz, FM hundreds (FM radios tune coarsely
+  // and the FM passband is wide, so an FM pass need not flood the CAT line).
+  Hz doppler_step_ssb_hz = 20;
+  Hz doppler_step_fm_hz = 100;
+  // Corrections the operator found (realtime + / -) per satellite and downlink mode, "SO-50 FM" ->
+  // Hz; applied when that satellite is next selected, forgotten with 0.
+  std::map<std::string, Hz> corrections;
 
   bool operator==(const RadioConfig&) const = default;
 };

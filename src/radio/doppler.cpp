@@ -67,7 +67,7 @@ void Tuner::set_config(const RadioConfig& config) {
   resend();
 }
 
-void Tuner::select(const SatelliteRadio& sat) {
+void Tuner::select(const SatelliteRadio& sat, std::string_view name) {
   sat_ = sat;
   rit_hz_ = 0;
   was_aos_.reset();
@@ -75,6 +75,16 @@ void Tuner::select(const SatelliteRadio& sat) {
   tuning_ = {};
   previous_tuning_ = {};
   updates_ = 0;
+  waiting_.reset();
+  correction_key_.clear();
+  if (name.empty()) return;
+  correction_key_ = std::string(name) + " " + to_string(sat.downlink_mode);
+  if (const auto it = config_.corrections.find(correction_key_); it != config_.corrections.end()) move_rit(it->second);
+}
+
+Hz Tuner::doppler_step(Mode mode) const {
+  const Hz step = mode == Mode::fm ? config_.doppler_step_fm_hz : config_.doppler_step_ssb_hz;
+  return step > kTuningStepHz ? step : kTuningStepHz;
 }
 
 bool Tuner::dial_follow_active() const {
@@ -84,10 +94,18 @@ bool Tuner::dial_follow_active() const {
 
 void Tuner::move_rit(Hz delta) {
   rit_hz_ += delta;
+  // The operator's correction for this satellite and mode: remembered for its next pass; 0 forgets.
+  if (!correction_key_.empty()) {
+    if (rit_hz_ != 0) config_.corrections[correction_key_] = rit_hz_;
+    else config_.corrections.erase(correction_key_);
+  }
+  // A key press goes out at the next update whatever the Doppler step.
+  sent_down_.reset();
   if (!dial_follow_active()) return;
   // On a transponder the keys move the spot: the downlink by delta, the uplink to its pair.
   sat_.downlink_hz += delta;
   sat_.uplink_hz = transponder_of(sat_)->uplink_for(sat_.downlink_hz);
+  sent_up_.reset();
 }
 
 namespace {
@@ -97,31 +115,77 @@ bool near_band(Hz spot, Hz low, Hz high) {
 }
 }  // namespace
 
-bool Tuner::dial_downlink(Hz radio_hz, double rr) {
-  // The radio: RF + sign * (RF (1 - rr/c) - RF) + offset + RIT = RF (1 - sign rr/c) + offset + RIT.
-  double sign = 0.0;
-  if (config_.downlink_correction == DownlinkCorrection::on) sign = 1.0;
-  if (config_.downlink_correction == DownlinkCorrection::reverse) sign = -1.0;
-  const Hz rit = dial_follow_active() ? 0 : rit_hz_;
-  const double rf = static_cast<double>(radio_hz - sat_.downlink_offset_hz - rit) /
-                    (1.0 - sign * rr / kSpeedOfLightKmS);
-  const Hz spot = static_cast<Hz>(std::llround(rf));
+bool Tuner::dial_downlink(Hz radio_hz, double rr) { return turn(true, radio_hz, rr, std::nullopt); }
+
+bool Tuner::dial_uplink(Hz radio_hz, double rr) { return turn(false, radio_hz, rr, std::nullopt); }
+
+bool Tuner::turn(bool downlink, Hz radio_hz, double rr, std::optional<double> now_s) {
   const auto t = transponder_of(sat_);
-  if (t && !near_band(spot, t->downlink_low_hz, t->downlink_high_hz)) return false;
-  sat_.downlink_hz = spot;
-  if (t) sat_.uplink_hz = t->uplink_for(sat_.downlink_hz);
+  Hz spot = 0;
+  if (downlink) {
+    // The radio: RF + sign * (RF (1 - rr/c) - RF) + offset + RIT = RF (1 - sign rr/c) + offset + RIT.
+    double sign = 0.0;
+    if (config_.downlink_correction == DownlinkCorrection::on) sign = 1.0;
+    if (config_.downlink_correction == DownlinkCorrection::reverse) sign = -1.0;
+    const Hz rit = dial_follow_active() ? 0 : rit_hz_;
+    spot = static_cast<Hz>(std::llround(static_cast<double>(radio_hz - sat_.downlink_offset_hz - rit) /
+                                        (1.0 - sign * rr / kSpeedOfLightKmS)));
+    if (t && !near_band(spot, t->downlink_low_hz, t->downlink_high_hz)) return false;
+    sat_.downlink_hz = spot;
+  } else {
+    // The radio: RF / (1 - rr/c) + offset with the uplink correction on, RF + offset without.
+    const double factor = config_.uplink_correction ? 1.0 - rr / kSpeedOfLightKmS : 1.0;
+    spot = static_cast<Hz>(std::llround(static_cast<double>(radio_hz - sat_.uplink_offset_hz) * factor));
+    if (t && !near_band(spot, t->uplink_low_hz, t->uplink_high_hz)) return false;
+    sat_.uplink_hz = spot;
+  }
+  // The turned link's radio is where the operator put it: trakbox's next value starts from there.
+  (downlink ? sent_down_ : sent_up_) = radio_hz;
+  if (!now_s || config_.dial_rest_ms <= 0) {
+    waiting_.reset();
+    pair_from(downlink);
+  } else {
+    waiting_ = Waiting{downlink, *now_s};
+  }
   return true;
 }
 
-bool Tuner::dial_uplink(Hz radio_hz, double rr) {
-  // The radio: RF / (1 - rr/c) + offset with the uplink correction on, RF + offset without.
-  const double factor = config_.uplink_correction ? 1.0 - rr / kSpeedOfLightKmS : 1.0;
-  const Hz spot = static_cast<Hz>(std::llround(static_cast<double>(radio_hz - sat_.uplink_offset_hz) * factor));
+void Tuner::pair_from(bool downlink) {
   const auto t = transponder_of(sat_);
-  if (t && !near_band(spot, t->uplink_low_hz, t->uplink_high_hz)) return false;
-  sat_.uplink_hz = spot;
-  if (t) sat_.downlink_hz = t->downlink_for(sat_.uplink_hz);
+  if (!t) return;
+  if (downlink) {
+    sat_.uplink_hz = t->uplink_for(sat_.downlink_hz);
+    sent_up_.reset();   // the move goes out at once, whatever the Doppler step
+  } else {
+    sat_.downlink_hz = t->downlink_for(sat_.uplink_hz);
+    sent_down_.reset();
+  }
+}
+
+bool Tuner::settle(double now_s) {
+  const auto due = settle_due_s();
+  if (!due || now_s < *due) return false;
+  const bool downlink = waiting_->downlink_turned;
+  waiting_.reset();
+  pair_from(downlink);
   return true;
+}
+
+std::optional<double> Tuner::settle_due_s() const {
+  if (!waiting_) return std::nullopt;
+  return waiting_->last_turn_s + config_.dial_rest_ms / 1000.0;
+}
+
+Tuner::Turn Tuner::dial_turn(std::optional<Hz> down, std::optional<Hz> up, double rr, double now_s) {
+  if (down && up && sent_down_ && sent_up_) {
+    // Both dials moved by the same amount at once: RIT/XIT (or the radio's own shift), not a knob.
+    const Hz dd = *down - *sent_down_, du = *up - *sent_up_;
+    const Hz slack = dial_tolerance_downlink_hz() + dial_tolerance_uplink_hz();
+    if ((dd > 0) == (du > 0) && (dd - du <= slack && du - dd <= slack)) return Turn::rit_xit;
+  }
+  if (down) return turn(true, *down, rr, now_s) ? Turn::downlink : Turn::outside;
+  if (up) return turn(false, *up, rr, now_s) ? Turn::uplink : Turn::outside;
+  return Turn::none;
 }
 
 Hz Tuner::dial_tolerance_downlink_hz() const {
@@ -161,7 +225,8 @@ TuneCommands Tuner::compute(double elevation_deg, double rr) {
   auto emit = [&](std::optional<Hz> hz, std::optional<Hz>& sent, Mode mode,
                   std::optional<Mode>& sent_mode, std::optional<Hz>& out_hz,
                   std::optional<Mode>& out_mode) {
-    if (!hz || (sent && *sent == *hz)) return;
+    // Sent when it moved the mode's Doppler step from the last value sent (a first value always).
+    if (!hz || (sent && std::llabs(*sent - *hz) < doppler_step(mode))) return;
     if (mode != Mode::none && sent_mode != mode) {
       out_mode = mode;
       sent_mode = mode;

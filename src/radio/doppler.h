@@ -13,9 +13,12 @@
 //    radio and carried through the pass until 0 or a new satellite.
 //  - Uplink and downlink correction are enabled separately; a link that is off is not sent.
 //  - CAT for the full orbit, or only at AOS (elevation >= -2.0 deg).
-//  - What is sent is quantised to 10 Hz and sent only when the quantised value changes.
+//  - What is sent is quantised to 10 Hz and sent when it moved at least the mode's Doppler step from
+//    the last value sent (RadioConfig: SSB/CW 20 Hz, FM 100 Hz).
 #pragma once
 #include <optional>
+#include <string>
+#include <string_view>
 
 #include "radio/config.h"
 
@@ -112,8 +115,13 @@ class Tuner {
   void set_config(const RadioConfig& config);
   const RadioConfig& config() const { return config_; }
 
-  // A new satellite: forgets what was sent and the RIT.
-  void select(const SatelliteRadio& sat);
+  // A new satellite: forgets what was sent and the RIT. With its name, the correction remembered for
+  // it and its downlink mode (RadioConfig::corrections) is applied as the RIT at once.
+  void select(const SatelliteRadio& sat, std::string_view name = {});
+  // The key of the correction remembered for the selected satellite ("SO-50 FM"), empty without a name.
+  const std::string& correction_key() const { return correction_key_; }
+  // Whether the RIT in force came from a remembered correction or was set this pass.
+  bool correction_remembered() const { return !correction_key_.empty() && config_.corrections.contains(correction_key_); }
   const SatelliteRadio& satellite() const { return sat_; }
 
   // The operator stepped to another uplink channel of the same satellite: the uplink is sent
@@ -142,8 +150,25 @@ class Tuner {
   // other link moves to the paired spot of the transponder, and the next update sends from there.
   // A reading that puts the spot further than one passband width outside the passband is no turn
   // across the transponder (another band, a radio that reads another VFO): nothing changes, false.
+  // These two take the turn as rested: the other link moves at once.
   bool dial_downlink(Hz radio_hz, double range_rate_km_s);
   bool dial_uplink(Hz radio_hz, double range_rate_km_s);
+
+  // Operating practice: the readings of one tick (either or both links may have been turned), at
+  // now_s (seconds on any steady clock). The turned link's spot follows the dial at once, so the
+  // operator's frequency is never undone; the other link keeps its spot until the knob has rested
+  // RadioConfig::dial_rest_ms (no further turn), then settle() moves it to the paired spot. Both links
+  // moved together by the same amount is RIT/XIT (the IC-9700's RIT moves RX and TX in one report),
+  // never a turn: nothing moves.
+  enum class Turn { none, downlink, uplink, rit_xit, outside };
+  Turn dial_turn(std::optional<Hz> downlink_read_hz, std::optional<Hz> uplink_read_hz, double range_rate_km_s,
+                 double now_s);
+  // Moves the waiting link once the knob has rested; true when it did.
+  bool settle(double now_s);
+  // When the waiting link will move (seconds on the caller's clock), nothing when none waits.
+  std::optional<double> settle_due_s() const;
+  // The Doppler step of a mode (RadioConfig::doppler_step_*): the least change sent.
+  Hz doppler_step(Mode mode) const;
   // dial_tolerance_hz of a link for the last update's Doppler change (0 before two updates).
   Hz dial_tolerance_downlink_hz() const;
   Hz dial_tolerance_uplink_hz() const;
@@ -167,6 +192,16 @@ class Tuner {
  private:
   TuneCommands compute(double elevation_deg, double range_rate_km_s);  // update() without the two above
   void move_rit(Hz delta_hz);
+  // A turn of one link's dial: its spot follows; the other link's pairs now (rested) or at settle().
+  bool turn(bool downlink, Hz radio_hz, double rr, std::optional<double> now_s);
+  void pair_from(bool downlink);
+
+  struct Waiting {
+    bool downlink_turned;   // which knob was turned: the other link waits
+    double last_turn_s;
+  };
+  std::optional<Waiting> waiting_;
+  std::string correction_key_;
 
   RadioConfig config_;
   SatelliteRadio sat_;

@@ -6,6 +6,10 @@
 
 #include <mutex>
 
+#include <spdlog/spdlog.h>
+
+#include "radio/rigctld_link.h"
+
 namespace tb::radio {
 
 using Action = LinkError::Action;
@@ -23,12 +27,6 @@ void quiet_hamlib_once() {
   std::call_once(once, [] { rig_set_debug(RIG_DEBUG_NONE); });
 }
 
-std::string error_text(int rc) {
-  std::string s = rigerror2(rc);
-  if (auto nl = s.find('\n'); nl != std::string::npos) s.resize(nl);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\r')) s.pop_back();
-  return s;
-}
 
 rmode_t to_hamlib(Mode m) {
   switch (m) {
@@ -41,6 +39,15 @@ rmode_t to_hamlib(Mode m) {
   return RIG_MODE_NONE;
 }
 
+}  // namespace
+
+std::string hamlib_error_text(int rc) {
+  std::string s = rigerror2(rc);
+  if (auto nl = s.find('\n'); nl != std::string::npos) s.resize(nl);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\r')) s.pop_back();
+  return s;
+}
+
 // Hamlib writes to sockets with write(): a dead rigctld must give EPIPE, not kill the program.
 // SIGPIPE is delivered to the thread that wrote, so blocking it on the worker thread is enough.
 void block_sigpipe_on_this_thread() {
@@ -49,8 +56,6 @@ void block_sigpipe_on_this_thread() {
   sigaddset(&set, SIGPIPE);
   pthread_sigmask(SIG_BLOCK, &set, nullptr);
 }
-
-}  // namespace
 
 struct HamlibLink::Impl {
   RIG* rig = nullptr;
@@ -95,18 +100,37 @@ void HamlibLink::open() {
   const int rc = rig_open(rig);
   if (rc != RIG_OK) {
     rig_cleanup(rig);
-    throw LinkError(Action::reconnect, describe() + ": cannot open: " + error_text(rc));
+    throw LinkError(Action::reconnect, describe() + ": cannot open: " + hamlib_error_text(rc));
   }
   impl_->rig = rig;
   // Dial follow reads the radio: a cached frequency would be trakbox's own last command.
   rig_set_cache_timeout_ms(rig, HAMLIB_CACHE_ALL, 0);
   split_on_ = false;
+  satmode_on_ = false;
   scheme_ = opt_.scheme;
-  if (scheme_ == HamlibVfoScheme::automatic) {
-    const int both = RIG_VFO_MAIN | RIG_VFO_SUB;
-    scheme_ = opt_.model != RIG_MODEL_NETRIGCTL && (rig->state.vfo_list & both) == both
-                  ? HamlibVfoScheme::main_sub
-                  : HamlibVfoScheme::split;
+  const int both = RIG_VFO_MAIN | RIG_VFO_SUB;
+  const bool main_sub = opt_.model != RIG_MODEL_NETRIGCTL && (rig->state.vfo_list & both) == both;
+  if (scheme_ == HamlibVfoScheme::automatic)
+    scheme_ = main_sub ? HamlibVfoScheme::main_sub : HamlibVfoScheme::split;
+  // Satellite mode, where the backend has it (IC-9700, IC-9100, IC-910H, TS-2000, FT-847 ...), is
+  // switched on here, before the first frequency: the links then go on Main and Sub. A refusal is
+  // reported and Main/Sub used without it.
+  std::string note;
+  if (scheme_ == HamlibVfoScheme::main_sub && rig_has_set_func(rig, RIG_FUNC_SATMODE)) {
+    const int on = rig_set_func(rig, RIG_VFO_CURR, RIG_FUNC_SATMODE, 1);
+    satmode_on_ = on == RIG_OK;
+    if (!satmode_on_) note = "satellite mode refused: " + hamlib_error_text(on) + "; Main/Sub without it";
+  } else if (scheme_ == HamlibVfoScheme::split && opt_.scheme == HamlibVfoScheme::automatic) {
+    note = "Hamlib gives this model no satellite mode and no Main/Sub VFOs: the links go as split "
+           "(downlink on the receive VFO, uplink on VFO B)";
+  }
+  if (!announced_) {
+    const char* how = scheme_ == HamlibVfoScheme::split ? "split: downlink on the receive VFO, uplink on VFO B"
+                      : satmode_on_                     ? "satellite mode, downlink on Sub, uplink on Main"
+                                                        : "downlink on Sub, uplink on Main";
+    if (!note.empty()) spdlog::warn("radio {}: {}", describe(), note);
+    spdlog::info("radio {}: {}", describe(), how);
+    announced_ = true;
   }
 }
 
@@ -132,8 +156,18 @@ void HamlibLink::check() {
 void HamlibLink::require(int rc, const std::string& what) {
   if (rc == RIG_OK) return;
   const int code = rc < 0 ? -rc : rc;
-  const std::string msg = describe() + ": " + what + " failed: " + error_text(rc);
+  const std::string msg = describe() + ": " + what + " failed: " + hamlib_error_text(rc);
   throw LinkError(RIG_IS_SOFT_ERRCODE(code) ? Action::drop : Action::reconnect, msg);
+}
+
+// A tone, mode or satellite-mode command the radio refused, or did not answer (many radios ignore a
+// command they lack), is reported and dropped: Doppler goes on. Only an I/O error (the port or the
+// connection broke) reconnects.
+void HamlibLink::require_aux(int rc, const std::string& what) {
+  if (rc == RIG_OK) return;
+  const int code = rc < 0 ? -rc : rc;
+  if (code == RIG_EIO) require(rc, what);
+  throw LinkError(Action::drop, describe() + ": " + what + " refused: " + hamlib_error_text(rc) + "; Doppler tuning goes on");
 }
 
 void HamlibLink::ensure_split() {
@@ -163,22 +197,26 @@ void HamlibLink::set_mode(Link l, Mode mode) {
   const rmode_t m = to_hamlib(mode);
   if (m == RIG_MODE_NONE) return;
   if (scheme_ == HamlibVfoScheme::main_sub) {
-    require(rig_set_mode(impl_->rig, l == Link::downlink ? RIG_VFO_SUB : RIG_VFO_MAIN, m,
-                       RIG_PASSBAND_NOCHANGE),
-          "set mode");
+    require_aux(rig_set_mode(impl_->rig, l == Link::downlink ? RIG_VFO_SUB : RIG_VFO_MAIN, m,
+                             RIG_PASSBAND_NOCHANGE),
+                "set mode");
     return;
   }
   if (l == Link::downlink) {
-    require(rig_set_mode(impl_->rig, RIG_VFO_CURR, m, RIG_PASSBAND_NOCHANGE), "set mode");
+    require_aux(rig_set_mode(impl_->rig, RIG_VFO_CURR, m, RIG_PASSBAND_NOCHANGE), "set mode");
   } else {
     ensure_split();
-    require(rig_set_split_mode(impl_->rig, RIG_VFO_CURR, m, RIG_PASSBAND_NOCHANGE), "set split mode");
+    require_aux(rig_set_split_mode(impl_->rig, RIG_VFO_CURR, m, RIG_PASSBAND_NOCHANGE), "set split mode");
   }
 }
 
 Hz HamlibLink::read_frequency(Link l) {
   if (!impl_->rig) throw LinkError(Action::reconnect, describe() + " is not open");
   freq_t f = 0;
+  // Hamlib 4.5 answers get_freq from its cache whatever the cache timeout once it has seen the
+  // radio's transceive frames (use_cached_freq), and the IC-9700's carry no VFO: the Sub band then
+  // reads a stale value and dial follow would take it for a turn (seen against Hamlib's simic9700).
+  impl_->rig->state.use_cached_freq = 0;
   if (scheme_ == HamlibVfoScheme::main_sub) {
     require(rig_get_freq(impl_->rig, l == Link::downlink ? RIG_VFO_SUB : RIG_VFO_MAIN, &f),
             l == Link::downlink ? "get Sub frequency" : "get Main frequency");
@@ -194,8 +232,8 @@ Hz HamlibLink::read_frequency(Link l) {
 void HamlibLink::set_ctcss_tone(int tenths_hz) {
   if (!impl_->rig) throw LinkError(Action::reconnect, describe() + " is not open");
   const vfo_t vfo = scheme_ == HamlibVfoScheme::main_sub ? RIG_VFO_MAIN : RIG_VFO_CURR;
-  require(rig_set_ctcss_tone(impl_->rig, vfo, static_cast<tone_t>(tenths_hz)), "set CTCSS tone");
-  if (tenths_hz > 0) require(rig_set_func(impl_->rig, vfo, RIG_FUNC_TONE, 1), "CTCSS encoder on");
+  require_aux(rig_set_ctcss_tone(impl_->rig, vfo, static_cast<tone_t>(tenths_hz)), "set CTCSS tone");
+  if (tenths_hz > 0) require_aux(rig_set_func(impl_->rig, vfo, RIG_FUNC_TONE, 1), "CTCSS encoder on");
 }
 
 void HamlibLink::send_raw(const std::string& bytes) {
@@ -207,6 +245,9 @@ void HamlibLink::send_raw(const std::string& bytes) {
 }
 
 std::unique_ptr<RadioDriver> make_hamlib_radio(const HamlibOptions& options, WorkerTiming timing) {
+  // rigctld is spoken to in its own protocol (rigctld_link.h), not through the NET rigctl backend.
+  if (options.model == RIG_MODEL_NETRIGCTL)
+    return std::make_unique<WorkerRadio>(std::make_unique<RigctldLink>(options.path, options.scheme), timing);
   return std::make_unique<WorkerRadio>(std::make_unique<HamlibLink>(options), timing);
 }
 

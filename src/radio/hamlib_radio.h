@@ -1,17 +1,19 @@
-// Hamlib radios: any of Hamlib's backends on a serial device (--radio hamlib:MODEL:DEVICE[:BAUD]),
-// or a rigctld daemon through Hamlib's NET rigctl backend, model 2 (--radio rigctld:HOST:PORT).
-// Hamlib calls block, so the link runs on a WorkerRadio's thread: faults are reported in status()
-// and the link reconnects with backoff.
+// Hamlib radios: any of Hamlib's backends on a serial device (--radio hamlib:MODEL:DEVICE[:BAUD]).
+// A rigctld daemon (--radio rigctld:HOST:PORT, model 2) gets make_hamlib_radio's RigctldLink
+// (rigctld_link.h), which speaks rigctld's protocol itself. Hamlib calls block, so the link runs on
+// a WorkerRadio's thread: faults are reported in status() and the link reconnects with backoff.
 //
 // Which VFO carries which link on a dual-band radio:
 //   split    downlink on the current (RX) VFO with set_freq / set_mode, uplink on VFO B as the split
-//            TX VFO (set_split_vfo ON VFOB, set_split_freq / set_split_mode). Every backend that
-//            can transmit split has this, rigctld included; it is what Gpredict's F / I commands do.
+//            TX VFO (set_split_vfo ON VFOB, set_split_freq / set_split_mode).
 //   main_sub downlink on the Sub band, uplink on Main (set_freq on RIG_VFO_SUB / RIG_VFO_MAIN), as
-//            the IC-820H/821H/910H and TS-2000 run in satellite mode.
-//   automatic: main_sub when the opened backend lists both Main and Sub VFOs, split otherwise;
-//            always split through rigctld (the NET backend addresses VFOs only when rigctld runs
-//            with --vfo, so a Main/Sub choice would land both links on the current VFO).
+//            the IC-820H/821H/910H, IC-9700 and TS-2000 run in satellite mode. Where the backend has
+//            RIG_FUNC_SATMODE it is switched on at open, before the first frequency; both bands are
+//            read back (rig_get_freq on Sub and Main).
+//   automatic: main_sub when the opened backend lists both Main and Sub VFOs, split otherwise (said
+//            once in the log).
+// A refused (or unanswered) tone, mode or satellite-mode command is reported and dropped; Doppler
+// goes on. Only an I/O error reconnects.
 #pragma once
 #include <memory>
 #include <string>
@@ -52,16 +54,20 @@ class HamlibLink final : public RadioLink {
   // (rigctld gone): no traffic, so it may run often.
   void check() override;
 
-  // The scheme in use once open (automatic resolved).
+  // The scheme in use once open (automatic resolved), and whether satellite mode was switched on.
   HamlibVfoScheme scheme() const { return scheme_; }
+  bool satellite_mode() const { return satmode_on_; }
 
  private:
   void require(int rc, const std::string& what);
+  void require_aux(int rc, const std::string& what);
   void ensure_split();
   struct Impl;
   HamlibOptions opt_;
   HamlibVfoScheme scheme_ = HamlibVfoScheme::split;
   bool split_on_ = false;
+  bool satmode_on_ = false;
+  bool announced_ = false;   // the VFO scheme was logged (first open)
   std::unique_ptr<Impl> impl_;
 };
 
@@ -69,5 +75,10 @@ std::unique_ptr<RadioDriver> make_hamlib_radio(const HamlibOptions& options, Wor
 
 // Hamlib's name for a model ("Hamlib Dummy", "NET rigctl", ...); empty when unknown.
 std::string hamlib_model_name(int model);
+
+// Shared by the Hamlib and rigctld links: Hamlib's text for an error code (its first line; rigctld's
+// RPRT codes are Hamlib's, negated), and SIGPIPE blocked on the calling (worker) thread.
+std::string hamlib_error_text(int rc);
+void block_sigpipe_on_this_thread();
 
 }  // namespace tb::radio

@@ -311,11 +311,19 @@ void WorkerRadio::deliver_next(Lock& lock) {
 }
 
 void WorkerRadio::job_failed(Lock& lock, Job job, const LinkError& error) {
-  fail(error.what());
   if (error.action == LinkError::Action::drop) {
+    // Refused (a tone, a mode, an uplink the radio cannot carry): reported the first time, then
+    // only counted, so a refusal repeated every Doppler update neither fills the log nor makes the
+    // fault come and go each second. Nothing is retried; the rest of the tuning goes on.
+    ++status_.failures;
     retry_at_ = {};
+    if (!refusals_said_.insert(error.what()).second) return;
+    spdlog::warn("radio {}: {}", description_, error.what());
+    status_.fault = true;
+    status_.message = error.what();
     return;
   }
+  fail(error.what());
   if (error.action == LinkError::Action::reconnect) {
     link_fault_ = true;
     lose_link(lock);

@@ -9,6 +9,7 @@
 #include <deque>
 #include <memory>
 #include <mutex>
+#include <set>
 #include <stdexcept>
 #include <thread>
 
@@ -120,6 +121,7 @@ class WorkerRadio final : public RadioDriver {
   bool want_open_ = true;            // opened at start, reopened after a loss, with or without jobs
   bool link_fault_ = false;          // the port failed (open, lost) and has not worked since
   std::string logged_;               // the failure last logged (not again until something works)
+  std::set<std::string> refusals_said_;  // refused commands already reported (each once)
   std::chrono::steady_clock::time_point next_check_{};
   std::chrono::milliseconds backoff_{};
   std::chrono::steady_clock::time_point retry_at_{};

@@ -247,6 +247,10 @@ json to_json(const Model& m) {
                 {"cat_baud", rc.cat_baud},
                 {"dial_follow", rc.dial_follow},
                 {"uplink_radio", rc.uplink_radio},
+                {"dial_rest_ms", rc.dial_rest_ms},
+                {"doppler_step_ssb_hz", rc.doppler_step_ssb_hz},
+                {"doppler_step_fm_hz", rc.doppler_step_fm_hz},
+                {"corrections", rc.corrections},
                 {"parking",
                  {{"enabled", rc.parking.enabled},
                   {"rx_hz", rc.parking.rx_hz},
@@ -383,6 +387,16 @@ radio::RadioConfig radio_from(const json& j) {
       const auto spec = radio::parse_radio_spec(c.uplink_radio, "uplink radio");
       if (!spec.spec) bad(path(w, "uplink_radio"), spec.error);
     }
+  }
+  // Operating practice: absent in state files written before it.
+  if (r.contains("dial_rest_ms")) c.dial_rest_ms = static_cast<int>(integer(r, w, "dial_rest_ms", 0, 10000));
+  if (r.contains("doppler_step_ssb_hz")) c.doppler_step_ssb_hz = integer(r, w, "doppler_step_ssb_hz", 10, 1000);
+  if (r.contains("doppler_step_fm_hz")) c.doppler_step_fm_hz = integer(r, w, "doppler_step_fm_hz", 10, 10000);
+  if (r.contains("corrections")) {
+    const json& cs = field(r, w, "corrections");
+    if (!cs.is_object()) bad(path(w, "corrections"), "expected an object of \"SATELLITE MODE\": Hz");
+    for (const auto& [key, value] : cs.items())
+      c.corrections[key] = integer(cs, path(w, "corrections"), key.c_str(), -1'000'000, 1'000'000);
   }
   if (r.contains("parking")) {
     const std::string wp = w + ".parking";

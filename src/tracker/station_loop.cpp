@@ -1,6 +1,7 @@
 #include "tracker/station_loop.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 
@@ -76,7 +77,7 @@ void StationLoop::find_remote_in_database() {
 void StationLoop::follow_radio(int db_index, const orbit::Observation& obs) {
   if (!tuned_ || *tuned_ != db_index) {
     const radio::SatelliteRadio& sat = model_.db.satellites[static_cast<std::size_t>(db_index)].radio;
-    tuner_.select(sat);
+    tuner_.select(sat, model_.db.satellites[static_cast<std::size_t>(db_index)].name());
     tuned_ = db_index;
     if (sat.ctcss_tenths_hz > 0 || tone_sent_) radio_->set_ctcss_tone(sat.ctcss_tenths_hz);
     tone_sent_ = sat.ctcss_tenths_hz > 0;
@@ -88,18 +89,39 @@ void StationLoop::follow_radio(int db_index, const orbit::Observation& obs) {
   const radio::Link down = swap ? radio::Link::uplink : radio::Link::downlink;
   const radio::Link up = swap ? radio::Link::downlink : radio::Link::uplink;
   const bool follow = tuner_.dial_follow_active();
-  // Dial follow: a turn of either dial the radio reported since the last tick moves the spot.
+  // Dial follow: a turn of either dial the radio reported since the last tick moves that link's
+  // spot at once; the other link follows once the knob has rested (Tuner::settle).
   const std::optional<radio::Hz> turned_down = radio_->take_dial_turn(down);
   const std::optional<radio::Hz> turned_up = radio_->take_dial_turn(up);
-  auto follow_turn = [&](const char* which, radio::Hz hz, bool taken) {
-    if (taken)
-      spdlog::info("radio: {} dial turned to {} Hz: spot {} Hz down, {} Hz up", which, hz,
-                   tuner_.downlink_spot_hz(), tuner_.uplink_spot_hz());
-    else
-      spdlog::warn("radio: {} reads {} Hz, far outside the transponder: not taken as a turn of the dial", which, hz);
-  };
-  if (follow && turned_down) follow_turn("downlink", *turned_down, tuner_.dial_downlink(*turned_down, rr));
-  else if (follow && turned_up) follow_turn("uplink", *turned_up, tuner_.dial_uplink(*turned_up, rr));
+  // The knob's rest is timed on the station's clock (real time, or --clock-rate's).
+  const double now_s = std::chrono::duration<double>(clock_.now().time_since_epoch()).count();
+  if (follow && (turned_down || turned_up)) {
+    using Turn = radio::Tuner::Turn;
+    switch (tuner_.dial_turn(turned_down, turned_up, rr, now_s)) {
+      case Turn::downlink:
+      case Turn::uplink: {
+        const bool d = turned_down.has_value();
+        spdlog::info("radio: {} dial turned to {} Hz: spot {} Hz down, {} Hz up; the {} follows once the knob "
+                     "has rested {} ms", d ? "downlink" : "uplink", d ? *turned_down : *turned_up,
+                     tuner_.downlink_spot_hz(), tuner_.uplink_spot_hz(), d ? "uplink" : "downlink",
+                     tuner_.config().dial_rest_ms);
+        break;
+      }
+      case Turn::rit_xit:
+        if (!rit_said_)
+          spdlog::info("radio: both links moved together ({} / {} Hz): RIT/XIT, not a turn of the dial",
+                       *turned_down, *turned_up);
+        rit_said_ = true;
+        break;
+      case Turn::outside:
+        spdlog::warn("radio: {} reads {} Hz, far outside the transponder: not taken as a turn of the dial",
+                     turned_down ? "downlink" : "uplink", turned_down ? *turned_down : *turned_up);
+        break;
+      case Turn::none: break;
+    }
+  }
+  if (tuner_.settle(now_s))
+    spdlog::info("radio: the knob rested: spot {} Hz down, {} Hz up", tuner_.downlink_spot_hz(), tuner_.uplink_spot_hz());
   const radio::TuneCommands cmd = tuner_.update(obs.look.el_deg, rr);
   radio::DialGuard guard;
   // Not at the AOS edge: what the dial shows then is left from before the pass, not a new spot.
@@ -121,6 +143,21 @@ void StationLoop::set_uplink_radio(std::unique_ptr<radio::RadioDriver> uplink) {
   const int tone = tuned_ ? tuner_.satellite().ctcss_tenths_hz : 0;
   if (tone > 0) radio_->set_ctcss_tone(tone);
   tone_sent_ = tone > 0;
+}
+
+void StationLoop::adjust_correction(int direction) {
+  if (direction > 0) tuner_.rit_up();
+  else if (direction < 0) tuner_.rit_down();
+  else tuner_.rit_zero();
+  // The correction found for this satellite and mode is kept for its next pass (0 forgets it).
+  model_.radio.corrections = tuner_.config().corrections;
+}
+
+std::optional<std::chrono::milliseconds> StationLoop::radio_due_in() const {
+  const auto due = tuner_.settle_due_s();
+  if (!due) return std::nullopt;
+  const double now_s = std::chrono::duration<double>(clock_.now().time_since_epoch()).count();
+  return std::chrono::milliseconds(std::max<long long>(0, static_cast<long long>((*due - now_s) * 1000.0) + 1));
 }
 
 std::optional<radio::Hz> StationLoop::next_uplink() {
@@ -209,7 +246,11 @@ void StationLoop::tick() {
   rotator_->tick(now);
 }
 
-std::chrono::milliseconds StationLoop::next_tick_in() const { return std::min(rotator_->next_tick_in(), std::chrono::milliseconds(1000)); }
+std::chrono::milliseconds StationLoop::next_tick_in() const {
+  auto in = std::min(rotator_->next_tick_in(), std::chrono::milliseconds(1000));
+  if (const auto radio = radio_due_in()) in = std::min(in, *radio);   // the other link's move when the knob rests
+  return in;
+}
 
 std::optional<std::string> StationLoop::coverage_note(int db_index) const {
   if (!planned_ || planned_->db_index != db_index || planned_->plan.coverage.full()) return std::nullopt;

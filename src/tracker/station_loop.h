@@ -72,6 +72,11 @@ class StationLoop {
   // again. The downlink radio stays; everything is sent again at the next tick.
   void set_uplink_radio(std::unique_ptr<radio::RadioDriver> uplink);
   radio::Tuner& tuner() { return tuner_; }
+  // The realtime + / - / 0 keys (direction +1, -1, 0): the Tuner's RIT, remembered in the model as
+  // the correction for the satellite and mode (the caller saves the model).
+  void adjust_correction(int direction);
+  // How long until a link waiting for the knob to rest moves (tick then); nothing when none waits.
+  std::optional<std::chrono::milliseconds> radio_due_in() const;
   Tracker& tracker() { return tracker_; }
 
   // Compass azimuth/elevation the antenna points at now, if known.
@@ -116,6 +121,7 @@ class StationLoop {
   radio::Tuner tuner_;
   std::optional<int> tuned_;  // db index the tuner is set up for
   bool tone_sent_ = false;    // a CTCSS tone is on (turned off for a satellite without one)
+  bool rit_said_ = false;     // the log said once that RIT/XIT moved both links
   std::optional<RemoteFollow> remote_;
   std::optional<std::string> save_failure_;
   std::string notice_;

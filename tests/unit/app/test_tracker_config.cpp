@@ -85,3 +85,19 @@ TEST_CASE("--help and --version are text to print, not a configuration") {
   CHECK(h.print.find("--satrak-port N") != std::string::npos);
   CHECK(parse({"--version"}).print.rfind("trakbox ", 0) == 0);
 }
+
+TEST_CASE("--dial-rest and --doppler-step: the operating practice, checked before anything starts") {
+  const auto o = parse({"--dial-rest", "1500", "--doppler-step", "30,250"});
+  REQUIRE(o.config);
+  CHECK(o.config->dial_rest_ms == 1500);
+  CHECK(o.config->doppler_steps == std::pair<tb::radio::Hz, tb::radio::Hz>{30, 250});
+  const auto none = parse({});
+  REQUIRE(none.config);
+  CHECK_FALSE(none.config->dial_rest_ms);
+  CHECK_FALSE(none.config->doppler_steps);
+  CHECK(error_of({"--dial-rest", "20000"}).rfind("--dial-rest: ", 0) == 0);
+  CHECK(error_of({"--doppler-step", "20"}) ==
+        "--doppler-step: \"20\": expected SSB,FM in Hz, SSB/CW 10 to 1000 and FM 10 to 10000, e.g. 20,100");
+  CHECK(error_of({"--doppler-step", "20,5"}).rfind("--doppler-step: ", 0) == 0);
+  CHECK(error_of({"--doppler-step", "x,100"}).rfind("--doppler-step: ", 0) == 0);
+}

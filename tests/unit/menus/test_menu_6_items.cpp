@@ -231,6 +231,23 @@ TEST_CASE("6-7: D turns dial follow off and on at once; U names an uplink radio 
   CHECK(has(h.term.output(), "uplink radio \"bogus:x\": unknown radio \"bogus\""));
 }
 
+TEST_CASE("6-7: P sets the knob's rest and the Doppler steps at once") {
+  testing::MenuFixture f("7\rP1500\r30\r250\rQQ\r");
+  menus::menu_6_configuration(f.term, *f.services);
+  CHECK(f.model.radio.dial_rest_ms == 1500);
+  CHECK(f.model.radio.doppler_step_ssb_hz == 30);
+  CHECK(f.model.radio.doppler_step_fm_hz == 250);
+  CHECK(f.station->tuner().config().dial_rest_ms == 1500);
+  CHECK(f.station->tuner().doppler_step(radio::Mode::fm) == 250);
+  CHECK(f.saves == 1);
+  CHECK(has(f.term.output(), "Knob rest 1000 ms   Doppler step SSB/CW 20 Hz, FM 100 Hz   (P: change them)\n"));
+  CHECK(has(f.term.output(), "Knob rest 1500 ms   Doppler step SSB/CW 30 Hz, FM 250 Hz   (P: change them)\n"));
+  // Out of range: explained and asked again.
+  testing::MenuFixture g("7\rP20000\r\r\r\rQQ\r");
+  menus::menu_6_configuration(g.term, *g.services);
+  CHECK(g.model.radio.dial_rest_ms == 1000);
+}
+
 TEST_CASE("6-8 Measure shows ADC3 live from the simulated discriminator: a satellite above the horizon, the radio "
           "tuned 1 kHz high") {
   testing::MenuFixture f;

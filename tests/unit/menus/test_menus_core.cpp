@@ -1,5 +1,7 @@
 #include <doctest/doctest.h>
 
+#include <map>
+
 #include <algorithm>
 
 #include "fixture.h"
@@ -157,6 +159,28 @@ TEST_CASE("Line mode: the radio line shows the spot and what was sent; D turns d
   g.model.db.satellites[static_cast<std::size_t>(ao07)].radio.downlink_hz = 145'980'000;  // above 145.975
   menus::menu_1_realtime_tracking(g.term, *g.services);
   CHECK(contains(radio_lines(g.term.output()), "Spot D 145.980000 U 432.150000 | dial follow | SPOT OUTSIDE PASSBAND"));
+}
+
+TEST_CASE("Line mode: the + / - correction is remembered for the satellite and mode, shown, and 0 forgets it") {
+  testing::MenuFixture f("\r++Q");
+  f.term.timeouts_before_key = 1;
+  menus::menu_1_realtime_tracking(f.term, *f.services);
+  // AO-07 is followed (USB downlink): the correction is kept in the stored radio settings.
+  CHECK(f.model.radio.corrections == std::map<std::string, radio::Hz>{{"AO-07 USB", 200}});
+  CHECK(f.saves >= 2);
+  CHECK(contains(radio_lines(f.term.output()),
+                 "Spot D 145.950200 U 432.149800 | dial follow | correction +200 Hz kept for AO-07 USB"));
+  // The next time AO-07 is selected the correction is there from the start.
+  f.station->reconfigure();
+  testing::MenuFixture g("\r0Q");
+  g.term.timeouts_before_key = 1;
+  g.model.radio.corrections = {{"AO-07 USB", 200}};
+  g.station->reconfigure();
+  menus::menu_1_realtime_tracking(g.term, *g.services);
+  CHECK(contains(radio_lines(g.term.output()),
+                 "Spot D 145.950200 U 432.149800 | dial follow | correction +200 Hz kept for AO-07 USB"));
+  CHECK(g.term.output().find("Frequency offset 0 Hz\n") != std::string::npos);
+  CHECK(g.model.radio.corrections.empty());   // 0 forgot it
 }
 
 TEST_CASE("LinkNotices: one line when a link fails and one when it is back, not one per retry") {

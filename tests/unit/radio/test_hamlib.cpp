@@ -5,6 +5,7 @@
 
 #include "radio/factory.h"
 #include "radio/hamlib_radio.h"
+#include "radio/rigctld_link.h"
 #include "support.h"
 
 using namespace tb::radio;
@@ -25,11 +26,10 @@ bool have_hamlib_utils() {
   return false;
 }
 
-std::unique_ptr<tbtest::Child> start_rigctld(int port) {
-  auto child = std::make_unique<tbtest::Child>(
-      std::vector<std::string>{*tbtest::which("rigctld"), "-m", "1", "-T", "127.0.0.1", "-t",
-                               std::to_string(port)},
-      false);
+std::unique_ptr<tbtest::Child> start_rigctld(int port, bool vfo_mode = false) {
+  std::vector<std::string> args{*tbtest::which("rigctld"), "-m", "1", "-T", "127.0.0.1", "-t", std::to_string(port)};
+  if (vfo_mode) args.push_back("--vfo");
+  auto child = std::make_unique<tbtest::Child>(args, false);
   if (!child->started() || !eventually([&] { return tbtest::tcp_connectable(port); }, 5000ms))
     return nullptr;
   return child;
@@ -173,4 +173,71 @@ TEST_CASE("Hamlib: dial follow reads the radio back (dummy backend, both schemes
   REQUIRE(made.driver->wait_idle(10s));
   CHECK_FALSE(made.driver->status().fault);
   CHECK(rigctld_query(port, "c", 1) == "670");
+}
+
+TEST_CASE("Hamlib: a backend with RIG_FUNC_SATMODE gets satellite mode at open and the links on Main/Sub") {
+  // Hamlib's dummy lists SATMODE among its functions and Main and Sub among its VFOs, as the IC-9700
+  // (3081), IC-9100 (3068) and TS-2000 (2014) backends do.
+  HamlibLink link({1, "", 0, HamlibVfoScheme::automatic});
+  link.open();
+  CHECK(link.scheme() == HamlibVfoScheme::main_sub);
+  CHECK(link.satellite_mode());
+  link.set_frequency(Link::downlink, 435'647'270);
+  link.set_frequency(Link::uplink, 145'962'570);
+  CHECK(link.read_frequency(Link::downlink) == 435'647'270);
+  CHECK(link.read_frequency(Link::uplink) == 145'962'570);
+  link.close();
+  HamlibLink split({1, "", 0, HamlibVfoScheme::split});
+  split.open();
+  CHECK_FALSE(split.satellite_mode());
+  split.close();
+}
+
+TEST_CASE("rigctld --vfo: satellite mode on, downlink on Sub and uplink on Main, both read back, tone on Main") {
+  if (!have_hamlib_utils()) return;
+  const int port = tbtest::free_tcp_port();
+  REQUIRE(port > 0);
+  auto daemon = start_rigctld(port, true);
+  REQUIRE(daemon);
+  RigctldLink link("127.0.0.1:" + std::to_string(port), HamlibVfoScheme::automatic);
+  link.open();
+  CHECK(link.carry() == RigctldLink::Carry::main_sub);
+  CHECK(link.satellite_mode());
+  CHECK(rigctld_query(port, "u Main SATMODE", 1) == "1");
+  link.set_mode(Link::downlink, Mode::usb);
+  link.set_mode(Link::uplink, Mode::lsb);
+  link.set_frequency(Link::downlink, 435'647'270);
+  link.set_frequency(Link::uplink, 145'962'570);
+  CHECK(rigctld_query(port, "f Sub", 1) == "435647270");
+  CHECK(rigctld_query(port, "f Main", 1) == "145962570");
+  CHECK(rigctld_query(port, "m Sub", 2) == "USB\n2400");   // passband 0: the mode's normal one
+  CHECK(rigctld_query(port, "m Main", 2) == "LSB\n2400");
+  // The operator's dial on each band, read back per VFO.
+  CHECK(rigctld_query(port, "F Sub 435657270", 1) == "RPRT 0");
+  CHECK(link.read_frequency(Link::downlink) == 435'657'270);
+  CHECK(link.read_frequency(Link::uplink) == 145'962'570);
+  link.set_ctcss_tone(670);
+  CHECK(rigctld_query(port, "c Main", 1) == "670");
+  link.close();
+}
+
+TEST_CASE("rigctld without --vfo: split as Gpredict does it, both links read back with f and i") {
+  if (!have_hamlib_utils()) return;
+  const int port = tbtest::free_tcp_port();
+  REQUIRE(port > 0);
+  auto daemon = start_rigctld(port);
+  REQUIRE(daemon);
+  RigctldLink link("127.0.0.1:" + std::to_string(port), HamlibVfoScheme::automatic);
+  link.open();
+  CHECK(link.carry() == RigctldLink::Carry::split);
+  CHECK_FALSE(link.satellite_mode());
+  link.set_frequency(Link::downlink, 435'647'270);
+  link.set_frequency(Link::uplink, 145'962'570);   // S 1 VFOB, I, then the check that split holds
+  CHECK(link.can_read(Link::uplink));
+  CHECK(rigctld_query(port, "s", 2) == "1\nVFOB");
+  CHECK(link.read_frequency(Link::downlink) == 435'647'270);
+  CHECK(link.read_frequency(Link::uplink) == 145'962'570);
+  CHECK(rigctld_query(port, "F 435657270", 1) == "RPRT 0");   // the operator's dial
+  CHECK(link.read_frequency(Link::downlink) == 435'657'270);
+  link.close();
 }

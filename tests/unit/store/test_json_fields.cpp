@@ -82,3 +82,32 @@ TEST_CASE("the GPS settings round-trip; a bad source or threshold is refused by 
   j.erase("gps");
   CHECK(model_from_json(j).gps == tb::station::GpsSettings{});
 }
+
+TEST_CASE("The radio's operating practice and remembered corrections round-trip; bad ones name their field") {
+  Model m;
+  m.radio.dial_rest_ms = 1500;
+  m.radio.doppler_step_ssb_hz = 30;
+  m.radio.doppler_step_fm_hz = 250;
+  m.radio.corrections = {{"SO-50 FM", 300}, {"RS-44 USB", -1200}};
+  json j = to_json(m);
+  CHECK(j["radio"]["corrections"]["SO-50 FM"] == 300);
+  CHECK(model_from_json(j).radio == m.radio);
+  // A state file from before them: the factory values.
+  json old = j;
+  for (const char* k : {"dial_rest_ms", "doppler_step_ssb_hz", "doppler_step_fm_hz", "corrections"}) old["radio"].erase(k);
+  const Model back = model_from_json(old);
+  CHECK(back.radio.dial_rest_ms == 1000);
+  CHECK(back.radio.doppler_step_ssb_hz == 20);
+  CHECK(back.radio.doppler_step_fm_hz == 100);
+  CHECK(back.radio.corrections.empty());
+  json bad = j;
+  bad["radio"]["corrections"] = json::array();
+  CHECK_THROWS_WITH_AS(model_from_json(bad), "radio.corrections: expected an object of \"SATELLITE MODE\": Hz",
+                       std::runtime_error);
+  bad = j;
+  bad["radio"]["corrections"]["SO-50 FM"] = "lots";
+  CHECK_THROWS_AS(model_from_json(bad), std::runtime_error);
+  bad = j;
+  bad["radio"]["doppler_step_fm_hz"] = 5;
+  CHECK_THROWS_WITH_AS(model_from_json(bad), "radio.doppler_step_fm_hz: value 5 outside 10 .. 10000", std::runtime_error);
+}
