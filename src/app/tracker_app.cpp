@@ -450,7 +450,8 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   app.set_events(
       [&](const tracker::Event& e) {
         const nlohmann::json j = tracker::to_json(e);
-        log->info("event: {}", j.dump());
+        // Named, not repeated: the detail (a link's fault) is logged by whoever met it.
+        log->info("event: {}{}", e.kind, e.satellite.empty() ? "" : " " + e.satellite);
         hooks.fire(e);
         if (attach) attach->publish(j);
       },
