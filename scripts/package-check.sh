@@ -2,7 +2,8 @@
 # package-check.sh [BUILD_DIR]: builds the Debian package from the build tree (cpack -G DEB),
 # checks it with lintian (no errors) and scripts/hardening-check.sh (the build's hardening), installs it with dpkg, runs the installed trakbox from / with
 # an empty state directory (--version, passes on the installed data, host mode ?A through the
-# unattended --service mode, man -w, systemd-analyze verify on the unit), then removes the package.
+# unattended --service mode, man -w, systemd-analyze verify on the unit, the trakbox group and a
+# member of it attaching to the service's socket), then removes the package.
 # Run by scripts/test.sh in CI (a fresh machine, as root); docs/install.md.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -22,7 +23,13 @@ if dpkg-query -W -f='${Status}' trakbox 2>/dev/null | grep -q "install ok instal
   echo "trakbox is installed already: not touching it"; exit 1
 fi
 $SUDO dpkg -i "$deb" >/dev/null
-cleanup() { $SUDO dpkg -r trakbox >/dev/null 2>&1 || true; rm -rf "$state"; }
+svcpid=""
+cleanup() {
+  [ -n "$svcpid" ] && kill "$svcpid" 2>/dev/null
+  for u in tbcheck-member tbcheck-other; do $SUDO userdel "$u" >/dev/null 2>&1 || true; done
+  $SUDO dpkg -r trakbox >/dev/null 2>&1 || true
+  rm -rf "$state"; $SUDO rm -rf "${rt:-}" "${svcstate:-}"
+}
 state=$(mktemp -d)
 trap cleanup EXIT
 dpkg -L trakbox | grep -E '^/usr/bin/trakbox$|^/usr/share/trakbox/amateur.tle$|trakbox.1.gz$|trakbox.service$' >/dev/null
@@ -64,6 +71,38 @@ echo "service exit status $code; its standard error (the journal):"; cat "$state
 [ "$(stat -c %a "$state")" = 700 ] && [ "$(stat -c %a "$state/trakbox-state.json")" = 600 ]
 man -w trakbox
 systemd-analyze verify /usr/lib/systemd/system/trakbox.service
+
+# The attach socket (docs/service.md): the package made the trakbox group; the unit runs the
+# service in it with /run/trakbox (RuntimeDirectory, 0750) for its socket. systemd is not init
+# here, so the service's user is played by hand as the unit sets it up: nobody, group trakbox, a
+# runtime directory nobody:trakbox 0750. A member of the group attaches; another user may not.
+getent group trakbox
+unit=/usr/lib/systemd/system/trakbox.service
+for line in '^Group=trakbox$' '^RuntimeDirectory=trakbox$' '^RuntimeDirectoryMode=0750$' \
+            '^ExecStart=.* --socket /run/trakbox/trakbox.sock '; do
+  grep -Eq -- "$line" "$unit" || { echo "$unit: no line matching $line"; exit 1; }
+done
+rt=$(mktemp -d); svcstate=$(mktemp -d)
+$SUDO chown nobody:trakbox "$rt" "$svcstate"; $SUDO chmod 0750 "$rt"; $SUDO chmod 0700 "$svcstate"
+$SUDO setpriv --reuid=nobody --regid=trakbox --clear-groups -- \
+  /usr/bin/trakbox --service --state "$svcstate" --socket "$rt/trakbox.sock" --satrak-port 0 </dev/null 2>/dev/null &
+svcpid=$!
+for _ in $(seq 200); do [ -S "$rt/trakbox.sock" ] && break; sleep 0.1; done
+stat -c '%n %a %U:%G' "$rt/trakbox.sock"
+[ "$(stat -c '%a %G' "$rt/trakbox.sock")" = "660 trakbox" ]
+$SUDO useradd --system --no-create-home --shell /usr/sbin/nologin -G trakbox tbcheck-member
+$SUDO useradd --system --no-create-home --shell /usr/sbin/nologin tbcheck-other
+$SUDO runuser -u tbcheck-member -- /usr/bin/trakbox status --socket "$rt/trakbox.sock" | head -3
+attached=$(echo | $SUDO runuser -u tbcheck-member -- timeout 20 /usr/bin/trakbox attach --socket "$rt/trakbox.sock")
+grep -q -- "----- MAIN MENU -----" <<<"$attached" || { echo "the member did not see the menus: $attached"; exit 1; }
+grep -q "detached from trakbox" <<<"$attached"
+echo "a member of trakbox attached: $(grep -c '' <<<"$attached") lines"
+if $SUDO runuser -u tbcheck-other -- /usr/bin/trakbox status --socket "$rt/trakbox.sock" 2>"$rt.err"; then
+  echo "a user outside the trakbox group could read the status"; exit 1
+fi
+grep -q "permission denied" "$rt.err"; cat "$rt.err"; rm -f "$rt.err"
+kill -TERM "$svcpid"; wait "$svcpid"; svcpid=""
+[ ! -e "$rt/trakbox.sock" ]
 $SUDO dpkg -r trakbox >/dev/null
 ! dpkg-query -W -f='${Status}' trakbox 2>/dev/null | grep -q "install ok installed"
 echo "== package check: $((SECONDS - start)) s"

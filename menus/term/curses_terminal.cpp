@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <clocale>
+#include <cstdlib>
 #include <cmath>
 #include <curses.h>
 #include <numbers>
@@ -124,6 +125,10 @@ LivePlacement place_live_block(int live_row, int cursor_row, int cursor_col, int
 
 struct CursesTerminal::Impl {
   WaitReadable wait;
+  SCREEN* screen = nullptr;  // this terminal's screen (the others' may be current)
+  void select() const {
+    if (screen) set_term(screen);
+  }
   WINDOW* text = nullptr;
   WINDOW* status = nullptr;
   int live_y = -1;
@@ -155,7 +160,12 @@ struct CursesTerminal::Impl {
 CursesTerminal::CursesTerminal(WaitReadable wait) : impl_(std::make_unique<Impl>()) {
   impl_->wait = std::move(wait);
   std::setlocale(LC_ALL, "");
-  initscr();
+  // initscr's own screen, kept: it is selected again before each call when attached clients have
+  // screens too. (initscr is newterm on $TERM, stdout and stdin, and exits with its message when
+  // the terminal type is unknown: it is the fallback.)
+  const char* term_type = std::getenv("TERM");
+  impl_->screen = term_type ? newterm(term_type, stdout, stdin) : nullptr;
+  if (!impl_->screen) initscr();
   raw();  // Ctrl-Z ends uploads here, it must not suspend the program
   noecho();
   nonl();
@@ -173,16 +183,52 @@ CursesTerminal::CursesTerminal(WaitReadable wait) : impl_(std::make_unique<Impl>
   doupdate();
 }
 
+CursesTerminal::CursesTerminal(::screen* screen, int rows, int cols) : impl_(std::make_unique<Impl>()) {
+  impl_->screen = screen;
+  impl_->select();
+  noecho();
+  nonl();
+  if (has_colors()) {
+    start_color();
+    use_default_colors();
+    init_pair(1, COLOR_GREEN, -1);
+    init_pair(2, COLOR_YELLOW, -1);
+    init_pair(3, COLOR_CYAN, -1);
+    impl_->colors = true;
+  }
+  resize(rows, cols);
+}
+
+::screen* new_screen(const std::string& term_type, std::FILE* out, std::FILE* in) {
+  return newterm(term_type.c_str(), out, in);
+}
+
 CursesTerminal::~CursesTerminal() {
+  impl_->select();
   if (impl_->text) delwin(impl_->text);
   if (impl_->status) delwin(impl_->status);
   endwin();
 }
 
-int CursesTerminal::columns() const { return COLS; }
-int CursesTerminal::rows() const { return LINES - 1; }
+int CursesTerminal::columns() const {
+  impl_->select();
+  return COLS;
+}
+int CursesTerminal::rows() const {
+  impl_->select();
+  return LINES - 1;
+}
+
+void CursesTerminal::resize(int rows, int cols) {
+  impl_->select();
+  resize_term(rows, cols);
+  impl_->layout();
+  clearok(curscr, TRUE);
+  flush();
+}
 
 void CursesTerminal::write(std::string_view text) {
+  impl_->select();
   for (char c : text) {
     if (c == '\a') {
       beep();
@@ -192,9 +238,13 @@ void CursesTerminal::write(std::string_view text) {
   }
 }
 
-void CursesTerminal::bell() { beep(); }
+void CursesTerminal::bell() {
+  impl_->select();
+  beep();
+}
 
 void CursesTerminal::clear() {
+  impl_->select();
   werase(impl_->text);
   wmove(impl_->text, 0, 0);
   impl_->live_y = -1;
@@ -202,6 +252,7 @@ void CursesTerminal::clear() {
 }
 
 void CursesTerminal::flush() {
+  impl_->select();
   wnoutrefresh(impl_->text);
   impl_->draw_status();
   wnoutrefresh(impl_->text);  // leave the cursor in the text window
@@ -209,6 +260,7 @@ void CursesTerminal::flush() {
 }
 
 void CursesTerminal::live(const std::vector<std::string>& lines) {
+  impl_->select();
   WINDOW* w = impl_->text;
   const int h = getmaxy(w);
   const int n = static_cast<int>(lines.size());
@@ -226,6 +278,7 @@ void CursesTerminal::live(const std::vector<std::string>& lines) {
 }
 
 void CursesTerminal::end_live() {
+  impl_->select();
   if (impl_->live_y >= 0) {
     wmove(impl_->text, std::min(getmaxy(impl_->text) - 1, impl_->live_y + impl_->live_lines), 0);
   }
@@ -235,6 +288,7 @@ void CursesTerminal::end_live() {
 }
 
 void CursesTerminal::status(std::string_view text) {
+  impl_->select();
   impl_->status_text.assign(text);
   impl_->draw_status();
   wnoutrefresh(impl_->text);
@@ -242,6 +296,7 @@ void CursesTerminal::status(std::string_view text) {
 }
 
 void CursesTerminal::graphics(const Graphics& g) {
+  impl_->select();
   WINDOW* w = impl_->text;
   const int top = (impl_->live_y >= 0 ? impl_->live_y + impl_->live_lines : getcury(w)) + 1;
   // The window's last row stays empty: writing its last cell would scroll a scrolling window.
@@ -284,9 +339,11 @@ bool CursesTerminal::closed() const { return impl_->closed; }
 
 int CursesTerminal::next_key(std::optional<Duration> timeout) {
   flush();
+  if (!impl_->wait) return kEndOfInput;  // an output-only screen: its keys come from elsewhere
   if (impl_->closed) return kEndOfInput;
   const auto deadline = timeout ? std::optional(std::chrono::steady_clock::now() + *timeout) : std::nullopt;
   for (;;) {
+    impl_->select();
     const int ch = wgetch(impl_->text);
     if (ch != ERR) {
       switch (ch) {

@@ -1,9 +1,13 @@
 // Full-screen ncurses front end: the menus' text in a scrolling area, live blocks redrawn in place,
 // a status line at the bottom, and (in realtime tracking) a polar sky plot and a world map.
 #pragma once
+#include <cstdio>
 #include <memory>
+#include <string>
 
 #include "menus/term/terminal.h"
+
+struct screen;  // ncurses' SCREEN
 
 namespace tb::term {
 
@@ -11,6 +15,11 @@ class CursesTerminal final : public Terminal {
  public:
   // Takes over the controlling terminal (stdin/stdout). Restores it on destruction.
   explicit CursesTerminal(WaitReadable wait);
+  // Output only, on a screen of the caller's (new_screen: an attached client's terminal,
+  // app/attach_server.cpp); every call selects it first, so several can live in one process. The
+  // screen stays the caller's: on destruction the windows go and the screen is left with endwin,
+  // ready for another CursesTerminal. Keys come from elsewhere.
+  CursesTerminal(::screen* screen, int rows, int cols);
   ~CursesTerminal() override;
   CursesTerminal(const CursesTerminal&) = delete;
   CursesTerminal& operator=(const CursesTerminal&) = delete;
@@ -26,6 +35,8 @@ class CursesTerminal final : public Terminal {
   bool full_screen() const override { return true; }
   int columns() const override;
   int rows() const override;
+  // The terminal's size changed: the windows are laid out again (empty: the caller redraws).
+  void resize(int rows, int cols);
   // True once Ctrl-C was typed: it ends the input for good (every later read sees the end).
   bool closed() const override;
 
@@ -36,6 +47,11 @@ class CursesTerminal final : public Terminal {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+// A screen of terminal type term_type writing to `out` (input `in` is never read); null when the
+// type is unknown here. Screens are never deleted: ncurses 6.4's delscreen frees the windows of
+// every screen, not only its own, so a caller keeps a screen for the next client of its type.
+::screen* new_screen(const std::string& term_type, std::FILE* out, std::FILE* in);
 
 // Pure drawing helpers (tested without a screen): a character grid for a polar sky plot and for an
 // equirectangular world map with a ground track.

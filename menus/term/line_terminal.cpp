@@ -35,22 +35,21 @@ LineTerminal::~LineTerminal() {
   }
 }
 
-std::unique_ptr<LineTerminal> LineTerminal::open_serial(const std::string& device, int baud, WaitReadable wait,
-                                                        std::string& error) {
+int LineTerminal::open_serial_fd(const std::string& device, int baud, std::string& error) {
   if (!valid_terminal_baud(baud)) {
     error = "--baud " + std::to_string(baud) + ": expected 1200, 2400, 4800, 9600 or 19200";
-    return nullptr;
+    return -1;
   }
   const int fd = ::open(device.c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC);
   if (fd < 0) {
     error = "--tty " + device + ": cannot open: " + std::strerror(errno);
-    return nullptr;
+    return -1;
   }
   termios tio{};
   if (::tcgetattr(fd, &tio) != 0) {
     error = "--tty " + device + ": not a serial line: " + std::strerror(errno);
     ::close(fd);
-    return nullptr;
+    return -1;
   }
   ::cfmakeraw(&tio);
   tio.c_cflag &= ~static_cast<tcflag_t>(CSTOPB | PARENB | CSIZE | CRTSCTS);
@@ -62,8 +61,15 @@ std::unique_ptr<LineTerminal> LineTerminal::open_serial(const std::string& devic
   if (::tcsetattr(fd, TCSANOW, &tio) != 0) {
     error = "--tty " + device + ": cannot set " + std::to_string(baud) + " 8N1: " + std::strerror(errno);
     ::close(fd);
-    return nullptr;
+    return -1;
   }
+  return fd;
+}
+
+std::unique_ptr<LineTerminal> LineTerminal::open_serial(const std::string& device, int baud, WaitReadable wait,
+                                                        std::string& error) {
+  const int fd = open_serial_fd(device, baud, error);
+  if (fd < 0) return nullptr;
   return std::make_unique<LineTerminal>(fd, fd, std::move(wait), true, true);
 }
 

@@ -19,6 +19,8 @@ class LineTerminal final : public Terminal {
   // sets error to a one-line reason naming the device.
   static std::unique_ptr<LineTerminal> open_serial(const std::string& device, int baud, WaitReadable wait,
                                                    std::string& error);
+  // The same port opened and set up, as a descriptor (the service's --tty); -1 with the error.
+  static int open_serial_fd(const std::string& device, int baud, std::string& error);
 
   void write(std::string_view text) override;
   void bell() override;

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "app/attach_client.h"
 #include "app/cli_elements.h"
 #include "app/cli_orbit.h"
 #include "app/options.h"
@@ -28,6 +29,11 @@ std::string usage() {
          orbit_commands_summary() +
          "  satrak HOST[:PORT] COMMAND...   send Satrak ACU commands (STATUS?, GOTO=,10,20, ...) and print\n"
          "                      the replies\n"
+         "  attach [--socket PATH|--state DIR]   the menus of the running station (the service) on this\n"
+         "                      terminal; Ctrl-] detaches, Ctrl-T takes the keyboard\n"
+         "  status [--json] [--socket PATH|--state DIR]   what the running station does; exit 0 healthy,\n"
+         "                      1 running with problems, 3 not running\n"
+         "  events [--socket PATH|--state DIR]   the running station's events as JSON lines\n"
          "  host [options]      host mode (menu 7's commands: AZ EL, MU, MD, FU, FD, S, ?A, ?, Q) on\n"
          "                      stdin/stdout for scripts; takes the options above\n" +
          "\n"
@@ -62,7 +68,10 @@ int main(int argc, char** argv) {
     if (command == "elements") return run_elements(std::move(rest));
     if (command == "host") return run_tracker(rest, FrontEnd::host);
     if (command == "satrak") return satrak::run_cli(rest, std::cout, std::cerr);
-    std::fprintf(stderr, "trakbox: %s: unknown command; expected propagate, schedule, passes, next, elements, host or satrak (see trakbox --help)\n",
+    if (command == "attach") return run_attach(rest);
+    if (command == "status") return run_status(rest);
+    if (command == "events") return run_events(rest);
+    std::fprintf(stderr, "trakbox: %s: unknown command; expected propagate, schedule, passes, next, elements, host, satrak, attach, status or events (see trakbox --help)\n",
                  command.c_str());
     return kExitUsage;
   }

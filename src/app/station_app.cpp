@@ -26,6 +26,7 @@
 #include "store/refresh.h"
 #include "store/station_file.h"
 #include "tracker/elements_refresh.h"
+#include "tracker/events.h"
 #include "tracker/station_loop.h"
 #include "util/files.h"
 
@@ -113,6 +114,7 @@ struct StationApp::Impl {
         refresh->poll(tracker::ElementsRefresh::wall_now());
         station->set_notice(refresh->status_word(clock.now()));
       }
+      find_events();
       if (terminal) terminal->status(station->status_line());
       schedule_tick();
     });
@@ -129,6 +131,11 @@ struct StationApp::Impl {
     while (!done() && std::chrono::steady_clock::now() < end) app.wait_readable(-1, std::chrono::milliseconds(50));
   }
   void start_stored_tracking();
+  void find_events();
+  void emit(tracker::Event e) {
+    if (e.time == orbit::UtcTime{}) e.time = clock.now();
+    if (events) events(e);
+  }
   bool reread_data(const std::string& data_dir);  // false: the element file was not used
   void park_before_leaving(StationApp& app);
 
@@ -150,6 +157,12 @@ struct StationApp::Impl {
   term::Terminal* terminal = nullptr;
   satrak::Unit* satrak = nullptr;
   nlohmann::json satrak_saved;  // kept as loaded when the Satrak server is off
+  std::optional<std::chrono::system_clock::time_point> last_saved;
+  // Events: where they go, the pass events, and what the last tick saw of the links and refresh.
+  std::function<void(const tracker::Event&)> events;
+  std::unique_ptr<tracker::PassEventSource> pass_events;
+  bool rotator_ok = true, radio_ok = true;
+  std::string refresh_result;
   std::unique_ptr<gps::Monitor> gps;
   std::unique_ptr<gps::GpsdClient> gps_client;  // after gps: stopped before it goes
   void log_notes(const std::vector<gps::Note>& notes) {
@@ -163,6 +176,39 @@ struct StationApp::Impl {
   }
   void on_gps_report(const gps::Report& r, StationApp& app);
 };
+
+void StationApp::Impl::find_events() {
+  if (!events) return;
+  for (auto& e : pass_events->step(clock.now())) emit(std::move(e));
+  const auto link = [this](bool now_ok, bool& was_ok, const char* what, const std::string& message) {
+    if (now_ok == was_ok) return;
+    was_ok = now_ok;
+    tracker::Event e;
+    e.kind = now_ok ? "link-back" : "link-lost";
+    e.detail = now_ok ? std::string(what) : std::string(what) + ": " + message;
+    emit(std::move(e));
+  };
+  const auto rot = station->rotator().status().link;
+  link(rot.state != rotator::LinkState::fault, rotator_ok, "rotator", rot.message);
+  const radio::RadioStatus rad = station->radio().status();
+  link(!rad.fault, radio_ok, "radio", rad.message);
+  if (refresh && refresh->last_result() != refresh_result) {
+    refresh_result = refresh->last_result();
+    tracker::Event e;
+    e.kind = "elements";
+    e.detail = refresh_result;
+    emit(std::move(e));
+  }
+}
+
+void StationApp::set_events(std::function<void(const tracker::Event&)> sink, std::chrono::seconds lead) {
+  impl_->events = std::move(sink);
+  impl_->pass_events = std::make_unique<tracker::PassEventSource>(impl_->model, impl_->tracker, lead);
+  if (impl_->refresh) impl_->refresh_result = impl_->refresh->last_result();
+}
+
+std::optional<std::chrono::system_clock::time_point> StationApp::last_saved() const { return impl_->last_saved; }
+
 
 void StationApp::Impl::on_gps_report(const gps::Report& r, StationApp& app) {
   const std::string before = gps->status_word();
@@ -252,8 +298,13 @@ std::optional<std::string> StationApp::save() {
   if (!m.file.save(doc, err)) {
     m.log->error("state not saved: {}", err);
     if (m.station) m.station->set_save_failure(err);
+    tracker::Event e;
+    e.kind = "save-failed";
+    e.detail = err;
+    m.emit(std::move(e));
     return err;
   }
+  m.last_saved = m.clock.now();
   if (m.station && m.station->save_failure()) {
     m.log->info("state saved again: memory and disk agree");
     m.station->set_save_failure(std::nullopt);
@@ -352,13 +403,14 @@ void StationApp::Impl::park_before_leaving(StationApp& app) {
   log->info("service: antenna {}", station->rotator().status().on_target ? "parked" : "not parked in time");
 }
 
-int StationApp::run_service(const std::string& data_dir) {
+int StationApp::run_service(const std::string& data_dir, const std::function<void()>& menus) {
   Impl& m = *impl_;
   m.unattended = true;
   m.start_stored_tracking();
   for (;;) {
     try {
-      m.run_forever();
+      if (menus) menus();
+      else m.run_forever();
     } catch (const Shutdown&) {
       if (m.last_signal == SIGHUP) {
         if (m.reread_data(data_dir)) save();

@@ -34,6 +34,7 @@ namespace tb::station {
 class RealTimeClock;
 }
 namespace tb::tracker {
+struct Event;
 class ElementsRefresh;
 class StationLoop;
 class Tracker;
@@ -76,6 +77,13 @@ class StationApp {
   // Writes the state document; the reason when it could not.
   std::optional<std::string> save();
 
+  // When the state was last saved (the station's clock), nothing before the first save.
+  std::optional<std::chrono::system_clock::time_point> last_saved() const;
+
+  // Where the station's events go (tracker/events.h: AOS and LOS of the tracking list, element
+  // refreshes, links lost and back, failed saves), found on every tick; lead: the AOS event comes
+  // this long before AOS.
+  void set_events(std::function<void(const tracker::Event&)> sink, std::chrono::seconds lead);
   // The GPS receiver of model().gps.source (nothing when none): its client thread reports to the
   // loop, which logs each problem once, follows the receiver when model().gps.follow says so (and
   // saves then), and shows the GPS word on the status line. stop_gps() ends the thread.
@@ -83,9 +91,10 @@ class StationApp {
   void stop_gps();
 
   // --service: tracks what the stored configuration says, serves, re-reads the data directory's
-  // element and freq/mode files on SIGHUP, and on SIGTERM parks (when parking is on). Returns the
-  // exit status; the caller saves.
-  int run_service(const std::string& data_dir);
+  // element and freq/mode files on SIGHUP, and on SIGTERM parks (when parking is on). `menus`,
+  // when given, runs the menus for attached terminals on the event loop meanwhile (it is started
+  // again after a SIGHUP). Returns the exit status; the caller saves.
+  int run_service(const std::string& data_dir, const std::function<void()>& menus = {});
 
  private:
   struct Impl;

@@ -15,8 +15,13 @@
 #include <spdlog/sinks/stdout_sinks.h>
 #include <spdlog/spdlog.h>
 
+#include "app/attach_client.h"
+#include "app/attach_server.h"
 #include "app/build_info.h"
+#include "app/event_hooks.h"
+#include "app/state_lock.h"
 #include "app/station_app.h"
+#include "app/status.h"
 #include "menus/menus.h"
 #include "menus/standalone.h"
 #include "menus/term/curses_terminal.h"
@@ -29,6 +34,7 @@
 #include "app/stored_drivers.h"
 #include "store/drivers.h"
 #include "tracker/elements_refresh.h"
+#include "tracker/events.h"
 #include "tracker/station_loop.h"
 
 namespace tb::app {
@@ -279,10 +285,107 @@ void run_front_end(StationApp& app, const TrackerConfig& c, const Startup& s, te
   }
 }
 
-int run_service(StationApp& app, const TrackerConfig& c, const Startup& s) {
+int run_service(StationApp& app, const TrackerConfig& c, const Startup& s, AttachServer* attach) {
   for (const auto& n : s.notes) app.log().warn("{}", n);
   if (s.ram_lost) app.log().error("Data in RAM was lost !! Set default parameter ! (the damaged state was kept as {})", s.kept);
-  return app.run_service(c.data_dir);
+  if (!attach) return app.run_service(c.data_dir);
+  // The menus for attached terminals, on the station's loop; with nobody attached they wait at
+  // their prompt as the box's did with no terminal plugged in.
+  return app.run_service(c.data_dir, [&app, attach] {
+    term::Terminal& t = attach->terminal();
+    app.set_terminal(&t);
+    menus::Services services{app.model(), app.clock(), app.tracker(), app.station(), [&app] { return app.save(); },
+                             kVersion};
+    for (;;) {
+      try {
+        menus::sign_on(t, services);
+        menus::main_menu(t, services);
+        // The operator left the main menu: attached, leaving is detaching; the menus start again
+        // for the next one.
+        attach->detach_keyboard();
+      } catch (const menus::InputClosed&) {
+      }
+    }
+  });
+}
+
+// A second trakbox on a state directory in use: at a terminal it attaches to the running one,
+// anything else refuses (two processes on one state would both save it).
+int state_in_use(const TrackerConfig& c, const LockHolder& holder, const std::string& error) {
+  if (!error.empty()) {
+    std::fprintf(stderr, "trakbox: %s\n", error.c_str());
+    return kExitFailure;
+  }
+  const std::string who = "the state directory " + c.state_dir.string() + " is in use by a running trakbox" +
+                          (holder.pid ? " (pid " + std::to_string(holder.pid) + ")" : std::string());
+  const bool at_terminal = c.front_end == FrontEnd::menus && !c.service && !c.standalone && !c.tty;
+  if (at_terminal && !holder.socket.empty()) {
+    std::fprintf(stderr, "trakbox: %s: attaching to it (Ctrl-] detaches)\n", who.c_str());
+    return attach_to(holder.socket, c.line);
+  }
+  std::fprintf(stderr, "trakbox: %s; not started, so that only one saves it%s\n", who.c_str(),
+               holder.socket.empty() ? "" : ("; its menus: trakbox attach --socket " + holder.socket).c_str());
+  return kExitFailure;
+}
+
+// The station's socket: status and events always, the menus too for a service. A socket that
+// cannot be made is said and the station runs without it.
+// The servers that run, with what they refused (issue 33's counters) for `trakbox status`.
+nlohmann::json servers_json(const Servers& s) {
+  nlohmann::json out = nlohmann::json::array();
+  const auto line = [&out](const char* name, const netctl::LineServer& srv) {
+    const netctl::ServerStats& st = srv.stats();
+    out.push_back({{"name", name},
+                   {"port", srv.port()},
+                   {"clients", srv.client_count()},
+                   {"refused_not_allowed", st.refused_not_allowed},
+                   {"refused_busy", st.refused_busy},
+                   {"refused_per_address", st.refused_per_address},
+                   {"refused_locked_out", st.refused_locked_out},
+                   {"wrong_secrets", st.wrong_secrets},
+                   {"lockouts", st.lockouts}});
+  };
+  if (s.satrak) {
+    const satrak::Server::Stats st = s.satrak->stats();
+    out.push_back({{"name", "satrak"},
+                   {"port", s.satrak->port()},
+                   {"clients", s.satrak->clients()},
+                   {"accepted", st.accepted},
+                   {"refused", st.refused},
+                   {"refused_per_address", st.refused_per_address},
+                   {"evicted", st.evicted},
+                   {"dropped_slow", st.dropped_slow}});
+  }
+  if (s.rotctld) line("rotctld", s.rotctld->server());
+  if (s.rigctld) line("rigctld", s.rigctld->server());
+  if (s.host) line("host", s.host->server());
+  return out;
+}
+
+std::unique_ptr<AttachServer> open_socket(StationApp& app, const TrackerConfig& c, StateLock& lock,
+                                          const Servers& servers) {
+  AttachServerOptions o;
+  o.path = c.socket;
+  o.menus = c.service;
+  // The server itself, once made (who is attached is part of the status).
+  auto self = std::make_shared<AttachServer*>(nullptr);
+  o.status = [&app, &c, self, &servers] {
+    StatusContext cx{kVersion, c.state_dir.string(), {}, {}, c.service, [&servers] { return servers_json(servers); }};
+    if (*self) cx.attached = (*self)->attached(), cx.keyboard = (*self)->keyboard();
+    return station_status(app, cx);
+  };
+  try {
+    auto server = std::make_unique<AttachServer>(
+        app.io(), [&app](int fd, std::optional<term::Duration> t) { return app.wait_readable(fd, t); }, o, app.log());
+    *self = server.get();
+    lock.announce(c.socket);
+    app.log().info("socket {} (trakbox attach, status, events)", c.socket);
+    return server;
+  } catch (const std::exception& e) {
+    app.log().warn("no attach socket: {}", e.what());
+    std::fprintf(stderr, "trakbox: WARNING: no attach socket: %s\n", e.what());
+    return nullptr;
+  }
 }
 
 }  // namespace
@@ -314,6 +417,10 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   }
   TrackerConfig c = *outcome.config;
   if (auto err = prepare_state_dir(c.state_dir)) return usage_error(*err);
+  LockHolder holder;
+  std::string lock_error;
+  std::optional<StateLock> lock = StateLock::take(c.state_dir, holder, lock_error);
+  if (!lock) return state_in_use(c, holder, lock_error);
   auto log = open_log(c);
   store::StateFile file(c.state_dir);
   Startup startup = load_state(file, c, *log);
@@ -354,6 +461,25 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
     log->warn("{}", w);
     std::fprintf(stderr, "trakbox: WARNING: %s\n", w.c_str());
   }
+  std::unique_ptr<AttachServer> attach = open_socket(app, c, *lock, servers);
+  if (c.service && c.tty) {
+    // The box's serial port: the service's menus there as well, for good.
+    if (!attach) return usage_error("--tty: the service's menus need its socket");
+    std::string err;
+    const int fd = term::LineTerminal::open_serial_fd(*c.tty, c.baud.value_or(app.model().station.com_baud), err);
+    if (fd < 0) return usage_error(err);
+    attach->add_serial(fd, *c.tty);
+  }
+  EventHooks hooks(app.io(), c.hooks, std::chrono::seconds(c.hook_timeout_s), *log);
+  app.set_events(
+      [&](const tracker::Event& e) {
+        const nlohmann::json j = tracker::to_json(e);
+        // Named, not repeated: the detail (a link's fault) is logged by whoever met it.
+        log->info("event: {}{}", e.kind, e.satellite.empty() ? "" : " " + e.satellite);
+        hooks.fire(e);
+        if (attach) attach->publish(j);
+      },
+      std::chrono::seconds(c.event_lead_s));
   app.start(std::chrono::milliseconds(c.tick_ms));
   if (startup.ram_lost || startup.fresh) app.save();
   log->info("trakbox {} started, state {}", kVersion, file.path().string());
@@ -361,7 +487,8 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
 
   int code = kExitOk;
   if (c.service) {
-    code = run_service(app, c, startup);
+    code = run_service(app, c, startup, attach.get());
+    app.set_terminal(nullptr);
   } else {
     std::string err;
     std::unique_ptr<term::Terminal> terminal = open_terminal(app, c, err);
@@ -376,9 +503,11 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
     if (!c.service) std::fprintf(stderr, "trakbox: state not saved: %s\n", err->c_str());
     code = kExitFailure;
   }
+  app.set_events({}, {});
   app.set_satrak(nullptr);
   servers.satrak_unit.reset();
   app.stop_gps();
+  attach.reset();
   return code;
 }
 

@@ -21,7 +21,8 @@ std::vector<OptionSpec> tracker_option_specs() {
       {"state", "DIR", "state directory (default $XDG_STATE_HOME/trakbox)"},
       {"data", "DIR", "shipped data for a fresh start (default $TRAKBOX_DATA, else PREFIX/share/trakbox of an "
                       "installed trakbox, else the source tree's data/ for a build that is not installed)"},
-      {"tty", "DEVICE", "run the menus as plain lines on this serial port (e.g. /dev/ttyS0)"},
+      {"tty", "DEVICE", "run the menus as plain lines on this serial port (e.g. /dev/ttyS0); with --service, "
+                        "the service's menus are there too"},
       {"baud", "N", "serial port speed with --tty: 1200, 2400, 4800, 9600 (default) or 19200, 8N1"},
       {"line", "", "plain lines on stdin/stdout even when they are a terminal"},
       {"standalone", "N", "track selector position N (1-15) with no menus: LCD and AOS LED"},
@@ -65,6 +66,13 @@ std::vector<OptionSpec> tracker_option_specs() {
       {"cross-limit-sector", "yes|no", "when the rotator limits split its travel (the rotor stop inside them): yes, "
                                        "they are pointing limits the antenna may cross between passes; no (the "
                                        "factory setting), they are barriers (stored)"},
+      {"socket", "PATH", "the station's socket for trakbox attach, status and events (default STATE/trakbox.sock; "
+                         "the system service's is /run/trakbox/trakbox.sock), made for the user and group only"},
+      {"on-event", "[KIND,...=]CMD", "run CMD (with /bin/sh) on every event, or on the kinds named: aos, los, "
+                                     "elements, link-lost, link-back, save-failed; the event is in its environment "
+                                     "(TRAKBOX_EVENT, TRAKBOX_SATELLITE, TRAKBOX_AOS, ...; docs/service.md)", true},
+      {"hook-timeout", "S", "seconds an --on-event command may run before it is killed, 1 to 3600 (default 60)"},
+      {"event-lead", "S", "the AOS event comes S seconds before AOS, 0 to 3600 (default 0)"},
       {"gps", "SPEC", "a GPS receiver through gpsd: gpsd (localhost:2947), gpsd:HOST or gpsd:HOST:PORT; none: no "
                       "receiver (stored). Position, fix and time; the clock is checked against GPS time"},
       {"gps-follow", "yes|no", "yes: the station's position follows the receiver's confirmed fix (stored; menu 4)"},
@@ -194,7 +202,7 @@ void read_gps(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
 // Front ends that cannot go together.
 void check_front_end(const ParsedOptions& o, OptionReader& r, FrontEnd front_end) {
   const bool service = o.has("service");
-  for (const char* other : {"tty", "line", "standalone"})
+  for (const char* other : {"line", "standalone"})
     if (service && o.has(other)) r.fail("--service", std::string("not with --") + other + " (a service has no terminal)");
   if (service && front_end == FrontEnd::host) r.fail("--service", "not with trakbox host");
   if (front_end == FrontEnd::host && (o.has("tty") || o.has("standalone")))
@@ -282,6 +290,15 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
                             a + "'");
     }
   }
+  for (const std::string& h : o.values("on-event")) {
+    std::string why;
+    if (auto hook = parse_event_hook(h, why)) c.hooks.push_back(std::move(*hook));
+    else r.fail("--on-event", why);
+  }
+  if (const auto v = r.integer("hook-timeout", false, "seconds, 1 to 3600", Range{1, 3600}))
+    c.hook_timeout_s = static_cast<int>(*v);
+  if (const auto v = r.integer("event-lead", false, "seconds, 0 to 3600", Range{0, 3600}))
+    c.event_lead_s = static_cast<int>(*v);
   check_front_end(o, r, front_end);
   read_secrets(o, r, c);
   read_refresh(o, r, c);
@@ -294,6 +311,7 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
   c.listen = o.value("listen").value_or("127.0.0.1");
   c.state_dir = o.value("state") ? std::filesystem::path(*o.value("state")) : store::default_state_directory();
   c.data_dir = o.value("data").value_or(default_data_directory());
+  c.socket = o.value("socket").value_or((c.state_dir / "trakbox.sock").string());
   return ConfigOutcome::run(std::move(c));
 }
 

@@ -11,6 +11,7 @@
 
 #include <spdlog/common.h>
 
+#include "app/event_hooks.h"
 #include "app/options.h"
 #include "orbit/time.h"
 #include "radio/factory.h"
@@ -71,6 +72,12 @@ struct TrackerConfig {
   // --cross-limit-sector yes|no: whether limits that split the rotator's travel may be crossed
   // between passes (RotatorConfig::cross_limit_sector); stored in the state when given.
   std::optional<bool> cross_limit_sector;
+  // The station's socket (attach, status, events): --socket, else STATE_DIR/trakbox.sock.
+  std::string socket;
+  // --on-event hooks, their time limit (--hook-timeout) and the AOS event's lead (--event-lead).
+  std::vector<EventHook> hooks;
+  int hook_timeout_s = 60;
+  int event_lead_s = 0;
   // --gps gpsd[:HOST[:PORT]] (canonical "gpsd:HOST:PORT") or none (""), --gps-follow, --gps-threshold:
   // stored in the state when given (docs/gps.md).
   std::optional<std::string> gps_source;

@@ -1,0 +1,101 @@
+// The running station on a local socket (docs/service.md): `trakbox attach` (the TrakBox menus on
+// the attached terminal, several at once, one with the keyboard), `trakbox status` (the station's
+// facts as JSON) and `trakbox events` (its events as JSON lines). An attach is answered "ok\n",
+// then the session, or "refused: WHY\n". A Unix socket only, for its
+// owner and group (0660): who may attach is who may open it; nothing here listens on a network.
+//
+// The menus run once, on the station's own event loop, against terminal(): what they write goes
+// to every attached client (full screen through a curses screen of the client's terminal type and
+// size, else plain lines), their keys come from the client that has the keyboard. A client whose
+// output backs up past a bound is disconnected: a frozen terminal never stalls the station.
+#pragma once
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "menus/term/terminal.h"
+
+namespace boost::asio {
+class io_context;
+}
+namespace spdlog {
+class logger;
+}
+
+namespace tb::app {
+
+class MuxTerminal;
+
+// The keys of an attached terminal.
+inline constexpr int kDetachKey = 0x1d;    // Ctrl-] (Ctrl-C detaches too)
+inline constexpr int kTakeOverKey = 0x14;  // Ctrl-T
+// What a client may have unsent before it is disconnected.
+inline constexpr std::size_t kAttachOutputLimit = 256 * 1024;
+
+struct AttachServerOptions {
+  std::string path;                           // the socket
+  std::function<nlohmann::json()> status;     // the status document
+  // Whether the menus are offered (a trakbox whose menus are on its console answers status and
+  // events, and tells an attach where its menus are).
+  bool menus = true;
+  std::size_t output_limit = kAttachOutputLimit;
+};
+
+class AttachServer {
+ public:
+  // Binds the socket (replacing a stale one no process answers on); throws std::runtime_error
+  // naming the path when it cannot, or when a live station answers there.
+  AttachServer(boost::asio::io_context& io, term::WaitReadable wait, AttachServerOptions options,
+               spdlog::logger& log);
+  ~AttachServer();  // closes every client and removes the socket
+  AttachServer(const AttachServer&) = delete;
+  AttachServer& operator=(const AttachServer&) = delete;
+
+  // The menus' terminal: output to every attached client, keys from the one with the keyboard.
+  term::Terminal& terminal();
+  // One JSON line to every `trakbox events` client.
+  void publish(const nlohmann::json& event);
+  // The serial port of --tty (open, set up; taken over) as a client that stays: plain lines, its
+  // keys like any client's (who: "/dev/ttyS0").
+  void add_serial(int fd, const std::string& who);
+  // Detaches the client that has the keyboard (the main menu's leave, when attached).
+  void detach_keyboard();
+  // Who is attached ("alice pts/3"), and who has the keyboard ("" for nobody).
+  std::vector<std::string> attached() const;
+  std::string keyboard() const;
+  const std::string& path() const;
+
+ private:
+  friend class MuxTerminal;
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// The socket's path for a state directory (STATE_DIR/trakbox.sock), and the one `trakbox attach`,
+// `status` and `events` use when neither --socket nor --state says: the default state directory's
+// when it exists, else the system service's (/run/trakbox/trakbox.sock).
+std::string socket_for_state(const std::string& state_dir);
+std::string default_client_socket();
+
+// Input of an attached client: bytes, and 0xFF 'W' ROWS COLS (two bytes each, big-endian) for a
+// window size; 0xFF 0xFF is a 0xFF byte.
+struct ClientFrames {
+  std::string bytes;               // keyboard bytes decoded
+  std::vector<std::pair<int, int>> sizes;  // (rows, cols) in order
+};
+class FrameDecoder {
+ public:
+  ClientFrames feed(std::string_view data);
+
+ private:
+  std::string partial_;
+};
+std::string encode_window_size(int rows, int cols);
+// Keys from a terminal's bytes: escape sequences (arrows, function keys) are dropped, a lone ESC
+// stays ESC, DEL is Backspace.
+std::vector<int> decode_keys(std::string_view bytes);
+
+}  // namespace tb::app

@@ -1,0 +1,248 @@
+#include "app/status.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+
+#include <nlohmann/json.hpp>
+
+#include "app/station_app.h"
+#include "orbit/element_age.h"
+#include "station/clock.h"
+#include "tracker/elements_refresh.h"
+#include "tracker/station_loop.h"
+
+namespace tb::app {
+namespace {
+
+nlohmann::json pass_json(const std::optional<orbit::Pass>& p) {
+  if (!p) return nullptr;
+  return {{"aos", orbit::format_iso8601(p->aos)},
+          {"tca", orbit::format_iso8601(p->tca)},
+          {"los", orbit::format_iso8601(p->los)},
+          {"max_el_deg", p->max_el_deg},
+          {"in_progress", p->up_at_start}};
+}
+
+nlohmann::json hz_or_null(const std::optional<radio::Hz>& hz) {
+  return hz ? nlohmann::json(*hz) : nlohmann::json(nullptr);
+}
+
+const char* mode_name(tracker::Mode m) {
+  switch (m) {
+    case tracker::Mode::single: return "single";
+    case tracker::Mode::multi: return "multiple";
+    default: return "off";
+  }
+}
+
+const char* antenna_action(tracker::Decision::Antenna a) {
+  switch (a) {
+    case tracker::Decision::Antenna::point: return "point";
+    case tracker::Decision::Antenna::preposition: return "preposition";
+    case tracker::Decision::Antenna::park: return "park";
+    default: return "hold";
+  }
+}
+
+const char* link_name(rotator::LinkState s) {
+  switch (s) {
+    case rotator::LinkState::connecting: return "connecting";
+    case rotator::LinkState::fault: return "fault";
+    default: return "ok";
+  }
+}
+
+nlohmann::json antenna_json(StationApp& app) {
+  tracker::StationLoop& st = app.station();
+  const rotator::Status rs = st.rotator().status();
+  nlohmann::json a{{"rotor_control", st.rotor_control()},
+                   {"link", link_name(rs.link.state)},
+                   {"link_message", rs.link.message},
+                   {"connects", rs.link.connects},
+                   {"message", rs.message},
+                   {"on_target", rs.on_target}};
+  if (const auto pos = st.antenna()) a["position"] = {{"az_deg", pos->az}, {"el_deg", pos->el}};
+  else a["position"] = nullptr;
+  const tracker::Decision& d = app.tracker().last_decision();
+  a["action"] = antenna_action(d.antenna);
+  a["target"] = d.antenna == tracker::Decision::Antenna::hold ? nlohmann::json(nullptr)
+                                                               : nlohmann::json{{"az_deg", d.az_deg}, {"el_deg", d.el_deg}};
+  return a;
+}
+
+nlohmann::json radio_json(StationApp& app) {
+  radio::RadioDriver& r = app.station().radio();
+  const radio::RadioStatus s = r.status();
+  return {{"radio", r.describe()},
+          {"connected", s.connected},
+          {"fault", s.fault},
+          {"message", s.message},
+          {"downlink_hz", hz_or_null(s.downlink_hz)},
+          {"uplink_hz", hz_or_null(s.uplink_hz)},
+          {"downlink_mode", s.downlink_mode ? nlohmann::json(radio::to_string(*s.downlink_mode)) : nlohmann::json(nullptr)},
+          {"uplink_mode", s.uplink_mode ? nlohmann::json(radio::to_string(*s.uplink_mode)) : nlohmann::json(nullptr)},
+          {"delivered", s.delivered},
+          {"failures", s.failures},
+          {"connects", s.connects},
+          {"pending", s.pending}};
+}
+
+// The tracking list: each satellite now, its element age and its next pass (the tracker's search).
+nlohmann::json tracking_list_json(StationApp& app, orbit::UtcTime now) {
+  nlohmann::json list = nlohmann::json::array();
+  const store::Database& db = app.model().db;
+  for (std::size_t k = 0; k < db.selected.size(); ++k) {
+    const int i = db.selected[k];
+    if (i < 0 || i >= static_cast<int>(db.satellites.size())) continue;
+    const auto& sat = db.satellites[static_cast<std::size_t>(i)];
+    const orbit::ElementAge age = orbit::element_age(sat.elements, now);
+    nlohmann::json e{{"number", k + 1},
+                     {"name", sat.name()},
+                     {"catalog_number", sat.elements.catalog_number},
+                     {"element_age_days", age.days},
+                     {"elements_stale", age.stale()}};
+    std::optional<orbit::Pass> pass;
+    for (const auto& c : app.tracker().candidates())
+      if (c.db_index == i) pass = c.pass;
+    if (!pass) {
+      if (const orbit::Sgp4* sgp4 = app.tracker().propagator(i))
+        pass = orbit::next_pass(*sgp4, app.model().station.observer(), now, 1.0);
+    }
+    if (const auto obs = app.tracker().observe(i, now); obs && obs->obs.ok())
+      e["now"] = {{"az_deg", obs->obs.look.az_deg}, {"el_deg", obs->obs.look.el_deg}, {"in_range", obs->in_range}};
+    e["next_pass"] = pass_json(pass);
+    list.push_back(std::move(e));
+  }
+  return list;
+}
+
+}  // namespace
+
+nlohmann::json station_status(StationApp& app, const StatusContext& cx) {
+  const orbit::UtcTime now = app.clock().now();
+  nlohmann::json j{{"running", true},
+                   {"pid", ::getpid()},
+                   {"version", cx.version},
+                   {"service", cx.service},
+                   {"state_dir", cx.state_dir},
+                   {"time", orbit::format_iso8601(now)},
+                   {"clock_rate", app.clock().rate()}};
+  tracker::Tracker& tr = app.tracker();
+  nlohmann::json tracking{{"mode", mode_name(tr.mode())}, {"priority", tr.priority()}};
+  nlohmann::json sats = nlohmann::json::array();
+  for (const auto& c : tr.candidates()) {
+    nlohmann::json s{{"name", c.name}, {"list_number", c.list_number}, {"in_range", c.in_range}};
+    if (c.obs.ok()) s["az_deg"] = c.obs.look.az_deg, s["el_deg"] = c.obs.look.el_deg;
+    s["pass"] = pass_json(c.pass);
+    sats.push_back(std::move(s));
+  }
+  tracking["satellites"] = std::move(sats);
+  const tracker::SatNow* f = tr.followed();
+  tracking["followed"] = f ? nlohmann::json(f->name) : nlohmann::json(nullptr);
+  if (const auto& r = app.station().remote_followed()) tracking["remote"] = {{"owner", r->owner}, {"name", r->name}};
+  j["tracking"] = std::move(tracking);
+  j["antenna"] = antenna_json(app);
+  j["radios"] = nlohmann::json::array({radio_json(app)});
+  j["tracking_list"] = tracking_list_json(app, now);
+  const tracker::ElementsRefresh& rf = app.refresh();
+  j["elements_refresh"] = {{"sources", app.model().refresh.sources.size()},
+                           {"last_result", rf.last_result()},
+                           {"last_failed", rf.last_failed()},
+                           {"running", rf.running()}};
+  const auto saved = app.last_saved();
+  j["save"] = {{"last_saved", saved ? nlohmann::json(orbit::format_iso8601(
+                                          std::chrono::time_point_cast<std::chrono::microseconds>(*saved)))
+                                    : nlohmann::json(nullptr)},
+               {"failure", app.station().save_failure() ? nlohmann::json(*app.station().save_failure())
+                                                        : nlohmann::json(nullptr)}};
+  j["servers"] = cx.servers ? cx.servers() : nlohmann::json::array();
+  j["attached"] = cx.attached;
+  j["keyboard"] = cx.keyboard.empty() ? nlohmann::json(nullptr) : nlohmann::json(cx.keyboard);
+  j["status_line"] = app.station().status_line();
+  const auto problems = status_problems(j);
+  j["healthy"] = problems.empty();
+  j["problems"] = problems;
+  return j;
+}
+
+std::vector<std::string> status_problems(const nlohmann::json& s) {
+  std::vector<std::string> out;
+  const auto& a = s.at("antenna");
+  if (a.at("link") != "ok") out.push_back("rotator link " + a.at("link").get<std::string>() + ": " + a.value("link_message", ""));
+  for (const auto& r : s.at("radios"))
+    if (r.value("fault", false)) out.push_back("radio fault: " + r.value("message", ""));
+  if (!s.at("save").at("failure").is_null()) out.push_back("state not saved: " + s["save"]["failure"].get<std::string>());
+  if (s.at("elements_refresh").value("last_failed", false))
+    out.push_back("element refresh failed: " + s["elements_refresh"].value("last_result", ""));
+  return out;
+}
+
+std::string format_status(const nlohmann::json& s) {
+  std::string out;
+  auto line = [&out](const std::string& l) { out += l + "\n"; };
+  auto num = [](const nlohmann::json& v, int decimals) {
+    if (!v.is_number()) return std::string("-");
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, v.get<double>());
+    return std::string(buf);
+  };
+  line(std::string("trakbox ") + s.value("version", "") + (s.value("service", false) ? " (service)" : "") + ", pid " +
+       std::to_string(s.value("pid", 0)) + ", state " + s.value("state_dir", "") + ": " +
+       (s.value("healthy", false) ? "running" : "running, with problems"));
+  line("  time      " + s.value("time", "") + (s.value("clock_rate", 1.0) != 1.0 ? " (clock x" + num(s["clock_rate"], 1) + ")" : ""));
+  const auto& t = s.at("tracking");
+  std::string tracking = "  tracking  " + t.value("mode", "off");
+  if (!t.at("followed").is_null()) tracking += ", following " + t["followed"].get<std::string>();
+  line(tracking);
+  for (const auto& c : t.at("satellites")) {
+    std::string l = "            #" + std::to_string(c.value("list_number", 0)) + " " + c.value("name", "") + " az " +
+                    num(c.value("az_deg", nlohmann::json()), 1) + " el " + num(c.value("el_deg", nlohmann::json()), 1);
+    if (c.contains("pass") && !c["pass"].is_null())
+      l += "  pass " + c["pass"].value("aos", "") + " - " + c["pass"].value("los", "") + " max " + num(c["pass"]["max_el_deg"], 1);
+    line(l);
+  }
+  const auto& a = s.at("antenna");
+  std::string ant = "  antenna   ";
+  ant += a.at("position").is_null() ? "position unknown"
+                                     : "az " + num(a["position"]["az_deg"], 1) + " el " + num(a["position"]["el_deg"], 1);
+  ant += ", " + a.value("action", "hold");
+  if (!a.at("target").is_null()) ant += " to az " + num(a["target"]["az_deg"], 1) + " el " + num(a["target"]["el_deg"], 1);
+  ant += ", rotor control " + std::string(a.value("rotor_control", false) ? "on" : "off") + ", link " + a.value("link", "");
+  line(ant);
+  for (const auto& r : s.at("radios"))
+    line("  radio     " + r.value("radio", "") + ": downlink " + num(r.value("downlink_hz", nlohmann::json()), 0) +
+         " Hz, uplink " + num(r.value("uplink_hz", nlohmann::json()), 0) + " Hz, " +
+         (r.value("fault", false) ? "fault: " + r.value("message", "") : std::string("ok")));
+  for (const auto& e : s.at("tracking_list")) {
+    std::string l = "  list #" + std::to_string(e.value("number", 0)) + "  " + e.value("name", "") + ", elements " +
+                    num(e["element_age_days"], 1) + " days old" + (e.value("elements_stale", false) ? " (STALE)" : "");
+    if (!e.at("next_pass").is_null())
+      l += ", next pass " + e["next_pass"].value("aos", "") + " max " + num(e["next_pass"]["max_el_deg"], 1);
+    line(l);
+  }
+  const auto& rf = s.at("elements_refresh");
+  line("  elements  " + std::to_string(rf.value("sources", 0)) + " refresh source(s)" +
+       (rf.value("last_result", "").empty() ? std::string() : ": " + rf.value("last_result", "")));
+  for (const auto& srv : s.value("servers", nlohmann::json::array())) {
+    std::string l = "  server    " + srv.value("name", "") + " port " + std::to_string(srv.value("port", 0)) + ", " +
+                    std::to_string(srv.value("clients", 0)) + " client(s)";
+    for (const auto& [key, value] : srv.items())
+      if (key.rfind("refused", 0) == 0 || key == "wrong_secrets" || key == "lockouts" || key == "evicted" ||
+          key == "dropped_slow")
+        if (value.is_number() && value.get<long long>() > 0) l += ", " + key + " " + std::to_string(value.get<long long>());
+    line(l);
+  }
+  const auto& sv = s.at("save");
+  line("  saved     " + (sv.at("last_saved").is_null() ? std::string("not yet") : sv["last_saved"].get<std::string>()));
+  if (const auto& who = s.at("attached"); !who.empty()) {
+    std::string l = "  attached ";
+    for (const auto& w : who) l += " " + w.get<std::string>() + ";";
+    if (!s.at("keyboard").is_null()) l += " keyboard: " + s["keyboard"].get<std::string>();
+    line(l);
+  }
+  for (const auto& p : s.at("problems")) line("  PROBLEM   " + p.get<std::string>());
+  return out;
+}
+
+}  // namespace tb::app

@@ -1,0 +1,72 @@
+// The station's events: AOS and LOS of the satellites of the tracking list, element refreshes,
+// links lost and back, failed saves. PassEventSource finds AOS and LOS from the same pass search
+// `trakbox passes` uses (AOS/LOS are crossings of the rotor start elevation, -2.0 deg by default:
+// the manual's rule), fired at the first tick at or after AOS - lead and at or after LOS; it reads
+// the model and the tracker's propagators and does no I/O. What the events become (hooks, the
+// event stream) is the application's (app/event_hooks.h, docs/service.md).
+#pragma once
+#include <chrono>
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "orbit/passes.h"
+#include "orbit/time.h"
+
+namespace tb::store {
+struct Model;
+}
+
+namespace tb::tracker {
+
+class Tracker;
+
+struct Event {
+  std::string kind;  // aos, los, elements, link-lost, link-back, save-failed
+  orbit::UtcTime time{};
+  // AOS and LOS: the satellite, its pass and its frequencies (RF at the satellite, 0: none).
+  std::string satellite;
+  int catalog_number = 0;
+  int list_number = 0;
+  std::optional<orbit::Pass> pass;
+  long long downlink_hz = 0, uplink_hz = 0;
+  // The rest: which link (rotator, radio), what happened.
+  std::string detail;
+};
+
+// The kinds, in the order the documentation lists them.
+const std::vector<std::string>& event_kinds();
+// {"event":"aos","time":"...","satellite":...}: one line of `trakbox events`.
+nlohmann::json to_json(const Event& e);
+// The hook's environment: TRAKBOX_EVENT, TRAKBOX_TIME, TRAKBOX_SATELLITE, TRAKBOX_AOS, ...
+std::vector<std::pair<std::string, std::string>> event_environment(const Event& e);
+
+class PassEventSource {
+ public:
+  // lead: the AOS event comes this long before AOS (0: at AOS).
+  PassEventSource(const store::Model& model, const Tracker& tracker, std::chrono::seconds lead = {})
+      : model_(model), tracker_(tracker), lead_(lead) {}
+  // The AOS and LOS events due at `now` (each once per pass).
+  std::vector<Event> step(orbit::UtcTime now);
+
+ private:
+  struct Watch {
+    int catalog_number = 0;
+    double epoch_day = 0;
+    int epoch_year = 0;
+    std::optional<orbit::Pass> pass;  // the next (or current) pass
+    orbit::UtcTime search_again{};    // nothing found: when to look again
+    bool aos_fired = false;
+  };
+  Event pass_event(const char* kind, int db_index, const Watch& w, orbit::UtcTime now) const;
+  const store::Model& model_;
+  const Tracker& tracker_;
+  std::chrono::seconds lead_;
+  std::map<int, Watch> watches_;  // by catalog number
+};
+
+}  // namespace tb::tracker
