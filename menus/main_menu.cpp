@@ -29,6 +29,8 @@ void show_main_menu(term::Terminal& t) {
 
 bool leave_trakbox(term::Terminal& t) { return ask_yes_no(t, "     leave trakbox? [Y/N]"); }
 
+bool detach_attached(term::Terminal& t) { return ask_yes_no(t, "     detach from trakbox? [Y/N]"); }
+
 bool detach_serial_line(term::Terminal& t) {
   if (!ask_yes_no(t, "     detach from trakbox? [Y/N]")) return false;
   t.line("     Detached: trakbox keeps tracking. Any key brings the menu back.");

@@ -31,6 +31,9 @@ struct Services {
 
 // Asks "leave trakbox? [Y/N]"; true for Y (trakbox then saves and exits).
 bool leave_trakbox(term::Terminal& t);
+// An attached client's Q (trakbox attach): "detach from trakbox? [Y/N]"; Y ends the menus for this
+// operator (the service detaches the keyboard and keeps tracking; the menus start again for the next).
+bool detach_attached(term::Terminal& t);
 // A serial line's Q: "detach from trakbox? [Y/N]"; Y says trakbox keeps running and waits for a
 // key to bring the menu back. Never ends the menus (the line is the box's own terminal).
 bool detach_serial_line(term::Terminal& t);

@@ -294,8 +294,9 @@ int run_service(StationApp& app, const TrackerConfig& c, const Startup& s, Attac
   return app.run_service(c.data_dir, [&app, attach] {
     term::Terminal& t = attach->terminal();
     app.set_terminal(&t);
+    // Attached, the main menu's Q detaches (it never stops the service).
     menus::Services services{app.model(), app.clock(), app.tracker(), app.station(), [&app] { return app.save(); },
-                             kVersion};
+                             kVersion, menus::detach_attached};
     for (;;) {
       try {
         menus::sign_on(t, services);
