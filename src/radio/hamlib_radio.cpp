@@ -8,6 +8,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "radio/registry.h"
 #include "radio/rigctld_link.h"
 #include "util/sigpipe.h"
 
@@ -64,6 +65,9 @@ std::string hamlib_model_name(int model) {
 
 HamlibLink::HamlibLink(HamlibOptions options) : opt_(std::move(options)), impl_(std::make_unique<Impl>()) {
   quiet_hamlib_once();
+  // The model's own Main/Sub from the radio registry, as the native path uses it (Main transmits on
+  // the IC-9100 / IC-910H, receives on the IC-9700); Main up for a model the registry does not know.
+  if (const RadioModel* m = find_radio_model_by_hamlib(opt_.model)) opt_.main_link = m->main_link;
 }
 
 HamlibLink::~HamlibLink() { close(); }
@@ -117,9 +121,11 @@ void HamlibLink::open() {
            "(downlink on the receive VFO, uplink on VFO B)";
   }
   if (!announced_) {
-    const char* how = scheme_ == HamlibVfoScheme::split ? "split: downlink on the receive VFO, uplink on VFO B"
-                      : satmode_on_                     ? "satellite mode, downlink on Sub, uplink on Main"
-                                                        : "downlink on Sub, uplink on Main";
+    const std::string bands = opt_.main_link == Link::uplink ? "downlink on Sub, uplink on Main"
+                                                             : "downlink on Main, uplink on Sub";
+    const std::string how = scheme_ == HamlibVfoScheme::split ? "split: downlink on the receive VFO, uplink on VFO B"
+                            : satmode_on_                     ? "satellite mode, " + bands
+                                                              : bands;
     if (!note.empty()) spdlog::warn("radio {}: {}", describe(), note);
     spdlog::info("radio {}: {}", describe(), how);
     announced_ = true;
@@ -162,6 +168,11 @@ void HamlibLink::require_aux(int rc, const std::string& what) {
   throw LinkError(Action::drop, describe() + ": " + what + " refused: " + hamlib_error_text(rc) + "; Doppler tuning goes on");
 }
 
+namespace {
+// Main/Sub: the band `l` is on.
+vfo_t band_of(Link main_link, Link l) { return l == main_link ? RIG_VFO_MAIN : RIG_VFO_SUB; }
+}  // namespace
+
 void HamlibLink::ensure_split() {
   if (split_on_) return;
   require(rig_set_split_vfo(impl_->rig, RIG_VFO_CURR, RIG_SPLIT_ON, RIG_VFO_B), "split on (VFO B)");
@@ -172,8 +183,8 @@ void HamlibLink::set_frequency(Link l, Hz hz) {
   if (!impl_->rig) throw LinkError(Action::reconnect, describe() + " is not open");
   const freq_t f = static_cast<freq_t>(hz);
   if (scheme_ == HamlibVfoScheme::main_sub) {
-    require(rig_set_freq(impl_->rig, l == Link::downlink ? RIG_VFO_SUB : RIG_VFO_MAIN, f),
-          l == Link::downlink ? "set Sub frequency" : "set Main frequency");
+    const vfo_t band = band_of(opt_.main_link, l);
+    require(rig_set_freq(impl_->rig, band, f), band == RIG_VFO_MAIN ? "set Main frequency" : "set Sub frequency");
     return;
   }
   if (l == Link::downlink) {
@@ -189,8 +200,7 @@ void HamlibLink::set_mode(Link l, Mode mode) {
   const rmode_t m = to_hamlib(mode);
   if (m == RIG_MODE_NONE) return;
   if (scheme_ == HamlibVfoScheme::main_sub) {
-    require_aux(rig_set_mode(impl_->rig, l == Link::downlink ? RIG_VFO_SUB : RIG_VFO_MAIN, m,
-                             RIG_PASSBAND_NOCHANGE),
+    require_aux(rig_set_mode(impl_->rig, band_of(opt_.main_link, l), m, RIG_PASSBAND_NOCHANGE),
                 "set mode");
     return;
   }
@@ -210,8 +220,8 @@ Hz HamlibLink::read_frequency(Link l) {
   // reads a stale value and dial follow would take it for a turn (seen against Hamlib's simic9700).
   impl_->rig->state.use_cached_freq = 0;
   if (scheme_ == HamlibVfoScheme::main_sub) {
-    require(rig_get_freq(impl_->rig, l == Link::downlink ? RIG_VFO_SUB : RIG_VFO_MAIN, &f),
-            l == Link::downlink ? "get Sub frequency" : "get Main frequency");
+    const vfo_t band = band_of(opt_.main_link, l);
+    require(rig_get_freq(impl_->rig, band, &f), band == RIG_VFO_MAIN ? "get Main frequency" : "get Sub frequency");
   } else if (l == Link::downlink) {
     require(rig_get_freq(impl_->rig, RIG_VFO_CURR, &f), "get frequency");
   } else {
@@ -223,7 +233,7 @@ Hz HamlibLink::read_frequency(Link l) {
 
 void HamlibLink::set_ctcss_tone(int tenths_hz) {
   if (!impl_->rig) throw LinkError(Action::reconnect, describe() + " is not open");
-  const vfo_t vfo = scheme_ == HamlibVfoScheme::main_sub ? RIG_VFO_MAIN : RIG_VFO_CURR;
+  const vfo_t vfo = scheme_ == HamlibVfoScheme::main_sub ? band_of(opt_.main_link, Link::uplink) : RIG_VFO_CURR;
   require_aux(rig_set_ctcss_tone(impl_->rig, vfo, static_cast<tone_t>(tenths_hz)), "set CTCSS tone");
   if (tenths_hz > 0) require_aux(rig_set_func(impl_->rig, vfo, RIG_FUNC_TONE, 1), "CTCSS encoder on");
 }

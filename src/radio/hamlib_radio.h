@@ -29,6 +29,9 @@ struct HamlibOptions {
   std::string path;              // serial device, or HOST:PORT for model 2
   int baud = 0;                  // 0: the backend's default
   HamlibVfoScheme scheme = HamlibVfoScheme::automatic;
+  // With Main/Sub: the link on Main (the other on Sub). HamlibLink's constructor takes it from the
+  // radio registry's entry for `model` when there is one, so both paths put a model's links alike.
+  Link main_link = Link::uplink;
 };
 
 class HamlibLink final : public RadioLink {
