@@ -219,7 +219,6 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
   t.line("'+/-/0' Doppler compensation  'U' next uplink channel  'D' dial follow on/off");
   std::optional<int> shown;
   bool was_in_range = false;       // the shown satellite was AOS on the last update
-  orbit::UtcTime graphics_pass{};  // AOS of the pass last drawn (epoch: none)
   LinkNotices notices;             // full screen has the status line instead
   std::string coverage_said;       // serial terminal: the coverage note last printed
   std::string radio_shown;         // serial terminal: the radio line last printed, without "sent"
@@ -250,7 +249,6 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
       t.line(kHeader1);
       t.line(kHeader2);
       shown = f->db_index;
-      graphics_pass = orbit::UtcTime{};
     }
     was_in_range = f && f->in_range;
     if (f) {
@@ -260,13 +258,10 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
       const std::optional<std::string> coverage = s.station.coverage_note(f->db_index);
       if (t.full_screen()) {
         t.live({row, coverage.value_or(""), control_line(s), radio_line(s)});
-        // Redraw the pictures every few seconds and when the pass changes.
-        const auto secs = std::chrono::duration_cast<std::chrono::seconds>(f->obs.time.time_since_epoch()).count();
-        const orbit::UtcTime pass_aos = f->pass ? f->pass->aos : orbit::UtcTime{};
-        if (secs % 5 == 0 || pass_aos != graphics_pass) {
-          t.graphics(make_graphics(s, *f));
-          graphics_pass = pass_aos;
-        }
+        // The pictures on every update, as the table: the satellite's @ and the antenna's X are the
+        // numbers of the row above. (Drawn only on clock seconds divisible by 5, they stood still
+        // under --clock-rate 10, whose updates step 10 s at a time: issue 30 item 8.)
+        t.graphics(make_graphics(s, *f));
       } else {
         if (coverage && *coverage != coverage_said) {
           t.end_live();

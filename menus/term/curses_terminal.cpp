@@ -45,11 +45,12 @@ std::vector<std::string> draw_sky_plot(const Graphics& g, int width, int height)
     return std::pair{static_cast<int>(std::lround(cx + r * rx * std::sin(az * deg))),
                      static_cast<int>(std::lround(cy - r * ry * std::cos(az * deg)))};
   };
-  // Horizon and the 30/60 degree rings.
-  for (int a = 0; a < 360; a += 3) {
+  // Horizon and the 30/60 degree rings, every cell they pass through: a dot every 9 degrees of
+  // azimuth read as scattered dots, not rings (issue 30 item 8).
+  for (int a = 0; a < 360; ++a) {
     for (double el : {0.0, 30.0, 60.0}) {
       auto [x, y] = to_xy(a, el);
-      put(grid, x, y, el == 0.0 ? '.' : (a % 9 == 0 ? '.' : ' '));
+      put(grid, x, y, '.');
     }
   }
   put(grid, static_cast<int>(cx), 0, 'N');
@@ -77,6 +78,8 @@ std::vector<std::string> draw_sky_plot(const Graphics& g, int width, int height)
   }
   return grid;
 }
+
+const char* graphics_legend() { return "@ satellite  X antenna  o pass  A AOS  Q station"; }
 
 std::vector<std::string> draw_world_map(const Graphics& g, int width, int height) {
   std::vector<std::string> grid(static_cast<std::size_t>(std::max(height, 0)),
@@ -304,9 +307,9 @@ void CursesTerminal::graphics(const Graphics& g) {
   if (height < 7) return;
   const int sky_h = height;
   const int sky_w = std::min(2 * sky_h + 1, COLS / 3);
-  const int map_w = std::min(COLS - sky_w - 3, 2 * (height - 1) * 2);
+  const int map_w = std::min(COLS - sky_w - 3, 2 * (height - 2) * 2);
   const auto sky = draw_sky_plot(g, sky_w, sky_h);
-  const auto map = draw_world_map(g, map_w, height - 1);
+  const auto map = draw_world_map(g, map_w, height - 2);  // its last row: the legend
   const int cy = getcury(w), cx = getcurx(w);
   for (int y = 0; y < height; ++y) {
     wmove(w, top + y, 0);
@@ -319,7 +322,8 @@ void CursesTerminal::graphics(const Graphics& g) {
       mvwaddch(w, top + y, x, static_cast<chtype>(c) | static_cast<chtype>(attr));
     }
     if (y == 0 && !g.title.empty()) mvwaddnstr(w, top, sky_w + 3, g.title.c_str(), map_w);
-    if (y >= 1 && map_w >= 8) {
+    if (y == height - 1 && COLS - sky_w - 4 > 0) mvwaddnstr(w, top + y, sky_w + 3, graphics_legend(), COLS - sky_w - 4);
+    if (y >= 1 && y < height - 1 && map_w >= 8) {
       const auto& row = map[static_cast<std::size_t>(y - 1)];
       for (int x = 0; x < map_w; ++x) {
         const char c = row[static_cast<std::size_t>(x)];

@@ -57,6 +57,9 @@ class CursesTerminal final : public Terminal {
 // equirectangular world map with a ground track.
 std::vector<std::string> draw_sky_plot(const Graphics& g, int width, int height);
 std::vector<std::string> draw_world_map(const Graphics& g, int width, int height);
+// The symbols of both pictures in one line, shown under the map (issue 30 item 8: they were
+// explained only in docs).
+const char* graphics_legend();
 
 // Where a live block of n lines goes in a text window of `height` rows: below the cursor at
 // (cursor_row, cursor_col) the first time (live_row < 0), then where it is (live_row). The window

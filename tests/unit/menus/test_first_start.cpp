@@ -2,6 +2,12 @@
 // submenus never quits; over a serial line Q detaches instead (trakbox keeps running).
 #include <doctest/doctest.h>
 
+#include <cmath>
+#include <numbers>
+#include <string_view>
+
+#include "menus/term/curses_terminal.h"
+
 #include "fixture.h"
 
 using namespace tb;
@@ -65,4 +71,84 @@ TEST_CASE("realtime display: Q on a full screen clears the sky plot and map befo
   menus::menu_1_realtime_tracking(f.term, *f.services);
   REQUIRE(f.term.graphics_count() > 0);
   CHECK_FALSE(f.term.graphics_shown());
+}
+
+namespace {
+// The cell of the sky plot drawing (width x height) where draw_sky_plot puts a look angle: the
+// zenith in the middle, the horizon on the ellipse touching the edges, north up, east right.
+std::pair<int, int> sky_cell(double az, double el, int width, int height) {
+  const double cx = (width - 1) / 2.0, cy = (height - 1) / 2.0, r = (90.0 - std::max(el, 0.0)) / 90.0;
+  const double a = az * std::numbers::pi / 180.0;
+  return {static_cast<int>(std::lround(cx + r * cx * std::sin(a))), static_cast<int>(std::lround(cy - r * cy * std::cos(a)))};
+}
+}  // namespace
+
+TEST_CASE("realtime display: under --clock-rate 10 the sky plot's @ and X follow every update (issue 30 item 8)") {
+  // The operator's run: --clock 2026-11-27T11:55:00Z --clock-rate 10, the display opened before
+  // AOS. Each update steps the clock 10 s; its first falls on a second not divisible by 5 (the
+  // pictures were redrawn only on those, so @ never showed and X stayed at S).
+  testing::MenuFixture f("4\rQ", orbit::from_civil(2026, 11, 27, 11, 55, 3));  // 4: ISS
+  f.station->set_rotor_control(true);
+  f.term.set_full_screen(true);
+  f.term.timeouts_before_key = 120;  // 20 minutes of the clock
+  int waits = 0, satellite_up = 0;
+  std::optional<term::Graphics> up;  // a drawing with the satellite above the horizon
+  f.term.on_wait = [&](std::optional<term::Duration> timeout) {
+    ++waits;
+    // What the last update drew is what it read: the satellite's look angles and the antenna.
+    CHECK(f.term.graphics_count() == waits);
+    const term::Graphics& g = f.term.last_graphics();
+    const tracker::SatNow* n = f.tracker.followed();
+    if (!n && !f.tracker.candidates().empty()) n = &f.tracker.candidates().front();
+    REQUIRE(n);
+    REQUIRE(g.satellite);
+    CHECK(g.satellite->az_deg == n->obs.look.az_deg);
+    CHECK(g.satellite->el_deg == n->obs.look.el_deg);
+    const auto ant = f.station->antenna();
+    REQUIRE(ant);
+    REQUIRE(g.antenna);
+    CHECK(g.antenna->az_deg == ant->az);
+    CHECK(g.antenna->el_deg == ant->el);
+    if (n->obs.look.el_deg > 5.0 && ant->el > 5.0) {
+      ++satellite_up;
+      up = g;
+    }
+    f.now += 10 * std::chrono::duration_cast<std::chrono::microseconds>(timeout.value_or(std::chrono::seconds(1)));
+    // The display opened five minutes before AOS: the shown satellite's next pass (its time
+    // depends on the shipped elements), on the same odd second.
+    if (waits == 1) {
+      REQUIRE(n->pass);
+      REQUIRE(n->pass->aos - f.now > std::chrono::minutes(5));
+      f.now += std::chrono::floor<std::chrono::minutes>(n->pass->aos - std::chrono::minutes(5) - f.now);
+    }
+    f.station->tick();
+  };
+  menus::menu_1_realtime_tracking(f.term, *f.services);
+  REQUIRE(satellite_up > 0);  // the pass came and the antenna followed it
+  // The last such drawing has @ and X where their look angles put them (the satellite's over the
+  // antenna's when they share a cell).
+  const auto sky = term::draw_sky_plot(*up, 41, 21);
+  const auto [ax, ay] = sky_cell(up->antenna->az_deg, up->antenna->el_deg, 41, 21);
+  const auto [sx, sy] = sky_cell(up->satellite->az_deg, up->satellite->el_deg, 41, 21);
+  CAPTURE(up->satellite->az_deg);
+  CAPTURE(up->antenna->az_deg);
+  CHECK(sky[static_cast<std::size_t>(sy)][static_cast<std::size_t>(sx)] == '@');
+  if (std::pair{ax, ay} != std::pair{sx, sy}) CHECK(sky[static_cast<std::size_t>(ay)][static_cast<std::size_t>(ax)] == 'X');
+}
+
+TEST_CASE("sky plot: the elevation rings are whole rings, and the symbols have a legend (issue 30 item 8)") {
+  const term::Graphics none;
+  const auto sky = term::draw_sky_plot(none, 41, 21);
+  // Every cell the horizon and the 30 and 60 degree rings pass through, at each degree of azimuth,
+  // is a dot (but the N, S, E, W letters on the horizon).
+  for (int az = 0; az < 360; ++az) {
+    for (double el : {0.0, 30.0, 60.0}) {
+      const auto [x, y] = sky_cell(az, el, 41, 21);
+      const char c = sky[static_cast<std::size_t>(y)][static_cast<std::size_t>(x)];
+      CAPTURE(az);
+      CAPTURE(el);
+      CHECK((c == '.' || (el == 0.0 && std::string_view("NSEW").find(c) != std::string_view::npos)));
+    }
+  }
+  CHECK(std::string(term::graphics_legend()) == "@ satellite  X antenna  o pass  A AOS  Q station");
 }
