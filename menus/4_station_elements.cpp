@@ -35,7 +35,8 @@ double edit_degrees(term::Terminal& t, std::string_view label, double current, c
 }
 }  // namespace
 
-void menu_4_station_elements(term::Terminal& t, Services& s) {
+namespace {
+void edit_station_elements(term::Terminal& t, Services& s) {
   station::StationConfig st = s.model.station;  // edited as a copy, committed at the end
   t.line("====== Update Station Element =======");
   const gps::Monitor* g = s.station.gps();
@@ -103,6 +104,18 @@ void menu_4_station_elements(term::Terminal& t, Services& s) {
   t.line(fmt("Station saved: %s  %.3f %c  %.3f %c  %.0f m  rotor start %s", saved.callsign.c_str(),
              std::abs(saved.lat_deg), saved.lat_deg < 0 ? 'S' : 'N', std::abs(saved.lon_deg),
              saved.lon_deg < 0 ? 'W' : 'E', saved.height_m, station::to_string(saved.rotor_start)));
+}
+}  // namespace
+
+void menu_4_station_elements(term::Terminal& t, Services& s) {
+  // Esc at any prompt leaves as Q does in the other menus: nothing typed so far is kept (the
+  // station is edited as a copy and stored only after the last prompt).
+  try {
+    EscapeLeaves esc(t);
+    edit_station_elements(t, s);
+  } catch (const Escaped&) {
+    t.line("Station not changed.");
+  }
 }
 
 }  // namespace tb::menus

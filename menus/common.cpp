@@ -11,6 +11,7 @@ namespace tb::menus {
 std::string read_line(term::Terminal& t, std::size_t max_length) {
   auto l = t.read_line(max_length);
   if (!l) throw InputClosed{};
+  if (t.escape_leaves() && *l == "\x1b") throw Escaped{};
   return *l;
 }
 

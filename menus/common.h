@@ -14,7 +14,22 @@ namespace tb::menus {
 // Thrown out of any prompt when the input has closed for good (the program then saves and exits).
 struct InputClosed {};
 
-// Reads a line, throwing InputClosed when input ends.
+// Thrown out of a line prompt by Esc in a menu that leaves unchanged on Esc (EscapeLeaves).
+struct Escaped {};
+// While alive, Esc at `t`'s line prompts throws Escaped (Terminal::set_escape_leaves).
+class EscapeLeaves {
+ public:
+  explicit EscapeLeaves(term::Terminal& t) : t_(t), was_(t.escape_leaves()) { t.set_escape_leaves(true); }
+  ~EscapeLeaves() { t_.set_escape_leaves(was_); }
+  EscapeLeaves(const EscapeLeaves&) = delete;
+  EscapeLeaves& operator=(const EscapeLeaves&) = delete;
+
+ private:
+  term::Terminal& t_;
+  bool was_;
+};
+
+// Reads a line, throwing InputClosed when input ends (and Escaped on Esc under EscapeLeaves).
 std::string read_line(term::Terminal& t, std::size_t max_length = 80);
 // The text without the white space around it.
 std::string trim(std::string_view text);

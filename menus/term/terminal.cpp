@@ -46,6 +46,11 @@ std::optional<std::string> Terminal::read_line(std::size_t max_length) {
       if (echo_) write("\n");
       return std::string(1, '\x1a');
     }
+    if (k == kEscape && escape_leaves_) {  // what was typed on this line is dropped too
+      if (echo_) write("\n");
+      flush();
+      return std::string(1, '\x1b');
+    }
     if (k == kBackspace || k == 127) {
       if (!text.empty()) {
         text.pop_back();

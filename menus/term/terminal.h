@@ -83,8 +83,13 @@ class Terminal {
   void set_echo(bool on) { echo_ = on; }
   bool echo() const { return echo_; }
 
+  // Esc at a line prompt: ignored (a control key) unless a menu asks for it, as menu 4 does, which
+  // leaves unchanged on Esc (issue 30 item 10). While on, read_line returns "\x1b" for Esc.
+  void set_escape_leaves(bool on) { escape_leaves_ = on; }
+  bool escape_leaves() const { return escape_leaves_; }
+
   // A line, echoed as typed, Backspace/DEL edit, Enter (CR, LF or CRLF) ends it.
-  // nullopt when input closed. Ctrl-Z alone returns "\x1a".
+  // nullopt when input closed. Ctrl-Z alone returns "\x1a"; Esc, when escape_leaves(), "\x1b".
   std::optional<std::string> read_line(std::size_t max_length = 80);
   // A single key for [Y/N]-style questions: echoes it and a newline; upper-cased. With `accept`,
   // other keys are ignored; Enter returns '\r' (echoing a newline) when allow_enter, else it is
@@ -103,6 +108,7 @@ class Terminal {
  private:
   std::vector<int> pending_;  // keys read ahead
   bool echo_ = true;
+  bool escape_leaves_ = false;      // read_line returns "\x1b" for Esc
   bool last_was_cr_ = false;        // the LF of a CR LF pair is dropped
   bool enter_ends_choice_ = false;  // the last key answered read_choice: an Enter now ends that answer
 };

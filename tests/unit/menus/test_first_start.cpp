@@ -152,3 +152,21 @@ TEST_CASE("sky plot: the elevation rings are whole rings, and the symbols have a
   }
   CHECK(std::string(term::graphics_legend()) == "@ satellite  X antenna  o pass  A AOS  Q station");
 }
+
+TEST_CASE("menu 4: Esc at a prompt leaves with the station unchanged (issue 30 item 10)") {
+  // The callsign answered, then Esc in the middle of the latitude; and Esc at the first prompt.
+  for (const char* keys : {"F4XYZ\r48.8\x1b", "\x1b"}) {
+    CAPTURE(keys);
+    testing::MenuFixture f(keys);
+    const station::StationConfig before = f.model.station;
+    menus::menu_4_station_elements(f.term, *f.services);
+    CHECK(f.model.station.callsign == before.callsign);
+    CHECK(f.model.station.lat_deg == before.lat_deg);
+    CHECK(f.saves == 0);
+    CHECK(f.term.output().find("Station not changed.") != std::string::npos);
+    CHECK_FALSE(f.term.escape_leaves());  // the other menus' prompts still ignore Esc
+  }
+  // Elsewhere Esc is still a control key a line prompt ignores.
+  term::ScriptTerminal t("12\x1b" "3\r");
+  CHECK(t.read_line() == "123");
+}
