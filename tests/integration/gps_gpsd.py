@@ -49,11 +49,20 @@ class Gpsfake:
     """gpsfake -i on a free port playing one log, a sentence per step."""
 
     def __init__(self, log, port=None):
-        self.port = port or free_port()
         self.lines = [l for l in open(os.path.join(LOGS, log)) if l.startswith("$")]
         self.fed = 0
+        # Under a loaded machine (ctest -j2 beside other tests) gpsfake's gpsd can lose the race for
+        # a free port or start slowly: a start that does not list its device is tried again, on a
+        # new port unless the test named one.
+        for attempt in range(3):
+            self.port = port or free_port()
+            if self._start(log, last=attempt == 2):
+                return
+
+    def _start(self, log, last):
+        self.err = tempfile.TemporaryFile()
         self.proc = subprocess.Popen(["gpsfake", "-i", "-n", "-1", "-q", "-P", str(self.port), os.path.join(LOGS, log)],
-                                     stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                                     stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, stderr=self.err,
                                      text=True, start_new_session=True)
         # Fed before gpsd has opened the pseudo-terminal, sentences would be lost: wait until gpsd
         # lists the device (with -n it opens it at once).
@@ -74,8 +83,13 @@ class Gpsfake:
                 pass
             if time.time() > deadline or self.proc.poll() is not None:
                 self.kill()
-                raise Failure(f"gpsfake's gpsd did not list its device on {self.port}")
+                if not last:
+                    return False
+                self.err.seek(0)
+                said = self.err.read().decode("latin-1", "replace")[-300:]
+                raise Failure(f"gpsfake's gpsd did not list its device on {self.port} (three tries): {said!r}")
             time.sleep(0.1)
+        return True
 
     def feed(self, lines, pace=0.03):
         for _ in range(lines):
