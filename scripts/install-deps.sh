@@ -8,14 +8,14 @@ what=${1:-all}
 run_pkgs=(
   cmake ninja-build g++ pkg-config
   libncurses-dev libboost-dev libspdlog-dev libfmt-dev nlohmann-json3-dev
-  libcurl4-openssl-dev libhamlib-dev libpugixml-dev libcairo2-dev
+  libcurl4-openssl-dev libhamlib-dev libpugixml-dev libcairo2-dev libgps-dev
 )
 test_pkgs=(
   python3 doctest-dev libbenchmark-dev
   # test peers and independent references
   libhamlib-utils python3-sgp4 python3-skyfield gpredict socat tmux python3-pyftpdlib
-  # the GPS receiver: libgps to build, gpsd and gpsfake (gpsd-clients) to test against
-  libgps-dev gpsd gpsd-clients
+  # the GPS receiver: gpsd and gpsfake (gpsd-clients) to test against (libgps-dev is a run package)
+  gpsd gpsd-clients
   # the Debian package and its checks (scripts/package-check.sh), the completion test
   dpkg-dev lintian man-db groff-base systemd bash-completion
 )
