@@ -1,4 +1,5 @@
 #include "app/cli_orbit.h"
+#include "app/cli_orbit_internal.h"
 
 #include <algorithm>
 #include <cctype>
@@ -14,30 +15,23 @@
 
 #include "app/cli_defaults.h"
 #include "app/cli_elements.h"
-#include "app/pass_plot.h"
 #include "app/options.h"
 #include "orbit/element_age.h"
 #include "orbit/elements.h"
 #include "orbit/observe.h"
-#include "orbit/passes.h"
 #include "orbit/sgp4_batch.h"
 #include "orbit/sgp4.h"
 #include "orbit/state_lines.h"
-#include "rotator/pass_plan.h"
-#include "store/model.h"
 #include "util/format.h"
 #include "util/text.h"
 
 namespace tb::app {
-namespace {
+using namespace orbit_cli;
 
-using orbit::Elements;
-using orbit::UtcTime;
+namespace orbit_cli {
 
 // ---------------------------------------------------------------------------------------------
 // Text helpers
-
-using text::printf_string;
 
 void out(const std::string& s) { std::fwrite(s.data(), 1, s.size(), stdout); }
 
@@ -68,17 +62,13 @@ std::string csv_field(std::string_view s) {
   return r + "\"";
 }
 
-using text::lower;
 std::string trim(std::string_view s) { return std::string(text::trim(s)); }
 
-// "ISS (ZARYA) (25544)" or "25544".
 std::string choice_label(const Elements& e) {
   const std::string name = trim(e.name);
   return name.empty() ? std::to_string(e.catalog_number) : name + " (" + std::to_string(e.catalog_number) + ")";
 }
 
-// A warning on stderr when the set is past the age its orbit allows at `first` or `last` (the span
-// a command computes over).
 void warn_stale(const char* command, const Elements& e, UtcTime first, UtcTime last) {
   for (const UtcTime t : {first, last}) {
     const std::string w = orbit::element_age(e, t).warning();
@@ -89,7 +79,6 @@ void warn_stale(const char* command, const Elements& e, UtcTime first, UtcTime l
   }
 }
 
-// "2018/01/21 03:37:10" (the manual's date and time), with `decimals` digits of seconds.
 std::string manual_time(UtcTime t, int decimals) {
   const std::string iso = orbit::format_iso8601(t, decimals);  // 2018-01-21T03:37:10[.fff]Z
   std::string s = iso.substr(0, iso.size() - 1);
@@ -99,6 +88,12 @@ std::string manual_time(UtcTime t, int decimals) {
   return s;
 }
 
+}  // namespace orbit_cli
+
+namespace {
+
+using text::lower;
+
 // Digits of seconds needed to show every time start + i * step exactly: 0, 3 or 6.
 int seconds_decimals(UtcTime start, std::chrono::microseconds step) {
   const auto us_of = [](std::int64_t v) { return ((v % 1000000) + 1000000) % 1000000; };
@@ -107,8 +102,6 @@ int seconds_decimals(UtcTime start, std::chrono::microseconds step) {
   if (a % 1000 == 0 && b % 1000 == 0) return 3;
   return 6;
 }
-
-enum class OutputFormat { table, csv, json };
 
 // ---------------------------------------------------------------------------------------------
 // Element files and satellite selection
@@ -255,22 +248,15 @@ std::vector<Elements> select_sats(const std::vector<Elements>& sets, const std::
   return chosen;
 }
 
-// The options several commands share, described once; each is read by the function below it.
-const OptionSpec kSatOption{"sat", "NAME|NUMBER", "satellite by name (exact, then any case) or catalog number"};
-const OptionSpec kHelpOption{"help", "", "show this help"};
-const OptionSpec kNoChecksumOption = no_checksum_option();
+}  // namespace
+
+namespace orbit_cli {
+
 OptionSpec repeatable(OptionSpec spec) {
   spec.repeatable = true;
   return spec;
 }
 
-const OptionSpec kStationOption{"station", "LAT,LON[,HEIGHT_M]|LOCATOR",
-                                "station: degrees north, degrees east (or 48.85N,2.35E), metres above the "
-                                "WGS-84 ellipsoid (default 0), or a Maidenhead locator (JN18du); default the "
-                                "stored station (menu 4)"};
-const OptionSpec kStateOption{"state", "DIR", "the state the menus keep (default as for the menus): its station, "
-                                              "database and tracking list stand in for what is not given"};
-// --station, else the stored station.
 std::optional<orbit::Observer> read_station(OptionReader& in, StoredStation& stored) {
   const auto text = in.text("station", false, "");
   if (!text) {
@@ -283,7 +269,6 @@ std::optional<orbit::Observer> read_station(OptionReader& in, StoredStation& sto
   return p.value;
 }
 
-// --NAME as a time (ISO 8601, now, +2h), else now.
 std::optional<UtcTime> read_time(OptionReader& in, std::string_view name, UtcTime now) {
   const auto text = in.text(name, false, "");
   if (!text) return now;
@@ -296,36 +281,16 @@ UtcTime wall_now() {
   return std::chrono::time_point_cast<std::chrono::microseconds>(std::chrono::system_clock::now());
 }
 
-std::optional<std::int64_t> read_frequency(OptionReader& in, std::string_view name) {
-  const auto text = in.text(name, false, "");
-  if (!text) return std::nullopt;
-  const Parsed<std::int64_t> p = parse_frequency_text(*text);
-  if (!p.value) in.fail(OptionReader::option_label(name), p.error);
-  return p.value;
-}
-
-const OptionSpec kDut1Option{"dut1", "S", "UT1-UTC in seconds (default 0)"};
 orbit::EarthOrientation read_dut1(OptionReader& in) {
   const auto v = in.number("dut1", false, "S, UT1-UTC in seconds (-1 < S < 1)", Range{-1.0, 1.0, true, true});
   return {v.value_or(0.0)};
 }
 
-const OptionSpec kCsvOption{"csv", "", "comma-separated values with a header line"};
-// --csv, or --json (described by each command: what its array holds).
 OutputFormat read_format(OptionReader& in) {
   const bool csv = in.flag("csv"), json = in.flag("json");
   if (csv && json) in.fail("--json", "expected at most one of --csv and --json");
   return csv ? OutputFormat::csv : json ? OutputFormat::json : OutputFormat::table;
 }
-
-// Common front matter of every command: options, --help, one ELEMENTS argument.
-struct Command {
-  const char* name;
-  const char* synopsis;
-  const char* description;
-  std::vector<OptionSpec> specs;
-  bool stored_database = false;  // ELEMENTS may be left out: the stored database (--state)
-};
 
 std::string usage(const Command& c) {
   return std::string("usage: trakbox ") + c.name + " " + c.synopsis + "\n\n" + c.description + "\n\noptions:\n" +
@@ -337,76 +302,68 @@ int usage_error(const Command& c, const ArgError& e) {
   return kExitUsage;
 }
 
-// One run of a command: parses its words (`done` is then the exit code when --help or a usage error
-// already finished it); the command reads its values through `in`, then load_sats() takes over.
-struct CommandRun {
-  CommandRun(const Command& c, const std::vector<std::string>& args) : command(c) {
-    ParseOutcome po = parse_options(args, c.specs);
-    if (po.error) {
-      done = usage_error(c, *po.error);
-      return;
-    }
-    parsed = std::move(po.options);
-    if (parsed.has("help")) {
-      out(usage(c));
-      done = kExitOk;
-      return;
-    }
-    const auto& pos = parsed.positional();
-    if (pos.empty() && !c.stored_database)
-      done = usage_error(c, {"ELEMENTS", std::string("missing; expected ") + kElementsHelp});
-    else if (pos.size() > 1) done = usage_error(c, {pos[1], "unexpected argument (ELEMENTS is given once)"});
-    else if (!pos.empty()) path = pos[0];
-    if (const auto dir = parsed.value("state")) stored = StoredStation(std::filesystem::path(*dir));
+CommandRun::CommandRun(const Command& c, const std::vector<std::string>& args) : command(c) {
+  ParseOutcome po = parse_options(args, c.specs);
+  if (po.error) {
+    done = usage_error(c, *po.error);
+    return;
   }
-  CommandRun(const CommandRun&) = delete;
-  CommandRun& operator=(const CommandRun&) = delete;
+  parsed = std::move(po.options);
+  if (parsed.has("help")) {
+    out(usage(c));
+    done = kExitOk;
+    return;
+  }
+  const auto& pos = parsed.positional();
+  if (pos.empty() && !c.stored_database)
+    done = usage_error(c, {"ELEMENTS", std::string("missing; expected ") + kElementsHelp});
+  else if (pos.size() > 1) done = usage_error(c, {pos[1], "unexpected argument (ELEMENTS is given once)"});
+  else if (!pos.empty()) path = pos[0];
+  if (const auto dir = parsed.value("state")) stored = StoredStation(std::filesystem::path(*dir));
+}
 
-  int error(const ArgError& e) const { return usage_error(command, e); }
+std::optional<int> CommandRun::load_sats(bool allow_all, std::vector<Elements>& sats) {
+  if (!in.ok()) return error(*in.error());
+  if (path.empty()) return load_stored(allow_all, sats);
+  const bool named = !parsed.values("sat").empty();
+  // With --no-checksum every accepted set's checksum is named: nothing is deferred then.
+  const bool verify = !parsed.has("no-checksum");
+  const LoadedElements loaded = load_elements(path, verify, named && verify);
+  if (loaded.error) {
+    report_deferred(loaded, path, false);
+    return error(*loaded.error);
+  }
+  sats = select_sats(loaded.sets, parsed.values("sat"), allow_all, path, in);
+  report_deferred(loaded, path, in.ok());
+  if (!in.ok()) return error(*in.error());
+  return std::nullopt;
+}
 
-  // Once the options are read: the first error among them, else ELEMENTS loaded and the sets --sat
-  // chooses (allow_all: every set when no --sat is given) put in `sats`. Returns the exit code when
-  // the command cannot go on.
-  std::optional<int> load_sats(bool allow_all, std::vector<Elements>& sats) {
-    if (!in.ok()) return error(*in.error());
-    if (path.empty()) return load_stored(allow_all, sats);
-    const bool named = !parsed.values("sat").empty();
-    // With --no-checksum every accepted set's checksum is named: nothing is deferred then.
-    const bool verify = !parsed.has("no-checksum");
-    const LoadedElements loaded = load_elements(path, verify, named && verify);
-    if (loaded.error) {
-      report_deferred(loaded, path, false);
-      return error(*loaded.error);
-    }
-    sats = select_sats(loaded.sets, parsed.values("sat"), allow_all, path, in);
-    report_deferred(loaded, path, in.ok());
-    if (!in.ok()) return error(*in.error());
+std::optional<int> CommandRun::load_stored(bool allow_all, std::vector<Elements>& sats) {
+  const auto keys = parsed.values("sat");
+  const auto sets = keys.empty() ? stored.tracking_list() : stored.database();
+  if (!sets) return error({"ELEMENTS", "missing, and " + stored.error()});
+  if (sets->empty()) return error({"ELEMENTS", "missing, and the stored database is empty (" + stored.source() + ")"});
+  if (keys.empty()) {
+    sats = allow_all ? *sets : std::vector<Elements>{sets->front()};
     return std::nullopt;
   }
+  sats = select_sats(*sets, keys, allow_all, "the stored database (" + stored.source() + ")", in);
+  if (!in.ok()) return error(*in.error());
+  return std::nullopt;
+}
 
-  // No ELEMENTS: the stored database; without --sat its tracking list (all of it with allow_all,
-  // else its first satellite).
-  std::optional<int> load_stored(bool allow_all, std::vector<Elements>& sats) {
-    const auto keys = parsed.values("sat");
-    const auto sets = keys.empty() ? stored.tracking_list() : stored.database();
-    if (!sets) return error({"ELEMENTS", "missing, and " + stored.error()});
-    if (sets->empty()) return error({"ELEMENTS", "missing, and the stored database is empty (" + stored.source() + ")"});
-    if (keys.empty()) {
-      sats = allow_all ? *sets : std::vector<Elements>{sets->front()};
-      return std::nullopt;
-    }
-    sats = select_sats(*sets, keys, allow_all, "the stored database (" + stored.source() + ")", in);
-    if (!in.ok()) return error(*in.error());
-    return std::nullopt;
-  }
+}  // namespace orbit_cli
 
-  const Command& command;
-  ParsedOptions parsed;  // --no-checksum is read from here by load_sats
-  StoredStation stored{std::nullopt};  // --state
-  std::string path;  // ELEMENTS; empty: the stored database
-  OptionReader in{parsed};
-  std::optional<int> done;
-};
+namespace {
+
+std::optional<std::int64_t> read_frequency(OptionReader& in, std::string_view name) {
+  const auto text = in.text(name, false, "");
+  if (!text) return std::nullopt;
+  const Parsed<std::int64_t> p = parse_frequency_text(*text);
+  if (!p.value) in.fail(OptionReader::option_label(name), p.error);
+  return p.value;
+}
 
 // ---------------------------------------------------------------------------------------------
 // propagate
@@ -606,208 +563,6 @@ int run_schedule(std::vector<std::string> args) {
     }
   }
   if (format == OutputFormat::json) out("\n]\n");
-  return status;
-}
-
-// ---------------------------------------------------------------------------------------------
-// passes
-
-namespace {
-
-const Command kPasses{
-    "passes",
-    "[ELEMENTS] [--sat NAME|NUMBER]... [--station LAT,LON[,HEIGHT_M]|LOCATOR]\n"
-    "                      [--start ISO8601|now|+2h] [--hours H] [--min-el DEG] [--state DIR] [--dut1 S]\n"
-    "                      [--csv|--json] [--no-checksum]",
-    "Passes over the station between --start and --start + --hours, sorted by AOS: AOS and LOS are\n"
-    "the crossings of -2.0 deg elevation (the manual's AOS rule), TCA the time of maximum elevation.\n"
-    "Without --sat, every satellite of the file. CSV and JSON columns: sat, aos_utc, tca_utc, los_utc,\n"
-    "max_el_deg, aos_az_deg, los_az_deg. A pass already up at --start begins there; one still up at\n"
-    "the end stops there (marked < and > in the table). Without ELEMENTS, the stored database (--state)\n"
-    "and, without --sat, its tracking list; without --station the stored station; from now for 24 h.",
-    {repeatable(kSatOption),
-     kStationOption,
-     {"start", "ISO8601|now|+2h", "start of the window, UTC, now (the default), or now plus an amount (+2h)"},
-     {"hours", "H", "length of the window in hours (> 0, at most 8784; default 24)"},
-     {"min-el", "DEG", "only passes whose maximum elevation reaches DEG (default: all)"},
-     kDut1Option,
-     kCsvOption,
-     {"json", "", "a JSON array of pass objects"},
-     {"plot", "FILE", "draw each pass as a polar plot, PNG or SVG by FILE's extension (several passes: FILE-1.png, "
-                      "...): track, AOS/TCA/LOS, the antenna's planned path for the stored rotator"},
-     kStateOption,
-     kNoChecksumOption,
-     kHelpOption},
-    true};
-
-struct SatPass {
-  std::string sat;
-  orbit::Pass pass;
-  std::size_t set = 0;  // index into the satellites' sets
-};
-
-// --plot FILE: each pass as a polar plot (pass_plot.h); FILE itself for one pass, FILE-N.EXT for
-// several. The antenna's plan is the stored rotator's (the factory one when no state is readable).
-int plot_passes(const std::string& file, const std::vector<SatPass>& passes, const std::vector<Elements>& sats,
-                const orbit::Observer& station, StoredStation& stored) {
-  const store::Model* m = stored.model();
-  const store::Model factory = store::factory_defaults();
-  if (!m) m = &factory;
-  const rotator::PassGeometry geometry = rotator::PassGeometry::from(rotator::AdcModel(m->rotator, m->station.rotor_start));
-  const std::size_t dot = file.find_last_of('.');
-  for (std::size_t i = 0; i < passes.size(); ++i) {
-    const SatPass& s = passes[i];
-    PassPicture pic;
-    pic.title = s.sat;
-    pic.pass = s.pass;
-    pic.track = sample_pass(orbit::Sgp4(sats[s.set]), station, s.pass);
-    pic.plan = rotator::plan_pass(pic.track, geometry, std::nullopt);
-    const std::string name = passes.size() == 1 || dot == std::string::npos
-                                 ? file
-                                 : file.substr(0, dot) + "-" + std::to_string(i + 1) + file.substr(dot);
-    if (const auto err = write_pass_plot(pic, name)) {
-      std::fprintf(stderr, "trakbox passes: --plot: %s\n", err->c_str());
-      return kExitFailure;
-    }
-    std::fprintf(stderr, "trakbox passes: %s %s: %s\n", s.sat.c_str(), orbit::format_iso8601(s.pass.aos, 0).c_str(),
-                 name.c_str());
-  }
-  return kExitOk;
-}
-
-// The header line(s) with the sets' ages at the window's start: one per set for a few, else the range.
-std::string elements_ages(const std::vector<Elements>& sats, UtcTime at) {
-  if (sats.size() <= 4) {
-    std::string out;
-    for (const Elements& e : sats)
-      out += printf_string("elements %s epoch %s, age %s\n", choice_label(e).c_str(),
-                       orbit::format_iso8601(e.epoch(), 0).c_str(), orbit::element_age(e, at).text().c_str());
-    return out;
-  }
-  double lo = 1e300, hi = -1e300;
-  for (const Elements& e : sats) {
-    const double days = orbit::element_age(e, at).days;
-    lo = std::min(lo, days);
-    hi = std::max(hi, days);
-  }
-  return printf_string("elements of %zu satellites, age %.1f to %.1f days at the start\n", sats.size(), lo, hi);
-}
-
-// What `passes` owes its reader about one set over the window: its age at the window's start and
-// end when past the limit of its orbit (a warning), and where SGP4 stops working (an error: the
-// passes after it are not known, and the command exits 1). False when SGP4 fails.
-bool check_window(const Elements& e, const orbit::Sgp4& sat, UtcTime start, UtcTime stop) {
-  const std::string label = choice_label(e);
-  warn_stale("passes", e, start, stop);
-  if (sat.init_error() != orbit::Sgp4Error::none) {
-    std::fprintf(stderr, "trakbox passes: %s: sgp4 error %d: %s; no passes\n", label.c_str(),
-                 static_cast<int>(sat.init_error()), orbit::describe(sat.init_error()));
-    return false;
-  }
-  // The first moment it fails: every 10 minutes through the window (a decay may fail for a while
-  // and then propagate again, so the ends are not enough), then to the second.
-  UtcTime good = start, bad = start;
-  bool failed = !sat.propagate(start).ok();
-  for (UtcTime t = start; !failed && t < stop;) {
-    good = t;
-    t = std::min(stop, t + std::chrono::minutes(10));
-    if (!sat.propagate(t).ok()) {
-      failed = true;
-      bad = t;
-    }
-  }
-  if (!failed) return true;
-  while (bad != start && std::chrono::duration_cast<std::chrono::seconds>(bad - good).count() > 1) {
-    const UtcTime mid = good + (bad - good) / 2;
-    (sat.propagate(mid).ok() ? good : bad) = mid;
-  }
-  const orbit::Sgp4Error err = sat.propagate(bad).error;
-  std::fprintf(stderr, "trakbox passes: %s: sgp4 error %d at %s: %s; no passes from then on\n", label.c_str(),
-               static_cast<int>(err), orbit::format_iso8601(bad, 0).c_str(), orbit::describe(err));
-  return false;
-}
-
-}  // namespace
-
-int run_passes(std::vector<std::string> args) {
-  CommandRun run(kPasses, args);
-  if (run.done) return *run.done;
-  OptionReader& in = run.in;
-  const auto station = read_station(in, run.stored);
-  const auto start = read_time(in, "start", wall_now());
-  const auto hours = in.number("hours", false, "H, a number of hours > 0 (at most 8784)", Range{0.0, 8784.0, true})
-                         .value_or(24.0);
-  const auto min_el = in.number("min-el", false, "DEG, an elevation -90..90", Range{-90.0, 90.0});
-  const orbit::EarthOrientation eo = read_dut1(in);
-  const OutputFormat format = read_format(in);
-  const auto plot = in.text("plot", false, "");
-  if (plot && plot->find_last_of('.') == std::string::npos)
-    in.fail("--plot", "expected FILE.png or FILE.svg, found '" + *plot + "'");
-  std::vector<Elements> sats;
-  if (auto done = run.load_sats(true, sats)) return *done;
-
-  const UtcTime stop = orbit::add_seconds(*start, hours * 3600.0);
-  orbit::PassOptions options;
-  options.horizon_deg = orbit::kAosThresholdDeg;
-  if (min_el) options.min_max_elevation_deg = *min_el;
-  std::vector<SatPass> passes;
-  int status = kExitOk;
-  for (std::size_t set = 0; set < sats.size(); ++set) {
-    const Elements& e = sats[set];
-    const orbit::Sgp4 sat(e);
-    if (!check_window(e, sat, *start, stop)) status = kExitFailure;
-    if (sat.init_error() != orbit::Sgp4Error::none) continue;
-    const std::string label = trim(e.name).empty() ? std::to_string(e.catalog_number) : trim(e.name);
-    for (const orbit::Pass& p : orbit::find_passes(sat, *station, *start, stop, options, eo))
-      passes.push_back({label, p, set});
-  }
-  std::stable_sort(passes.begin(), passes.end(),
-                   [](const SatPass& a, const SatPass& b) { return a.pass.aos < b.pass.aos; });
-
-  auto iso3 = [](UtcTime t) { return orbit::format_iso8601(t, 3); };
-  switch (format) {
-    case OutputFormat::csv:
-      out("sat,aos_utc,tca_utc,los_utc,max_el_deg,aos_az_deg,los_az_deg\n");
-      for (const SatPass& s : passes)
-        out(printf_string("%s,%s,%s,%s,%.4f,%.4f,%.4f\n", csv_field(s.sat).c_str(), iso3(s.pass.aos).c_str(),
-                      iso3(s.pass.tca).c_str(), iso3(s.pass.los).c_str(), s.pass.max_el_deg, s.pass.aos_az_deg,
-                      s.pass.los_az_deg));
-      break;
-    case OutputFormat::json:
-      out("[");
-      for (std::size_t i = 0; i < passes.size(); ++i) {
-        const SatPass& s = passes[i];
-        out(printf_string("%s\n  {\"sat\": %s, \"aos_utc\": %s, \"tca_utc\": %s, \"los_utc\": %s, \"max_el_deg\": %.4f, "
-                      "\"aos_az_deg\": %.4f, \"los_az_deg\": %.4f}",
-                      i ? "," : "", json_string(s.sat).c_str(), json_string(iso3(s.pass.aos)).c_str(),
-                      json_string(iso3(s.pass.tca)).c_str(), json_string(iso3(s.pass.los)).c_str(), s.pass.max_el_deg,
-                      s.pass.aos_az_deg, s.pass.los_az_deg));
-      }
-      out("\n]\n");
-      break;
-    case OutputFormat::table: {
-      out(printf_string("station %.4f, %.4f, %.0f m%s  from %s for %g h  AOS/LOS at %.1f deg\n", station->lat_deg,
-                    station->lon_deg, station->height_m,
-                    run.parsed.has("station") ? "" : (" (" + run.stored.source() + ")").c_str(),
-                    orbit::format_iso8601(*start, 0).c_str(), hours, orbit::kAosThresholdDeg));
-      out(elements_ages(sats, *start));
-      out(printf_string("%-24s  %-20s  %-9s  %-9s  %6s  %6s  %6s  %8s\n", "SAT", "AOS (UTC)", "TCA", "LOS", "MAX EL",
-                    "AOS AZ", "LOS AZ", "DURATION"));
-      for (const SatPass& s : passes) {
-        const std::string aos = manual_time(s.pass.aos, 0), tca = manual_time(s.pass.tca, 0),
-                          los = manual_time(s.pass.los, 0);
-        const auto dur = std::chrono::duration_cast<std::chrono::seconds>(s.pass.los - s.pass.aos).count();
-        out(printf_string("%-24.24s  %s%c  %s   %s%c  %6.1f  %6.1f  %6.1f  %5lld:%02lld\n", s.sat.c_str(), aos.c_str(),
-                      s.pass.up_at_start ? '<' : ' ', tca.substr(11).c_str(), los.substr(11).c_str(),
-                      s.pass.up_at_end ? '>' : ' ', s.pass.max_el_deg, s.pass.aos_az_deg, s.pass.los_az_deg,
-                      static_cast<long long>(dur / 60), static_cast<long long>(dur % 60)));
-      }
-      if (passes.empty()) out("no passes\n");
-      break;
-    }
-  }
-  std::fflush(stdout);
-  if (plot && plot_passes(*plot, passes, sats, *station, run.stored) != kExitOk) return kExitFailure;
   return status;
 }
 

@@ -42,31 +42,29 @@ void polyline(cairo_t* cr, const std::vector<std::pair<double, double>>& pts) {
   }
 }
 
-void draw(cairo_t* cr, const PassPicture& p) {
-  cairo_set_source_rgb(cr, 1, 1, 1);
-  cairo_paint(cr);
-  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-  const double c = kPlotCentre, R = kPlotRadius;
-
-  // Azimuths the rotator cannot reach: a grey wedge outside its travel.
-  if (p.plan) {
-    const auto& g = p.plan->geometry;
-    const double width = g.az_travel.width();
-    if (!g.az_travel.empty() && width < 360.0 - 1e-9) {
-      const double lo = g.az_travel.hi + rotator::rotor_start_deg(g.start);  // unreachable from hi ...
-      const double span = 360.0 - width;                                     // ... to lo + 360
-      cairo_move_to(cr, c, c);
-      for (int i = 0; i <= 64; ++i) {
-        double x, y;
-        plot_position(lo + span * i / 64.0, 0.0, x, y);
-        cairo_line_to(cr, x, y);
-      }
-      cairo_close_path(cr);
-      cairo_set_source_rgb(cr, 0.85, 0.85, 0.85);
-      cairo_fill(cr);
+// Azimuths the rotator cannot reach: a grey wedge outside its travel.
+void draw_unreachable(cairo_t* cr, const rotator::PassPlan& plan) {
+  const double c = kPlotCentre;
+  const auto& g = plan.geometry;
+  const double width = g.az_travel.width();
+  if (!g.az_travel.empty() && width < 360.0 - 1e-9) {
+    const double lo = g.az_travel.hi + rotator::rotor_start_deg(g.start);  // unreachable from hi ...
+    const double span = 360.0 - width;                                     // ... to lo + 360
+    cairo_move_to(cr, c, c);
+    for (int i = 0; i <= 64; ++i) {
+      double x, y;
+      plot_position(lo + span * i / 64.0, 0.0, x, y);
+      cairo_line_to(cr, x, y);
     }
+    cairo_close_path(cr);
+    cairo_set_source_rgb(cr, 0.85, 0.85, 0.85);
+    cairo_fill(cr);
   }
-  // Elevation rings every 30 degrees, the horizon heavier; compass lines and letters.
+}
+
+// Elevation rings every 30 degrees, the horizon heavier; compass lines and letters.
+void draw_grid(cairo_t* cr) {
+  const double c = kPlotCentre, R = kPlotRadius;
   cairo_set_source_rgb(cr, 0.55, 0.55, 0.55);
   for (int el = 0; el < 90; el += 30) {
     cairo_set_line_width(cr, el == 0 ? 2.0 : 1.0);
@@ -87,6 +85,48 @@ void draw(cairo_t* cr, const PassPicture& p) {
   text_at(cr, c, c + R + 22, "S", 16, true);
   text_at(cr, c + R + 14, c + 6, "E", 16, true);
   text_at(cr, c - R - 14, c + 6, "W", 16, true);
+}
+
+// Where the antenna cannot follow: red over the track.
+void draw_lost(cairo_t* cr, const PassPicture& p) {
+  cairo_set_source_rgb(cr, 0.85, 0.0, 0.0);
+  cairo_set_line_width(cr, 3.0);
+  bool open = false;
+  for (const auto& t : p.track) {
+    const rotator::AzEl a = p.plan->pointing_at(t.az_deg, t.el_deg);
+    const bool lost = rotator::azimuth_distance(a.az, t.az_deg) > 0.05 && t.el_deg < 89.5;
+    double x, y;
+    plot_position(t.az_deg, std::max(t.el_deg, -2.0), x, y);
+    if (lost && !open) cairo_move_to(cr, x, y);
+    if (lost) cairo_line_to(cr, x, y);
+    if (!lost && open) cairo_stroke(cr);
+    open = lost;
+  }
+  if (open) cairo_stroke(cr);
+}
+
+// A dot at (az, el) and its label beside it, away from the centre.
+void mark(cairo_t* cr, double az, double el, const std::string& label) {
+  const double c = kPlotCentre;
+  double x, y;
+  plot_position(az, std::max(el, -2.0), x, y);
+  cairo_set_source_rgb(cr, 0, 0, 0);
+  cairo_arc(cr, x, y, 4.5, 0, 2 * std::numbers::pi);
+  cairo_fill(cr);
+  const double dx = x > c ? -8.0 : 8.0;
+  cairo_set_font_size(cr, 12);
+  cairo_text_extents_t ext;
+  cairo_text_extents(cr, label.c_str(), &ext);
+  cairo_move_to(cr, dx < 0 ? x + dx - ext.width : x + dx, y + (y > c ? 16 : -8));
+  cairo_show_text(cr, label.c_str());
+}
+
+void draw(cairo_t* cr, const PassPicture& p) {
+  cairo_set_source_rgb(cr, 1, 1, 1);
+  cairo_paint(cr);
+  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  if (p.plan) draw_unreachable(cr, *p.plan);
+  draw_grid(cr);
 
   std::vector<std::pair<double, double>> track;
   for (const auto& t : p.track) track.emplace_back(t.az_deg, std::max(t.el_deg, -2.0));
@@ -109,42 +149,12 @@ void draw(cairo_t* cr, const PassPicture& p) {
   cairo_set_line_width(cr, 3.0);
   polyline(cr, track);
   cairo_stroke(cr);
-  // Where the antenna cannot follow: red over the track.
-  if (p.plan) {
-    cairo_set_source_rgb(cr, 0.85, 0.0, 0.0);
-    cairo_set_line_width(cr, 3.0);
-    bool open = false;
-    for (const auto& t : p.track) {
-      const rotator::AzEl a = p.plan->pointing_at(t.az_deg, t.el_deg);
-      const bool lost = rotator::azimuth_distance(a.az, t.az_deg) > 0.05 && t.el_deg < 89.5;
-      double x, y;
-      plot_position(t.az_deg, std::max(t.el_deg, -2.0), x, y);
-      if (lost && !open) cairo_move_to(cr, x, y);
-      if (lost) cairo_line_to(cr, x, y);
-      if (!lost && open) cairo_stroke(cr);
-      open = lost;
-    }
-    if (open) cairo_stroke(cr);
-  }
+  if (p.plan) draw_lost(cr, p);
   // AOS, TCA, LOS: a dot and the time.
-  auto mark = [&](double az, double el, const std::string& label) {
-    double x, y;
-    plot_position(az, std::max(el, -2.0), x, y);
-    cairo_set_source_rgb(cr, 0, 0, 0);
-    cairo_arc(cr, x, y, 4.5, 0, 2 * std::numbers::pi);
-    cairo_fill(cr);
-    const double dx = x > c ? -8.0 : 8.0;
-    cairo_set_font_size(cr, 12);
-    cairo_text_extents_t ext;
-    cairo_text_extents(cr, label.c_str(), &ext);
-    cairo_move_to(cr, dx < 0 ? x + dx - ext.width : x + dx, y + (y > c ? 16 : -8));
-    cairo_show_text(cr, label.c_str());
-  };
   const orbit::Pass& ps = p.pass;
-  double tca_az = ps.tca_az_deg;
-  mark(ps.aos_az_deg, -2.0, "AOS " + hms(ps.aos));
-  mark(tca_az, ps.max_el_deg, "TCA " + hms(ps.tca));
-  mark(ps.los_az_deg, -2.0, "LOS " + hms(ps.los));
+  mark(cr, ps.aos_az_deg, -2.0, "AOS " + hms(ps.aos));
+  mark(cr, ps.tca_az_deg, ps.max_el_deg, "TCA " + hms(ps.tca));
+  mark(cr, ps.los_az_deg, -2.0, "LOS " + hms(ps.los));
 
   // Title and legend.
   cairo_set_source_rgb(cr, 0, 0, 0);

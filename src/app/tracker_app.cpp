@@ -389,6 +389,24 @@ std::unique_ptr<AttachServer> open_socket(StationApp& app, const TrackerConfig& 
   }
 }
 
+// What the command line sets over the stored state: --cross-limit-sector, the drivers
+// (stored_drivers.h; what that says goes to the log and where the operator sees it) and the GPS.
+std::optional<std::string> apply_command_line(TrackerConfig& c, Startup& startup, spdlog::logger& log) {
+  if (c.cross_limit_sector) startup.model.rotator.cross_limit_sector = *c.cross_limit_sector;
+  std::vector<std::string> said;
+  if (auto err = apply_stored_drivers(c, startup.model, said)) return err;
+  for (const auto& line : said) {
+    log.info("{}", line);
+    if (c.service) continue;
+    if (c.front_end == FrontEnd::host) std::fprintf(stderr, "trakbox: %s\n", line.c_str());
+    else startup.drivers_said.push_back(line);
+  }
+  if (c.gps_source) startup.model.gps.source = *c.gps_source;
+  if (c.gps_follow) startup.model.gps.follow = *c.gps_follow;
+  if (c.gps_threshold_m) startup.model.gps.threshold_m = *c.gps_threshold_m;
+  return std::nullopt;
+}
+
 }  // namespace
 
 // The element refresh of the command line: --elements-url replaces the stored sources (keeping the
@@ -425,20 +443,7 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   auto log = open_log(c);
   store::StateFile file(c.state_dir);
   Startup startup = load_state(file, c, *log);
-  if (c.cross_limit_sector) startup.model.rotator.cross_limit_sector = *c.cross_limit_sector;
-  {
-    std::vector<std::string> said;
-    if (auto err = apply_stored_drivers(c, startup.model, said)) return usage_error(*err);
-    for (const auto& line : said) {
-      log->info("{}", line);
-      if (c.service) continue;
-      if (c.front_end == FrontEnd::host) std::fprintf(stderr, "trakbox: %s\n", line.c_str());
-      else startup.drivers_said.push_back(line);
-    }
-  }
-  if (c.gps_source) startup.model.gps.source = *c.gps_source;
-  if (c.gps_follow) startup.model.gps.follow = *c.gps_follow;
-  if (c.gps_threshold_m) startup.model.gps.threshold_m = *c.gps_threshold_m;
+  if (auto err = apply_command_line(c, startup, *log)) return usage_error(*err);
 
   // "trakbox stopped" is the log's last line: written after the station, its drivers' workers and
   // the servers are gone, whose last words (a link closing) came after it before (issue 30).

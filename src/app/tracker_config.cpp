@@ -199,6 +199,38 @@ void read_gps(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
                                Range{station::kGpsThresholdMinM, station::kGpsThresholdMaxM});
 }
 
+// --doppler-step SSB,FM: two whole numbers of Hz, each within what the state file takes.
+void read_doppler_steps(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
+  const auto v = o.value("doppler-step");
+  if (!v) return;
+  const auto comma = v->find(',');
+  auto hz = [](const std::string& t, long long lo, long long hi) -> std::optional<long long> {
+    char* end = nullptr;
+    const long long n = t.empty() ? 0 : std::strtoll(t.c_str(), &end, 10);
+    if (t.empty() || *end != '\0' || n < lo || n > hi) return std::nullopt;
+    return n;
+  };
+  const auto ssb = comma == std::string::npos ? std::nullopt : hz(v->substr(0, comma), 10, 1000);
+  const auto fm = comma == std::string::npos ? std::nullopt : hz(v->substr(comma + 1), 10, 10000);
+  if (ssb && fm) c.doppler_steps = std::pair<radio::Hz, radio::Hz>{*ssb, *fm};
+  else r.fail("--doppler-step", "\"" + *v + "\": expected SSB,FM in Hz, SSB/CW 10 to 1000 and FM 10 to 10000, e.g. 20,100");
+}
+
+// --allow ADDRESS[/PREFIX]...: who may connect to the servers.
+void read_allow(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
+  for (const std::string& a : o.values("allow")) {
+    if (const auto cidr = inet::parse_cidr(a)) {
+      c.allow.push_back(*cidr);
+      if (inet::has_host_bits(*cidr))
+        c.warnings.push_back("--allow " + a + ": the address has bits set beyond /" + std::to_string(cidr->prefix) +
+                             "; the whole range is allowed, as if the host bits were zero");
+    } else {
+      r.fail("--allow", "expected an address or ADDRESS/PREFIX (192.168.1.0/24, ::1, ::ffff:192.0.2.0/120); found '" +
+                            a + "'");
+    }
+  }
+}
+
 // Front ends that cannot go together.
 void check_front_end(const ParsedOptions& o, OptionReader& r, FrontEnd front_end) {
   const bool service = o.has("service");
@@ -238,20 +270,7 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
                           "the tracker and the simulated rotator follow)", Range{0.0, station::kMaxClockRate, true});
   if (const auto v = r.integer("dial-rest", false, "milliseconds, 0 to 10000", Range{0, 10000}))
     c.dial_rest_ms = static_cast<int>(*v);
-  if (const auto v = o.value("doppler-step")) {
-    // SSB,FM: two whole numbers of Hz, each within what the state file takes.
-    const auto comma = v->find(',');
-    auto hz = [](const std::string& t, long long lo, long long hi) -> std::optional<long long> {
-      char* end = nullptr;
-      const long long n = t.empty() ? 0 : std::strtoll(t.c_str(), &end, 10);
-      if (t.empty() || *end != '\0' || n < lo || n > hi) return std::nullopt;
-      return n;
-    };
-    const auto ssb = comma == std::string::npos ? std::nullopt : hz(v->substr(0, comma), 10, 1000);
-    const auto fm = comma == std::string::npos ? std::nullopt : hz(v->substr(comma + 1), 10, 10000);
-    if (ssb && fm) c.doppler_steps = std::pair<radio::Hz, radio::Hz>{*ssb, *fm};
-    else r.fail("--doppler-step", "\"" + *v + "\": expected SSB,FM in Hz, SSB/CW 10 to 1000 and FM 10 to 10000, e.g. 20,100");
-  }
+  read_doppler_steps(o, r, c);
   if (const auto v = r.integer("tick-ms", false, "milliseconds, 100 to 1000", Range{100, 1000}))
     c.tick_ms = static_cast<int>(*v);
   if (const auto v = r.integer("satrak-port", false, "a TCP port 0 to 65535 (0: off)", Range{0, 65535})) {
@@ -279,17 +298,7 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
     else r.fail("--log-level", "expected error, warn, info or debug; found '" + *l + "'");
   }
   if (o.has("tty") && o.has("line")) r.fail("--line", "not with --tty (a serial port is always plain lines)");
-  for (const std::string& a : o.values("allow")) {
-    if (const auto cidr = inet::parse_cidr(a)) {
-      c.allow.push_back(*cidr);
-      if (inet::has_host_bits(*cidr))
-        c.warnings.push_back("--allow " + a + ": the address has bits set beyond /" + std::to_string(cidr->prefix) +
-                             "; the whole range is allowed, as if the host bits were zero");
-    } else {
-      r.fail("--allow", "expected an address or ADDRESS/PREFIX (192.168.1.0/24, ::1, ::ffff:192.0.2.0/120); found '" +
-                            a + "'");
-    }
-  }
+  read_allow(o, r, c);
   for (const std::string& h : o.values("on-event")) {
     std::string why;
     if (auto hook = parse_event_hook(h, why)) c.hooks.push_back(std::move(*hook));

@@ -272,9 +272,10 @@ def satellite_track(at, seconds, sat="ISS", station="27.391,128.657,50", freq=No
     return json.loads(out)
 
 
-def run_test(main):
-    """Runs main() and prints one result line; exit status 0 on success."""
-    name = os.path.basename(main.__code__.co_filename)
+def run_test(main, name=None):
+    """Runs main() and prints one result line (named after main's file unless `name` is given);
+    exit status 0 on success."""
+    name = name or os.path.basename(main.__code__.co_filename)
     try:
         main()
     except Failure as e:
@@ -563,17 +564,24 @@ class ScreenSession:
             shutil.rmtree(self.state_dir, ignore_errors=True)
 
 
+def in_temp_dir(prefix, body):
+    """body(folder) on a new temporary folder, removed afterwards whatever happens; body's result."""
+    d = tempfile.mkdtemp(prefix=prefix)
+    try:
+        return body(d)
+    finally:
+        shutil.rmtree(d, ignore_errors=True)
+
+
 def factory_state():
     """The model a first start writes (factory defaults and the shipped database): trakbox on a
     pipe whose input ends at once saves and leaves."""
-    d = tempfile.mkdtemp(prefix="trakbox-factory-")
-    try:
+    def first_start(d):
         r = subprocess.run([BIN, "--state", d, "--line", "--satrak-port", "0", "--clock", CLOCK],
                            stdin=subprocess.DEVNULL, capture_output=True, timeout=30)
         check(r.returncode == 0, f"trakbox on an empty pipe: exit {r.returncode} {r.stderr[-500:]!r}")
         return load_state(os.path.join(d, "trakbox-state.json"))
-    finally:
-        shutil.rmtree(d, ignore_errors=True)
+    return in_temp_dir("trakbox-factory-", first_start)
 
 
 # ---------------------------------------------------------------------------------------------

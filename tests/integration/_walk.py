@@ -11,10 +11,11 @@ import math
 import os
 import re
 import subprocess
+import sys
 import time
 
 from _tbharness import (BIN, SOURCE, Failure, ScreenSession, SerialSession, check, factory_state, load_state,
-                        read_tle, tle_to_amsat)
+                        read_tle, run_test, tle_to_amsat)
 
 MAIN = r"Select \[1-8,S,M\]:"
 UPDATE = r" Select:"              # the UPDATE MENU and the Configuration Menu prompt
@@ -885,9 +886,16 @@ def walk_serial(group, *args, transcript_checks=(), **kwargs):
 
 
 def walk_screen(group, *args, **kwargs):
-    """The group on the full-screen front end in tmux, 100x40."""
+    """The group on the real binary's full-screen front end in tmux (100x40, send-keys,
+    capture-pane): the same transcripts as on the serial line, asserted on what the screen shows;
+    the stored state is checked after each change and after Ctrl-C (the ui_walk_screen_* tests)."""
     s = ScreenSession(extra=CROSSING, cols=100, rows=40)
     try:
         group(s, *args, **kwargs)
     finally:
         s.close()
+
+
+def screen_test(group, *args, **kwargs):
+    """A ui_walk_screen_* script: walk_screen(group, ...) as one test named after the script."""
+    run_test(lambda: walk_screen(group, *args, **kwargs), os.path.basename(sys.argv[0]))

@@ -9,14 +9,12 @@ checked against Skyfield elsewhere): what is tested here is that the defaults st
 """
 import os
 import re
-import shutil
 import subprocess
 import sys
-import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, SOURCE, check, run_test, sh  # noqa: E402
+from _tbharness import BIN, SOURCE, check, in_temp_dir, run_test, sh  # noqa: E402
 
 TLE = os.path.join(SOURCE, "data", "amateur.tle")
 FACTORY = "27.391,128.657,50"
@@ -36,11 +34,7 @@ def rows(out):
 
 
 def main():
-    tmp = tempfile.mkdtemp(prefix="trakbox-cli-")
-    try:
-        run(tmp)
-    finally:
-        shutil.rmtree(tmp, ignore_errors=True)
+    in_temp_dir("trakbox-cli-", run)
 
 
 def run(tmp):

@@ -6,23 +6,17 @@ again below so that the test never reaches the Internet when run by hand). The c
 after the shipped elements' epochs, as on the day the issue was filed.
 """
 import os
-import shutil
 import sys
-import tempfile
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, ScreenUI, check, load_state, run_test  # noqa: E402
+from _tbharness import BIN, ScreenUI, check, in_temp_dir, load_state, run_test  # noqa: E402
 
 NO_NET = {k: "socks5h://127.0.0.1:9" for k in ("all_proxy", "ALL_PROXY", "http_proxy", "https_proxy", "HTTPS_PROXY")}
 URL = "https://celestrak.org/NORAD/elements/gp.php?GROUP=amateur&FORMAT=json"
 
 
 def main():
-    state = tempfile.mkdtemp(prefix="trakbox-first-hour-")
-    try:
-        walk(state)
-    finally:
-        shutil.rmtree(state, ignore_errors=True)
+    in_temp_dir("trakbox-first-hour-", walk)
 
 
 def walk(state):

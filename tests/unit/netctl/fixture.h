@@ -1,7 +1,7 @@
-// A whole simulated station (ManualClock, SimulatedRotator, SimulatedRadio, StationLoop) for the
-// netctl tests, and helpers for talking to the servers: an io_context on a thread that also ticks
-// the station (so every station call happens on one thread, as in the program), loopback clients,
-// bounded child processes.
+// A whole simulated station (support/sim_station.h's StationFixture: SimulatedRotator,
+// SimulatedRadio, StationLoop, a clock the test moves) for the netctl tests, and helpers for
+// talking to the servers: an io_context on a thread that also ticks the station (so every station
+// call happens on one thread, as in the program), loopback clients, bounded child processes.
 #pragma once
 #include <doctest/doctest.h>
 #include <fcntl.h>
@@ -41,43 +41,27 @@ inline const bool kQuietLogs = [] {
   return true;
 }();
 
-struct SimStation {
+// The shared StationFixture on the test's model (default: the factory settings alone), its station
+// built, rotor control as asked, and a first reading taken.
+struct SimStation : tb::testing::StationFixture {
   explicit SimStation(store::Model m = {}, bool rotor_control = true)
-      : model(std::move(m)), clock(orbit::from_civil(2026, 5, 21, 12, 0, 0)), tracker(model, clock) {
-    tb::testing::SimulatedStation sim = tb::testing::simulated_station(model, clock, tracker);
-    rot = sim.rotator;
-    radio = sim.radio;
-    loop = std::move(sim.loop);
-    loop->set_rotor_control(rotor_control);
-    loop->tick();  // a first reading
+      : StationFixture(orbit::from_civil(2026, 5, 21, 12, 0, 0), std::move(m)) {
+    build_station();
+    station->set_rotor_control(rotor_control);
+    station->tick();  // a first reading
   }
-  void step(std::chrono::milliseconds dt = 100ms) {
-    clock.advance(dt);
-    loop->tick();
-  }
+  void step(std::chrono::milliseconds dt = 100ms) { StationFixture::step(dt); }
   // Ticks (simulated time only) until the rotator is on its target and has stopped coasting, at
   // most `limit`.
   bool settle(std::chrono::seconds limit = 300s) {
     for (auto t = 0ms; t < limit; t += 100ms) {
       step();
-      if (loop->rotator().status().on_target && std::abs(rot->true_velocity(rotator::Axis::az)) < 0.01 &&
-          std::abs(rot->true_velocity(rotator::Axis::el)) < 0.01)
+      if (station->rotator().status().on_target && std::abs(rotator_sim->true_velocity(rotator::Axis::az)) < 0.01 &&
+          std::abs(rotator_sim->true_velocity(rotator::Axis::el)) < 0.01)
         return true;
     }
     return false;
   }
-  // Where the antenna truly is: compass azimuth and elevation.
-  rotator::AzEl truth() {
-    const rotator::RotatorPosition p = rot->true_position();
-    return {loop->rotator().model().compass_from_travel(p.az_travel), p.el};
-  }
-
-  store::Model model;
-  station::ManualClock clock;
-  tracker::Tracker tracker;
-  rotator::SimulatedRotator* rot = nullptr;
-  radio::SimulatedRadio* radio = nullptr;
-  std::unique_ptr<tracker::StationLoop> loop;
 };
 
 // Smallest angle between two azimuths.

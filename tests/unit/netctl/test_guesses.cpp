@@ -117,7 +117,7 @@ TEST_CASE("server: wrong secrets from one address are answered later and later, 
   CapturedLog log;
   SimStation st;
   boost::asio::io_context io;
-  netctl::RotctldServer rot(io, 0, *st.loop, with_secret(netctl::RotctldServer::named("rotctld")));
+  netctl::RotctldServer rot(io, 0, *st.station, with_secret(netctl::RotctldServer::named("rotctld")));
   LoopThread lt(io, st);
   // Two connections of one address, guessing in turn: the delays are the address's, not the connection's.
   RawClient a(rot.port()), b(rot.port());
@@ -149,8 +149,8 @@ TEST_CASE("server: a password sent again after logging in is checked, never logg
   CapturedLog log;
   SimStation st;
   boost::asio::io_context io;
-  netctl::RotctldServer rot(io, 0, *st.loop, with_secret(netctl::RotctldServer::named("rotctld")));
-  netctl::HostServer host(io, 0, *st.loop, with_secret(netctl::HostServer::defaults()));
+  netctl::RotctldServer rot(io, 0, *st.station, with_secret(netctl::RotctldServer::named("rotctld")));
+  netctl::HostServer host(io, 0, *st.station, with_secret(netctl::HostServer::defaults()));
   LoopThread lt(io, st);
   RawClient r(rot.port());
   REQUIRE(r.ok());
@@ -180,10 +180,10 @@ TEST_CASE("server: one address holds at most max_per_address connections; host m
   netctl::ServerOptions o = netctl::HostServer::defaults();
   o.max_per_address = 2;
   o.per_address_exempt.clear();  // loopback is exempt by default: the test's clients are all loopback
-  netctl::HostServer host(io, 0, *st.loop, o);
+  netctl::HostServer host(io, 0, *st.station, o);
   netctl::ServerOptions only_other = netctl::HostServer::defaults();
   only_other.allow.push_back(*inet::parse_cidr("192.0.2.0/24"));
-  netctl::HostServer fenced(io, 0, *st.loop, only_other);
+  netctl::HostServer fenced(io, 0, *st.station, only_other);
   LoopThread lt(io, st);
   RawClient a(host.port()), b(host.port());
   REQUIRE(a.ok());
@@ -211,7 +211,7 @@ TEST_CASE("server: clients that trickle bytes without ever ending a line make ro
   netctl::ServerOptions o = netctl::RotctldServer::named("rotctld");
   o.max_clients = 2;
   o.evict_idle_after = ms(300);
-  netctl::RotctldServer rot(io, 0, *st.loop, o);
+  netctl::RotctldServer rot(io, 0, *st.station, o);
   LoopThread lt(io, st);
   RawClient a(rot.port()), b(rot.port());
   REQUIRE(a.ok());

@@ -17,39 +17,39 @@ std::string ask(RigctlProtocol& p, std::string_view line) { return p.handle(line
 
 TEST_CASE("rigctl: F / f and \\set_freq / \\get_freq tune the current VFO's link") {
   SimStation st;
-  RigctlProtocol p(*st.loop);
+  RigctlProtocol p(*st.station);
   CHECK(ask(p, "f") == "0\n");  // nothing tuned yet
   CHECK(ask(p, "F 145950000") == "RPRT 0\n");
-  CHECK(st.radio->frequency(Link::downlink) == 145950000);
-  CHECK(!st.radio->frequency(Link::uplink));
+  CHECK(st.radio_sim->frequency(Link::downlink) == 145950000);
+  CHECK(!st.radio_sim->frequency(Link::uplink));
   CHECK(ask(p, "f") == "145950000\n");
   CHECK(ask(p, "\\get_freq") == "145950000\n");
   // Hamlib's NET client sends "%f"; trakbox's radios take 10 Hz steps.
   CHECK(ask(p, "\\set_freq 145800003.000000") == "RPRT 0\n");
-  CHECK(st.radio->frequency(Link::downlink) == 145800000);
+  CHECK(st.radio_sim->frequency(Link::downlink) == 145800000);
   CHECK(ask(p, "F 145800005.6") == "RPRT 0\n");
-  CHECK(st.radio->frequency(Link::downlink) == 145800010);
+  CHECK(st.radio_sim->frequency(Link::downlink) == 145800010);
   CHECK(ask(p, "F1.4595e8") == "RPRT 0\n");
-  CHECK(st.radio->frequency(Link::downlink) == 145950000);
-  const auto h = st.radio->history();
+  CHECK(st.radio_sim->frequency(Link::downlink) == 145950000);
+  const auto h = st.radio_sim->history();
   REQUIRE(h.size() == 4);
   CHECK(h.back() == radio::RadioEvent{radio::RadioEvent::Kind::frequency, Link::downlink, 145950000, radio::Mode::none, {}});
 }
 
 TEST_CASE("rigctl: V / v select the link: VFO A / Main / RX = downlink, VFO B / Sub / TX = uplink") {
   SimStation st;
-  RigctlProtocol p(*st.loop);
+  RigctlProtocol p(*st.station);
   CHECK(ask(p, "v") == "VFOA\n");
   CHECK(ask(p, "V VFOB") == "RPRT 0\n");
   CHECK(p.current_link() == Link::uplink);
   CHECK(ask(p, "v") == "VFOB\n");
   CHECK(ask(p, "F 435100000") == "RPRT 0\n");
-  CHECK(st.radio->frequency(Link::uplink) == 435100000);
+  CHECK(st.radio_sim->frequency(Link::uplink) == 435100000);
   CHECK(ask(p, "f") == "435100000\n");
   CHECK(ask(p, "\\set_vfo Main") == "RPRT 0\n");
   CHECK(ask(p, "\\get_vfo") == "Main\n");
   CHECK(ask(p, "F 145900000") == "RPRT 0\n");
-  CHECK(st.radio->frequency(Link::downlink) == 145900000);
+  CHECK(st.radio_sim->frequency(Link::downlink) == 145900000);
   CHECK(ask(p, "V Sub") == "RPRT 0\n");
   CHECK(ask(p, "v") == "Sub\n");
   CHECK(ask(p, "V currVFO") == "RPRT 0\n");  // stays
@@ -72,11 +72,11 @@ TEST_CASE("rigctl: V / v select the link: VFO A / Main / RX = downlink, VFO B / 
 
 TEST_CASE("rigctl: I / i and X / x set the uplink (the split TX VFO) whatever VFO is current") {
   SimStation st;
-  RigctlProtocol p(*st.loop);
+  RigctlProtocol p(*st.station);
   CHECK(ask(p, "i") == "0\n");
   CHECK(ask(p, "I 435100000") == "RPRT 0\n");
-  CHECK(st.radio->frequency(Link::uplink) == 435100000);
-  CHECK(!st.radio->frequency(Link::downlink));
+  CHECK(st.radio_sim->frequency(Link::uplink) == 435100000);
+  CHECK(!st.radio_sim->frequency(Link::downlink));
   CHECK(ask(p, "i") == "435100000\n");
   CHECK(ask(p, "\\set_split_freq 435100020") == "RPRT 0\n");
   CHECK(ask(p, "\\get_split_freq") == "435100020\n");
@@ -85,20 +85,20 @@ TEST_CASE("rigctl: I / i and X / x set the uplink (the split TX VFO) whatever VF
 
   CHECK(ask(p, "x") == "RPRT -6\n");
   CHECK(ask(p, "X LSB 2400") == "RPRT 0\n");
-  CHECK(st.radio->mode(Link::uplink) == radio::Mode::lsb);
+  CHECK(st.radio_sim->mode(Link::uplink) == radio::Mode::lsb);
   CHECK(ask(p, "x") == "LSB\n0\n");
   CHECK(ask(p, "\\set_split_mode FM 0") == "RPRT 0\n");
   CHECK(ask(p, "\\get_split_mode") == "FM\n0\n");
   CHECK(ask(p, "+x") == "get_split_mode:\nTX Mode: FM\nTX Passband: 0\nRPRT 0\n");
-  CHECK(!st.radio->mode(Link::downlink));
+  CHECK(!st.radio_sim->mode(Link::downlink));
 }
 
 TEST_CASE("rigctl: M / m set and read the current VFO's mode") {
   SimStation st;
-  RigctlProtocol p(*st.loop);
+  RigctlProtocol p(*st.station);
   CHECK(ask(p, "m") == "RPRT -6\n");
   CHECK(ask(p, "M USB 2400") == "RPRT 0\n");
-  CHECK(st.radio->mode(Link::downlink) == radio::Mode::usb);
+  CHECK(st.radio_sim->mode(Link::downlink) == radio::Mode::usb);
   CHECK(ask(p, "m") == "USB\n0\n");
   CHECK(ask(p, "\\set_mode CW -1") == "RPRT 0\n");
   CHECK(ask(p, "\\get_mode") == "CW\n0\n");
@@ -108,15 +108,15 @@ TEST_CASE("rigctl: M / m set and read the current VFO's mode") {
   CHECK(ask(p, "|M LSB 0") == "set_mode: LSB 0|RPRT 0\n");
   CHECK(ask(p, "V VFOB") == "RPRT 0\n");
   CHECK(ask(p, "M USB 0") == "RPRT 0\n");
-  CHECK(st.radio->mode(Link::uplink) == radio::Mode::usb);
-  CHECK(st.radio->mode(Link::downlink) == radio::Mode::lsb);
+  CHECK(st.radio_sim->mode(Link::uplink) == radio::Mode::usb);
+  CHECK(st.radio_sim->mode(Link::downlink) == radio::Mode::lsb);
   CHECK(ask(p, "M ?") == "USB LSB CW FM\nRPRT 0\n");
   CHECK(ask(p, "X ?") == "USB LSB CW FM\nRPRT 0\n");
 }
 
 TEST_CASE("rigctl: S / s split; T / t PTT") {
   SimStation st;
-  RigctlProtocol p(*st.loop);
+  RigctlProtocol p(*st.station);
   CHECK(ask(p, "s") == "0\nVFOB\n");
   CHECK(ask(p, "S 1 VFOB") == "RPRT 0\n");
   CHECK(p.split());
@@ -142,12 +142,12 @@ TEST_CASE("rigctl: S / s split; T / t PTT") {
   CHECK(ask(p, "T 4") == "RPRT -1\n");
   CHECK(ask(p, "T") == "RPRT -1\n");
   CHECK(ask(p, "t") == "0\n");
-  CHECK(st.radio->history().empty());
+  CHECK(st.radio_sim->history().empty());
 }
 
 TEST_CASE("rigctl: what Hamlib's NET client asks when it opens") {
   SimStation st;
-  RigctlProtocol p(*st.loop);
+  RigctlProtocol p(*st.station);
   CHECK(ask(p, "\\chk_vfo") == "0\n");
   CHECK(ask(p, "+\\chk_vfo") == "chk_vfo:\nChkVFO: 0\nRPRT 0\n");
   CHECK(ask(p, "\\get_powerstat") == "1\n");
@@ -172,11 +172,11 @@ TEST_CASE("rigctl: what Hamlib's NET client asks when it opens") {
 
 TEST_CASE("rigctl: malformed requests are answered RPRT -1 / -8 / -11 and change nothing") {
   SimStation st;
-  RigctlProtocol p(*st.loop);
+  RigctlProtocol p(*st.station);
   REQUIRE(ask(p, "F 145950000") == "RPRT 0\n");
   REQUIRE(ask(p, "I 435100000") == "RPRT 0\n");
   REQUIRE(ask(p, "M USB 2400") == "RPRT 0\n");
-  const auto before = st.radio->history();
+  const auto before = st.radio_sim->history();
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"F abc", "RPRT -1\n"},
       {"F", "RPRT -1\n"},
@@ -209,7 +209,7 @@ TEST_CASE("rigctl: malformed requests are answered RPRT -1 / -8 / -11 and change
     CAPTURE(line);
     CHECK(ask(p, line) == want);
   }
-  CHECK(st.radio->history() == before);
+  CHECK(st.radio_sim->history() == before);
   CHECK(ask(p, "f") == "145950000\n");
   CHECK(ask(p, "+F abc") == "set_freq: abc\nRPRT -1\n");
   CHECK(ask(p, "+W 1") == "W: 1\nRPRT -11\n");
@@ -217,41 +217,41 @@ TEST_CASE("rigctl: malformed requests are answered RPRT -1 / -8 / -11 and change
   // were (a NUL, an ESC). They are blanks, like control bytes in every value.
   CHECK(ask(p, std::string("+F 4\0\x1b[2J", 9)) == "set_freq: 4  [2J\nRPRT -1\n");
   CHECK(ask(p, "+\x01 x") == " : x\nRPRT -11\n");
-  CHECK(st.radio->history() == before);
+  CHECK(st.radio_sim->history() == before);
 }
 
 TEST_CASE("rigctl: a link trakbox's tracker is tuning is refused (RPRT -9), the other is free") {
   store::Model m = shipped_model();
   m.radio.uplink_correction = false;  // trakbox corrects the downlink only
   SimStation st(m);
-  RigctlProtocol p(*st.loop);
+  RigctlProtocol p(*st.station);
   const auto ao7 = st.model.db.find("AO-07");
   REQUIRE(ao7);
   st.tracker.track_single(*ao7);
   st.step();
-  REQUIRE(st.loop->tuner().satellite().has_downlink());
-  const auto before = st.radio->history();
+  REQUIRE(st.station->tuner().satellite().has_downlink());
+  const auto before = st.radio_sim->history();
   CHECK(ask(p, "F 145950000") == "RPRT -9\n");
   CHECK(ask(p, "M USB 0") == "RPRT -9\n");
-  CHECK(st.radio->history() == before);
+  CHECK(st.radio_sim->history() == before);
   CHECK(ask(p, "I 432150000") == "RPRT 0\n");  // uplink correction off: the client may tune it
-  CHECK(st.radio->frequency(Link::uplink) == 432150000);
+  CHECK(st.radio_sim->frequency(Link::uplink) == 432150000);
   st.tracker.stop();
   CHECK(ask(p, "F 145950000") == "RPRT 0\n");
-  CHECK(st.radio->frequency(Link::downlink) == 145950000);
+  CHECK(st.radio_sim->frequency(Link::downlink) == 145950000);
 }
 
 TEST_CASE("rigctl: a radio in fault refuses sets (RPRT -6) and reads back what it last took") {
   SimStation st;
-  RigctlProtocol p(*st.loop);
+  RigctlProtocol p(*st.station);
   REQUIRE(ask(p, "F 145950000") == "RPRT 0\n");
-  st.radio->simulate_fault("interface not echoing");
+  st.radio_sim->simulate_fault("interface not echoing");
   CHECK(ask(p, "F 145800000") == "RPRT -6\n");
   CHECK(ask(p, "I 435000000") == "RPRT -6\n");
   CHECK(ask(p, "M FM 0") == "RPRT -6\n");
   CHECK(ask(p, "f") == "145950000\n");
   CHECK(ask(p, "i") == "0\n");
-  st.radio->clear_fault();
+  st.radio_sim->clear_fault();
   CHECK(ask(p, "F 145800000") == "RPRT 0\n");
   CHECK(ask(p, "f") == "145800000\n");
 }

@@ -31,7 +31,7 @@ struct Snapshot {
   bool operator==(const Snapshot&) const = default;
 };
 Snapshot snap(SimStation& st) {
-  const auto& s = st.loop->rotator().status();
+  const auto& s = st.station->rotator().status();
   return {s.mode, s.target, st.tracker.mode()};
 }
 
@@ -39,7 +39,7 @@ Snapshot snap(SimStation& st) {
 
 TEST_CASE("rotctl: P / \\set_pos points the antenna through trakbox's model; p / \\get_pos reads it back") {
   SimStation st;
-  RotctlProtocol p(*st.loop);
+  RotctlProtocol p(*st.station);
 
   CHECK(ask(p, "P 120 30") == "RPRT 0\n");
   REQUIRE(st.settle());
@@ -58,7 +58,7 @@ TEST_CASE("rotctl: P / \\set_pos points the antenna through trakbox's model; p /
 
   // Arguments may follow a short command without a space, with tabs, and a CR before the newline.
   CHECK(ask(p, "P90\t45\r") == "RPRT 0\n");
-  CHECK(st.loop->rotator().status().target->el == doctest::Approx(45.0));
+  CHECK(st.station->rotator().status().target->el == doctest::Approx(45.0));
 
   // Negative azimuths (a -180..180 client) are compass bearings modulo 360.
   CHECK(ask(p, "P -90 20") == "RPRT 0\n");
@@ -68,14 +68,14 @@ TEST_CASE("rotctl: P / \\set_pos points the antenna through trakbox's model; p /
 
 TEST_CASE("rotctl: a position inside the dead band does not move the antenna") {
   SimStation st;
-  RotctlProtocol p(*st.loop);
+  RotctlProtocol p(*st.station);
   REQUIRE(ask(p, "P 100 20") == "RPRT 0\n");
   REQUIRE(st.settle());
-  const auto before = st.rot->true_position();
+  const auto before = st.rotator_sim->true_position();
   // Half a count of azimuth away: inside the 3-count dead band.
   CHECK(ask(p, "P " + std::to_string(st.truth().az + 0.2) + " " + std::to_string(st.truth().el)) == "RPRT 0\n");
   for (int i = 0; i < 30; ++i) st.step();
-  const auto after = st.rot->true_position();
+  const auto after = st.rotator_sim->true_position();
   CAPTURE(before.az_travel);
   CAPTURE(after.az_travel);
   CAPTURE(before.el);
@@ -86,7 +86,7 @@ TEST_CASE("rotctl: a position inside the dead band does not move the antenna") {
 
 TEST_CASE("rotctl: Extended Response Protocol with '+' and other separators") {
   SimStation st;
-  RotctlProtocol p(*st.loop);
+  RotctlProtocol p(*st.station);
   CHECK(ask(p, "+P 90 45") == "set_pos: 90 45\nRPRT 0\n");
   CHECK(ask(p, "+\\set_pos 90 45") == "set_pos: 90 45\nRPRT 0\n");
   REQUIRE(st.settle());
@@ -116,7 +116,7 @@ TEST_CASE("rotctl: Extended Response Protocol with '+' and other separators") {
 
 TEST_CASE("rotctl: malformed requests are answered RPRT -1 / -8 / -11 and change nothing") {
   SimStation st;
-  RotctlProtocol p(*st.loop);
+  RotctlProtocol p(*st.station);
   REQUIRE(ask(p, "P 50 10") == "RPRT 0\n");
   st.step();
   const Snapshot before = snap(st);
@@ -169,7 +169,7 @@ TEST_CASE("rotctl: outside trakbox's rotation limits a position is clamped to th
   m.rotator.el_limit_min = 5.0;
   m.rotator.el_limit_max = 60.0;
   SimStation st(m);
-  RotctlProtocol p(*st.loop);
+  RotctlProtocol p(*st.station);
   CHECK(ask(p, "P 120 80") == "RPRT 0\n");  // inside the protocol's range: clamped, not refused
   REQUIRE(st.settle());
   CHECK(az_diff(st.truth().az, 90.0) < 1.1);
@@ -187,18 +187,18 @@ TEST_CASE("rotctl: elevation up to 180 where the rotator may flip over the top")
   store::Model m;
   m.rotator.el_flip_allowed = true;
   SimStation st(m);
-  RotctlProtocol p(*st.loop);
+  RotctlProtocol p(*st.station);
   CHECK(p.max_el() == 180.0);
   CHECK(ask(p, "P 10 120") == "RPRT 0\n");
   REQUIRE(st.settle());
-  CHECK(std::abs(st.rot->true_position().el - 120.0) < 0.36);
+  CHECK(std::abs(st.rotator_sim->true_position().el - 120.0) < 0.36);
   CHECK(ask(p, "P 10 181") == "RPRT -1\n");
   CHECK(ask(p, "\\dump_state").find("max_el=180.000000\n") != std::string::npos);
 }
 
 TEST_CASE("rotctl: P stops trakbox's tracking; S stops everything and always works") {
   SimStation st(shipped_model());
-  RotctlProtocol p(*st.loop);
+  RotctlProtocol p(*st.station);
   const auto iss = st.model.db.find("ISS");
   REQUIRE(iss);
   st.tracker.track_single(*iss);
@@ -207,16 +207,16 @@ TEST_CASE("rotctl: P stops trakbox's tracking; S stops everything and always wor
   CHECK(ask(p, "P 45 45") == "RPRT 0\n");
   CHECK(st.tracker.mode() == tracker::Mode::off);
   for (int i = 0; i < 20; ++i) st.step();
-  CHECK(st.loop->rotator().status().az.motion != rotator::Drive::stop);
+  CHECK(st.station->rotator().status().az.motion != rotator::Drive::stop);
 
   CHECK(ask(p, "S") == "RPRT 0\n");
   st.step();
-  CHECK(st.loop->rotator().status().mode == rotator::ControlMode::idle);
-  CHECK(!st.loop->rotator().status().target);
+  CHECK(st.station->rotator().status().mode == rotator::ControlMode::idle);
+  CHECK(!st.station->rotator().status().target);
   for (int i = 0; i < 10; ++i) st.step();  // the motor coasts to a stop (0.15 s time constant)
-  const auto still = st.rot->true_position();
+  const auto still = st.rotator_sim->true_position();
   for (int i = 0; i < 20; ++i) st.step();
-  const auto after = st.rot->true_position();
+  const auto after = st.rotator_sim->true_position();
   CHECK(std::abs(after.az_travel - still.az_travel) < 0.01);
 
   st.tracker.track_single(*iss);
@@ -229,17 +229,17 @@ TEST_CASE("rotctl: with rotor control off (the E key) S changes nothing; P takes
   m.rotator.parking_enabled = true;
   m.rotator.parking = {90.0, 10.0};
   SimStation st(m, /*rotor_control=*/false);
-  RotctlProtocol p(*st.loop);
+  RotctlProtocol p(*st.station);
   CHECK(ask(p, "S") == "RPRT 0\n");
-  CHECK_FALSE(st.loop->rotor_control());
+  CHECK_FALSE(st.station->rotor_control());
   CHECK(ask(p, "P 10 10") == "RPRT 0\n");
-  CHECK(st.loop->rotor_control());
+  CHECK(st.station->rotor_control());
 }
 
 TEST_CASE("rotctl: K / \\park goes to the parking position, refused when parking is off") {
   {
     SimStation st;
-    RotctlProtocol p(*st.loop);
+    RotctlProtocol p(*st.station);
     const Snapshot before = snap(st);
     CHECK(ask(p, "K") == "RPRT -9\n");
     CHECK(ask(p, "+\\park") == "park:\nRPRT -9\n");
@@ -250,8 +250,8 @@ TEST_CASE("rotctl: K / \\park goes to the parking position, refused when parking
   m.rotator.parking = {90.0, 10.0};
   SimStation st(shipped_model());
   st.model.rotator = m.rotator;
-  st.loop->reconfigure();
-  RotctlProtocol p(*st.loop);
+  st.station->reconfigure();
+  RotctlProtocol p(*st.station);
   st.tracker.track_single(*st.model.db.find("ISS"));
   CHECK(ask(p, "K") == "RPRT 0\n");
   CHECK(st.tracker.mode() == tracker::Mode::off);
@@ -260,12 +260,12 @@ TEST_CASE("rotctl: K / \\park goes to the parking position, refused when parking
   CHECK(std::abs(st.truth().el - 10.0) < 0.36);
   CHECK(ask(p, "P 0 0") == "RPRT 0\n");
   CHECK(ask(p, "\\park") == "RPRT 0\n");
-  CHECK(st.loop->rotator().status().target->el == doctest::Approx(10.0));
+  CHECK(st.station->rotator().status().target->el == doctest::Approx(10.0));
 }
 
 TEST_CASE("rotctl: M / \\move drives an axis at the rotator's rate until S") {
   SimStation st;
-  RotctlProtocol p(*st.loop);
+  RotctlProtocol p(*st.station);
   REQUIRE(ask(p, "P 100 20") == "RPRT 0\n");
   REQUIRE(st.settle());
   const auto start = st.truth();
@@ -275,10 +275,10 @@ TEST_CASE("rotctl: M / \\move drives an axis at the rotator's rate until S") {
   const double cw = st.truth().az - start.az;
   CHECK(cw > 20.0);                        // 6 deg/s, less the spin-up
   CHECK(cw < 31.0);
-  CHECK(st.rot->true_velocity(rotator::Axis::az) == doctest::Approx(6.0).epsilon(0.05));
+  CHECK(st.rotator_sim->true_velocity(rotator::Axis::az) == doctest::Approx(6.0).epsilon(0.05));
   CHECK(ask(p, "S") == "RPRT 0\n");
   for (int i = 0; i < 10; ++i) st.step();
-  CHECK(std::abs(st.rot->true_velocity(rotator::Axis::az)) < 0.05);
+  CHECK(std::abs(st.rotator_sim->true_velocity(rotator::Axis::az)) < 0.05);
   const double stopped_at = st.truth().az;
   for (int i = 0; i < 20; ++i) st.step();
   CHECK(std::abs(st.truth().az - stopped_at) < 0.01);
@@ -299,22 +299,22 @@ TEST_CASE("rotctl: M / \\move drives an axis at the rotator's rate until S") {
 
 TEST_CASE("rotctl: a rotator that stopped answering: P, K, M and p answer RPRT -6") {
   SimStation st;
-  RotctlProtocol p(*st.loop);
-  st.rot->set_fault("ADC not answering");
+  RotctlProtocol p(*st.station);
+  st.rotator_sim->set_fault("ADC not answering");
   st.step();
   CHECK(ask(p, "p") == "RPRT -6\n");
   CHECK(ask(p, "+p") == "get_pos:\nRPRT -6\n");
   CHECK(ask(p, "P 10 10") == "RPRT -6\n");
   CHECK(ask(p, "M 16 10") == "RPRT -6\n");
   CHECK(ask(p, "S") == "RPRT 0\n");
-  st.rot->clear_fault();
+  st.rotator_sim->clear_fault();
   st.step();
   CHECK(lines(ask(p, "p")).size() == 2);
 }
 
 TEST_CASE("rotctl: _ / \\get_info, \\dump_state, 1 / \\dump_caps, q / Q") {
   SimStation st;
-  RotctlProtocol p(*st.loop);
+  RotctlProtocol p(*st.station);
   CHECK(ask(p, "_") == "trakbox rotator (simulated)\n");
   CHECK(ask(p, "\\get_info") == "trakbox rotator (simulated)\n");
   CHECK(ask(p, "\\dump_state") ==
@@ -344,7 +344,7 @@ TEST_CASE("rotctl: p answers in the azimuth frame of the client's P (Gpredict -1
   for (const bool minus180 : {true, false}) {
     CAPTURE(minus180);
     SimStation st;
-    RotctlProtocol p(*st.loop);
+    RotctlProtocol p(*st.station);
     auto frame = [minus180](double az) { return minus180 && az > 180.0 ? az - 360.0 : az; };
     auto send_p = [&](double az, double el) {
       char line[64];
@@ -358,7 +358,7 @@ TEST_CASE("rotctl: p answers in the azimuth frame of the client's P (Gpredict -1
       const double az = 300.0 + 0.4 * cycle, el = 20.0 + 0.1 * cycle;
       const auto [read_az, read_el] = pos_of(ask(p, "p"));
       // In the client's own frame: what it reads is comparable with what it sends.
-      CHECK(read_az == doctest::Approx(frame(st.loop->rotator().status().az.deg)).epsilon(1e-3));
+      CHECK(read_az == doctest::Approx(frame(st.station->rotator().status().az.deg)).epsilon(1e-3));
       if (std::abs(frame(az) - read_az) > 5.0 || std::abs(el - read_el) > 5.0) {
         send_p(az, el);
         ++sent;

@@ -44,7 +44,7 @@ TEST_CASE("server: Hamlib's rotctl -m 2 moves and reads the simulated antenna" *
   const auto rotctl = tb::testing::find_tool("rotctl");
   SimStation st;
   boost::asio::io_context io;
-  netctl::RotctldServer server(io, 0, *st.loop);
+  netctl::RotctldServer server(io, 0, *st.station);
   REQUIRE(server.port() != 0);
   LoopThread lt(io, st);
 
@@ -52,9 +52,9 @@ TEST_CASE("server: Hamlib's rotctl -m 2 moves and reads the simulated antenna" *
   CAPTURE(set.err);
   REQUIRE(!set.timed_out);
   CHECK(set.status == 0);
-  CHECK(lt.on_loop([&] { return st.loop->rotator().status().target.has_value(); }));
+  CHECK(lt.on_loop([&] { return st.station->rotator().status().target.has_value(); }));
   // The station ticks on the loop until the antenna has arrived.
-  REQUIRE(eventually(lt, [&] { return st.loop->rotator().status().on_target; }));
+  REQUIRE(eventually(lt, [&] { return st.station->rotator().status().on_target; }));
   const rotator::AzEl truth = lt.on_loop([&] { return st.truth(); });
   CHECK(az_diff(truth.az, 120.0) < 1.1);
   CHECK(std::abs(truth.el - 30.0) < 0.36);
@@ -71,11 +71,11 @@ TEST_CASE("server: Hamlib's rotctl -m 2 moves and reads the simulated antenna" *
   // A position the client's own limits (from \dump_state) refuse never reaches trakbox.
   const RunResult bad = run({*rotctl, "-m", "2", "-r", port_arg(server.port()), "P", "120", "95"});
   REQUIRE(!bad.timed_out);
-  CHECK(lt.on_loop([&] { return st.loop->rotator().status().target->el; }) == doctest::Approx(30.0));
+  CHECK(lt.on_loop([&] { return st.station->rotator().status().target->el; }) == doctest::Approx(30.0));
 
   // S and K through the client.
   CHECK(run({*rotctl, "-m", "2", "-r", port_arg(server.port()), "S"}).status == 0);
-  CHECK(lt.on_loop([&] { return st.loop->rotator().status().mode; }) == rotator::ControlMode::idle);
+  CHECK(lt.on_loop([&] { return st.station->rotator().status().mode; }) == rotator::ControlMode::idle);
   lt.stop();
   CHECK(lt.ticks() > 10);  // the station ticked all along
 }
@@ -85,7 +85,7 @@ TEST_CASE("server: Hamlib's rigctl -m 2 tunes the downlink (F / f) and the uplin
   const auto rigctl = tb::testing::find_tool("rigctl");
   SimStation st;
   boost::asio::io_context io;
-  netctl::RigctldServer server(io, 0, *st.loop);
+  netctl::RigctldServer server(io, 0, *st.station);
   LoopThread lt(io, st);
   const std::string where = port_arg(server.port());
 
@@ -96,8 +96,8 @@ TEST_CASE("server: Hamlib's rigctl -m 2 tunes the downlink (F / f) and the uplin
   CAPTURE(r.err);
   REQUIRE(!r.timed_out);
   CHECK(r.status == 0);
-  CHECK(lt.on_loop([&] { return st.radio->frequency(radio::Link::uplink); }) == 435120000);
-  CHECK(!lt.on_loop([&] { return st.radio->frequency(radio::Link::downlink); }));
+  CHECK(lt.on_loop([&] { return st.radio_sim->frequency(radio::Link::uplink); }) == 435120000);
+  CHECK(!lt.on_loop([&] { return st.radio_sim->frequency(radio::Link::downlink); }));
   CHECK(r.out == "VFOB\n");
 
   r = run({*rigctl, "-m", "2", "-r", where, "V", "VFOA", "F", "145950000"});
@@ -105,7 +105,7 @@ TEST_CASE("server: Hamlib's rigctl -m 2 tunes the downlink (F / f) and the uplin
   CAPTURE(r.err);
   REQUIRE(!r.timed_out);
   CHECK(r.status == 0);
-  CHECK(lt.on_loop([&] { return st.radio->frequency(radio::Link::downlink); }) == 145950000);
+  CHECK(lt.on_loop([&] { return st.radio_sim->frequency(radio::Link::downlink); }) == 145950000);
 
   r = run({*rigctl, "-m", "2", "-r", where, "f"});
   REQUIRE(!r.timed_out);
@@ -116,8 +116,8 @@ TEST_CASE("server: Hamlib's rigctl -m 2 tunes the downlink (F / f) and the uplin
   r = run({*rigctl, "-m", "2", "-r", where, "I", "435100000"});
   REQUIRE(!r.timed_out);
   CHECK(r.status == 0);
-  CHECK(lt.on_loop([&] { return st.radio->frequency(radio::Link::uplink); }) == 435100000);
-  CHECK(lt.on_loop([&] { return st.radio->frequency(radio::Link::downlink); }) == 145950000);
+  CHECK(lt.on_loop([&] { return st.radio_sim->frequency(radio::Link::uplink); }) == 435100000);
+  CHECK(lt.on_loop([&] { return st.radio_sim->frequency(radio::Link::downlink); }) == 145950000);
 
   r = run({*rigctl, "-m", "2", "-r", where, "i"});
   REQUIRE(!r.timed_out);
@@ -131,9 +131,9 @@ TEST_CASE("server: Hamlib's rigctl -m 2 tunes the downlink (F / f) and the uplin
   CAPTURE(r.out);
   REQUIRE(!r.timed_out);
   CHECK(r.status == 0);
-  CHECK(lt.on_loop([&] { return st.radio->frequency(radio::Link::uplink); }) == 435110000);
-  CHECK(lt.on_loop([&] { return st.radio->mode(radio::Link::uplink); }) == radio::Mode::lsb);
-  CHECK(lt.on_loop([&] { return st.radio->mode(radio::Link::downlink); }) == radio::Mode::usb);
+  CHECK(lt.on_loop([&] { return st.radio_sim->frequency(radio::Link::uplink); }) == 435110000);
+  CHECK(lt.on_loop([&] { return st.radio_sim->mode(radio::Link::uplink); }) == radio::Mode::lsb);
+  CHECK(lt.on_loop([&] { return st.radio_sim->mode(radio::Link::downlink); }) == radio::Mode::usb);
   CHECK(r.out.find("USB\n") != std::string::npos);
 
   // Split as a logging program sets it up: the client reads the TX frequency with i (or by
@@ -143,15 +143,15 @@ TEST_CASE("server: Hamlib's rigctl -m 2 tunes the downlink (F / f) and the uplin
   REQUIRE(!r.timed_out);
   CHECK(r.status == 0);
   CHECK(r.out == "435130000\nUSB\n0\n1\nVFOB\n145950000\n");
-  CHECK(lt.on_loop([&] { return st.radio->mode(radio::Link::uplink); }) == radio::Mode::usb);
+  CHECK(lt.on_loop([&] { return st.radio_sim->mode(radio::Link::uplink); }) == radio::Mode::usb);
   lt.stop();
 }
 
 TEST_CASE("server: a flooding, a non-reading and a silent client never stall the loop or the others") {
   SimStation st;
   boost::asio::io_context io;
-  netctl::RotctldServer rot(io, 0, *st.loop);
-  netctl::RigctldServer rig(io, 0, *st.loop);
+  netctl::RotctldServer rot(io, 0, *st.station);
+  netctl::RigctldServer rig(io, 0, *st.station);
   LoopThread lt(io, st);
 
   RawClient silent(rot.port());  // connects and never says anything
@@ -205,7 +205,7 @@ TEST_CASE("server: a flooding, a non-reading and a silent client never stall the
     CHECK(good_rig.ask("f") == hz + "\n");
     std::this_thread::sleep_for(20ms);
   }
-  REQUIRE(eventually(lt, [&] { return st.loop->rotator().status().on_target; }));
+  REQUIRE(eventually(lt, [&] { return st.station->rotator().status().on_target; }));
   const rotator::AzEl truth = lt.on_loop([&] { return st.truth(); });
   CHECK(az_diff(truth.az, 200.0) < 1.1);
   CHECK(lt.ticks() > ticks0 + 20);
@@ -236,7 +236,7 @@ TEST_CASE("server: a flooding, a non-reading and a silent client never stall the
 TEST_CASE("server: q closes after the reply; a half-closed client still gets its answers") {
   SimStation st;
   boost::asio::io_context io;
-  netctl::RotctldServer rot(io, 0, *st.loop);
+  netctl::RotctldServer rot(io, 0, *st.station);
   LoopThread lt(io, st);
   {
     RawClient c(rot.port());
@@ -262,17 +262,17 @@ TEST_CASE("server: connections beyond max_clients are closed; close() drops ever
   boost::asio::io_context io;
   netctl::ServerOptions opt = netctl::RotctldServer::named("rotctld");
   opt.max_clients = 2;
-  netctl::RotctldServer rot(io, 0, *st.loop, opt);
-  netctl::RigctldServer other(io, 0, *st.loop);
+  netctl::RotctldServer rot(io, 0, *st.station, opt);
+  netctl::RigctldServer other(io, 0, *st.station);
   CHECK(rot.port() != other.port());
   // The same port twice: the second cannot listen, and says where.
   try {
-    netctl::RigctldServer clash(io, rot.port(), *st.loop);
+    netctl::RigctldServer clash(io, rot.port(), *st.station);
     FAIL("listening twice on one port");
   } catch (const std::system_error& e) {
     CHECK(std::string(e.what()).find("127.0.0.1:" + std::to_string(rot.port())) != std::string::npos);
   }
-  CHECK_THROWS_AS(netctl::RotctldServer(io, 0, *st.loop, [] {
+  CHECK_THROWS_AS(netctl::RotctldServer(io, 0, *st.station, [] {
                     netctl::ServerOptions o;
                     o.address = "not-an-address";
                     return o;
@@ -305,7 +305,7 @@ TEST_CASE("server: when every connection is taken, the one silent longest makes 
   netctl::ServerOptions opt = netctl::RotctldServer::named("rotctld");
   opt.max_clients = 4;
   opt.evict_idle_after = 0ms;  // any silence is long enough: the order of last traffic decides
-  netctl::RotctldServer rot(io, 0, *st.loop, opt);
+  netctl::RotctldServer rot(io, 0, *st.station, opt);
   LoopThread lt(io, st);
   RawClient idle1(rot.port()), idle2(rot.port()), poller(rot.port()), first(rot.port());
   REQUIRE(idle1.ok());
@@ -331,7 +331,7 @@ TEST_CASE("server: when every connection is taken, the one silent longest makes 
 TEST_CASE("host server: the banner and prompt, menu 7's commands over TCP, CR / LF / CR LF lines, Q closes") {
   SimStation st;
   boost::asio::io_context io;
-  netctl::HostServer host(io, 0, *st.loop);
+  netctl::HostServer host(io, 0, *st.station);
   LoopThread lt(io, st);
   const std::string prompt = "TrakBox>>";
   auto ends_with_prompts = [&](std::size_t n) {
@@ -352,12 +352,12 @@ TEST_CASE("host server: the banner and prompt, menu 7's commands over TCP, CR / 
   CHECK(c.send_all("AZ120 EL30\rFD43580000\nMDUSB\r\n"));
   REQUIRE(c.read_until(ends_with_prompts(4)));
   CHECK(c.received().substr(c.received().size() - 3 * prompt.size()) == prompt + prompt + prompt);
-  CHECK(lt.on_loop([&] { return st.loop->rotor_control(); }));
-  REQUIRE(eventually(lt, [&] { return st.loop->rotator().status().on_target; }));
+  CHECK(lt.on_loop([&] { return st.station->rotor_control(); }));
+  REQUIRE(eventually(lt, [&] { return st.station->rotator().status().on_target; }));
   const rotator::AzEl truth = lt.on_loop([&] { return st.truth(); });
   CHECK(az_diff(truth.az, 120.0) < 1.1);
   CHECK(std::abs(truth.el - 30.0) < 1.1);
-  const radio::RadioStatus rs = lt.on_loop([&] { return st.loop->radio().status(); });
+  const radio::RadioStatus rs = lt.on_loop([&] { return st.station->radio().status(); });
   CHECK(rs.downlink_hz == radio::Hz{435800000});
   CHECK(rs.downlink_mode == radio::Mode::usb);
 
@@ -372,7 +372,7 @@ TEST_CASE("host server: the banner and prompt, menu 7's commands over TCP, CR / 
   const std::string bad = c.exchange("FD0\r", prompt);
   CHECK(bad.rfind("ERROR FD: '0' is not a frequency", 0) == 0);
   CHECK(bad.find("\r\nTrakBox>>") == bad.size() - prompt.size() - 2);
-  CHECK(lt.on_loop([&] { return st.loop->radio().status().downlink_hz; }) == radio::Hz{435800000});
+  CHECK(lt.on_loop([&] { return st.station->radio().status().downlink_hz; }) == radio::Hz{435800000});
 
   // Control bytes never reach the reply raw; an overlong line is refused once, then heard again.
   const std::string garbage = c.exchange(std::string("zz\x01\x7f\n"), prompt);
