@@ -112,8 +112,10 @@ Followed followed_by(const PassPlan& plan, std::span<const TrackPoint> track) {
 }  // namespace
 
 std::string PassPlan::coverage_text() const {
-  const std::string piece = compass_sector_text(geometry.start, geometry.az_travel);
-  if (coverage.followed == 0) return "PASS OUT OF ANTENNA REACH (it reaches azimuth " + piece + ")";
+  // "azimuth 180.0-350.0", or "all azimuths" for a full turn ("it reaches azimuth all azimuths" before).
+  std::string piece = compass_sector_text(geometry.start, geometry.az_travel);
+  if (piece != "all azimuths") piece = "azimuth " + piece;
+  if (coverage.followed == 0) return "PASS OUT OF ANTENNA REACH (it reaches " + piece + ")";
   auto hms = [](orbit::UtcTime t) {
     const auto c = orbit::to_civil(t);
     char b[16];
@@ -124,7 +126,7 @@ std::string PassPlan::coverage_text() const {
   std::snprintf(pct, sizeof pct, "%d%%", static_cast<int>(std::floor(coverage.fraction * 100.0 + 1e-9)));
   // What the operator needs first: when the antenna is on the satellite, then why not all the pass.
   return "antenna on target " + hms(*coverage.from) + "-" + hms(*coverage.to) + " (" + pct +
-         " of the pass): it reaches azimuth " + piece;
+         " of the pass): it reaches " + piece;
 }
 
 PassPlan plan_pass(std::span<const TrackPoint> track, const PassGeometry& g, std::optional<double> current_travel) {

@@ -131,6 +131,12 @@ TEST_CASE("Planner on the ISS pass 335 -> 101, South start, limits 10..350") {
     const PassPlan during = plan_pass(track, PassGeometry::from(m, false), 160.0);
     CHECK(during.geometry.piece == 0);
   }
+  SUBCASE("a rotator that turns all the way round reaches all azimuths, said once (issue 30)") {
+    const PassPlan plan = plan_pass(track, PassGeometry::from(AdcModel(RotatorConfig{}, RotorStart::south), true), 160.0);
+    const std::string text = plan.coverage_text();
+    CHECK(text.find("it reaches all azimuths") != std::string::npos);
+    CHECK(text.find("azimuth all") == std::string::npos);
+  }
   SUBCASE("barriers: the piece the antenna is in, with its coverage") {
     AdcModel m(limits_10_350(), RotorStart::south);
     m.set_az_piece(m.az_piece_of(160.0));  // the antenna at 340
