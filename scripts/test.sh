@@ -25,6 +25,7 @@ mapfile -t san_targets < <(cmake --build build-asan --target help | sed -n 's/^\
 cmake --build build-asan -j"$jobs" --target "${san_targets[@]}"
 echo "== sanitizer build: $((SECONDS - start)) s"
 (cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+   LSAN_OPTIONS=suppressions=$PWD/../tests/lsan.supp:print_suppressions=0 \
    ctest --output-on-failure -j"$jobs" -L "unit|fuzz")
 echo "== sanitizer tests: $((SECONDS - start)) s"
 # The Debian package: built from build/, installed, run from /, removed (issue 13).
