@@ -434,7 +434,7 @@ void LineServer::accept() {
       spdlog::warn("{}: connection from {} refused: locked out for wrong secrets", core->options.name, who);
       refuse(Refusal::locked_out);
     } else if (per_address(*core, who) >= core->options.max_per_address &&
-               !(!core->options.per_address_exempt.empty() && inet::allowed(core->options.per_address_exempt, who))) {
+               !(core->options.loopback_exempt && inet::is_loopback(who))) {
       ++core->stats.refused_per_address;
       spdlog::warn("{}: connection from {} refused: it has {} connections already (at most {} an address)",
                    core->options.name, who, per_address(*core, who), core->options.max_per_address);

@@ -179,7 +179,7 @@ TEST_CASE("server: one address holds at most max_per_address connections; host m
   boost::asio::io_context io;
   netctl::ServerOptions o = netctl::HostServer::defaults();
   o.max_per_address = 2;
-  o.per_address_exempt.clear();  // loopback is exempt by default: the test's clients are all loopback
+  o.loopback_exempt = false;  // loopback is exempt by default: the test's clients are all loopback
   netctl::HostServer host(io, 0, *st.station, o);
   netctl::ServerOptions only_other = netctl::HostServer::defaults();
   only_other.allow.push_back(*inet::parse_cidr("192.0.2.0/24"));
