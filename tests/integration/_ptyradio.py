@@ -32,11 +32,37 @@ def expected(clock_at, sat, down_spot, up_spot):
     return down_spot * (1 - rr / C), up_spot / (1 - rr / C)
 
 
+# The transponder spots the tests tune: (downlink, uplink) in Hz.
+SPOTS = {"RS-44": (435_640_000, 145_965_000), "SO-50": (436_795_000, 145_850_000)}
+
+
+def tuned(sat, get_down, get_up, where=("the downlink", "the uplink")):
+    """Waits until both links are near the satellite's spots (Doppler and a first update's slack)."""
+    down, up = SPOTS[sat]
+    poll(f"{sat}'s downlink on {where[0]}", lambda: abs(get_down() - down) < 12_000, 30)
+    poll(f"{sat}'s uplink on {where[1]}", lambda: abs(get_up() - up) < 5_000, 30)
+
+
+def on_doppler(sat, get_down, get_up, clock_now, within):
+    """Both links on the satellite's spots as its Doppler is now, within `within` Hz. Returns them."""
+    e_down, e_up = expected(clock_now(), sat, *SPOTS[sat])
+    d, u = get_down(), get_up()
+    check(abs(d - e_down) < within and abs(u - e_up) < within, f"{sat} Doppler: downlink {d} ({e_down:.0f}), uplink {u} ({e_up:.0f})")
+    return d, u
+
+
+def listen(rig, seconds):
+    """Lets the pass run `seconds`; returns its start, its end and the bytes per second on the line."""
+    t1 = time.time()
+    time.sleep(seconds)
+    t2 = time.time()
+    return t1, t2, rig.line_bytes(t1, t2) / (t2 - t1)
+
+
 def rs44_knob_turn(get_down, get_up, turn_down, clock_now):
     """The operator turns the downlink dial of RS-44 (435.640 MHz down, 145.965 MHz up, inverting)
     up 10 kHz with turn_down(hz): the uplink must move down 10 kHz within 2 s plus the knob rest,
-    and both then sit on the new pair's Doppler. Returns the downlink and uplink before and after,
-    and how long after the turn the uplink moved."""
+    and both then sit on the new pair's Doppler. Returns what happened, for the test's report."""
     d1, u1 = get_down(), get_up()
     turn_down(10_000)
     turned_at = time.time()
@@ -48,7 +74,8 @@ def rs44_knob_turn(get_down, get_up, turn_down, clock_now):
     d2, u2 = get_down(), get_up()
     check(abs(d2 - e_down) < 400, f"downlink kept on the new spot: {d2}, expected {e_down:.0f}")
     check(abs(u2 - e_up) < 400, f"uplink on the paired spot: {u2}, expected {e_up:.0f}")
-    return d1, u1, d2, u2, moved_after
+    return (f"downlink {d1} -> {d1 + 10_000} (knob) -> {d2}; uplink {u1} -> {u2}, moved {moved_after:.2f} s "
+            "after the turn")
 
 
 def so50_doppler_goes_on(get_down, get_up, clock_now):
@@ -56,10 +83,7 @@ def so50_doppler_goes_on(get_down, get_up, clock_now):
     SO-50's Doppler (436.795 MHz down, 145.850 MHz up). Returns the first downlink and the last pair."""
     first_down = get_down()
     poll("Doppler updates after the refused tone", lambda: abs(get_down() - first_down) >= 100, 20)
-    e_down, e_up = expected(clock_now(), "SO-50", 436_795_000, 145_850_000)
-    d, u = get_down(), get_up()
-    check(abs(d - e_down) < 1000 and abs(u - e_up) < 1000, f"SO-50 Doppler: {d} ({e_down:.0f}), {u} ({e_up:.0f})")
-    return first_down, d, u
+    return (first_down, *on_doppler("SO-50", get_down, get_up, clock_now, 1000))
 
 
 def leave(tb, state):
