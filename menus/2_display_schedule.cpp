@@ -5,12 +5,16 @@
 //   1993/07/17 15:09:03  248.6/40.4    0.0   +7575
 //           - 'Q' for abort 'S' for scroll
 //
+// P at the prompt shows the pass of the page's first time (in progress then, or the next within a
+// day): one line in line mode; on a full screen the sky plot and ground track as the realtime
+// display draws them, until a key, then the page again (the manual's prompt is kept as printed).
 // The antennas are not moved and the tracker is left as it was: this is a calculation only.
 // See docs/menus/2-3.md for how the manual's damaged example was read.
 #include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <variant>
+#include <vector>
 
 #include "menus/realtime_display.h"
 #include "station/clock.h"
@@ -116,6 +120,26 @@ std::string format_schedule_row(const tracker::SatNow& n) {
   return buf;
 }
 
+// P: the pass of the page (see the top of the file); `page` is shown again after a full screen's plot.
+void show_pass(term::Terminal& t, Services& s, int db_index, orbit::UtcTime from, const std::vector<std::string>& page) {
+  auto n = s.tracker.observe(db_index, from);
+  if (!n) return;
+  n->pass = s.tracker.pass_at(db_index, from);
+  if (!n->pass) {
+    t.line("  " + n->name + ": no pass within a day of " + format_date(from) + " " + format_time(from));
+    return;
+  }
+  if (!t.full_screen()) return t.line("  " + describe_pass(n->name, *n->pass));
+  t.clear();   // the plot needs the screen below its two lines
+  t.line(describe_pass(n->name, *n->pass));
+  t.write("        - any key to return to the schedule ");
+  t.graphics(pass_graphics(s, *n));
+  if (t.read_key() == term::kEndOfInput) throw InputClosed{};
+  t.clear();
+  t.line(kHeader);
+  for (const auto& row : page) t.line(row);
+}
+
 }  // namespace
 
 void menu_2_display_schedule(term::Terminal& t, Services& s) {
@@ -130,6 +154,8 @@ void menu_2_display_schedule(term::Terminal& t, Services& s) {
   orbit::UtcTime when = start;
   for (;;) {
     t.line(kHeader);
+    const orbit::UtcTime page_start = when;
+    std::vector<std::string> shown;
     for (int row = 0; row < page; ++row, when += std::chrono::seconds(step_s)) {
       const auto n = s.tracker.observe(db_index, when);
       if (!n) return;  // the database changed under us: nothing to show
@@ -138,7 +164,8 @@ void menu_2_display_schedule(term::Terminal& t, Services& s) {
                " (SGP4 error " + std::to_string(static_cast<int>(n->obs.error)) + "), end of the schedule");
         return;
       }
-      t.line(format_schedule_row(*n));
+      shown.push_back(format_schedule_row(*n));
+      t.line(shown.back());
     }
     for (;;) {
       t.write(kMorePrompt);
@@ -147,6 +174,7 @@ void menu_2_display_schedule(term::Terminal& t, Services& s) {
       if (!c) throw InputClosed{};
       if (*c == 'Q') return;
       if (*c == 'S') break;
+      if (*c == 'P') show_pass(t, s, db_index, page_start, shown);
     }
   }
 }

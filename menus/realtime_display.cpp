@@ -61,8 +61,9 @@ namespace {
 const char* kHeader1 = "  UTC      Azim.   Elev.    Range     Alt.   Lat.  Long.  Phase  Doppler";
 const char* kHeader2 = "HH:MM:SS     deg     deg       Km       Km    deg    deg  <256>       Hz";
 
-// The pictures for the full-screen front end: the pass in the sky and the ground track.
-term::Graphics make_graphics(Services& s, const tracker::SatNow& n) {
+}  // namespace
+
+term::Graphics pass_graphics(Services& s, const tracker::SatNow& n) {
   term::Graphics g;
   g.title = n.name + (n.pass ? "  pass " + format_time(n.pass->aos) + "-" + format_time(n.pass->los) : "");
   if (n.pass) {
@@ -80,6 +81,16 @@ term::Graphics make_graphics(Services& s, const tracker::SatNow& n) {
   g.station = std::pair{s.model.station.lat_deg, s.model.station.lon_deg};
   return g;
 }
+
+std::string describe_pass(const std::string& name, const orbit::Pass& p) {
+  char buf[200];
+  std::snprintf(buf, sizeof buf, "%s: pass %s AOS %s az %.1f, max el %.1f at %s az %.1f, LOS %s az %.1f", name.c_str(),
+                format_date(p.aos).c_str(), format_time(p.aos).c_str(), p.aos_az_deg, p.max_el_deg,
+                format_time(p.tca).c_str(), p.tca_az_deg, format_time(p.los).c_str(), p.los_az_deg);
+  return buf;
+}
+
+namespace {
 
 std::string control_line(Services& s) {
   char buf[240];
@@ -261,7 +272,7 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
         // The pictures on every update, as the table: the satellite's @ and the antenna's X are the
         // numbers of the row above. (Drawn only on clock seconds divisible by 5, they stood still
         // under --clock-rate 10, whose updates step 10 s at a time: issue 30 item 8.)
-        t.graphics(make_graphics(s, *f));
+        t.graphics(pass_graphics(s, *f));
       } else {
         if (coverage && *coverage != coverage_said) {
           t.end_live();

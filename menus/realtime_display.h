@@ -39,6 +39,14 @@ class LinkNotices {
   bool radio_fault_ = false;
 };
 
+// The pictures of a satellite's pass for the full-screen front end (the sky plot of n.pass with the
+// satellite at n's time and the antenna now, the ground track of the next orbit), titled
+// "NAME  pass HH:MM:SS-HH:MM:SS". The realtime display shows them live; menu 2's P, for the pass
+// of the schedule.
+term::Graphics pass_graphics(Services& s, const tracker::SatNow& n);
+// "ISS: pass 2026/05/21 AOS 12:09:09 az 215.3, max el 45.2 at 12:12:21 az 138.0, LOS 12:15:35 az 62.1"
+std::string describe_pass(const std::string& name, const orbit::Pass& p);
+
 // What ends a realtime display.
 enum class RealtimeExit { quit, followed_changed };
 

@@ -123,6 +123,22 @@ std::optional<SatNow> Tracker::observe(int db_index, orbit::UtcTime t) const {
   return compute(db_index, t, false);
 }
 
+std::optional<orbit::Pass> Tracker::pass_at(int db_index, orbit::UtcTime t) const {
+  if (db_index < 0 || db_index >= static_cast<int>(model_.db.satellites.size())) return std::nullopt;
+  const orbit::Sgp4& sgp4 = *cached(db_index).sgp4;
+  orbit::PassOptions po;
+  po.precision_s = 1.0;
+  // From half an hour before, so that a pass in progress at t is found from its AOS (a low orbit's
+  // pass is shorter); one that ended before t is passed over.
+  orbit::UtcTime from = orbit::add_minutes(t, -30.0);
+  for (int k = 0; k < 8; ++k) {
+    auto p = orbit::next_pass(sgp4, model_.station.observer(), from, kPassSearchDays, po);
+    if (!p || p->los >= t) return p;
+    from = orbit::add_minutes(p->los, 1.0 / 60.0);
+  }
+  return std::nullopt;
+}
+
 const SatNow* Tracker::followed() const {
   if (!decision_.followed) return nullptr;
   for (const auto& c : candidates_)

@@ -64,6 +64,9 @@ class Tracker {
 
   // Any satellite of the database, now (for displays that are not the tracked set).
   std::optional<SatNow> observe(int db_index, orbit::UtcTime t) const;
+  // The pass in progress at t (with its real AOS), or the next one within a day, for a display
+  // that looks at another time than now (menu 2): searched afresh, the live pass left as it is.
+  std::optional<orbit::Pass> pass_at(int db_index, orbit::UtcTime t) const;
   // A propagator for a database entry (cached; rebuilt when its elements change).
   const orbit::Sgp4* propagator(int db_index) const;
   // For the displays' pictures, `intervals` + 1 evenly spaced observations (those SGP4 can

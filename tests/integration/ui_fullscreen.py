@@ -1,6 +1,6 @@
 """The full-screen (ncurses) front end driven in tmux as a person would: keys with send-keys, the
 screen read with capture-pane. Checks the status line, in-place live updates, the sky plot and
-world map, an edit through menu 4, and that Ctrl-C leaves with the state saved.
+world map, menu 2's plot of a pass (P), an edit through menu 4, and that Ctrl-C leaves with the state saved.
 """
 import json
 import os
@@ -75,6 +75,24 @@ def main():
         keys("E")
         wait_for(r"Rotor control OFF")
         keys("q")
+        wait_for(r"Select \[1-8,S,M\]:")
+
+        # Menu 2's P: the schedule's pass drawn as the realtime display draws it, then the page again.
+        keys("2", "Enter")
+        wait_for(r"Select :")
+        keys("4", "Enter")
+        wait_for(r"Day of the Year \[T\] >")
+        keys("Enter", "Enter", "Enter")
+        wait_for(r"- 'Q' for abort 'S' for scroll")
+        keys("P")
+        s = wait_for(r"any key to return to the schedule")
+        check(re.search(r"^ISS: pass 2026/05/21 AOS 12:09:09 az [\d.]+, max el [\d.]+ at 12:1\d:\d\d az [\d.]+, "
+                        r"LOS 12:15:35 az [\d.]+", s, re.M), f"the pass in words: {s[:300]}")
+        check("ISS  pass 12:09:09-12:15:35" in s and " N" in s and "o pass" in s, "its sky plot and legend")
+        keys("Space")
+        s = wait_for(r"DATE       TIME      AZ/EL")
+        check("any key to return" not in s and "o pass" not in s, "the page again, the plot gone")
+        keys("Q")
         wait_for(r"Select \[1-8,S,M\]:")
 
         # Menu 4 in full screen.

@@ -8,6 +8,7 @@
 
 #include "fixture.h"
 #include "orbit/observe.h"
+#include "orbit/passes.h"
 
 using namespace tb;
 
@@ -203,4 +204,70 @@ TEST_CASE("Menu 2: Q at the list returns at once; input closing throws") {
 
   testing::MenuFixture g("1\r26/05/21 12:00:00\r\r\r");
   CHECK_THROWS_AS(menus::menu_2_display_schedule(g.term, *g.services), menus::InputClosed);
+}
+
+namespace {
+
+// The ISS's pass at or after `from` as the orbit layer finds it (orbit::next_pass, checked against
+// Skyfield in tests/unit/orbit), in the words of menu 2's P.
+std::string expected_pass_line(const testing::MenuFixture& f, orbit::UtcTime from) {
+  const int iss = f.model.db.selected[3];
+  const auto& sat = f.model.db.satellites[static_cast<std::size_t>(iss)];
+  REQUIRE(sat.name() == "ISS");
+  const orbit::Sgp4 sgp4(sat.elements);
+  orbit::PassOptions po;
+  po.precision_s = 1.0;
+  const auto p = orbit::next_pass(sgp4, f.model.station.observer(), from, 1.0, po);
+  REQUIRE(p);
+  char buf[200];
+  const auto hms = [](orbit::UtcTime t) {
+    const auto c = orbit::to_civil(t);
+    char b[16];
+    std::snprintf(b, sizeof b, "%02d:%02d:%02d", c.hour, c.minute, static_cast<int>(c.second));
+    return std::string(b);
+  };
+  std::snprintf(buf, sizeof buf, "ISS: pass 2026/05/21 AOS %s az %.1f, max el %.1f at %s az %.1f, LOS %s az %.1f",
+                hms(p->aos).c_str(), p->aos_az_deg, p->max_el_deg, hms(p->tca).c_str(), p->tca_az_deg,
+                hms(p->los).c_str(), p->los_az_deg);
+  return buf;
+}
+
+}  // namespace
+
+TEST_CASE("Menu 2: P at the prompt says the page's pass: the next one, or the one in progress from its AOS") {
+  // From 12:00 the next pass (AOS 12:09:09); from 12:12, in the middle of it, the same pass.
+  for (const char* start : {"26/05/21 12:00:00", "26/05/21 12:12:00"}) {
+    testing::MenuFixture f(std::string("4\r") + start + "\r1\r0\rPQ");
+    menus::menu_2_display_schedule(f.term, *f.services);
+    const std::string line = "        - 'Q' for abort 'S' for scroll P\n  " +
+                             expected_pass_line(f, orbit::from_civil(2026, 5, 21, 12, 0, 0)) + "\n";
+    CHECK(f.term.output().find(line) != std::string::npos);
+    CHECK(f.term.output().find("AOS 12:09:09") != std::string::npos);
+    CHECK(f.term.graphics_count() == 0);   // line mode: words only
+  }
+  // From 12:20, after its LOS: the next pass.
+  testing::MenuFixture f("4\r26/05/21 12:20:00\r1\r0\rPQ");
+  menus::menu_2_display_schedule(f.term, *f.services);
+  const std::string next = expected_pass_line(f, orbit::from_civil(2026, 5, 21, 12, 20, 0));
+  CHECK(next.find("AOS 12:09:09") == std::string::npos);
+  CHECK(f.term.output().find("  " + next + "\n") != std::string::npos);
+}
+
+TEST_CASE("Menu 2: P on a full screen draws the pass's sky plot until a key, then the page again") {
+  testing::MenuFixture f("4\r26/05/21 12:00:00\r1\r0\rP Q");
+  f.term.set_full_screen(true);
+  menus::menu_2_display_schedule(f.term, *f.services);
+  REQUIRE(f.term.graphics_count() == 1);
+  const term::Graphics& g = f.term.last_graphics();
+  CHECK(g.title == "ISS  pass 12:09:09-12:15:35");
+  REQUIRE(g.pass_track.size() > 10);
+  const std::string said = expected_pass_line(f, orbit::from_civil(2026, 5, 21, 12, 0, 0));
+  double aos_az = 0.0;
+  REQUIRE(std::sscanf(said.c_str() + said.find(" az ") + 4, "%lf", &aos_az) == 1);
+  CHECK(std::abs(g.pass_track.front().az_deg - aos_az) < 0.5);   // the track starts at AOS
+  CHECK(std::abs(g.pass_track.front().el_deg - orbit::kAosThresholdDeg) < 0.05);   // at the AOS elevation
+  const std::string& out = f.term.output();
+  CHECK(out.find(said + "\n        - any key to return to the schedule ") != std::string::npos);
+  CHECK(count(out, "DATE       TIME") == 2);   // the page shown again after the key
+  CHECK_FALSE(f.term.graphics_shown());        // and the plot cleared away
 }
