@@ -13,7 +13,7 @@ run_pkgs=(
 test_pkgs=(
   python3 doctest-dev libbenchmark-dev
   # test peers and independent references
-  libhamlib-utils python3-sgp4 python3-skyfield gpredict socat tmux python3-pyftpdlib
+  libhamlib-utils python3-sgp4 python3-skyfield gpredict socat tmux python3-pyftpdlib python3-pyflakes
   # the GPS receiver: gpsd and gpsfake (gpsd-clients) to test against (libgps-dev is a run package)
   gpsd gpsd-clients
   # the Debian package and its checks (scripts/package-check.sh), the completion test

@@ -27,7 +27,6 @@ Standard library only. Exit status 1 when trakbox died, a reading was outside th
 more than 10 % after the first wall minute, or descriptors grew.
 """
 import argparse
-import bisect
 import csv
 import datetime
 import io

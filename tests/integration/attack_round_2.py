@@ -10,7 +10,6 @@
   then a count of what was left out), and host mode says "not allowed", not "busy";
 - a symbolic link in place of trakbox.log is moved aside; its target is not written.
 """
-import json
 import os
 import shutil
 import socket

@@ -122,7 +122,7 @@ def rotator_faults(tb, log, satrak_port, rotctld, endpoint):
         def moving():
             p = rotctld.position()
             return p if p and p[0] > 5.0 and p[1] > 2.0 else None
-        p = wait_for(f"round {rnd}: the dummy rotator to move towards {target}", moving, 20)
+        wait_for(f"round {rnd}: the dummy rotator to move towards {target}", moving, 20)
         status = satrak_fields(satrak_port, "ERRSTATUS?")
         check(status[0] == "0", f"round {rnd}: no link fault while rotctld answers: ERRSTATUS? {status}")
 

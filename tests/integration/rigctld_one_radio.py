@@ -175,7 +175,7 @@ def rs44_dial_follow(procs, rig_port):
     with session(procs, rig_port, start, 12) as (tb, relay, state):
         t0 = time.time()
         d0 = poll("the downlink on 435.640 MHz", lambda: near(rig_port, "f", 435_640_000, 12_000), 30)
-        u0 = poll("the uplink (split) on 145.965 MHz", lambda: near(rig_port, "i", 145_965_000, 5_000), 30)
+        poll("the uplink (split) on 145.965 MHz", lambda: near(rig_port, "i", 145_965_000, 5_000), 30)
         # One radio in split: trakbox reads both links back (f and i), as the log says.
         poll("a read-back of both links", lambda: relay.sent("f") and relay.sent("i"), 10)
         # Bytes on the line over 8 s of the pass, one update a second (reads included).

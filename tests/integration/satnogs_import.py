@@ -10,7 +10,6 @@ import subprocess
 import sys
 import tempfile
 import threading
-import time
 
 sys.path.insert(0, os.path.dirname(__file__))
 from _tbharness import BIN, CLOCK, Terminal, check, run_test  # noqa: E402
