@@ -137,6 +137,14 @@ class LoopThread {
   std::thread thread_;
 };
 
+// A fresh station and the io_context its servers run on: where the server cases start, as
+// TEST_CASE_FIXTURE(ServerCase, ...) with `st` and `io`; the case makes its servers, then its
+// LoopThread (which stops first, before the servers go).
+struct ServerCase {
+  SimStation st;
+  boost::asio::io_context io;
+};
+
 // Runs a program to completion with a time limit, capturing stdout and stderr. Killed (by its
 // pid) and reaped when the limit passes.
 struct RunResult {
