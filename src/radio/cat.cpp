@@ -1,6 +1,8 @@
 #include "radio/cat.h"
 
 #include <algorithm>
+#include <array>
+#include <cstdio>
 #include <stdexcept>
 
 namespace tb::radio {
@@ -301,6 +303,46 @@ std::vector<std::string> split_commands(std::string_view s, std::string* rest) {
   }
   if (rest) *rest = std::string(s.substr(start));
   return out;
+}
+
+bool is_refusal(std::string_view c) { return c == "?;" || c == "E;" || c == "O;"; }
+
+std::optional<Satellite> decode_satellite(std::string_view c) {
+  if (!c.empty() && c.back() == ';') c.remove_suffix(1);
+  if (c.size() < 3 || c.size() > 17 || c.substr(0, 2) != "SA") return std::nullopt;
+  Satellite s;
+  const std::string_view digits = c.substr(2, 7);
+  for (std::size_t i = 0; i < digits.size(); ++i) {
+    if (digits[i] < '0' || digits[i] > '9') return std::nullopt;
+    s.digits[i] = digits[i];
+  }
+  return s;
+}
+
+std::string set_satellite(const Satellite& s) { return "SA" + s.digits + ";"; }
+
+Satellite satellite_working(const Satellite& found, bool ctrl_on_sub) {
+  Satellite s = found;
+  s.digits[0] = '1';                       // P1 on
+  s.digits[2] = '1';                       // P3 the uplink on Sub
+  s.digits[3] = ctrl_on_sub ? '1' : '0';   // P4 CTRL
+  s.digits[4] = '0';                       // P5 TRACE off
+  s.digits[6] = '0';                       // P7 VFO
+  return s;
+}
+
+std::optional<std::string> set_tone_number(int tenths_hz) {
+  static constexpr std::array<int, 39> kTones{
+      670,  719,  744,  770,  797,  825,  854,  885,  915,  948,  974,  1000, 1035,
+      1072, 1109, 1148, 1188, 1230, 1273, 1318, 1365, 1413, 1462, 1514, 1567, 1622,
+      1679, 1738, 1799, 1862, 1928, 2035, 2107, 2181, 2257, 2336, 2418, 2503, 17500};
+  for (std::size_t i = 0; i < kTones.size(); ++i) {
+    if (kTones[i] != tenths_hz) continue;
+    char buf[8];
+    std::snprintf(buf, sizeof buf, "TN%02zu;", i + 1);
+    return std::string(buf);
+  }
+  return std::nullopt;
 }
 
 }  // namespace kenwood

@@ -72,7 +72,10 @@ RadioSpecParse parse_radio_spec(std::string_view text, std::string_view option) 
       const std::string usage = "expected " + spec_form(*m) + ", e.g. " + kind + ":/dev/ttyUSB0";
       std::vector<std::string> parts = rest.empty() ? std::vector<std::string>{} : split(rest, ':');
       if (!parts.empty() && (parts.back() == "maindown" || parts.back() == "mainup")) {
-        if (!m->caps.satellite_mode || m->protocol != Protocol::icom)
+        if (m->satmode == SatCommand::kenwood_sa && parts.back() == "mainup")
+          return error(quoted + "\"mainup\": the " + std::string(m->label) +
+                       "'s satellite mode is driven with the downlink on Main (FA) and the uplink on Sub (FB) only");
+        if (!m->caps.satellite_mode || (m->protocol != Protocol::icom && m->satmode != SatCommand::kenwood_sa))
           return error(quoted + "\"" + parts.back() + "\": the " + std::string(m->label) +
                        " has no Main/Sub satellite mode to choose bands for");
         spec.main_link = parts.back() == "maindown" ? Link::downlink : Link::uplink;

@@ -47,12 +47,18 @@ MakeRadio make_icom(const RadioModel& m, const RadioSpec& spec, const RadioConfi
   return {make_icom_radio(spec.device, icom_options(m, spec, config, t, role), t.worker), {}};
 }
 
-MakeRadio make_kenwood(const RadioModel& m, const RadioSpec& spec, const RadioConfig& config, const DriverTiming& t, RadioRole) {
+MakeRadio make_kenwood(const RadioModel& m, const RadioSpec& spec, const RadioConfig& config, const DriverTiming& t, RadioRole role) {
   KenwoodOptions o = KenwoodOptions::from(config);
   if (m.form != SpecForm::device) {
     o.baud = spec.baud > 0 ? spec.baud : m.baud;
     o.reads = m.caps.reads;
+    o.ctcss = m.caps.ctcss;
     o.model = std::string(m.label);
+    o.one_link = role != RadioRole::both;
+    if (m.satmode == SatCommand::kenwood_sa) {   // (:mainup is refused by parse_radio_spec)
+      o.vfo_select = 'R';
+      o.satellite_mode = role == RadioRole::both;
+    }
   }
   return {make_kenwood_radio(spec.device, o, t.worker), {}};
 }
@@ -138,9 +144,9 @@ const RadioModel kModels[] = {
      kOneLink, 3035, "main band only (sub band select unconfirmed)", make_icom},
     {"ic705", "Icom IC-705", SpecForm::device_baud, Protocol::icom, 0xA4, 19200, Link::uplink, SatCommand::none, false,
      {1, false, true, true, 1}, 3085, "one link: pair it with --uplink-radio", make_icom},
-    {"ts2000", "Kenwood TS-2000", SpecForm::device_baud, Protocol::kenwood, 0, 9600, Link::uplink, SatCommand::none,
-     false, {2, false, true, false, 1}, 2014, "VFO A down, B up, read with FA;/FB; (SA satellite mode not driven)",
-     make_kenwood},
+    {"ts2000", "Kenwood TS-2000", SpecForm::device_baud, Protocol::kenwood, 0, 9600, Link::downlink,
+     SatCommand::kenwood_sa, false, {2, true, true, true, 1}, 2014,
+     "satellite mode SA: Main down (FA), Sub up (FB); TN/TO tone; read with FA;/FB;", make_kenwood},
     {"ts790", "Kenwood TS-790", SpecForm::device_baud, Protocol::kenwood, 0, 4800, Link::uplink, SatCommand::none,
      false, kTwoLinks, 2007, "VFO A down, B up", make_kenwood},
     {"ft847", "Yaesu FT-847", SpecForm::device_baud, Protocol::ft847, 0, 4800, Link::uplink, SatCommand::ft847, false,

@@ -35,6 +35,7 @@ enum class SatCommand {
   icom_1a_07,    // IC-910H: 1A 07 01 / 00 (Hamlib's ic910.c)
   ft847,         // 00 00 00 00 4E / 8E
   ft736,         // 00 00 00 00 0E / 8E
+  kenwood_sa,    // TS-2000: SA, read, changed and put back (kenwood::Satellite)
 };
 
 // The protocol a model speaks (its driver).

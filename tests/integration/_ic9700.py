@@ -9,12 +9,9 @@ satellite mode; 1B 00 <3 BCD> the tone, 16 42 01 / 00 TONE. With echo (a CI-V bu
 back first; without (USB, Echo Back OFF) only the answer. turn() moves a dial as the knob would and
 sends the transceive frame FE FE 00 A2 00 <freq> FD, which does not say which band moved.
 """
-import os
-import select
-import termios
-import threading
 import time
-import tty
+
+from _ptyradio import PtyRadio
 
 ADDR, CTRL = 0xA2, 0xE0
 
@@ -37,34 +34,18 @@ def from_bcd_le(b):
     return v
 
 
-class IC9700:
+class IC9700(PtyRadio):
     def __init__(self, path, echo=False, refuse_tone=False):
-        self.fd = os.open(path, os.O_RDWR | os.O_NOCTTY)
-        tty.setraw(self.fd)
-        termios.tcflush(self.fd, termios.TCIOFLUSH)
         self.echo = echo
         self.refuse_tone = refuse_tone
-        self.lock = threading.Lock()
         self.hz = {"main": 145_000_000, "sub": 435_000_000}
         self.mode = {"main": None, "sub": None}
         self.selected = "main"
         self.satellite = False
         self.tone = None          # tenths of Hz when TONE is on
         self.frames = []          # (time, bytes) of every frame the controller sent
-        self.bytes_in = []        # (time, count) read from the controller
-        self.bytes_out = []       # (time, count) written to the controller
-        self.stop = False
-        self.thread = threading.Thread(target=self.run, daemon=True)
-        self.thread.start()
-
-    def close(self):
-        self.stop = True
-        self.thread.join(2)
-        os.close(self.fd)
-
-    def write(self, b):
-        os.write(self.fd, b)
-        self.bytes_out.append((time.time(), len(b)))
+        self.buf = b""
+        super().__init__(path)
 
     def answer(self, ok):
         self.write(bytes([0xFE, 0xFE, CTRL, ADDR, 0xFB if ok else 0xFA, 0xFD]))
@@ -110,30 +91,19 @@ class IC9700:
         else:
             self.answer(False)
 
-    def run(self):
-        buf = b""
-        while not self.stop:
-            r, _, _ = select.select([self.fd], [], [], 0.05)
-            if not r:
-                continue
-            try:
-                chunk = os.read(self.fd, 256)
-            except OSError:
+    def feed(self, chunk):
+        self.buf += chunk
+        while True:
+            start = self.buf.find(b"\xfe\xfe")
+            if start < 0:
+                self.buf = b""
                 return
-            self.bytes_in.append((time.time(), len(chunk)))
-            buf += chunk
-            while True:
-                start = buf.find(b"\xfe\xfe")
-                if start < 0:
-                    buf = b""
-                    break
-                end = buf.find(b"\xfd", start)
-                if end < 0:
-                    buf = buf[start:]
-                    break
-                f, buf = buf[start:end + 1], buf[end + 1:]
-                with self.lock:
-                    self.handle(f)
+            end = self.buf.find(b"\xfd", start)
+            if end < 0:
+                self.buf = self.buf[start:]
+                return
+            f, self.buf = self.buf[start:end + 1], self.buf[end + 1:]
+            self.handle(f)
 
     def get(self, band):
         with self.lock:
@@ -142,7 +112,3 @@ class IC9700:
     def count(self, cmd, since=0.0):
         with self.lock:
             return sum(1 for t, f in self.frames if t >= since and len(f) > 4 and f[3] == CTRL and f[4] == cmd)
-
-    def line_bytes(self, since, until):
-        """Bytes on the CAT line (both directions) between two times."""
-        return sum(n for t, n in self.bytes_in + self.bytes_out if since <= t < until)

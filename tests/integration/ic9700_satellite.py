@@ -13,117 +13,55 @@ Every wait polls for its condition with a deadline.
 """
 import os
 import shutil
-import subprocess
 import sys
-import tempfile
 import time
-from datetime import datetime, timedelta, timezone
+from datetime import datetime, timezone
 
 sys.path.insert(0, os.path.dirname(__file__))
 from _ic9700 import IC9700  # noqa: E402
-from _tbharness import BIN, SerialPair, check, poll as poll_every, reap, run_test, satellite_track, skip  # noqa: E402
-
-C = 299792.458
-# The knob-rest delay the Tuner waits before moving the other link (issue 28b; 0 where it is not
-# there yet) is allowed on top of the 2 s.
-KNOB_REST_S = 1.5
-
-
-def poll(what, pred, seconds):
-    return poll_every(what, pred, seconds, every=0.05)
-
-
-def expected(clock_at, sat, down_spot, up_spot):
-    row = satellite_track(clock_at, 1, sat=sat, freq=down_spot)[0]
-    rr = -row["doppler_hz"] * C / down_spot
-    return down_spot * (1 - rr / C), up_spot / (1 - rr / C)
+from _ptyradio import leave, listen, on_doppler, rs44_knob_turn, so50_doppler_goes_on, track_with, tuned  # noqa: E402
+from _tbharness import check, run_test, skip  # noqa: E402
 
 
 def on_ic9700(start_at, sat_key, test, refuse_tone=False, echo=False):
-    """trakbox tracking one entry of the shipped list (single tracking, from start_at) with an
-    IC-9700 responder (USB: no echo; or a CI-V bus) on a pty pair: test(rig, trakbox, state_dir,
-    clock_now)."""
-    pair = SerialPair()
-    state = tempfile.mkdtemp(prefix="trakbox-ic9700-")
-    procs = []
-    rig = IC9700(pair.terminal_side, echo=echo, refuse_tone=refuse_tone)
-    try:
-        t0 = time.time()
-        tb = subprocess.Popen([BIN, "--state", state, "--line", "--satrak-port", "0",
-                               "--clock", start_at.strftime("%Y-%m-%dT%H:%M:%SZ"),
-                               "--radio", f"ic9700:{pair.trakbox_side}"],
-                              stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
-        procs.append(tb)
-        tb.stdin.write(b"S\r" + sat_key + b"\r")
-        tb.stdin.flush()
-        test(rig, tb, state, lambda: start_at + timedelta(seconds=time.time() - t0))
-    finally:
-        reap(procs)
-        rig.close()
-        pair.close()
-        shutil.rmtree(state, ignore_errors=True)
+    """An IC-9700 responder (USB: no echo; or a CI-V bus) on the pty."""
+    track_with(lambda path: IC9700(path, echo=echo, refuse_tone=refuse_tone), "ic9700", start_at, sat_key, test)
 
 
 def rs44(rig, tb, state, clock_now):
-    poll("RS-44's downlink on Main", lambda: abs(rig.get("main") - 435_640_000) < 12_000, 30)
-    poll("RS-44's uplink on Sub", lambda: abs(rig.get("sub") - 145_965_000) < 5_000, 30)
+    tuned("RS-44", lambda: rig.get("main"), lambda: rig.get("sub"), ("Main", "Sub"))
     with rig.lock:
         first = [f.hex(" ").upper() for _, f in rig.frames[:7]]
     check(first[0] == "FE FE A2 E0 16 5A 01 FD", f"satellite mode first: {first}")
     check(rig.satellite, "satellite mode is on")
     check(rig.mode["main"] == 0x01 and rig.mode["sub"] == 0x00, f"USB on Main, LSB on Sub: {rig.mode}")
-    e_down, e_up = expected(clock_now(), "RS-44", 435_640_000, 145_965_000)
-    d0, u0 = rig.get("main"), rig.get("sub")
-    check(abs(d0 - e_down) < 400 and abs(u0 - e_up) < 400, f"downlink {d0} ({e_down:.0f}), uplink {u0} ({e_up:.0f})")
+    on_doppler("RS-44", lambda: rig.get("main"), lambda: rig.get("sub"), clock_now, 400)
 
     # Ten seconds of Doppler: frames and bytes on the line.
-    t1 = time.time()
-    time.sleep(10)
-    t2 = time.time()
+    t1, t2, rate = listen(rig, 10)
     freqs, selects = rig.count(0x05, t1), rig.count(0x07, t1)
     check(freqs >= 10, f"Doppler updates in 10 s: {freqs} frequency frames")
     check(selects <= freqs, f"no band-select thrash: {selects} selects for {freqs} frequencies")
-    rate = rig.line_bytes(t1, t2) / (t2 - t1)
 
     # The operator turns the Main (downlink) dial up 10 kHz.
-    d1 = rig.get("main")
-    u1 = rig.get("sub")
-    rig.turn("main", 10_000)
-    turned_at = time.time()
-    poll("the uplink to move down 10 kHz", lambda: abs(rig.get("sub") - (u1 - 10_000)) < 300, 2 + KNOB_REST_S + 3)
-    moved_after = time.time() - turned_at
-    check(moved_after <= 2 + KNOB_REST_S, f"uplink moved {moved_after:.2f} s after the turn")
-    time.sleep(2)
-    e_down, e_up = expected(clock_now(), "RS-44", 435_650_000, 145_955_000)
-    d2, u2 = rig.get("main"), rig.get("sub")
-    check(abs(d2 - e_down) < 400, f"downlink kept on the new spot: {d2}, expected {e_down:.0f}")
-    check(abs(u2 - e_up) < 400, f"uplink on the paired spot: {u2}, expected {e_up:.0f}")
-    tb.stdin.close()
-    check(tb.wait(20) == 0, "trakbox leaves cleanly when input ends")
+    knob = rs44_knob_turn(lambda: rig.get("main"), lambda: rig.get("sub"),
+                          lambda hz: rig.turn("main", hz), clock_now)
+    log = leave(tb, state)
     time.sleep(0.2)
     with rig.lock:
         last = rig.frames[-1][1].hex(" ").upper()
     check(last == "FE FE A2 E0 16 5A 00 FD", f"satellite mode off at the end: {last}")
-    log = open(os.path.join(state, "trakbox.log")).read()
     check("downlink dial turned" in log, "the log names the turn of the dial")
     print(f"ic9700 RS-44 (echo {'on' if rig.echo else 'off'}): first update {first}; {freqs} frequency and {selects} select frames in 10 s, "
-          f"{rate:.0f} bytes/s on the CAT line; downlink {d1} -> {d1 + 10_000} (knob) -> {d2}; "
-          f"uplink {u1} -> {u2}, moved {moved_after:.2f} s after the turn")
+          f"{rate:.0f} bytes/s on the CAT line; {knob}")
 
 
 def so50(rig, tb, state, clock_now):
-    poll("SO-50's downlink on Main", lambda: abs(rig.get("main") - 436_795_000) < 12_000, 30)
-    poll("SO-50's uplink on Sub", lambda: abs(rig.get("sub") - 145_850_000) < 5_000, 30)
+    tuned("SO-50", lambda: rig.get("main"), lambda: rig.get("sub"), ("Main", "Sub"))
     check(rig.count(0x1B) >= 1, "the tone was asked for")
-    first_down = rig.get("main")
-    poll("Doppler updates after the refused tone", lambda: abs(rig.get("main") - first_down) >= 100, 20)
-    e_down, e_up = expected(clock_now(), "SO-50", 436_795_000, 145_850_000)
-    d, u = rig.get("main"), rig.get("sub")
-    check(abs(d - e_down) < 1000 and abs(u - e_up) < 1000, f"SO-50 Doppler: {d} ({e_down:.0f}), {u} ({e_up:.0f})")
+    first_down, d, u = so50_doppler_goes_on(lambda: rig.get("main"), lambda: rig.get("sub"), clock_now)
     check(rig.tone is None, "the refused tone is not on")
-    tb.stdin.close()
-    check(tb.wait(20) == 0, "trakbox leaves cleanly")
-    log = open(os.path.join(state, "trakbox.log")).read()
+    log = leave(tb, state)
     check("refused FE FE A2 E0 1B 00 00 06 70 FD (NG)" in log, "the refused tone is in the log")
     print(f"ic9700 SO-50: tone refused and logged; Doppler {first_down} -> {d} on Main, {u} on Sub")
 

@@ -128,6 +128,54 @@ TEST_CASE("Kenwood: decoding back") {
   CHECK(rest == "FB0014");
 }
 
+// The strings other trackers send a TS-2000, as operators captured them (docs/radio.md, "TS-2000 SA"):
+// SatPC32 SA1010110; at start and SA0010000; at exit (OscarWatch-Tracker issue #71); OscarWatch's
+// own SA1010000; (TRACE off, "for PC-managed Doppler") and SA1011000; (CTRL on Sub, TRACE off);
+// Hamlib: the answer is 18 characters, on when the third is 1; Hamlib's simulator answers SA0;.
+TEST_CASE("Kenwood TS-2000: SA satellite mode, as SatPC32 and OscarWatch send it") {
+  const auto found = kenwood::decode_satellite("SA0010000ISS     ;");   // as SatPC32 leaves the radio
+  REQUIRE(found);
+  CHECK_FALSE(found->on());
+  CHECK(kenwood::set_satellite(*found) == "SA0010000;");                                   // SatPC32 at exit
+  CHECK(kenwood::set_satellite(kenwood::satellite_working(*found, false)) == "SA1010000;");   // OscarWatch, TRACE off
+  CHECK(kenwood::set_satellite(kenwood::satellite_working(*found, true)) == "SA1011000;");    // its CTRL on Sub
+  // Found as SatPC32 runs it (TRACE and REV on): trakbox turns TRACE off, keeps REV and P2.
+  const auto satpc32 = kenwood::decode_satellite("SA1010110        ;");
+  REQUIRE(satpc32);
+  CHECK(satpc32->on());
+  CHECK(kenwood::set_satellite(kenwood::satellite_working(*satpc32, false)) == "SA1010010;");
+  // On a satellite memory channel, Main up: back to VFO, the uplink on Sub.
+  CHECK(kenwood::set_satellite(kenwood::satellite_working(*kenwood::decode_satellite("SA0200001        ;"), false)) ==
+        "SA1210000;");
+  // Hamlib's simulator answers SA0;: off, the other digits unknown (0).
+  const auto sim = kenwood::decode_satellite("SA0;");
+  REQUIRE(sim);
+  CHECK(sim->digits == "0000000");
+  CHECK_FALSE(kenwood::decode_satellite("SA;"));
+  CHECK_FALSE(kenwood::decode_satellite("SAX010000;"));
+  CHECK_FALSE(kenwood::decode_satellite("FA00435123450;"));
+  CHECK(kenwood::read_satellite() == "SA;");
+  CHECK(kenwood::is_refusal("?;"));
+  CHECK(kenwood::is_refusal("E;"));
+  CHECK(kenwood::is_refusal("O;"));
+  CHECK_FALSE(kenwood::is_refusal("SA0;"));
+}
+
+// Hamlib's ts2000.c: TN with the 1-based number in its list of 38 tones and 1750 Hz; SatPC32's
+// Doppler.sqf gives SO-50 67.0 Hz number 1, 74.4 Hz number 3 and SO-67 233.6 Hz number 36.
+TEST_CASE("Kenwood TS-2000: CTCSS tone numbers and the encoder") {
+  CHECK(kenwood::set_tone_number(670) == "TN01;");
+  CHECK(kenwood::set_tone_number(744) == "TN03;");
+  CHECK(kenwood::set_tone_number(2336) == "TN36;");
+  CHECK(kenwood::set_tone_number(2503) == "TN38;");
+  CHECK(kenwood::set_tone_number(17500) == "TN39;");   // SatPC32's TN39 at exit: the 1750 Hz tone
+  CHECK_FALSE(kenwood::set_tone_number(693));          // 69.3 Hz: not in the TS-2000's list
+  CHECK_FALSE(kenwood::set_tone_number(0));
+  CHECK(kenwood::tone(true) == "TO1;");
+  CHECK(kenwood::tone(false) == "TO0;");
+  CHECK(kenwood::read_tone() == "TO;");
+}
+
 TEST_CASE("Yaesu FT-736: CAT and satellite mode on/off") {
   CHECK(hex(yaesu::cat_on()) == "00 00 00 00 00");
   CHECK(hex(yaesu::cat_off()) == "80 80 80 80 80");

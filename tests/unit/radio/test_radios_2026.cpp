@@ -160,6 +160,16 @@ void rs44_first_update(RadioDriver& radio) {
   REQUIRE(radio.wait_idle(10000ms));
 }
 
+// SO-50 selected with its 67.0 Hz tone: the tone, then each link's mode and frequency.
+void so50_first_update(RadioDriver& radio) {
+  radio.set_ctcss_tone(670);
+  radio.set_mode(Link::downlink, Mode::fm);
+  radio.set_frequency(Link::downlink, 436'795'000);
+  radio.set_mode(Link::uplink, Mode::fm);
+  radio.set_frequency(Link::uplink, 145'850'000);
+  REQUIRE(radio.wait_idle(10000ms));
+}
+
 int count_cmd(const std::vector<Bytes>& frames, std::uint8_t cmd) {
   int n = 0;
   for (const auto& b : frames)
@@ -279,12 +289,7 @@ TEST_CASE("IC-9700: a refused tone and a refused satellite mode are reported; Do
   rig.refuse_satmode = true;
   auto made = make_radio("ic9700:" + pair.radio_side(), RadioConfig{}, timing());
   RadioDriver& radio = *made.driver;
-  radio.set_ctcss_tone(670);   // SO-50: selected with its tone
-  radio.set_mode(Link::downlink, Mode::fm);
-  radio.set_frequency(Link::downlink, 436'795'000);
-  radio.set_mode(Link::uplink, Mode::fm);
-  radio.set_frequency(Link::uplink, 145'850'000);
-  REQUIRE(radio.wait_idle(10000ms));
+  so50_first_update(radio);
   CHECK(radio.status().failures >= 1);   // the tone's NG was reported
   CHECK(rig.frequency(icom::Band::main) == 436'795'000);
   CHECK(rig.frequency(icom::Band::sub) == 145'850'000);
@@ -507,53 +512,187 @@ TEST_CASE("An FT-817 alone refuses the uplink with a message" * doctest::skip(tb
 
 namespace {
 
-// A TS-2000 (Kenwood's PC command reference): FA/FB set VFO A/B (11 digits of Hz), FA; / FB; answer
-// them, MD the mode, FN the VFO the mode goes to.
+// A TS-2000 as its sources describe it (docs/radio.md, "TS-2000 SA"): FA/FB set VFO A/B (11 digits
+// of Hz; in satellite mode A is Main, the downlink, B is Sub, the uplink) and FA; / FB; answer them;
+// SA; answers the seven digits and an 8-character name, SA<7 digits>; sets them, refused (?;) while
+// VFO A is in memory mode (FR2); FR; is refused in satellite mode; MD, TN, TO go to the CTRL band
+// (P4) in satellite mode, to the selected VFO (FR) outside it; TO; answers the encoder.
+// `hamlib_sim` answers as Hamlib's simulators/simkenwood.c does: SA; with SA0;, every set of SA
+// and TO; ignored.
 class Ts2000 final : public CommandResponder {
  public:
-  explicit Ts2000(const std::string& path) : CommandResponder(path) { start(); }
+  explicit Ts2000(const std::string& path, std::string sa = "0010000", char fr = '0') : CommandResponder(path), sa_(std::move(sa)), fr_(fr) {
+    start();
+  }
   ~Ts2000() override { stop(); }
+  bool refuse_tone = false;
+  bool hamlib_sim = false;
   void turn(char vfo, Hz delta) {
     std::lock_guard lock(mu_);
     hz_[vfo] += delta;
   }
+  std::string sa() {
+    std::lock_guard lock(mu_);
+    return sa_;
+  }
+  Hz frequency(char vfo) {
+    std::lock_guard lock(mu_);
+    return hz_[vfo];
+  }
+  // A band's mode, tone and encoder ("MD4 TN01 TO1"): 'M' Main, 'S' Sub (satellite mode), or
+  // '0' / '1' VFO A / B outside it.
+  std::string band(char b) {
+    std::lock_guard lock(mu_);
+    return mode_[b] + " " + tone_[b] + " TO" + (on_[b] ? '1' : '0');
+  }
 
  private:
+  void answer(const std::string& a) { end_.write(std::vector<std::uint8_t>(a.begin(), a.end())); }
+  char ctrl() const { return sa_[0] == '1' ? (sa_[3] == '1' ? 'S' : 'M') : fr_; }
   void take(const std::vector<std::uint8_t>& bytes) override {
     text_.append(bytes.begin(), bytes.end());
     std::string rest;
     for (const std::string& c : kenwood::split_commands(text_, &rest)) {
       cmds_.push_back(c);
       if (auto f = kenwood::decode_frequency(c)) hz_[f->vfo == kenwood::Vfo::a ? 'A' : 'B'] = f->hz;
-      if (c == "FA;" || c == "FB;") {
-        const std::string answer = kenwood::set_frequency(c[1] == 'A' ? kenwood::Vfo::a : kenwood::Vfo::b, hz_[c[1]]);
-        end_.write(std::vector<std::uint8_t>(answer.begin(), answer.end()));
+      if (c == "FA;" || c == "FB;")
+        answer(kenwood::set_frequency(c[1] == 'A' ? kenwood::Vfo::a : kenwood::Vfo::b, hz_[c[1]]));
+      if (c == "SA;") answer(hamlib_sim ? "SA0;" : "SA" + sa_ + "ISS     ;");
+      if (c.size() == 10 && c.starts_with("SA") && !hamlib_sim) {
+        if (fr_ == '2') answer("?;");
+        else sa_ = c.substr(2, 7);
       }
+      if (c == "FR;") answer(sa_[0] == '1' ? "?;" : std::string("FR") + fr_ + ";");
+      if (c.size() == 4 && c.starts_with("FR")) fr_ = c[2];
+      if (c.size() == 4 && c.starts_with("MD")) mode_[ctrl()] = c.substr(0, 3);
+      if (c.size() == 5 && c.starts_with("TN")) {
+        if (refuse_tone) answer("?;");
+        else tone_[ctrl()] = c.substr(0, 4);
+      }
+      if (c == "TO0;" || c == "TO1;") on_[ctrl()] = c[2] == '1';
+      if (c == "TO;" && !hamlib_sim) answer(on_[ctrl()] ? "TO1;" : "TO0;");
     }
     text_ = rest;
   }
   std::string text_;
+  std::string sa_;
+  char fr_;
   std::map<char, Hz> hz_;
+  std::map<char, std::string> mode_, tone_;
+  std::map<char, bool> on_;
 };
 
 }  // namespace
 
-TEST_CASE("TS-2000: VFO A down, VFO B up, the dial read back with FA; / FB;" * doctest::skip(tb::testing::skip_without({"socat"}))) {
+TEST_CASE("TS-2000: satellite mode SA, Main down (FA) / Sub up (FB), modes with CTRL, read-back, put back at close" * doctest::skip(tb::testing::skip_without({"socat"}))) {
+  tb::testing::require_tools({"socat"});
+  PtyPair pair;
+  REQUIRE(pair.ok());
+  Ts2000 rig(pair.test_side());   // found as SatPC32 leaves it: SA0010000
+  auto made = make_radio("ts2000:" + pair.radio_side(), RadioConfig{}, timing());
+  RadioDriver& radio = *made.driver;
+  rs44_first_update(radio);
+  REQUIRE(eventually([&] { return rig.commands().size() >= 10; }));
+  CHECK(rig.commands() == std::vector<std::string>{"SA;", "FR;", "SA1010000;", "SA;", "MD2;", "FA00435643780;",
+                                                    "SA1011000;", "MD1;", "SA1010000;", "FB00145963730;"});
+  CHECK(rig.sa() == "1010000");
+  CHECK(rig.band('M') == "MD2  TO0");   // USB on the downlink (Main)
+  CHECK(rig.band('S') == "MD1  TO0");   // LSB on the uplink (Sub)
+  CHECK(rig.frequency('A') == 435'643'780);
+  CHECK(rig.frequency('B') == 145'963'730);
+  CHECK(radio.status().reads_uplink);
+  // A Doppler update: one command.
+  rig.clear();
+  radio.set_frequency(Link::uplink, 145'963'770);
+  REQUIRE(radio.wait_idle(10000ms));
+  REQUIRE(eventually([&] { return !rig.commands().empty(); }));
+  CHECK(rig.commands() == std::vector<std::string>{"FB00145963770;"});
+  // The operator turns the uplink dial: read back with FB;.
+  rig.clear();
+  rig.turn('B', 2'000);
+  radio.set_frequency_guarded(Link::uplink, 145'963'810, 60);
+  REQUIRE(radio.wait_idle(10000ms));
+  CHECK(radio.take_dial_turn(Link::uplink) == 145'965'770);
+  REQUIRE(eventually([&] { return !rig.commands().empty(); }));
+  CHECK(rig.commands().front() == "FB;");
+  // Closed: the radio as it was found (SatPC32's exit string).
+  rig.clear();
+  made.driver.reset();
+  REQUIRE(eventually([&] { return !rig.commands().empty() && rig.commands().back() == "SA0010000;"; }));
+  CHECK(rig.sa() == "0010000");
+}
+
+TEST_CASE("TS-2000: VFO A in memory mode first goes to VFO; an SO-50 tone on Sub; a refused tone is reported, Doppler goes on" * doctest::skip(tb::testing::skip_without({"socat"}))) {
+  tb::testing::require_tools({"socat"});
+  PtyPair pair;
+  REQUIRE(pair.ok());
+  Ts2000 rig(pair.test_side(), "0010110", '2');   // TRACE and REV on, VFO A on a memory
+  auto made = make_radio("ts2000:" + pair.radio_side(), RadioConfig{}, timing());
+  RadioDriver& radio = *made.driver;
+  so50_first_update(radio);
+  REQUIRE(eventually([&] { return rig.commands().size() >= 16; }));
+  CHECK(rig.commands() == std::vector<std::string>{"SA;", "FR;", "FR0;", "SA1010010;", "SA;",            // on, TRACE off
+                                                    "SA1011010;", "TN01;", "TO1;", "TO;", "SA1010010;",  // the tone on Sub
+                                                    "MD4;", "FA00436795000;", "SA1011010;", "MD4;", "SA1010010;",
+                                                    "FB00145850000;"});
+  CHECK(rig.band('S') == "MD4 TN01 TO1");
+  CHECK(rig.band('M') == "MD4  TO0");
+  CHECK_FALSE(radio.status().fault);
+  made.driver.reset();
+  REQUIRE(eventually([&] { return rig.commands().size() >= 20; }));
+  const auto closing = rig.commands();
+  CHECK(std::vector<std::string>(closing.end() - 4, closing.end()) ==
+        std::vector<std::string>{"SA1011010;", "TO0;", "SA1010010;", "SA0010110;"});   // tone off, then as found
+
+  // A radio that refuses the tone: reported with what it answered, the frequencies still go.
+  PtyPair pair2;
+  REQUIRE(pair2.ok());
+  Ts2000 refusing(pair2.test_side());
+  refusing.refuse_tone = true;
+  auto made2 = make_radio("ts2000:" + pair2.radio_side(), RadioConfig{}, timing());
+  made2.driver->set_frequency(Link::downlink, 436'795'000);
+  made2.driver->set_frequency(Link::uplink, 145'850'000);
+  made2.driver->set_ctcss_tone(670);
+  REQUIRE(made2.driver->wait_idle(10000ms));
+  CHECK(made2.driver->status().failures == 1);
+  CHECK(made2.driver->status().message == "the Kenwood TS-2000 refused the tone 67.0 Hz (TN01;TO1; answered ?;)");
+  made2.driver->set_frequency(Link::uplink, 145'850'100);   // the next Doppler update goes on
+  REQUIRE(made2.driver->wait_idle(10000ms));
+  REQUIRE(eventually([&] { return refusing.frequency('B') == 145'850'100; }));
+  CHECK(refusing.frequency('A') == 436'795'000);
+  CHECK(refusing.sa() == "1010000");   // CTRL back on Main after the refusal
+  made2.driver->set_ctcss_tone(693);   // 69.3 Hz: not one of its tones
+  REQUIRE(made2.driver->wait_idle(10000ms));
+  CHECK(made2.driver->status().message == "the Kenwood TS-2000 has no CTCSS tone 69.3 Hz: not sent");
+}
+
+TEST_CASE("TS-2000: Hamlib's simulator answers SA0; and takes no SA: reported once, VFO A down / VFO B up" * doctest::skip(tb::testing::skip_without({"socat"}))) {
   tb::testing::require_tools({"socat"});
   PtyPair pair;
   REQUIRE(pair.ok());
   Ts2000 rig(pair.test_side());
+  rig.hamlib_sim = true;
   auto made = make_radio("ts2000:" + pair.radio_side(), RadioConfig{}, timing());
   RadioDriver& radio = *made.driver;
   rs44_first_update(radio);
-  REQUIRE(eventually([&] { return rig.commands().size() >= 7; }));
-  CHECK(rig.commands() == std::vector<std::string>{"FN0;", "MD2;", "FA00435643780;", "FN1;", "MD1;", "FN0;", "FB00145963730;"});
-  CHECK(radio.status().reads_uplink);
-  rig.clear();
-  rig.turn('B', 2'000);
-  radio.set_frequency_guarded(Link::uplink, 145'963'770, 60);
+  radio.set_ctcss_tone(670);
   REQUIRE(radio.wait_idle(10000ms));
-  CHECK(radio.take_dial_turn(Link::uplink) == 145'965'730);
-  REQUIRE(eventually([&] { return !rig.commands().empty(); }));
-  CHECK(rig.commands().front() == "FB;");
+  CHECK(rig.frequency('A') == 435'643'780);
+  CHECK(rig.frequency('B') == 145'963'730);
+  const auto cmds = rig.commands();
+  CHECK(std::count(cmds.begin(), cmds.end(), "SA1010000;") == 1);   // asked once, not every second
+  CHECK(std::count(cmds.begin(), cmds.end(), "SA;") == 4);          // the first read and three to confirm
+  // Outside satellite mode a mode reaches VFO B with FR1 (the TS-2000's VFO select, not the TS-790's FN).
+  CHECK(std::find(cmds.begin(), cmds.end(), "FR1;") != cmds.end());
+  CHECK(std::find(cmds.begin(), cmds.end(), "FN1;") == cmds.end());
+  CHECK(std::find(cmds.begin(), cmds.end(), "TN01;") != cmds.end());
+  CHECK_FALSE(radio.status().fault);
+}
+
+TEST_CASE("TS-2000 :mainup is refused: its satellite mode is driven Main down / Sub up only") {
+  auto made = make_radio("ts2000:/dev/null:mainup", RadioConfig{}, timing());
+  CHECK(made.driver == nullptr);
+  CHECK(made.error == "--radio \"ts2000:/dev/null:mainup\": \"mainup\": the Kenwood TS-2000's satellite mode is "
+                      "driven with the downlink on Main (FA) and the uplink on Sub (FB) only");
+  CHECK(make_radio("ts2000:/dev/null:maindown", RadioConfig{}, timing()).driver != nullptr);
 }
