@@ -1,6 +1,7 @@
 #include "app/attach_server.h"
 
 #include <fcntl.h>
+#include <poll.h>
 #include <pwd.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
@@ -16,6 +17,7 @@
 #include <algorithm>
 #include <array>
 #include <cerrno>
+#include <chrono>
 #include <csignal>
 #include <cstring>
 #include <deque>
@@ -141,6 +143,31 @@ struct Outbox : std::enable_shared_from_this<Outbox> {
     close_when_sent = true;
     kick();
   }
+  // The station is stopping and its loop will not run again: what is queued is written now,
+  // waiting at most `within` for a slow reader, then the connection is closed. A write under way
+  // was tried at once when it started (asio writes speculatively), so what is queued follows it.
+  void flush_now(std::chrono::milliseconds within) {
+    const auto deadline = std::chrono::steady_clock::now() + within;
+    std::size_t done = 0;
+    while (!closed && done < pending.size()) {
+      const ssize_t n = ::send(sock.native_handle(), pending.data() + done, pending.size() - done,
+                               MSG_DONTWAIT | MSG_NOSIGNAL);
+      if (n > 0) {
+        done += static_cast<std::size_t>(n);
+        continue;
+      }
+      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+      if (n < 0 && errno == ENOTSOCK) {   // the serial port of --tty
+        if (::write(sock.native_handle(), pending.data() + done, pending.size() - done) <= 0) break;
+        continue;
+      }
+      if (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR) break;
+      pollfd p{sock.native_handle(), POLLOUT, 0};
+      if (left.count() <= 0 || ::poll(&p, 1, static_cast<int>(left.count())) <= 0) break;
+    }
+    pending.clear();
+    close();
+  }
   void close() {
     if (closed) return;
     closed = true;
@@ -206,6 +233,7 @@ struct Member {
   bool gone = false;
   bool permanent = false;  // the serial port of --tty: no detaching, and a lost port is only logged
   bool input_ended = false;  // a script's input ended: it detaches once the menus took its keys
+  std::string farewell = "\r\n[detached from trakbox: the station goes on]\r\n";  // the session's last words
   std::string told;  // the keyboard note last given to a line client
   std::chrono::steady_clock::time_point told_at{};
 
@@ -231,7 +259,7 @@ struct Member {
       pool->push_back(slot);
     }
     if (!out->closed) {
-      out->send("\r\n[detached from trakbox: the station goes on]\r\n");
+      out->send(farewell);
       out->finish();
     }
   }
@@ -642,7 +670,15 @@ AttachServer::~AttachServer() {
   boost::system::error_code ec;
   impl_->acceptor.close(ec);
   for (auto& s : impl_->subscribers) s->finish();
+  // The station stops: each client is told so, its screen given back (endwin) and all of it
+  // written before the loop ends, so an attached terminal is never left in the menus' full screen.
+  std::vector<std::shared_ptr<Outbox>> outs;
+  for (auto& m : impl_->members) {
+    m->farewell = "\r\n[the station stopped: this session ends]\r\n";
+    outs.push_back(m->out);
+  }
   impl_->members.clear();
+  for (auto& o : outs) o->flush_now(std::chrono::milliseconds(500));
   std::error_code fec;
   std::filesystem::remove(impl_->opt.path, fec);
 }

@@ -339,6 +339,8 @@ void StationApp::start_gps() {
       *endpoint, [&m](std::function<void()> f) { asio::post(m.io, std::move(f)); }, std::move(sink));
 }
 
+const gps::Monitor* StationApp::gps() const { return impl_->gps.get(); }
+
 void StationApp::stop_gps() {
   impl_->gps_client.reset();
   if (impl_->station) impl_->station->set_gps(nullptr);

@@ -21,6 +21,9 @@ class io_context;
 namespace spdlog {
 class logger;
 }
+namespace tb::gps {
+class Monitor;
+}
 namespace tb::radio {
 class RadioDriver;
 }
@@ -89,6 +92,8 @@ class StationApp {
   // saves then), and shows the GPS word on the status line. stop_gps() ends the thread.
   void start_gps();
   void stop_gps();
+  // The receiver's state as the loop last heard it; nullptr when no GPS is configured or started.
+  const gps::Monitor* gps() const;
 
   // --service: tracks what the stored configuration says, serves, re-reads the data directory's
   // element and freq/mode files on SIGHUP, and on SIGTERM parks (when parking is on). `menus`,

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/station_app.h"
+#include "gps/monitor.h"
 #include "orbit/element_age.h"
 #include "station/clock.h"
 #include "tracker/elements_refresh.h"
@@ -117,6 +118,41 @@ nlohmann::json tracking_list_json(StationApp& app, orbit::UtcTime now) {
   return list;
 }
 
+const char* link_name(gps::Link l) {
+  switch (l) {
+    case gps::Link::off: return "off";
+    case gps::Link::connecting: return "connecting";
+    case gps::Link::no_gpsd: return "no gpsd";
+    case gps::Link::no_receiver: return "no receiver";
+    case gps::Link::receiving: return "receiving";
+    case gps::Link::lost: return "gpsd lost";
+  }
+  return "?";
+}
+
+// The GPS receiver (null when none is configured): the link to gpsd, the fix, the position it last
+// confirmed, the clock against GPS time, and whether the station follows it.
+nlohmann::json gps_json(StationApp& app) {
+  const gps::Monitor* g = app.gps();
+  if (!g) return nullptr;
+  nlohmann::json j{{"source", g->source()},
+                   {"link", link_name(g->link())},
+                   {"fix", g->filter().fixed()},
+                   {"follow", app.model().gps.follow},
+                   {"clock_warned", g->clock_warned()},
+                   {"text", g->describe()},
+                   {"status_word", g->status_word()}};
+  const auto& c = g->filter().confirmed();
+  j["position"] = c ? nlohmann::json{{"lat_deg", c->lat_deg},
+                                      {"lon_deg", c->lon_deg},
+                                      {"alt_m", c->alt_m ? nlohmann::json(*c->alt_m) : nlohmann::json(nullptr)},
+                                      {"mode", c->mode},
+                                      {"time", orbit::format_iso8601(c->time)}}
+                    : nlohmann::json(nullptr);
+  j["clock_error_s"] = g->clock_error_s() ? nlohmann::json(*g->clock_error_s()) : nlohmann::json(nullptr);
+  return j;
+}
+
 }  // namespace
 
 nlohmann::json station_status(StationApp& app, const StatusContext& cx) {
@@ -145,6 +181,7 @@ nlohmann::json station_status(StationApp& app, const StatusContext& cx) {
   j["antenna"] = antenna_json(app);
   j["radios"] = nlohmann::json::array({radio_json(app)});
   j["tracking_list"] = tracking_list_json(app, now);
+  j["gps"] = gps_json(app);
   const tracker::ElementsRefresh& rf = app.refresh();
   j["elements_refresh"] = {{"sources", app.model().refresh.sources.size()},
                            {"last_result", rf.last_result()},
@@ -173,6 +210,12 @@ std::vector<std::string> status_problems(const nlohmann::json& s) {
   for (const auto& r : s.at("radios"))
     if (r.value("fault", false)) out.push_back("radio fault: " + r.value("message", ""));
   if (!s.at("save").at("failure").is_null()) out.push_back("state not saved: " + s["save"]["failure"].get<std::string>());
+  // GPS: a receiver that cannot be heard, or a clock off GPS time, is a problem; a lost fix is
+  // shown, not counted (the station keeps its position).
+  if (const auto g = s.value("gps", nlohmann::json()); g.is_object()) {
+    if (g.value("link", "") != "receiving") out.push_back("GPS: " + g.value("status_word", g.value("link", "")));
+    else if (g.value("clock_warned", false)) out.push_back("GPS: " + g.value("status_word", std::string("clock off GPS time")));
+  }
   if (s.at("elements_refresh").value("last_failed", false))
     out.push_back("element refresh failed: " + s["elements_refresh"].value("last_result", ""));
   return out;
@@ -221,6 +264,9 @@ std::string format_status(const nlohmann::json& s) {
       l += ", next pass " + e["next_pass"].value("aos", "") + " max " + num(e["next_pass"]["max_el_deg"], 1);
     line(l);
   }
+  if (const auto g = s.value("gps", nlohmann::json()); g.is_object())
+    line("  gps       " + g.value("source", "") + ": " + g.value("text", "") +
+         (g.value("follow", false) ? ", followed" : ", not followed"));
   const auto& rf = s.at("elements_refresh");
   line("  elements  " + std::to_string(rf.value("sources", 0)) + " refresh source(s)" +
        (rf.value("last_result", "").empty() ? std::string() : ": " + rf.value("last_result", "")));

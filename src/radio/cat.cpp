@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cstdio>
 #include <stdexcept>
 
 namespace tb::radio {
@@ -338,9 +337,8 @@ std::optional<std::string> set_tone_number(int tenths_hz) {
       1679, 1738, 1799, 1862, 1928, 2035, 2107, 2181, 2257, 2336, 2418, 2503, 17500};
   for (std::size_t i = 0; i < kTones.size(); ++i) {
     if (kTones[i] != tenths_hz) continue;
-    char buf[8];
-    std::snprintf(buf, sizeof buf, "TN%02zu;", i + 1);
-    return std::string(buf);
+    const std::string number = std::to_string(i + 1);
+    return "TN" + std::string(2 - number.size(), '0') + number + ";";
   }
   return std::nullopt;
 }

@@ -483,6 +483,12 @@ class ScreenUI:
         if eof:
             self.send("\x1a")
 
+    def terminal_modes(self):
+        """tmux's view of the terminal's modes: {'alternate_on': '0'|'1', 'cursor_flag': ..., ...}."""
+        keys = ("alternate_on", "cursor_flag", "insert_flag", "keypad_cursor_flag", "keypad_flag")
+        r = self._tmux("display-message", "-p", "-t", self.session, ",".join("#{%s}" % k for k in keys))
+        return dict(zip(keys, r.stdout.strip().split(",")))
+
     def exited(self, timeout=15.0):
         """The exit status once trakbox has left (the session's shell prints it)."""
         m = self.wait_match(r"EXITED (\d+)", timeout)

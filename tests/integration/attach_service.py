@@ -265,9 +265,20 @@ def main():
         check(st.returncode == 0, f"status after all that: {st.returncode} {st.stderr}")
         check(json.loads(st.stdout)["attached"] == [], "nobody is attached any more")
 
+        # A full-screen client attached while the service stops: its terminal is given back as it
+        # was (the normal screen, the cursor shown), with a word on why the session ended.
+        d = ScreenUI([BIN, "attach", "--state", state], 100, 40)
+        uis.append(d)
+        d.prompt(MAIN)
+        check(d.terminal_modes()["alternate_on"] == "1", f"attached full screen: {d.terminal_modes()}")
         svc.terminate()
         _, err = svc.communicate(timeout=60)
         check(svc.returncode == 0, f"the service stops with 0: {err.decode()[-2000:]}")
+        check(d.exited() == 0, "the attached client leaves with 0 when the service stops")
+        modes = d.terminal_modes()
+        check(modes["alternate_on"] == "0" and modes["cursor_flag"] == "1" and modes["keypad_cursor_flag"] == "0",
+              f"the client's terminal given back: {modes}")
+        check("[the station stopped: this session ends]" in d.screen(), f"and it says why: {d.screen()[-400:]}")
         check(not os.path.exists(sock), "and removes its socket")
         log = log_text(state)
         for line in ("attach: root", "has the keyboard", "detached"):

@@ -185,6 +185,12 @@ class Station:
             time.sleep(0.02)
         raise Failure(f"{payload}: expected {pattern!r}, last {got!r}")
 
+    def status(self):
+        """`trakbox status --json`: (exit status, the document)."""
+        code, out, err = sh(BIN, "status", "--state", self.state, "--json")
+        check(out.strip(), f"trakbox status printed nothing ({code}): {err}")
+        return code, json.loads(out)
+
     def stop(self):
         if self.sock:
             self.sock.close()
@@ -246,6 +252,16 @@ def fixed_station():
         t = st.ask("TIME?").decode()
         check(re.fullmatch(r"\$TIME\?,6,0,(1[1-9]|[2-5]\d),19,10,2017,\d+\*[0-9A-F]{2}\r\n", t), f"TIME? after: {t!r}")
         check(st.ask("STATUS?").split(b",")[10] == b"1", "STATUS X10 after RTC_REUPDATE")
+        # trakbox status: the receiver, its fix and position, and the clock an hour ahead of GPS time.
+        code, doc = st.status()
+        g = doc["gps"]
+        check(g["link"] == "receiving" and g["fix"] and g["follow"], f"status gps: {g}")
+        check(distance_m(g["position"]["lat_deg"], g["position"]["lon_deg"], 41.01, 29.17) < 5 and g["position"]["mode"] == 3,
+              f"status gps position (the receiver's latest, jitter and all): {g['position']}")
+        check(-3700 < g["clock_error_s"] < -3500 and g["clock_warned"], f"status gps clock: {g}")
+        check(code == 1 and any(p.startswith("GPS: GPS TIME -3") for p in doc["problems"]),
+              f"a clock an hour off GPS time is a problem: {code} {doc['problems']}")
+        print("trakbox status:", g["text"], "| problems:", doc["problems"])
         log = st.log()
         check(len(moves(log)) == 1, f"jitter moved the station: {moves(log)}")
         check(log.count("the clock is") == 1, "the clock warned about more than once")
@@ -341,6 +357,9 @@ def gpsd_killed_and_restarted():
         fake.kill()
         st.wait_log(r"GPS: gpsd at 127\.0\.0\.1:%d went away" % port)
         check(st.ask("ERRSTATUS?") == frame("ERRSTATUS?,0,0,0,0,0,0,0,0,0,0,0,1"), "X12 after gpsd went")
+        code, doc = st.status()
+        check(code == 1 and "GPS: GPSD LOST" in doc["problems"] and round(doc["gps"]["position"]["lat_deg"], 3) == 41.01,
+              f"status with gpsd gone: {code} {doc['problems']} {doc['gps']}")
         check(st.ask("GPS_DATA?").startswith(b"$GPS_DATA?,41.0100N,29.1700E,0,"), "the last position kept")
         time.sleep(4.5)
         log = st.log()
