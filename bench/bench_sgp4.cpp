@@ -55,51 +55,65 @@ void BM_Sgp4ResonantAtAge(benchmark::State& state) {
 }
 BENCHMARK(BM_Sgp4ResonantAtAge)->Arg(0)->Arg(7)->Arg(30)->Arg(365);
 
-// One result into the arrays SatrecArray fills: position, velocity (NaN on failure), error code.
-inline void store(const Propagation& p, std::size_t k, std::vector<double>& r, std::vector<double>& v,
-                  std::vector<std::uint8_t>& errors) {
-  constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
-  errors[k] = static_cast<std::uint8_t>(p.error);
-  for (int c = 0; c < 3; ++c) {
-    r[3 * k + c] = p.ok() ? p.state.r_km[c] : kNan;
-    v[3 * k + c] = p.ok() ? p.state.v_km_s[c] : kNan;
-  }
-}
-
 std::vector<Sgp4> gpredict_catalogue() {
   const std::vector<Elements> sets = tb::testing::gpredict_catalogue_sets();
   return {sets.begin(), sets.end()};
 }
 
-// Every set at 2018-01-21 00:00 UTC + k minutes, k = 0..1439 (the file's epochs are 2017 Dec 23
-// to 2018 Jan 22), times given as a split Julian date as SatrecArray takes them.
+// The catalogue workload as python-sgp4's SatrecArray.sgp4(jd, fr) runs it: every set at
+// 2018-01-21 00:00 UTC + k minutes, k = 0..1439 (the file's epochs are 2017 Dec 23 to 2018 Jan 22),
+// times given as a split Julian date as SatrecArray takes them, and the arrays it fills: position,
+// velocity (NaN on failure), error code, one entry per set and time.
+struct CatalogueDay {
+  static constexpr int kTimes = 1440;
+  static constexpr double kJd = 2458139.5;
+  std::vector<Sgp4> sats = gpredict_catalogue();
+  std::vector<double> fr = [] {
+    std::vector<double> f(kTimes);
+    for (int k = 0; k < kTimes; ++k) f[k] = k / 1440.0;
+    return f;
+  }();
+  std::size_t n = sats.size() * kTimes;
+  std::vector<double> r = std::vector<double>(3 * n);
+  std::vector<double> v = std::vector<double>(3 * n);
+  std::vector<std::uint8_t> errors = std::vector<std::uint8_t>(n);
+
+  // Minutes from a set's epoch to time j.
+  double tsince(const JulianDate& epoch, int j) const {
+    return (kJd - epoch.whole) * 1440.0 + (fr[j] - epoch.fraction) * 1440.0;
+  }
+  // One result into the arrays, at k = set * kTimes + time.
+  void store(const Propagation& p, std::size_t k) {
+    constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+    errors[k] = static_cast<std::uint8_t>(p.error);
+    for (int c = 0; c < 3; ++c) {
+      r[3 * k + c] = p.ok() ? p.state.r_km[c] : kNan;
+      v[3 * k + c] = p.ok() ? p.state.v_km_s[c] : kNan;
+    }
+  }
+  // Seconds per propagation (printed with an SI prefix: "650n" is 650 ns).
+  benchmark::Counter per_propagation() const {
+    return benchmark::Counter(static_cast<double>(n),
+                              benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  }
+};
+
+// The catalogue workload, one propagation at a time.
 void BM_Sgp4Gpredict979x1440(benchmark::State& state) {
-  const std::vector<Sgp4> sats = gpredict_catalogue();
-  constexpr int kTimes = 1440;
-  const double jd = 2458139.5;
-  std::vector<double> fr(kTimes);
-  for (int k = 0; k < kTimes; ++k) fr[k] = k / 1440.0;
-  const std::size_t n = sats.size() * kTimes;
-  std::vector<double> r(3 * n), v(3 * n);
-  std::vector<std::uint8_t> errors(n);
+  CatalogueDay w;
   for (auto _ : state) {
     std::size_t k = 0;
-    for (const Sgp4& sat : sats) {
+    for (const Sgp4& sat : w.sats) {
       const JulianDate epoch = sat.epoch_jd();
-      for (int j = 0; j < kTimes; ++j, ++k) {
-        const double tsince = (jd - epoch.whole) * 1440.0 + (fr[j] - epoch.fraction) * 1440.0;
-        store(sat.propagate_minutes(tsince), k, r, v, errors);
-      }
+      for (int j = 0; j < CatalogueDay::kTimes; ++j, ++k) w.store(sat.propagate_minutes(w.tsince(epoch, j)), k);
     }
     benchmark::ClobberMemory();
   }
   std::size_t failed = 0;
-  for (std::uint8_t e : errors) failed += e != 0;
-  state.counters["sets"] = static_cast<double>(sats.size());
+  for (std::uint8_t e : w.errors) failed += e != 0;
+  state.counters["sets"] = static_cast<double>(w.sats.size());
   state.counters["failed"] = static_cast<double>(failed);
-  // Seconds per propagation (printed with an SI prefix: "650n" is 650 ns).
-  state.counters["per_propagation"] = benchmark::Counter(
-      static_cast<double>(n), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["per_propagation"] = w.per_propagation();
 }
 BENCHMARK(BM_Sgp4Gpredict979x1440)->Unit(benchmark::kMillisecond)->MinTime(5.0);
 
@@ -107,7 +121,6 @@ BENCHMARK(BM_Sgp4Gpredict979x1440)->Unit(benchmark::kMillisecond)->MinTime(5.0);
 // minutes, results in the same arrays. items_per_second: propagations per second. Arg: which kernel
 // (0: the one dispatch chooses here, then each available one, best first; the label names it).
 void BM_Sgp4BatchGpredict979x1440(benchmark::State& state) {
-  const std::vector<Sgp4> sats = gpredict_catalogue();
   const auto kernels = batch_kernels_available();
   const auto which = static_cast<std::size_t>(state.range(0));
   if (which > kernels.size()) {
@@ -115,28 +128,22 @@ void BM_Sgp4BatchGpredict979x1440(benchmark::State& state) {
     return;
   }
   const char* isa = which == 0 ? batch_kernel_isa() : kernels[which - 1];
-  constexpr int kTimes = 1440;
-  const double jd = 2458139.5;
-  std::vector<double> fr(kTimes), tsince(kTimes);
-  for (int k = 0; k < kTimes; ++k) fr[k] = k / 1440.0;
-  const std::size_t n = sats.size() * kTimes;
-  std::vector<Propagation> out(kTimes);
-  std::vector<double> r(3 * n), v(3 * n);
-  std::vector<std::uint8_t> errors(n);
+  CatalogueDay w;
+  std::vector<double> tsince(CatalogueDay::kTimes);
+  std::vector<Propagation> out(CatalogueDay::kTimes);
   for (auto _ : state) {
     std::size_t k = 0;
-    for (const Sgp4& sat : sats) {
+    for (const Sgp4& sat : w.sats) {
       const JulianDate epoch = sat.epoch_jd();
-      for (int j = 0; j < kTimes; ++j) tsince[j] = (jd - epoch.whole) * 1440.0 + (fr[j] - epoch.fraction) * 1440.0;
+      for (int j = 0; j < CatalogueDay::kTimes; ++j) tsince[j] = w.tsince(epoch, j);
       propagate_batch_with(isa, sat, tsince, out);
-      for (int j = 0; j < kTimes; ++j, ++k) store(out[j], k, r, v, errors);
+      for (int j = 0; j < CatalogueDay::kTimes; ++j, ++k) w.store(out[j], k);
     }
     benchmark::ClobberMemory();
   }
   state.SetLabel(isa);
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * static_cast<std::int64_t>(n));
-  state.counters["per_propagation"] = benchmark::Counter(
-      static_cast<double>(n), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * static_cast<std::int64_t>(w.n));
+  state.counters["per_propagation"] = w.per_propagation();
 }
 BENCHMARK(BM_Sgp4BatchGpredict979x1440)->DenseRange(0, 3)->Unit(benchmark::kMillisecond)->MinTime(3.0);
 

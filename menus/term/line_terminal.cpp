@@ -25,7 +25,7 @@ speed_t to_speed(int baud) {
 }  // namespace
 
 LineTerminal::LineTerminal(int in_fd, int out_fd, WaitReadable wait, bool crlf, bool owns_fds)
-    : in_(in_fd), out_(out_fd), wait_(std::move(wait)), crlf_(crlf), owns_(owns_fds) {}
+    : LineOutput(crlf), in_(in_fd), out_(out_fd), wait_(std::move(wait)), owns_(owns_fds) {}
 
 LineTerminal::~LineTerminal() {
   flush();
@@ -73,11 +73,8 @@ std::unique_ptr<LineTerminal> LineTerminal::open_serial(const std::string& devic
   return std::make_unique<LineTerminal>(fd, fd, std::move(wait), true, true);
 }
 
-void LineTerminal::write(std::string_view text) {
-  for (char c : text) {
-    if (c == '\n' && crlf_) out_buf_.push_back('\r');
-    out_buf_.push_back(c);
-  }
+void LineTerminal::emit(std::string_view bytes) {
+  out_buf_.append(bytes);
   if (out_buf_.size() > 4096) flush();
 }
 
@@ -98,23 +95,6 @@ void LineTerminal::flush() {
   }
   out_buf_.clear();
 }
-
-void LineTerminal::bell() { write("\a"); }
-
-void LineTerminal::clear() {
-  write("\n");
-  flush();
-}
-
-void LineTerminal::live(const std::vector<std::string>& lines) {
-  for (const auto& l : lines) {
-    write(l);
-    write("\n");
-  }
-  flush();
-}
-
-void LineTerminal::end_live() { flush(); }
 
 int LineTerminal::next_key(std::optional<Duration> timeout) {
   flush();

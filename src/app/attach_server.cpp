@@ -28,6 +28,7 @@
 #include <spdlog/spdlog.h>
 
 #include "menus/term/curses_terminal.h"
+#include "menus/term/line_terminal.h"
 #include "store/state_file.h"
 
 namespace tb::app {
@@ -177,40 +178,18 @@ struct Outbox : std::enable_shared_from_this<Outbox> {
 };
 
 // Plain lines into an outbox (the attached client's line mode): a LineTerminal's output rules.
-class LineSink final : public term::Terminal {
+class LineSink final : public term::LineOutput {
  public:
-  LineSink(std::function<void(std::string_view)> out, bool crlf) : out_(std::move(out)), crlf_(crlf) {}
-  void write(std::string_view text) override {
-    std::string s;
-    for (char c : text) {
-      if (c == '\n' && crlf_) s.push_back('\r');
-      s.push_back(c);
-    }
-    out_(s);
-  }
-  void bell() override { write("\a"); }
-  void clear() override { write("\n"); }
+  LineSink(std::function<void(std::string_view)> out, bool crlf) : LineOutput(crlf), out_(std::move(out)) {}
   void flush() override {}
-  void live(const std::vector<std::string>& lines) override {
-    for (const auto& l : lines) {
-      write(l);
-      write("\n");
-    }
-  }
-  void end_live() override {}
-  void status(std::string_view) override {}
-  void graphics(const term::Graphics&) override {}
-  bool full_screen() const override { return false; }
-  int columns() const override { return 80; }
-  int rows() const override { return 24; }
   bool closed() const override { return false; }
 
  protected:
   int next_key(std::optional<term::Duration>) override { return term::kEndOfInput; }
+  void emit(std::string_view bytes) override { out_(bytes); }
 
  private:
   std::function<void(std::string_view)> out_;
-  bool crlf_;
 };
 
 // Who is at the other end: the user of the peer's credentials and the terminal it says it has.

@@ -417,6 +417,14 @@ def wait_arrived(ui, prompt_rx, az, el, timeout=30.0):
     return out
 
 
+def open_direct(ui, key, what):
+    """6-6 and menu 8 (key "6" in the Configuration Menu, "8" in the main menu) open the same
+    sub-menu: its three choices, then its prompt."""
+    ui.send(key + "\r")
+    out = ui.prompt(DIRECT)
+    must(out, r"1\.Direct rotor control from key board\.\n2\.Enter direction value\.\n3\.Preset Control\.", what)
+
+
 PRESETS = [(125, 15), (90, 22), (0, 45), (270, 10), (165, 0)]
 
 
@@ -424,10 +432,7 @@ def walk_6_6(ui):
     """6-6: the sub-menu, 2 (enter a direction, the manual's 210/20), 3 (presets, S to store the
     manual's five, then preset 4: 270/10, on this side of the South-start rotator's stop), 1
     (keyboard: up, stop, Enter)."""
-    ui.send("6\r")
-    out = ui.prompt(DIRECT)
-    must(out, r"1\.Direct rotor control from key board\.\n2\.Enter direction value\.\n3\.Preset Control\.",
-         "the 6-6 sub-menu")
+    open_direct(ui, "6", "the 6-6 sub-menu")
     ui.send("2\r")
     out = ui.prompt(r"Azimuth: 180\.0 ")
     must(out, r"Rotor control switched ON \(E key in the realtime display switches it OFF\)\.",
@@ -466,37 +471,34 @@ def walk_6_6(ui):
     return pos[-1]
 
 
-def walk_6_4(ui):
+def enter_6_4(ui, parking_yes, shown, typed):
+    """6-4 answered Y to both of its questions (parking_yes: the keys of the first answer): its six
+    values, parking azimuth and elevation, then the azimuth and elevation limits (minimum, maximum),
+    each prompt showing `shown` and answered with `typed` ("" keeps the value). Returns the screen up
+    to the next prompt."""
+    values = list(zip(["Azimuth Parking", "Elevation Parking", "Azimuth minmum", "Azimuth maximum",
+                       "Elevation minmum", "Elevation maximum"], shown, typed))
     ui.send("4\r")
     ui.prompt(r"Set Antenna Parking position \? \[Y/N\] ")
-    ui.send("Y")
-    answer(ui, r"Azimuth Parking value : 0\.0 ", "90\r", "6-4")
-    answer(ui, r"Elevation Parking value : 0\.0 ", "45\r", "6-4")
+    ui.send(parking_yes)
+    for label, was, keys in values[:2]:
+        answer(ui, rf"{label} value : {re.escape(f'{was:.1f}')} ", keys + "\r", "6-4")
     ui.prompt(r"Set Antenna rotation limit \? \[Y/N\] ")
     ui.send("Y\r")  # "Y <ENTER>": one answer; the next Enter keeps the minimum
-    answer(ui, r"Azimuth minmum value : 0\.0 ", "\r", "6-4")
-    answer(ui, r"Azimuth maximum value : 360\.0 ", "340\r", "6-4")
-    answer(ui, r"Elevation minmum value : 0\.0 ", "\r", "6-4")
-    answer(ui, r"Elevation maximum value : 90\.0 ", "60\r", "6-4")
+    for label, was, keys in values[2:]:
+        answer(ui, rf"{label} value : {re.escape(f'{was:.1f}')} ", keys + "\r", "6-4")
+    return ui.prompt(UPDATE)
+
+
+def walk_6_4(ui):
+    out = enter_6_4(ui, "Y", (0, 0, 0, 360, 0, 90), ("90", "45", "", "340", "", "60"))
     # The factory South start: 0..340 holds the rotor stop, the limits split the travel (issue 21).
     # The walk runs with --cross-limit-sector yes (pointing limits the antenna may cross: its later
     # AZ/EL commands point on both sides); the manual's keystrokes stay as they are.
-    out = ui.prompt(UPDATE)
     must(out, r"may cross between passes", "6-4 says what is reachable when limits split the travel")
     must_not(since(out, "Set Antenna Parking position"), r"Not changed", "the manual's 6-4 example is valid")
     # A whole that does not hold together is refused, nothing changed.
-    ui.send("4\r")
-    ui.prompt(r"Set Antenna Parking position \? \[Y/N\] ")
-    ui.send("Y\r")
-    answer(ui, r"Azimuth Parking value : 90\.0 ", "\r", "6-4")
-    answer(ui, r"Elevation Parking value : 45\.0 ", "\r", "6-4")
-    ui.prompt(r"Set Antenna rotation limit \? \[Y/N\] ")
-    ui.send("Y\r")
-    answer(ui, r"Azimuth minmum value : 0\.0 ", "\r", "6-4")
-    answer(ui, r"Azimuth maximum value : 340\.0 ", "\r", "6-4")
-    answer(ui, r"Elevation minmum value : 0\.0 ", "50\r", "6-4")
-    answer(ui, r"Elevation maximum value : 60\.0 ", "40\r", "6-4")
-    out = ui.prompt(UPDATE)
+    out = enter_6_4(ui, "Y\r", (90, 45, 0, 340, 0, 60), ("", "", "", "", "50", "40"))
     must(out, r"elevation limits 50(\.0)?\.\.40(\.0)?: maximum must not be below minimum", "why it is refused")
     must(out, r"Not changed\.", "a refused 6-4 changes nothing")
 
@@ -524,10 +526,7 @@ AFTER_6_4 = [
 
 def walk_menu_8(ui):
     """Menu 8 is 6-6's sub-menu: enter a direction near the antenna (rotor control is on now)."""
-    ui.send("8\r")
-    out = ui.prompt(DIRECT)
-    must(out, r"1\.Direct rotor control from key board\.\n2\.Enter direction value\.\n3\.Preset Control\.",
-         "menu 8's sub-menu")
+    open_direct(ui, "8", "menu 8's sub-menu")
     ui.send("2\r")
     out = ui.prompt(r"Azimuth: \d+\.\d ")
     az = float(last_match(out, r"Azimuth: (\d+\.\d)\s*$", "the antenna azimuth").group(1))

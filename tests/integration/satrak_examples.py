@@ -105,6 +105,23 @@ class Acu:
         check(mm is not None, f"{payload!r}: {body!r} does not match {pattern!r} {why}")
         return mm
 
+    def accepted(self, command: str, why: str = "") -> str:
+        """command (NAME=..., as the document writes it) is answered NAME=,OK. Returns NAME."""
+        name = command.split("=")[0].strip()
+        self.expect(command, f"{name}=,OK", why)
+        return name
+
+    def set_and_read(self, command: str, reads_back: str, why: str = ""):
+        """A setting: command is accepted, and NAME? then answers exactly NAME?,reads_back."""
+        name = self.accepted(command, why)
+        self.expect(f"{name}?", f"{name}?,{reads_back}", why)
+
+    def set_and_read_like(self, command: str, pattern: str, why: str = ""):
+        """As set_and_read where what NAME? answers depends on the clock or the antenna: its fields
+        after NAME?, match pattern (expect_like)."""
+        name = self.accepted(command, why)
+        self.expect_like(f"{name}?", re.escape(f"{name}?,") + pattern, why)
+
     def stop(self):
         """SIGTERM: trakbox saves and leaves."""
         self.sock.close()
@@ -183,26 +200,25 @@ def walk_the_document():
         acu.expect_like("TIME?", rf"TIME\?,12,(?:8|9|10),\d\d?,21,5,2026,{D}")
 
         # 9 TIME=
-        acu.expect("TIME=,16,43,0,17,3,2017", "TIME=,OK")
-        acu.expect_like("TIME?", rf"TIME\?,16,43,[0-5],17,3,2017,{D}")
+        acu.set_and_read_like("TIME=,16,43,0,17,3,2017", rf"16,43,[0-5],17,3,2017,{D}")
 
         # 10 START_STOP_TIME?  Fresh: no window, all zeros. With the window of the document's
         # example set, its reply exactly.
         acu.expect("START_STOP_TIME?", "START_STOP_TIME?," + ",".join(["0"] * 12))
-        acu.expect("START_STOP_TIME=,19,37,30,23,6,2017,19,39,0,23,6,2017", "START_STOP_TIME=,OK")
-        acu.expect("START_STOP_TIME?", "START_STOP_TIME?,19,37,30,23,6,2017,19,39,0,23,6,2017")
+        acu.set_and_read("START_STOP_TIME=,19,37,30,23,6,2017,19,39,0,23,6,2017",
+                         "19,37,30,23,6,2017,19,39,0,23,6,2017")
 
         # 11 START_STOP_TIME=
-        acu.expect("START_STOP_TIME=,20,30,0,11,8,2017,20,35,0,11,8,2017", "START_STOP_TIME=,OK")
-        acu.expect("START_STOP_TIME?", "START_STOP_TIME?,20,30,0,11,8,2017,20,35,0,11,8,2017")
+        acu.set_and_read("START_STOP_TIME=,20,30,0,11,8,2017,20,35,0,11,8,2017",
+                         "20,30,0,11,8,2017,20,35,0,11,8,2017")
 
         # 12 SETTINGS?  Fresh: all zero/off. (The document's example reply is checked below, once
         # the web source it reports, X11 = 1, has been set.) Angles have two decimals (docs/satrak.md).
         acu.expect("SETTINGS?", "SETTINGS?,0,0,0.00,0.00,0,0,0.00,0.00,0,0,0,0.00")
 
         # 13 SETTINGS=  ('?' leaves the minimum elevation as it is.)
-        acu.expect("SETTINGS=,1,100,1.0,2.0,60000,1,?,6.0,0,2,3.0", "SETTINGS=,OK")
-        acu.expect("SETTINGS?", "SETTINGS?,1,100,1.00,2.00,60000,1,0.00,6.00,0,2,0,3.00")
+        acu.set_and_read("SETTINGS=,1,100,1.0,2.0,60000,1,?,6.0,0,2,3.0",
+                         "1,100,1.00,2.00,60000,1,0.00,6.00,0,2,0,3.00")
 
         # 14 ANGLE_SETTINGS?  Fresh: no references given; count 0 reads 180.00 / 0.00 (the factory
         # rotor stops at South).
@@ -211,10 +227,8 @@ def walk_the_document():
         # 15 ANGLE_SETTINGS= (item 4): example 1, and the query then answers the document's
         # ANGLE_SETTINGS? example exactly. Example 2 takes the antenna's present counts (wherever
         # the examples above left it) and answers the angles as given.
-        acu.expect("ANGLE_SETTINGS=0,39049,160.0,36838,40.0", "ANGLE_SETTINGS=,OK")
-        acu.expect("ANGLE_SETTINGS?", "ANGLE_SETTINGS?,39049,160.0,36838,40.0")
-        acu.expect("ANGLE_SETTINGS=1,0,160.0,0,40.0", "ANGLE_SETTINGS=,OK")
-        acu.expect_like("ANGLE_SETTINGS?", r"ANGLE_SETTINGS\?,\d{1,5},160\.0,\d{1,5},40\.0")
+        acu.set_and_read("ANGLE_SETTINGS=0,39049,160.0,36838,40.0", "39049,160.0,36838,40.0")
+        acu.set_and_read_like("ANGLE_SETTINGS=1,0,160.0,0,40.0", r"\d{1,5},160\.0,\d{1,5},40\.0")
 
         # 16 GPS_DATA?  No receiver: the station's position (the factory station; four decimals),
         # valid 0, the RTC time with a two-digit year as the document's example.
@@ -238,8 +252,7 @@ def walk_the_document():
         acu.expect("GPS_SETTINGS?", "GPS_SETTINGS?,0,27.3910N,128.6570E")
 
         # 22 GPS_SETTINGS= (item 5): read back as written.
-        acu.expect("GPS_SETTINGS=,0,41.02N,29.17E", "GPS_SETTINGS=,OK")
-        acu.expect("GPS_SETTINGS?", "GPS_SETTINGS?,0,41.02N,29.17E")
+        acu.set_and_read("GPS_SETTINGS=,0,41.02N,29.17E", "0,41.02N,29.17E")
 
         # 23 SATELLITE?  (No reply in the document.) TRACK=,1 above chose the database's first.
         acu.expect_like("SATELLITE?", rf"SATELLITE\?,database\.tle,AO-07,0,7530,{N}")
@@ -250,28 +263,28 @@ def walk_the_document():
         acu.expect("SATELLITE=,iridium.txt,IRIDIUM 70 [+],1,1", "SATELLITE=,ERR,9")
         with open(os.path.join(acu.state, "tle", "iridium.txt"), "w") as f:
             f.write(IRIDIUM_TXT)
-        acu.expect("SATELLITE=,iridium.txt,IRIDIUM 70 [+],1,1", "SATELLITE=,OK")
-        acu.expect_like("SATELLITE?", rf"SATELLITE\?,iridium\.txt,IRIDIUM 70 \[\+\],1,25342,{N}")
+        acu.set_and_read_like("SATELLITE=,iridium.txt,IRIDIUM 70 [+],1,1",
+                              rf"iridium\.txt,IRIDIUM 70 \[\+\],1,25342,{N}")
 
         # 25 SATELLITE_HTTP?  (No reply in the document.) Defaults: no address, 1 day, continue.
         acu.expect("SATELLITE_HTTP?", "SATELLITE_HTTP?,,1,1")
 
         # 26 SATELLITE_HTTP= (the blank after "=," dropped; the file and satellite are SATELLITE='s).
-        acu.expect("SATELLITE_HTTP=, https://62bb0cca7bdbe01d529645e6.mockapi.io/Satellite,1,1,0", "SATELLITE_HTTP=,OK")
-        acu.expect("SATELLITE_HTTP?", "SATELLITE_HTTP?,https://62bb0cca7bdbe01d529645e6.mockapi.io/Satellite,1,1")
+        acu.set_and_read("SATELLITE_HTTP=, https://62bb0cca7bdbe01d529645e6.mockapi.io/Satellite,1,1,0",
+                         "https://62bb0cca7bdbe01d529645e6.mockapi.io/Satellite,1,1")
 
         # 12 again: the document's SETTINGS? example, now that the web source (X11 = 1) is set up;
         # trakbox's angles have two decimals.
-        acu.expect("SETTINGS=,1,100,1.0,2.0,60000,1,3.0,6.0,1,1,1,2.0", "SETTINGS=,OK")
-        acu.expect("SETTINGS?", "SETTINGS?,1,100,1.00,2.00,60000,1,3.00,6.00,1,1,1,2.00")
+        acu.set_and_read("SETTINGS=,1,100,1.0,2.0,60000,1,3.0,6.0,1,1,1,2.0",
+                         "1,100,1.00,2.00,60000,1,3.00,6.00,1,1,1,2.00")
 
         # 27 SATELLITE_FTP?  (No reply in the document.) Defaults: port 21, 1 day, continue.
         acu.expect("SATELLITE_FTP?", "SATELLITE_FTP?,,,,21,,,1,1")
 
         # 28 SATELLITE_FTP= (the six-field example: the file and satellite are SATELLITE='s). The
         # password reads back as '?' (the protocol has no authentication: docs/satrak.md).
-        acu.expect("SATELLITE_FTP=, 10.0.1.2,username,password,22,1,1", "SATELLITE_FTP=,OK")
-        acu.expect("SATELLITE_FTP?", "SATELLITE_FTP?,10.0.1.2,username,?,22,iridium.txt,IRIDIUM 70 [+],1,1")
+        acu.set_and_read("SATELLITE_FTP=, 10.0.1.2,username,password,22,1,1",
+                         "10.0.1.2,username,?,22,iridium.txt,IRIDIUM 70 [+],1,1")
 
         # 29 LOAD_IMAGE?  None loaded since start.
         acu.expect("LOAD_IMAGE?", "LOAD_IMAGE?,0")
@@ -288,8 +301,7 @@ def walk_the_document():
         acu.expect("REDUCTION?", "REDUCTION?,1,1")
 
         # 32 REDUCTION=
-        acu.expect("REDUCTION=,4000,4000", "REDUCTION=,OK")
-        acu.expect("REDUCTION?", "REDUCTION?,4000,4000")
+        acu.set_and_read("REDUCTION=,4000,4000", "4000,4000")
 
         # The response formats: positive without parameter, negative with the code.
         acu.expect("MOVE=,0,0", "MOVE=,OK")
@@ -306,12 +318,10 @@ def item4_angle_settings():
     they survive a restart (the state document)."""
     acu = Acu()
     try:
-        acu.expect("ANGLE_SETTINGS=0,39049,160.0,36838,40.0", "ANGLE_SETTINGS=,OK")
-        acu.expect("ANGLE_SETTINGS?", "ANGLE_SETTINGS?,39049,160.0,36838,40.0")
+        acu.set_and_read("ANGLE_SETTINGS=0,39049,160.0,36838,40.0", "39049,160.0,36838,40.0")
         # Auto: the antenna rests at the stops (ADC 0, 0): 16-bit counts 0, and the angles as given
         # (they read 159.94 / 39.98 before).
-        acu.expect("ANGLE_SETTINGS=1,0,160.0,0,40.0", "ANGLE_SETTINGS=,OK")
-        acu.expect("ANGLE_SETTINGS?", "ANGLE_SETTINGS?,0,160.0,0,40.0")
+        acu.set_and_read("ANGLE_SETTINGS=1,0,160.0,0,40.0", "0,160.0,0,40.0")
         acu.expect("ANGLE_SETTINGS=0,65536,160.0,0,40.0", "ANGLE_SETTINGS=,ERR,7")  # past 16 bits
         acu.expect("ANGLE_SETTINGS=0,39049,160.0,36838,40.0", "ANGLE_SETTINGS=,OK")
         acu.stop()
@@ -334,14 +344,12 @@ def item5_gps_settings():
     """Item 5: GPS_SETTINGS reads back in the form it was written, after a restart too."""
     acu = Acu()
     try:
-        acu.expect("GPS_SETTINGS=,0,41.02N,29.17E", "GPS_SETTINGS=,OK")
-        acu.expect("GPS_SETTINGS?", "GPS_SETTINGS?,0,41.02N,29.17E")
+        acu.set_and_read("GPS_SETTINGS=,0,41.02N,29.17E", "0,41.02N,29.17E")
         acu.stop()
         again = Acu(acu.state)
         try:
             again.expect("GPS_SETTINGS?", "GPS_SETTINGS?,0,41.02N,29.17E")
-            again.expect("GPS_SETTINGS=,0,?,-29.5", "GPS_SETTINGS=,OK")
-            again.expect("GPS_SETTINGS?", "GPS_SETTINGS?,0,41.02N,-29.5")
+            again.set_and_read("GPS_SETTINGS=,0,?,-29.5", "0,41.02N,-29.5")
             again.stop()
         finally:
             again.cleanup()
@@ -353,16 +361,14 @@ def item5_gps_settings():
 def item6_sources_on_a_fresh_unit():
     """Item 6: the document's SATELLITE_HTTP= and six-field SATELLITE_FTP= examples on a fresh unit
     (no SATELLITE= ever sent) use the station's database and its first satellite."""
-    for example, query, reply, x11 in (
-            ("SATELLITE_HTTP=, https://62bb0cca7bdbe01d529645e6.mockapi.io/Satellite,1,1,0", "SATELLITE_HTTP?",
-             "SATELLITE_HTTP?,https://62bb0cca7bdbe01d529645e6.mockapi.io/Satellite,1,1", "1"),
-            ("SATELLITE_FTP=, 10.0.1.2,username,password,22,1,1", "SATELLITE_FTP?",
-             "SATELLITE_FTP?,10.0.1.2,username,?,22,database.tle,AO-07,1,1", "2")):
+    for example, reads_back, x11 in (
+            ("SATELLITE_HTTP=, https://62bb0cca7bdbe01d529645e6.mockapi.io/Satellite,1,1,0",
+             "https://62bb0cca7bdbe01d529645e6.mockapi.io/Satellite,1,1", "1"),
+            ("SATELLITE_FTP=, 10.0.1.2,username,password,22,1,1",
+             "10.0.1.2,username,?,22,database.tle,AO-07,1,1", "2")):
         acu = Acu()
         try:
-            head = example.split(",")[0]
-            acu.expect(example, head + ",OK")
-            acu.expect(query, reply)
+            acu.set_and_read(example, reads_back)
             acu.expect_like("SATELLITE?", rf"SATELLITE\?,database\.tle,AO-07,1,7530,{N}")
             acu.expect_like("SETTINGS?", rf"SETTINGS\?,0,0,0\.00,0\.00,0,0,0\.00,0\.00,0,0,{x11},0\.00")
             # The database file holds every satellite of the shipped database (menu 3's list).

@@ -64,6 +64,20 @@ struct SimStation : tb::testing::StationFixture {
   }
 };
 
+// A protocol (netctl::RigctlProtocol, netctl::RotctlProtocol) on a fresh station: what most
+// protocol cases start from, as TEST_CASE_FIXTURE(ProtocolOn<...>, ...) with `st` and `p`.
+template <class Protocol>
+struct ProtocolOn {
+  SimStation st;
+  Protocol p{*st.station};
+};
+
+// The protocol's whole reply to one request line.
+template <class Protocol>
+std::string ask(Protocol& p, std::string_view line) {
+  return p.handle(line).text;
+}
+
 // Smallest angle between two azimuths.
 inline double az_diff(double a, double b) {
   double d = std::fmod(std::abs(a - b), 360.0);
@@ -121,6 +135,14 @@ class LoopThread {
   bool stopping_ = false;
   std::atomic<std::uint64_t> ticks_{0};
   std::thread thread_;
+};
+
+// A fresh station and the io_context its servers run on: where the server cases start, as
+// TEST_CASE_FIXTURE(ServerCase, ...) with `st` and `io`; the case makes its servers, then its
+// LoopThread (which stops first, before the servers go).
+struct ServerCase {
+  SimStation st;
+  boost::asio::io_context io;
 };
 
 // Runs a program to completion with a time limit, capturing stdout and stderr. Killed (by its

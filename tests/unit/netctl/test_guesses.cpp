@@ -174,9 +174,7 @@ TEST_CASE("server: a password sent again after logging in is checked, never logg
   CHECK(text.find("authenticated") != std::string::npos);
 }
 
-TEST_CASE("server: one address holds at most max_per_address connections; host mode names the reason it refuses") {
-  SimStation st;
-  boost::asio::io_context io;
+TEST_CASE_FIXTURE(ServerCase, "server: one address holds at most max_per_address connections; host mode names the reason it refuses") {
   netctl::ServerOptions o = netctl::HostServer::defaults();
   o.max_per_address = 2;
   o.loopback_exempt = false;  // loopback is exempt by default: the test's clients are all loopback
@@ -205,9 +203,7 @@ TEST_CASE("server: one address holds at most max_per_address connections; host m
 // Issue 33, defect 7: clients trickling a byte every few seconds kept every connection "heard from"
 // and locked a real client out for as long as they lasted. Silence now counts from the last whole
 // line, so the trickler that has completed no line for longest makes room.
-TEST_CASE("server: clients that trickle bytes without ever ending a line make room for a real client") {
-  SimStation st;
-  boost::asio::io_context io;
+TEST_CASE_FIXTURE(ServerCase, "server: clients that trickle bytes without ever ending a line make room for a real client") {
   netctl::ServerOptions o = netctl::RotctldServer::named("rotctld");
   o.max_clients = 2;
   o.evict_idle_after = ms(300);

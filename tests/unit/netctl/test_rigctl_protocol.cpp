@@ -9,15 +9,10 @@
 using namespace tb;
 using namespace nettest;
 using netctl::RigctlProtocol;
+using Rig = ProtocolOn<RigctlProtocol>;  // a fresh station and the protocol on it
 using radio::Link;
 
-namespace {
-std::string ask(RigctlProtocol& p, std::string_view line) { return p.handle(line).text; }
-}  // namespace
-
-TEST_CASE("rigctl: F / f and \\set_freq / \\get_freq tune the current VFO's link") {
-  SimStation st;
-  RigctlProtocol p(*st.station);
+TEST_CASE_FIXTURE(Rig, "rigctl: F / f and \\set_freq / \\get_freq tune the current VFO's link") {
   CHECK(ask(p, "f") == "0\n");  // nothing tuned yet
   CHECK(ask(p, "F 145950000") == "RPRT 0\n");
   CHECK(st.radio_sim->frequency(Link::downlink) == 145950000);
@@ -36,9 +31,7 @@ TEST_CASE("rigctl: F / f and \\set_freq / \\get_freq tune the current VFO's link
   CHECK(h.back() == radio::RadioEvent{radio::RadioEvent::Kind::frequency, Link::downlink, 145950000, radio::Mode::none, {}});
 }
 
-TEST_CASE("rigctl: V / v select the link: VFO A / Main / RX = downlink, VFO B / Sub / TX = uplink") {
-  SimStation st;
-  RigctlProtocol p(*st.station);
+TEST_CASE_FIXTURE(Rig, "rigctl: V / v select the link: VFO A / Main / RX = downlink, VFO B / Sub / TX = uplink") {
   CHECK(ask(p, "v") == "VFOA\n");
   CHECK(ask(p, "V VFOB") == "RPRT 0\n");
   CHECK(p.current_link() == Link::uplink);
@@ -70,9 +63,7 @@ TEST_CASE("rigctl: V / v select the link: VFO A / Main / RX = downlink, VFO B / 
   CHECK(ask(p, "V ?") == "VFOA VFOB Main Sub currVFO\nRPRT 0\n");
 }
 
-TEST_CASE("rigctl: I / i and X / x set the uplink (the split TX VFO) whatever VFO is current") {
-  SimStation st;
-  RigctlProtocol p(*st.station);
+TEST_CASE_FIXTURE(Rig, "rigctl: I / i and X / x set the uplink (the split TX VFO) whatever VFO is current") {
   CHECK(ask(p, "i") == "0\n");
   CHECK(ask(p, "I 435100000") == "RPRT 0\n");
   CHECK(st.radio_sim->frequency(Link::uplink) == 435100000);
@@ -93,9 +84,7 @@ TEST_CASE("rigctl: I / i and X / x set the uplink (the split TX VFO) whatever VF
   CHECK(!st.radio_sim->mode(Link::downlink));
 }
 
-TEST_CASE("rigctl: M / m set and read the current VFO's mode") {
-  SimStation st;
-  RigctlProtocol p(*st.station);
+TEST_CASE_FIXTURE(Rig, "rigctl: M / m set and read the current VFO's mode") {
   CHECK(ask(p, "m") == "RPRT -6\n");
   CHECK(ask(p, "M USB 2400") == "RPRT 0\n");
   CHECK(st.radio_sim->mode(Link::downlink) == radio::Mode::usb);
@@ -114,9 +103,7 @@ TEST_CASE("rigctl: M / m set and read the current VFO's mode") {
   CHECK(ask(p, "X ?") == "USB LSB CW FM\nRPRT 0\n");
 }
 
-TEST_CASE("rigctl: S / s split; T / t PTT") {
-  SimStation st;
-  RigctlProtocol p(*st.station);
+TEST_CASE_FIXTURE(Rig, "rigctl: S / s split; T / t PTT") {
   CHECK(ask(p, "s") == "0\nVFOB\n");
   CHECK(ask(p, "S 1 VFOB") == "RPRT 0\n");
   CHECK(p.split());
@@ -145,9 +132,7 @@ TEST_CASE("rigctl: S / s split; T / t PTT") {
   CHECK(st.radio_sim->history().empty());
 }
 
-TEST_CASE("rigctl: what Hamlib's NET client asks when it opens") {
-  SimStation st;
-  RigctlProtocol p(*st.station);
+TEST_CASE_FIXTURE(Rig, "rigctl: what Hamlib's NET client asks when it opens") {
   CHECK(ask(p, "\\chk_vfo") == "0\n");
   CHECK(ask(p, "+\\chk_vfo") == "chk_vfo:\nChkVFO: 0\nRPRT 0\n");
   CHECK(ask(p, "\\get_powerstat") == "1\n");
@@ -170,9 +155,7 @@ TEST_CASE("rigctl: what Hamlib's NET client asks when it opens") {
   CHECK(q.text == "RPRT 0\n");  // netrigctl_close reads it
 }
 
-TEST_CASE("rigctl: malformed requests are answered RPRT -1 / -8 / -11 and change nothing") {
-  SimStation st;
-  RigctlProtocol p(*st.station);
+TEST_CASE_FIXTURE(Rig, "rigctl: malformed requests are answered RPRT -1 / -8 / -11 and change nothing") {
   REQUIRE(ask(p, "F 145950000") == "RPRT 0\n");
   REQUIRE(ask(p, "I 435100000") == "RPRT 0\n");
   REQUIRE(ask(p, "M USB 2400") == "RPRT 0\n");
@@ -241,9 +224,7 @@ TEST_CASE("rigctl: a link trakbox's tracker is tuning is refused (RPRT -9), the 
   CHECK(st.radio_sim->frequency(Link::downlink) == 145950000);
 }
 
-TEST_CASE("rigctl: a radio in fault refuses sets (RPRT -6) and reads back what it last took") {
-  SimStation st;
-  RigctlProtocol p(*st.station);
+TEST_CASE_FIXTURE(Rig, "rigctl: a radio in fault refuses sets (RPRT -6) and reads back what it last took") {
   REQUIRE(ask(p, "F 145950000") == "RPRT 0\n");
   st.radio_sim->simulate_fault("interface not echoing");
   CHECK(ask(p, "F 145800000") == "RPRT -6\n");

@@ -11,10 +11,10 @@
 using namespace tb;
 using namespace nettest;
 using netctl::RotctlProtocol;
+using Rot = ProtocolOn<RotctlProtocol>;  // a fresh station and the protocol on it
 
 namespace {
 
-std::string ask(RotctlProtocol& p, std::string_view line) { return p.handle(line).text; }
 
 // The two numbers of a Default Protocol get_pos reply.
 std::pair<double, double> pos_of(const std::string& reply) {
@@ -37,9 +37,7 @@ Snapshot snap(SimStation& st) {
 
 }  // namespace
 
-TEST_CASE("rotctl: P / \\set_pos points the antenna through trakbox's model; p / \\get_pos reads it back") {
-  SimStation st;
-  RotctlProtocol p(*st.station);
+TEST_CASE_FIXTURE(Rot, "rotctl: P / \\set_pos points the antenna through trakbox's model; p / \\get_pos reads it back") {
 
   CHECK(ask(p, "P 120 30") == "RPRT 0\n");
   REQUIRE(st.settle());
@@ -66,9 +64,7 @@ TEST_CASE("rotctl: P / \\set_pos points the antenna through trakbox's model; p /
   CHECK(az_diff(st.truth().az, 270.0) < 1.1);
 }
 
-TEST_CASE("rotctl: a position inside the dead band does not move the antenna") {
-  SimStation st;
-  RotctlProtocol p(*st.station);
+TEST_CASE_FIXTURE(Rot, "rotctl: a position inside the dead band does not move the antenna") {
   REQUIRE(ask(p, "P 100 20") == "RPRT 0\n");
   REQUIRE(st.settle());
   const auto before = st.rotator_sim->true_position();
@@ -84,9 +80,7 @@ TEST_CASE("rotctl: a position inside the dead band does not move the antenna") {
   CHECK(std::abs(after.el - before.el) < 0.01);
 }
 
-TEST_CASE("rotctl: Extended Response Protocol with '+' and other separators") {
-  SimStation st;
-  RotctlProtocol p(*st.station);
+TEST_CASE_FIXTURE(Rot, "rotctl: Extended Response Protocol with '+' and other separators") {
   CHECK(ask(p, "+P 90 45") == "set_pos: 90 45\nRPRT 0\n");
   CHECK(ask(p, "+\\set_pos 90 45") == "set_pos: 90 45\nRPRT 0\n");
   REQUIRE(st.settle());
@@ -114,9 +108,7 @@ TEST_CASE("rotctl: Extended Response Protocol with '+' and other separators") {
   CHECK(ask(p, "+\\get_info").rfind("get_info:\nInfo: trakbox rotator (simulated)\nRPRT 0\n", 0) == 0);
 }
 
-TEST_CASE("rotctl: malformed requests are answered RPRT -1 / -8 / -11 and change nothing") {
-  SimStation st;
-  RotctlProtocol p(*st.station);
+TEST_CASE_FIXTURE(Rot, "rotctl: malformed requests are answered RPRT -1 / -8 / -11 and change nothing") {
   REQUIRE(ask(p, "P 50 10") == "RPRT 0\n");
   st.step();
   const Snapshot before = snap(st);
@@ -263,9 +255,7 @@ TEST_CASE("rotctl: K / \\park goes to the parking position, refused when parking
   CHECK(st.station->rotator().status().target->el == doctest::Approx(10.0));
 }
 
-TEST_CASE("rotctl: M / \\move drives an axis at the rotator's rate until S") {
-  SimStation st;
-  RotctlProtocol p(*st.station);
+TEST_CASE_FIXTURE(Rot, "rotctl: M / \\move drives an axis at the rotator's rate until S") {
   REQUIRE(ask(p, "P 100 20") == "RPRT 0\n");
   REQUIRE(st.settle());
   const auto start = st.truth();
@@ -297,9 +287,7 @@ TEST_CASE("rotctl: M / \\move drives an axis at the rotator's rate until S") {
   CHECK(ask(p, "S") == "RPRT 0\n");
 }
 
-TEST_CASE("rotctl: a rotator that stopped answering: P, K, M and p answer RPRT -6") {
-  SimStation st;
-  RotctlProtocol p(*st.station);
+TEST_CASE_FIXTURE(Rot, "rotctl: a rotator that stopped answering: P, K, M and p answer RPRT -6") {
   st.rotator_sim->set_fault("ADC not answering");
   st.step();
   CHECK(ask(p, "p") == "RPRT -6\n");
@@ -312,9 +300,7 @@ TEST_CASE("rotctl: a rotator that stopped answering: P, K, M and p answer RPRT -
   CHECK(lines(ask(p, "p")).size() == 2);
 }
 
-TEST_CASE("rotctl: _ / \\get_info, \\dump_state, 1 / \\dump_caps, q / Q") {
-  SimStation st;
-  RotctlProtocol p(*st.station);
+TEST_CASE_FIXTURE(Rot, "rotctl: _ / \\get_info, \\dump_state, 1 / \\dump_caps, q / Q") {
   CHECK(ask(p, "_") == "trakbox rotator (simulated)\n");
   CHECK(ask(p, "\\get_info") == "trakbox rotator (simulated)\n");
   CHECK(ask(p, "\\dump_state") ==

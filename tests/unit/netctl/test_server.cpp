@@ -39,11 +39,9 @@ bool eventually(LoopThread& lt, F cond, std::chrono::milliseconds limit = 30s) {
 
 }  // namespace
 
-TEST_CASE("server: Hamlib's rotctl -m 2 moves and reads the simulated antenna" * doctest::skip(tb::testing::skip_without({"rotctl"}))) {
+TEST_CASE_FIXTURE(ServerCase, "server: Hamlib's rotctl -m 2 moves and reads the simulated antenna" * doctest::skip(tb::testing::skip_without({"rotctl"}))) {
   tb::testing::require_tools({"rotctl"});
   const auto rotctl = tb::testing::find_tool("rotctl");
-  SimStation st;
-  boost::asio::io_context io;
   netctl::RotctldServer server(io, 0, *st.station);
   REQUIRE(server.port() != 0);
   LoopThread lt(io, st);
@@ -80,11 +78,9 @@ TEST_CASE("server: Hamlib's rotctl -m 2 moves and reads the simulated antenna" *
   CHECK(lt.ticks() > 10);  // the station ticked all along
 }
 
-TEST_CASE("server: Hamlib's rigctl -m 2 tunes the downlink (F / f) and the uplink (I / i)" * doctest::skip(tb::testing::skip_without({"rigctl"}))) {
+TEST_CASE_FIXTURE(ServerCase, "server: Hamlib's rigctl -m 2 tunes the downlink (F / f) and the uplink (I / i)" * doctest::skip(tb::testing::skip_without({"rigctl"}))) {
   tb::testing::require_tools({"rigctl"});
   const auto rigctl = tb::testing::find_tool("rigctl");
-  SimStation st;
-  boost::asio::io_context io;
   netctl::RigctldServer server(io, 0, *st.station);
   LoopThread lt(io, st);
   const std::string where = port_arg(server.port());
@@ -147,9 +143,7 @@ TEST_CASE("server: Hamlib's rigctl -m 2 tunes the downlink (F / f) and the uplin
   lt.stop();
 }
 
-TEST_CASE("server: a flooding, a non-reading and a silent client never stall the loop or the others") {
-  SimStation st;
-  boost::asio::io_context io;
+TEST_CASE_FIXTURE(ServerCase, "server: a flooding, a non-reading and a silent client never stall the loop or the others") {
   netctl::RotctldServer rot(io, 0, *st.station);
   netctl::RigctldServer rig(io, 0, *st.station);
   LoopThread lt(io, st);
@@ -233,9 +227,7 @@ TEST_CASE("server: a flooding, a non-reading and a silent client never stall the
   lt.stop();
 }
 
-TEST_CASE("server: q closes after the reply; a half-closed client still gets its answers") {
-  SimStation st;
-  boost::asio::io_context io;
+TEST_CASE_FIXTURE(ServerCase, "server: q closes after the reply; a half-closed client still gets its answers") {
   netctl::RotctldServer rot(io, 0, *st.station);
   LoopThread lt(io, st);
   {
@@ -257,9 +249,7 @@ TEST_CASE("server: q closes after the reply; a half-closed client still gets its
   lt.stop();
 }
 
-TEST_CASE("server: connections beyond max_clients are closed; close() drops everyone; port 0 and bind errors") {
-  SimStation st;
-  boost::asio::io_context io;
+TEST_CASE_FIXTURE(ServerCase, "server: connections beyond max_clients are closed; close() drops everyone; port 0 and bind errors") {
   netctl::ServerOptions opt = netctl::RotctldServer::named("rotctld");
   opt.max_clients = 2;
   netctl::RotctldServer rot(io, 0, *st.station, opt);
@@ -299,9 +289,7 @@ TEST_CASE("server: connections beyond max_clients are closed; close() drops ever
   lt.stop();
 }
 
-TEST_CASE("server: when every connection is taken, the one silent longest makes room (issue 14, defect 2)") {
-  SimStation st;
-  boost::asio::io_context io;
+TEST_CASE_FIXTURE(ServerCase, "server: when every connection is taken, the one silent longest makes room (issue 14, defect 2)") {
   netctl::ServerOptions opt = netctl::RotctldServer::named("rotctld");
   opt.max_clients = 4;
   opt.evict_idle_after = 0ms;  // any silence is long enough: the order of last traffic decides
@@ -328,9 +316,7 @@ TEST_CASE("server: when every connection is taken, the one silent longest makes 
   CHECK(poller.ask("_") == "trakbox rotator (simulated)\n");
 }
 
-TEST_CASE("host server: the banner and prompt, menu 7's commands over TCP, CR / LF / CR LF lines, Q closes") {
-  SimStation st;
-  boost::asio::io_context io;
+TEST_CASE_FIXTURE(ServerCase, "host server: the banner and prompt, menu 7's commands over TCP, CR / LF / CR LF lines, Q closes") {
   netctl::HostServer host(io, 0, *st.station);
   LoopThread lt(io, st);
   const std::string prompt = "TrakBox>>";
