@@ -116,21 +116,26 @@ class Relay:
             return [c for _, c in self.commands if c.startswith(prefix)]
 
 
-def ask(port, command):
-    """One command straight to rigctld (its own protocol): the first reply line, or None."""
-    try:
-        with socket.create_connection(("127.0.0.1", port), timeout=2) as s:
-            s.sendall(command.encode() + b"\n")
-            data = b""
-            while b"\n" not in data:
-                chunk = s.recv(256)
-                if not chunk:
-                    break
-                data += chunk
-            line = data.split(b"\n")[0].decode()
-            return int(line) if re.fullmatch(r"\d+", line) else None
-    except OSError:
-        return None
+def ask(port, command, tries=3):
+    """One command straight to rigctld (its own protocol): the first reply line as a number, or None
+    when none came in `tries` attempts (a loaded machine may let one connection time out)."""
+    for _ in range(tries):
+        try:
+            with socket.create_connection(("127.0.0.1", port), timeout=2) as s:
+                s.sendall(command.encode() + b"\n")
+                data = b""
+                while b"\n" not in data:
+                    chunk = s.recv(256)
+                    if not chunk:
+                        break
+                    data += chunk
+                line = data.split(b"\n")[0].decode()
+                if re.fullmatch(r"\d+", line):
+                    return int(line)
+        except OSError:
+            pass
+        time.sleep(0.1)
+    return None
 
 
 def near(port, command, target, within):
@@ -264,7 +269,7 @@ def rs44_satellite_mode(procs, rig_port):
     with session(procs, rig_port, start, 12) as (tb, relay, state):
         d0 = poll("the downlink on Sub", lambda: near(rig_port, "f Sub", 435_640_000, 12_000), 30)
         poll("the uplink on Main", lambda: near(rig_port, "f Main", 145_965_000, 5_000), 30)
-        check(ask(rig_port, "u Main SATMODE") == 1, "satellite mode is on")
+        poll("satellite mode on", lambda: ask(rig_port, "u Main SATMODE") == 1, 10)
         sat_on = relay.sent("U Main SATMODE 1")
         first_freq = next(i for i, c in enumerate(relay.sent("")) if c.startswith("F "))
         check(sat_on and relay.sent("").index(sat_on[0]) < first_freq, "satellite mode before the first frequency")
