@@ -58,11 +58,18 @@ std::optional<std::string> check_refresh_interval(double hours) {
   return std::nullopt;
 }
 
+std::optional<std::int64_t> seconds_until_refresh(const RefreshSettings& s, std::int64_t now_unix) {
+  if (s.sources.empty()) return std::nullopt;
+  if (s.last_attempt_unix <= 0 || now_unix < s.last_attempt_unix) return 0;  // never, or the clock went back
+  double hours = std::max(s.interval_hours, kRefreshMinHours);
+  if (s.last_attempt_failed) hours = std::min(hours, kRefreshRetryHours);
+  const auto due = s.last_attempt_unix + static_cast<std::int64_t>(hours * 3600.0);
+  return std::max<std::int64_t>(0, due - now_unix);
+}
+
 bool refresh_due(const RefreshSettings& s, std::int64_t now_unix) {
-  if (s.sources.empty()) return false;
-  if (s.last_attempt_unix <= 0 || now_unix < s.last_attempt_unix) return true;  // never, or the clock went back
-  const double interval = std::max(s.interval_hours, kRefreshMinHours) * 3600.0;
-  return static_cast<double>(now_unix - s.last_attempt_unix) >= interval;
+  const auto left = seconds_until_refresh(s, now_unix);
+  return left && *left == 0;
 }
 
 std::string RefreshReport::summary() const {
@@ -117,7 +124,10 @@ json to_json(const RefreshSettings& s) {
   json sources = json::array();
   for (const auto& src : s.sources)
     sources.push_back({{"url", src.url}, {"etag", src.etag}, {"last_modified", src.last_modified}});
-  return {{"sources", sources}, {"interval_hours", s.interval_hours}, {"last_attempt_unix", s.last_attempt_unix}};
+  return {{"sources", sources},
+          {"interval_hours", s.interval_hours},
+          {"last_attempt_unix", s.last_attempt_unix},
+          {"last_attempt_failed", s.last_attempt_failed}};
 }
 
 RefreshSettings refresh_settings_from_json(const json& j, const std::string& w) {
@@ -125,6 +135,7 @@ RefreshSettings refresh_settings_from_json(const json& j, const std::string& w) 
   RefreshSettings s;
   s.interval_hours = num(j, w, "interval_hours", kRefreshMinHours, kRefreshMaxHours);
   s.last_attempt_unix = integer(j, w, "last_attempt_unix", 0, 1LL << 40);
+  if (j.contains("last_attempt_failed")) s.last_attempt_failed = boolean(j, w, "last_attempt_failed");   // (since 2026-11)
   const json& list = field(j, w, "sources");
   if (!list.is_array()) bad(path(w, "sources"), "expected an array");
   if (list.size() > kRefreshMaxSources)

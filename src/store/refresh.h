@@ -18,6 +18,7 @@ namespace tb::store {
 inline constexpr double kRefreshMinHours = 2.0;       // CelesTrak's data changes at most every 2 h
 inline constexpr double kRefreshDefaultHours = 12.0;  // "a few times a day"
 inline constexpr double kRefreshMaxHours = 24.0 * 30;
+inline constexpr double kRefreshRetryHours = 0.5;     // after a failed attempt (offline at start)
 inline constexpr std::size_t kRefreshMaxSources = 8;
 inline constexpr std::size_t kRefreshMaxUrl = 400;
 // A fresh state's refresh source (issue 30): CelesTrak's amateur group as OMM JSON, which also
@@ -38,6 +39,9 @@ struct RefreshSettings {
   // Wall time (system clock, seconds since 1970) of the last attempt, kept across restarts so
   // that a restarting service does not ask the servers more often than the interval; 0 = never.
   std::int64_t last_attempt_unix = 0;
+  // A source of the last attempt failed: the next comes after kRefreshRetryHours (when that is
+  // sooner than the interval), so a station started offline does not wait the whole interval.
+  bool last_attempt_failed = false;
 };
 
 // Adds a source (when new); the reason when it cannot be taken: not a URL or absolute path, too
@@ -48,6 +52,8 @@ std::optional<std::string> check_refresh_interval(double hours);
 
 // When the next scheduled refresh is due, from the last attempt (wall time, unix seconds).
 bool refresh_due(const RefreshSettings& s, std::int64_t now_unix);
+// Seconds until it is due (0 when due now or never attempted); nothing without a source.
+std::optional<std::int64_t> seconds_until_refresh(const RefreshSettings& s, std::int64_t now_unix);
 
 struct RefreshChange {
   std::string name;           // the database's name (the source may call it otherwise)

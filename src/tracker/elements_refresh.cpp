@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include "download/download.h"
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -66,6 +67,14 @@ std::string refresh_status_text(const RefreshState& s) {
   std::snprintf(old, sizeof old, "ELEMENTS %.0f DAYS OLD", *s.stale_days);
   if (!s.has_sources) return old + std::string(", NO REFRESH SOURCE") + todo;
   if (s.running) return old + std::string(", REFRESHING");
+  if (!s.attempted && s.next_in_hours) {
+    char next[64];
+    if (*s.next_in_hours < 1.0)
+      std::snprintf(next, sizeof next, ", NEXT REFRESH IN %.0f MIN", std::max(1.0, std::ceil(*s.next_in_hours * 60.0)));
+    else
+      std::snprintf(next, sizeof next, ", NEXT REFRESH IN %.0f H", std::ceil(*s.next_in_hours));
+    return old + std::string(next) + todo;
+  }
   if (!s.attempted) return old + std::string(", NO REFRESH SINCE START") + todo;
   if (s.failed) return old + std::string(", REFRESH FAILED") + todo;
   return old + std::string(", SOURCE HAS NO NEWER") + todo;
@@ -85,6 +94,10 @@ std::string ElementsRefresh::status_word(orbit::UtcTime now) const {
     if (!youngest || std::abs(age.days) < std::abs(*youngest)) youngest = age.days;
   }
   st.stale_days = youngest;
+  if (!st.attempted && !st.running) {
+    const auto left_s = store::seconds_until_refresh(model_.refresh, wall_now());
+    if (left_s && *left_s > 0) st.next_in_hours = static_cast<double>(*left_s) / 3600.0;
+  }
   return refresh_status_text(st);
 }
 
@@ -158,6 +171,7 @@ void ElementsRefresh::complete() {
   for (const auto& f : failures) spdlog::warn("elements: refresh failed: {}; the last good sets are kept", f);
   last_updated_ = static_cast<int>(report.updated.size());
   last_failed_ = !failures.empty();
+  model_.refresh.last_attempt_failed = last_failed_;   // (saved by changed_(): a retry comes sooner)
   last_result_ = report.summary();
   if (not_modified) last_result_ += ", " + std::to_string(not_modified) + " source(s) not modified";
   if (!failures.empty()) last_result_ += "; " + std::to_string(failures.size()) + " source(s) failed: " + failures.front();

@@ -39,6 +39,9 @@ struct RefreshState {
   bool failed = false;     // ... and a source of it failed
   int updated = 0;
   std::optional<double> stale_days;  // the database's youngest set, when every set is too old
+  // Not attempted since the start because the last one (before a restart) was within the
+  // interval: the hours until the next one (a restarting station does not ask the servers sooner).
+  std::optional<double> next_in_hours;
 };
 std::string refresh_status_text(const RefreshState& s);
 

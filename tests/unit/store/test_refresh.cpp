@@ -82,6 +82,31 @@ TEST_CASE("The schedule: never attempted, the interval, never under two hours, a
   CHECK_FALSE(refresh_due(s, 1'800'000'000 + 2 * 3600 - 1));
   CHECK(refresh_due(s, 1'800'000'000 + 2 * 3600));
   CHECK(refresh_due(s, 1'700'000'000));  // the wall clock went back: try again
+  // A failed attempt (a station started offline): again after half an hour, not the interval.
+  s.interval_hours = 12.0;
+  s.last_attempt_failed = true;
+  CHECK(*seconds_until_refresh(s, 1'800'000'000 + 60) == 30 * 60 - 60);
+  CHECK_FALSE(refresh_due(s, 1'800'000'000 + 30 * 60 - 1));
+  CHECK(refresh_due(s, 1'800'000'000 + 30 * 60));
+  s.last_attempt_failed = false;
+  CHECK(*seconds_until_refresh(s, 1'800'000'000 + 3600) == 11 * 3600);
+  CHECK(seconds_until_refresh(RefreshSettings{}, 1'800'000'000) == std::nullopt);
+}
+
+TEST_CASE("Refresh settings in the state file: the failed flag round-trips, and a file without it loads") {
+  RefreshSettings s;
+  REQUIRE_FALSE(add_refresh_source(s, "/srv/elements/amateur.tle"));
+  s.last_attempt_unix = 1'800'000'000;
+  s.last_attempt_failed = true;
+  nlohmann::json j = to_json(s);
+  CHECK(j["last_attempt_failed"] == true);
+  CHECK(refresh_settings_from_json(j, "refresh").last_attempt_failed);
+  j.erase("last_attempt_failed");   // written before the flag existed
+  const RefreshSettings old = refresh_settings_from_json(j, "refresh");
+  CHECK_FALSE(old.last_attempt_failed);
+  CHECK(old.last_attempt_unix == 1'800'000'000);
+  j["last_attempt_failed"] = "yes";
+  CHECK_THROWS(refresh_settings_from_json(j, "refresh"));
 }
 
 TEST_CASE("Sources an operator may name, and the reasons for the others") {

@@ -28,6 +28,12 @@ TEST_CASE("refresh status: old elements say their age and the refresh's state") 
   CHECK(refresh_status_text(s) == "ELEMENTS 190 DAYS OLD, NO REFRESH SOURCE, SEE MENU 3-5");
   s.has_sources = true;
   CHECK(refresh_status_text(s) == "ELEMENTS 190 DAYS OLD, NO REFRESH SINCE START, SEE MENU 3-5");
+  // Restarted within the interval of the last attempt: when the next one comes (whole hours, up).
+  s.next_in_hours = 8.2;
+  CHECK(refresh_status_text(s) == "ELEMENTS 190 DAYS OLD, NEXT REFRESH IN 9 H, SEE MENU 3-5");
+  s.next_in_hours = 0.41;   // after a failed attempt: half an hour at most
+  CHECK(refresh_status_text(s) == "ELEMENTS 190 DAYS OLD, NEXT REFRESH IN 25 MIN, SEE MENU 3-5");
+  s.next_in_hours.reset();
   s.running = true;
   CHECK(refresh_status_text(s) == "ELEMENTS 190 DAYS OLD, REFRESHING");
   s.running = false;
