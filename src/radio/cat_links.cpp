@@ -279,10 +279,13 @@ void KenwoodLink::open() {
 }
 
 void KenwoodLink::close() noexcept {
-  if (port_.is_open() && found_) {
+  if (port_.is_open()) {
     try {   // leave the radio as it was found: the tone off, SA as it was (SatPC32 at exit: SA0010000;)
-      if (tone_on_) on_uplink_band([&] { send(kenwood::tone(false)); });
-      send(kenwood::set_satellite(*found_));
+      if (tone_on_) {
+        if (opt_.one_link) send(kenwood::tone(false));
+        else on_uplink_band([&] { send(kenwood::tone(false)); });
+      }
+      if (found_) send(kenwood::set_satellite(*found_));
     } catch (const std::exception&) {
     }
   }
