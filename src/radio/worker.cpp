@@ -91,6 +91,7 @@ bool WorkerRadio::read_dial(Lock& lock, Link link, Hz guard) {
     return false;
   }
   lock.lock();
+  read_at_[i] = std::chrono::steady_clock::now();
   (link == Link::downlink ? status_.downlink_read_hz : status_.uplink_read_hz) = read;
   std::optional<Hz>& accepted = link == Link::downlink ? status_.downlink_hz : status_.uplink_hz;
   if (guard <= 0 || !accepted || !dial_turned(*read, *accepted, guard)) return false;
@@ -204,6 +205,7 @@ void WorkerRadio::check_link(Lock& lock) {
   // Dial follow: the guarded links that can be read, while nothing waits to be sent to them.
   for (Link l : {Link::downlink, Link::uplink}) {
     if (guard_[link_index(l)] <= 0 || turned_[link_index(l)] || !link_->can_read(l)) continue;
+    if (now - read_at_[link_index(l)] < timing_.check_every) continue;   // read lately (before a write)
     if (std::any_of(queue_.begin(), queue_.end(), [&](const Job& j) { return j.kind == Job::Kind::frequency && j.link == l; }))
       continue;
     read_dial(lock, l, guard_[link_index(l)]);

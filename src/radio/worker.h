@@ -116,6 +116,9 @@ class WorkerRadio final : public RadioDriver {
   RadioStatus status_;
   Hz guard_[2] = {0, 0};             // the tolerance of the last guarded frequency per link
   std::optional<Hz> turned_[2];      // a turn of the dial not yet taken
+  // When each link was last read: an idle read comes only when none was made for check_every
+  // (a guarded write reads first, so a link written each second is not read twice as often).
+  std::chrono::steady_clock::time_point read_at_[2]{};
   // Worker-thread state.
   bool open_ = false;
   bool want_open_ = true;            // opened at start, reopened after a loss, with or without jobs
