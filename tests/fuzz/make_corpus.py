@@ -158,6 +158,11 @@ Checksum:           313
     put("cli", "devices", "--rotator\nrotctld:[::1]:4533\n--radio\nicom:/dev/ttyUSB0\n--baud\n9600\n--standalone\n3\n")
     put("cli", "specs", "satrak:localhost:4001\nrigctld:localhost:4532\nhamlib:603:/dev/ttyUSB0:9600\nsimulated\n-77.85,166.67,10\n[::1]:4001\n")
 
+    # --- attach_frames: first byte = the size of each read; then what a client sends.
+    put("attach_frames", "keys", b"\x05" + b"1\r4\rVK2XYZ\r\x1b[A\x1bOP\x7f\x14\x1d")
+    put("attach_frames", "window_sizes", b"\x03" + b"ab\xffW\x00\x28\x00\x64cd\xff\xffe\xffW\xff\xff\x00\x00")
+    put("attach_frames", "escape_cut", b"\x00" + b"\xffW\x00\x18\x00P\xff\xffx\xffQz\xff")
+
     # --- state: first byte even: JSON data; odd: a whole state file.
     trakbox = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build", "trakbox")
     if os.path.exists(trakbox):
