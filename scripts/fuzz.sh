@@ -22,7 +22,7 @@ build=${FUZZ_BUILD:-build-fuzz}
 # Longest input per target: enough for the seeds and a session, small enough to mutate quickly.
 declare -A max_len=(
   [elements]=4096 [freqmode]=2048 [station_file]=1024 [state]=32768 [satrak_frame]=2048
-  [satrak_unit]=2048 [host]=2048 [rotctl]=1024 [rigctl]=1024 [cat]=1024 [menus]=2048 [cli]=512 [omm]=8192 [satnogs]=8192
+  [satrak_unit]=2048 [host]=2048 [rotctl]=1024 [rigctl]=1024 [cat]=1024 [menus]=2048 [cli]=512 [omm]=8192 [satnogs]=8192 [attach_frames]=1024
 )
 if [ $# -gt 0 ]; then targets=("$@"); else targets=("${!max_len[@]}"); fi
 IFS=$'\n' targets=($(sort <<<"${targets[*]}")); unset IFS
