@@ -49,7 +49,11 @@ RadioSpecParse parse_radio_spec(std::string_view text, std::string_view option =
 
 struct DriverTiming {
   WorkerTiming worker;
+  // Between the bytes of a 5-byte Yaesu command: Hamlib's write_delay, 50 ms for the FT-736 and
+  // FT-847 (ft847.h), 1 ms for the FT-817/818 (ft817.h). A slow line widens the moment in which
+  // a turn of the dial is overwritten (docs/radio.md, dial follow).
   std::chrono::milliseconds yaesu_byte_gap{50};
+  std::chrono::milliseconds ft817_byte_gap{1};
   // The CI-V waits (tests on a loaded machine lengthen them).
   std::chrono::milliseconds icom_echo_margin{250};
   std::chrono::milliseconds icom_reply_timeout{300};

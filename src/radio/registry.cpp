@@ -74,7 +74,7 @@ MakeRadio make_ft8xx(const RadioModel& m, const RadioSpec& spec, const RadioConf
   Ft8xxOptions o;
   o.model = m.protocol == Protocol::ft847 ? Ft8xxOptions::Model::ft847 : Ft8xxOptions::Model::ft817;
   o.label = std::string(m.label.substr(m.label.find(' ') + 1));
-  o.byte_gap = t.yaesu_byte_gap;
+  o.byte_gap = o.model == Ft8xxOptions::Model::ft817 ? t.ft817_byte_gap : t.yaesu_byte_gap;
   o.baud = spec.baud > 0 ? spec.baud : (m.form == SpecForm::device ? config.cat_baud : m.baud);
   o.satellite_mode = role == RadioRole::both;   // one of two radios: the main VFO alone
   return {make_ft8xx_radio(spec.device, o, t.worker), {}};

@@ -1,5 +1,6 @@
 """A Yaesu FT-847 on a pseudo-terminal, written from Hamlib's ft847.c and the operating manual's CAT
-table (docs/radio.md): a helper of the integration tests, not a test.
+table (docs/radio.md), or with ft817=True an FT-817/818 (Hamlib's ft817.c: its one VFO, no CAT on or
+off, the tone as 4 BCD digits twice): a helper of the integration tests, not a test.
 
 Five-byte commands, parameters first, the opcode last; nothing is acknowledged. 00 CAT on, 80 CAT
 off, 4E / 8E satellite mode on / off. The opcode's high nibble is the VFO (0 main, 1 SAT RX, 2 SAT
@@ -25,8 +26,8 @@ def from_bcd_be(b):
 
 
 class FT847(PtyRadio):
-    def __init__(self, path):
-        self.cat = False
+    def __init__(self, path, ft817=False):
+        self.cat = ft817          # the FT-817 takes CAT commands without being switched on
         self.satellite = False
         self.hz = {"main": 145_000_000, "rx": 435_000_000, "tx": 145_900_000}
         self.mode = {}

@@ -103,27 +103,33 @@ def leave(tb, state):
         return f.read()
 
 
-def track_with(make_rig, model, start_at, sat_key, test):
+def track_with(make_rig, model, start_at, sat_key, test, uplink_model=None):
     """trakbox tracking one entry of the shipped list (single tracking, from start_at, --clock) with
-    `--radio MODEL:PTY` and make_rig(path) on the other end: test(rig, trakbox, state_dir, clock_now)."""
-    pair = SerialPair()
+    `--radio MODEL:PTY` and make_rig(path) on the other end: test(rig, trakbox, state_dir, clock_now).
+    With uplink_model, a second radio carries the uplink (`--uplink-radio MODEL:PTY2`, make_rig on
+    its pty too) and test gets the pair (downlink rig, uplink rig)."""
+    pairs = [SerialPair() for _ in range(2 if uplink_model else 1)]
     state = tempfile.mkdtemp(prefix=f"trakbox-{model}-")
     procs = []
-    rig = make_rig(pair.terminal_side)
+    rigs = [make_rig(p.terminal_side) for p in pairs]
     try:
         t0 = time.time()
+        args = ["--radio", f"{model}:{pairs[0].trakbox_side}"]
+        if uplink_model:
+            args += ["--uplink-radio", f"{uplink_model}:{pairs[1].trakbox_side}"]
         tb = subprocess.Popen([BIN, "--state", state, "--line", "--satrak-port", "0",
-                               "--clock", start_at.strftime("%Y-%m-%dT%H:%M:%SZ"),
-                               "--radio", f"{model}:{pair.trakbox_side}"],
+                               "--clock", start_at.strftime("%Y-%m-%dT%H:%M:%SZ"), *args],
                               stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
         procs.append(tb)
         tb.stdin.write(b"S\r" + sat_key + b"\r")
         tb.stdin.flush()
-        test(rig, tb, state, lambda: start_at + timedelta(seconds=time.time() - t0))
+        test(tuple(rigs) if uplink_model else rigs[0], tb, state, lambda: start_at + timedelta(seconds=time.time() - t0))
     finally:
         reap(procs)
-        rig.close()
-        pair.close()
+        for rig in rigs:
+            rig.close()
+        for p in pairs:
+            p.close()
         shutil.rmtree(state, ignore_errors=True)
 
 
