@@ -11,7 +11,7 @@ import termios
 import threading
 import time
 import tty
-from datetime import timedelta
+from datetime import datetime, timedelta, timezone
 
 from _tbharness import BIN, SerialPair, check, poll as poll_every, reap, satellite_track
 
@@ -31,6 +31,11 @@ def expected(clock_at, sat, down_spot, up_spot):
     rr = -row["doppler_hz"] * C / down_spot
     return down_spot * (1 - rr / C), up_spot / (1 - rr / C)
 
+
+# The passes the tests track: when trakbox's clock starts and the satellite's number in the shipped
+# tracking list. RS-44 from a minute before its culmination, SO-50 near its culmination.
+RS44_PASS = (datetime(2026, 5, 21, 10, 57, 0, tzinfo=timezone.utc), b"12")
+SO50_PASS = (datetime(2026, 5, 21, 14, 10, 0, tzinfo=timezone.utc), b"5")
 
 # The transponder spots the tests tune: (downlink, uplink) in Hz.
 SPOTS = {"RS-44": (435_640_000, 145_965_000), "SO-50": (436_795_000, 145_850_000)}
@@ -101,6 +106,11 @@ def leave(tb, state):
     check(tb.wait(20) == 0, "trakbox leaves cleanly when input ends")
     with open(os.path.join(state, "trakbox.log")) as f:
         return f.read()
+
+
+def on_pass(which, make_rig, model, test, uplink_model=None):
+    """track_with for one of the passes above (RS44_PASS, SO50_PASS)."""
+    track_with(make_rig, model, which[0], which[1], test, uplink_model)
 
 
 def track_with(make_rig, model, start_at, sat_key, test, uplink_model=None):

@@ -11,11 +11,10 @@ only, and the Doppler.
 import os
 import shutil
 import sys
-from datetime import datetime, timezone
 
 sys.path.insert(0, os.path.dirname(__file__))
 from _ft847 import FT847  # noqa: E402
-from _ptyradio import leave, listen, on_doppler, rs44_knob_turn, so50_doppler_goes_on, track_with, tuned  # noqa: E402
+from _ptyradio import RS44_PASS, SO50_PASS, leave, listen, on_doppler, rs44_knob_turn, so50_doppler_goes_on, on_pass, tuned  # noqa: E402
 from _tbharness import check, run_test, skip  # noqa: E402
 
 
@@ -50,8 +49,8 @@ def so50(rigs, tb, state, clock_now):
 def main():
     if not shutil.which("socat"):
         skip("socat not installed")
-    track_with(ft817, "ft817", datetime(2026, 5, 21, 10, 57, 0, tzinfo=timezone.utc), b"12", rs44, uplink_model="ft817")
-    track_with(ft817, "ft817", datetime(2026, 5, 21, 14, 10, 0, tzinfo=timezone.utc), b"5", so50, uplink_model="ft817")
+    on_pass(RS44_PASS, ft817, "ft817", rs44, uplink_model="ft817")
+    on_pass(SO50_PASS, ft817, "ft817", so50, uplink_model="ft817")
 
 
 if __name__ == "__main__":

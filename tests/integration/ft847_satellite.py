@@ -13,11 +13,10 @@ and the Doppler. Every wait polls with a deadline.
 import os
 import shutil
 import sys
-from datetime import datetime, timezone
 
 sys.path.insert(0, os.path.dirname(__file__))
 from _ft847 import FT847  # noqa: E402
-from _ptyradio import leave, listen, on_doppler, poll, rs44_knob_turn, so50_doppler_goes_on, track_with, tuned  # noqa: E402
+from _ptyradio import RS44_PASS, SO50_PASS, leave, listen, on_doppler, poll, rs44_knob_turn, so50_doppler_goes_on, on_pass, tuned  # noqa: E402
 from _tbharness import check, run_test, skip  # noqa: E402
 
 
@@ -54,8 +53,8 @@ def so50(rig, tb, state, clock_now):
 def main():
     if not shutil.which("socat"):
         skip("socat not installed")
-    track_with(FT847, "ft847", datetime(2026, 5, 21, 10, 57, 0, tzinfo=timezone.utc), b"12", rs44)
-    track_with(FT847, "ft847", datetime(2026, 5, 21, 14, 10, 0, tzinfo=timezone.utc), b"5", so50)
+    on_pass(RS44_PASS, FT847, "ft847", rs44)
+    on_pass(SO50_PASS, FT847, "ft847", so50)
 
 
 if __name__ == "__main__":

@@ -15,17 +15,16 @@ import os
 import shutil
 import sys
 import time
-from datetime import datetime, timezone
 
 sys.path.insert(0, os.path.dirname(__file__))
 from _ic9700 import IC9700  # noqa: E402
-from _ptyradio import leave, listen, on_doppler, rs44_knob_turn, so50_doppler_goes_on, track_with, tuned  # noqa: E402
+from _ptyradio import RS44_PASS, SO50_PASS, leave, listen, on_doppler, rs44_knob_turn, so50_doppler_goes_on, on_pass, tuned  # noqa: E402
 from _tbharness import check, run_test, skip  # noqa: E402
 
 
-def on_ic9700(start_at, sat_key, test, refuse_tone=False, echo=False):
-    """An IC-9700 responder (USB: no echo; or a CI-V bus) on the pty."""
-    track_with(lambda path: IC9700(path, echo=echo, refuse_tone=refuse_tone), "ic9700", start_at, sat_key, test)
+def on_ic9700(which, test, refuse_tone=False, echo=False):
+    """An IC-9700 responder (USB: no echo; or a CI-V bus) on the pty, through one of the passes."""
+    on_pass(which, lambda path: IC9700(path, echo=echo, refuse_tone=refuse_tone), "ic9700", test)
 
 
 def rs44(rig, tb, state, clock_now):
@@ -69,10 +68,10 @@ def so50(rig, tb, state, clock_now):
 def main():
     if not shutil.which("socat"):
         skip("socat not installed")
-    on_ic9700(datetime(2026, 5, 21, 10, 57, 0, tzinfo=timezone.utc), b"12", rs44)   # RS-44 is #12
-    on_ic9700(datetime(2026, 5, 21, 14, 10, 0, tzinfo=timezone.utc), b"5", so50, refuse_tone=True)   # SO-50 #5
+    on_ic9700(RS44_PASS, rs44)
+    on_ic9700(SO50_PASS, so50, refuse_tone=True)
     # The same radio on a CI-V bus (CI-V USB Echo Back ON): every frame echoed first.
-    on_ic9700(datetime(2026, 5, 21, 10, 57, 0, tzinfo=timezone.utc), b"12", rs44, echo=True)
+    on_ic9700(RS44_PASS, rs44, echo=True)
 
 
 if __name__ == "__main__":

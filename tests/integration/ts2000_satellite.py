@@ -14,10 +14,9 @@ refuses (?;): the refusal is reported and the Doppler goes on. Every wait polls 
 import os
 import shutil
 import sys
-from datetime import datetime, timezone
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _ptyradio import leave, listen, on_doppler, poll, rs44_knob_turn, so50_doppler_goes_on, track_with, tuned  # noqa: E402
+from _ptyradio import RS44_PASS, SO50_PASS, leave, listen, on_doppler, poll, rs44_knob_turn, so50_doppler_goes_on, on_pass, tuned  # noqa: E402
 from _tbharness import check, run_test, skip  # noqa: E402
 from _ts2000 import TS2000  # noqa: E402
 
@@ -69,9 +68,8 @@ def main():
         rig = TS2000(path)
         rig.fr = "2"
         return rig
-    track_with(on_memory, "ts2000", datetime(2026, 5, 21, 10, 57, 0, tzinfo=timezone.utc), b"12", rs44)
-    track_with(lambda path: TS2000(path, refuse_tone=True), "ts2000",
-               datetime(2026, 5, 21, 14, 10, 0, tzinfo=timezone.utc), b"5", so50)
+    on_pass(RS44_PASS, on_memory, "ts2000", rs44)
+    on_pass(SO50_PASS, lambda path: TS2000(path, refuse_tone=True), "ts2000", so50)
 
 
 if __name__ == "__main__":
