@@ -269,7 +269,7 @@ std::optional<std::string> set_mode(Mode mode) {
   return std::string("MD") + *d + ";";
 }
 
-std::string select_vfo(Vfo vfo) { return vfo == Vfo::a ? "FN0;" : "FN1;"; }
+std::string select_vfo(Vfo vfo, char letter) { return std::string("F") + letter + (vfo == Vfo::a ? "0;" : "1;"); }
 std::string read_frequency(Vfo vfo) { return vfo == Vfo::a ? "FA;" : "FB;"; }
 std::string split(bool on) { return on ? "SP1;" : "SP0;"; }
 

@@ -117,7 +117,8 @@ enum class Vfo { a, b };
 
 std::string set_frequency(Vfo vfo, Hz hz);          // FA00435123450;
 std::optional<std::string> set_mode(Mode mode);     // MD2;
-std::string select_vfo(Vfo vfo);                    // FN0; / FN1;
+// The VFO select: FN0; / FN1; on the TS-790/711/811, FR0; / FR1; on the TS-2000 (letter 'R').
+std::string select_vfo(Vfo vfo, char letter = 'N');
 std::string split(bool on);                         // SP1; / SP0;
 inline std::string up() { return "UP;"; }
 inline std::string down() { return "DN;"; }

@@ -281,10 +281,7 @@ void KenwoodLink::open() {
 void KenwoodLink::close() noexcept {
   if (port_.is_open()) {
     try {   // leave the radio as it was found: the tone off, SA as it was (SatPC32 at exit: SA0010000;)
-      if (tone_on_) {
-        if (opt_.one_link) send(kenwood::tone(false));
-        else on_uplink_band([&] { send(kenwood::tone(false)); });
-      }
+      if (tone_on_) on_uplink_band([&] { send(kenwood::tone(false)); });
       if (found_) send(kenwood::set_satellite(*found_));
     } catch (const std::exception&) {
     }
@@ -361,10 +358,11 @@ void KenwoodLink::ensure_satellite_mode() {
 
 template <class F>
 void KenwoodLink::on_uplink_band(F&& what) {
-  const std::string there =
-      satellite_on_ ? kenwood::set_satellite(kenwood::satellite_working(*found_, true)) : select(kenwood::Vfo::b);
-  const std::string back =
-      satellite_on_ ? kenwood::set_satellite(kenwood::satellite_working(*found_, false)) : select(kenwood::Vfo::a);
+  if (opt_.one_link) return what();
+  const std::string there = satellite_on_ ? kenwood::set_satellite(kenwood::satellite_working(*found_, true))
+                                          : kenwood::select_vfo(kenwood::Vfo::b, opt_.vfo_select);
+  const std::string back = satellite_on_ ? kenwood::set_satellite(kenwood::satellite_working(*found_, false))
+                                         : kenwood::select_vfo(kenwood::Vfo::a, opt_.vfo_select);
   send(there);
   try {
     what();
@@ -386,7 +384,7 @@ void KenwoodLink::set_mode(Link l, Mode mode) {
   ensure_satellite_mode();
   if (opt_.one_link || (satellite_on_ && l == Link::downlink)) return send(*md);
   if (satellite_on_ || l == Link::uplink) return on_uplink_band([&] { send(*md); });
-  send(select(kenwood::Vfo::a));   // the TS-790 family: the VFO the mode goes to, first
+  send(kenwood::select_vfo(kenwood::Vfo::a, opt_.vfo_select));   // the TS-790 family: the VFO the mode goes to, first
   send(*md);
 }
 
@@ -405,9 +403,8 @@ void KenwoodLink::set_ctcss_tone(int tenths_hz) {
     send(kenwood::tone(tenths_hz > 0));
     answer = query(kenwood::read_tone(), "TO", false);
   };
-  if (opt_.one_link) encoder();
-  else on_uplink_band(encoder);
-  tone_on_ = tenths_hz > 0 || tone_on_;
+  on_uplink_band(encoder);
+  tone_on_ = tenths_hz > 0;   // on: turned off again at close
   // TO; confirms; a radio that does not answer it is taken at its word (Hamlib's simulator).
   if (answer && *answer != kenwood::tone(tenths_hz > 0))
     throw LinkError(Action::drop, "the " + opt_.model + " refused the tone " +

@@ -135,10 +135,9 @@ class KenwoodLink final : public RadioLink {
   // passed over; what came before is thrown away first unless `discard` is false.
   std::optional<std::string> query(const std::string& command, std::string_view prefix, bool discard = true);
   kenwood::Vfo vfo_of(Link l) const { return l == Link::uplink && !opt_.one_link ? kenwood::Vfo::b : kenwood::Vfo::a; }
-  std::string select(kenwood::Vfo v) const { return std::string("F") + opt_.vfo_select + (v == kenwood::Vfo::a ? "0;" : "1;"); }
   void ensure_satellite_mode();
-  // Runs `what` with CTRL on Sub (satellite mode) or VFO B selected, and CTRL / VFO A back after,
-  // also when `what` throws.
+  // Runs `what` on the uplink's band: with CTRL on Sub (satellite mode) or VFO B selected, and CTRL
+  // / VFO A back after, also when `what` throws; on a one-link radio as it is.
   template <class F> void on_uplink_band(F&& what);
 
   SerialPort port_;

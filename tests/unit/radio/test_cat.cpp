@@ -102,6 +102,7 @@ TEST_CASE("Kenwood TS-790: FA/FB with 11 digits, MD, FN") {
   CHECK_FALSE(kenwood::set_mode(Mode::none));
   CHECK(kenwood::select_vfo(kenwood::Vfo::a) == "FN0;");
   CHECK(kenwood::select_vfo(kenwood::Vfo::b) == "FN1;");
+  CHECK(kenwood::select_vfo(kenwood::Vfo::b, 'R') == "FR1;");   // the TS-2000's (Hamlib's kenwood_set_vfo)
   CHECK(kenwood::split(true) == "SP1;");
   CHECK(kenwood::split(false) == "SP0;");
   CHECK(kenwood::up() == "UP;");
