@@ -2,6 +2,7 @@
 // display. Rotor control stays as it was (E toggles it); tracking goes on after Q.
 #include "menus/realtime_display.h"
 #include "store/model.h"
+#include "tracker/operations.h"
 #include "tracker/station_loop.h"
 
 namespace tb::menus {
@@ -10,9 +11,8 @@ namespace {
 std::optional<int> choose_and_track(term::Terminal& t, Services& s) {
   const auto pick = choose_satellite(t, "     *** Tracking object satellite ***", tracking_list_names(s), s.model.db.marked);
   if (!pick) return std::nullopt;
-  s.model.db.marked = *pick;
   const int db_index = s.model.db.selected[static_cast<std::size_t>(*pick)];
-  s.tracker.track_single(db_index);
+  tracker::StationOps(s.station).track(db_index);  // marks it '*' in the list
   save_or_report(t, s);
   return db_index;
 }
@@ -26,7 +26,7 @@ void menu_1_realtime_tracking(term::Terminal& t, Services& s) {
 // S: Single Tracking Mode — the same choice, with rotor control switched on: the antenna follows.
 void menu_s_single_tracking(term::Terminal& t, Services& s) {
   if (!choose_and_track(t, s)) return;
-  s.station.set_rotor_control(true);
+  tracker::StationOps(s.station).rotor_control(true);
   save_or_report(t, s);
   run_realtime_display(t, s, '*');
 }

@@ -8,6 +8,7 @@
 #include "menus/realtime_display.h"
 #include "menus/standalone.h"
 #include "store/model.h"
+#include "tracker/operations.h"
 #include "tracker/station_loop.h"
 
 namespace tb::menus {
@@ -82,11 +83,11 @@ void menu_m_multiple_tracking(term::Terminal& t, Services& s) {
   const auto pick = choose_satellite(t, "     *** LCD display satellite ***", multi_names, marked, marker);
   if (!pick) return;
 
-  s.model.priority_mode = *priority;
   s.model.db.marked = *pick;
   const int lcd_db_index = s.model.db.selected[static_cast<std::size_t>(*pick)];
-  s.tracker.track_multi(*priority);
-  s.station.set_rotor_control(true);  // as S: the antenna follows (E turns it off)
+  tracker::StationOps ops(s.station);
+  ops.track_multi(*priority);  // stores the sub-mode
+  ops.rotor_control(true);     // as S: the antenna follows (E turns it off)
   save_or_report(t, s);
 
   bool header = true;
@@ -112,7 +113,7 @@ void menu_m_multiple_tracking(term::Terminal& t, Services& s) {
         return;
       case 'e':
       case 'E':
-        s.station.set_rotor_control(!s.model.rotor_control);
+        tracker::StationOps(s.station).rotor_control(!s.model.rotor_control);
         save_or_report(t, s);
         break;
       default: break;

@@ -8,6 +8,7 @@
 #include "orbit/element_age.h"
 #include "station/clock.h"
 #include "store/model.h"
+#include "tracker/operations.h"
 #include "tracker/station_loop.h"
 
 namespace tb::menus {
@@ -169,7 +170,7 @@ void realtime_key(term::Terminal& t, Services& s, int k) {
     case term::kTimeout: break;
     case 'e':
     case 'E':
-      s.station.set_rotor_control(!s.model.rotor_control);
+      tracker::StationOps(s.station).rotor_control(!s.model.rotor_control);
       save_or_report(t, s);
       // Full screen shows it in the status line; a serial terminal gets a line (issue 18, item 6).
       if (!t.full_screen()) t.line(s.model.rotor_control ? "Rotor control ON" : "Rotor control OFF");

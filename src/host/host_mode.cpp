@@ -7,6 +7,7 @@
 
 #include "rotator/adc_model.h"
 #include "tracker/elements_refresh.h"
+#include "tracker/operations.h"
 #include "tracker/station_loop.h"
 #include "util/text.h"
 
@@ -204,9 +205,8 @@ Reply Interpreter::execute(std::string_view line) {
 
 // RF / ?R: trakbox's own commands (the manual's set has no element refresh), answered with one line.
 Reply Interpreter::refresh_now() {
-  tracker::ElementsRefresh* r = station_.refresh();
-  if (!r) return error("RF: this trakbox has no element refresh (it runs only with the station)");
-  if (const auto why = r->refresh_now(tracker::ElementsRefresh::wall_now())) return error("RF: " + *why);
+  const tracker::OpResult done = ops().refresh_elements(tracker::ElementsRefresh::wall_now());
+  if (!done.ok()) return error("RF: " + *done.refusal);
   return Reply{{"REFRESH STARTED"}, true, false};
 }
 
@@ -222,11 +222,12 @@ Reply Interpreter::az_el(std::string_view line) {
   const AzElParse p = parse_az_el(line);
   if (!p.args) return error("AZ/EL: " + p.error);
   // A host program pointing the antenna takes control, as the operator pressing E would: it has no
-  // other way to switch rotor control on. The limits still hold (point() clamps).
-  if (!station_.rotor_control()) station_.set_rotor_control(true);
-  const rotator::AzEl asked{p.args->az, p.args->el};
-  const rotator::AzEl got = station_.point(asked);
+  // other way to switch rotor control on. The limits still hold (go_to clamps).
+  const tracker::OpResult done = ops().go_to(p.args->az, p.args->el);
+  if (!done.ok()) return error("AZ/EL: " + *done.refusal);
   Reply r;
+  const rotator::AzEl asked{p.args->az, p.args->el};
+  const rotator::AzEl got = *done.commanded;
   if (rotator::azimuth_distance(asked.az, got.az) > 0.05 || std::abs(asked.el - got.el) > 0.05)
     r.lines.push_back("LIMIT " + format_antenna(got.az, got.el));
   return r;

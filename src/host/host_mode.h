@@ -27,6 +27,8 @@
 
 #include "radio/config.h"
 
+#include "tracker/operations.h"
+
 namespace tb::tracker { class StationLoop; }
 
 namespace tb::host {
@@ -84,6 +86,7 @@ class Interpreter {
   Reply radio_outcome(std::string_view cmd);
 
   tracker::StationLoop& station_;
+  tracker::StationOps ops() const { return tracker::StationOps(station_); }
 };
 
 }  // namespace tb::host

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "rotator/adc_model.h"
+#include "tracker/operations.h"
 
 namespace tb::netctl {
 
@@ -85,7 +86,7 @@ Outcome RotctlProtocol::set_pos(const std::vector<std::string>& args) {
   // The client's frame, as far as this azimuth tells it (0..180 is the same in both).
   if (*az < 0.0) az_frame_lo_ = -180.0;
   if (*az > 180.0) az_frame_lo_ = 0.0;
-  station_.point(rotator::AzEl{rotator::wrap360(*az), *el});
+  if (!tracker::StationOps(station_).go_to(rotator::wrap360(*az), *el).ok()) return Outcome::fail(Error::invalid);
   return {};
 }
 
@@ -96,15 +97,13 @@ Outcome RotctlProtocol::get_pos() {
 }
 
 Outcome RotctlProtocol::stop() {
-  station_.stop_antenna();
+  tracker::StationOps(station_).stop();
   return {};
 }
 
 Outcome RotctlProtocol::park() {
   if (const Error e = cannot_move(); e != Error::none) return Outcome::fail(e);
-  if (!station_.rotator().config().parking_enabled) return Outcome::fail(Error::rejected);
-  station_.tracker().stop();
-  station_.rotator().park();
+  if (!tracker::StationOps(station_).park().ok()) return Outcome::fail(Error::rejected);  // parking is off
   return {};
 }
 

@@ -219,7 +219,7 @@ const rotator::PassPlan* StationLoop::plan_for(const SatNow& s) {
 void StationLoop::tick() {
   const orbit::UtcTime now = clock_.now();
   if (tracker_.mode() != Mode::off) remote_follow(std::nullopt);
-  if (remote_ && remote_db_ && static_cast<std::size_t>(*remote_db_) < model_.db.satellites.size())
+  if (doppler_ && remote_ && remote_db_ && static_cast<std::size_t>(*remote_db_) < model_.db.satellites.size())
     follow_radio(*remote_db_, remote_->obs);
   if (tracker_.mode() != Mode::off) {
     const Decision d = tracker_.tick();
@@ -243,7 +243,7 @@ void StationLoop::tick() {
         break;
     }
     // The radio follows the satellite being followed.
-    if (const SatNow* f = tracker_.followed()) follow_radio(f->db_index, f->obs);
+    if (const SatNow* f = tracker_.followed(); f && doppler_) follow_radio(f->db_index, f->obs);
   }
   rotator_->tick(now);
 }

@@ -32,6 +32,13 @@ class StationLoop {
   // The E key: rotor control on/off (persisted in the model).
   void set_rotor_control(bool on);
   bool rotor_control() const { return model_.rotor_control; }
+  // Doppler on/off: off, the radio is left as it is (not tuned to the followed satellite) until
+  // Doppler is on again. On at start; not stored.
+  void set_doppler(bool on) {
+    doppler_ = on;
+    if (on) tuned_.reset();  // select the satellite again: everything is sent afresh
+  }
+  bool doppler() const { return doppler_; }
 
   // Direct antenna control (menus 6-6 and 8, host AZ/EL, Satrak GOTO): tracking stops, the antenna
   // goes where it is told (still inside the limits). Returns the commanded compass position.
@@ -78,6 +85,8 @@ class StationLoop {
   // How long until a link waiting for the knob to rest moves (tick then); nothing when none waits.
   std::optional<std::chrono::milliseconds> radio_due_in() const;
   Tracker& tracker() { return tracker_; }
+  store::Model& model() { return model_; }
+  const store::Model& model() const { return model_; }
 
   // Compass azimuth/elevation the antenna points at now, if known.
   std::optional<rotator::AzEl> antenna() const;
@@ -121,7 +130,8 @@ class StationLoop {
   radio::Tuner tuner_;
   std::optional<int> tuned_;  // db index the tuner is set up for
   bool tone_sent_ = false;    // a CTCSS tone is on (turned off for a satellite without one)
-  bool rit_said_ = false;     // the log said once that RIT/XIT moved both links
+  bool rit_said_ = false;
+  bool doppler_ = true;     // the log said once that RIT/XIT moved both links
   std::optional<RemoteFollow> remote_;
   std::optional<std::string> save_failure_;
   std::string notice_;

@@ -1,0 +1,79 @@
+// The station's operations, one home for every front end: the menus, host mode, rotctld, the
+// Satrak unit's neighbours and the web API all "track this satellite", "park", "stop", "rotor
+// control on/off", "go to az/el", "Doppler on/off" and "refresh the elements now" through here, so
+// each is validated once and refused with the same sentence wherever it is asked for.
+//
+// StationOps holds references only (to the StationLoop and the Model it runs on): make one where it
+// is needed. Every operation validates its input fully before it changes anything; a refusal is a
+// sentence naming what was wrong ("unknown satellite 'ISSS'") and leaves the station as it was.
+// An operation that changed the stored model says so (model_changed): the caller saves.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "rotator/controller.h"
+
+namespace tb::store {
+struct Model;
+}
+
+namespace tb::tracker {
+
+class StationLoop;
+
+struct OpResult {
+  std::optional<std::string> refusal;  // why nothing was done; nothing when done
+  std::string note;                    // what happened, when it is worth saying ("limited to ...")
+  bool model_changed = false;          // the stored state changed: the caller saves
+  std::optional<rotator::AzEl> commanded;  // go_to: where the antenna was sent (inside the limits)
+  bool ok() const { return !refusal; }
+  static OpResult refuse(std::string why) {
+    OpResult r;
+    r.refusal = std::move(why);
+    return r;
+  }
+};
+
+class StationOps {
+ public:
+  explicit StationOps(StationLoop& station);
+
+  // The database index of a satellite by name: exact first (the manual's names are case
+  // sensitive), else the one whose name matches ignoring case and surrounding blanks.
+  std::optional<int> find_satellite(std::string_view name) const;
+
+  // Single tracking of a database satellite (menu 1; S adds rotor_control(true)). When it is in the
+  // tracking list it becomes the marked one ('*').
+  OpResult track(int db_index);
+  OpResult track(std::string_view name);
+  // Multiple tracking of the tracking list's first multi_count (menu M), normal or priority.
+  OpResult track_multi(bool priority);
+  // Multiple tracking of these satellites (2 to 5, by name, no repeats): they move to the front of
+  // the tracking list in this order, multi_count becomes their number (menus 3-2 and 3-4), then M.
+  OpResult track_list(const std::vector<std::string>& names, bool priority);
+  // Tracking stops and the antenna stops where it is.
+  OpResult stop();
+  // Tracking stops and the antenna goes to its parking position; rotor control is switched on
+  // (parking is a movement). Refused when parking is off (menu 6-2).
+  OpResult park();
+  // The E key.
+  OpResult rotor_control(bool on);
+  // Direct pointing: compass azimuth 0..360, elevation 0..90 (0..180 for a rotator whose
+  // elevation flips over the top) (host AZ/EL, rotctld set_pos, the
+  // web's goto). Tracking stops, rotor control goes on, the limits clamp: commanded says where the
+  // antenna was sent and note says "limited to AZ.. EL.." when that is not where it was asked.
+  OpResult go_to(double az_deg, double el_deg);
+  // The radio follows the tracked satellite with Doppler (on, the default) or is left alone.
+  OpResult doppler(bool on);
+  // The element refresh from the stored sources, now (menu 3-5 R, host RF).
+  OpResult refresh_elements(std::int64_t now_unix);
+
+ private:
+  StationLoop& station_;
+  store::Model& model_;
+};
+
+}  // namespace tb::tracker
