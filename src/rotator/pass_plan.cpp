@@ -82,6 +82,11 @@ RotatorPosition PassPlan::map(double az_deg, double el_deg) const {
 
 AzEl PassPlan::pointing_at(double az_deg, double el_deg) const { return pointing(geometry, map(az_deg, el_deg)); }
 
+bool PassPlan::lost_at(double az_deg, double el_deg) const {
+  const AzEl a = pointing_at(az_deg, el_deg);
+  return azimuth_distance(a.az, az_deg) > 0.05 && el_deg < 89.5;
+}
+
 namespace {
 PassPlan plan_in_piece(std::span<const TrackPoint> track, const PassGeometry& g,
                        std::optional<double> current_travel);

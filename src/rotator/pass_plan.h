@@ -77,6 +77,9 @@ struct PassPlan {
   //   "antenna on target 10:00:00-10:02:30 (13% of the pass): it reaches azimuth 180.0-350.0", or
   //   "PASS OUT OF ANTENNA REACH (it reaches azimuth 180.0-350.0)" when it follows none of it.
   std::string coverage_text() const;
+  // Whether the antenna, on this plan, does not point at a satellite at az/el (the pass plots'
+  // red: the plan holds it elsewhere; the zenith's azimuth does not count).
+  bool lost_at(double az_deg, double el_deg) const;
 };
 
 // Plans a pass sampled at even steps (AOS first). current_travel, when given, breaks ties between

@@ -1,0 +1,368 @@
+#include "web/api.h"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+
+#include <nlohmann/json.hpp>
+#include <spdlog/spdlog.h>
+
+#include "orbit/element_age.h"
+#include "orbit/passes.h"
+#include "store/model.h"
+#include "tracker/operations.h"
+#include "tracker/station_loop.h"
+#include "util/json_limits.h"
+#include "util/text.h"
+#include "web/page.h"
+
+namespace tb::web {
+
+namespace {
+
+using json = nlohmann::json;
+
+// Text a client sent, fit to quote in a reply: printable ASCII (others as '?'), at most `max`.
+std::string printable(std::string_view s, std::size_t max) {
+  std::string out;
+  for (std::size_t i = 0; i < s.size() && i < max; ++i) out.push_back(s[i] >= 0x20 && s[i] < 0x7f ? s[i] : '?');
+  if (s.size() > max) out += "...";
+  return out;
+}
+
+Response error(int status, std::string sentence) {
+  Response r;
+  r.status = status;
+  r.body = json{{"error", std::move(sentence)}}.dump();
+  return r;
+}
+
+Response ok(const json& j) {
+  Response r;
+  r.body = j.dump(-1, ' ', false, json::error_handler_t::replace);
+  return r;
+}
+
+Response redirect(const std::string& to) {
+  Response r;
+  r.status = 303;
+  r.content_type = "text/plain";
+  r.headers.emplace_back("Location", to);
+  return r;
+}
+
+int hex(char c) {
+  if (c >= '0' && c <= '9') return c - '0';
+  c = text::to_lower(c);
+  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+  return -1;
+}
+
+std::optional<std::string> percent_decode(std::string_view s) {
+  std::string out;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (s[i] == '+') out.push_back(' ');
+    else if (s[i] != '%') out.push_back(s[i]);
+    else {
+      if (i + 2 >= s.size() || hex(s[i + 1]) < 0 || hex(s[i + 2]) < 0) return std::nullopt;
+      out.push_back(static_cast<char>(hex(s[i + 1]) * 16 + hex(s[i + 2])));
+      i += 2;
+    }
+  }
+  return out;
+}
+
+// A form or query field of `fields` ("a=1&b=2"); "" when absent, nullopt for a bad escape.
+std::optional<std::string> field(std::string_view fields, const std::string& name) {
+  for (std::string_view part : text::split(fields, '&')) {
+    const auto eq = part.find('=');
+    const auto key = percent_decode(part.substr(0, eq));
+    if (!key || *key != name) continue;
+    return eq == std::string_view::npos ? std::string() : percent_decode(part.substr(eq + 1));
+  }
+  return std::string();
+}
+
+json pass_json(const orbit::Pass& p) {
+  return {{"aos", orbit::format_iso8601(p.aos)}, {"tca", orbit::format_iso8601(p.tca)},
+          {"los", orbit::format_iso8601(p.los)}, {"max_el_deg", p.max_el_deg},
+          {"aos_az_deg", p.aos_az_deg},          {"tca_az_deg", p.tca_az_deg},
+          {"los_az_deg", p.los_az_deg}};
+}
+
+json az_el(double az, double el) { return json::array({std::round(az * 100) / 100, std::round(el * 100) / 100}); }
+
+}  // namespace
+
+std::vector<std::pair<std::string, std::string>> security_headers() {
+  return {{"Content-Security-Policy", "default-src 'self'; frame-ancestors 'none'; base-uri 'none'; form-action 'self'"},
+          {"X-Content-Type-Options", "nosniff"},
+          {"X-Frame-Options", "DENY"},
+          {"Referrer-Policy", "no-referrer"},
+          {"Cache-Control", "no-store"}};
+}
+
+std::string target_path(const std::string& target) {
+  const auto q = target.find('?');
+  return target.substr(0, q);
+}
+
+std::optional<std::string> query_param(const std::string& target, const std::string& name) {
+  const auto q = target.find('?');
+  if (q == std::string::npos) return std::string();
+  return field(std::string_view(target).substr(q + 1), name);
+}
+
+Api::Api(tracker::StationLoop& station, Access& access, ApiHooks hooks)
+    : station_(station), access_(access), hooks_(std::move(hooks)) {}
+
+Response Api::handle(const Request& r, std::chrono::steady_clock::time_point now) {
+  try {
+    const std::string path = target_path(r.target);
+    if (path == "/login" && r.method == "POST") return login(r, now);
+    const bool changing = r.method == "POST";
+    const Grant g = access_.grant(r.peer, r.host, r.origin, r.cookie, r.authorization, changing, now);
+    return route(r, g);
+  } catch (const std::exception& e) {
+    spdlog::warn("web: {} {}: {}", r.method, target_path(r.target).substr(0, 80), e.what());
+    return error(400, "the request could not be handled");
+  } catch (...) {
+    return error(400, "the request could not be handled");
+  }
+}
+
+Response Api::login(const Request& r, std::chrono::steady_clock::time_point now) {
+  if (!r.origin.empty() && !Access::origin_matches(r.origin, r.host))
+    return error(403, "a login must come from the login page itself (Origin)");
+  if (!access_.needs_secret()) return redirect("/");
+  if (r.body.size() > kMaxBody) return error(413, "the request body is over 16 kB");
+  const auto given = field(r.body, "secret");
+  int wait = 0;
+  const auto token = given ? access_.login(r.peer, *given, now, wait) : std::nullopt;
+  if (!token) return redirect(wait > 0 ? "/login#wait" : "/login#wrong");
+  Response res = redirect("/");
+  res.headers.emplace_back("Set-Cookie",
+                           std::string(kSessionCookie) + "=" + *token + "; Path=/; HttpOnly; SameSite=Strict");
+  return res;
+}
+
+std::optional<Response> Api::refuse_live(const Request& r, std::chrono::steady_clock::time_point now) {
+  try {
+    const Grant g = access_.grant(r.peer, r.host, r.origin, r.cookie, r.authorization, false, now);
+    if (!r.origin.empty() && !Access::origin_matches(r.origin, r.host))
+      return error(403, "the live feed is for the page itself (Origin does not match)");
+    if (!g.view) return error(g.why_not_change ? g.status_not_change : 401, g.why_not_change.value_or("log in first"));
+    return std::nullopt;
+  } catch (...) {
+    return error(400, "the request could not be handled");
+  }
+}
+
+Response Api::route(const Request& r, const Grant& g) {
+  const std::string path = target_path(r.target);
+  if (r.method == "GET" || r.method == "HEAD") {
+    // The page's files are public (they hold no station data); the page asks for the rest.
+    const std::string file = path == "/" ? "/index.html" : path == "/login" ? "/login.html" : path;
+    if (const PageFile* f = find_page_file(file)) {
+      Response res;
+      res.content_type = std::string(f->type);
+      res.body = std::string(f->body);
+      return res;
+    }
+    if (path.rfind("/api/v1/", 0) != 0) return error(404, "no such page: " + printable(path, 60));
+    if (!g.view) return error(g.status_not_change == 403 ? 403 : 401, g.why_not_change.value_or("log in first"));
+    if (path == "/api/v1/status") {
+      json j = hooks_.status ? hooks_.status() : json::object();
+      j["schema"] = kApiSchema;
+      return ok(j);
+    }
+    if (path == "/api/v1/satellites") return satellites();
+    if (path == "/api/v1/passes") return passes(r.target);
+    if (path == "/api/v1/sky") return ok(sky());
+    return error(404, "no such endpoint: " + printable(path, 60));
+  }
+  if (r.method != "POST") return error(405, "method " + printable(r.method, 10) + " not allowed: GET or POST");
+  if (path == "/logout") {
+    access_.logout(r.cookie);
+    Response res = redirect("/login");
+    res.headers.emplace_back("Set-Cookie", std::string(kSessionCookie) + "=; Path=/; HttpOnly; SameSite=Strict; Max-Age=0");
+    return res;
+  }
+  if (path.rfind("/api/v1/", 0) != 0) return error(404, "no such endpoint: " + printable(path, 60));
+  if (!g.change) return error(g.status_not_change, g.why_not_change.value_or("not allowed"));
+  if (r.body.size() > kMaxBody) return error(413, "the request body is over 16 kB");
+  const std::string type = text::lower(text::trim(r.content_type.substr(0, r.content_type.find(';')), text::kWhitespace));
+  if (type != "application/json") return error(415, "the body must be JSON (Content-Type: application/json)");
+  if (json_limits::nesting_depth(r.body) > json_limits::kMaxDepth) return error(400, "the JSON body is nested too deep");
+  const json body = r.body.empty() ? json::object() : json::parse(r.body, nullptr, false);
+  if (body.is_discarded()) return error(400, "the body is not valid JSON");
+  if (!body.is_object()) return error(400, "the body must be a JSON object");
+  return post(path, body);
+}
+
+Response Api::post(const std::string& path, const json& b) {
+  tracker::StationOps ops(station_);
+  tracker::OpResult done;
+  auto boolean = [&b](const char* key) -> std::optional<bool> {
+    const auto it = b.find(key);
+    if (it == b.end() || !it->is_boolean()) return std::nullopt;
+    return it->get<bool>();
+  };
+  if (path == "/api/v1/track") {
+    const bool priority = boolean("priority").value_or(station_.model().priority_mode);
+    if (b.contains("satellite")) {
+      if (!b["satellite"].is_string()) return error(400, "track: \"satellite\" must be a string, e.g. \"ISS\"");
+      done = ops.track(b["satellite"].get<std::string>());
+    } else if (b.contains("list")) {
+      if (!b["list"].is_array()) return error(400, "track: \"list\" must be an array of names");
+      std::vector<std::string> names;
+      for (const auto& n : b["list"]) {
+        if (!n.is_string()) return error(400, "track: \"list\" must hold names (strings)");
+        names.push_back(n.get<std::string>());
+      }
+      done = ops.track_list(names, priority);
+    } else if (b.contains("multi")) {
+      if (!b["multi"].is_boolean() || !b["multi"].get<bool>()) return error(400, "track: \"multi\" must be true");
+      done = ops.track_multi(priority);
+    } else if (b.contains("stop")) {
+      done = ops.stop();
+    } else {
+      return error(400, "track: expected {\"satellite\":NAME}, {\"list\":[NAMES]} or {\"multi\":true}");
+    }
+  } else if (path == "/api/v1/rotor") {
+    if (b.contains("control")) {
+      const auto on = boolean("control");
+      if (!on) return error(400, "rotor: \"control\" must be true or false");
+      done = ops.rotor_control(*on);
+    } else if (b.contains("action")) {
+      const std::string a = b["action"].is_string() ? b["action"].get<std::string>() : "";
+      if (a == "stop") done = ops.stop();
+      else if (a == "park") done = ops.park();
+      else return error(400, "rotor: \"action\" must be \"stop\" or \"park\"");
+    } else if (b.contains("goto")) {
+      const json& g = b["goto"];
+      if (!g.is_object() || !g.contains("az") || !g.contains("el") || !g["az"].is_number() || !g["el"].is_number())
+        return error(400, "rotor: \"goto\" must be {\"az\":DEGREES,\"el\":DEGREES}");
+      done = ops.go_to(g["az"].get<double>(), g["el"].get<double>());
+    } else {
+      return error(400, "rotor: expected {\"control\":true|false}, {\"action\":\"stop\"|\"park\"} or {\"goto\":{...}}");
+    }
+  } else if (path == "/api/v1/radio") {
+    const auto on = boolean("doppler");
+    if (!on) return error(400, "radio: expected {\"doppler\":true|false}");
+    done = ops.doppler(*on);
+  } else if (path == "/api/v1/elements/refresh") {
+    done = ops.refresh_elements(hooks_.wall_now_unix ? hooks_.wall_now_unix() : 0);
+  } else {
+    return error(404, "no such endpoint: " + printable(path, 60));
+  }
+  if (!done.ok()) return error(409, *done.refusal);
+  json reply{{"ok", true}, {"note", done.note}};
+  if (done.model_changed && hooks_.save)
+    if (const auto why = hooks_.save()) reply["saved"] = false, reply["save_failure"] = *why;
+  if (hooks_.changed) hooks_.changed();
+  return ok(reply);
+}
+
+Response Api::satellites() {
+  const store::Model& m = station_.model();
+  const orbit::UtcTime now = station_.tracker().last_tick_time();
+  json list = json::array();
+  for (std::size_t i = 0; i < m.db.satellites.size(); ++i) {
+    const auto& s = m.db.satellites[i];
+    const orbit::ElementAge age = orbit::element_age(s.elements, now);
+    json e{{"name", s.name()},
+           {"catalog_number", s.elements.catalog_number},
+           {"list_number", m.db.list_number(static_cast<int>(i))},
+           {"element_age_days", age.days},
+           {"elements_stale", age.stale()},
+           {"downlink_hz", s.radio.downlink_hz},
+           {"uplink_hz", s.radio.uplink_hz}};
+    list.push_back(std::move(e));
+  }
+  return ok(json{{"satellites", std::move(list)}});
+}
+
+Response Api::passes(const std::string& target) {
+  const auto sat = query_param(target, "sat");
+  const auto hours_text = query_param(target, "hours");
+  if (!sat || !hours_text) return error(400, "passes: a bad %-escape in the query");
+  if (sat->empty()) return error(400, "passes: expected ?sat=NAME&hours=H");
+  double hours = 24.0;
+  if (!hours_text->empty()) {
+    const auto h = text::parse_double(*hours_text);
+    if (!h || !(*h >= 1.0 && *h <= 240.0))
+      return error(400, "passes: hours '" + printable(*hours_text, 20) + "': expected 1 to 240");
+    hours = *h;
+  }
+  tracker::StationOps ops(station_);
+  const auto i = ops.find_satellite(*sat);
+  if (!i) return error(404, "unknown satellite '" + printable(*sat, 40) + "'");
+  const orbit::Sgp4* sgp4 = station_.tracker().propagator(*i);
+  if (!sgp4) return error(409, "satellite '" + printable(*sat, 40) + "' has no usable orbit");
+  const orbit::UtcTime now = station_.tracker().last_tick_time();
+  const orbit::UtcTime stop = orbit::add_minutes(now, hours * 60.0);
+  json list = json::array();
+  for (const orbit::Pass& p : orbit::find_passes(*sgp4, station_.model().station.observer(), now, stop))
+    list.push_back(pass_json(p));
+  return ok(json{{"satellite", station_.model().db.satellites[static_cast<std::size_t>(*i)].name()},
+                 {"from", orbit::format_iso8601(now)},
+                 {"hours", hours},
+                 {"passes", std::move(list)}});
+}
+
+json Api::sky() {
+  tracker::Tracker& tr = station_.tracker();
+  json j{{"time", orbit::format_iso8601(tr.last_tick_time())}};
+  const auto antenna = station_.antenna();
+  j["antenna"] = antenna ? az_el(antenna->az, antenna->el) : json(nullptr);
+  const tracker::Decision& d = tr.last_decision();
+  j["target"] = tr.mode() == tracker::Mode::off || d.antenna == tracker::Decision::Antenna::hold
+                    ? json(nullptr)
+                    : az_el(d.az_deg, d.el_deg);
+  const tracker::SatNow* f = tr.mode() == tracker::Mode::off ? nullptr : tr.followed();
+  if (!f || !f->obs.ok()) {
+    j["satellite"] = nullptr;
+    j["pass"] = nullptr;
+    return j;
+  }
+  j["satellite"] = {{"name", f->name}, {"az_el", az_el(f->obs.look.az_deg, f->obs.look.el_deg)}, {"in_range", f->in_range}};
+  if (!f->pass) {
+    j["pass"] = nullptr;
+    return j;
+  }
+  json p = pass_json(*f->pass);
+  const rotator::PassPlan* plan = station_.current_plan();
+  json track = json::array(), planned = json::array(), lost = json::array();
+  for (const orbit::Observation& o : tr.pass_track(f->db_index, *f->pass, 60)) {
+    if (!o.ok()) continue;
+    const double az = o.look.az_deg, el = std::max(o.look.el_deg, 0.0);
+    track.push_back(az_el(az, el));
+    if (!plan) continue;
+    const rotator::AzEl a = plan->pointing_at(az, el);
+    planned.push_back(az_el(a.az, std::max(a.el, 0.0)));
+    lost.push_back(plan->lost_at(az, el));
+  }
+  p["track"] = std::move(track);
+  p["planned"] = std::move(planned);
+  p["lost"] = std::move(lost);
+  if (plan) p["coverage"] = plan->coverage_text();
+  j["pass"] = std::move(p);
+  return j;
+}
+
+std::string Api::live_state() {
+  try {
+    json status = hooks_.status ? hooks_.status() : json::object();
+    status["schema"] = kApiSchema;
+    status["doppler"] = station_.doppler();
+    const auto& st = station_.model().station;
+    status["station"] = {{"lat_deg", st.lat_deg}, {"lon_deg", st.lon_deg}, {"height_m", st.height_m}};
+    return json{{"type", "state"}, {"status", std::move(status)}, {"sky", sky()}}.dump(
+        -1, ' ', false, json::error_handler_t::replace);
+  } catch (const std::exception& e) {
+    return json{{"type", "error"}, {"error", e.what()}}.dump(-1, ' ', false, json::error_handler_t::replace);
+  }
+}
+
+}  // namespace tb::web

@@ -1,0 +1,98 @@
+// The web front end's request handling, free of any transport (Boost.Beast stays in server.cpp):
+// a request goes in as values, a response comes out. It serves the page's files (compiled in,
+// page.h), the login, and the JSON API /api/v1/... (docs/web-api.md), deciding who may do what
+// (access.h) before anything is read or changed. Every station change goes through
+// tracker::StationOps, as the menus', host mode's and rotctld's do.
+//
+// Promises (checked by the fuzz target tests/fuzz/fuzz_web.cpp): no exception leaves handle(); an
+// error is a JSON object {"error": "a sentence"} with a 4xx status; every reply carries the
+// security headers (CSP default-src 'self', nosniff, frame-ancestors 'none'); the secret never
+// appears in a reply.
+#pragma once
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "web/access.h"
+
+namespace tb::tracker {
+class StationLoop;
+}
+
+namespace tb::web {
+
+inline constexpr int kApiSchema = 1;              // the "schema" field of /api/v1/status
+inline constexpr std::size_t kMaxBody = 16 * 1024; // bytes a request body may have
+
+struct Request {
+  std::string method;         // "GET", "POST", ...
+  std::string target;         // "/api/v1/passes?sat=ISS&hours=12"
+  std::string host;           // the Host header
+  std::string origin;         // the Origin header ("" when none)
+  std::string cookie;         // the Cookie header
+  std::string authorization;  // the Authorization header
+  std::string content_type;
+  std::string body;
+  std::string peer;           // the client's address ("127.0.0.1", "::1", ...)
+};
+
+struct Response {
+  int status = 200;
+  std::string content_type = "application/json";
+  std::string body;
+  std::vector<std::pair<std::string, std::string>> headers;  // beyond the security headers
+};
+
+// The headers every response carries.
+std::vector<std::pair<std::string, std::string>> security_headers();
+
+// What the API needs of the running station besides the StationLoop: the document of
+// `trakbox status --json` (app/status.h, built by the caller), saving the state, the wall clock of
+// the element refresh, and a word to the live viewers that something changed.
+struct ApiHooks {
+  std::function<nlohmann::json()> status;
+  std::function<std::optional<std::string>()> save;
+  std::function<std::int64_t()> wall_now_unix;
+  std::function<void()> changed;
+};
+
+class Api {
+ public:
+  Api(tracker::StationLoop& station, Access& access, ApiHooks hooks);
+
+  // Never throws.
+  Response handle(const Request& r, std::chrono::steady_clock::time_point now);
+  // Whether a WebSocket upgrade to /api/v1/live may go ahead (the viewing rules and the Origin);
+  // the refusal response when not.
+  std::optional<Response> refuse_live(const Request& r, std::chrono::steady_clock::time_point now);
+
+  // The live state the WebSocket sends at each tick: {"type":"state","status":{...},"sky":{...}}.
+  std::string live_state();
+  // The sky plot's facts for the followed satellite: now, its pass (AOS/TCA/LOS and the track),
+  // the antenna's reading and target, the planned path and the part it cannot follow.
+  nlohmann::json sky();
+
+ private:
+  Response route(const Request& r, const Grant& g);
+  Response post(const std::string& path, const nlohmann::json& body);
+  Response satellites();
+  Response passes(const std::string& query);
+  Response login(const Request& r, std::chrono::steady_clock::time_point now);
+
+  tracker::StationLoop& station_;
+  Access& access_;
+  ApiHooks hooks_;
+};
+
+// Pieces of a target, exposed for the tests: the path and a query parameter ("" when absent),
+// percent-decoded; nullopt for a malformed escape.
+std::string target_path(const std::string& target);
+std::optional<std::string> query_param(const std::string& target, const std::string& name);
+
+}  // namespace tb::web

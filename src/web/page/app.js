@@ -1,0 +1,212 @@
+"use strict";
+// The station's page: the live state over the WebSocket /api/v1/live (reconnecting by itself),
+// changes through POST /api/v1/... (docs/web-api.md). No framework, nothing from elsewhere.
+const $ = (id) => document.getElementById(id);
+const SVG = "http://www.w3.org/2000/svg";
+// The sky plot's geometry, as `passes --plot` draws it: north up, east right, zenith in the centre.
+const C = 320, R = 270;
+function xy(az, el) {
+  const r = R * (90 - el) / 90, a = az * Math.PI / 180;
+  return [C + r * Math.sin(a), C - r * Math.cos(a)];
+}
+function fixed(v, d) { return typeof v === "number" ? v.toFixed(d) : "-"; }
+function mhz(hz) { return typeof hz === "number" ? (hz / 1e6).toFixed(5) + " MHz" : "-"; }
+function hhmm(iso) { return iso ? iso.substring(11, 19) : "-"; }
+function el(tag, attrs, text) {
+  const e = document.createElementNS(SVG, tag);
+  for (const k in attrs) e.setAttribute(k, attrs[k]);
+  if (text !== undefined) e.textContent = text;
+  return e;
+}
+function points(list) { return list.map((p) => xy(p[0], p[1]).map((v) => v.toFixed(1)).join(",")).join(" "); }
+
+function drawGrid() {
+  const g = $("grid");
+  for (const e of [0, 30, 60]) g.appendChild(el("circle", { cx: C, cy: C, r: R * (90 - e) / 90 }));
+  g.appendChild(el("line", { x1: C - R, y1: C, x2: C + R, y2: C }));
+  g.appendChild(el("line", { x1: C, y1: C - R, x2: C, y2: C + R }));
+  for (const [t, x, y] of [["N", C, C - R - 12], ["S", C, C + R + 30], ["E", C + R + 22, C + 8], ["W", C - R - 22, C + 8]])
+    g.appendChild(el("text", { x, y }, t));
+}
+
+function place(id, azel) {
+  const e = $(id);
+  if (!azel) { e.setAttribute("cx", -99); e.setAttribute("cy", -99); return; }
+  const [x, y] = xy(azel[0], Math.max(azel[1], -2));
+  e.setAttribute("cx", x.toFixed(2));
+  e.setAttribute("cy", y.toFixed(2));
+}
+
+function drawSky(sky) {
+  $("sat-name").textContent = sky.satellite ? sky.satellite.name : "";
+  place("sat", sky.satellite ? sky.satellite.az_el : null);
+  $("sat").dataset.time = sky.time || "";
+  place("antenna", sky.antenna);
+  place("target", sky.target);
+  const p = sky.pass;
+  $("track").setAttribute("points", p ? points(p.track) : "");
+  $("planned").setAttribute("points", p && p.planned ? points(p.planned) : "");
+  const lost = $("lost"), marks = $("marks");
+  lost.replaceChildren();
+  marks.replaceChildren();
+  $("coverage").textContent = p && p.coverage ? p.coverage : "";
+  if (!p) return;
+  let run = [];
+  p.track.forEach((pt, i) => {
+    if (p.lost && p.lost[i]) run.push(pt);
+    else { if (run.length > 1) lost.appendChild(el("polyline", { points: points(run) })); run = []; }
+  });
+  if (run.length > 1) lost.appendChild(el("polyline", { points: points(run) }));
+  for (const [name, t, az, e] of [["AOS", p.aos, p.aos_az_deg, 0], ["TCA", p.tca, p.tca_az_deg, p.max_el_deg],
+                                  ["LOS", p.los, p.los_az_deg, 0]]) {
+    const [x, y] = xy(az, e);
+    marks.appendChild(el("circle", { cx: x, cy: y, r: 5 }));
+    marks.appendChild(el("text", { x: x + (x > C ? -10 : 10), y: y + (y > C ? 22 : -10),
+                                   "text-anchor": x > C ? "end" : "start" }, name + " " + hhmm(t)));
+  }
+}
+
+function countdown(iso, now) {
+  if (!iso || !now) return "-";
+  const s = Math.round((Date.parse(iso) - Date.parse(now)) / 1000);
+  if (s <= 0) return "now";
+  const h = Math.floor(s / 3600), m = Math.floor(s % 3600 / 60), r = s % 60;
+  return (h ? h + "h" : "") + String(m).padStart(h ? 2 : 1, "0") + "m" + String(r).padStart(2, "0") + "s";
+}
+
+function drawList(st) {
+  const body = $("list").tBodies[0];
+  const rows = [];
+  for (const e of st.tracking_list || []) {
+    const tr = document.createElement("tr");
+    tr.dataset.name = e.name;
+    if (st.tracking && st.tracking.followed === e.name) tr.className = "tracked";
+    const np = e.next_pass;
+    const cells = [e.number, e.name, np ? hhmm(np.aos) : "-", np ? fixed(np.max_el_deg, 0) + "°" : "-",
+                   np ? (np.in_progress ? "up" : countdown(np.aos, st.time)) : "-", fixed(e.element_age_days, 1) + " d"];
+    cells.forEach((c, i) => {
+      const td = document.createElement("td");
+      td.textContent = c;
+      if (i === 5 && e.elements_stale) td.className = "stale";
+      tr.appendChild(td);
+    });
+    tr.addEventListener("click", () => post("/api/v1/track", { satellite: e.name }));
+    rows.push(tr);
+  }
+  body.replaceChildren(...rows);
+}
+
+let doppler = true, rotorOn = false;
+function drawStatus(st) {
+  $("clock").textContent = st.time ? st.time.replace("T", " ").substring(0, 19) + " UTC" : "--";
+  const probs = st.problems || [];
+  $("problems").hidden = probs.length === 0;
+  $("problems").replaceChildren(...probs.map((p) => { const li = document.createElement("li"); li.textContent = p; return li; }));
+  const a = st.antenna || {};
+  $("ant-az").textContent = a.position ? fixed(a.position.az_deg, 1) : "-";
+  $("ant-el").textContent = a.position ? fixed(a.position.el_deg, 1) : "-";
+  $("ant-target").textContent = a.target ? fixed(a.target.az_deg, 1) + "° az, " + fixed(a.target.el_deg, 1) + "° el" : "-";
+  $("ant-state").textContent = a.link !== "ok" ? "fault: " + (a.link_message || a.link) : (a.action || "hold") + (a.message ? " (" + a.message + ")" : "");
+  rotorOn = !!a.rotor_control;
+  $("rotor-control").textContent = rotorOn ? "on" : "off";
+  $("btn-rotor").textContent = rotorOn ? "Rotor control off" : "Rotor control on";
+  $("btn-rotor").classList.toggle("on", rotorOn);
+  const r = (st.radios || [])[0] || {};
+  $("radio-down").textContent = mhz(r.downlink_hz) + (r.downlink_mode ? " " + r.downlink_mode : "");
+  $("radio-up").textContent = mhz(r.uplink_hz) + (r.uplink_mode ? " " + r.uplink_mode : "");
+  $("radio-state").textContent = r.fault ? "fault: " + r.message : (r.radio || "-") + (r.connected ? ", connected" : "");
+  doppler = st.doppler !== false;
+  $("doppler").textContent = doppler ? "on" : "off";
+  $("btn-doppler").textContent = doppler ? "Doppler off" : "Doppler on";
+  $("btn-doppler").classList.toggle("on", doppler);
+  const s = st.station;
+  if (s) {
+    $("station-pos").textContent = fixed(s.lat_deg, 4) + "°, " + fixed(s.lon_deg, 4) + "°, " + fixed(s.height_m, 0) + " m";
+    $("station-loc").textContent = locator(s.lat_deg, s.lon_deg);
+  }
+  const g = st.gps;
+  $("gps").textContent = g ? g.text || g.link : "none";
+  $("clock-gps").textContent = g && typeof g.clock_error_s === "number" ? fixed(g.clock_error_s, 2) + " s from GPS time"
+                                                                         : "no GPS time";
+  drawList(st);
+}
+
+function locator(lat, lon) {
+  const A = "ABCDEFGHIJKLMNOPQRSTUVWX";
+  let x = lon + 180, y = lat + 90;
+  const f = A[Math.floor(x / 20)] + A[Math.floor(y / 10)];
+  x %= 20; y %= 10;
+  const sq = String(Math.floor(x / 2)) + String(Math.floor(y));
+  x %= 2; y %= 1;
+  return f + sq + A[Math.floor(x * 12)].toLowerCase() + A[Math.floor(y * 24)].toLowerCase();
+}
+
+const PROBLEMS = ["link-lost", "save-failed"];
+function addEvent(e, atTop) {
+  const li = document.createElement("li");
+  li.textContent = (e.time ? hhmm(e.time) + " " : "") + (e.event || e.kind) + (e.satellite ? " " + e.satellite : "") +
+                   (e.detail ? ": " + e.detail : "");
+  if (PROBLEMS.includes(e.event || e.kind)) li.className = "problem";
+  const list = $("events");
+  if (li.className === "problem" || atTop) list.prepend(li); else {
+    const firstPlain = [...list.children].find((c) => c.className !== "problem");
+    list.insertBefore(li, firstPlain || null);
+  }
+  while (list.children.length > 100) list.lastChild.remove();
+}
+
+async function post(path, body) {
+  $("reply").textContent = "…";
+  try {
+    const res = await fetch(path, { method: "POST", headers: { "Content-Type": "application/json" },
+                                    body: JSON.stringify(body), credentials: "same-origin" });
+    const j = await res.json();
+    if (res.status === 401) { location.href = "/login"; return; }
+    $("reply").textContent = res.ok ? j.note : j.error;
+  } catch (e) {
+    $("reply").textContent = "the station does not answer";
+  }
+}
+
+let ws = null, wait = 500;
+function connect() {
+  const proto = location.protocol === "https:" ? "wss:" : "ws:";
+  ws = new WebSocket(proto + "//" + location.host + "/api/v1/live");
+  ws.onopen = () => { $("link").textContent = "live"; $("link").className = ""; wait = 500; };
+  ws.onmessage = (m) => {
+    let j;
+    try { j = JSON.parse(m.data); } catch (e) { return; }
+    if (j.type === "state") { drawStatus(j.status); drawSky(j.sky); }
+    else if (j.type === "event") addEvent(j.event, false);
+    else if (j.type === "events") { $("events").replaceChildren(); (j.events || []).forEach((e) => addEvent(e, true)); }
+  };
+  ws.onclose = () => {
+    $("link").textContent = "reconnecting";
+    $("link").className = "bad";
+    setTimeout(start, wait);
+    wait = Math.min(wait * 2, 4000);
+  };
+}
+
+async function start() {
+  // Viewing may need the login: ask first, so that a refused feed goes to the login page.
+  try {
+    const res = await fetch("/api/v1/status", { credentials: "same-origin" });
+    if (res.status === 401) { location.href = "/login"; return; }
+  } catch (e) {
+    $("link").textContent = "reconnecting";
+    setTimeout(start, wait);
+    wait = Math.min(wait * 2, 4000);
+    return;
+  }
+  connect();
+}
+
+drawGrid();
+$("btn-rotor").addEventListener("click", () => post("/api/v1/rotor", { control: !rotorOn }));
+$("btn-stop").addEventListener("click", () => post("/api/v1/rotor", { action: "stop" }));
+$("btn-park").addEventListener("click", () => post("/api/v1/rotor", { action: "park" }));
+$("btn-doppler").addEventListener("click", () => post("/api/v1/radio", { doppler: !doppler }));
+$("btn-multi").addEventListener("click", () => post("/api/v1/track", { multi: true }));
+$("btn-refresh").addEventListener("click", () => post("/api/v1/elements/refresh", {}));
+start();

@@ -1,0 +1,69 @@
+// The web endpoint: HTTP/1.1 and WebSocket with Boost.Beast on the station's io_context (Beast
+// stays in server.cpp, the one file that pays for its templates). Each request is handed to
+// web::Api; the WebSocket /api/v1/live gets the live state at every push (once a second, and at
+// once after a change) and every event as it happens.
+//
+// Bounds (docs/security.md): request header 8 kB, body 16 kB, a request must arrive within 10 s,
+// at most 8 connections per address and 64 in all, --allow ranges checked at accept, a viewer more
+// than 16 messages behind is dropped (a slow client never holds the station).
+#pragma once
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "util/cidr.h"
+
+namespace boost::asio {
+class io_context;
+}
+
+namespace tb::web {
+
+class Api;
+
+struct ServerOptions {
+  std::string address = "127.0.0.1";
+  std::uint16_t port = 8073;
+  std::vector<inet::Cidr> allow;
+  std::size_t max_connections = 64;
+  std::size_t per_address = 8;
+  std::chrono::seconds request_timeout{10};
+  std::size_t header_limit = 8 * 1024;
+  std::size_t viewer_queue = 16;
+  std::chrono::milliseconds push_every{1000};
+};
+
+class Server {
+ public:
+  // Listens at once; throws std::runtime_error naming the address when it cannot.
+  Server(boost::asio::io_context& io, Api& api, ServerOptions o);
+  ~Server();
+  Server(const Server&) = delete;
+  Server& operator=(const Server&) = delete;
+
+  std::uint16_t port() const;
+  // Something changed: the viewers get the state now rather than at the next push.
+  void push_soon();
+  // A station event (tracker/events.h's JSON) to every viewer; the last 50 go to new viewers.
+  void publish_event(const nlohmann::json& event);
+
+  struct Stats {
+    std::size_t connections = 0;
+    std::size_t viewers = 0;
+    std::uint64_t refused = 0;   // by --allow or the connection bounds
+    std::uint64_t dropped = 0;   // slow viewers
+    std::uint64_t requests = 0;
+  };
+  Stats stats() const;
+
+  struct Impl;  // server.cpp's (its connections hold it)
+
+ private:
+  std::shared_ptr<Impl> impl_;
+};
+
+}  // namespace tb::web

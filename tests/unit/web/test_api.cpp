@@ -1,0 +1,219 @@
+// The web API's handling, without a socket: the simulated station on the shipped data, requests as
+// values. Who may do what (web/access.h), the endpoints of docs/web-api.md, bad input refused with
+// a 4xx and a sentence while the station goes on.
+#include <doctest/doctest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "support/sim_station.h"
+#include "web/api.h"
+#include "web/page.h"
+
+using namespace tb;
+using json = nlohmann::json;
+
+namespace {
+
+struct Web : testing::StationFixture {
+  explicit Web(web::AccessOptions o = {}) : access(o) {
+    build_station();
+    web::ApiHooks hooks;
+    hooks.status = [] { return json{{"running", true}}; };
+    hooks.save = [this] {
+      ++saves;
+      return std::optional<std::string>();
+    };
+    hooks.changed = [this] { ++changes; };
+    api = std::make_unique<web::Api>(*station, access, hooks);
+  }
+  web::Response get(const std::string& target, const std::string& host = "127.0.0.1:8073") {
+    web::Request r;
+    r.method = "GET";
+    r.target = target;
+    r.host = host;
+    r.peer = "127.0.0.1";
+    return api->handle(r, t);
+  }
+  web::Response post(const std::string& target, const std::string& body, const std::string& origin = "",
+                     const std::string& type = "application/json") {
+    web::Request r;
+    r.method = "POST";
+    r.target = target;
+    r.host = "127.0.0.1:8073";
+    r.origin = origin;
+    r.content_type = type;
+    r.body = body;
+    r.peer = peer;
+    r.cookie = cookie;
+    r.authorization = authorization;
+    return api->handle(r, t);
+  }
+  static std::string error_of(const web::Response& r) { return json::parse(r.body).at("error").get<std::string>(); }
+  web::Access access;
+  std::unique_ptr<web::Api> api;
+  std::chrono::steady_clock::time_point t{std::chrono::hours(1000)};
+  std::string peer = "127.0.0.1", cookie, authorization;
+  int saves = 0, changes = 0;
+};
+
+}  // namespace
+
+TEST_CASE("web: the page's files are compiled in and the first load is under 150 kB") {
+  const web::PageFile* index = web::find_page_file("/index.html");
+  REQUIRE(index != nullptr);
+  CHECK(index->type == "text/html; charset=utf-8");
+  CHECK(index->body.find("<svg id=\"sky\"") != std::string_view::npos);
+  REQUIRE(web::find_page_file("/app.js") != nullptr);
+  CHECK(web::find_page_file("/app.js")->type == "text/javascript; charset=utf-8");
+  CHECK(web::find_page_file("/nothing") == nullptr);
+  CHECK(web::first_load_bytes() > 5000);
+  CHECK(web::first_load_bytes() <= 150 * 1024);
+  MESSAGE("first load: " << web::first_load_bytes() << " bytes");
+}
+
+TEST_CASE("web: GET / serves the page; status carries the schema; unknown paths are 404 JSON") {
+  Web w;
+  const web::Response page = w.get("/");
+  CHECK(page.status == 200);
+  CHECK(page.content_type == "text/html; charset=utf-8");
+  const web::Response st = w.get("/api/v1/status");
+  CHECK(st.status == 200);
+  CHECK(json::parse(st.body) == json{{"running", true}, {"schema", web::kApiSchema}});
+  const web::Response none = w.get("/api/v1/nothing");
+  CHECK(none.status == 404);
+  CHECK(Web::error_of(none) == "no such endpoint: /api/v1/nothing");
+  // A Host that is not a loopback name (DNS rebinding) sees nothing.
+  CHECK(w.get("/api/v1/status", "evil.example:8073").status == 403);
+}
+
+TEST_CASE("web: security headers on every reply") {
+  const auto h = web::security_headers();
+  const auto has = [&h](const std::string& k, const std::string& part) {
+    for (const auto& [name, value] : h)
+      if (name == k && value.find(part) != std::string::npos) return true;
+    return false;
+  };
+  CHECK(has("Content-Security-Policy", "default-src 'self'"));
+  CHECK(has("Content-Security-Policy", "frame-ancestors 'none'"));
+  CHECK(has("X-Content-Type-Options", "nosniff"));
+}
+
+TEST_CASE("web: POST track, rotor and radio act through StationOps; bad input is a 4xx and changes nothing") {
+  Web w;
+  web::Response r = w.post("/api/v1/track", R"({"satellite":"ISS"})");
+  CHECK(r.status == 200);
+  CHECK(w.tracker.mode() == tracker::Mode::single);
+  CHECK(w.changes == 1);
+  r = w.post("/api/v1/rotor", R"({"control":true})");
+  CHECK(r.status == 200);
+  CHECK(w.model.rotor_control);
+  CHECK(w.saves >= 1);
+
+  CHECK(Web::error_of(w.post("/api/v1/track", R"({"satellite":"ISSS"})")) == "unknown satellite 'ISSS'");
+  CHECK(w.post("/api/v1/track", R"({"satellite":"ISSS"})").status == 409);
+  CHECK(w.post("/api/v1/track", R"({"satellite":42})").status == 400);
+  CHECK(w.post("/api/v1/rotor", R"({"control":"yes"})").status == 400);
+  CHECK(w.post("/api/v1/rotor", R"({"goto":{"az":"north","el":10}})").status == 400);
+  CHECK(Web::error_of(w.post("/api/v1/rotor", R"({"goto":{"az":400,"el":10}})")) ==
+        "azimuth 400 out of range: expected 0 to 360");
+  CHECK(w.post("/api/v1/radio", R"({"doppler":1})").status == 400);
+  CHECK(w.post("/api/v1/track", "not json").status == 400);
+  CHECK(w.post("/api/v1/track", "[1,2]").status == 400);
+  CHECK(w.post("/api/v1/track", std::string(1 << 20, '[')).status == 413);
+  CHECK(w.post("/api/v1/track", std::string(200, '[') + std::string(200, ']')).status == 400);
+  CHECK(w.post("/api/v1/track", R"({"satellite":"ISS"})", "", "text/plain").status == 415);
+  // A page of another site may not change anything, even on loopback.
+  CHECK(w.post("/api/v1/rotor", R"({"control":false})", "http://evil.example").status == 403);
+  CHECK(w.model.rotor_control);
+  // The station still tracks ISS.
+  w.run(2.0);
+  REQUIRE(w.tracker.followed() != nullptr);
+  CHECK(w.tracker.followed()->name == "ISS");
+
+  CHECK(w.post("/api/v1/radio", R"({"doppler":false})").status == 200);
+  CHECK_FALSE(w.station->doppler());
+  CHECK(w.post("/api/v1/rotor", R"({"action":"stop"})").status == 200);
+  CHECK(w.tracker.mode() == tracker::Mode::off);
+}
+
+TEST_CASE("web: passes of a satellite, checked against the pass search; bad hours and names refused") {
+  Web w;
+  w.run(0.2);
+  const web::Response r = w.get("/api/v1/passes?sat=ISS&hours=12");
+  REQUIRE(r.status == 200);
+  const json j = json::parse(r.body);
+  CHECK(j["satellite"] == "ISS");
+  const auto i = w.model.db.find("ISS");
+  const auto found = orbit::find_passes(*w.tracker.propagator(*i), w.model.station.observer(), w.tracker.last_tick_time(),
+                                        orbit::add_minutes(w.tracker.last_tick_time(), 720.0));
+  REQUIRE(j["passes"].size() == found.size());
+  REQUIRE_FALSE(found.empty());
+  CHECK(j["passes"][0]["aos"] == orbit::format_iso8601(found[0].aos));
+  CHECK(w.get("/api/v1/passes?sat=ISS&hours=abc").status == 400);
+  CHECK(w.get("/api/v1/passes?sat=ISS&hours=1000").status == 400);
+  CHECK(Web::error_of(w.get("/api/v1/passes?sat=NOPE")) == "unknown satellite 'NOPE'");
+  CHECK(w.get("/api/v1/passes?sat=%zz").status == 400);
+  CHECK(w.get("/api/v1/satellites").status == 200);
+}
+
+TEST_CASE("web: with a secret, changes need the bearer or a session with the page's Origin") {
+  web::AccessOptions o;
+  o.secret = "correct horse battery staple";
+  o.loopback_only = false;
+  Web w(o);
+  w.peer = "192.0.2.7";
+  CHECK(w.post("/api/v1/rotor", R"({"control":true})").status == 401);
+  CHECK(w.get("/api/v1/status").status == 401);  // no public view
+  w.authorization = "Bearer wrong";
+  CHECK(w.post("/api/v1/rotor", R"({"control":true})").status == 401);
+  // The guessing throttle: the next attempt at once is refused.
+  w.authorization = "Bearer correct horse battery staple";
+  CHECK(w.post("/api/v1/rotor", R"({"control":true})").status == 429);
+  w.t += std::chrono::seconds(2);
+  CHECK(w.post("/api/v1/rotor", R"({"control":true})").status == 200);
+  CHECK(w.model.rotor_control);
+  w.authorization.clear();
+
+  // The login page's form: a session cookie, HttpOnly and SameSite=Strict; the secret never echoed.
+  const web::Response bad = w.post("/login", "secret=nope", "http://127.0.0.1:8073", "application/x-www-form-urlencoded");
+  CHECK(bad.status == 303);
+  w.t += std::chrono::seconds(5);
+  const web::Response in = w.post("/login", "secret=correct+horse+battery+staple", "http://127.0.0.1:8073",
+                                  "application/x-www-form-urlencoded");
+  CHECK(in.status == 303);
+  std::string set_cookie;
+  for (const auto& [k, v] : in.headers)
+    if (k == "Set-Cookie") set_cookie = v;
+  CHECK(set_cookie.find("HttpOnly") != std::string::npos);
+  CHECK(set_cookie.find("SameSite=Strict") != std::string::npos);
+  CHECK(set_cookie.find("correct") == std::string::npos);
+  w.cookie = set_cookie.substr(0, set_cookie.find(';'));
+  // The session from another site (no Origin, or another one) changes nothing.
+  CHECK(w.post("/api/v1/rotor", R"({"control":false})").status == 403);
+  CHECK(w.post("/api/v1/rotor", R"({"control":false})", "http://evil.example").status == 403);
+  CHECK(w.model.rotor_control);
+  CHECK(w.post("/api/v1/rotor", R"({"control":false})", "http://127.0.0.1:8073").status == 200);
+  CHECK_FALSE(w.model.rotor_control);
+}
+
+TEST_CASE("web: the sky of a followed pass: the satellite now, the track from AOS to LOS, the plan") {
+  Web w;
+  const int iss = *w.model.db.find("ISS");
+  const auto pass = orbit::next_pass(*w.tracker.propagator(iss), w.model.station.observer(), w.now, 2.0);
+  REQUIRE(pass.has_value());
+  w.now = pass->tca;  // the middle of the next ISS pass
+  REQUIRE(w.post("/api/v1/track", R"({"satellite":"ISS"})").status == 200);
+  w.run(0.3);
+  const json sky = w.api->sky();
+  REQUIRE(sky["satellite"].is_object());
+  const tracker::SatNow* f = w.tracker.followed();
+  REQUIRE(f != nullptr);
+  CHECK(sky["satellite"]["az_el"][0].get<double>() == doctest::Approx(f->obs.look.az_deg).epsilon(0.001));
+  CHECK(sky["satellite"]["az_el"][1].get<double>() == doctest::Approx(f->obs.look.el_deg).epsilon(0.001));
+  REQUIRE(sky["pass"].is_object());
+  CHECK(sky["pass"]["aos"] == orbit::format_iso8601(f->pass->aos));
+  CHECK(sky["pass"]["track"].size() == 61);
+  CHECK(sky["pass"]["planned"].size() == sky["pass"]["track"].size());
+  CHECK(sky["pass"]["lost"].size() == sky["pass"]["track"].size());
+  CHECK(sky["antenna"].is_array());
+}
