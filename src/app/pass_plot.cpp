@@ -93,8 +93,7 @@ void draw_lost(cairo_t* cr, const PassPicture& p) {
   cairo_set_line_width(cr, 3.0);
   bool open = false;
   for (const auto& t : p.track) {
-    const rotator::AzEl a = p.plan->pointing_at(t.az_deg, t.el_deg);
-    const bool lost = rotator::azimuth_distance(a.az, t.az_deg) > 0.05 && t.el_deg < 89.5;
+    const bool lost = p.plan->lost_at(t.az_deg, t.el_deg);
     double x, y;
     plot_position(t.az_deg, std::max(t.el_deg, -2.0), x, y);
     if (lost && !open) cairo_move_to(cr, x, y);

@@ -273,6 +273,7 @@ std::string format_status(const nlohmann::json& s) {
   for (const auto& srv : s.value("servers", nlohmann::json::array())) {
     std::string l = "  server    " + srv.value("name", "") + " port " + std::to_string(srv.value("port", 0)) + ", " +
                     std::to_string(srv.value("clients", 0)) + " client(s)";
+    if (srv.contains("url")) l += ", " + srv.value("url", "");
     for (const auto& [key, value] : srv.items())
       if (key.rfind("refused", 0) == 0 || key == "wrong_secrets" || key == "lockouts" || key == "evicted" ||
           key == "dropped_slow")

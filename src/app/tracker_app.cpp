@@ -22,6 +22,7 @@
 #include "app/state_lock.h"
 #include "app/station_app.h"
 #include "app/status.h"
+#include "app/udp_events.h"
 #include "menus/menus.h"
 #include "menus/standalone.h"
 #include "menus/term/curses_terminal.h"
@@ -36,6 +37,9 @@
 #include "tracker/elements_refresh.h"
 #include "tracker/events.h"
 #include "tracker/station_loop.h"
+#include "web/access.h"
+#include "web/api.h"
+#include "web/server.h"
 
 namespace tb::app {
 namespace {
@@ -162,9 +166,15 @@ struct Servers {
   std::unique_ptr<netctl::RotctldServer> rotctld;
   std::unique_ptr<netctl::RigctldServer> rigctld;
   std::unique_ptr<netctl::HostServer> host;
+  // The web page and API (--http-port): who may do what, the requests' handler, the server.
+  std::unique_ptr<web::Access> web_access;
+  std::unique_ptr<web::Api> web_api;
+  std::unique_ptr<web::Server> web;
+  std::string web_url;
 
   // Closed before the last save; the Satrak unit after it (its settings are saved with the model).
   void close_listeners() {
+    web.reset();
     rotctld.reset();
     rigctld.reset();
     host.reset();
@@ -244,6 +254,7 @@ void warn_open_endpoints(const TrackerConfig& c, const Servers& s, spdlog::logge
   open_to_all("the rotctld server", c.listen, s.rotctld != nullptr);
   open_to_all("the rigctld server", c.listen, s.rigctld != nullptr);
   open_to_all("the host-mode server", c.listen, s.host != nullptr);
+  open_to_all("the web server", c.listen, s.web != nullptr);
 }
 
 // The operator's terminal: stdin/stdout for host mode, the serial port of --tty, curses on a
@@ -360,6 +371,17 @@ nlohmann::json servers_json(const Servers& s) {
   if (s.rotctld) line("rotctld", s.rotctld->server());
   if (s.rigctld) line("rigctld", s.rigctld->server());
   if (s.host) line("host", s.host->server());
+  if (s.web) {
+    const web::Server::Stats st = s.web->stats();
+    out.push_back({{"name", "web"},
+                   {"port", s.web->port()},
+                   {"url", s.web_url},
+                   {"clients", st.connections},
+                   {"viewers", st.viewers},
+                   {"requests", st.requests},
+                   {"refused", st.refused},
+                   {"dropped_slow", st.dropped}});
+  }
   return out;
 }
 
@@ -387,6 +409,43 @@ std::unique_ptr<AttachServer> open_socket(StationApp& app, const TrackerConfig& 
     std::fprintf(stderr, "trakbox: WARNING: no attach socket: %s\n", e.what());
     return nullptr;
   }
+}
+
+// The web page and API on the station's loop (src/web), when --http-port asks; the URL is said at
+// start and in `trakbox status`.
+std::optional<std::string> start_web(StationApp& app, const TrackerConfig& c, Servers& out, AttachServer* attach) {
+  if (!c.http_port) return std::nullopt;
+  web::AccessOptions ao;
+  ao.secret = c.http_secret;
+  ao.public_view = c.http_public_view;
+  ao.loopback_only = inet::is_loopback(c.listen);
+  out.web_access = std::make_unique<web::Access>(ao);
+  web::ApiHooks hooks;
+  hooks.status = [&app, &c, &out, attach] {
+    StatusContext cx{kVersion, c.state_dir.string(), {}, {}, c.service, [&out] { return servers_json(out); }};
+    if (attach) cx.attached = attach->attached(), cx.keyboard = attach->keyboard();
+    return station_status(app, cx);
+  };
+  hooks.save = [&app] { return app.save(); };
+  hooks.wall_now_unix = [] { return tracker::ElementsRefresh::wall_now(); };
+  hooks.changed = [&out] {
+    if (out.web) out.web->push_soon();
+  };
+  out.web_api = std::make_unique<web::Api>(app.station(), *out.web_access, std::move(hooks));
+  web::ServerOptions so;
+  so.address = c.listen;
+  so.port = static_cast<std::uint16_t>(*c.http_port);
+  so.allow = c.allow;
+  try {
+    out.web = std::make_unique<web::Server>(app.io(), *out.web_api, so);
+  } catch (const std::exception& e) {
+    return std::string("--http-port: ") + e.what();
+  }
+  const std::string host = c.listen.find(':') != std::string::npos ? "[" + c.listen + "]" : c.listen;
+  out.web_url = "http://" + host + ":" + std::to_string(out.web->port()) + "/";
+  app.log().info("web: the station's page is at {}", out.web_url);
+  std::fprintf(stderr, "trakbox: the station's page: %s\n", out.web_url.c_str());
+  return std::nullopt;
 }
 
 // What the command line sets over the stored state: --cross-limit-sector, the drivers
@@ -468,6 +527,7 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
     std::fprintf(stderr, "trakbox: WARNING: %s\n", w.c_str());
   }
   std::unique_ptr<AttachServer> attach = open_socket(app, c, *lock, servers);
+  if (auto err = start_web(app, c, servers, attach.get())) return usage_error(*err);
   if (c.service && c.tty) {
     // The box's serial port: the service's menus there as well, for good.
     if (!attach) return usage_error("--tty: the service's menus need its socket");
@@ -477,6 +537,12 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
     attach->add_serial(fd, *c.tty);
   }
   EventHooks hooks(app.io(), c.hooks, std::chrono::seconds(c.hook_timeout_s), *log);
+  std::unique_ptr<UdpEvents> udp;
+  try {
+    if (!c.udp_events.empty()) udp = std::make_unique<UdpEvents>(app.io(), c.udp_events, *log);
+  } catch (const std::exception& e) {
+    return usage_error(e.what());
+  }
   app.set_events(
       [&](const tracker::Event& e) {
         const nlohmann::json j = tracker::to_json(e);
@@ -484,6 +550,8 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
         log->info("event: {}{}", e.kind, e.satellite.empty() ? "" : " " + e.satellite);
         hooks.fire(e);
         if (attach) attach->publish(j);
+        if (servers.web) servers.web->publish_event(j);
+        if (udp) udp->send(j);
       },
       std::chrono::seconds(c.event_lead_s));
   app.start(std::chrono::milliseconds(c.tick_ms));

@@ -50,7 +50,13 @@ std::vector<OptionSpec> tracker_option_specs() {
       {"rotctld-port", "N", "answer the rotctld protocol on TCP port N (4533 by convention; off by default)"},
       {"rigctld-port", "N", "answer the rigctld protocol on TCP port N (4532 by convention; off by default)"},
       {"host-port", "N", "host mode (menu 7's commands) on TCP port N (off by default)"},
-      {"listen", "ADDR", "address the host, rotctld and rigctld servers listen on (default 127.0.0.1)"},
+      {"http-port", "N", "the web page and its API (docs/web-api.md) on TCP port N (the service's is 8073; off by "
+                         "default); beyond loopback only with --allow and --http-secret-file"},
+      {"http-secret-file", "FILE", "the web page's login and the API's Authorization: Bearer take the secret on "
+                                   "this file's first line"},
+      {"http-public-view", "", "with --http-secret-file: anyone allowed may view the page; changes still need the "
+                               "secret"},
+      {"listen", "ADDR", "address the host, rotctld, rigctld and web servers listen on (default 127.0.0.1)"},
       {"rotctld-secret-file", "FILE", "rotctld clients must first send \\password with the secret on this file's "
                                       "first line (never on the command line)"},
       {"rigctld-secret-file", "FILE", "rigctld clients must first send \\password with the secret in FILE"},
@@ -71,6 +77,8 @@ std::vector<OptionSpec> tracker_option_specs() {
       {"on-event", "[KIND,...=]CMD", "run CMD (with /bin/sh) on every event, or on the kinds named: aos, los, "
                                      "elements, link-lost, link-back, save-failed; the event is in its environment "
                                      "(TRAKBOX_EVENT, TRAKBOX_SATELLITE, TRAKBOX_AOS, ...; docs/service.md)", true},
+      {"udp-events", "HOST:PORT", "send each event as one JSON datagram (the fields of trakbox events) to HOST:PORT, "
+                                  "e.g. 192.168.1.20:9000 (repeatable)", true},
       {"hook-timeout", "S", "seconds an --on-event command may run before it is killed, 1 to 3600 (default 60)"},
       {"event-lead", "S", "the AOS event comes S seconds before AOS, 0 to 3600 (default 0)"},
       {"gps", "SPEC", "a GPS receiver through gpsd: gpsd (localhost:2947), gpsd:HOST or gpsd:HOST:PORT; none: no "
@@ -153,7 +161,8 @@ void read_secrets(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
   };
   const Endpoint endpoints[] = {{"rotctld-secret-file", "rotctld-port", c.rotctld_port.has_value(), c.rotctld_secret},
                                 {"rigctld-secret-file", "rigctld-port", c.rigctld_port.has_value(), c.rigctld_secret},
-                                {"host-secret-file", "host-port", c.host_port.has_value(), c.host_secret}};
+                                {"host-secret-file", "host-port", c.host_port.has_value(), c.host_secret},
+                                {"http-secret-file", "http-port", c.http_port.has_value(), c.http_secret}};
   for (const Endpoint& e : endpoints) {
     const auto path = o.value(e.option);
     if (!path) continue;
@@ -231,6 +240,17 @@ void read_allow(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
   }
 }
 
+// The web endpoint beyond loopback: only for the --allow ranges, and only with a secret.
+void check_web(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
+  c.http_public_view = o.has("http-public-view");
+  if (c.http_public_view && !o.has("http-secret-file"))
+    r.fail("--http-public-view", "only with --http-secret-file (without a secret everyone allowed may do anything)");
+  if (!c.http_port || inet::is_loopback(o.value("listen").value_or("127.0.0.1"))) return;
+  if (c.allow.empty() || !o.has("http-secret-file"))
+    r.fail("--http-port", "listening on " + o.value("listen").value_or("") +
+                              " (beyond loopback) needs --allow ranges and --http-secret-file (docs/security.md)");
+}
+
 // Front ends that cannot go together.
 void check_front_end(const ParsedOptions& o, OptionReader& r, FrontEnd front_end) {
   const bool service = o.has("service");
@@ -283,6 +303,7 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
   port("rotctld-port", c.rotctld_port);
   port("rigctld-port", c.rigctld_port);
   port("host-port", c.host_port);
+  port("http-port", c.http_port);
   if (const auto t = o.value("clock")) {
     c.clock_start = orbit::parse_iso8601(*t);
     if (!c.clock_start) r.fail("--clock", "expected an ISO 8601 UTC time like 2026-05-21T12:00:00Z; found '" + *t + "'");
@@ -304,6 +325,11 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
     if (auto hook = parse_event_hook(h, why)) c.hooks.push_back(std::move(*hook));
     else r.fail("--on-event", why);
   }
+  for (const std::string& u : o.values("udp-events")) {
+    std::string why;
+    if (auto t = parse_udp_target(u, why)) c.udp_events.push_back(std::move(*t));
+    else r.fail("--udp-events", why);
+  }
   if (const auto v = r.integer("hook-timeout", false, "seconds, 1 to 3600", Range{1, 3600}))
     c.hook_timeout_s = static_cast<int>(*v);
   if (const auto v = r.integer("event-lead", false, "seconds, 0 to 3600", Range{0, 3600}))
@@ -311,6 +337,7 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
   check_front_end(o, r, front_end);
   read_secrets(o, r, c);
   read_refresh(o, r, c);
+  check_web(o, r, c);
   if (!r.ok()) return ConfigOutcome::refuse(r.error()->text());
 
   c.tty = o.value("tty");

@@ -13,6 +13,7 @@
 
 #include "app/event_hooks.h"
 #include "app/options.h"
+#include "app/udp_events.h"
 #include "orbit/time.h"
 #include "radio/factory.h"
 #include "rotator/factory.h"
@@ -63,6 +64,11 @@ struct TrackerConfig {
   // Shared secrets of the rotctld, rigctld and host-mode servers (read from --*-secret-file; empty:
   // none) and how long a client has to give one.
   std::string rotctld_secret, rigctld_secret, host_secret;
+  // The web page and API (src/web): --http-port, its secret (--http-secret-file) and whether viewing
+  // needs it (--http-public-view).
+  std::optional<int> http_port;
+  std::string http_secret;
+  bool http_public_view = false;
   int auth_timeout_s = 10;
   // The scheduled element refresh: --elements-url (replaces the stored sources when given),
   // --elements-refresh-hours, --elements-timeout.
@@ -76,6 +82,7 @@ struct TrackerConfig {
   std::string socket;
   // --on-event hooks, their time limit (--hook-timeout) and the AOS event's lead (--event-lead).
   std::vector<EventHook> hooks;
+  std::vector<UdpTarget> udp_events;  // --udp-events HOST:PORT
   int hook_timeout_s = 60;
   int event_lead_s = 0;
   // --gps gpsd[:HOST[:PORT]] (canonical "gpsd:HOST:PORT") or none (""), --gps-follow, --gps-threshold:

@@ -1,0 +1,43 @@
+// --udp-events HOST:PORT (repeatable): each station event as one JSON datagram (the fields of
+// `trakbox events`, tracker::to_json), for a recorder or a logger on another computer. Sent without
+// waiting: a datagram that cannot go is logged once per destination, and the station goes on.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+namespace boost::asio {
+class io_context;
+}
+namespace spdlog {
+class logger;
+}
+
+namespace tb::app {
+
+struct UdpTarget {
+  std::string host;  // a name or an address (IPv6 without its brackets)
+  std::uint16_t port = 0;
+};
+// "HOST:PORT" or "[IPV6]:PORT"; nullopt with the reason otherwise.
+std::optional<UdpTarget> parse_udp_target(const std::string& text, std::string& error);
+
+class UdpEvents {
+ public:
+  // Resolves the destinations now; throws std::runtime_error naming one that cannot be resolved.
+  UdpEvents(boost::asio::io_context& io, const std::vector<UdpTarget>& targets, spdlog::logger& log);
+  ~UdpEvents();
+  UdpEvents(const UdpEvents&) = delete;
+  UdpEvents& operator=(const UdpEvents&) = delete;
+  void send(const nlohmann::json& event);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace tb::app

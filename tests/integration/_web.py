@@ -1,0 +1,137 @@
+"""Helpers for the web endpoint's tests (web_api.py, web_browser.py): a service with --http-port,
+HTTP requests with chosen headers, a minimal WebSocket client (standard library only), and
+`trakbox status --json`."""
+import base64
+import http.client
+import json
+import os
+import socket
+import struct
+import subprocess
+import tempfile
+import time
+
+from _tbharness import BIN, CLOCK, check, free_port, wait_listening
+
+
+class WebStation:
+    """trakbox --service on a fresh state directory, serving the web page on a free port."""
+
+    def __init__(self, *extra, port=None, state=None, clock=CLOCK, rate="1"):
+        self.state = state or tempfile.mkdtemp(prefix="trakbox-web-")
+        self.port = port or free_port()
+        self.args = [BIN, "--service", "--state", self.state, "--satrak-port", "0", "--clock", clock,
+                     "--clock-rate", rate, "--http-port", str(self.port)] + list(extra)
+        self.start()
+
+    def start(self):
+        self.proc = subprocess.Popen(self.args, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
+                                     stderr=subprocess.PIPE)
+        wait_listening(self.port, "the web server", within=20, proc=self.proc)
+
+    def stop(self):
+        if self.proc.poll() is None:
+            self.proc.terminate()
+            try:
+                self.proc.wait(30)
+            except subprocess.TimeoutExpired:
+                self.proc.kill()
+                self.proc.wait()
+        return self.proc.stderr.read().decode(errors="replace")
+
+    def alive(self):
+        return self.proc.poll() is None
+
+    def status(self):
+        r = subprocess.run([BIN, "status", "--state", self.state, "--json"], capture_output=True, text=True,
+                           timeout=20)
+        return json.loads(r.stdout)
+
+    def status_text(self):
+        return subprocess.run([BIN, "status", "--state", self.state], capture_output=True, text=True,
+                              timeout=20).stdout
+
+    def request(self, method, path, body=None, headers=None, host=None):
+        """(status, headers dict lower-cased, body bytes)."""
+        c = http.client.HTTPConnection("127.0.0.1", self.port, timeout=15)
+        h = {"Host": host or f"127.0.0.1:{self.port}"}
+        if body is not None and not isinstance(body, (bytes, str)):
+            body = json.dumps(body)
+            h["Content-Type"] = "application/json"
+        h.update(headers or {})
+        try:
+            c.request(method, path, body=body, headers=h)
+            r = c.getresponse()
+            return r.status, {k.lower(): v for k, v in r.getheaders()}, r.read()
+        finally:
+            c.close()
+
+    def get_json(self, path, **kw):
+        status, _, body = self.request("GET", path, **kw)
+        return status, json.loads(body)
+
+    def post(self, path, body, **kw):
+        status, _, got = self.request("POST", path, body=body, **kw)
+        return status, json.loads(got) if got else None
+
+
+class WebSocket:
+    """A client of /api/v1/live: text frames only, masked as RFC 6455 asks."""
+
+    def __init__(self, port, origin=None, path="/api/v1/live", headers=None):
+        self.sock = socket.create_connection(("127.0.0.1", port), timeout=15)
+        key = base64.b64encode(os.urandom(16)).decode()
+        lines = [f"GET {path} HTTP/1.1", f"Host: 127.0.0.1:{port}", "Upgrade: websocket", "Connection: Upgrade",
+                 f"Sec-WebSocket-Key: {key}", "Sec-WebSocket-Version: 13"]
+        if origin:
+            lines.append(f"Origin: {origin}")
+        lines += [f"{k}: {v}" for k, v in (headers or {}).items()]
+        self.sock.sendall(("\r\n".join(lines) + "\r\n\r\n").encode())
+        self.buf = b""
+        while b"\r\n\r\n" not in self.buf:
+            chunk = self.sock.recv(4096)
+            if not chunk:
+                break
+            self.buf += chunk
+        head, _, self.buf = self.buf.partition(b"\r\n\r\n")
+        self.status = int(head.split(b" ")[1]) if head else 0
+        self.head = head.decode(errors="replace")
+
+    def _read(self, n):
+        while len(self.buf) < n:
+            chunk = self.sock.recv(65536)
+            if not chunk:
+                raise ConnectionError("closed")
+            self.buf += chunk
+        out, self.buf = self.buf[:n], self.buf[n:]
+        return out
+
+    def message(self):
+        """The next text message (its fragments joined), as JSON."""
+        parts = []
+        while True:
+            b0, b1 = self._read(2)
+            n = b1 & 0x7F
+            if n == 126:
+                n = struct.unpack(">H", self._read(2))[0]
+            elif n == 127:
+                n = struct.unpack(">Q", self._read(8))[0]
+            payload = self._read(n)
+            op = b0 & 0x0F
+            if op == 8:
+                raise ConnectionError("closed by the server")
+            if op in (0, 1):
+                parts.append(payload)
+                if b0 & 0x80:
+                    return json.loads(b"".join(parts))
+
+    def state(self, within=10):
+        deadline = time.time() + within
+        while time.time() < deadline:
+            m = self.message()
+            if m.get("type") == "state":
+                return m
+        check(False, "a state message within %d s" % within)
+
+    def close(self):
+        self.sock.close()
