@@ -16,6 +16,8 @@ test_pkgs=(
   libhamlib-utils python3-sgp4 python3-skyfield gpredict socat tmux python3-pyftpdlib python3-pyflakes
   # the GPS receiver: gpsd and gpsfake (gpsd-clients) to test against (libgps-dev is a run package)
   gpsd gpsd-clients
+  # the web page's browser tests (tests/integration/web_browser.py)
+  chromium chromium-driver python3-selenium
   # the Debian package and its checks (scripts/package-check.sh), the completion test
   dpkg-dev lintian man-db groff-base systemd bash-completion
 )

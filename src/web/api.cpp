@@ -331,10 +331,17 @@ json Api::sky() {
     j["pass"] = nullptr;
     return j;
   }
-  json p = pass_json(*f->pass);
+  // A pass already up when tracking began: drawn from its real AOS (searched once per pass).
+  if (f->pass->up_at_start &&
+      !(real_pass_ && real_pass_->first == f->db_index && real_pass_->second.los == f->pass->los)) {
+    const auto real = tr.pass_at(f->db_index, tr.last_tick_time());
+    real_pass_ = std::make_pair(f->db_index, real && real->los == f->pass->los ? *real : *f->pass);
+  }
+  const orbit::Pass& pass = f->pass->up_at_start ? real_pass_->second : *f->pass;
+  json p = pass_json(pass);
   const rotator::PassPlan* plan = station_.current_plan();
   json track = json::array(), planned = json::array(), lost = json::array();
-  for (const orbit::Observation& o : tr.pass_track(f->db_index, *f->pass, 60)) {
+  for (const orbit::Observation& o : tr.pass_track(f->db_index, pass, 60)) {
     if (!o.ok()) continue;
     const double az = o.look.az_deg, el = std::max(o.look.el_deg, 0.0);
     track.push_back(az_el(az, el));

@@ -19,6 +19,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "orbit/passes.h"
 #include "web/access.h"
 
 namespace tb::tracker {
@@ -88,6 +89,7 @@ class Api {
   tracker::StationLoop& station_;
   Access& access_;
   ApiHooks hooks_;
+  std::optional<std::pair<int, orbit::Pass>> real_pass_;  // sky(): the followed pass from its AOS
 };
 
 // Pieces of a target, exposed for the tests: the path and a query parameter ("" when absent),
