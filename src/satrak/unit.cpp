@@ -9,6 +9,7 @@
 #include <spdlog/spdlog.h>
 
 #include "satrak/unit_internal.h"
+#include "tracker/operations.h"
 
 namespace tb::satrak {
 namespace fs = std::filesystem;
@@ -163,7 +164,7 @@ std::string Unit::dispatch(const Command& c) {
 // Antenna
 
 void Unit::take_control() {
-  if (!model_.rotor_control) station_.set_rotor_control(true);
+  if (!model_.rotor_control) tracker::StationOps(station_).rotor_control(true);
 }
 
 void Unit::take_antenna() {

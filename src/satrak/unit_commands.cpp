@@ -6,6 +6,7 @@
 
 #include "satrak/unit.h"
 #include "satrak/unit_internal.h"
+#include "tracker/operations.h"
 #include "util/text.h"
 
 namespace tb::satrak {
@@ -125,7 +126,7 @@ Unit::Reply Unit::cmd_stop(const Command& c) {
   auto_started_ = false;
   last_track_target_.reset();
   release();
-  station_.stop_antenna();
+  tracker::StationOps(station_).stop();
   return reply_ok(c.head());
 }
 
