@@ -42,6 +42,7 @@ function drawSky(sky) {
   place("sat", sky.satellite ? sky.satellite.az_el : null);
   $("sat").dataset.time = sky.time || "";
   place("antenna", sky.antenna);
+  $("ant-word").textContent = sky.antenna_state || "";
   place("target", sky.target);
   const p = sky.pass;
   $("track").setAttribute("points", p ? points(p.track) : "");
@@ -74,26 +75,31 @@ function countdown(iso, now) {
   return (h ? h + "h" : "") + String(m).padStart(h ? 2 : 1, "0") + "m" + String(r).padStart(2, "0") + "s";
 }
 
+// The rows are updated in place (a row rebuilt every second would swallow a tap made across a tick).
 function drawList(st) {
   const body = $("list").tBodies[0];
-  const rows = [];
-  for (const e of st.tracking_list || []) {
-    const tr = document.createElement("tr");
-    tr.dataset.name = e.name;
-    if (st.tracking && st.tracking.followed === e.name) tr.className = "tracked";
+  const list = st.tracking_list || [];
+  list.forEach((e, k) => {
+    let tr = body.rows[k];
+    if (!tr || tr.dataset.name !== e.name) {
+      const fresh = document.createElement("tr");
+      fresh.dataset.name = e.name;
+      for (let i = 0; i < 6; ++i) fresh.appendChild(document.createElement("td"));
+      fresh.addEventListener("click", () => post("/api/v1/track", { satellite: e.name }));
+      if (tr) body.replaceChild(fresh, tr); else body.appendChild(fresh);
+      tr = fresh;
+    }
+    tr.className = st.tracking && st.tracking.followed === e.name ? "tracked" : "";
     const np = e.next_pass;
     const cells = [e.number, e.name, np ? hhmm(np.aos) : "-", np ? fixed(np.max_el_deg, 0) + "°" : "-",
                    np ? (np.in_progress ? "up" : countdown(np.aos, st.time)) : "-", fixed(e.element_age_days, 1) + " d"];
     cells.forEach((c, i) => {
-      const td = document.createElement("td");
-      td.textContent = c;
-      if (i === 5 && e.elements_stale) td.className = "stale";
-      tr.appendChild(td);
+      const td = tr.cells[i];
+      if (td.textContent !== String(c)) td.textContent = c;
+      td.className = i === 5 && e.elements_stale ? "stale" : "";
     });
-    tr.addEventListener("click", () => post("/api/v1/track", { satellite: e.name }));
-    rows.push(tr);
-  }
-  body.replaceChildren(...rows);
+  });
+  while (body.rows.length > list.length) body.deleteRow(-1);
 }
 
 let doppler = true, rotorOn = false;
@@ -106,7 +112,7 @@ function drawStatus(st) {
   $("ant-az").textContent = a.position ? fixed(a.position.az_deg, 1) : "-";
   $("ant-el").textContent = a.position ? fixed(a.position.el_deg, 1) : "-";
   $("ant-target").textContent = a.target ? fixed(a.target.az_deg, 1) + "° az, " + fixed(a.target.el_deg, 1) + "° el" : "-";
-  $("ant-state").textContent = a.link !== "ok" ? "fault: " + (a.link_message || a.link) : (a.action || "hold") + (a.message ? " (" + a.message + ")" : "");
+  $("ant-state").textContent = a.link !== "ok" ? "fault: " + (a.link_message || a.link) : "(" + (a.action || "hold") + ")" + (a.message ? " " + a.message : "");
   rotorOn = !!a.rotor_control;
   $("rotor-control").textContent = rotorOn ? "on" : "off";
   $("btn-rotor").textContent = rotorOn ? "Rotor control off" : "Rotor control on";

@@ -204,6 +204,7 @@ TEST_CASE("web: the sky of a followed pass: the satellite now, the track from AO
   const auto pass = orbit::next_pass(*w.tracker.propagator(iss), w.model.station.observer(), w.now, 2.0);
   REQUIRE(pass.has_value());
   w.now = pass->tca;  // the middle of the next ISS pass
+  REQUIRE(w.post("/api/v1/rotor", R"({"control":true})").status == 200);
   REQUIRE(w.post("/api/v1/track", R"({"satellite":"ISS"})").status == 200);
   w.run(0.3);
   const json sky = w.api->sky();
@@ -222,4 +223,6 @@ TEST_CASE("web: the sky of a followed pass: the satellite now, the track from AO
   CHECK(sky["pass"]["planned"].size() == sky["pass"]["track"].size());
   CHECK(sky["pass"]["lost"].size() == sky["pass"]["track"].size());
   CHECK(sky["antenna"].is_array());
+  // Slewing from where it was to the pass: the word says so.
+  CHECK(sky["antenna_state"] == "moving");
 }
