@@ -111,6 +111,34 @@ def live(w):
     bad.close()
 
 
+def connection_bounds(w):
+    """Eight connections per address: the ninth is closed at once; the eight still work."""
+    import socket
+    held = [socket.create_connection(("127.0.0.1", w.port), timeout=5) for _ in range(8)]
+    try:
+        ninth = socket.create_connection(("127.0.0.1", w.port), timeout=5)
+        ninth.sendall(f"GET /api/v1/status HTTP/1.1\r\nHost: 127.0.0.1:{w.port}\r\n\r\n".encode())
+        try:
+            got = ninth.recv(100)
+        except ConnectionResetError:
+            got = b""
+        check(got == b"", f"a ninth connection from one address is closed: {got!r}")
+        ninth.close()
+        held[0].sendall(f"GET /api/v1/status HTTP/1.1\r\nHost: 127.0.0.1:{w.port}\r\n\r\n".encode())
+        check(held[0].recv(12).startswith(b"HTTP/1.1 200"), "the eight held ones are served")
+    finally:
+        for s in held:
+            s.close()
+    still_tracking(w, "nine connections")
+
+    def served():
+        try:
+            return w.get_json("/api/v1/status")[0] == 200
+        except (ConnectionError, OSError, ValueError):
+            return False
+    poll("served again once they closed", served, 10)
+
+
 def with_secret():
     secret_file = tempfile.mktemp(prefix="trakbox-web-secret-")
     with open(secret_file, "w") as f:
@@ -167,6 +195,7 @@ def main():
         endpoints(w)
         bad_input(w)
         live(w)
+        connection_bounds(w)
     finally:
         err = w.stop()
     check(f"the station's page: http://127.0.0.1:{w.port}/" in err, "the start message names the URL")
