@@ -41,6 +41,7 @@ void show_list(term::Terminal& t) {
   t.line(" 7. Radio CAT port configuration");
   t.line(" 8. Mic click configuration");
   t.line(" 9. Set default parameter");
+  t.line(" R. Rotor control (kept over a restart)");
 }
 
 }  // namespace
@@ -63,6 +64,7 @@ void menu_6_configuration(term::Terminal& t, Services& s) {
         case '7': menu_6_7_radio_cat(t, s); break;
         case '8': menu_6_8_mic_click(t, s); break;
         case '9': menu_6_9_default_parameter(t, s); break;
+        case 'R': menu_6_r_rotor_control(t, s); break;
         default: return MenuStep::unknown;
       }
     } catch (const cfg::Quit&) {

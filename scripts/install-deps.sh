@@ -18,6 +18,8 @@ test_pkgs=(
   gpsd gpsd-clients
   # the Debian package and its checks (scripts/package-check.sh), the completion test
   dpkg-dev lintian man-db groff-base systemd bash-completion
+  # what a one-shot command asks the kernel for (one_shot_ports.py: no bind)
+  strace
 )
 case "$what" in
   run) pkgs=("${run_pkgs[@]}") ;;
