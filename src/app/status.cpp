@@ -231,19 +231,23 @@ std::vector<std::string> status_problems(const nlohmann::json& s) {
     if (g.value("link", "") != "receiving") out.push_back("GPS: " + g.value("status_word", g.value("link", "")));
     else if (g.value("clock_warned", false)) out.push_back("GPS: " + g.value("status_word", std::string("clock off GPS time")));
   }
-  // Element sets past the age their orbits allow: the positions are unreliable (the service's status
-  // line says so too; issue 39).
+  // The satellites tracked now on element sets past the age their orbits allow: the antenna is
+  // pointed by unreliable positions (issue 39). A stale set elsewhere in the list is shown (STALE),
+  // not counted: it moves nothing.
+  std::vector<std::string> tracked;
+  for (const auto& c : s.at("tracking").value("satellites", nlohmann::json::array())) tracked.push_back(c.value("name", ""));
   int stale = 0;
   double oldest = 0.0;
   for (const auto& e : s.value("tracking_list", nlohmann::json::array()))
-    if (e.value("elements_stale", false)) {
+    if (e.value("elements_stale", false) &&
+        std::find(tracked.begin(), tracked.end(), e.value("name", "")) != tracked.end()) {
       ++stale;
       oldest = std::max(oldest, e.value("element_age_days", 0.0));
     }
   if (stale > 0) {
     char buf[160];
-    std::snprintf(buf, sizeof buf, "elements of %d satellite(s) of the tracking list too old (up to %.1f days): "
-                                   "refresh them (menu 3-5, --elements-url)", stale, oldest);
+    std::snprintf(buf, sizeof buf, "elements of %d tracked satellite(s) too old (up to %.1f days): refresh them "
+                                   "(menu 3-5, --elements-url)", stale, oldest);
     out.push_back(buf);
   }
   if (s.at("elements_refresh").value("last_failed", false))
