@@ -52,6 +52,9 @@ void show_list(term::Terminal& t) {
 void menu_6_configuration(term::Terminal& t, Services& s) {
   run_menu(t, [&] { show_list(t); }, " Select: ", [&](char key) {
     if (key == 'Q') return MenuStep::back;
+    // Esc at any line prompt of an item leaves it with nothing changed, as Q does (issue 39): the
+    // items edit copies and commit only at their end.
+    EscapeLeaves esc(t);
     try {
       switch (key) {
         case '0': menu_6_0_display(t, s); break;
@@ -69,6 +72,9 @@ void menu_6_configuration(term::Terminal& t, Services& s) {
       }
     } catch (const cfg::Quit&) {
       t.end_live();
+    } catch (const Escaped&) {
+      t.end_live();
+      t.line("Not changed.");
     }
     return MenuStep::again;
   });

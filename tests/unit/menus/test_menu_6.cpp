@@ -141,6 +141,12 @@ TEST_CASE("Menu 6 scripts: the keys typed, what the screen shows, what the model
        .saves = 0,
        .then = [](Fixture& f, const store::Model& was) { CHECK(f.model.rotator == was.rotator); }},
 
+      {.name = "6-2: Esc at a value leaves the span as it was (issue 39)",
+       .keys = "2\r9\r\x1bQ\r",
+       .shown = {"Not changed.\n"},
+       .saves = 0,
+       .then = [](Fixture& f, const store::Model& was) { CHECK(f.model.rotator == was.rotator); }},
+
       {.name = "6-1: both points at the same place are refused",
        .keys = "1\rYYQ\r",
        .setup = [](Fixture& f) {
