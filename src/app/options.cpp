@@ -56,6 +56,7 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
 // "unknown option; did you mean --rotator?" when one option is within two edits (a typo), or
 // when the word is the start of exactly one.
 std::string unknown_option(std::string_view name, const std::vector<OptionSpec>& specs) {
+  if (name.size() > 40) return "unknown option";  // no option is that long: no guess (and no cost)
   const OptionSpec* best = nullptr;
   std::size_t best_d = 3;
   int prefixed = 0;
