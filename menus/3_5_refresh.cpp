@@ -30,7 +30,12 @@ void show_refresh(term::Terminal& t, const store::RefreshSettings& r, const trac
   std::snprintf(every, sizeof every, " Every %.1f hours (at least 2).", r.interval_hours);
   t.line(every);
   if (live) {
-    if (live->running()) t.line(" Last refresh: running now");
+    // A refresh running again after one that failed: the failure the status line shows is said too.
+    if (live->running())
+      t.line(" Refresh: running now" + (live->last_result().empty()
+                                            ? std::string()
+                                            : std::string("; the last one ") + (live->last_failed() ? "FAILED " : "ok ") +
+                                                  live->last_result()));
     else if (!live->last_result().empty()) {
       t.line(std::string(" Last refresh: ") + (live->last_failed() ? "FAILED " : "ok ") + live->last_result());
       // What the operator can do about it (issue 30): the database is not left silently stale.

@@ -20,13 +20,22 @@ std::string fmt(const char* f, A... v) {
 }  // namespace
 
 namespace {
-// A latitude or longitude: a signed number of degrees or one with its hemisphere's letter.
-double edit_degrees(term::Terminal& t, std::string_view label, double current, char pos, char neg, double limit) {
+// A latitude or longitude: a signed number of degrees or one with its hemisphere's letter. With
+// `locator_lon`, a Maidenhead locator is taken too (as `passes --station` takes it): its centre's
+// latitude is the answer, its longitude goes to *locator_lon.
+double edit_degrees(term::Terminal& t, std::string_view label, double current, char pos, char neg, double limit,
+                    std::optional<double>* locator_lon = nullptr) {
   double result = current;
   edit_text(t, label, fmt("%+.3f", current), [&](const std::string& a) -> std::optional<std::string> {
+    if (locator_lon)
+      if (const auto centre = station::maidenhead_centre(a)) {
+        result = centre->lat_deg;
+        *locator_lon = centre->lon_deg;
+        return std::nullopt;
+      }
     const auto v = station::parse_hemisphere_degrees(a, pos, neg);
     if (!v) return "'" + a + "' is not a number of degrees (a sign, or " + std::string(1, pos) + " or " +
-                   std::string(1, neg) + " after it)";
+                   std::string(1, neg) + " after it)" + (locator_lon ? " nor a locator (JN18du)" : "");
     if (std::abs(*v) > limit) return a + fmt(" is out of range: expected %g to %g", -limit, limit);
     result = *v;
     return std::nullopt;
@@ -56,8 +65,15 @@ void edit_station_elements(term::Terminal& t, Services& s) {
   for (auto& c : st.callsign) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   // trakbox's hint (issue 30): which sign is north and east (PREDICT counts longitude west), and
   // that N, S, E, W after the number work too.
-  t.line("  (+ north / - south, + east / - west; or 48.85N, 2.35E, 122.4W)");
-  st.lat_deg = edit_degrees(t, "Latitude  [deg]   ", st.lat_deg, 'N', 'S', 90.0);
+  t.line("  (+ north / - south, + east / - west; or 48.85N, 2.35E, 122.4W; or a locator: JN18du)");
+  std::optional<double> locator_lon;
+  st.lat_deg = edit_degrees(t, "Latitude  [deg]   ", st.lat_deg, 'N', 'S', 90.0, &locator_lon);
+  if (locator_lon) {
+    // A locator gives both: its centre; Enter at the longitude keeps it.
+    st.lon_deg = *locator_lon;
+    t.line(fmt("  locator: the centre of its square, %.6f %c %.6f %c", std::abs(st.lat_deg), st.lat_deg < 0 ? 'S' : 'N',
+               std::abs(st.lon_deg), st.lon_deg < 0 ? 'W' : 'E'));
+  }
   st.lon_deg = edit_degrees(t, "Longitude [deg]   ", st.lon_deg, 'E', 'W', 180.0);
   st.height_m = edit_number(t, "Height    [m]     ", st.height_m, fmt("%.3f", st.height_m), -500.0, 9000.0);
   const std::string rs = edit_text(t, "Rotor start [N/S] ", station::to_string(st.rotor_start),

@@ -58,7 +58,8 @@ void menu_6_1_calibration(term::Terminal& t, Services& s) {
     return rotator::format_monitor_line(st.az.counts, old.az_deg_from_raw(st.az.counts), st.el.counts,
                                         old.el_deg_from_raw(st.el.counts));
   };
-  cfg::take_rotor_control(t, s);
+  // Rotor control is taken by the first key that moves the antenna, not by opening 6-1: a stray
+  // '1' (a key misrouted after a resize) must not switch on a real antenna (issue 39).
   t.line("Left(4),Right(6),Up(8),Dwn(2),Stop(5) move the antenna (or its own control box); Y when it is there.");
   struct Point {
     const char* where;
@@ -73,18 +74,17 @@ void menu_6_1_calibration(term::Terminal& t, Services& s) {
   for (int i = 0; i < 2; ++i) {
     t.line(points[i].where);
     cfg::LiveMonitor m(t, s, {points[i].prompt}, monitor);
-    bool said_off = false;
     for (;;) {
       const int k = m.key();
       if (k == term::kTimeout || k < 0) continue;
       const char c = static_cast<char>(std::toupper(k));
       if (c == '4' || c == '6' || c == '8' || c == '2' || c == '5') {
-        if (s.station.rotor_control()) {
-          s.station.rotator().manual_key(c);
-        } else if (!said_off) {
-          m.note("Rotor control is OFF: the keys do not move the antenna.");
-          said_off = true;
+        if (!s.station.rotor_control() && c != '5') {
+          s.station.set_rotor_control(true);  // the operator's key to move it: explicit
+          m.note("Rotor control switched ON (E key in the realtime display switches it OFF).");
+          if (const auto err = s.save()) m.note("State not saved: " + *err);
         }
+        if (s.station.rotor_control()) s.station.rotator().manual_key(c);
         continue;
       }
       if (c == 'Y') {
@@ -102,8 +102,8 @@ void menu_6_1_calibration(term::Terminal& t, Services& s) {
           cal.record_max(*raw);
         break;
       }
-      if (c == 'N' || c == 'Q') {
-        m.set_below({std::string(points[i].prompt) + c});
+      if (c == 'N' || c == 'Q' || k == term::kEscape) {  // Esc leaves unchanged, as N does (issue 39)
+        m.set_below({std::string(points[i].prompt) + (k == term::kEscape ? 'N' : c)});
         m.end();
         s.station.stop_antenna();
         t.line("Not changed.");

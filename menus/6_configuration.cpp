@@ -41,6 +41,7 @@ void show_list(term::Terminal& t) {
   t.line(" 7. Radio CAT port configuration");
   t.line(" 8. Mic click configuration");
   t.line(" 9. Set default parameter");
+  t.line(" R. Rotor control (kept over a restart)");
 }
 
 }  // namespace
@@ -51,6 +52,9 @@ void show_list(term::Terminal& t) {
 void menu_6_configuration(term::Terminal& t, Services& s) {
   run_menu(t, [&] { show_list(t); }, " Select: ", [&](char key) {
     if (key == 'Q') return MenuStep::back;
+    // Esc at any line prompt of an item leaves it with nothing changed, as Q does (issue 39): the
+    // items edit copies and commit only at their end.
+    EscapeLeaves esc(t);
     try {
       switch (key) {
         case '0': menu_6_0_display(t, s); break;
@@ -63,10 +67,14 @@ void menu_6_configuration(term::Terminal& t, Services& s) {
         case '7': menu_6_7_radio_cat(t, s); break;
         case '8': menu_6_8_mic_click(t, s); break;
         case '9': menu_6_9_default_parameter(t, s); break;
+        case 'R': menu_6_r_rotor_control(t, s); break;
         default: return MenuStep::unknown;
       }
     } catch (const cfg::Quit&) {
       t.end_live();
+    } catch (const Escaped&) {
+      t.end_live();
+      t.line("Not changed.");
     }
     return MenuStep::again;
   });

@@ -29,6 +29,7 @@ void menu_6_6_3_presets(term::Terminal& t, Services& s);
 void menu_6_7_radio_cat(term::Terminal& t, Services& s);
 void menu_6_8_mic_click(term::Terminal& t, Services& s);
 void menu_6_9_default_parameter(term::Terminal& t, Services& s);
+void menu_6_r_rotor_control(term::Terminal& t, Services& s);  // trakbox's own: rotor control, stored
 
 // The 6-0 display, one string a line (without "Press any key to continue").
 std::vector<std::string> configuration_lines(const store::Model& m);

@@ -68,6 +68,12 @@ std::string edit_text(term::Terminal& t, std::string_view label, std::string_vie
     t.write("  ");
     t.flush();
     std::string answer = trim(read_line(t));
+    if (t.last_line_had_non_ascii()) {
+      // Refused, not kept without the letters the terminal could not give ("PRIS" for "Pàris").
+      t.line("  only ASCII characters are taken here (A-Z, a-z, 0-9 and punctuation): '" + answer +
+             "' is what is left; not changed");
+      continue;
+    }
     if (answer.empty()) return std::string(current);
     if (validate) {
       if (auto err = validate(answer)) {
@@ -140,7 +146,14 @@ std::optional<int> choose_satellite(term::Terminal& t, std::string_view title, c
   for (;;) {
     t.write("     Select :");
     t.flush();
-    const std::string a = trim(read_line(t));
+    // Esc leaves the list with nothing chosen, as Q does (issue 39), rather than being typed.
+    std::string a;
+    try {
+      EscapeLeaves esc(t);
+      a = trim(read_line(t));
+    } catch (const Escaped&) {
+      return std::nullopt;
+    }
     if (a.empty()) {
       if (marked_index >= 0 && marked_index < static_cast<int>(names.size())) return marked_index;
       continue;

@@ -66,7 +66,12 @@ const char* kHeader2 = "HH:MM:SS     deg     deg       Km       Km    deg    deg
 
 term::Graphics pass_graphics(Services& s, const tracker::SatNow& n) {
   term::Graphics g;
-  g.title = n.name + (n.pass ? "  pass " + format_time(n.pass->aos) + "-" + format_time(n.pass->los) : "");
+  // A satellite that stays up (geostationary) has no AOS or LOS to show.
+  const bool always_up = n.pass && n.pass->up_at_start && n.pass->up_at_end;
+  g.title = n.name + (always_up ? "  always up"
+                      : n.pass  ? "  pass " + format_time(n.pass->aos) + "-" +
+                                     (n.pass->up_at_end ? std::string("...") : format_time(n.pass->los))
+                                : "");
   if (n.pass) {
     const double minutes = orbit::minutes_between(n.pass->aos, n.pass->los);
     for (const auto& o : s.tracker.pass_track(n.db_index, *n.pass, std::clamp(static_cast<int>(minutes * 2), 2, 240)))
@@ -85,6 +90,11 @@ term::Graphics pass_graphics(Services& s, const tracker::SatNow& n) {
 
 std::string describe_pass(const std::string& name, const orbit::Pass& p) {
   char buf[200];
+  if (p.up_at_start && p.up_at_end) {
+    std::snprintf(buf, sizeof buf, "%s: always up, az %.1f el %.1f: no AOS or LOS", name.c_str(), p.aos_az_deg,
+                  p.max_el_deg);
+    return buf;
+  }
   std::snprintf(buf, sizeof buf, "%s: pass %s AOS %s az %.1f, max el %.1f at %s az %.1f, LOS %s az %.1f", name.c_str(),
                 format_date(p.aos).c_str(), format_time(p.aos).c_str(), p.aos_az_deg, p.max_el_deg,
                 format_time(p.tca).c_str(), p.tca_az_deg, format_time(p.los).c_str(), p.los_az_deg);

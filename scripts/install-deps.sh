@@ -20,6 +20,8 @@ test_pkgs=(
   chromium chromium-driver python3-selenium
   # the Debian package and its checks (scripts/package-check.sh), the completion test
   dpkg-dev lintian man-db groff-base systemd bash-completion
+  # what a one-shot command asks the kernel for (one_shot_ports.py: no bind)
+  strace
 )
 case "$what" in
   run) pkgs=("${run_pkgs[@]}") ;;

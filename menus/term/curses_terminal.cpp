@@ -4,8 +4,10 @@
 #include <clocale>
 #include <cstdlib>
 #include <cmath>
+#include <cstdio>
 #include <curses.h>
 #include <numbers>
+#include <sys/ioctl.h>
 #include <unistd.h>
 
 namespace tb::term {
@@ -139,8 +141,17 @@ struct CursesTerminal::Impl {
   std::string status_text;
   bool colors = false;
   bool closed = false;  // Ctrl-C was typed
+  bool too_small = false;  // the "terminal too small" message is on the screen
 
   void layout() {
+    // A resize keeps what the text window shows (the prompt waiting in it above all).
+    if (text && status && LINES > 1) {
+      wresize(text, LINES - 1, COLS);
+      wresize(status, 1, COLS);
+      mvwin(status, LINES - 1, 0);
+      live_y = -1;
+      return;
+    }
     if (text) delwin(text);
     if (status) delwin(status);
     text = newwin(LINES - 1, COLS, 0, 0);
@@ -256,6 +267,29 @@ void CursesTerminal::clear() {
 
 void CursesTerminal::flush() {
   impl_->select();
+  // Under 80x24 the menus and the realtime display would wrap mid-word: one message instead, and
+  // the screen as it was once the terminal is large enough again (issue 39). Keys still go to the
+  // prompt that waits; nothing is lost.
+  if (COLS < kMinColumns || LINES < kMinRows) {
+    impl_->too_small = true;
+    WINDOW* all = newwin(LINES, COLS, 0, 0);
+    if (!all) return;
+    char msg[96];
+    std::snprintf(msg, sizeof msg, "terminal too small (needs %dx%d, is %dx%d): make it larger", kMinColumns, kMinRows,
+                  COLS, LINES);
+    werase(all);
+    wmove(all, 0, 0);
+    waddnstr(all, msg, -1);  // wrapped by curses if even this does not fit
+    wnoutrefresh(all);
+    doupdate();
+    delwin(all);
+    return;
+  }
+  if (impl_->too_small) {
+    impl_->too_small = false;
+    clearok(curscr, TRUE);
+    touchwin(impl_->text);
+  }
   wnoutrefresh(impl_->text);
   impl_->draw_status();
   wnoutrefresh(impl_->text);  // leave the cursor in the text window
@@ -348,6 +382,15 @@ int CursesTerminal::next_key(std::optional<Duration> timeout) {
   const auto deadline = timeout ? std::optional(std::chrono::steady_clock::now() + *timeout) : std::nullopt;
   for (;;) {
     impl_->select();
+    // The terminal's size as the kernel has it: ncurses' own SIGWINCH handling has been seen to miss
+    // a resize while the loop waits (issue 39), so the screen is laid out again here when it changed.
+    if (winsize ws{}; ::ioctl(STDOUT_FILENO, TIOCGWINSZ, &ws) == 0 && ws.ws_row > 0 && ws.ws_col > 0 &&
+                      (ws.ws_row != LINES || ws.ws_col != COLS)) {
+      resize_term(ws.ws_row, ws.ws_col);
+      impl_->layout();
+      clearok(curscr, TRUE);
+      flush();
+    }
     const int ch = wgetch(impl_->text);
     if (ch != ERR) {
       switch (ch) {
@@ -369,11 +412,12 @@ int CursesTerminal::next_key(std::optional<Duration> timeout) {
           continue;  // function keys the menus do not use
       }
     }
-    std::optional<Duration> left;
+    // Waits of at most a quarter second: a resize is seen (above) while no key comes.
+    std::optional<Duration> left = std::chrono::milliseconds(250);
     if (deadline) {
       const auto now = std::chrono::steady_clock::now();
       if (now >= *deadline) return kTimeout;
-      left = *deadline - now;
+      left = std::min<Duration>(*deadline - now, *left);
     }
     if (impl_->wait) impl_->wait(STDIN_FILENO, left);
   }

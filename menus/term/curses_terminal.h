@@ -11,6 +11,10 @@ struct screen;  // ncurses' SCREEN
 
 namespace tb::term {
 
+// The least screen the menus are drawn for; a smaller one shows "terminal too small" instead.
+inline constexpr int kMinColumns = 80;
+inline constexpr int kMinRows = 24;
+
 class CursesTerminal final : public Terminal {
  public:
   // Takes over the controlling terminal (stdin/stdout). Restores it on destruction.

@@ -34,6 +34,7 @@ int Terminal::read_key(std::optional<Duration> timeout) {
 
 std::optional<std::string> Terminal::read_line(std::size_t max_length) {
   std::string text;
+  non_ascii_ = false;
   for (;;) {
     const int k = read_key();
     if (k == kEndOfInput) return std::nullopt;
@@ -59,6 +60,7 @@ std::optional<std::string> Terminal::read_line(std::size_t max_length) {
       }
       continue;
     }
+    if (k >= 128 && k <= 255) non_ascii_ = true;  // a byte of a UTF-8 character: not taken, and said
     if (k < 32 || k > 126 || text.size() >= max_length) continue;  // ignore controls, overlong input
     text.push_back(static_cast<char>(k));
     if (echo_) write(std::string_view(&text.back(), 1));

@@ -91,6 +91,10 @@ class Terminal {
   // A line, echoed as typed, Backspace/DEL edit, Enter (CR, LF or CRLF) ends it.
   // nullopt when input closed. Ctrl-Z alone returns "\x1a"; Esc, when escape_leaves(), "\x1b".
   std::optional<std::string> read_line(std::size_t max_length = 80);
+  // The last read_line was typed with characters outside printable ASCII (a UTF-8 letter such as
+  // 'a' with a grave): they are not in its text, so the prompt refuses the answer rather than keep
+  // it mangled ("Paris" for "Pàris").
+  bool last_line_had_non_ascii() const { return non_ascii_; }
   // A single key for [Y/N]-style questions: echoes it and a newline; upper-cased. With `accept`,
   // other keys are ignored; Enter returns '\r' (echoing a newline) when allow_enter, else it is
   // ignored. nullopt when input closed.
@@ -109,6 +113,7 @@ class Terminal {
   std::vector<int> pending_;  // keys read ahead
   bool echo_ = true;
   bool escape_leaves_ = false;      // read_line returns "\x1b" for Esc
+  bool non_ascii_ = false;          // the last read_line dropped bytes 128..255
   bool last_was_cr_ = false;        // the LF of a CR LF pair is dropped
   bool enter_ends_choice_ = false;  // the last key answered read_choice: an Enter now ends that answer
 };

@@ -302,7 +302,16 @@ int run_status(const std::vector<std::string>& args) {
   std::optional<ClientArgs> a;
   int code = kExitOk;
   const int fd = request("status", args, a, code);
-  if (fd < 0) return code;
+  if (fd < 0) {
+    // --json always prints a document, for a script reading stdout (issue 39): not running.
+    if (a && a->options.has("json") && code == kStatusNotRunning)
+      std::fputs((nlohmann::json{{"schema", kStatusSchema}, {"running", false}, {"socket", a->socket}, {"healthy", false}}
+                      .dump(2) +
+                  "\n")
+                     .c_str(),
+                 stdout);
+    return code;
+  }
   const auto text = read_to_end(fd);
   ::close(fd);
   const nlohmann::json doc = text ? nlohmann::json::parse(*text, nullptr, false) : nlohmann::json();

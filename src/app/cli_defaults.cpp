@@ -14,12 +14,6 @@
 namespace tb::app {
 namespace {
 
-std::string upper(std::string_view s) {
-  std::string r(s);
-  for (char& c : r) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return r;
-}
-
 // The value with the hemisphere's sign, and whether a letter was written.
 std::optional<double> signed_degrees(std::string_view item, char pos, char neg, bool& letter) {
   const std::string_view t = text::trim(item);
@@ -44,31 +38,7 @@ bool is_locator(std::string_view s) { return maidenhead_centre(s).has_value(); }
 
 }  // namespace
 
-std::optional<orbit::Observer> maidenhead_centre(std::string_view loc) {
-  if (loc.size() != 4 && loc.size() != 6 && loc.size() != 8) return std::nullopt;
-  const std::string u = upper(loc);
-  auto in = [](char c, char lo, char hi) { return c >= lo && c <= hi; };
-  if (!in(u[0], 'A', 'R') || !in(u[1], 'A', 'R') || !in(u[2], '0', '9') || !in(u[3], '0', '9')) return std::nullopt;
-  // Field 20 x 10 degrees, square 2 x 1, subsquare 5' x 2.5' (24 letters), extended 30" x 15" (10 digits).
-  double lon = -180.0 + (u[0] - 'A') * 20.0 + (u[2] - '0') * 2.0;
-  double lat = -90.0 + (u[1] - 'A') * 10.0 + (u[3] - '0') * 1.0;
-  double w = 2.0, h = 1.0;
-  if (u.size() >= 6) {
-    if (!in(u[4], 'A', 'X') || !in(u[5], 'A', 'X')) return std::nullopt;
-    w /= 24.0;
-    h /= 24.0;
-    lon += (u[4] - 'A') * w;
-    lat += (u[5] - 'A') * h;
-  }
-  if (u.size() == 8) {
-    if (!in(u[6], '0', '9') || !in(u[7], '0', '9')) return std::nullopt;
-    w /= 10.0;
-    h /= 10.0;
-    lon += (u[6] - '0') * w;
-    lat += (u[7] - '0') * h;
-  }
-  return orbit::Observer{lat + h / 2.0, lon + w / 2.0, 0.0};
-}
+std::optional<orbit::Observer> maidenhead_centre(std::string_view loc) { return station::maidenhead_centre(loc); }
 
 Parsed<orbit::Observer> parse_station_text(std::string_view text) {
   const std::string expected =

@@ -1,6 +1,7 @@
 // trakbox next [SAT...]: PREDICT's `predict -p` for the station the menus know. The next pass of
 // each satellite (the tracking list when none is named), one line each, soonest first; --watch
 // redraws the lines every second with the time to AOS (or to LOS while a satellite is up).
+#include <sys/ioctl.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -31,7 +32,8 @@ const std::vector<OptionSpec> kNextSpecs{
     {"state", "DIR", "the state the menus keep (default as for the menus): station, database, tracking list"},
     {"elements", "FILE", "an element file instead of the stored database"},
     {"start", "ISO8601|now|+2h", "look from this time (default now)"},
-    {"min-el", "DEG", "only passes whose maximum elevation reaches DEG (default: all)"},
+    {"min-el", "DEG", "only passes whose maximum elevation reaches DEG (default 0: a pass that never rises is no "
+                      "pass)"},
     {"watch", "", "redraw every second with the time to AOS or LOS, until interrupted"},
     no_checksum_option(),
     {"help", "", "show this help"}};
@@ -42,9 +44,9 @@ const char* const kNextUsage =
     "\n"
     "The next pass of each satellite over the station, one line each, soonest first (PREDICT's -p):\n"
     "AOS (at -2.0 deg, the manual's rule) with its azimuth and the time until it, TCA with the maximum\n"
-    "elevation, LOS with its azimuth. A satellite already up shows the pass it is in. SAT is a name\n"
-    "(any case) or catalog number of the database; without SAT, the tracking list (menu 3-2).\n"
-    "Nothing within 10 days: 'no pass'.\n\noptions:\n";
+    "elevation, LOS with its azimuth. A satellite already up shows the pass it is in; one that stays up\n"
+    "(geostationary) is 'always up', with no AOS or LOS. SAT is a name (any case) or catalog number of\n"
+    "the database; without SAT, the tracking list (menu 3-2). Nothing within 10 days: 'no pass'.\n\noptions:\n";
 
 struct Row {
   std::string name;
@@ -88,8 +90,20 @@ std::vector<Row> compute(const std::vector<orbit::Elements>& sats, const orbit::
   return rows;
 }
 
-std::string line(const Row& r, UtcTime now) {
+// compact: the --watch form, within 80 columns (the date is in the header line above).
+std::string line(const Row& r, UtcTime now, bool compact = false) {
   char b[200];
+  if (compact && r.error.empty() && r.pass && !(r.pass->aos <= now && r.pass->up_at_end)) {
+    const orbit::Pass& p = *r.pass;
+    const bool up = p.aos <= now;
+    const std::string when = up ? "UP, LOS in " + duration(p.los - now) : "in " + duration(p.aos - now);
+    char los[32];
+    if (p.up_at_end) std::snprintf(los, sizeof los, "LOS >%.0fd", kSearchDays);
+    else std::snprintf(los, sizeof los, "LOS %s", clock_time(p.los).c_str());
+    std::snprintf(b, sizeof b, "%-12.12s AOS %s az %3.0f max %4.1f %s %s", r.name.c_str(), clock_time(p.aos).c_str(),
+                  p.aos_az_deg, p.max_el_deg, los, when.c_str());
+    return b;
+  }
   if (!r.error.empty()) {
     std::snprintf(b, sizeof b, "%-16.16s  sgp4 error: %s", r.name.c_str(), r.error.c_str());
   } else if (!r.pass) {
@@ -97,12 +111,74 @@ std::string line(const Row& r, UtcTime now) {
   } else {
     const orbit::Pass& p = *r.pass;
     const bool up = p.aos <= now;
-    const std::string when = up ? "UP, LOS in " + duration(p.los - now) : "in " + duration(p.aos - now);
-    std::snprintf(b, sizeof b, "%-16.16s  AOS %s az %3.0f  TCA %s el %4.1f  LOS %s az %3.0f  %s", r.name.c_str(),
-                  date_time(p.aos).c_str(), p.aos_az_deg, clock_time(p.tca).c_str(), p.max_el_deg,
-                  clock_time(p.los).c_str(), p.los_az_deg, when.c_str());
+    if (up && p.up_at_end) {
+      // Up now and still up at the end of the search: a geostationary satellite (or one that
+      // stays in view): no LOS to invent.
+      std::snprintf(b, sizeof b, "%-16.16s  always up: az %3.0f el %4.1f, no AOS or LOS within %.0f days", r.name.c_str(),
+                    p.aos_az_deg, p.max_el_deg, kSearchDays);
+    } else {
+      const std::string when = up ? "UP, LOS in " + duration(p.los - now) : "in " + duration(p.aos - now);
+      char los[64];
+      if (p.up_at_end) std::snprintf(los, sizeof los, "LOS after %.0f days", kSearchDays);
+      else std::snprintf(los, sizeof los, "LOS %s az %3.0f", clock_time(p.los).c_str(), p.los_az_deg);
+      std::snprintf(b, sizeof b, "%-16.16s  AOS %s az %3.0f  TCA %s el %4.1f  %s  %s", r.name.c_str(),
+                    date_time(p.aos).c_str(), p.aos_az_deg, clock_time(p.tca).c_str(), p.max_el_deg, los,
+                    when.c_str());
+    }
   }
   return b;
+}
+
+// Stale element sets, said once: one line for one set, one line with the range for several.
+void warn_stale_once(const std::vector<orbit::Elements>& sats, UtcTime at) {
+  std::vector<std::string> names;
+  double lo = 1e300, hi = -1e300;
+  std::string one;
+  for (const orbit::Elements& e : sats) {
+    const orbit::ElementAge age = orbit::element_age(e, at);
+    if (!age.stale()) continue;
+    names.push_back(std::string(text::trim(e.name)));
+    lo = std::min(lo, age.days);
+    hi = std::max(hi, age.days);
+    one = age.warning();
+  }
+  if (names.empty()) return;
+  if (names.size() == 1) {
+    std::fprintf(stderr, "trakbox next: warning: %s: %s\n", names.front().c_str(), one.c_str());
+    return;
+  }
+  std::fprintf(stderr, "trakbox next: warning: elements of %zu satellites are %.1f to %.1f days old, past the limit "
+                       "of their orbits: positions are unreliable (refresh them: menu 3-5, --elements)\n",
+               names.size(), lo, hi);
+}
+
+struct Size {
+  int cols = 0, rows = 0;
+};
+Size terminal_size() {
+  winsize w{};
+  if (::ioctl(STDOUT_FILENO, TIOCGWINSZ, &w) != 0) return {};
+  return {w.ws_col, w.ws_row};
+}
+
+// One redraw of --watch. On a terminal: within its width and height (a wrapped or scrolled line
+// leaves a stale copy behind at the next redraw; issue 39), each line cleared to its end; on a pipe,
+// blocks separated by a blank line.
+std::string watch_screen(const std::string& head, const std::vector<Row>& rows, UtcTime now, bool tty) {
+  const Size size = tty ? terminal_size() : Size{};
+  auto fit = [&](std::string l) {
+    if (tty && size.cols > 0 && l.size() > static_cast<std::size_t>(size.cols)) l.resize(static_cast<std::size_t>(size.cols));
+    return l + (tty ? "\033[K\n" : "\n");
+  };
+  std::string screen = tty ? "\033[H" : "";
+  screen += fit(head + ", " + date_time(now) + " UTC");
+  int shown = 1;
+  for (const Row& r : rows) {
+    if (tty && size.rows > 0 && shown >= size.rows - 1) break;
+    screen += fit(line(r, now, true));
+    ++shown;
+  }
+  return screen + (tty ? "\033[J" : "\n");
 }
 
 int fail(const ArgError& e) {
@@ -140,6 +216,7 @@ int run_next(std::vector<std::string> args) {
   }
   orbit::PassOptions options;
   options.horizon_deg = orbit::kAosThresholdDeg;
+  options.min_max_elevation_deg = 0.0;  // a pass that never rises above the horizon is no pass
   if (const auto v = in.number("min-el", false, "DEG, an elevation -90..90", Range{-90.0, 90.0}))
     options.min_max_elevation_deg = *v;
   if (!in.ok()) return fail(*in.error());
@@ -168,12 +245,7 @@ int run_next(std::vector<std::string> args) {
   }
   if (o.positional().empty()) sats = pool;
   if (sats.empty()) return fail({"SAT", "none given and the tracking list is empty (" + from + ")"});
-  for (const orbit::Elements& e : sats) {
-    const std::string w = orbit::element_age(e, start).warning();
-    if (!w.empty())
-      std::fprintf(stderr, "trakbox next: warning: %s: %s\n", std::string(text::trim(e.name)).c_str(), w.c_str());
-  }
-
+  warn_stale_once(sats, start);
   char head[200];
   std::snprintf(head, sizeof head, "station %.4f, %.4f, %.0f m (%s)", station->lat_deg, station->lon_deg,
                 station->height_m, o.value("station") ? "--station" : stored.source().c_str());
@@ -188,10 +260,7 @@ int run_next(std::vector<std::string> args) {
       bool ended = false;
       for (const Row& r : rows) ended = ended || (r.pass && r.pass->los < now);
       if (ended) rows = compute(sats, *station, now, options);
-      std::string screen = tty ? "\033[H\033[J" : "";
-      screen += std::string(head) + ", " + date_time(now) + " UTC\n";
-      for (const Row& r : rows) screen += line(r, now) + "\n";
-      if (!tty) screen += "\n";
+      const std::string screen = watch_screen(head, rows, now, tty);
       std::fputs(screen.c_str(), stdout);
       std::fflush(stdout);
       if (std::ferror(stdout)) return kExitFailure;  // the reader went away

@@ -454,7 +454,7 @@ namespace {
 const Command kSchedule{
     "schedule",
     "[ELEMENTS] [--sat NAME|NUMBER] [--station LAT,LON[,HEIGHT_M]|LOCATOR] [--start ISO8601|now|+2h]\n"
-    "                        --step SECONDS --count N [--freq HZ|MHZ.] [--state DIR] [--dut1 S] [--csv|--json]\n"
+    "                        [--step SECONDS] --count N [--freq HZ|MHZ.] [--state DIR] [--dut1 S] [--csv|--json]\n"
     "                        [--no-checksum]",
     "The TrakBox menu-2 schedule: where one satellite is, seen from the station, at --count times\n"
     "--step seconds apart. Azimuth/elevation (deg), phase (256ths of an orbit), Doppler shift at\n"
@@ -466,7 +466,7 @@ const Command kSchedule{
      kStationOption,
      {"start", "ISO8601|now|+2h", "first time, UTC (2018-01-21T03:37:10Z), now (the default), or now plus an "
                                   "amount (+2h, +30m, -1d)"},
-     {"step", "SECONDS", "seconds between rows (> 0)"},
+     {"step", "SECONDS", "seconds between rows (> 0; default 60)"},
      {"count", "N", "number of rows (1..10000000)"},
      {"freq", "HZ|MHZ.", "downlink frequency for the Doppler column: hertz (437800000), MHz with a decimal "
                          "point (437.8), or with a unit (437.8MHz) (default: none, 0)"},
@@ -486,14 +486,16 @@ int run_schedule(std::vector<std::string> args) {
   OptionReader& in = run.in;
   const auto station = read_station(in, run.stored);
   const auto start = read_time(in, "start", wall_now());
-  const auto step_s = in.number("step", true, "SECONDS, a number > 0 (at most one day)", Range{0.0, 86400.0, true});
+  // One row a minute unless asked otherwise (issue 39), as menu 2's schedule steps by default.
+  const auto step_s = in.number("step", false, "SECONDS, a number > 0 (at most one day)", Range{0.0, 86400.0, true})
+                          .value_or(60.0);
   const auto count = in.integer("count", true, "N, a whole number 1..10000000", Range{1.0, 1e7});
   const auto freq = read_frequency(in, "freq");
   const orbit::EarthOrientation eo = read_dut1(in);
   const OutputFormat format = read_format(in);
   std::chrono::microseconds step{0};
   if (in.ok()) {
-    step = std::chrono::microseconds(std::llround(*step_s * 1e6));
+    step = std::chrono::microseconds(std::llround(step_s * 1e6));
     if (step.count() <= 0) in.fail("--step", "expected SECONDS, at least one microsecond");
   }
   std::vector<Elements> sats;

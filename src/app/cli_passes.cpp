@@ -2,6 +2,7 @@
 // or polar plots (the front matter it shares with the other orbit commands: cli_orbit_internal.h).
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -54,9 +55,11 @@ struct SatPass {
 };
 
 // --plot FILE: each pass as a polar plot (pass_plot.h); FILE itself for one pass, FILE-N.EXT for
-// several. The antenna's plan is the stored rotator's (the factory one when no state is readable).
+// several, each name listed on `said` (standard output after the table; standard error after JSON
+// or CSV, which stay whole documents) so that no file is made unannounced. The antenna's plan is the
+// stored rotator's (the factory one when no state is readable).
 int plot_passes(const std::string& file, const std::vector<SatPass>& passes, const std::vector<Elements>& sats,
-                const orbit::Observer& station, StoredStation& stored) {
+                const orbit::Observer& station, StoredStation& stored, std::FILE* said) {
   const store::Model* m = stored.model();
   const store::Model factory = store::factory_defaults();
   if (!m) m = &factory;
@@ -66,6 +69,9 @@ int plot_passes(const std::string& file, const std::vector<SatPass>& passes, con
     const SatPass& s = passes[i];
     PassPicture pic;
     pic.title = s.sat;
+    pic.station = printf_string("station %.4f %c %.4f %c %.0f m", std::abs(station.lat_deg), station.lat_deg < 0 ? 'S' : 'N',
+                                std::abs(station.lon_deg), station.lon_deg < 0 ? 'W' : 'E', station.height_m);
+    pic.element_age = "elements age " + orbit::element_age(sats[s.set], s.pass.aos).text() + " at AOS";
     pic.pass = s.pass;
     pic.track = sample_pass(orbit::Sgp4(sats[s.set]), station, s.pass);
     pic.plan = rotator::plan_pass(pic.track, geometry, std::nullopt);
@@ -76,9 +82,11 @@ int plot_passes(const std::string& file, const std::vector<SatPass>& passes, con
       std::fprintf(stderr, "trakbox passes: --plot: %s\n", err->c_str());
       return kExitFailure;
     }
-    std::fprintf(stderr, "trakbox passes: %s %s: %s\n", s.sat.c_str(), orbit::format_iso8601(s.pass.aos, 0).c_str(),
-                 name.c_str());
+    if (i == 0 && passes.size() > 1)
+      std::fprintf(said, "plot: %zu passes, one file each (%s is not written):\n", passes.size(), file.c_str());
+    std::fprintf(said, "plot: %s  %s %s\n", name.c_str(), s.sat.c_str(), orbit::format_iso8601(s.pass.aos, 0).c_str());
   }
+  if (passes.empty()) std::fprintf(said, "plot: no pass, no file\n");
   return kExitOk;
 }
 
@@ -148,8 +156,10 @@ int run_passes(std::vector<std::string> args) {
   const orbit::EarthOrientation eo = read_dut1(in);
   const OutputFormat format = read_format(in);
   const auto plot = in.text("plot", false, "");
-  if (plot && plot->find_last_of('.') == std::string::npos)
-    in.fail("--plot", "expected FILE.png or FILE.svg, found '" + *plot + "'");
+  // The name is checked before any work (issue 39): nothing is computed or printed for a name that
+  // cannot be written.
+  if (plot)
+    if (const auto why = plot_name_problem(*plot)) in.fail("--plot", *why);
   std::vector<Elements> sats;
   if (auto done = run.load_sats(true, sats)) return *done;
 
@@ -210,11 +220,18 @@ int run_passes(std::vector<std::string> args) {
                       static_cast<long long>(dur / 60), static_cast<long long>(dur % 60)));
       }
       if (passes.empty()) out("no passes\n");
+      bool bounded = false;
+      for (const SatPass& s : passes) bounded = bounded || s.pass.up_at_start || s.pass.up_at_end;
+      // A satellite that stays up (geostationary) has neither: its row spans the window, marked.
+      if (bounded)
+        out("< up already at the start of the window (no AOS in it); > still up at its end (no LOS in it)\n");
       break;
     }
   }
   std::fflush(stdout);
-  if (plot && plot_passes(*plot, passes, sats, *station, run.stored) != kExitOk) return kExitFailure;
+  if (plot && plot_passes(*plot, passes, sats, *station, run.stored, format == OutputFormat::table ? stdout : stderr) !=
+                  kExitOk)
+    return kExitFailure;
   return status;
 }
 

@@ -37,6 +37,42 @@ std::vector<std::string> ParsedOptions::values(std::string_view name) const {
   return it == values_.end() ? std::vector<std::string>{} : it->second;
 }
 
+namespace {
+
+// Edits between two words, a swap of neighbours counting one (the optimal string alignment
+// distance): "strat" is one from "start". For "did you mean" (short words: option names).
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+  for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i)
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  return d[a.size()][b.size()];
+}
+
+// "unknown option; did you mean --rotator?" when one option is within two edits (a typo), or
+// when the word is the start of exactly one.
+std::string unknown_option(std::string_view name, const std::vector<OptionSpec>& specs) {
+  if (name.size() > 40) return "unknown option";  // no option is that long: no guess (and no cost)
+  const OptionSpec* best = nullptr;
+  std::size_t best_d = 3;
+  int prefixed = 0;
+  const OptionSpec* prefix = nullptr;
+  for (const OptionSpec& s : specs) {
+    const std::size_t d = edit_distance(name, s.name);
+    if (d < best_d) best_d = d, best = &s;
+    if (name.size() >= 3 && s.name.rfind(name, 0) == 0) ++prefixed, prefix = &s;
+  }
+  if (!best && prefixed == 1) best = prefix;
+  if (!best || name.size() < 3) return "unknown option";
+  return "unknown option; did you mean --" + best->name + "?";
+}
+
+}  // namespace
+
 ParseOutcome parse_options(const std::vector<std::string>& args, const std::vector<OptionSpec>& specs) {
   ParseOutcome out;
   auto fail = [&](std::string argument, std::string message) {
@@ -67,7 +103,7 @@ ParseOutcome parse_options(const std::vector<std::string>& args, const std::vect
     }
     const std::string label = "--" + name;
     const OptionSpec* spec = find_spec(specs, name);
-    if (!spec) return fail(label, "unknown option");
+    if (!spec) return fail(label, unknown_option(name, specs));
     std::vector<std::string>& slot = out.options.values_[spec->name];
     if (!slot.empty() && !spec->repeatable) return fail(label, "given more than once");
     if (!spec->takes_value()) {

@@ -3,10 +3,12 @@
 #include <cairo-svg.h>
 #include <cairo.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <memory>
 #include <numbers>
+#include <vector>
 
 #include "orbit/observe.h"
 
@@ -25,12 +27,75 @@ bool ends_with(const std::string& s, const char* tail) {
   return true;
 }
 
+// Words on the plot. In a PNG cairo draws them; in an SVG they are kept here and written as <text>
+// elements once cairo has finished the file (cairo's SVG surface writes glyph outlines, which no
+// one can select or search).
+struct Label {
+  double x, y, size;
+  double r, g, b;
+  std::string text;
+};
+thread_local std::vector<Label>* svg_labels = nullptr;
+
+void show_text(cairo_t* cr, double x, double y, const std::string& s) {
+  if (!svg_labels) {
+    cairo_move_to(cr, x, y);
+    cairo_show_text(cr, s.c_str());
+    return;
+  }
+  cairo_matrix_t font;
+  cairo_get_font_matrix(cr, &font);
+  double r = 0, g = 0, b = 0, a = 1;
+  cairo_pattern_get_rgba(cairo_get_source(cr), &r, &g, &b, &a);
+  svg_labels->push_back({x, y, font.yy, r, g, b, s});
+}
+
 void text_at(cairo_t* cr, double x, double y, const std::string& s, double size, bool centre = false) {
   cairo_set_font_size(cr, size);
   cairo_text_extents_t ext;
   cairo_text_extents(cr, s.c_str(), &ext);
-  cairo_move_to(cr, centre ? x - ext.width / 2 - ext.x_bearing : x, y);
-  cairo_show_text(cr, s.c_str());
+  show_text(cr, centre ? x - ext.width / 2 - ext.x_bearing : x, y, s);
+}
+
+std::string xml_escaped(const std::string& s) {
+  std::string out;
+  for (const char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+// The kept words into the SVG cairo wrote, before its closing tag.
+std::optional<std::string> add_svg_labels(const std::string& path, const std::vector<Label>& labels) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) return "'" + path + "': cannot read back";
+  std::string svg;
+  char buf[8192];
+  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) svg.append(buf, n);
+  std::fclose(f);
+  const std::size_t end = svg.rfind("</svg>");
+  if (end == std::string::npos) return "'" + path + "': cairo wrote no </svg>";
+  std::string words = "<g font-family=\"sans-serif\">\n";
+  for (const Label& l : labels) {
+    char head[200];
+    std::snprintf(head, sizeof head, "<text x=\"%.2f\" y=\"%.2f\" font-size=\"%.1f\" fill=\"rgb(%d,%d,%d)\">", l.x, l.y,
+                  l.size, static_cast<int>(l.r * 255 + 0.5), static_cast<int>(l.g * 255 + 0.5),
+                  static_cast<int>(l.b * 255 + 0.5));
+    words += head + xml_escaped(l.text) + "</text>\n";
+  }
+  words += "</g>\n";
+  svg.insert(end, words);
+  f = std::fopen(path.c_str(), "wb");
+  if (!f) return "'" + path + "': cannot write";
+  const bool ok = std::fwrite(svg.data(), 1, svg.size(), f) == svg.size();
+  if (std::fclose(f) != 0 || !ok) return "'" + path + "': write failed";
+  return std::nullopt;
 }
 
 void polyline(cairo_t* cr, const std::vector<std::pair<double, double>>& pts) {
@@ -116,8 +181,68 @@ void mark(cairo_t* cr, double az, double el, const std::string& label) {
   cairo_set_font_size(cr, 12);
   cairo_text_extents_t ext;
   cairo_text_extents(cr, label.c_str(), &ext);
-  cairo_move_to(cr, dx < 0 ? x + dx - ext.width : x + dx, y + (y > c ? 16 : -8));
-  cairo_show_text(cr, label.c_str());
+  show_text(cr, dx < 0 ? x + dx - ext.width : x + dx, y + (y > c ? 16 : -8), label);
+}
+
+// Azimuth ticks on the horizon every 10 degrees (longer every 30, numbered between the compass letters).
+void draw_azimuth_ticks(cairo_t* cr) {
+  const double c = kPlotCentre, R = kPlotRadius;
+  cairo_set_source_rgb(cr, 0.35, 0.35, 0.35);
+  cairo_set_line_width(cr, 1.0);
+  for (int az = 0; az < 360; az += 10) {
+    const double len = az % 30 == 0 ? 10.0 : 5.0;
+    const double sx = std::sin(az * kDeg), sy = -std::cos(az * kDeg);
+    cairo_move_to(cr, c + R * sx, c + R * sy);
+    cairo_line_to(cr, c + (R + len) * sx, c + (R + len) * sy);
+  }
+  cairo_stroke(cr);
+  for (int az = 30; az < 360; az += 30) {
+    if (az % 90 == 0) continue;  // N, E, S, W are written
+    const double sx = std::sin(az * kDeg), sy = -std::cos(az * kDeg);
+    text_at(cr, c + (R + 22) * sx, c + (R + 22) * sy + 4, std::to_string(az), 10, true);
+  }
+}
+
+// The satellite's time along its track: a tick across it every minute, the minute written every
+// other one (every 5 for a long pass), and an arrow the way it moves at the middle of the pass.
+void draw_time_ticks(cairo_t* cr, const PassPicture& p) {
+  if (p.track.size() < 2) return;
+  const double minutes = orbit::minutes_between(p.track.front().time, p.track.back().time);
+  const int label_every = minutes > 20 ? 5 : 2;
+  cairo_set_source_rgb(cr, 0.0, 0.2, 0.85);
+  cairo_set_line_width(cr, 2.0);
+  const auto xy = [](const rotator::TrackPoint& t, double& x, double& y) {
+    plot_position(t.az_deg, std::max(t.el_deg, -2.0), x, y);
+  };
+  for (std::size_t i = 1; i < p.track.size(); ++i) {
+    const auto m0 = std::chrono::floor<std::chrono::minutes>(p.track[i - 1].time);
+    const auto m1 = std::chrono::floor<std::chrono::minutes>(p.track[i].time);
+    if (m1 == m0) continue;  // a new minute starts between these two samples: tick at the later one
+    double x0, y0, x1, y1;
+    xy(p.track[i - 1], x0, y0);
+    xy(p.track[i], x1, y1);
+    const double len = std::hypot(x1 - x0, y1 - y0);
+    if (len < 1e-6) continue;
+    const double nx = -(y1 - y0) / len * 6.0, ny = (x1 - x0) / len * 6.0;  // across the track
+    cairo_move_to(cr, x1 - nx, y1 - ny);
+    cairo_line_to(cr, x1 + nx, y1 + ny);
+    cairo_stroke(cr);
+    const auto minute = std::chrono::duration_cast<std::chrono::minutes>(m1.time_since_epoch()).count() % 60;
+    if (minute % label_every == 0) text_at(cr, x1 + nx * 1.6 + 2, y1 + ny * 1.6 + 4, orbit::format_iso8601(m1, 0).substr(11, 5), 10);
+  }
+  // The arrow: at the middle sample, pointing along the track.
+  const std::size_t mid = p.track.size() / 2;
+  double x0, y0, x1, y1;
+  xy(p.track[mid - 1], x0, y0);
+  xy(p.track[mid], x1, y1);
+  const double len = std::hypot(x1 - x0, y1 - y0);
+  if (len < 1e-6) return;
+  const double ux = (x1 - x0) / len, uy = (y1 - y0) / len;
+  cairo_move_to(cr, x1 + ux * 9, y1 + uy * 9);
+  cairo_line_to(cr, x1 - ux * 7 - uy * 7, y1 - uy * 7 + ux * 7);
+  cairo_line_to(cr, x1 - ux * 7 + uy * 7, y1 - uy * 7 - ux * 7);
+  cairo_close_path(cr);
+  cairo_fill(cr);
 }
 
 void draw(cairo_t* cr, const PassPicture& p) {
@@ -126,6 +251,7 @@ void draw(cairo_t* cr, const PassPicture& p) {
   cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
   if (p.plan) draw_unreachable(cr, *p.plan);
   draw_grid(cr);
+  draw_azimuth_ticks(cr);
 
   std::vector<std::pair<double, double>> track;
   for (const auto& t : p.track) track.emplace_back(t.az_deg, std::max(t.el_deg, -2.0));
@@ -149,6 +275,7 @@ void draw(cairo_t* cr, const PassPicture& p) {
   polyline(cr, track);
   cairo_stroke(cr);
   if (p.plan) draw_lost(cr, p);
+  draw_time_ticks(cr, p);
   // AOS, TCA, LOS: a dot and the time.
   const orbit::Pass& ps = p.pass;
   mark(cr, ps.aos_az_deg, -2.0, "AOS " + hms(ps.aos));
@@ -161,6 +288,10 @@ void draw(cairo_t* cr, const PassPicture& p) {
   std::snprintf(head, sizeof head, "%s  %s UTC  max el %.1f\xc2\xb0", p.title.c_str(),
                 orbit::format_iso8601(ps.aos, 0).substr(0, 10).c_str(), ps.max_el_deg);
   text_at(cr, 10, 20, head, 14);
+  // Where from and how old the elements are: a picture kept without its command line says both.
+  std::string sub = p.station;
+  if (!p.element_age.empty()) sub += (sub.empty() ? "" : "   ") + p.element_age;
+  if (!sub.empty()) text_at(cr, 10, 38, sub, 11);
   std::string legend = "blue: satellite";
   if (p.plan) {
     legend += "   orange: antenna";
@@ -178,9 +309,19 @@ void plot_position(double az_deg, double el_deg, double& x, double& y) {
   y = kPlotCentre - r * std::cos(az_deg * kDeg);
 }
 
+std::optional<std::string> plot_name_problem(const std::string& path) {
+  if (ends_with(path, ".svg") || ends_with(path, ".png")) return std::nullopt;
+  return "'" + path + "': expected a name ending .png or .svg";
+}
+
 std::optional<std::string> write_pass_plot(const PassPicture& p, const std::string& path) {
   const bool svg = ends_with(path, ".svg");
-  if (!svg && !ends_with(path, ".png")) return "'" + path + "': expected a name ending .png or .svg";
+  if (auto why = plot_name_problem(path)) return why;
+  std::vector<Label> labels;
+  svg_labels = svg ? &labels : nullptr;
+  struct Reset {
+    ~Reset() { svg_labels = nullptr; }
+  } reset;
   cairo_surface_t* surface = svg ? cairo_svg_surface_create(path.c_str(), kPlotSize, kPlotSize)
                                  : cairo_image_surface_create(CAIRO_FORMAT_RGB24, kPlotSize, kPlotSize);
   std::unique_ptr<cairo_surface_t, void (*)(cairo_surface_t*)> s(surface, cairo_surface_destroy);
@@ -199,6 +340,7 @@ std::optional<std::string> write_pass_plot(const PassPicture& p, const std::stri
   cairo_surface_finish(surface);
   if (cairo_surface_status(surface) != CAIRO_STATUS_SUCCESS)
     return "'" + path + "': " + cairo_status_to_string(cairo_surface_status(surface));
+  if (svg) return add_svg_labels(path, labels);
   return std::nullopt;
 }
 

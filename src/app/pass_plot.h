@@ -1,6 +1,7 @@
 // A pass as a polar plot (issue 30, "pictures of a pass"): the sky seen from the station, north up
 // and east right, the horizon the outer circle and the zenith the centre. The satellite's track
-// (blue) with AOS, TCA and LOS marked and timed; the antenna's planned path (orange, from the
+// (blue) with AOS, TCA and LOS marked and timed, a tick with the time every minute and an arrow the
+// way it goes; azimuth ticks every 10 degrees on the horizon; the antenna's planned path (orange, from the
 // rotator's pass plan: flip, limits); the part of the track the antenna cannot follow (red); the
 // azimuths the rotator cannot reach (grey). Drawn with cairo, as PNG or SVG by the file's
 // extension.
@@ -16,6 +17,8 @@ namespace tb::app {
 
 struct PassPicture {
   std::string title;                       // "ISS (ZARYA)"
+  std::string station;                     // "27.3910 N 128.6570 E 50 m" (the title's second line)
+  std::string element_age;                 // "elements 0.3 days old" (likewise)
   orbit::Pass pass;
   std::vector<rotator::TrackPoint> track;  // AOS to LOS
   std::optional<rotator::PassPlan> plan;   // the antenna's plan, when the rotator is known
@@ -28,7 +31,11 @@ inline constexpr double kPlotCentre = 320; // x and y of the zenith
 // Pixel position of az/el on the plot (elevations below 0 lie outside the horizon circle).
 void plot_position(double az_deg, double el_deg, double& x, double& y);
 
-// Writes the picture to `path` (.png or .svg); the reason when it cannot.
+// The reason a --plot name cannot be written (it must end .png or .svg, any case); nothing when it can.
+std::optional<std::string> plot_name_problem(const std::string& path);
+
+// Writes the picture to `path` (.png or .svg); the reason when it cannot. In SVG the words are
+// <text> elements (selectable, searchable), not glyph outlines.
 std::optional<std::string> write_pass_plot(const PassPicture& p, const std::string& path);
 
 // Samples a pass every `step_s` seconds from AOS to LOS (LOS included).

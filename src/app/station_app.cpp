@@ -249,6 +249,8 @@ void StationApp::build_station(std::unique_ptr<rotator::RotatorDriver> rot, std:
       std::make_unique<rotator::Controller>(m.model.rotator, m.model.station.rotor_start, std::move(rot), opt);
   m.station = std::make_unique<tracker::StationLoop>(m.model, m.clock, m.tracker, std::move(controller), std::move(rad));
   m.station->set_refresh(m.refresh.get());
+  // Rotor control and the choice of what to track are saved when they change, by whoever.
+  m.station->on_settings_changed([this] { save(); });
   m.station->on_wake([&m] {
     if (m.started) m.arm_tick(std::chrono::microseconds(0));
   });
@@ -346,12 +348,27 @@ void StationApp::stop_gps() {
   if (impl_->station) impl_->station->set_gps(nullptr);
 }
 
-// --service: what the stored configuration says to track. The first multi_count satellites of the
-// tracking list in multiple tracking (the stored normal or priority sub-mode) when the list holds
-// two or more; else the satellite marked '*' (or #1) alone.
+// --service: what the stored configuration says to track: the operator's last choice
+// (model.tracking: a satellite, or multiple tracking in the stored normal or priority sub-mode);
+// without one, the first multi_count satellites of the tracking list in multiple tracking when the
+// list holds two or more, else the satellite marked '*' (or #1) alone.
 void StationApp::Impl::start_stored_tracking() {
   const store::Database& db = model.db;
-  if (db.selected.size() >= 2 && db.multi_count >= 2) {
+  const store::TrackingChoice& chosen = model.tracking;
+  using Choice = store::TrackingChoice::Mode;
+  std::optional<int> single;
+  if (chosen.mode == Choice::single) {
+    for (std::size_t i = 0; i < db.satellites.size(); ++i)
+      if (db.satellites[i].elements.catalog_number == chosen.catalog_number) single = static_cast<int>(i);
+    if (!single)
+      log->warn("service: {} (catalog number {}), the satellite last chosen, is no longer in the database: "
+                "tracking the tracking list", chosen.name, chosen.catalog_number);
+  }
+  const bool multi = chosen.mode == Choice::multi || (chosen.mode == Choice::list && db.multi_count >= 2);
+  if (single) {
+    tracker.track_single(*single);
+    log->info("service: tracking {}, as last chosen", db.satellites[static_cast<std::size_t>(*single)].elements.name);
+  } else if (db.selected.size() >= 2 && multi) {
     tracker.track_multi(model.priority_mode);
     log->info("service: multiple tracking of the first {} of the tracking list ({} mode)", db.multi_count,
               model.priority_mode ? "priority" : "normal");
@@ -363,7 +380,8 @@ void StationApp::Impl::start_stored_tracking() {
   } else {
     log->warn("service: the tracking list is empty: nothing to track");
   }
-  if (!station->rotor_control()) log->warn("service: rotor control is off (E key): the antenna will not move");
+  if (station->rotor_control()) log->info("service: rotor control is on: the antenna follows");
+  else log->warn("service: rotor control is off (E key, menu 6-R, --rotor-control on): the antenna will not move");
 }
 
 // SIGHUP: the newer element sets of the data directory's amateur.tle replace those of the same catalog

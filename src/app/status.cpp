@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 
 #include <nlohmann/json.hpp>
@@ -10,6 +11,7 @@
 #include "gps/monitor.h"
 #include "orbit/element_age.h"
 #include "station/clock.h"
+#include "station/station.h"
 #include "tracker/elements_refresh.h"
 #include "tracker/station_loop.h"
 
@@ -18,11 +20,16 @@ namespace {
 
 nlohmann::json pass_json(const std::optional<orbit::Pass>& p) {
   if (!p) return nullptr;
+  // A satellite still up where the search ended (geostationary) has no LOS to tell: null, and
+  // always_up when it was up at the start too. A "pass" of the -2 deg rule whose maximum stays under
+  // the horizon never rises: said (rises false) rather than passed off as a pass.
   return {{"aos", orbit::format_iso8601(p->aos)},
           {"tca", orbit::format_iso8601(p->tca)},
-          {"los", orbit::format_iso8601(p->los)},
+          {"los", p->up_at_end ? nlohmann::json(nullptr) : nlohmann::json(orbit::format_iso8601(p->los))},
           {"max_el_deg", p->max_el_deg},
-          {"in_progress", p->up_at_start}};
+          {"in_progress", p->up_at_start},
+          {"always_up", p->up_at_start && p->up_at_end},
+          {"rises", p->max_el_deg >= 0.0}};
 }
 
 nlohmann::json hz_or_null(const std::optional<radio::Hz>& hz) {
@@ -157,13 +164,21 @@ nlohmann::json gps_json(StationApp& app) {
 
 nlohmann::json station_status(StationApp& app, const StatusContext& cx) {
   const orbit::UtcTime now = app.clock().now();
-  nlohmann::json j{{"running", true},
+  const station::StationConfig& st = app.model().station;
+  nlohmann::json j{{"schema", kStatusSchema},
+                   {"running", true},
                    {"pid", ::getpid()},
                    {"version", cx.version},
                    {"service", cx.service},
                    {"state_dir", cx.state_dir},
                    {"time", orbit::format_iso8601(now)},
                    {"clock_rate", app.clock().rate()}};
+  j["station"] = {{"callsign", st.callsign},
+                  {"lat_deg", st.lat_deg},
+                  {"lon_deg", st.lon_deg},
+                  {"height_m", st.height_m},
+                  {"locator", station::maidenhead_locator(st.lat_deg, st.lon_deg)},
+                  {"position_from_gps", app.model().gps.position_from_gps}};
   tracker::Tracker& tr = app.tracker();
   nlohmann::json tracking{{"mode", mode_name(tr.mode())}, {"priority", tr.priority()}};
   nlohmann::json sats = nlohmann::json::array();
@@ -216,10 +231,43 @@ std::vector<std::string> status_problems(const nlohmann::json& s) {
     if (g.value("link", "") != "receiving") out.push_back("GPS: " + g.value("status_word", g.value("link", "")));
     else if (g.value("clock_warned", false)) out.push_back("GPS: " + g.value("status_word", std::string("clock off GPS time")));
   }
+  // The satellites tracked now on element sets past the age their orbits allow: the antenna is
+  // pointed by unreliable positions (issue 39). A stale set elsewhere in the list is shown (STALE),
+  // not counted: it moves nothing.
+  std::vector<std::string> tracked;
+  for (const auto& c : s.at("tracking").value("satellites", nlohmann::json::array())) tracked.push_back(c.value("name", ""));
+  int stale = 0;
+  double oldest = 0.0;
+  for (const auto& e : s.value("tracking_list", nlohmann::json::array()))
+    if (e.value("elements_stale", false) &&
+        std::find(tracked.begin(), tracked.end(), e.value("name", "")) != tracked.end()) {
+      ++stale;
+      oldest = std::max(oldest, e.value("element_age_days", 0.0));
+    }
+  if (stale > 0) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "elements of %d tracked satellite(s) too old (up to %.1f days): refresh them "
+                                   "(menu 3-5, --elements-url)", stale, oldest);
+    out.push_back(buf);
+  }
   if (s.at("elements_refresh").value("last_failed", false))
     out.push_back("element refresh failed: " + s["elements_refresh"].value("last_result", ""));
   return out;
 }
+
+namespace {
+
+// "pass AOS - LOS max 41.2"; "always up, max 32.4" (no AOS or LOS); "... (never rises)".
+template <class Num>
+std::string pass_text(const nlohmann::json& p, const std::string& what, const Num& num) {
+  if (p.value("always_up", false)) return "always up (no AOS or LOS), el " + num(p["max_el_deg"], 1);
+  const std::string los = p.contains("los") && p["los"].is_string() ? p["los"].get<std::string>() : "still up";
+  std::string l = what + " " + p.value("aos", "") + " - " + los + " max " + num(p["max_el_deg"], 1);
+  if (!p.value("rises", true)) l += " (never rises)";
+  return l;
+}
+
+}  // namespace
 
 std::string format_status(const nlohmann::json& s) {
   std::string out;
@@ -233,6 +281,9 @@ std::string format_status(const nlohmann::json& s) {
   line(std::string("trakbox ") + s.value("version", "") + (s.value("service", false) ? " (service)" : "") + ", pid " +
        std::to_string(s.value("pid", 0)) + ", state " + s.value("state_dir", "") + ": " +
        (s.value("healthy", false) ? "running" : "running, with problems"));
+  if (const auto st = s.value("station", nlohmann::json()); st.is_object())
+    line("  station   " + st.value("callsign", "") + " " + num(st["lat_deg"], 4) + ", " + num(st["lon_deg"], 4) + ", " +
+         num(st["height_m"], 0) + " m, " + st.value("locator", ""));
   line("  time      " + s.value("time", "") + (s.value("clock_rate", 1.0) != 1.0 ? " (clock x" + num(s["clock_rate"], 1) + ")" : ""));
   const auto& t = s.at("tracking");
   std::string tracking = "  tracking  " + t.value("mode", "off");
@@ -241,8 +292,7 @@ std::string format_status(const nlohmann::json& s) {
   for (const auto& c : t.at("satellites")) {
     std::string l = "            #" + std::to_string(c.value("list_number", 0)) + " " + c.value("name", "") + " az " +
                     num(c.value("az_deg", nlohmann::json()), 1) + " el " + num(c.value("el_deg", nlohmann::json()), 1);
-    if (c.contains("pass") && !c["pass"].is_null())
-      l += "  pass " + c["pass"].value("aos", "") + " - " + c["pass"].value("los", "") + " max " + num(c["pass"]["max_el_deg"], 1);
+    if (c.contains("pass") && !c["pass"].is_null()) l += "  " + pass_text(c["pass"], "pass", num);
     line(l);
   }
   const auto& a = s.at("antenna");
@@ -260,8 +310,7 @@ std::string format_status(const nlohmann::json& s) {
   for (const auto& e : s.at("tracking_list")) {
     std::string l = "  list #" + std::to_string(e.value("number", 0)) + "  " + e.value("name", "") + ", elements " +
                     num(e["element_age_days"], 1) + " days old" + (e.value("elements_stale", false) ? " (STALE)" : "");
-    if (!e.at("next_pass").is_null())
-      l += ", next pass " + e["next_pass"].value("aos", "") + " max " + num(e["next_pass"]["max_el_deg"], 1);
+    if (!e.at("next_pass").is_null()) l += ", " + pass_text(e["next_pass"], "next pass", num);
     line(l);
   }
   if (const auto g = s.value("gps", nlohmann::json()); g.is_object())

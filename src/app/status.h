@@ -30,6 +30,10 @@ std::vector<std::string> status_problems(const nlohmann::json& status);
 // The document as a few lines for a person.
 std::string format_status(const nlohmann::json& status);
 
+// The document's "schema": raised when a field changes meaning or goes away (added fields keep it).
+// 1: the first one numbered (issue 39): station, schema, los null for a satellite always up.
+inline constexpr int kStatusSchema = 1;
+
 // Exit statuses of `trakbox status` (as systemctl status: 3 for a station that is not running).
 inline constexpr int kStatusHealthy = 0;
 inline constexpr int kStatusUnhealthy = 1;

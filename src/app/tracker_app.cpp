@@ -124,6 +124,15 @@ Startup load_state(store::StateFile& file, const TrackerConfig& c, spdlog::logge
     s.notes.push_back("(" + loaded.reason + ")");
   }
   s.model = defaults_with_data(c.data_dir, s.notes);
+  if (s.model.db.satellites.empty()) {
+    // A binary run away from its data (issue 39): where it looked, and how to say where they are,
+    // on the screen (under the banner) and in the log, not only "the database is empty" later.
+    const std::string said = "No shipped elements in " + c.data_dir + " (amateur.tle): the database is empty. Give "
+                             "--data DIR (or TRAKBOX_DATA=DIR), or load elements with menu 3-3 or 3-5.";
+    log.warn("{}", said);
+    if (c.service) s.notes.push_back(said);
+    else s.drivers_said.push_back(said);
+  }
   s.satrak_settings = satrak::Settings{};
   s.satrak_saved = nlohmann::json();
   return s;
@@ -452,7 +461,14 @@ std::optional<std::string> start_web(StationApp& app, const TrackerConfig& c, Se
 // (stored_drivers.h; what that says goes to the log and where the operator sees it) and the GPS.
 std::optional<std::string> apply_command_line(TrackerConfig& c, Startup& startup, spdlog::logger& log) {
   if (c.cross_limit_sector) startup.model.rotator.cross_limit_sector = *c.cross_limit_sector;
+  if (c.event_min_el_deg) startup.model.event_min_el_deg = *c.event_min_el_deg;
   std::vector<std::string> said;
+  if (c.rotor_control) {
+    startup.model.rotor_control = *c.rotor_control;
+    said.push_back(*c.rotor_control ? "rotor control on (--rotor-control, stored): the antenna follows the satellite "
+                                      "tracked"
+                                    : "rotor control off (--rotor-control, stored): the antenna stays where it is");
+  }
   if (auto err = apply_stored_drivers(c, startup.model, said)) return err;
   for (const auto& line : said) {
     log.info("{}", line);
@@ -555,7 +571,8 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
       },
       std::chrono::seconds(c.event_lead_s));
   app.start(std::chrono::milliseconds(c.tick_ms));
-  if (startup.ram_lost || startup.fresh) app.save();
+  // Stored options given on the command line are stored now, not only at the next save.
+  if (startup.ram_lost || startup.fresh || c.rotor_control || c.event_min_el_deg) app.save();
   log->info("trakbox {} started, state {}", kVersion, file.path().string());
   stopped_line.started = true;
 

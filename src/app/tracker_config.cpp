@@ -72,6 +72,10 @@ std::vector<OptionSpec> tracker_option_specs() {
       {"cross-limit-sector", "yes|no", "when the rotator limits split its travel (the rotor stop inside them): yes, "
                                        "they are pointing limits the antenna may cross between passes; no (the "
                                        "factory setting), they are barriers (stored)"},
+      {"rotor-control", "on|off", "on: the antenna follows the satellite tracked, from the start (a service moves "
+                                  "it with nobody attached); off: it stays where it is (the E key, menu 6-R; stored)"},
+      {"event-min-el", "DEG", "no AOS/LOS event nor hook for a pass whose maximum elevation stays under DEG, "
+                              "-2 to 90 (factory 0: none for a pass that never rises; stored)"},
       {"socket", "PATH", "the station's socket for trakbox attach, status and events (default STATE/trakbox.sock; "
                          "the system service's is /run/trakbox/trakbox.sock), made for the user and group only"},
       {"on-event", "[KIND,...=]CMD", "run CMD (with /bin/sh) on every event, or on the kinds named: aos, los, "
@@ -297,6 +301,9 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
     c.satrak_port = static_cast<int>(*v);
     c.satrak_port_explicit = true;
   }
+  // A one-shot `trakbox host` (commands on stdin) serves nothing: no Satrak port unless asked for,
+  // so it never races a running station for 4001 (issue 39).
+  if (front_end == FrontEnd::host && !c.satrak_port_explicit) c.satrak_port = 0;
   auto port = [&r](const char* name, std::optional<int>& out) {
     if (const auto v = r.integer(name, false, "a TCP port 1 to 65535", Range{1, 65535})) out = static_cast<int>(*v);
   };
@@ -313,6 +320,11 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
     if (*x == "yes" || *x == "no") c.cross_limit_sector = *x == "yes";
     else r.fail("--cross-limit-sector", "expected yes or no; found '" + *x + "'");
   }
+  if (const auto x = o.value("rotor-control")) {
+    if (*x == "on" || *x == "off") c.rotor_control = *x == "on";
+    else r.fail("--rotor-control", "expected on or off; found '" + *x + "'");
+  }
+  c.event_min_el_deg = r.number("event-min-el", false, "degrees, -2 to 90", Range{-2.0, 90.0});
   read_gps(o, r, c);
   if (const auto l = o.value("log-level")) {
     if (const auto level = log_level_named(*l)) c.log_level = *level;

@@ -78,6 +78,10 @@ struct TrackerConfig {
   // --cross-limit-sector yes|no: whether limits that split the rotator's travel may be crossed
   // between passes (RotatorConfig::cross_limit_sector); stored in the state when given.
   std::optional<bool> cross_limit_sector;
+  // --rotor-control on|off: the E key's switch, stored (a service starts moving its antenna);
+  // --event-min-el DEG: no AOS/LOS event for a pass whose maximum stays under it (stored).
+  std::optional<bool> rotor_control;
+  std::optional<double> event_min_el_deg;
   // The station's socket (attach, status, events): --socket, else STATE_DIR/trakbox.sock.
   std::string socket;
   // --on-event hooks, their time limit (--hook-timeout) and the AOS event's lead (--event-lead).

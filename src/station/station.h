@@ -43,5 +43,11 @@ const char* to_string(RotorStart r);  // "North" / "South"
 // "48.85N", "2.35 W" (`pos` and `neg` are 'N','S' or 'E','W', either case). A letter and a sign
 // together ("-48.85N") are refused. Nothing when it is not one of these.
 std::optional<double> parse_hemisphere_degrees(std::string_view text, char pos, char neg);
+// The centre of a Maidenhead locator of 4, 6 or 8 characters, any case ("JN18du": 48.854167 N,
+// 2.291667 E), height 0; nothing when the text is not one. Menu 4 and `--station` take them.
+std::optional<orbit::Observer> maidenhead_centre(std::string_view locator);
+// The 6-character locator of a position ("JN18du" for 48.8566 N, 2.3522 E): field and square upper
+// case, subsquare lower case, as operators write it.
+std::string maidenhead_locator(double lat_deg, double lon_deg);
 
 }  // namespace tb::station

@@ -274,6 +274,12 @@ json to_json(const Model& m) {
   j["clock_offset_us"] = m.clock_offset.count();
   j["rotor_control"] = m.rotor_control;
   j["priority_mode"] = m.priority_mode;
+  j["tracking"] = {{"mode", m.tracking.mode == TrackingChoice::Mode::single  ? "single"
+                            : m.tracking.mode == TrackingChoice::Mode::multi ? "multi"
+                                                                              : "list"},
+                   {"catalog_number", m.tracking.catalog_number},
+                   {"name", m.tracking.name}};
+  j["event_min_el_deg"] = m.event_min_el_deg;
   j["refresh"] = to_json(m.refresh);
   j["pass_events"] = {{"rotor_start_el_deg", m.pass_events.rotor_start_el_deg},
                       {"output_on_el_deg", m.pass_events.output_on_el_deg},
@@ -438,6 +444,18 @@ Database database_from(const json& j) {
   return db;
 }
 
+TrackingChoice tracking_from(const json& t) {
+  TrackingChoice c;
+  const std::string w = "tracking";
+  const std::string mode = text(t, w, "mode", 10);
+  if (mode == "single") c.mode = TrackingChoice::Mode::single;
+  else if (mode == "multi") c.mode = TrackingChoice::Mode::multi;
+  else if (mode != "list") bad(path(w, "mode"), "expected list, single or multi; found '" + mode + "'");
+  c.catalog_number = static_cast<int>(integer(t, w, "catalog_number", 0, 999999999));
+  c.name = text(t, w, "name", 64);
+  return c;
+}
+
 station::GpsSettings gps_from(const json& g) {
   station::GpsSettings s;
   const std::string w = "gps";
@@ -466,6 +484,9 @@ Model model_from_json(const json& j) {
                                                      100LL * 365 * 86400 * 1000000));
   m.rotor_control = boolean(j, "", "rotor_control");
   m.priority_mode = boolean(j, "", "priority_mode");
+  // Absent in state files written before the choice was kept (issue 39): the tracking list's rule.
+  if (j.contains("tracking")) m.tracking = tracking_from(j["tracking"]);
+  if (j.contains("event_min_el_deg")) m.event_min_el_deg = num(j, "", "event_min_el_deg", -90, 90);
   // Absent in state files written before the scheduled refresh existed.
   if (j.contains("refresh")) m.refresh = refresh_settings_from_json(j["refresh"], "refresh");
   // Absent in state files written before the later firmware's STATION.DAT was read.

@@ -27,16 +27,30 @@ struct PassEvents {
   bool operator==(const PassEvents&) const = default;
 };
 
+// What the operator last chose to track (menu 1 or S, M, the selector, a station operation): what a
+// restarted station, the service above all, tracks again. `list` is the rule for a state that holds
+// no choice yet: the first multi_count of the tracking list when it has two or more, else the '*'.
+struct TrackingChoice {
+  enum class Mode { list, single, multi };
+  Mode mode = Mode::list;
+  int catalog_number = 0;  // single: the satellite (by catalog number: it outlives uploads)
+  std::string name;        // its name then, for the messages when it is gone
+  bool operator==(const TrackingChoice&) const = default;
+};
+
 struct Model {
   station::StationConfig station;
   rotator::RotatorConfig rotator;
   radio::RadioConfig radio;
   Database db;
   std::chrono::microseconds clock_offset{0};  // menu 5: RTC = system time + offset
-  bool rotor_control = false;                 // the E key
+  bool rotor_control = false;                 // the E key, --rotor-control, menu 6-R
+  TrackingChoice tracking;                    // what the station tracks after a restart
   bool priority_mode = false;                 // M: priority sub-mode
   RefreshSettings refresh;                    // menu 3-5: scheduled element refresh
   PassEvents pass_events;                     // STATION.DAT line 5 of the later firmware
+  // --event-min-el: no AOS/LOS event (nor hook) for a pass whose maximum elevation is under this.
+  double event_min_el_deg = 0.0;
   // STATION.DAT line 6 of the later firmware: a stalled rotator is declared in error (after
   // rotator.stall_s): the controller's stall watch (off: Controller::set_error_detection).
   bool rotator_error_detection = true;

@@ -26,7 +26,8 @@ nlohmann::json to_json(const Event& e) {
   if (e.pass) {
     j["aos"] = orbit::format_iso8601(e.pass->aos, 1);
     j["tca"] = orbit::format_iso8601(e.pass->tca, 1);
-    j["los"] = orbit::format_iso8601(e.pass->los, 1);
+    // Still up where the search ended (geostationary): no LOS to tell.
+    j["los"] = e.pass->up_at_end ? nlohmann::json(nullptr) : nlohmann::json(orbit::format_iso8601(e.pass->los, 1));
     j["max_el_deg"] = e.pass->max_el_deg;
     j["aos_az_deg"] = e.pass->aos_az_deg;
     j["los_az_deg"] = e.pass->los_az_deg;
@@ -48,7 +49,7 @@ std::vector<std::pair<std::string, std::string>> event_environment(const Event& 
   if (e.pass) {
     env.emplace_back("TRAKBOX_AOS", orbit::format_iso8601(e.pass->aos, 1));
     env.emplace_back("TRAKBOX_TCA", orbit::format_iso8601(e.pass->tca, 1));
-    env.emplace_back("TRAKBOX_LOS", orbit::format_iso8601(e.pass->los, 1));
+    env.emplace_back("TRAKBOX_LOS", e.pass->up_at_end ? std::string() : orbit::format_iso8601(e.pass->los, 1));
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.1f", e.pass->max_el_deg);
     env.emplace_back("TRAKBOX_MAX_EL_DEG", buf);
@@ -77,6 +78,9 @@ std::vector<Event> PassEventSource::step(orbit::UtcTime now) {
   std::map<int, Watch> kept;
   orbit::PassOptions po;
   po.horizon_deg = model_.pass_events.rotor_start_el_deg;
+  // --event-min-el: a pass that never rises that high (one that only grazes the -2 deg rule) is
+  // no pass to announce: no AOS, so no LOS and no hook (issue 39).
+  po.min_max_elevation_deg = model_.event_min_el_deg;
   for (const int i : model_.db.selected) {
     if (i < 0 || i >= static_cast<int>(model_.db.satellites.size())) continue;
     const orbit::Elements& el = model_.db.satellites[static_cast<std::size_t>(i)].elements;

@@ -1,7 +1,9 @@
 // The station's events: AOS and LOS of the satellites of the tracking list, element refreshes,
 // links lost and back, failed saves. PassEventSource finds AOS and LOS from the same pass search
 // `trakbox passes` uses (AOS/LOS are crossings of the rotor start elevation, -2.0 deg by default:
-// the manual's rule), fired at the first tick at or after AOS - lead and at or after LOS; it reads
+// the manual's rule) of the passes whose maximum reaches model.event_min_el_deg (--event-min-el,
+// factory 0: none for a pass that never rises), fired at the first tick at or after AOS - lead and
+// at or after LOS (none for a satellite always up: a geostationary one has no LOS); it reads
 // the model and the tracker's propagators and does no I/O. What the events become (hooks, the
 // event stream) is the application's (app/event_hooks.h, docs/service.md).
 #pragma once

@@ -23,12 +23,41 @@ StationLoop::StationLoop(store::Model& model, const station::Clock& clock, Track
       tuner_(model.radio) {
   rotator_->set_control_enabled(model_.rotor_control);
   rotator_->set_error_detection(model_.rotator_error_detection);
+  // The Tracker may outlive this station (a test rebuilds it around the same Tracker): the hook
+  // does nothing once this one is gone, and a newer station's hook replaces it.
+  tracker_.on_choice([this, alive = std::weak_ptr<int>(alive_)] {
+    if (!alive.expired()) record_choice();
+  });
 }
 
 void StationLoop::set_rotor_control(bool on) {
+  const bool changed = model_.rotor_control != on;
   model_.rotor_control = on;
   rotator_->set_control_enabled(on);
+  if (changed && settings_changed_) settings_changed_();
   wake();
+}
+
+void StationLoop::record_choice() {
+  store::TrackingChoice c;
+  if (tracker_.mode() == Mode::multi) {
+    c.mode = store::TrackingChoice::Mode::multi;
+    if (model_.priority_mode != tracker_.priority()) {
+      model_.priority_mode = tracker_.priority();
+      model_.tracking = {};  // saved below
+    }
+  } else if (tracker_.mode() == Mode::single) {
+    const int i = tracker_.single_index();
+    if (i < 0 || i >= static_cast<int>(model_.db.satellites.size())) return;
+    c.mode = store::TrackingChoice::Mode::single;
+    c.catalog_number = model_.db.satellites[static_cast<std::size_t>(i)].elements.catalog_number;
+    c.name = model_.db.satellites[static_cast<std::size_t>(i)].name();
+  } else {
+    return;
+  }
+  if (c == model_.tracking) return;
+  model_.tracking = c;
+  if (settings_changed_) settings_changed_();
 }
 
 void StationLoop::reconfigure() {
@@ -304,7 +333,11 @@ std::string StationLoop::status_line() const {
                 static_cast<int>(c.second), sat.c_str());
   std::string line = buf;
   // What needs the operator comes before the antenna and radio readings, which are on other
-  // screens too: a terminal narrower than the line cuts its end (issue 30).
+  // screens too: a terminal narrower than the line cuts its end (issue 30). Faults first, in a
+  // word each so that they stay within 80 columns; their detail ends the line, and 6-0 and
+  // `trakbox status` have it whole (issue 39).
+  if (!rs.link.ok()) line += " | ROTOR FAULT";
+  if (radio.fault) line += " | RADIO FAULT";
   if (save_failure_) line += " | STATE NOT SAVED";
   if (!notice_.empty()) line += " | " + notice_;
   if (gps_)

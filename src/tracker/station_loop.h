@@ -29,7 +29,11 @@ class StationLoop {
   void tick();
   std::chrono::milliseconds next_tick_in() const;
 
-  // The E key: rotor control on/off (persisted in the model).
+  StationLoop(const StationLoop&) = delete;
+  StationLoop& operator=(const StationLoop&) = delete;
+
+  // The E key, menu 6-R, a station operation: rotor control on/off (persisted in the model and
+  // saved at the change through on_settings_changed).
   void set_rotor_control(bool on);
   bool rotor_control() const { return model_.rotor_control; }
   // Doppler on/off: off, the radio is left as it is (not tuned to the followed satellite) until
@@ -39,6 +43,11 @@ class StationLoop {
     if (on) tuned_.reset();  // select the satellite again: everything is sent afresh
   }
   bool doppler() const { return doppler_; }
+
+  // The settings the station itself changes for whoever asked (rotor control; the Tracker's choice
+  // of what to track, recorded in model.tracking): the program saves the state here, so a restart
+  // does what was asked whichever front end asked it.
+  void on_settings_changed(std::function<void()> f) { settings_changed_ = std::move(f); }
 
   // Direct antenna control (menus 6-6 and 8, host AZ/EL, Satrak GOTO): tracking stops, the antenna
   // goes where it is told (still inside the limits). Returns the commanded compass position.
@@ -140,6 +149,9 @@ class StationLoop {
   std::uint64_t position_generation_ = 0;
   std::optional<int> remote_db_;  // remote_'s satellite in the database
   std::function<void()> wake_;
+  std::function<void()> settings_changed_;
+  std::shared_ptr<int> alive_ = std::make_shared<int>(0);  // the Tracker's hook checks this
+  void record_choice();
   void wake() {
     if (wake_) wake_();
   }

@@ -31,12 +31,14 @@ void Tracker::track_single(int db_index) {
   mode_ = Mode::single;
   single_ = db_index;
   current_.reset();
+  if (on_choice_) on_choice_();
 }
 
 void Tracker::track_multi(bool priority) {
   mode_ = Mode::multi;
   priority_ = priority;
   current_.reset();
+  if (on_choice_) on_choice_();
 }
 
 void Tracker::stop() {

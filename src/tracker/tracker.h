@@ -3,6 +3,7 @@
 // the next AOS, park, hold). Pure with respect to I/O: it reads the model and a clock and returns
 // a decision; the Station (station_loop.h) applies decisions to the rotator and the radio.
 #pragma once
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -46,11 +47,15 @@ class Tracker {
  public:
   Tracker(const store::Model& model, const station::Clock& clock);
 
+  // What to track. Each choice is told to on_choice (the station records it in the model, so a
+  // restart tracks it again); stop() is not a choice (direct control, a park, leaving).
   void track_single(int db_index);
   void track_multi(bool priority);
   void stop();
   Mode mode() const { return mode_; }
   bool priority() const { return priority_; }
+  int single_index() const { return single_; }
+  void on_choice(std::function<void()> f) { on_choice_ = std::move(f); }
 
   // Recomputes everything at the clock's now; the decision for the antenna.
   Decision tick();
@@ -86,6 +91,7 @@ class Tracker {
   Mode mode_ = Mode::off;
   bool priority_ = false;
   int single_ = -1;
+  std::function<void()> on_choice_;
   std::optional<int> current_;  // db index followed in multi mode
   std::vector<SatNow> candidates_;
   Decision decision_;

@@ -788,7 +788,8 @@ def group_6_7_8(s):
     ui.send("6\r")
     out = ui.prompt(UPDATE)
     must(out, r"====== Configuration Menu ======\n 0\. Display all configured value\n", "menu 6's list")
-    must(out, r" 9\. Set default parameter\n Select:", "menu 6's list ends with 9")
+    must(out, r" 9\. Set default parameter\n R\. Rotor control \(kept over a restart\)\n Select:",
+         "menu 6's list: 9, then trakbox's R")
 
     walk_6_0(ui, FACTORY_6_0)
     walk_6_3(ui)

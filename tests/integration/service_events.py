@@ -3,7 +3,8 @@ checked against the station's own rotctld/rigctld answers, its state and `trakbo
 status for a healthy station, one with a dead rotator link and none running; the AOS and LOS
 events at the times `trakbox passes` predicts for the same station and clock (within a tick), in
 the JSON lines of `trakbox events` and through --on-event hooks: one that writes a file, one that
-hangs and is killed at its limit."""
+hangs and is killed at its limit; none for a pass whose maximum stays under --event-min-el (2 deg
+here: ISS's pass of 12:09, which peaks at 1.2 deg; issue 39)."""
 import datetime
 import json
 import os
@@ -25,6 +26,7 @@ LOCAL_ELEMENTS = "file://" + os.path.join(SOURCE, "data", "amateur.tle")
 RATE = 10
 UNTIL = "2026-05-21T12:18:00Z"  # after the LOS of AO-91, the last of the passes up at the start
 TICK_S = 1.0                    # --tick-ms 1000 of clock time
+MIN_EL = 2.0                    # --event-min-el
 
 
 def iso(text):
@@ -120,6 +122,7 @@ def main():
         svc = subprocess.Popen(
             [BIN, "--service", "--state", state, "--satrak-port", "0", "--clock", CLOCK, "--clock-rate", str(RATE),
              "--elements-url", LOCAL_ELEMENTS, "--rotctld-port", str(rot), "--rigctld-port", str(rig), "--hook-timeout", "2",
+             "--event-min-el", str(MIN_EL),
              "--on-event", f'aos,los=echo "$TRAKBOX_EVENT $TRAKBOX_SATELLITE $TRAKBOX_TIME $TRAKBOX_MAX_EL_DEG" >> {hook_file}',
              "--on-event", "aos=echo waiting for $TRAKBOX_SATELLITE; sleep 600"],
             stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
@@ -175,9 +178,12 @@ def main():
                             f"{st['lat_deg']},{st['lon_deg']},{st['height_m']}", "--start", CLOCK, "--hours",
                             str(hours), "--json")
         check(code == 0, f"passes: {err}")
-        expected = []
+        expected, low = [], []
         for p in json.loads(out):
             if p["sat"] not in names:
+                continue
+            if p["max_el_deg"] < MIN_EL:
+                low.append(p["sat"])
                 continue
             expected.append(("aos", p["sat"], iso(p["aos_utc"])))
             if iso(p["los_utc"]) < iso(UNTIL) - datetime.timedelta(seconds=2):
@@ -189,7 +195,7 @@ def main():
             rows = [line.split() for line in f if line.strip()]
         got = {(r[0], r[1]): iso(r[2]) for r in rows}
         check(len(rows) == len(got), f"the file hook ran once per event: {rows}")
-        check(len(expected) >= 8, f"the window holds AOS and LOS to check: {expected}")
+        check(len(expected) >= 6, f"the window holds AOS and LOS to check: {expected}")
         worst = 0.0
         for kind, sat, t in expected:
             check((kind, sat) in got, f"{kind} of {sat} at {t} ran the hook: {sorted(got)}")
@@ -197,9 +203,13 @@ def main():
             check(-0.2 <= late <= TICK_S + 0.5, f"{kind} {sat}: event at {got[(kind, sat)]}, predicted {t}")
             worst = max(worst, late)
         check(len(got) == len(expected), f"no other AOS/LOS: {sorted(got)} vs {expected}")
+        check("ISS" in low, f"ISS's low pass is in the window: {low}")
+        for sat in low:
+            check(("aos", sat) not in got and ("los", sat) not in got,
+                  f"no event nor hook for {sat}, whose pass stays under {MIN_EL} deg: {sorted(got)}")
         streamed = {(e["event"], e["satellite"]): iso(e["time"]) for e in events if e["event"] in ("aos", "los")}
         later = {k: v for k, v in got.items() if v > iso(CLOCK) + datetime.timedelta(seconds=10)}
-        check(len(later) >= 5 and all(streamed.get(k) == v for k, v in later.items()),
+        check(len(later) >= 3 and all(streamed.get(k) == v for k, v in later.items()),
               f"trakbox events streamed the same events: {sorted(streamed)} vs {sorted(later)}")
         e0 = next(e for e in events if e["event"] in ("aos", "los"))
         for key in ("satellite", "catalog_number", "aos", "los", "tca", "max_el_deg", "downlink_hz"):
@@ -212,7 +222,7 @@ def main():
         check(killed == aos_count, f"the hanging hook was killed at its limit for each AOS: {killed} of {aos_count}")
         check("killed at its limit; output: waiting for" in log, "its output is in the log")
         check("exit status 0" in log, "the file hook's exit status is in the log")
-        print(f"{len(expected)} AOS/LOS events, latest {worst:.2f} s after the prediction; {killed} hooks killed")
+        print(f"{len(expected)} AOS/LOS events ({len(low)} low passes untold), latest {worst:.2f} s after the prediction; {killed} hooks killed")
     finally:
         reap(procs)
         for d in (state, other, scratch):

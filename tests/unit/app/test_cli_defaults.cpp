@@ -4,7 +4,10 @@
 // and -90+130+8+20*(2.5/60) deg north at its south-west corner; the centre adds half a subsquare.
 #include <doctest/doctest.h>
 
+#include <cctype>
+
 #include "app/cli_defaults.h"
+#include "station/station.h"
 
 using namespace tb::app;
 using tb::orbit::UtcTime;
@@ -36,6 +39,24 @@ TEST_CASE("Maidenhead locators: the centre of the square") {
   CHECK_FALSE(maidenhead_centre("SN18du"));  // fields are A-R
   CHECK_FALSE(maidenhead_centre("JN18dy"));  // subsquares are A-X
   CHECK_FALSE(maidenhead_centre("48.85"));
+}
+
+TEST_CASE("Maidenhead locators of a position (status --json's station.locator, issue 39)") {
+  // Paris (48.8566 N, 2.3522 E): 2.3522 = 2 + 4*(5/60) + 0.019 -> J, 1, e; 48.8566 = 48 + 20*(2.5/60) + 0.0233 -> N, 8, u.
+  CHECK(tb::station::maidenhead_locator(48.8566, 2.3522) == "JN18eu");
+  CHECK(tb::station::maidenhead_locator(41.714775, -72.727260) == "FN31pr");  // W1AW
+  CHECK(tb::station::maidenhead_locator(27.391, 128.657) == "PL47hj");  // the factory station: 308.657 E+180, 117.391 N+90
+  CHECK(tb::station::maidenhead_locator(-90.0, -180.0) == "AA00aa");
+  CHECK(tb::station::maidenhead_locator(90.0, 180.0) == "RR99xx");
+  // Each centre is inside its own locator.
+  for (const char* loc : {"JN18du", "FN31pr", "QF56od", "AA00aa", "RR99xx"}) {
+    const auto c = maidenhead_centre(loc);
+    REQUIRE(c);
+    std::string want(loc);
+    for (std::size_t i = 0; i < 2; ++i) want[i] = static_cast<char>(std::toupper(static_cast<unsigned char>(want[i])));
+    for (std::size_t i = 4; i < 6; ++i) want[i] = static_cast<char>(std::tolower(static_cast<unsigned char>(want[i])));
+    CHECK(tb::station::maidenhead_locator(c->lat_deg, c->lon_deg) == want);
+  }
 }
 
 TEST_CASE("stations: degrees with signs or hemispheres, blanks after commas, locators, optional height") {

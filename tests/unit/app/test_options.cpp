@@ -127,7 +127,7 @@ TEST_CASE("A repeatable option keeps every value in order; value() is the last")
 TEST_CASE("Shape errors: one line naming the argument, the first problem only") {
   CHECK(error_of({"--bogus"}) == "--bogus: unknown option");
   CHECK(error_of({"--bogus=1"}) == "--bogus: unknown option");
-  CHECK(error_of({"--Start", "1"}) == "--Start: unknown option");  // names are case-sensitive
+  CHECK(error_of({"--Start", "1"}) == "--Start: unknown option; did you mean --start?");  // names are case-sensitive
   CHECK(error_of({"-x"}) == "-x: unknown option (options are written --name)");
   CHECK(error_of({"-start", "1"}) == "-start: unknown option (options are written --name)");
   CHECK(error_of({"--start"}) == "--start: expected MIN after it");
@@ -144,6 +144,10 @@ TEST_CASE("Shape errors: one line naming the argument, the first problem only") 
   CHECK(po.error->argument == "--bogus");
   CHECK(po.error->message == "unknown option");
   CHECK(error_of({"--start", "1", "file"}).empty());
+  // A typo (within two edits) or the start of one option: the option meant (issue 39).
+  CHECK(error_of({"--strat", "1"}) == "--strat: unknown option; did you mean --start?");
+  CHECK(error_of({"--stp", "1"}) == "--stp: unknown option; did you mean --step?");
+  CHECK(error_of({"--he"}) == "--he: unknown option");  // too short to guess
 }
 
 TEST_CASE("describe_options: one line per option, help aligned at column 27") {

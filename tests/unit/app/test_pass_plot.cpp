@@ -101,3 +101,85 @@ TEST_CASE("pass plot: SVG by the extension, and a name without one refused") {
   REQUIRE(err);
   CHECK(err->find(".png or .svg") != std::string::npos);
 }
+
+namespace {
+std::string slurp(const std::filesystem::path& p) {
+  std::FILE* f = std::fopen(p.c_str(), "rb");
+  REQUIRE(f);
+  std::string s;
+  char buf[8192];
+  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) s.append(buf, n);
+  std::fclose(f);
+  return s;
+}
+
+// The ISS pass of 2026-05-21 after 13:30 over the factory station, as `passes --plot` draws it.
+struct IssPicture {
+  orbit::Elements iss;
+  orbit::Observer station{27.391, 128.657, 50.0};
+  app::PassPicture pic;
+  IssPicture() {
+    const auto sets = orbit::load_elements_file(std::string(TRAKBOX_SOURCE_DIR) + "/data/amateur.tle");
+    for (const auto& e : sets.sets)
+      if (e.catalog_number == 25544) iss = e;
+    const orbit::Sgp4 sat(iss);
+    const auto pass = orbit::next_pass(sat, station, orbit::from_civil(2026, 5, 21, 13, 30, 0));
+    REQUIRE(pass);
+    pic.title = "ISS <A&B>";  // outside text: escaped in the SVG
+    pic.station = "station 27.3910 N 128.6570 E 50 m";
+    pic.element_age = "elements age 0.4 days at AOS";
+    pic.pass = *pass;
+    pic.track = app::sample_pass(sat, station, *pass);
+  }
+};
+}  // namespace
+
+TEST_CASE("pass plot: the SVG's words are <text> (selectable), with the station, the element age, minute and azimuth ticks (issue 39)") {
+  IssPicture p;
+  const auto path = std::filesystem::temp_directory_path() / ("trakbox-plot-text-" + std::to_string(::getpid()) + ".svg");
+  REQUIRE_FALSE(app::write_pass_plot(p.pic, path.string()));
+  const std::string svg = slurp(path);
+  std::filesystem::remove(path);
+  CHECK(svg.find("glyph") == std::string::npos);  // no outlines of letters
+  CHECK(svg.find(">ISS &lt;A&amp;B&gt;  2026-05-21 UTC  max el ") != std::string::npos);
+  CHECK(svg.find(">station 27.3910 N 128.6570 E 50 m   elements age 0.4 days at AOS</text>") != std::string::npos);
+  for (const char* word : {">N</text>", ">E</text>", ">S</text>", ">W</text>", ">30</text>", ">330</text>", ">AOS "})
+    CHECK_MESSAGE(svg.find(word) != std::string::npos, word);
+  // A minute label every other minute along the track: the first even minute after AOS.
+  auto m = std::chrono::ceil<std::chrono::minutes>(p.pic.pass.aos);
+  if (std::chrono::duration_cast<std::chrono::minutes>(m.time_since_epoch()).count() % 2) m += std::chrono::minutes(1);
+  const std::string hhmm = ">" + orbit::format_iso8601(m, 0).substr(11, 5) + "</text>";
+  CHECK_MESSAGE(svg.find(hhmm) != std::string::npos, hhmm);
+  CHECK(svg.rfind("</svg>") > svg.rfind("</text>"));
+}
+
+TEST_CASE("pass plot: an arrow the way the satellite moves, at the middle of the pass (issue 39)") {
+  IssPicture p;
+  const auto path = std::filesystem::temp_directory_path() / ("trakbox-plot-arrow-" + std::to_string(::getpid()) + ".png");
+  REQUIRE_FALSE(app::write_pass_plot(p.pic, path.string()));
+  std::unique_ptr<cairo_surface_t, void (*)(cairo_surface_t*)> png(
+      cairo_image_surface_create_from_png(path.c_str()), cairo_surface_destroy);
+  std::filesystem::remove(path);
+  REQUIRE(cairo_surface_status(png.get()) == CAIRO_STATUS_SUCCESS);
+  // Across the track 2.5 px either side at the arrow (the middle sample; the 3 px track reaches
+  // 1.5 px): blue; 3.5 px off the plain track at a quarter: white.
+  auto across = [&](std::size_t i, double side) {
+    double x0, y0, x1, y1;
+    app::plot_position(p.pic.track[i - 1].az_deg, p.pic.track[i - 1].el_deg, x0, y0);
+    app::plot_position(p.pic.track[i].az_deg, p.pic.track[i].el_deg, x1, y1);
+    const double len = std::hypot(x1 - x0, y1 - y0);
+    return pixel(png.get(), x1 - (y1 - y0) / len * side, y1 + (x1 - x0) / len * side);
+  };
+  const std::size_t mid = p.pic.track.size() / 2;
+  for (const double side : {-2.5, 2.5}) {
+    const Rgb at_arrow = across(mid, side);
+    CHECK(at_arrow.b > 150);
+    CHECK(at_arrow.r < 80);
+  }
+  // Away from the arrow and from the minute ticks (at the first sample of each minute).
+  auto minute_of = [&](std::size_t i) { return std::chrono::floor<std::chrono::minutes>(p.pic.track[i].time); };
+  std::size_t i = p.pic.track.size() / 4;
+  while (minute_of(i - 2) != minute_of(i + 2)) ++i;
+  const Rgb plain = across(i, -3.5);  // (the minute labels are on the other side)
+  CHECK(plain.r > 200);
+}

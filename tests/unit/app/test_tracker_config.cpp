@@ -101,3 +101,35 @@ TEST_CASE("--dial-rest and --doppler-step: the operating practice, checked befor
   CHECK(error_of({"--doppler-step", "20,5"}).rfind("--doppler-step: ", 0) == 0);
   CHECK(error_of({"--doppler-step", "x,100"}).rfind("--doppler-step: ", 0) == 0);
 }
+
+TEST_CASE("--rotor-control on|off and --event-min-el DEG are read, checked and optional (issue 39)") {
+  const auto none = parse({});
+  REQUIRE(none.config);
+  CHECK_FALSE(none.config->rotor_control);
+  CHECK_FALSE(none.config->event_min_el_deg);
+  const auto on = parse({"--rotor-control", "on", "--event-min-el", "5"});
+  REQUIRE(on.config);
+  CHECK(on.config->rotor_control == true);
+  CHECK(on.config->event_min_el_deg == 5.0);
+  const auto off = parse({"--rotor-control", "off", "--event-min-el", "-2"});
+  REQUIRE(off.config);
+  CHECK(off.config->rotor_control == false);
+  CHECK(off.config->event_min_el_deg == -2.0);
+  CHECK(error_of({"--rotor-control", "yes"}) == "--rotor-control: expected on or off; found 'yes'");
+  CHECK(error_of({"--event-min-el", "91"}).rfind("--event-min-el: expected degrees, -2 to 90", 0) == 0);
+  CHECK(error_of({"--event-min-el", "-3"}).rfind("--event-min-el: expected degrees, -2 to 90", 0) == 0);
+}
+
+TEST_CASE("trakbox host serves no port unless one is asked for (issue 39)") {
+  const auto host = parse({}, FrontEnd::host);
+  REQUIRE(host.config);
+  CHECK(host.config->satrak_port == 0);
+  const auto asked = parse({"--satrak-port", "4100"}, FrontEnd::host);
+  REQUIRE(asked.config);
+  CHECK(asked.config->satrak_port == 4100);
+  CHECK(parse({}, FrontEnd::menus).config->satrak_port == 4001);
+}
+
+TEST_CASE("--rotater: did you mean --rotator (issue 39)") {
+  CHECK(error_of({"--rotater", "simulated"}) == "--rotater: unknown option; did you mean --rotator?");
+}

@@ -9,8 +9,13 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
 
 #include "fixture.h"
+#include "tracker/elements_refresh.h"
 #include "radio/freqmode.h"
 
 using namespace tb;
@@ -602,4 +607,44 @@ TEST_CASE("3-5 S takes the SatNOGS transmitters from a file into the records the
   menus::menu_3_5_refresh(g.term, *g.services);
   CHECK(has(g.term.output(), "  Nothing changed: cannot read /nonexistent/transmitters.json\n"));
   CHECK(db_json(g.model) == before);
+}
+
+TEST_CASE("3-5 says a refresh running again together with the last one's failure (issue 39)") {
+  testing::MenuFixture f;
+  // The refresh posts its results to the loop: here a queue the test runs by hand.
+  std::mutex mu;
+  std::vector<std::function<void()>> posted;
+  tracker::ElementsRefresh refresh(
+      f.model,
+      [&](std::function<void()> fn) {
+        std::lock_guard<std::mutex> lock(mu);
+        posted.push_back(std::move(fn));
+      },
+      [] {});
+  f.station->set_refresh(&refresh);
+  f.model.refresh.sources = {store::RefreshSource{"file:///nonexistent/trakbox/amateur.tle", "", ""}};
+  auto run_posted = [&] {
+    for (int i = 0; i < 500; ++i) {
+      std::vector<std::function<void()>> due;
+      {
+        std::lock_guard<std::mutex> lock(mu);
+        due.swap(posted);
+      }
+      for (auto& fn : due) fn();
+      if (!refresh.running()) return;
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    FAIL("the refresh did not finish");
+  };
+  REQUIRE_FALSE(refresh.refresh_now(1'800'000'000));
+  run_posted();
+  REQUIRE(refresh.last_failed());
+  REQUIRE_FALSE(refresh.refresh_now(1'800'000'100));
+  REQUIRE(refresh.running());
+  f.term.feed("Q\r");
+  menus::menu_3_5_refresh(f.term, *f.services);
+  CHECK(has(f.term.output(), " Refresh: running now; the last one FAILED "));
+  CHECK_FALSE(has(f.term.output(), "Last refresh: running now"));
+  run_posted();
+  f.station->set_refresh(nullptr);
 }

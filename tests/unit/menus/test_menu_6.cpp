@@ -69,8 +69,26 @@ TEST_CASE("Menu 6 scripts: the keys typed, what the screen shows, what the model
                  " 7. Radio CAT port configuration\n"
                  " 8. Mic click configuration\n"
                  " 9. Set default parameter\n"
+                 " R. Rotor control (kept over a restart)\n"
                  " Select: "},
        .saves = 0},
+
+      {.name = "6-R switches rotor control on and saves it; the antenna is then driven",
+       .keys = "R\rY\rQ\r",
+       .shown = {"Rotor control is OFF: the antenna stays where it is\n", "Rotor control switched ON\n"},
+       .saves = 1,
+       .then = [](Fixture& f, const store::Model& was) {
+         CHECK(!was.rotor_control);
+         CHECK(f.model.rotor_control);
+         CHECK(f.station->rotator().control_enabled());
+       }},
+
+      {.name = "6-R: N turns it off; the same answer again changes and saves nothing; Q leaves it",
+       .keys = "R\rN\rR\rN\rR\rQ\rQ\r",
+       .setup = [](Fixture& f) { f.station->set_rotor_control(true); },
+       .shown = {"Rotor control switched OFF\n", "Rotor control unchanged.\n"},
+       .saves = 1,
+       .then = [](Fixture& f, const store::Model&) { CHECK(!f.model.rotor_control); }},
 
       {.name = "6-0 displays every configured value in the manual's layout",
        .keys = "0\r Q\r",
@@ -116,6 +134,19 @@ TEST_CASE("Menu 6 scripts: the keys typed, what the screen shows, what the model
        .saves = 0,
        .then = [](Fixture& f, const store::Model& was) { CHECK(f.model.rotator == was.rotator); }},
 
+      {.name = "6-1: Esc leaves the span alone, as N does (issue 39)",
+       .keys = "1\r\x1bQ\r",
+       .setup = [](Fixture& f) { f.station->set_rotor_control(true); },
+       .shown = {"Elevation minimum position [Y/N] ? N\nNot changed.\n"},
+       .saves = 0,
+       .then = [](Fixture& f, const store::Model& was) { CHECK(f.model.rotator == was.rotator); }},
+
+      {.name = "6-2: Esc at a value leaves the span as it was (issue 39)",
+       .keys = "2\r9\r\x1bQ\r",
+       .shown = {"Not changed.\n"},
+       .saves = 0,
+       .then = [](Fixture& f, const store::Model& was) { CHECK(f.model.rotator == was.rotator); }},
+
       {.name = "6-1: both points at the same place are refused",
        .keys = "1\rYYQ\r",
        .setup = [](Fixture& f) {
@@ -129,7 +160,16 @@ TEST_CASE("Menu 6 scripts: the keys typed, what the screen shows, what the model
          CHECK(f.station->rotator().config() == was.rotator);
        }},
 
-      {.name = "6-1 on a fresh unit (rotor control off) takes rotor control: no question, the keys move",
+      {.name = "6-1 opened on a fresh unit does not take rotor control; N leaves it off (issue 39)",
+       .keys = "1\rNQ\r",
+       .shown = {"Not changed.\n"},
+       .saves = 0,
+       .then = [](Fixture& f, const store::Model&) {
+         CHECK(!has(f.term.output(), "Rotor control switched ON"));
+         CHECK(!f.model.rotor_control);
+       }},
+
+      {.name = "6-1 on a fresh unit (rotor control off): the first key that moves takes rotor control, no question",
        .keys = "1\r6NQ\r",
        .setup = [](Fixture& f) { f.term.timeouts_before_key = 20; },
        .shown = {"Rotor control switched ON (E key in the realtime display switches it OFF).\n"},

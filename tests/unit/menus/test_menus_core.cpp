@@ -24,6 +24,37 @@ TEST_CASE("Menu 4 edits the station; Enter keeps each value") {
   CHECK(f.term.output().find("Latitude  [deg]    : +27.391  32.259") != std::string::npos);
 }
 
+TEST_CASE("Menu 4: a callsign typed with a non-ASCII letter is refused with a message, not stored mangled (issue 39)") {
+  testing::MenuFixture f("P\xc3\xa0ris\rF4ABC\r\r\r\r\r\r");
+  menus::menu_4_station_elements(f.term, *f.services);
+  CHECK(f.term.output().find("only ASCII characters are taken here") != std::string::npos);
+  CHECK(f.term.output().find("'Pris' is what is left; not changed") != std::string::npos);
+  CHECK(f.model.station.callsign == "F4ABC");  // the second answer, never "PRIS"
+  CHECK(f.saves == 1);
+}
+
+TEST_CASE("Esc at the satellite list leaves it with nothing chosen, not typed into the field (issue 39)") {
+  testing::MenuFixture f("\x1bQY\r");
+  const int marked = f.model.db.marked;
+  menus::menu_1_realtime_tracking(f.term, *f.services);
+  CHECK(f.model.db.marked == marked);
+  CHECK(f.tracker.mode() == tracker::Mode::off);
+  CHECK(f.term.output().find("Select :QY") == std::string::npos);
+  CHECK(f.saves == 0);
+}
+
+TEST_CASE("Menu 4 takes a Maidenhead locator at the latitude, as passes --station does (issue 39)") {
+  // JN18du: field J,N (0 E, 40 N), square 1,8 (2 E, 48 N), subsquare d,u (3 and 20 of 24): centre
+  // 2 + 3.5/12 = 2.291667 E, 48 + 20.5/24 = 48.854167 N.
+  testing::MenuFixture f("\rJN18du\r\r\r\r\r");
+  menus::menu_4_station_elements(f.term, *f.services);
+  CHECK(f.model.station.lat_deg == doctest::Approx(48.854167).epsilon(1e-6));
+  CHECK(f.model.station.lon_deg == doctest::Approx(2.291667).epsilon(1e-6));
+  CHECK(f.term.output().find("locator: the centre of its square, 48.854167 N 2.291667 E") != std::string::npos);
+  CHECK(f.term.output().find("is not a number of degrees") == std::string::npos);
+  CHECK(f.saves == 1);
+}
+
 TEST_CASE("Menu 4: a new rotor start takes effect at once on the antenna, not at the next start") {
   testing::MenuFixture f("\r\r\r\rN\r\r");
   REQUIRE(f.model.station.rotor_start == station::RotorStart::south);

@@ -111,3 +111,28 @@ TEST_CASE("The radio's operating practice and remembered corrections round-trip;
   bad["radio"]["doppler_step_fm_hz"] = 5;
   CHECK_THROWS_WITH_AS(model_from_json(bad), "radio.doppler_step_fm_hz: value 5 outside 10 .. 10000", std::runtime_error);
 }
+
+TEST_CASE("the tracking choice and --event-min-el round-trip; a bad mode is refused by name; older states have none") {
+  Model m = factory_defaults();
+  CHECK(m.tracking.mode == tb::store::TrackingChoice::Mode::list);
+  CHECK(m.event_min_el_deg == 0.0);
+  m.tracking = {tb::store::TrackingChoice::Mode::single, 25544, "ISS"};
+  m.event_min_el_deg = 10.0;
+  m.rotor_control = true;
+  json j = to_json(m);
+  CHECK(j["tracking"] == json{{"mode", "single"}, {"catalog_number", 25544}, {"name", "ISS"}});
+  const Model back = model_from_json(j);
+  CHECK(back.tracking == m.tracking);
+  CHECK(back.event_min_el_deg == 10.0);
+  CHECK(back.rotor_control);
+  j["tracking"]["mode"] = "pass";
+  CHECK_THROWS_WITH_AS(model_from_json(j), "tracking.mode: expected list, single or multi; found 'pass'",
+                       std::runtime_error);
+  j["tracking"]["mode"] = "multi";
+  j["event_min_el_deg"] = 91;
+  CHECK_THROWS_WITH_AS(model_from_json(j), "event_min_el_deg: value 91 outside -90.0 .. 90.0", std::runtime_error);
+  j.erase("tracking");
+  j.erase("event_min_el_deg");
+  CHECK(model_from_json(j).tracking == tb::store::TrackingChoice{});
+  CHECK(model_from_json(j).event_min_el_deg == 0.0);
+}

@@ -118,6 +118,35 @@ TEST_CASE("a satellite that never sets (QO-100, geostationary, seen from Berlin)
   REQUIRE(r.events.size() == 1);
   CHECK(r.events[0].kind == "aos");
   CHECK(r.events[0].time == at(12, 8, 30));
+  // Its AOS event invents no LOS either (issue 39): the JSON's los is null, the hook's TRAKBOX_LOS empty.
+  const auto j = tracker::to_json(r.events[0]);
+  CHECK(j["los"].is_null());
+  CHECK(j["aos"] == "2026-05-21T12:08:30.0Z");
+  for (const auto& [name, value] : tracker::event_environment(r.events[0]))
+    if (name == "TRAKBOX_LOS") CHECK(value.empty());
+}
+
+TEST_CASE("--event-min-el: no AOS and no LOS for a pass whose maximum stays under it (issue 39)") {
+  // ISS's pass of 12:09-12:15 peaks at 1.17 deg (Skyfield: 1.17); AO-91's, already up, higher.
+  SUBCASE("factory 0: the ISS pass rises, so it is told") {
+    Run r({"ISS"});
+    CHECK(r.model.event_min_el_deg == 0.0);
+    tracker::PassEventSource source(r.model, r.tracker);
+    r.step(source, at(12, 20, 0));
+    CHECK(r.find("aos", "ISS"));
+    CHECK(r.find("los", "ISS"));
+  }
+  SUBCASE("2 deg: the ISS pass is under it: no event at all; AO-91's is told") {
+    Run r({"ISS", "AO-91"});
+    r.model.event_min_el_deg = 2.0;
+    tracker::PassEventSource source(r.model, r.tracker);
+    r.step(source, at(12, 20, 0));
+    CHECK_FALSE(r.find("aos", "ISS"));
+    CHECK_FALSE(r.find("los", "ISS"));
+    REQUIRE(r.find("aos", "AO-91"));
+    CHECK(r.find("aos", "AO-91")->pass->max_el_deg >= 2.0);
+    CHECK(r.find("los", "AO-91"));
+  }
 }
 
 TEST_CASE("an event's JSON line and environment") {

@@ -314,6 +314,31 @@ TEST_CASE("The status line says STATE NOT SAVED while the last save failed, unti
   CHECK(f.station->status_line().find("STATE NOT SAVED") == std::string::npos);
 }
 
+TEST_CASE("The status line puts faults first, within 80 columns, before notices and readings (issue 39)") {
+  testing::StationFixture f;
+  f.build_station();
+  const int iss = *f.model.db.find("ISS");
+  f.tracker.track_single(iss);
+  f.station->set_notice("ELEMENTS 190 DAYS OLD: SEE MENU 3-5");
+  f.rotator_sim->set_fault("lost rotctld 127.0.0.1:4533: IO error; motion stopped, reconnecting");
+  f.radio_sim->simulate_fault("interface not echoing");
+  f.step(std::chrono::milliseconds(500));
+  f.step(std::chrono::milliseconds(500));
+  const std::string line = f.station->status_line();
+  const std::string first80 = line.substr(0, 80);
+  CHECK_MESSAGE(first80.find("ROTOR FAULT") != std::string::npos, line);
+  CHECK_MESSAGE(first80.find("RADIO FAULT") != std::string::npos, line);
+  CHECK(line.find("ROTOR FAULT") < line.find("ELEMENTS 190"));
+  CHECK(line.find("RADIO FAULT") < line.find("ELEMENTS 190"));
+  // The detail stays at the end, for a wider screen.
+  CHECK(line.find("| Rotor SIM OFF FAULT") > line.find("ELEMENTS 190"));
+  f.rotator_sim->clear_fault();
+  f.radio_sim->clear_fault();
+  f.step(std::chrono::milliseconds(500));
+  f.step(std::chrono::milliseconds(500));
+  CHECK(f.station->status_line().find("FAULT") == std::string::npos);
+}
+
 namespace {
 // The ISS pass 335 -> 101 of 2026-05-22 12:57:01 from the manual's station, South start, limits
 // 10..350 (issue 21): tracked from 6 minutes before AOS to LOS with the antenna at compass 340
@@ -410,4 +435,37 @@ TEST_CASE("The displays' tracks: one orbital period of ground track, a pass from
   // Elements SGP4 cannot use: no track, rather than one drawn over a made-up period.
   m.db.satellites[static_cast<std::size_t>(*iss)].elements.eccentricity = 1.5;
   CHECK(t.orbit_track(*iss, t0, 120).empty());
+}
+
+TEST_CASE("The station records the choice of what to track and rotor control in the model, and asks for a save at each change (issue 39)") {
+  Station st(shipped(station::RotorStart::south, 32.259, -110.778, 842.0), orbit::from_civil(2026, 5, 21, 12, 0, 0));
+  int saves = 0;
+  st.station->on_settings_changed([&] { ++saves; });
+  const int iss = *st.model.db.find("ISS");
+  st.tracker.track_single(iss);
+  CHECK(st.model.tracking == store::TrackingChoice{store::TrackingChoice::Mode::single, 25544, "ISS"});
+  CHECK(saves == 1);
+  st.tracker.track_single(iss);  // the same choice again: nothing to save
+  CHECK(saves == 1);
+  st.tracker.stop();  // direct control, a park: not a choice; the last one stays
+  CHECK(st.model.tracking.mode == store::TrackingChoice::Mode::single);
+  CHECK(saves == 1);
+  st.tracker.track_multi(true);
+  CHECK(st.model.tracking.mode == store::TrackingChoice::Mode::multi);
+  CHECK(st.model.priority_mode);
+  CHECK(saves == 2);
+  st.station->set_rotor_control(true);
+  CHECK(st.model.rotor_control);
+  CHECK(saves == 3);
+  st.station->set_rotor_control(true);  // unchanged
+  CHECK(saves == 3);
+  st.station->set_rotor_control(false);
+  CHECK(saves == 4);
+  // A station rebuilt around the same Tracker: the new one records, the old one's hook is gone.
+  st.build_station();
+  int new_saves = 0;
+  st.station->on_settings_changed([&] { ++new_saves; });
+  st.tracker.track_single(iss);
+  CHECK(new_saves == 1);
+  CHECK(saves == 4);
 }
