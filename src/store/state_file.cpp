@@ -213,11 +213,16 @@ bool StateFile::save(const nlohmann::json& data, std::string& error) const {
     }
     fs::permissions(dir_, fs::perms::owner_all, ec);  // 0700: it holds credentials
   }
+  // Text from outside is made printable UTF-8 where it enters (util/safe_text.h); should any string
+  // still not be UTF-8, it is written with U+FFFD for its bad bytes rather than the save throwing
+  // (issue 38: one byte in an element file aborted every start). The checksum is of what is written.
+  constexpr auto kReplace = nlohmann::json::error_handler_t::replace;
+  const nlohmann::json clean = nlohmann::json::parse(data.dump(-1, ' ', false, kReplace));
   nlohmann::json doc;
   doc["format"] = "trakbox-state";
   doc["version"] = kVersion;
-  doc["checksum"] = hex32(crc32(data.dump()));
-  doc["data"] = data;
+  doc["checksum"] = hex32(crc32(clean.dump()));
+  doc["data"] = clean;
   return write_file_atomically(path(), doc.dump(2) + "\n", error, 0600);
 }
 

@@ -249,3 +249,16 @@ TEST_CASE("A symbolic link in place of the state file or directory is not follow
   CHECK(!fs::is_symlink(fs::symlink_status(f.path())));
   CHECK(read(target) == "{}");
 }
+
+// Issue 38, crash 2: a string that is not UTF-8 made dump() throw type_error.316 in the save, at
+// every start. The save writes U+FFFD for the bad bytes, and what it wrote loads back.
+TEST_CASE("A save never throws on a string that is not UTF-8") {
+  TempDir d;
+  StateFile f(d.path);
+  const nlohmann::json data = {{"db", {{{"name", "IS\xff\xfeS"}}}}};
+  std::string err;
+  REQUIRE(f.save(data, err));
+  const LoadOutcome o = f.load();
+  REQUIRE(o.kind == LoadOutcome::Kind::loaded);
+  CHECK(o.data["db"][0]["name"] == "IS\xEF\xBF\xBD\xEF\xBF\xBDS");
+}
