@@ -98,6 +98,14 @@ struct EventHooks::Impl {
   spdlog::logger& log;
   asio::steady_timer timer;
   std::list<Running> running;
+  // Process groups whose `sh` has ended while something it started in the background still runs
+  // ("(sleep 300) &"): killed at the hook's limit, or when trakbox stops (issue 38).
+  struct Lingering {
+    pid_t pgid;
+    std::string label;
+    std::chrono::steady_clock::time_point deadline;
+  };
+  std::list<Lingering> lingering;
   bool polling = false;
 
   void spawn(std::size_t k, const tracker::Event& e) {
@@ -163,7 +171,7 @@ struct EventHooks::Impl {
       polling = false;
       if (ec) return;
       check();
-      if (!running.empty()) poll();
+      if (!running.empty() || !lingering.empty()) poll();
     });
   }
   void check() {
@@ -177,6 +185,10 @@ struct EventHooks::Impl {
         r.read_output();
         finished(r, status);
         ::close(r.out_fd);
+        if (group_alive(r.pid)) {
+          if (r.killed) ::kill(-r.pid, SIGKILL);
+          else lingering.push_back({r.pid, r.label, r.deadline});
+        }
         it = running.erase(it);
         continue;
       }
@@ -187,7 +199,22 @@ struct EventHooks::Impl {
       }
       ++it;
     }
+    for (auto it = lingering.begin(); it != lingering.end();) {
+      if (!group_alive(it->pgid)) {
+        it = lingering.erase(it);
+      } else if (now >= it->deadline) {
+        ::kill(-it->pgid, SIGKILL);
+        log.warn("{}: what it left running in the background was still running at its limit of {} s: killed",
+                 it->label, limit.count());
+        it = lingering.erase(it);
+      } else {
+        ++it;
+      }
+    }
   }
+  // Whether any process of the group is left (its leader, `sh`, has been reaped: the group id is not
+  // reused while a member lives).
+  static bool group_alive(pid_t pgid) { return ::kill(-pgid, 0) == 0 || errno == EPERM; }
   void finished(const Running& r, int status) {
     std::string out = r.output;
     while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
@@ -218,6 +245,11 @@ EventHooks::~EventHooks() {
     ::waitpid(r.pid, &status, 0);
     ::close(r.out_fd);
     impl_->log.warn("{}: killed: trakbox is stopping", r.label);
+  }
+  for (auto& g : impl_->lingering) {
+    if (!Impl::group_alive(g.pgid)) continue;
+    ::kill(-g.pgid, SIGKILL);
+    impl_->log.warn("{}: what it left running in the background killed: trakbox is stopping", g.label);
   }
 }
 
