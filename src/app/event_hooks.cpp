@@ -170,7 +170,11 @@ struct EventHooks::Impl {
     timer.async_wait([this](const boost::system::error_code& ec) {
       polling = false;
       if (ec) return;
-      check();
+      try {  // a hook's output and end are outside input: never an exception out of the loop
+        check();
+      } catch (const std::exception& e) {
+        log.error("hooks: checking the running hooks failed: {}", e.what());
+      }
       if (!running.empty() || !lingering.empty()) poll();
     });
   }
@@ -265,7 +269,11 @@ void EventHooks::fire(const tracker::Event& e) {
                  e.satellite.empty() ? "" : " " + e.satellite);
       continue;
     }
-    m.spawn(k, e);
+    try {
+      m.spawn(k, e);
+    } catch (const std::exception& x) {
+      m.log.error("hook {} ({}): not started: {}", k + 1, e.kind, x.what());
+    }
   }
 }
 

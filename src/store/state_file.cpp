@@ -84,7 +84,12 @@ bool write_all(int fd, std::string_view bytes) {
 bool write_file_atomically(const fs::path& target, std::string_view text, std::string& error, unsigned mode) {
   const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
   const fs::path tmp = dir / ("." + target.filename().string() + kTempInfix + std::to_string(::getpid()));
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, static_cast<mode_t>(mode));
+  // Made new (O_EXCL), never through a link (issue 38): a link planted under the temporary name
+  // would have had its target truncated and written. One left there (a crash, or planted) is
+  // removed -- the name itself, never what it points to -- and the file made again.
+  constexpr int kFlags = O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC;
+  int fd = ::open(tmp.c_str(), kFlags, static_cast<mode_t>(mode));
+  if (fd < 0 && errno == EEXIST && ::unlink(tmp.c_str()) == 0) fd = ::open(tmp.c_str(), kFlags, static_cast<mode_t>(mode));
   if (fd < 0) {
     error = "cannot write " + tmp.string() + ": " + std::strerror(errno);
     return false;

@@ -155,7 +155,7 @@ TEST_CASE("Temporary files of saves that were killed are removed; a live process
   TempDir dir;
   // A pid that cannot be running: above the kernel's maximum.
   const fs::path dead = dir.path / ".trakbox-state.json.tmp-999999999";
-  const fs::path mine = dir.path / (".trakbox-state.json.tmp-" + std::to_string(::getpid()));
+  const fs::path mine = dir.path / (".trakbox-state.json" + std::string(kTempInfix) + std::to_string(::getpid()));
   const fs::path live = dir.path / ".trakbox-state.json.tmp-1";  // init is always running
   const fs::path other = dir.path / "notes.tmp-12";               // not ours: no leading dot
   for (const auto& p : {dead, mine, live, other}) std::ofstream(p) << "{";
@@ -261,4 +261,19 @@ TEST_CASE("A save never throws on a string that is not UTF-8") {
   const LoadOutcome o = f.load();
   REQUIRE(o.kind == LoadOutcome::Kind::loaded);
   CHECK(o.data["db"][0]["name"] == "IS\xEF\xBF\xBD\xEF\xBF\xBDS");
+}
+
+// Issue 38: every path trakbox creates in a directory is checked first. A link planted under the
+// save's temporary name is removed, never written through.
+TEST_CASE("A save never writes through a link planted under its temporary name") {
+  TempDir d;
+  TempDir elsewhere;
+  const fs::path target = elsewhere.path / "victim.txt";
+  { std::ofstream(target) << "keep me\n"; }
+  StateFile f(d.path);
+  fs::create_symlink(target, d.path / (".trakbox-state.json" + std::string(kTempInfix) + std::to_string(::getpid())));
+  std::string err;
+  REQUIRE(f.save(nlohmann::json{{"a", 1}}, err));
+  CHECK(read(target) == "keep me\n");
+  CHECK(f.load().kind == LoadOutcome::Kind::loaded);
 }
