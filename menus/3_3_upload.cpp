@@ -104,6 +104,7 @@ void menu_3_3_upload(term::Terminal& t, Services& s) {
   orbit::ParseResult parsed = nasa  ? orbit::parse_nasa(kepele, "<upload>", options)
                               : omm ? parse_omm_upload(kepele)
                                     : orbit::parse_amsat(kepele, "<upload>", options);
+  parsed = orbit::clean_names(std::move(parsed), kepele, "<upload>");  // names from a terminal (issue 38)
   const std::vector<orbit::ParseProblem> problems = std::move(parsed.problems);
   parsed.problems.clear();  // reported here, with their lines, rather than by build_elements_upload
   store::ElementsUpload up = store::build_elements_upload(s.model.db, parsed);

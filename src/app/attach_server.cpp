@@ -27,9 +27,11 @@
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
+#include "app/attach_internal.h"
 #include "menus/term/curses_terminal.h"
 #include "menus/term/line_terminal.h"
 #include "store/state_file.h"
+#include "util/backoff.h"
 
 namespace tb::app {
 
@@ -50,81 +52,6 @@ namespace {
 constexpr std::size_t kTranscriptLimit = 16 * 1024;
 constexpr int kReplayLines = 30;
 constexpr int kMaxRows = 100, kMaxCols = 250;  // a screen's refresh stays far below the pipe's size
-
-// A connection's output: a bounded queue written asynchronously. Over the bound the connection is
-// closed: the station never waits for a reader.
-struct Outbox : std::enable_shared_from_this<Outbox> {
-  // Any stream: a client's socket, or the serial port of --tty.
-  Outbox(asio::posix::stream_descriptor s, std::size_t limit) : sock(std::move(s)), limit(limit) {}
-  asio::posix::stream_descriptor sock;
-  std::size_t limit;
-  std::string pending, inflight;
-  bool writing = false, closed = false, overflowed = false, close_when_sent = false;
-
-  bool send(std::string_view data) {
-    if (closed) return false;
-    if (pending.size() + inflight.size() + data.size() > limit) {
-      overflowed = true;
-      close();
-      return false;
-    }
-    pending.append(data);
-    kick();
-    return true;
-  }
-  void kick() {
-    if (writing || closed) return;
-    if (pending.empty()) {
-      if (close_when_sent) close();
-      return;
-    }
-    inflight.swap(pending);
-    pending.clear();
-    writing = true;
-    asio::async_write(sock, asio::buffer(inflight), [self = shared_from_this()](const boost::system::error_code& ec, std::size_t) {
-      self->writing = false;
-      self->inflight.clear();
-      if (ec) self->close();
-      else self->kick();
-    });
-  }
-  void finish() {
-    close_when_sent = true;
-    kick();
-  }
-  // The station is stopping and its loop will not run again: what is queued is written now,
-  // waiting at most `within` for a slow reader, then the connection is closed. A write under way
-  // was tried at once when it started (asio writes speculatively), so what is queued follows it.
-  void flush_now(std::chrono::milliseconds within) {
-    const auto deadline = std::chrono::steady_clock::now() + within;
-    std::size_t done = 0;
-    while (!closed && done < pending.size()) {
-      const ssize_t n = ::send(sock.native_handle(), pending.data() + done, pending.size() - done,
-                               MSG_DONTWAIT | MSG_NOSIGNAL);
-      if (n > 0) {
-        done += static_cast<std::size_t>(n);
-        continue;
-      }
-      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
-      if (n < 0 && errno == ENOTSOCK) {   // the serial port of --tty
-        if (::write(sock.native_handle(), pending.data() + done, pending.size() - done) <= 0) break;
-        continue;
-      }
-      if (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR) break;
-      pollfd p{sock.native_handle(), POLLOUT, 0};
-      if (left.count() <= 0 || ::poll(&p, 1, static_cast<int>(left.count())) <= 0) break;
-    }
-    pending.clear();
-    close();
-  }
-  void close() {
-    if (closed) return;
-    closed = true;
-    boost::system::error_code ec;
-    ::shutdown(sock.native_handle(), SHUT_RDWR);  // (a serial port says ENOTSOCK: nothing to do)
-    sock.close(ec);
-  }
-};
 
 // Plain lines into an outbox (the attached client's line mode): a LineTerminal's output rules.
 class LineSink final : public term::LineOutput {
@@ -242,15 +169,21 @@ class MuxTerminal final : public term::Terminal {
 
 struct AttachServer::Impl {
   Impl(asio::io_context& io, term::WaitReadable wait, AttachServerOptions o, spdlog::logger& log)
-      : io(io), wait(std::move(wait)), opt(std::move(o)), log(log), acceptor(io), mux(*this) {}
+      : io(io), wait(std::move(wait)), opt(std::move(o)), log(log), acceptor(io), retry(io), mux(*this) {}
 
   asio::io_context& io;
   term::WaitReadable wait;
   AttachServerOptions opt;
   spdlog::logger& log;
   stream::acceptor acceptor;
+  asio::steady_timer retry;      // the next accept after a failed one
+  util::AcceptBackoff backoff;
+  std::size_t greeting = 0;      // connections that have not said what they want yet
+  bool refusing = false;         // a cap refuses newcomers (logged once a run)
   MuxTerminal mux;
   std::vector<ScreenSlot> pool;  // before the members: they give their screens back to it
+  std::size_t screen_types = 0;  // curses screens made (never deleted: curses_terminal.h)
+  SocketId made{};               // the socket file this server made
   std::vector<std::unique_ptr<Member>> members;
   std::vector<std::shared_ptr<Outbox>> subscribers;
   int next_id = 1;
@@ -338,65 +271,143 @@ struct AttachServer::Impl {
     sent(m);
   }
 
+  // Accepts, backing off on errors (util/backoff.h): out of descriptors never spins the loop.
   void accept() {
     acceptor.async_accept([this](const boost::system::error_code& ec, stream::socket sock) {
-      if (ec == asio::error::operation_aborted) return;
-      if (!ec) greet(std::move(sock));
+      if (ec == asio::error::operation_aborted || !acceptor.is_open()) return;
+      if (ec) {
+        if (backoff.failed())
+          log.error("attach: accept failed: {}; retrying every {} ms to 1 s (said once until it works again)",
+                    ec.message(), util::AcceptBackoff::kFirst.count());
+        retry.expires_after(backoff.delay());
+        retry.async_wait([this](const boost::system::error_code& e) {
+          if (!e && acceptor.is_open()) accept();
+        });
+        return;
+      }
+      if (const auto failed = backoff.succeeded()) log.warn("attach: accepting again after {} failed accepts", failed);
+      try {
+        greet(std::move(sock));
+      } catch (const std::exception& e) {  // nothing a client does may end the station
+        log.error("attach: a new connection failed: {}; dropped", e.what());
+      }
       accept();
     });
+  }
+  // A client refused for a cap: told why, the station goes on (logged once until one is admitted).
+  void refuse_cap(const std::shared_ptr<Outbox>& out, const std::string& what, std::size_t cap) {
+    if (!refusing) log.warn("attach: {} (at most {}): newcomers refused until one leaves", what, cap);
+    refusing = true;
+    out->send("refused: " + what + " (at most " + std::to_string(cap) + ")\n");
+    out->finish();
+  }
+  // A handler of a client's input: an exception ends that client, never the station.
+  template <typename F>
+  void guarded(const char* what, const std::shared_ptr<Outbox>& out, F&& f) {
+    try {
+      f();
+    } catch (const std::exception& e) {
+      log.error("attach: {} failed: {}; that client is dropped", what, e.what());
+      out->close();
+    }
   }
   // The first line says what the client wants: "status", "events" or "attach {json}".
   void greet(stream::socket sock) {
     auto out = std::make_shared<Outbox>(asio::posix::stream_descriptor(io, sock.release()), opt.output_limit);
+    if (greeting >= kMaxGreeting) {
+      refuse_cap(out, "too many connections still to say what they want", kMaxGreeting);
+      return;
+    }
+    ++greeting;
     auto buf = std::make_shared<asio::streambuf>(4096);
     auto timer = std::make_shared<asio::steady_timer>(io, std::chrono::seconds(10));
     timer->async_wait([out](const boost::system::error_code& ec) {
       if (!ec) out->close();
     });
     asio::async_read_until(out->sock, *buf, '\n', [this, out, buf, timer](const boost::system::error_code& ec, std::size_t n) {
+      --greeting;
       timer->cancel();
       if (ec) {
         out->close();
         return;
       }
-      std::string line(asio::buffers_begin(buf->data()), asio::buffers_begin(buf->data()) + static_cast<long>(n));
-      buf->consume(n);
-      std::string rest(asio::buffers_begin(buf->data()), asio::buffers_end(buf->data()));
+      guarded("a request", out, [&] { request(out, *buf, n); });
+    });
+  }
+  // The first line of a connection, and what came after it.
+  void request(const std::shared_ptr<Outbox>& out, asio::streambuf& buf, std::size_t n) {
+    {
+      std::string line(asio::buffers_begin(buf.data()), asio::buffers_begin(buf.data()) + static_cast<long>(n));
+      buf.consume(n);
+      std::string rest(asio::buffers_begin(buf.data()), asio::buffers_end(buf.data()));
       while (!line.empty() && (line.back() == '\n' || line.back() == '\r')) line.pop_back();
       if (line == "status") {
-        out->send(opt.status().dump() + "\n");
+        out->send(opt.status().dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
         out->finish();
       } else if (line == "events") {
-        subscribers.push_back(out);
-        std::erase_if(subscribers, [](const auto& s) { return s->closed; });
+        subscribe(out);
       } else if (line.rfind("attach", 0) == 0 && !opt.menus) {
         out->send("refused: this trakbox's menus are on its own terminal (pid " + std::to_string(::getpid()) +
                   "); status and events answer here\n");
         out->finish();
       } else if (line.rfind("attach", 0) == 0) {
-        attach(out, line.size() > 6 ? line.substr(7) : "{}", rest);
+        attach(out, line.size() > 6 ? line.substr(6) : "", rest);
       } else {
         out->send("trakbox: unknown request; expected status, events or attach\n");
         out->finish();
       }
+    }
+  }
+
+  // An events client: its line of each event; reading its socket notices at once when it leaves.
+  void subscribe(const std::shared_ptr<Outbox>& out) {
+    std::erase_if(subscribers, [](const auto& s) { return s->closed; });
+    if (subscribers.size() >= kMaxSubscribers) {
+      refuse_cap(out, "too many events clients", kMaxSubscribers);
+      return;
+    }
+    refusing = false;
+    subscribers.push_back(out);
+    watch(out, std::make_shared<std::array<char, 256>>());
+  }
+  void watch(const std::shared_ptr<Outbox>& out, const std::shared_ptr<std::array<char, 256>>& scratch) {
+    out->sock.async_read_some(asio::buffer(*scratch), [this, out, scratch](const boost::system::error_code& ec, std::size_t) {
+      if (ec == asio::error::operation_aborted || out->closed) return;
+      if (!ec) {
+        watch(out, scratch);  // what an events client sends is not read: it is dropped
+        return;
+      }
+      out->close();  // it left (or its socket failed): noticed now, not at the next event
+      std::erase_if(subscribers, [](const auto& s) { return s->closed; });
     });
   }
 
   void attach(const std::shared_ptr<Outbox>& out, const std::string& hello_text, const std::string& rest) {
-    nlohmann::json hello = nlohmann::json::parse(hello_text, nullptr, false);
-    if (!hello.is_object()) hello = nlohmann::json::object();
+    std::string why;
+    const auto hello = parse_attach_hello(hello_text, why);
+    if (!hello) {
+      log.warn("attach: a greeting refused: {}", why);
+      out->send("refused: " + why + "\n");
+      out->finish();
+      return;
+    }
+    std::erase_if(members, [](const std::unique_ptr<Member>& m) { return m->gone; });
+    if (members.size() >= kMaxAttached) {
+      refuse_cap(out, "too many attached terminals", kMaxAttached);
+      return;
+    }
+    refusing = false;
     auto m = std::make_unique<Member>();
     m->id = next_id++;
     m->out = out;
-    m->who = peer_name(out->sock.native_handle(), hello.value("tty", std::string()));
-    const std::string term_type = hello.value("term", std::string());
-    const int rows = std::clamp(hello.value("rows", 24), 5, kMaxRows);
-    const int cols = std::clamp(hello.value("cols", 80), 20, kMaxCols);
-    if (hello.value("full_screen", false) && !term_type.empty()) open_screen(*m, term_type, rows, cols);
+    m->who = peer_name(out->sock.native_handle(), hello->tty);
+    const std::string& term_type = hello->term;
+    const int rows = static_cast<int>(std::clamp<long long>(hello->rows, 5, kMaxRows));
+    const int cols = static_cast<int>(std::clamp<long long>(hello->cols, 20, kMaxCols));
+    if (hello->full_screen && !term_type.empty()) open_screen(*m, term_type, rows, cols);
     if (!m->screen) {
       Member* raw = m.get();
-      m->screen = std::make_unique<LineSink>([raw](std::string_view s) { raw->out->send(s); },
-                                             hello.value("crlf", false));
+      m->screen = std::make_unique<LineSink>([raw](std::string_view s) { raw->out->send(s); }, hello->crlf);
     }
     log.info("attach: {} attached ({})", m->who, m->curses ? "full screen " + term_type : std::string("lines"));
     Member& ref = *m;
@@ -437,6 +448,10 @@ struct AttachServer::Impl {
       slot = *kept;
       pool.erase(kept);
     } else {
+      if (screen_types >= kMaxScreenTypes) {
+        log.info("attach: {} terminal types have screens already: '{}' gets plain lines", kMaxScreenTypes, term_type);
+        return;
+      }
       int p[2];
       if (::pipe2(p, O_CLOEXEC) != 0) return;
       ::fcntl(p[1], F_SETPIPE_SZ, 1 << 20);
@@ -454,6 +469,7 @@ struct AttachServer::Impl {
         log.info("attach: terminal type '{}' unknown here: plain lines", term_type);
         return;
       }
+      ++screen_types;
     }
     m.slot = slot;
     m.pool = &pool;
@@ -467,6 +483,17 @@ struct AttachServer::Impl {
     m.out->sock.async_read_some(asio::buffer(m.rbuf), [this, id](const boost::system::error_code& ec, std::size_t n) {
       Member* m = find(id);
       if (!m || m->gone) return;
+      try {
+        on_read(*m, ec, n);
+      } catch (const std::exception& e) {
+        log.error("attach: {}'s input failed: {}; detached", m->who, e.what());
+        gone(*m, "");
+      }
+    });
+  }
+  void on_read(Member& member, const boost::system::error_code& ec, std::size_t n) {
+    {
+      Member* m = &member;
       if (ec) {
         if (ec == asio::error::eof && keyboard == m->id && !m->keys.empty()) {
           m->input_ended = true;  // its answers are still to come (next_key detaches it after)
@@ -477,7 +504,7 @@ struct AttachServer::Impl {
       }
       input(*m, std::string(m->rbuf.data(), n));
       if (!m->gone) read(*m);
-    });
+    }
   }
   Member* find(int id) {
     for (auto& m : members)
@@ -593,25 +620,7 @@ AttachServer::AttachServer(asio::io_context& io, term::WaitReadable wait, Attach
   const std::string& path = impl_->opt.path;
   if (path.size() >= sizeof(sockaddr_un{}.sun_path))
     throw std::runtime_error(path + ": too long for a Unix socket (at most 107 bytes)");
-  std::error_code fec;
-  if (std::filesystem::exists(path, fec)) {
-    // A socket left by a trakbox that did not end cleanly (the state lock says none runs), or a
-    // live one: only the first may be replaced.
-    stream::socket probe(io);
-    boost::system::error_code ec;
-    probe.connect(stream::endpoint(path), ec);
-    if (!ec) throw std::runtime_error(path + ": a running trakbox answers there");
-    std::filesystem::remove(path, fec);
-  }
-  // Made for the owner and the group alone from the start: there is no moment when others may open it.
-  const mode_t old_mask = ::umask(0117);
-  boost::system::error_code ec;
-  impl_->acceptor.open(stream(), ec);
-  if (!ec) impl_->acceptor.bind(stream::endpoint(path), ec);
-  ::umask(old_mask);
-  if (!ec) impl_->acceptor.listen(16, ec);
-  if (ec) throw std::runtime_error(path + ": " + ec.message());
-  ::chmod(path.c_str(), 0660);
+  impl_->made = bind_socket(impl_->acceptor, path);
   impl_->accept();
 }
 
@@ -628,14 +637,13 @@ AttachServer::~AttachServer() {
   }
   impl_->members.clear();
   for (auto& o : outs) o->flush_now(std::chrono::milliseconds(500));
-  std::error_code fec;
-  std::filesystem::remove(impl_->opt.path, fec);
+  remove_socket(impl_->opt.path, impl_->made);
 }
 
 term::Terminal& AttachServer::terminal() { return impl_->mux; }
 
 void AttachServer::publish(const nlohmann::json& event) {
-  const std::string line = event.dump() + "\n";
+  const std::string line = event.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
   for (auto& s : impl_->subscribers)
     if (!s->send(line) && s->overflowed) impl_->log.warn("events: a reader stopped reading: disconnected");
   std::erase_if(impl_->subscribers, [](const auto& s) { return s->closed; });

@@ -11,6 +11,8 @@
 #pragma once
 #include <functional>
 #include <memory>
+#include <optional>
+#include <string_view>
 #include <string>
 #include <vector>
 
@@ -34,6 +36,15 @@ inline constexpr int kDetachKey = 0x1d;    // Ctrl-] (Ctrl-C detaches too)
 inline constexpr int kTakeOverKey = 0x14;  // Ctrl-T
 // What a client may have unsent before it is disconnected.
 inline constexpr std::size_t kAttachOutputLimit = 256 * 1024;
+// The caps on the socket's clients (issue 38; docs/reliability.md): over one, a newcomer is refused
+// ("refused: ...", logged once a run) and the station goes on. Each attached client holds one
+// descriptor (its socket; a full-screen client's curses screen adds a pipe, two descriptors, kept
+// per terminal type for the next client), each subscriber and each connection still to say what it
+// wants (at most 10 s) one.
+inline constexpr std::size_t kMaxAttached = 16;
+inline constexpr std::size_t kMaxSubscribers = 64;
+inline constexpr std::size_t kMaxGreeting = 32;
+inline constexpr std::size_t kMaxScreenTypes = 8;  // terminal types with a kept screen; others: lines
 
 struct AttachServerOptions {
   std::string path;                           // the socket
@@ -94,6 +105,19 @@ class FrameDecoder {
   std::string partial_;
 };
 std::string encode_window_size(int rows, int cols);
+
+// What `attach {json}` asks for: each field optional, of its type, else the attach is refused with
+// the reason in `error` naming the field ("'rows' must be an integer, found a string"). Text fields
+// are made safe (util/safe_text.h); a terminal type is letters, digits and ". _ + -" (it names a
+// terminfo file). Pure: fuzzed by tests/fuzz/fuzz_attach_hello.cpp.
+struct AttachHello {
+  std::string term;  // empty: plain lines
+  std::string tty;   // the client's terminal, for "alice pts/3"
+  long long rows = 24, cols = 80;  // as sent: the server clamps them to what it draws
+  bool full_screen = false;
+  bool crlf = false;
+};
+std::optional<AttachHello> parse_attach_hello(std::string_view text, std::string& error);
 // Keys from a terminal's bytes: escape sequences (arrows, function keys) are dropped, a lone ESC
 // stays ESC, DEL is Backspace.
 std::vector<int> decode_keys(std::string_view bytes);

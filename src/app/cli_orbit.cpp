@@ -1,5 +1,6 @@
 #include "app/cli_orbit.h"
 #include "app/cli_orbit_internal.h"
+#include "util/safe_text.h"
 
 #include <algorithm>
 #include <cctype>
@@ -35,7 +36,9 @@ namespace orbit_cli {
 
 void out(const std::string& s) { std::fwrite(s.data(), 1, s.size(), stdout); }
 
-std::string json_string(std::string_view s) {
+// A JSON string of printable UTF-8 whatever `s` holds (util/safe_text.h): "JSON" output is JSON.
+std::string json_string(std::string_view raw) {
+  const std::string s = text::safe_text(raw);
   std::string r = "\"";
   for (const char c : s) {
     switch (c) {

@@ -98,6 +98,14 @@ struct EventHooks::Impl {
   spdlog::logger& log;
   asio::steady_timer timer;
   std::list<Running> running;
+  // Process groups whose `sh` has ended while something it started in the background still runs
+  // ("(sleep 300) &"): killed at the hook's limit, or when trakbox stops (issue 38).
+  struct Lingering {
+    pid_t pgid;
+    std::string label;
+    std::chrono::steady_clock::time_point deadline;
+  };
+  std::list<Lingering> lingering;
   bool polling = false;
 
   void spawn(std::size_t k, const tracker::Event& e) {
@@ -162,8 +170,12 @@ struct EventHooks::Impl {
     timer.async_wait([this](const boost::system::error_code& ec) {
       polling = false;
       if (ec) return;
-      check();
-      if (!running.empty()) poll();
+      try {  // a hook's output and end are outside input: never an exception out of the loop
+        check();
+      } catch (const std::exception& e) {
+        log.error("hooks: checking the running hooks failed: {}", e.what());
+      }
+      if (!running.empty() || !lingering.empty()) poll();
     });
   }
   void check() {
@@ -177,6 +189,10 @@ struct EventHooks::Impl {
         r.read_output();
         finished(r, status);
         ::close(r.out_fd);
+        if (group_alive(r.pid)) {
+          if (r.killed) ::kill(-r.pid, SIGKILL);
+          else lingering.push_back({r.pid, r.label, r.deadline});
+        }
         it = running.erase(it);
         continue;
       }
@@ -187,7 +203,22 @@ struct EventHooks::Impl {
       }
       ++it;
     }
+    for (auto it = lingering.begin(); it != lingering.end();) {
+      if (!group_alive(it->pgid)) {
+        it = lingering.erase(it);
+      } else if (now >= it->deadline) {
+        ::kill(-it->pgid, SIGKILL);
+        log.warn("{}: what it left running in the background was still running at its limit of {} s: killed",
+                 it->label, limit.count());
+        it = lingering.erase(it);
+      } else {
+        ++it;
+      }
+    }
   }
+  // Whether any process of the group is left (its leader, `sh`, has been reaped: the group id is not
+  // reused while a member lives).
+  static bool group_alive(pid_t pgid) { return ::kill(-pgid, 0) == 0 || errno == EPERM; }
   void finished(const Running& r, int status) {
     std::string out = r.output;
     while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
@@ -219,6 +250,11 @@ EventHooks::~EventHooks() {
     ::close(r.out_fd);
     impl_->log.warn("{}: killed: trakbox is stopping", r.label);
   }
+  for (auto& g : impl_->lingering) {
+    if (!Impl::group_alive(g.pgid)) continue;
+    ::kill(-g.pgid, SIGKILL);
+    impl_->log.warn("{}: what it left running in the background killed: trakbox is stopping", g.label);
+  }
 }
 
 void EventHooks::fire(const tracker::Event& e) {
@@ -233,7 +269,11 @@ void EventHooks::fire(const tracker::Event& e) {
                  e.satellite.empty() ? "" : " " + e.satellite);
       continue;
     }
-    m.spawn(k, e);
+    try {
+      m.spawn(k, e);
+    } catch (const std::exception& x) {
+      m.log.error("hook {} ({}): not started: {}", k + 1, e.kind, x.what());
+    }
   }
 }
 

@@ -1,7 +1,9 @@
 // --on-event: commands run on the station's events (docs/service.md). Each runs under /bin/sh with
 // the event in its environment (tracker/events.h: TRAKBOX_EVENT, TRAKBOX_SATELLITE, TRAKBOX_AOS,
 // ...), in its own process group, never waited for by the station: its output and exit status go
-// to the log when it ends; past the time limit its process group is killed (and the log says so);
+// to the log when it ends; past the time limit its process group is killed (and the log says so),
+// also after `sh` has ended when it left something running in the background ('(sleep 300) &'), and
+// at the latest when trakbox stops (a command that leaves its process group with setsid escapes this);
 // while a hook still runs for an event (a kind, and for AOS/LOS a satellite), it is not started
 // again for the same one (the event is logged as skipped). A failed hook is logged, never retried.
 #pragma once

@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -29,9 +30,20 @@ LockHolder parse_lock_file(const std::string& text) {
 std::optional<StateLock> StateLock::take(const std::filesystem::path& state_dir, LockHolder& holder,
                                          std::string& error) {
   const std::string path = (state_dir / "trakbox.lock").string();
-  const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0600);
+  // Never through a link (issue 38): a link in the state directory would have its target truncated
+  // and written. O_NOFOLLOW refuses a link with ELOOP; anything but a regular file is refused too.
+  const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK, 0600);
   if (fd < 0) {
-    error = path + ": cannot open: " + std::strerror(errno);
+    const int e = errno;
+    error = e == ELOOP ? path + ": is a symbolic link; trakbox does not follow links in its state directory "
+                                "(remove the link)"
+                       : path + ": cannot open: " + std::strerror(e);
+    return std::nullopt;
+  }
+  struct stat st{};
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    error = path + ": is not a regular file; remove it";
+    ::close(fd);
     return std::nullopt;
   }
   if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {

@@ -220,10 +220,15 @@ std::optional<std::string> start_satrak(StationApp& app, const TrackerConfig& c,
 }
 
 std::optional<std::string> start_netctl(StationApp& app, const TrackerConfig& c, Servers& out) {
-  auto opts = [&c](netctl::ServerOptions so, const std::string& secret) {
+  // One guessing budget for every endpoint (netctl/guesses.h): a budget per port multiplied it.
+  netctl::GuessPolicy policy;
+  policy.exempt = c.guess_exempt;
+  auto guard = std::make_shared<netctl::GuessGuard>(policy);
+  auto opts = [&c, guard](netctl::ServerOptions so, const std::string& secret) {
     so.address = c.listen;
     so.allow = c.allow;
     so.secret = secret;
+    so.guard = guard;
     so.auth_deadline = std::chrono::seconds(c.auth_timeout_s);
     return so;
   };

@@ -64,6 +64,8 @@ std::vector<OptionSpec> tracker_option_specs() {
       {"auth-timeout", "S", "seconds a client of a port with a secret has to give it, 1 to 600 (default 10)"},
       {"allow", "CIDR", "only clients in this address range may connect to any TCP endpoint (repeatable; "
                         "e.g. 192.168.1.0/24, 2001:db8::/32, 10.0.0.5); others are refused", true},
+      {"guess-exempt", "CIDR", "wrong secrets from this address range are slowed but never lock it out (a trusted "
+                               "station behind a shared address; repeatable)", true},
       {"elements-url", "URL", "refresh the menu-3 database from this URL or file (repeatable; e.g. CelesTrak's "
                               "gp.php?GROUP=amateur&FORMAT=json): sets of the same catalog number are updated. "
                               "Replaces the sources stored by menu 3-5", true},
@@ -241,6 +243,10 @@ void read_allow(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
       r.fail("--allow", "expected an address or ADDRESS/PREFIX (192.168.1.0/24, ::1, ::ffff:192.0.2.0/120); found '" +
                             a + "'");
     }
+  }
+  for (const std::string& a : o.values("guess-exempt")) {
+    if (const auto cidr = inet::parse_cidr(a)) c.guess_exempt.push_back(*cidr);
+    else r.fail("--guess-exempt", "expected an address or ADDRESS/PREFIX (192.0.2.7, 2001:db8:1::/64); found '" + a + "'");
   }
 }
 

@@ -61,6 +61,7 @@ struct TrackerConfig {
   std::optional<int> rotctld_port, rigctld_port, host_port;
   std::string listen = "127.0.0.1";
   std::vector<inet::Cidr> allow;
+  std::vector<inet::Cidr> guess_exempt;  // --guess-exempt: never locked out for wrong secrets
   // Shared secrets of the rotctld, rigctld and host-mode servers (read from --*-secret-file; empty:
   // none) and how long a client has to give one.
   std::string rotctld_secret, rigctld_secret, host_secret;

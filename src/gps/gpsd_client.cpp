@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <exception>
 
 #include "util/text.h"
 
@@ -53,7 +54,13 @@ void GpsdClient::pause(int ms) const {
 void GpsdClient::run() {
   post_([s = sink_] { s.link(Link::connecting, {}); });
   while (!stop_) {
-    if (!session()) return;
+    // What gpsd sends is outside input: nothing it sends may end the station (issue 38). A session
+    // that throws is a lost link, tried again like any other.
+    try {
+      if (!session()) return;
+    } catch (const std::exception& e) {
+      post_([s = sink_, why = std::string(e.what())] { s.link(Link::lost, why); });
+    }
     pause(2000);
   }
 }

@@ -31,7 +31,7 @@ struct LineServer::Core {
   ServerOptions options;
   bool open = true;
   std::unordered_map<Session*, std::weak_ptr<Session>> sessions;
-  GuessGuard guesses;
+  std::shared_ptr<GuessGuard> guesses;  // the process's one (ServerOptions::guard), or this server's
   ServerStats stats;
 };
 
@@ -99,10 +99,21 @@ class Session : public std::enable_shared_from_this<Session> {
     spdlog::info("{}: client {} closed ({})", core_->options.name, peer_, why);
   }
 
+  // A handler of the client's input: an exception ends that client, never the station (issue 38).
+  template <typename F>
+  void guarded(F&& f) {
+    try {
+      f();
+    } catch (const std::exception& e) {
+      spdlog::error("{}: client {}: handling its input failed: {}; disconnected", core_->options.name, peer_, e.what());
+      close("a handler failed");
+    }
+  }
+
  private:
   void read() {
     socket_.async_read_some(asio::buffer(buf_), [self = shared_from_this()](const error_code& ec, std::size_t n) {
-      self->on_read(ec, n);
+      self->guarded([&] { self->on_read(ec, n); });
     });
   }
 
@@ -218,7 +229,7 @@ class Session : public std::enable_shared_from_this<Session> {
   // with reading paused until then so nothing sent after it runs first.
   void attempt(const std::string& secret_given) {
     const auto now = std::chrono::steady_clock::now();
-    const auto at = core_->guesses.free_at(address_, now);
+    const auto at = core_->guesses->free_at(address_, now);
     if (at <= now) {
       answer(secret_given);
       return;
@@ -228,6 +239,12 @@ class Session : public std::enable_shared_from_this<Session> {
     guess_timer_.expires_at(at);
     guess_timer_.async_wait([self = shared_from_this()](const error_code& ec) {
       if (ec || self->closed_) return;
+      self->guarded([&] { self->resume(); });
+    });
+  }
+  void resume() {
+    {
+      Session* self = this;
       self->paused_ = false;
       std::string s = std::move(self->pending_secret_);
       self->attempt(s);  // another connection of the address may have been answered first: wait again
@@ -236,14 +253,14 @@ class Session : public std::enable_shared_from_this<Session> {
       rest.swap(self->backlog_);
       if (!rest.empty() && !self->closing_) self->feed(rest.data(), rest.size());
       self->go_on();
-    });
+    }
   }
 
   void answer(const std::string& secret_given) {
     const bool ok = secret::equal(secret_given, core_->options.secret);
     queue(core_->protocol->auth_reply(ok));
     if (ok) {
-      core_->guesses.right(address_);
+      core_->guesses->right(address_);
       if (authenticated_) return;
       authenticated_ = true;
       auth_timer_.cancel();
@@ -252,13 +269,13 @@ class Session : public std::enable_shared_from_this<Session> {
     }
     ++core_->stats.wrong_secrets;
     const auto now = std::chrono::steady_clock::now();
-    if (core_->guesses.wrong(address_, now)) {
+    if (core_->guesses->wrong(address_, now, core_->options.name)) {
       ++core_->stats.lockouts;
-      const auto left = core_->guesses.locked_until(address_, now) - now;
+      const auto left = core_->guesses->locked_until(address_, now) - now;
       spdlog::warn("{}: {} locked out until {} ({} s) after {} wrong secrets; its connections are refused until then",
                    core_->options.name, address_, utc_after(left),
                    std::chrono::duration_cast<std::chrono::seconds>(left).count(),
-                   core_->guesses.policy().lockout_after);
+                   core_->guesses->policy().lockout_after);
       closing_ = true;
       // Its other connections (waiting for answers, or logged out) go too: none holds a slot for
       // the lockout's ten minutes.
@@ -343,7 +360,7 @@ LineServer::LineServer(asio::io_context& io, std::uint16_t port, LineHandler& pr
     : acceptor_(io), retry_(io), core_(std::make_shared<Core>()) {
   core_->protocol = &protocol;
   core_->options = std::move(options);
-  core_->guesses = GuessGuard(core_->options.guesses);
+  core_->guesses = core_->options.guard ? core_->options.guard : std::make_shared<GuessGuard>(core_->options.guesses);
   const std::string where = core_->options.address + ":" + std::to_string(port);
   error_code ec;
   const asio::ip::address addr = asio::ip::make_address(core_->options.address, ec);
@@ -410,14 +427,19 @@ void LineServer::accept() {
     if (!core->open) return;
     if (ec) {
       if (ec == asio::error::operation_aborted) return;
-      // Out of descriptors and the like: try again shortly rather than spin.
-      spdlog::warn("{}: accept failed: {}", core->options.name, ec.message());
-      retry_.expires_after(std::chrono::milliseconds(100));
+      // Out of descriptors and the like: try again after a back-off rather than spin (util/backoff.h),
+      // said once a run.
+      if (backoff_.failed())
+        spdlog::error("{}: accept failed: {}; retrying every 100 ms to 1 s (said once until it works again)",
+                      core->options.name, ec.message());
+      retry_.expires_after(backoff_.delay());
       retry_.async_wait([this, core](const error_code& e) {
         if (!e && core->open) accept();
       });
       return;
     }
+    if (const auto failed = backoff_.succeeded())
+      spdlog::warn("{}: accepting again after {} failed accepts", core->options.name, failed);
     const std::string who = address_of(socket);
     const auto now = std::chrono::steady_clock::now();
     auto refuse = [&](Refusal why) {
@@ -429,9 +451,10 @@ void LineServer::accept() {
       ++core->stats.refused_not_allowed;
       spdlog::warn("{}: connection from {} refused: not in --allow", core->options.name, who);
       refuse(Refusal::not_allowed);
-    } else if (core->guesses.locked_until(who, now) > now) {
+    } else if (core->guesses->locked_until(who, now) > now) {
       ++core->stats.refused_locked_out;
-      spdlog::warn("{}: connection from {} refused: locked out for wrong secrets", core->options.name, who);
+      spdlog::warn("{}: connection from {} refused: locked out until {}: {}", core->options.name, who,
+                   utc_after(core->guesses->locked_until(who, now) - now), core->guesses->lockout_cause(who));
       refuse(Refusal::locked_out);
     } else if (per_address(*core, who) >= core->options.max_per_address &&
                !(core->options.loopback_exempt && inet::is_loopback(who))) {

@@ -21,6 +21,7 @@
 #pragma once
 #include <vector>
 
+#include "util/backoff.h"
 #include "util/cidr.h"
 #include <chrono>
 #include <boost/asio/io_context.hpp>
@@ -61,6 +62,9 @@ struct ServerOptions {
   // Wrong secrets from one address wait longer and longer for their answer, then lock the address out
   // (netctl/guesses.h: about 10 guesses in 12 minutes).
   GuessPolicy guesses;
+  // The guessing budget shared by every endpoint of the process (issue 38); null: this server makes
+  // its own from `guesses` (tests).
+  std::shared_ptr<GuessGuard> guard;
   // Connections one address other than loopback may hold at once: half of max_clients, so that one
   // remote host (a program that leaks connections, a client that keeps many open) can never take
   // every connection. Loopback clients are this machine's own programs. Attackers with many
@@ -102,6 +106,7 @@ class LineServer {
   void accept();
   boost::asio::ip::tcp::acceptor acceptor_;
   boost::asio::steady_timer retry_;
+  util::AcceptBackoff backoff_;
   std::shared_ptr<Core> core_;
   std::uint16_t port_ = 0;
 };

@@ -14,6 +14,7 @@
 
 #include "orbit/elements_internal.h"
 #include "orbit/elements_omm_internal.h"
+#include "util/safe_text.h"
 
 namespace tb::orbit {
 
@@ -37,10 +38,11 @@ std::string ParseProblem::message() const {
   std::string m = file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": ";
   if (!object.empty()) m += object + ": ";
   m += field + ": found ";
-  m += found.empty() ? std::string("nothing") : "'" + found + "'";
+  // What the text had may be anything: shown as bytes when it is not printable UTF-8.
+  m += found.empty() ? std::string("nothing") : "'" + (text::is_safe_text(found) ? found : text::visible_bytes(found)) + "'";
   m += ", expected " + expected;
   if (warning) m += " (warning: set accepted)";
-  return m;
+  return text::safe_text(m);  // an object's name, a file's name: for a terminal, whatever they hold
 }
 
 bool ParseResult::ok() const {
@@ -105,7 +107,22 @@ std::optional<ParseProblem> not_text(std::string_view text, std::string_view fil
   return std::nullopt;
 }
 
+ParseResult parse_any(std::string_view text, std::string_view file_name, const ParseOptions& options);
+
 }  // namespace
+
+ParseResult clean_names(ParseResult r, std::string_view text, std::string_view file_name) {
+  for (Elements& e : r.sets) {
+    if (text::is_safe_text(e.name)) continue;
+    const std::size_t at = e.name.empty() ? std::string_view::npos : text.find(e.name);
+    ParseProblem p = make_problem(file_name, at == std::string_view::npos ? 0 : detail::line_of_offset(text, at), 0, "name",
+                                  e.name, "printable UTF-8 (kept as '" + text::safe_text(e.name) + "')");
+    p.warning = true;
+    r.problems.push_back(std::move(p));
+    e.name = text::safe_text(e.name);
+  }
+  return r;
+}
 
 ParseResult parse_elements(std::string_view text, std::string_view file_name, const ParseOptions& options) {
   if (auto problem = not_text(text, file_name)) {
@@ -113,6 +130,11 @@ ParseResult parse_elements(std::string_view text, std::string_view file_name, co
     r.problems.push_back(std::move(*problem));
     return r;
   }
+  return clean_names(parse_any(text, file_name, options), text, file_name);
+}
+
+namespace {
+ParseResult parse_any(std::string_view text, std::string_view file_name, const ParseOptions& options) {
   switch (detect(text)) {
     case Detected::amsat:
       return parse_amsat(text, file_name, options);
@@ -131,6 +153,7 @@ ParseResult parse_elements(std::string_view text, std::string_view file_name, co
   }
   return parse_nasa(text, file_name, options);
 }
+}  // namespace
 
 ParseResult load_elements_file(const std::string& path, const ParseOptions& options) {
   std::string text;

@@ -74,6 +74,12 @@ struct ParseOptions {
                                       // a missing "Checksum:" line is a warning either way
 };
 
+// Names are the text of an element file that trakbox shows and stores (issue 38): parse_elements
+// makes each printable UTF-8 (util/safe_text.h: invalid bytes and control characters become
+// U+FFFD), and a name it had to clean is a warning located at its line. A caller of one format's
+// parser on outside text (menu 3-3's upload) passes the result through clean_names itself.
+ParseResult clean_names(ParseResult r, std::string_view text, std::string_view file_name);
+
 // NASA two-line and three-line text. Blank lines and lines starting with '#' are skipped;
 // CRLF and trailing blanks are accepted; extra text after column 69 is ignored.
 ParseResult parse_nasa(std::string_view text, std::string_view file_name = "<text>",

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include "satrak/redact.h"
+#include "util/backoff.h"
 #include "util/keepalive.h"
 
 #include <array>
@@ -26,6 +27,7 @@ struct Server::State {
   ServerOptions opt;
   tcp::acceptor acceptor;
   asio::steady_timer retry;  // after a failed accept (out of descriptors): try again a little later
+  util::AcceptBackoff backoff;
   std::set<std::shared_ptr<Session>> sessions;
   Stats stats;
   bool closed = false;
@@ -75,7 +77,12 @@ class Session : public std::enable_shared_from_this<Session> {
         self->close();
         return;
       }
-      self->received(n);
+      try {  // nothing a client sends may end the station: a handler that throws drops that client
+        self->received(n);
+      } catch (const std::exception& e) {
+        spdlog::error("satrak: client {}: handling its request failed: {}; disconnected", self->peer_, e.what());
+        self->close();
+      }
     });
   }
 
@@ -174,14 +181,17 @@ void accept(const std::shared_ptr<Server::State>& state) {
     if (!s || s->closed) return;
     if (ec) {
       if (ec == asio::error::operation_aborted) return;
-      spdlog::warn("satrak: accept: {}", ec.message());
-      s->retry.expires_after(std::chrono::milliseconds(100));
+      if (s->backoff.failed())  // util/backoff.h: never at once, said once a run
+        spdlog::error("satrak: accept failed: {}; retrying every 100 ms to 1 s (said once until it works again)",
+                      ec.message());
+      s->retry.expires_after(s->backoff.delay());
       s->retry.async_wait([weak](const boost::system::error_code& e) {
         auto st = weak.lock();
         if (!e && st && !st->closed) accept(st);
       });
       return;
     }
+    if (const auto failed = s->backoff.succeeded()) spdlog::warn("satrak: accepting again after {} failed accepts", failed);
     boost::system::error_code peer_ec;
     const auto peer = socket.remote_endpoint(peer_ec);
     const std::string who = peer_ec ? std::string() : peer.address().to_string();

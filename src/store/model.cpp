@@ -9,6 +9,7 @@
 #include "gps/gpsd_client.h"
 #include "radio/factory.h"
 #include "store/json_fields.h"
+#include "util/safe_text.h"
 
 namespace tb::store {
 using nlohmann::json;
@@ -99,7 +100,7 @@ json elements_json(const orbit::Elements& e) {
 
 orbit::Elements elements_from(const json& j, const std::string& w) {
   orbit::Elements e;
-  e.name = text(j, w, "name", 64);
+  e.name = ::tb::text::safe_text(text(j, w, "name", 64));  // printable UTF-8 on any terminal (issue 38)
   // Up to 9 digits: OMM numbers beyond Alpha-5's 339999 exist since 2026.
   e.catalog_number = static_cast<int>(integer(j, w, "catalog", 0, 999999999));
   const std::string cls = text(j, w, "classification", 1);

@@ -84,7 +84,12 @@ bool write_all(int fd, std::string_view bytes) {
 bool write_file_atomically(const fs::path& target, std::string_view text, std::string& error, unsigned mode) {
   const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
   const fs::path tmp = dir / ("." + target.filename().string() + kTempInfix + std::to_string(::getpid()));
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, static_cast<mode_t>(mode));
+  // Made new (O_EXCL), never through a link (issue 38): a link planted under the temporary name
+  // would have had its target truncated and written. One left there (a crash, or planted) is
+  // removed -- the name itself, never what it points to -- and the file made again.
+  constexpr int kFlags = O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC;
+  int fd = ::open(tmp.c_str(), kFlags, static_cast<mode_t>(mode));
+  if (fd < 0 && errno == EEXIST && ::unlink(tmp.c_str()) == 0) fd = ::open(tmp.c_str(), kFlags, static_cast<mode_t>(mode));
   if (fd < 0) {
     error = "cannot write " + tmp.string() + ": " + std::strerror(errno);
     return false;
@@ -213,11 +218,16 @@ bool StateFile::save(const nlohmann::json& data, std::string& error) const {
     }
     fs::permissions(dir_, fs::perms::owner_all, ec);  // 0700: it holds credentials
   }
+  // Text from outside is made printable UTF-8 where it enters (util/safe_text.h); should any string
+  // still not be UTF-8, it is written with U+FFFD for its bad bytes rather than the save throwing
+  // (issue 38: one byte in an element file aborted every start). The checksum is of what is written.
+  constexpr auto kReplace = nlohmann::json::error_handler_t::replace;
+  const nlohmann::json clean = nlohmann::json::parse(data.dump(-1, ' ', false, kReplace));
   nlohmann::json doc;
   doc["format"] = "trakbox-state";
   doc["version"] = kVersion;
-  doc["checksum"] = hex32(crc32(data.dump()));
-  doc["data"] = data;
+  doc["checksum"] = hex32(crc32(clean.dump()));
+  doc["data"] = clean;
   return write_file_atomically(path(), doc.dump(2) + "\n", error, 0600);
 }
 

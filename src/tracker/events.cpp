@@ -55,7 +55,7 @@ std::vector<std::pair<std::string, std::string>> event_environment(const Event& 
     env.emplace_back("TRAKBOX_MAX_EL_DEG", buf);
   }
   if (!e.detail.empty()) env.emplace_back("TRAKBOX_DETAIL", e.detail);
-  env.emplace_back("TRAKBOX_EVENT_JSON", to_json(e).dump());
+  env.emplace_back("TRAKBOX_EVENT_JSON", to_json(e).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
   return env;
 }
 

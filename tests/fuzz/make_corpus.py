@@ -163,6 +163,28 @@ Checksum:           313
     put("attach_frames", "window_sizes", b"\x03" + b"ab\xffW\x00\x28\x00\x64cd\xff\xffe\xffW\xff\xff\x00\x00")
     put("attach_frames", "escape_cut", b"\x00" + b"\xffW\x00\x18\x00P\xff\xffx\xffQz\xff")
 
+    # --- attach_hello: the text after "attach" (issue 38's repros, and what trakbox attach sends).
+    for i, g in enumerate([b'{"rows":"x"}', b'{"term":5,"full_screen":true}', b'{"full_screen":"yes"}',
+                           b'{"tty":[1]}', b'{"crlf":1}', b'{"cols":1.5}', b'{"term":"../../tmp/x"}', b'{',
+                           b'[' * 200, b'{"tty":"/dev/pts/\\u001b[2J"}', b'',
+                           b' {"full_screen":true,"crlf":false,"rows":40,"cols":132,"term":"xterm-256color",'
+                           b'"tty":"/dev/pts/3"}', b'{"rows":-5,"cols":18446744073709551615,"term":null}']):
+        put("attach_hello", f"greeting_{i}", g)
+
+    # --- element_names: element files whose names are not printable UTF-8 (issue 38).
+    iss = (b"1 25544U 98067A   26141.16510469  .00005835  00000-0  11282-3 0  9994\n"
+           b"2 25544  51.6328  73.8715 0007529  81.3651 278.8190 15.49291753567565\n")
+    put("element_names", "invalid_utf8", b"IS\xff\xfeS\n" + iss)
+    put("element_names", "escapes", b"\x1b[2J\x1b[31m EVIL \x1b]0;pwn\x07\n" + iss)
+    put("element_names", "c1_csi", b"A\xc2\x9b2J\n" + iss)
+    put("element_names", "amsat", b"Satellite: IS\xff\x1bS\nCatalog number: 25544\nEpoch time: 26141.16510469\n"
+        b"Element set: 999\nInclination: 51.6328 deg\nRA of node: 73.8715 deg\nEccentricity: 0.0007529\n"
+        b"Arg of perigee: 81.3651 deg\nMean anomaly: 278.8190 deg\nMean motion: 15.49291753 rev/day\n"
+        b"Decay rate: 5.835e-05 rev/day^2\nEpoch rev: 56756\nChecksum: 0\n")
+    put("element_names", "omm_json", b'[{"OBJECT_NAME":"A\\u001bB","NORAD_CAT_ID":25544,"EPOCH":"2026-05-21T03:57:44",'
+        b'"MEAN_MOTION":15.49291753,"ECCENTRICITY":0.0007529,"INCLINATION":51.6328,"RA_OF_ASC_NODE":73.8715,'
+        b'"ARG_OF_PERICENTER":81.3651,"MEAN_ANOMALY":278.819,"BSTAR":0.00011282}]')
+
     # --- state: first byte even: JSON data; odd: a whole state file.
     trakbox = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build", "trakbox")
     if os.path.exists(trakbox):

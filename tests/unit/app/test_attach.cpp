@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <cstdio>
 #include <filesystem>
 
 #include "app/attach_server.h"
@@ -76,4 +77,82 @@ TEST_CASE("--on-event: every kind, kinds named, a command with '=' of its own, a
   CHECK(error == "unknown event kind in 'aso'; expected aos, los, elements, link-lost, link-back, save-failed");
   CHECK_FALSE(app::parse_event_hook("los=  ", error));
   CHECK(error == "no command");
+}
+
+// Issue 38, crash 1: each of the attacker's greetings threw nlohmann's type_error out of the
+// handler (SIGABRT). Each is now a refusal naming the field.
+TEST_CASE("attach greeting: a wrong type is refused naming the field, never thrown") {
+  const std::pair<const char*, const char*> cases[] = {
+      {R"({"rows":"x"})", "'rows' must be an integer, found string"},
+      {R"({"term":5,"full_screen":true})", "'term' must be a string, found an integer"},
+      {R"({"full_screen":"yes"})", "'full_screen' must be true or false, found string"},
+      {R"({"tty":[1]})", "'tty' must be a string, found array"},
+      {R"({"crlf":1})", "'crlf' must be true or false, found an integer"},
+      {R"({"cols":80.5})", "'cols' must be an integer, found a number with a fraction"},
+      {R"({"rows":{}})", "'rows' must be an integer, found object"},
+      {R"({"term":"../../../tmp/evil"})", "'term' must be a terminal type (letters, digits, . _ + -), found '../../../tmp/evil'"},
+      {R"({)", "the greeting is not a JSON object"},
+      {R"([1,2])", "the greeting is not a JSON object"},
+      {R"("attach")", "the greeting is not a JSON object"},
+      {R"([[[[[[1]]]]]])", "the greeting is nested too deep"},
+  };
+  for (const auto& [text, why] : cases) {
+    CAPTURE(text);
+    std::string error;
+    CHECK_FALSE(app::parse_attach_hello(text, error));
+    CHECK(error == why);
+  }
+}
+
+TEST_CASE("attach greeting: what trakbox attach sends, and its bounds") {
+  std::string error;
+  auto h = app::parse_attach_hello(R"( {"full_screen":true,"crlf":false,"rows":40,"cols":132,"term":"xterm-256color","tty":"/dev/pts/3"})", error);
+  REQUIRE(h);
+  CHECK(h->full_screen);
+  CHECK_FALSE(h->crlf);
+  CHECK(h->rows == 40);
+  CHECK(h->cols == 132);
+  CHECK(h->term == "xterm-256color");
+  CHECK(h->tty == "/dev/pts/3");
+  h = app::parse_attach_hello("", error);  // a bare "attach": lines, 24 x 80
+  REQUIRE(h);
+  CHECK(h->term.empty());
+  CHECK(h->rows == 24);
+  CHECK(h->cols == 80);
+  h = app::parse_attach_hello(R"({"rows":-5,"cols":18446744073709551615,"term":null,"unknown":[1]})", error);
+  REQUIRE(h);
+  CHECK(h->rows == 0);
+  CHECK(h->cols == 65535);
+  // Text fields are made safe: an escape in the tty name never reaches a terminal or the log.
+  h = app::parse_attach_hello(R"({"tty":"/dev/pts/\u001b[2J9"})", error);
+  REQUIRE(h);
+  CHECK(h->tty == "/dev/pts/\xEF\xBF\xBD[2J9");
+  CHECK_FALSE(app::parse_attach_hello(R"({"tty":")" + std::string(65, 'a') + R"("})", error));
+  CHECK(error == "'tty' is longer than 64 bytes");
+}
+
+// Issue 38, item 6: the lock was opened through a link, truncating and writing its target.
+TEST_CASE("the lock is never taken through a symbolic link") {
+  const auto dir = std::filesystem::temp_directory_path() / ("trakbox-locklink-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const auto target = dir / "target.txt";
+  {
+    std::FILE* f = std::fopen(target.c_str(), "w");
+    REQUIRE(f);
+    std::fputs("not yours\n", f);
+    std::fclose(f);
+  }
+  std::filesystem::create_symlink(target, dir / "trakbox.lock");
+  app::LockHolder holder;
+  std::string error;
+  CHECK_FALSE(app::StateLock::take(dir, holder, error));
+  CHECK(error == (dir / "trakbox.lock").string() +
+                     ": is a symbolic link; trakbox does not follow links in its state directory (remove the link)");
+  CHECK(std::filesystem::file_size(target) == 10);
+  std::filesystem::remove(dir / "trakbox.lock");
+  std::filesystem::create_directory(dir / "trakbox.lock");
+  CHECK_FALSE(app::StateLock::take(dir, holder, error));
+  CHECK(error.find("trakbox.lock: ") != std::string::npos);
+  std::filesystem::remove_all(dir);
 }

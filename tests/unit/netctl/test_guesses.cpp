@@ -223,3 +223,105 @@ TEST_CASE_FIXTURE(ServerCase, "server: clients that trickle bytes without ever e
   CHECK((a.closed_by_peer(ms(500)) || b.closed_by_peer(ms(500))));
   lt.stop();
 }
+
+// Issue 38, item 8: the budget was per /128 and per port.
+TEST_CASE("guesses: an IPv6 address counts as its /64, IPv4 as itself") {
+  CHECK(netctl::key_of("2001:db8:1::1") == "2001:db8:1::/64");
+  CHECK(netctl::key_of("2001:db8:1::2") == "2001:db8:1::/64");
+  CHECK(netctl::key_of("2001:db8:1:0:ffff:ffff:ffff:ffff") == "2001:db8:1::/64");
+  CHECK(netctl::key_of("2001:db8:1:1::1") == "2001:db8:1:1::/64");
+  CHECK(netctl::key_of("::1") == "::/64");
+  CHECK(netctl::key_of("192.0.2.7") == "192.0.2.7");
+  CHECK(netctl::key_of("::ffff:192.0.2.7") == "192.0.2.7");
+  CHECK(netctl::key_of("not an address") == "not an address");
+}
+
+TEST_CASE("GuessGuard: after 4 wrong secrets from 2001:db8:1::1, 2001:db8:1::2 waits too (the repro)") {
+  GuessPolicy p;
+  p.lockout_after = 4;
+  GuessGuard g(p);
+  const auto t0 = GuessGuard::Clock::time_point{} + std::chrono::hours(1);
+  auto t = t0;
+  for (int i = 0; i < 3; ++i) {
+    REQUIRE(g.free_at("2001:db8:1::1", t) <= t);
+    CHECK_FALSE(g.wrong("2001:db8:1::1", t, "rotctld"));
+    t = g.free_at("2001:db8:1::1", t);
+  }
+  // Its neighbour in the /64 is not answered at once: it pays the /64's 2 s (0.5, 1, then 2).
+  CHECK(g.free_at("2001:db8:1::2", t0 + ms(1500)) == t0 + ms(3500));
+  CHECK(g.wrong("2001:db8:1::2", t0 + ms(3500), "host"));
+  CHECK(g.locked_until("2001:db8:1::ffff", t0 + ms(3600)) == t0 + ms(3500) + p.lockout_for);
+  CHECK(g.lockout_cause("2001:db8:1::9") == "2001:db8:1::/64 (wrong secrets, the last from 2001:db8:1::2 on host)");
+  // Another /64 is its own.
+  CHECK(g.free_at("2001:db8:2::1", t0 + ms(3600)) == t0 + ms(3600));
+}
+
+TEST_CASE("GuessGuard: an exempted station is slowed, never locked out") {
+  GuessPolicy p;
+  p.lockout_after = 2;
+  p.exempt.push_back(*inet::parse_cidr("192.0.2.0/24"));
+  GuessGuard g(p);
+  const auto t0 = GuessGuard::Clock::time_point{} + std::chrono::hours(1);
+  CHECK_FALSE(g.wrong("192.0.2.5", t0));
+  CHECK_FALSE(g.wrong("192.0.2.5", t0 + ms(500)));
+  CHECK_FALSE(g.wrong("192.0.2.5", t0 + ms(1500)));
+  CHECK(g.locked_until("192.0.2.5", t0 + ms(1500)) <= t0 + ms(1500));
+  CHECK(g.free_at("192.0.2.5", t0 + ms(1500)) == t0 + ms(3500));
+  CHECK_FALSE(g.wrong("198.51.100.1", t0));
+  CHECK(g.wrong("198.51.100.1", t0 + ms(500)));
+}
+
+TEST_CASE("GuessGuard: a table full of locked-out addresses is neither scanned nor grown") {
+  GuessPolicy p;
+  p.lockout_after = 1;
+  p.max_addresses = 4096;
+  GuessGuard g(p);
+  const auto t0 = GuessGuard::Clock::time_point{} + std::chrono::hours(1);
+  for (int i = 0; i < 4096; ++i) CHECK(g.wrong("10.0." + std::to_string(i / 256) + "." + std::to_string(i % 256), t0));
+  CHECK(g.size() == 4096);
+  // 100,000 new addresses: they share one entry, slowed, never locked out (that would refuse every
+  // newcomer), and the time is that of hash lookups, not of 100,000 scans of 4,096 entries.
+  const auto start = std::chrono::steady_clock::now();
+  for (int i = 0; i < 100000; ++i) {
+    const std::string a = "172.16." + std::to_string(i / 256 % 256) + "." + std::to_string(i % 256) + "/" + std::to_string(i);
+    (void)g.locked_until(a, t0 + ms(1));
+    CHECK_FALSE(g.wrong(a, t0 + ms(1)));
+  }
+  CHECK(g.size() == 4097);
+  CHECK(g.failures("192.168.9.9") == 100000);
+  CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(5));
+  // When a lockout ends, its entry makes room at once.
+  CHECK(g.free_at("192.168.1.1", t0 + p.lockout_for + ms(2)) == t0 + p.lockout_for + ms(2));
+  CHECK(g.wrong("192.168.1.1", t0 + p.lockout_for + ms(2)));
+  CHECK(g.failures("192.168.1.1") == 1);
+  CHECK(g.size() == 4097);
+}
+
+TEST_CASE("server: one budget for every endpoint: a lockout on rotctld refuses the address on rigctld") {
+  CapturedLog log;
+  SimStation st;
+  boost::asio::io_context io;
+  auto shared = std::make_shared<GuessGuard>(with_secret({}).guesses);
+  auto opts = [&](const char* name) {
+    auto o = with_secret(netctl::RotctldServer::named(name));
+    o.guard = shared;
+    return o;
+  };
+  netctl::RotctldServer rot(io, 0, *st.station, opts("rotctld"));
+  netctl::RigctldServer rig(io, 0, *st.station, opts("rigctld"));
+  LoopThread lt(io, st);
+  RawClient a(rot.port()), b(rig.port());
+  REQUIRE(a.ok());
+  REQUIRE(b.ok());
+  CHECK(a.ask("\\password guess1") == "RPRT -1\n");
+  CHECK(b.ask("\\password guess2") == "RPRT -1\n");  // waited for rotctld's delay: one budget
+  CHECK(a.ask("\\password guess3") == "RPRT -1\n");
+  CHECK(b.ask("\\password guess4") == "RPRT -1\n");  // the fourth locks 127.0.0.1 out, everywhere
+  RawClient c(rot.port());
+  CHECK(c.closed_by_peer());
+  CHECK(c.received() == "RPRT -9\n");
+  lt.stop();
+  const std::string text = log.text();
+  CHECK(text.find("rotctld: connection from 127.0.0.1 refused: locked out until") != std::string::npos);
+  CHECK(text.find("127.0.0.1 (wrong secrets, the last from 127.0.0.1 on rigctld)") != std::string::npos);
+}

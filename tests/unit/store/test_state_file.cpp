@@ -155,7 +155,7 @@ TEST_CASE("Temporary files of saves that were killed are removed; a live process
   TempDir dir;
   // A pid that cannot be running: above the kernel's maximum.
   const fs::path dead = dir.path / ".trakbox-state.json.tmp-999999999";
-  const fs::path mine = dir.path / (".trakbox-state.json.tmp-" + std::to_string(::getpid()));
+  const fs::path mine = dir.path / (".trakbox-state.json" + std::string(kTempInfix) + std::to_string(::getpid()));
   const fs::path live = dir.path / ".trakbox-state.json.tmp-1";  // init is always running
   const fs::path other = dir.path / "notes.tmp-12";               // not ours: no leading dot
   for (const auto& p : {dead, mine, live, other}) std::ofstream(p) << "{";
@@ -248,4 +248,32 @@ TEST_CASE("A symbolic link in place of the state file or directory is not follow
   REQUIRE(f.save(nlohmann::json::object(), err));
   CHECK(!fs::is_symlink(fs::symlink_status(f.path())));
   CHECK(read(target) == "{}");
+}
+
+// Issue 38, crash 2: a string that is not UTF-8 made dump() throw type_error.316 in the save, at
+// every start. The save writes U+FFFD for the bad bytes, and what it wrote loads back.
+TEST_CASE("A save never throws on a string that is not UTF-8") {
+  TempDir d;
+  StateFile f(d.path);
+  const nlohmann::json data = {{"db", {{{"name", "IS\xff\xfeS"}}}}};
+  std::string err;
+  REQUIRE(f.save(data, err));
+  const LoadOutcome o = f.load();
+  REQUIRE(o.kind == LoadOutcome::Kind::loaded);
+  CHECK(o.data["db"][0]["name"] == "IS\xEF\xBF\xBD\xEF\xBF\xBDS");
+}
+
+// Issue 38: every path trakbox creates in a directory is checked first. A link planted under the
+// save's temporary name is removed, never written through.
+TEST_CASE("A save never writes through a link planted under its temporary name") {
+  TempDir d;
+  TempDir elsewhere;
+  const fs::path target = elsewhere.path / "victim.txt";
+  { std::ofstream(target) << "keep me\n"; }
+  StateFile f(d.path);
+  fs::create_symlink(target, d.path / (".trakbox-state.json" + std::string(kTempInfix) + std::to_string(::getpid())));
+  std::string err;
+  REQUIRE(f.save(nlohmann::json{{"a", 1}}, err));
+  CHECK(read(target) == "keep me\n");
+  CHECK(f.load().kind == LoadOutcome::Kind::loaded);
 }
