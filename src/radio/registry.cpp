@@ -24,7 +24,7 @@ IcomOptions icom_options(const RadioModel& m, const RadioSpec& spec, const Radio
     o.width = m.four_byte_frequency ? icom::FrequencyWidth::four_bytes : icom::FrequencyWidth::five_bytes;
     o.baud = spec.baud > 0 ? spec.baud : m.baud;
     o.reads = m.caps.reads;
-    o.reads_tx_1c03 = m.name == "ic9700";   // radios-2026.md: the IC-9700 reads its TX frequency so
+    o.reads_tx_1c03 = m.caps.reads_tx_1c03;
     o.ctcss = m.caps.ctcss;
     o.model = std::string(m.label.substr(m.label.find(' ') + 1));
     if (role == RadioRole::both && m.caps.links == 2) {
@@ -110,58 +110,74 @@ MakeRadio make_rigctld(const RadioModel&, const RadioSpec& spec, const RadioConf
   return {make_hamlib_radio({2, spec.host + ":" + std::to_string(spec.port), 0, spec.scheme}, t.worker), {}};
 }
 
-constexpr RadioCaps kOneLink{1, false, false, false, 10};
-constexpr RadioCaps kTwoLinks{2, false, false, false, 10};
-
 // Which band transmits in satellite mode: IC-9700 Main receives and Sub transmits (Hamlib's
 // icom_get_split_vfos); IC-9100, IC-910H and IC-821H Main transmits (Gpredict's "IC-910H: MAIN up /
 // SUB down"; Hamlib's note that the IC-821H is the other way round from the IC-9700).
 const RadioModel kModels[] = {
-    {"sim", "trakbox simulated radio", SpecForm::none, Protocol::simulated, 0, 0, Link::uplink, SatCommand::none, false,
-     {2, false, true, true, 1}, 0, "the default; records what it is told", make_simulated},
+    {.name = "sim", .label = "trakbox simulated radio", .form = SpecForm::none,
+     .caps = {.links = 2, .reads = true, .ctcss = true, .step_hz = 1}, .note = "the default; records what it is told",
+     .make = make_simulated},
     // Today's families: menu 6-7 supplies addresses, speed and the Yaesu model.
-    {"icom", "Icom CI-V (menu 6-7)", SpecForm::device, Protocol::icom, 0, 1200, Link::uplink, SatCommand::none, false,
-     kTwoLinks, 0, "RX/TX addresses, band select and speed from menu 6-7", make_icom},
-    {"kenwood", "Kenwood TS-790/711/811", SpecForm::device, Protocol::kenwood, 0, 4800, Link::uplink, SatCommand::none,
-     false, kTwoLinks, 0, "downlink VFO A, uplink VFO B", make_kenwood},
-    {"yaesu", "Yaesu FT-736 (FT-847 in menu 6-7)", SpecForm::device, Protocol::ft736, 0, 4800, Link::uplink,
-     SatCommand::ft736, false, {2, true, false, false, 10}, 0, "the FT-847's own opcodes when STATION.DAT names YAESU_847",
-     make_yaesu_family},
-    {"cat", "the rig of menu 6-7", SpecForm::device, Protocol::cat, 0, 0, Link::uplink, SatCommand::none, false,
-     kTwoLinks, 0, "icom, kenwood or yaesu as menu 6-7 chose", make_cat},
+    {.name = "icom", .label = "Icom CI-V (menu 6-7)", .protocol = Protocol::icom, .baud = 1200, .caps = {.links = 2},
+     .note = "RX/TX addresses, band select and speed from menu 6-7", .make = make_icom},
+    {.name = "kenwood", .label = "Kenwood TS-790/711/811", .protocol = Protocol::kenwood, .baud = 4800,
+     .caps = {.links = 2}, .note = "downlink VFO A, uplink VFO B", .make = make_kenwood},
+    {.name = "yaesu", .label = "Yaesu FT-736 (FT-847 in menu 6-7)", .protocol = Protocol::ft736, .baud = 4800,
+     .satmode = SatCommand::ft736, .caps = {.links = 2, .satellite_mode = true},
+     .note = "the FT-847's own opcodes when STATION.DAT names YAESU_847", .make = make_yaesu_family},
+    {.name = "cat", .label = "the rig of menu 6-7", .protocol = Protocol::cat, .caps = {.links = 2},
+     .note = "icom, kenwood or yaesu as menu 6-7 chose", .make = make_cat},
     // The satellite radios of 2026.
-    {"ic9700", "Icom IC-9700", SpecForm::device_baud, Protocol::icom, 0xA2, 19200, Link::downlink, SatCommand::icom_16_5a,
-     false, {2, true, true, true, 1}, 3081, "satellite mode 16 5A; Main down, Sub up; echo or not", make_icom},
-    {"ic9100", "Icom IC-9100", SpecForm::device_baud, Protocol::icom, 0x7C, 19200, Link::uplink, SatCommand::icom_16_5a,
-     false, {2, true, true, true, 1}, 3068, "satellite mode 16 5A; Main up, Sub down", make_icom},
-    {"ic910h", "Icom IC-910H", SpecForm::device_baud, Protocol::icom, 0x60, 19200, Link::uplink, SatCommand::icom_1a_07,
-     false, {2, true, true, false, 1}, 3044, "satellite mode 1A 07; Main up, Sub down", make_icom},
-    {"ic821h", "Icom IC-821H", SpecForm::device_baud, Protocol::icom, 0x4C, 9600, Link::uplink, SatCommand::none, true,
-     kTwoLinks, 3034, "4-byte frequencies; 07 D0/D1 before each command (Main up)", make_icom},
-    {"ic275", "Icom IC-275", SpecForm::device_baud, Protocol::icom, 0x10, 1200, Link::uplink, SatCommand::none, false,
-     kOneLink, 3004, "one band: pair it with --uplink-radio", make_icom},
-    {"ic970", "Icom IC-970", SpecForm::device_baud, Protocol::icom, 0x2E, 1200, Link::uplink, SatCommand::none, false,
-     kOneLink, 3035, "main band only (sub band select unconfirmed)", make_icom},
-    {"ic705", "Icom IC-705", SpecForm::device_baud, Protocol::icom, 0xA4, 19200, Link::uplink, SatCommand::none, false,
-     {1, false, true, true, 1}, 3085, "one link: pair it with --uplink-radio", make_icom},
-    {"ts2000", "Kenwood TS-2000", SpecForm::device_baud, Protocol::kenwood, 0, 9600, Link::downlink,
-     SatCommand::kenwood_sa, false, {2, true, true, true, 1}, 2014,
-     "satellite mode SA: Main down (FA), Sub up (FB); TN/TO tone; read with FA;/FB;", make_kenwood},
-    {"ts790", "Kenwood TS-790", SpecForm::device_baud, Protocol::kenwood, 0, 4800, Link::uplink, SatCommand::none,
-     false, kTwoLinks, 2007, "VFO A down, B up", make_kenwood},
-    {"ft847", "Yaesu FT-847", SpecForm::device_baud, Protocol::ft847, 0, 4800, Link::uplink, SatCommand::ft847, false,
-     {2, true, true, true, 10}, 1001, "satellite mode 4E; SAT RX / SAT TX opcodes 11/21, read 13/23", make_ft8xx},
-    {"ft817", "Yaesu FT-817", SpecForm::device_baud, Protocol::ft817, 0, 4800, Link::uplink, SatCommand::none, false,
-     {1, false, true, true, 10}, 1020, "one link: a pair is --radio ft817:A --uplink-radio ft817:B", make_ft8xx},
-    {"ft818", "Yaesu FT-818", SpecForm::device_baud, Protocol::ft817, 0, 4800, Link::uplink, SatCommand::none, false,
-     {1, false, true, true, 10}, 1041, "as the FT-817", make_ft8xx},
-    {"ft736", "Yaesu FT-736R", SpecForm::device_baud, Protocol::ft736, 0, 4800, Link::uplink, SatCommand::ft736, false,
-     {2, true, false, false, 10}, 1010, "satellite mode 0E; never acknowledged, cannot be read", make_ft736},
+    {.name = "ic9700", .label = "Icom IC-9700", .form = SpecForm::device_baud, .protocol = Protocol::icom,
+     .civ_address = 0xA2, .baud = 19200, .main_link = Link::downlink, .satmode = SatCommand::icom_16_5a,
+     .caps = {.links = 2, .satellite_mode = true, .reads = true, .ctcss = true, .step_hz = 1, .reads_tx_1c03 = true},
+     .hamlib_model = 3081, .note = "satellite mode 16 5A; Main down, Sub up; echo or not", .make = make_icom},
+    {.name = "ic9100", .label = "Icom IC-9100", .form = SpecForm::device_baud, .protocol = Protocol::icom,
+     .civ_address = 0x7C, .baud = 19200, .satmode = SatCommand::icom_16_5a,
+     .caps = {.links = 2, .satellite_mode = true, .reads = true, .ctcss = true, .step_hz = 1}, .hamlib_model = 3068,
+     .note = "satellite mode 16 5A; Main up, Sub down", .make = make_icom},
+    {.name = "ic910h", .label = "Icom IC-910H", .form = SpecForm::device_baud, .protocol = Protocol::icom,
+     .civ_address = 0x60, .baud = 19200, .satmode = SatCommand::icom_1a_07,
+     .caps = {.links = 2, .satellite_mode = true, .reads = true, .step_hz = 1}, .hamlib_model = 3044,
+     .note = "satellite mode 1A 07; Main up, Sub down", .make = make_icom},
+    {.name = "ic821h", .label = "Icom IC-821H", .form = SpecForm::device_baud, .protocol = Protocol::icom,
+     .civ_address = 0x4C, .baud = 9600, .four_byte_frequency = true, .caps = {.links = 2}, .hamlib_model = 3034,
+     .note = "4-byte frequencies; 07 D0/D1 before each command (Main up)", .make = make_icom},
+    {.name = "ic275", .label = "Icom IC-275", .form = SpecForm::device_baud, .protocol = Protocol::icom,
+     .civ_address = 0x10, .baud = 1200, .caps = {}, .hamlib_model = 3004,
+     .note = "one band: pair it with --uplink-radio", .make = make_icom},
+    {.name = "ic970", .label = "Icom IC-970", .form = SpecForm::device_baud, .protocol = Protocol::icom,
+     .civ_address = 0x2E, .baud = 1200, .caps = {}, .hamlib_model = 3035,
+     .note = "main band only (sub band select unconfirmed)", .make = make_icom},
+    {.name = "ic705", .label = "Icom IC-705", .form = SpecForm::device_baud, .protocol = Protocol::icom,
+     .civ_address = 0xA4, .baud = 19200, .caps = {.reads = true, .ctcss = true, .step_hz = 1}, .hamlib_model = 3085,
+     .note = "one link: pair it with --uplink-radio", .make = make_icom},
+    {.name = "ts2000", .label = "Kenwood TS-2000", .form = SpecForm::device_baud, .protocol = Protocol::kenwood,
+     .baud = 9600, .main_link = Link::downlink, .satmode = SatCommand::kenwood_sa,
+     .caps = {.links = 2, .satellite_mode = true, .reads = true, .ctcss = true, .step_hz = 1}, .hamlib_model = 2014,
+     .note = "satellite mode SA: Main down (FA), Sub up (FB); TN/TO tone; read with FA;/FB;", .make = make_kenwood},
+    {.name = "ts790", .label = "Kenwood TS-790", .form = SpecForm::device_baud, .protocol = Protocol::kenwood,
+     .baud = 4800, .caps = {.links = 2}, .hamlib_model = 2007, .note = "VFO A down, B up", .make = make_kenwood},
+    {.name = "ft847", .label = "Yaesu FT-847", .form = SpecForm::device_baud, .protocol = Protocol::ft847,
+     .baud = 4800, .satmode = SatCommand::ft847,
+     .caps = {.links = 2, .satellite_mode = true, .reads = true, .ctcss = true}, .hamlib_model = 1001,
+     .note = "satellite mode 4E; SAT RX / SAT TX opcodes 11/21, read 13/23", .make = make_ft8xx},
+    {.name = "ft817", .label = "Yaesu FT-817", .form = SpecForm::device_baud, .protocol = Protocol::ft817,
+     .baud = 4800, .caps = {.reads = true, .ctcss = true}, .hamlib_model = 1020,
+     .note = "one link: a pair is --radio ft817:A --uplink-radio ft817:B", .make = make_ft8xx},
+    {.name = "ft818", .label = "Yaesu FT-818", .form = SpecForm::device_baud, .protocol = Protocol::ft817,
+     .baud = 4800, .caps = {.reads = true, .ctcss = true}, .hamlib_model = 1041, .note = "as the FT-817",
+     .make = make_ft8xx},
+    {.name = "ft736", .label = "Yaesu FT-736R", .form = SpecForm::device_baud, .protocol = Protocol::ft736,
+     .baud = 4800, .satmode = SatCommand::ft736, .caps = {.links = 2, .satellite_mode = true}, .hamlib_model = 1010,
+     .note = "satellite mode 0E; never acknowledged, cannot be read", .make = make_ft736},
     // Hamlib.
-    {"hamlib", "any Hamlib backend", SpecForm::hamlib, Protocol::hamlib, 0, 0, Link::uplink, SatCommand::none, false,
-     {2, false, true, true, 1}, 0, "MODEL: Hamlib's number or name (rigctl -l)", make_hamlib},
-    {"rigctld", "a rigctld daemon (Hamlib NET rigctl)", SpecForm::rigctld, Protocol::rigctld, 0, 0, Link::uplink,
-     SatCommand::none, false, {2, false, true, true, 1}, 2, "HOST 127.0.0.1, PORT 4532 by default", make_rigctld},
+    {.name = "hamlib", .label = "any Hamlib backend", .form = SpecForm::hamlib, .protocol = Protocol::hamlib,
+     .caps = {.links = 2, .reads = true, .ctcss = true, .step_hz = 1},
+     .note = "MODEL: Hamlib's number or name (rigctl -l)", .make = make_hamlib},
+    {.name = "rigctld", .label = "a rigctld daemon (Hamlib NET rigctl)", .form = SpecForm::rigctld,
+     .protocol = Protocol::rigctld, .caps = {.links = 2, .reads = true, .ctcss = true, .step_hz = 1},
+     .hamlib_model = 2, .note = "HOST 127.0.0.1, PORT 4532 by default", .make = make_rigctld},
 };
 
 }  // namespace
