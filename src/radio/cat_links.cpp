@@ -66,7 +66,7 @@ void IcomLink::open() {
   reader_.clear();
   echo_.reset();       // an interface may have been swapped: found again on the first exchange
   selected_.reset();
-  satellite_on_ = false;
+  satellite_asked_ = satellite_on_ = band_refused_ = tx_read_refused_ = silent_ = woke_ = false;
 }
 
 void IcomLink::close() noexcept {
@@ -130,7 +130,7 @@ std::optional<icom::Frame> IcomLink::exchange(const Bytes& frame, Expect expect)
         if (echo_ || !answered)
           throw LinkError(Action::retry, "interface not echoing (nothing came back from the CI-V bus on " +
                                              port_.device() + ")");
-        selected_.reset();
+        radio_silent();
         throw LinkError(Action::retry, "no reply from " + who(to) + " (neither an echo nor an answer)");
       }
       if (echo && *echo == frame) {
@@ -159,7 +159,7 @@ std::optional<icom::Frame> IcomLink::exchange(const Bytes& frame, Expect expect)
         reply = left > milliseconds(0) ? read_frame(left, any) : std::nullopt;
       }
       if (!reply) {
-        selected_.reset();
+        radio_silent();
         throw LinkError(Action::retry, "no reply from " + who(to));
       }
       const auto kind = icom::parse_reply(*reply);
@@ -167,10 +167,17 @@ std::optional<icom::Frame> IcomLink::exchange(const Bytes& frame, Expect expect)
       if (kind == icom::Reply::collision) {
         collided = echo_ == true;   // a jam only means something on a shared bus
       } else if (f && f->to == icom::kController && f->from == to) {
+        if (kind == icom::Reply::ng || (expect == Expect::ack && kind == icom::Reply::ok) ||
+            (f->cmd == cmd && kind != icom::Reply::ok))
+          woke_ = std::exchange(silent_, false) || woke_;   // it answers
         if (kind == icom::Reply::ng)
           throw LinkError(Action::drop, who(to) + " refused " + to_hex(frame) + " (NG)");
         if (expect == Expect::ack && kind == icom::Reply::ok) return std::nullopt;
         if (expect == Expect::data && f->cmd == cmd) return f;
+        // The same command answered with data instead of FB (Hamlib's simic9700 echoes 16 5A's
+        // value): not an acknowledgement, and nothing waiting longer would change.
+        if (expect == Expect::ack && f->cmd == cmd)
+          throw LinkError(Action::drop, who(to) + " answered " + to_hex(frame) + " with " + to_hex(*reply) + " instead of FB");
       }
       // Anything else is other traffic: another controller on the bus, a late echo of our own
       // frame, or the radio's transceive frames (FE FE 00 <radio> 00 ... FD when the dial turns,
@@ -182,35 +189,64 @@ std::optional<icom::Frame> IcomLink::exchange(const Bytes& frame, Expect expect)
                                      std::to_string(opt_.max_attempts) + " attempts");
 }
 
+// A radio that stopped answering (switched off behind its interface, or its USB cable's radio
+// asleep): what it was told since the last answer may be gone when it answers again, so the band is
+// selected and satellite mode asked again then, as at a connect.
+void IcomLink::radio_silent() {
+  selected_.reset();
+  satellite_asked_ = false;
+  silent_ = true;
+}
+
+// Asked once per connect (and after the radio fell silent): confirmed with FB, or reported once
+// (refused, unanswered, answered with anything else) and the tuning goes on without it, each link
+// still on its own band. Hamlib's path says the same ("Main/Sub without it").
 void IcomLink::ensure_satellite_mode() {
-  if (opt_.satellite_cmd == 0 || satellite_on_) return;
+  if (opt_.satellite_cmd == 0 || satellite_asked_) return;
   const std::uint8_t to = address(Link::downlink);
   const Bytes on = icom::satellite_mode(to, opt_.satellite_cmd, opt_.satellite_sub, true);
-  satellite_on_ = true;   // asked once per open: a radio that refuses it is not asked every second
+  const bool was_silent = silent_;
+  std::string why;
   try {
     exchange(on, expects_reply(to) ? Expect::ack : Expect::nothing);
   } catch (const LinkError& e) {
-    if (e.action != Action::drop) {
-      satellite_on_ = false;
-      throw;
-    }
-    // Refused: reported, and the Doppler goes on (each link still on its own band).
-    spdlog::warn("radio {}: satellite mode not switched on ({}); tuning goes on without it", describe(), e.what());
+    // The port gone, or a radio that stopped answering everything (switched off): not a verdict
+    // on satellite mode; asked again once it answers.
+    if (e.action == Action::reconnect || (e.action == Action::retry && was_silent)) throw;
+    why = e.what();
   }
+  satellite_asked_ = true;
+  satellite_on_ = why.empty();
+  if (satellite_on_) {
+    if (std::exchange(satellite_warned_, false))
+      spdlog::info("radio {}: satellite mode confirmed ({})", describe(), to_hex(on));
+    return;
+  }
+  if (std::exchange(satellite_warned_, true)) return;   // said once; asked again after a silence or connect
+  spdlog::warn("radio {}: satellite mode not confirmed ({}); tuning goes on without it, Main/Sub", describe(), why);
 }
 
 void IcomLink::select_band(Link l) {
   const std::uint8_t to = address(l);
-  if (opt_.satellite_cmd != 0) {
-    const icom::Band band = l == opt_.main_link ? icom::Band::main : icom::Band::sub;
-    if (selected_ == band) return;   // no select thrash: only when the band changes
+  if (opt_.satellite_cmd != 0 || opt_.band_select == IcomBandSelect::main_tx_sub_rx) {
+    const icom::Band band = opt_.satellite_cmd != 0 ? (l == opt_.main_link ? icom::Band::main : icom::Band::sub)
+                                                    : (l == Link::uplink ? icom::Band::main : icom::Band::sub);
+    if (opt_.satellite_cmd != 0 && selected_ == band) return;   // no select thrash: only when the band changes
+    if (band_refused_) return;
     selected_.reset();
-    exchange(icom::select_band(to, band), expects_reply(to) ? Expect::ack : Expect::nothing);
+    try {
+      exchange(icom::select_band(to, band), expects_reply(to) ? Expect::ack : Expect::nothing);
+    } catch (const LinkError& e) {
+      if (e.action != Action::drop) throw;
+      // Refused or not acknowledged: said once; the commands go to the band the radio has selected
+      // until the next connect (a radio without 07 D0/D1 keeps tuning).
+      band_refused_ = true;
+      spdlog::warn("radio {}: band select not confirmed ({}); tuning goes on without it until the next connect",
+                   describe(), e.what());
+      return;
+    }
     selected_ = band;
-    return;
   }
-  if (opt_.band_select != IcomBandSelect::main_tx_sub_rx) return;
-  transact(icom::select_band(to, l == Link::uplink ? icom::Band::main : icom::Band::sub), expects_reply(to));
 }
 
 void IcomLink::set_frequency(Link l, Hz hz) {
@@ -235,11 +271,25 @@ Hz IcomLink::read_frequency(Link l) {
   if (!can_read(l)) return RadioLink::read_frequency(l);
   ensure_satellite_mode();
   const icom::Band band = l == opt_.main_link ? icom::Band::main : icom::Band::sub;
-  const bool tx = opt_.satellite_cmd != 0 && l == Link::uplink && opt_.reads_tx_1c03 && selected_ != band;
-  if (!tx) select_band(l);
-  const auto answer = exchange(tx ? icom::read_transmit_frequency(to) : icom::read_frequency(to), Expect::data);
+  const bool tx = opt_.satellite_cmd != 0 && l == Link::uplink && opt_.reads_tx_1c03 && selected_ != band &&
+                  satellite_on_ && !tx_read_refused_;
+  if (tx) {
+    try {
+      if (const auto answer = exchange(icom::read_transmit_frequency(to), Expect::data))
+        if (const auto hz = icom::decode_frequency(*answer)) return *hz;
+      throw LinkError(Action::drop, who(to) + " answered 1C 03 without a frequency");
+    } catch (const LinkError& e) {
+      if (e.action != Action::drop) throw;
+      // Refused (Hamlib's simic9700 answers FA): the uplink is read on its band from now on.
+      tx_read_refused_ = true;
+      spdlog::warn("radio {}: {}; the uplink is read with a band select and 03 until the next connect", describe(),
+                   e.what());
+    }
+  }
+  select_band(l);
+  const auto answer = exchange(icom::read_frequency(to), Expect::data);
   const auto hz = answer ? icom::decode_frequency(*answer) : std::nullopt;
-  if (!hz) throw LinkError(Action::retry, who(to) + " answered " + (tx ? "1C 03" : "03") + " without a frequency");
+  if (!hz) throw LinkError(Action::retry, who(to) + " answered 03 without a frequency");
   return *hz;
 }
 
@@ -274,7 +324,7 @@ std::string KenwoodLink::describe() const {
 
 void KenwoodLink::open() {
   port_.open();
-  satellite_asked_ = satellite_on_ = tone_on_ = false;
+  satellite_asked_ = satellite_on_ = tone_on_ = silent_ = woke_ = false;
   found_.reset();
 }
 
@@ -317,16 +367,23 @@ void KenwoodLink::ensure_satellite_mode() {
   if (!opt_.satellite_mode || satellite_asked_) return;
   satellite_asked_ = true;   // asked once per open: a radio that refuses is not asked every second
   const auto answer = query(kenwood::read_satellite(), "SA");
+  if (!answer && silent_) {   // switched off: no verdict on satellite mode, asked once it answers
+    satellite_asked_ = false;
+    throw LinkError(Action::retry, "no answer from the " + opt_.model + " to " + kenwood::read_satellite());
+  }
+  if (answer) woke_ = std::exchange(silent_, false) || woke_;
   const auto found = answer ? kenwood::decode_satellite(*answer) : std::nullopt;
   if (!found) {
-    spdlog::warn("radio {}: satellite mode not switched on ({} to SA;); tuning goes on with VFO A down, VFO B up",
-                 describe(), answer ? "it answered " + *answer : std::string("no answer"));
+    if (!std::exchange(satellite_warned_, true))
+      spdlog::warn("radio {}: satellite mode not switched on ({} to SA;); tuning goes on with VFO A down, VFO B up",
+                   describe(), answer ? "it answered " + *answer : std::string("no answer"));
     return;
   }
-  found_ = found;
+  if (!found_) found_ = found;   // as found at the first ask since open: put back at close
   const kenwood::Satellite working = kenwood::satellite_working(*found, false);
   if (*found == working) {
     satellite_on_ = true;
+    satellite_warned_ = false;
     return;
   }
   // A VFO in memory mode keeps the radio out of satellite mode (an operator's report to
@@ -345,12 +402,14 @@ void KenwoodLink::ensure_satellite_mode() {
     const auto state = now ? kenwood::decode_satellite(*now) : std::nullopt;
     if (state && state->on()) {
       satellite_on_ = true;
+      satellite_warned_ = false;
       spdlog::info("radio {}: satellite mode on ({} found {}): downlink on Main (FA), uplink on Sub (FB)", describe(),
                    kenwood::set_satellite(working), kenwood::set_satellite(*found));
       return;
     }
   }
-  // Refused or not taken: reported, and the Doppler goes on (FA and FB still tune VFO A and B).
+  // Refused or not taken: reported once, and the Doppler goes on (FA and FB still tune VFO A and B).
+  if (std::exchange(satellite_warned_, true)) return;
   spdlog::warn("radio {}: satellite mode not switched on (sent {}, SA; answers {}); tuning goes on with VFO A "
                "down, VFO B up",
                describe(), kenwood::set_satellite(working), last);
@@ -418,6 +477,8 @@ Hz KenwoodLink::read_frequency(Link l) {
   const kenwood::Vfo vfo = vfo_of(l);
   const auto answer = query(kenwood::read_frequency(vfo), vfo == kenwood::Vfo::a ? "FA" : "FB");
   const auto f = answer ? kenwood::decode_frequency(*answer) : std::nullopt;
+  if (answer) woke_ = std::exchange(silent_, false) || woke_;
+  else silent_ = true, satellite_asked_ = satellite_on_ = false;   // switched off: asked again when it answers
   if (!f) throw LinkError(Action::retry, "no answer from the " + opt_.model + " to " + kenwood::read_frequency(vfo) +
                                              (answer ? " (it answered " + *answer + ")" : ""));
   return f->hz;
@@ -513,8 +574,9 @@ void Ft8xxLink::send(std::span<const std::uint8_t> c) {
 
 void Ft8xxLink::open() {
   port_.open();
-  satellite_on_ = false;
-  if (opt_.model == Ft8xxOptions::Model::ft847) send(ft847::cat_on());   // (on the FT-817, 00 is LOCK ON)
+  satellite_on_ = silent_ = woke_ = false;
+  cat_on_ = opt_.model == Ft8xxOptions::Model::ft847;
+  if (cat_on_) send(ft847::cat_on());   // (on the FT-817, 00 is LOCK ON)
 }
 
 void Ft8xxLink::close() noexcept {
@@ -530,6 +592,8 @@ void Ft8xxLink::close() noexcept {
 }
 
 void Ft8xxLink::ensure_satellite_mode() {
+  if (!cat_on_ && opt_.model == Ft8xxOptions::Model::ft847) send(ft847::cat_on());   // again after a silence
+  cat_on_ = true;
   if (satellite_on_ || target(Link::downlink) == yaesu::Target::main) return;
   send(ft847::sat_mode_on());   // never acknowledged: sent once per open, before the first frequency
   satellite_on_ = true;
@@ -566,6 +630,10 @@ Hz Ft8xxLink::read_frequency(Link l) {
     answer.insert(answer.end(), buf, buf + n);
   }
   const auto hz = ft847::decode_read(answer);   // the same 4 BCD bytes + mode on both radios
+  // Nothing at all: switched off. Its CAT and satellite mode are sent again when it answers, as
+  // after a connect (a radio switched on again starts with CAT off).
+  if (answer.empty()) cat_on_ = satellite_on_ = false, silent_ = true;
+  else woke_ = std::exchange(silent_, false) || woke_;
   if (!hz) throw LinkError(Action::retry, "no answer from the " + opt_.label + " to its read command (" +
                                              std::to_string(answer.size()) + " of 5 bytes)");
   return *hz;

@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "radio/cat.h"
 #include "radio/serial.h"
@@ -58,6 +59,7 @@ class IcomLink final : public RadioLink {
   bool can_read(Link l) const override { return opt_.reads && address(l) != icom::kBroadcast; }
   Hz read_frequency(Link link) override;
   void set_ctcss_tone(int tenths_hz) override;
+  bool answered_again() override { return std::exchange(woke_, false); }
 
   // One CI-V transaction: write, read the echo back (collision: wait and retry), then the reply
   // when the radio is addressed directly. Throws LinkError.
@@ -75,6 +77,7 @@ class IcomLink final : public RadioLink {
   bool expects_reply(std::uint8_t to) const { return opt_.expect_reply && to != icom::kBroadcast; }
   void select_band(Link l);
   void ensure_satellite_mode();
+  void radio_silent();
   std::string who(std::uint8_t to) const;
 
   SerialPort port_;
@@ -82,7 +85,15 @@ class IcomLink final : public RadioLink {
   icom::FrameReader reader_;
   std::optional<bool> echo_;
   std::optional<icom::Band> selected_;   // the band last selected (unknown after open or a failure)
-  bool satellite_on_ = false;            // satellite mode switched on since open
+  // Faults stay local: each is asked once per connect (and again after the radio fell silent),
+  // reported once, and the tuning goes on without it.
+  bool satellite_asked_ = false;         // satellite mode asked since open
+  bool satellite_on_ = false;            // ... and confirmed with FB
+  bool satellite_warned_ = false;        // "not confirmed" said (kept over connects: said once)
+  bool band_refused_ = false;            // 07 D0/D1 not acknowledged: not sent again until a connect
+  bool tx_read_refused_ = false;         // 1C 03 refused: the uplink read on its band instead
+  bool silent_ = false;                  // the last exchange got no answer at all (none since)
+  bool woke_ = false;                    // ... and then it answered (for answered_again)
 };
 
 struct KenwoodOptions {
@@ -123,6 +134,7 @@ class KenwoodLink final : public RadioLink {
   void check() override { port_.check(); }
   // FA; / FB; answer FA00435123450; (menu 6-7's TS-790 family does not read: reads off).
   bool can_read(Link) const override { return opt_.reads; }
+  bool answered_again() override { return std::exchange(woke_, false); }
   Hz read_frequency(Link link) override;
   // The TS-2000: TN and TO on the uplink, confirmed with TO; (a refusal is reported, Doppler goes
   // on); the families of menu 6-7: refused with a message, no encoder trakbox sets.
@@ -144,6 +156,9 @@ class KenwoodLink final : public RadioLink {
   KenwoodOptions opt_;
   bool satellite_asked_ = false;             // once per open: a radio that refuses is not asked again
   bool satellite_on_ = false;                // confirmed on
+  bool satellite_warned_ = false;            // "not switched on" said (once, over connects)
+  bool silent_ = false;                      // the last read got no answer (switched off?)
+  bool woke_ = false;                        // ... and then it answered (for answered_again)
   std::optional<kenwood::Satellite> found_;  // SA as found at the first ask (put back at close)
   bool tone_on_ = false;                     // TO1 sent since open
 };
@@ -197,6 +212,7 @@ class Ft8xxLink final : public RadioLink {
   void check() override { port_.check(); }
   bool can_read(Link l) const override { return carries(l); }
   Hz read_frequency(Link link) override;
+  bool answered_again() override { return std::exchange(woke_, false); }
   void set_ctcss_tone(int tenths_hz) override;
 
  private:
@@ -208,6 +224,9 @@ class Ft8xxLink final : public RadioLink {
   SerialPort port_;
   Ft8xxOptions opt_;
   bool satellite_on_ = false;
+  bool cat_on_ = false;            // FT-847: CAT on sent since open or since the radio last fell silent
+  bool silent_ = false;            // a read got nothing at all
+  bool woke_ = false;              // ... and a later one an answer (for answered_again)
 };
 
 std::unique_ptr<RadioDriver> make_icom_radio(const std::string& device, const IcomOptions& o = {},
