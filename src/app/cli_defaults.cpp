@@ -14,12 +14,6 @@
 namespace tb::app {
 namespace {
 
-std::string upper(std::string_view s) {
-  std::string r(s);
-  for (char& c : r) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return r;
-}
-
 // The value with the hemisphere's sign, and whether a letter was written.
 std::optional<double> signed_degrees(std::string_view item, char pos, char neg, bool& letter) {
   const std::string_view t = text::trim(item);
@@ -28,25 +22,13 @@ std::optional<double> signed_degrees(std::string_view item, char pos, char neg, 
   return station::parse_hemisphere_degrees(t, pos, neg);
 }
 
-std::vector<std::string_view> split(std::string_view s, char sep) {
-  std::vector<std::string_view> out;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t end = s.find(sep, start);
-    out.push_back(s.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start));
-    if (end == std::string_view::npos) break;
-    start = end + 1;
-  }
-  return out;
-}
-
 bool is_locator(std::string_view s) { return maidenhead_centre(s).has_value(); }
 
 }  // namespace
 
 std::optional<orbit::Observer> maidenhead_centre(std::string_view loc) {
   if (loc.size() != 4 && loc.size() != 6 && loc.size() != 8) return std::nullopt;
-  const std::string u = upper(loc);
+  const std::string u = text::upper(loc);
   auto in = [](char c, char lo, char hi) { return c >= lo && c <= hi; };
   if (!in(u[0], 'A', 'R') || !in(u[1], 'A', 'R') || !in(u[2], '0', '9') || !in(u[3], '0', '9')) return std::nullopt;
   // Field 20 x 10 degrees, square 2 x 1, subsquare 5' x 2.5' (24 letters), extended 30" x 15" (10 digits).
@@ -80,7 +62,7 @@ Parsed<orbit::Observer> parse_station_text(std::string_view text) {
                           : why + " in '" + std::string(text) + "'; expected " + expected;
     return r;
   };
-  const std::vector<std::string_view> items = split(text, ',');
+  const std::vector<std::string_view> items = text::split(text, ',');
   auto height = [&](std::string_view item) -> std::optional<double> {
     const auto h = text::parse_double(text::trim(item));
     if (!h || *h < -1000.0 || *h > 100000.0) return std::nullopt;

@@ -1,5 +1,5 @@
 // The satellite radios of 2026 over a socat pty pair, each against a responder written here from
-// the documented protocol (radios-2026.md; Icom's IC-9700 CI-V reference; Hamlib's ft847.c and
+// the documented protocol (docs/radio.md, "The radios of 2026"; Icom's IC-9700 CI-V reference; Hamlib's ft847.c and
 // ft817.c): exact bytes of a pass's first update, a Doppler update, a dial turn read back,
 // satellite mode on and off, CTCSS; frames per update counted. Skipped without socat.
 #include <doctest/doctest.h>
