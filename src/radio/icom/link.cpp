@@ -54,7 +54,9 @@ void IcomLink::open() {
   reader_.clear();
   echo_.reset();       // an interface may have been swapped: found again on the first exchange
   selected_.reset();
-  satellite_asked_ = satellite_on_ = band_refused_ = tx_read_refused_ = silent_ = woke_ = false;
+  satellite_asked_ = satellite_on_ = band_refused_ = tx_read_refused_ = silent_ = woke_ = vfo_ab_ = false;
+  set_hz_[0].reset();
+  set_hz_[1].reset();
 }
 
 void IcomLink::close() noexcept {
@@ -217,19 +219,31 @@ void IcomLink::ensure_satellite_mode() {
 void IcomLink::select_band(Link l) {
   const std::uint8_t to = address(l);
   if (opt_.satellite_cmd != 0 || opt_.band_select == IcomBandSelect::main_tx_sub_rx) {
-    const icom::Band band = opt_.satellite_cmd != 0 ? (l == opt_.main_link ? icom::Band::main : icom::Band::sub)
-                                                    : (l == Link::uplink ? icom::Band::main : icom::Band::sub);
+    // With VFO A/B (below) the key cached is VFO A as Main, VFO B as Sub.
+    const icom::Band band = vfo_ab_ ? (l == Link::downlink ? icom::Band::main : icom::Band::sub)
+                            : opt_.satellite_cmd != 0 ? (l == opt_.main_link ? icom::Band::main : icom::Band::sub)
+                                                      : (l == Link::uplink ? icom::Band::main : icom::Band::sub);
     if (opt_.satellite_cmd != 0 && selected_ == band) return;   // no select thrash: only when the band changes
     if (band_refused_) return;
     selected_.reset();
+    // VFO A down, VFO B up (07 00 / 07 01) on a radio that has no Main/Sub for trakbox; cached as
+    // Main and Sub.
+    const Bytes select = vfo_ab_ ? icom::select_vfo(to, l == Link::downlink ? icom::Vfo::a : icom::Vfo::b)
+                                 : icom::select_band(to, band);
     try {
-      exchange(icom::select_band(to, band), expects_reply(to) ? Expect::ack : Expect::nothing);
+      exchange(select, expects_reply(to) ? Expect::ack : Expect::nothing);
     } catch (const LinkError& e) {
       if (e.action != Action::drop) throw;
-      // Refused or not acknowledged: said once; the commands go to the band the radio has selected
-      // until the next connect (a radio without 07 D0/D1 keeps tuning).
+      // Refused or not acknowledged: said once; 07 D0/D1 gives way to VFO A/B, and a radio that
+      // takes neither gets the commands on the band it has selected, until the next connect.
+      if (!vfo_ab_) {
+        vfo_ab_ = true;
+        spdlog::warn("radio {}: band select not confirmed ({}); VFO A down, VFO B up (07 00 / 07 01) until the next connect",
+                     describe(), e.what());
+        return select_band(l);
+      }
       band_refused_ = true;
-      spdlog::warn("radio {}: band select not confirmed ({}); tuning goes on without it until the next connect",
+      spdlog::warn("radio {}: VFO select not confirmed either ({}); tuning goes on without it until the next connect",
                    describe(), e.what());
       return;
     }
@@ -243,6 +257,7 @@ void IcomLink::set_frequency(Link l, Hz hz) {
   ensure_satellite_mode();
   select_band(l);
   transact(frame, expects_reply(to));
+  set_hz_[l == Link::downlink ? 0 : 1] = hz;
 }
 
 void IcomLink::set_mode(Link l, Mode mode) {
@@ -258,9 +273,9 @@ Hz IcomLink::read_frequency(Link l) {
   const std::uint8_t to = address(l);
   if (!can_read(l)) return RadioLink::read_frequency(l);
   ensure_satellite_mode();
-  const icom::Band band = l == opt_.main_link ? icom::Band::main : icom::Band::sub;
+  const icom::Band band = l == opt_.main_link ? icom::Band::main : icom::Band::sub;   // (not with VFO A/B)
   const bool tx = opt_.satellite_cmd != 0 && l == Link::uplink && opt_.reads_tx_1c03 && selected_ != band &&
-                  satellite_on_ && !tx_read_refused_;
+                  satellite_on_ && !tx_read_refused_ && !vfo_ab_;
   if (tx) {
     try {
       if (const auto answer = exchange(icom::read_transmit_frequency(to), Expect::data))
@@ -278,6 +293,20 @@ Hz IcomLink::read_frequency(Link l) {
   const auto answer = exchange(icom::read_frequency(to), Expect::data);
   const auto hz = answer ? icom::decode_frequency(*answer) : std::nullopt;
   if (!hz) throw LinkError(Action::retry, who(to) + " answered 03 without a frequency");
+  // A band select acknowledged but not acted on (Hamlib's simic910 answers 07 D0/D1 with FB and
+  // stays on VFO A): this link's band reads what the other link was set to. VFO A/B from now on,
+  // said once, and everything is sent again (answered_again); the read is taken as no turn.
+  const std::optional<Hz>& mine = set_hz_[l == Link::downlink ? 0 : 1];
+  const std::optional<Hz>& other = set_hz_[l == Link::downlink ? 1 : 0];
+  if (!vfo_ab_ && opt_.satellite_cmd != 0 && mine && other && *hz == *other && *hz != *mine) {
+    vfo_ab_ = true;
+    selected_.reset();
+    woke_ = true;
+    spdlog::warn("radio {}: the {} band reads {} Hz, the {}'s frequency: its band select (07 D0/D1) is acknowledged "
+                 "but not followed; VFO A down, VFO B up (07 00 / 07 01) until the next connect",
+                 describe(), to_string(l), *hz, to_string(l == Link::downlink ? Link::uplink : Link::downlink));
+    return *mine;
+  }
   return *hz;
 }
 

@@ -87,7 +87,9 @@ class IcomLink final : public RadioLink {
   bool satellite_asked_ = false;         // satellite mode asked since open
   bool satellite_on_ = false;            // ... and confirmed with FB
   bool satellite_warned_ = false;        // "not confirmed" said (kept over connects: said once)
-  bool band_refused_ = false;            // 07 D0/D1 not acknowledged: not sent again until a connect
+  bool vfo_ab_ = false;                  // 07 D0/D1 refused or not followed: VFO A/B (07 00/01) instead
+  bool band_refused_ = false;            // ... and VFO A/B refused too: no select until a connect
+  std::optional<Hz> set_hz_[2];          // the frequency each link was last set to (acknowledged)
   bool tx_read_refused_ = false;         // 1C 03 refused: the uplink read on its band instead
   bool silent_ = false;                  // the last exchange got no answer at all (none since)
   bool woke_ = false;                    // ... and then it answered (for answered_again)

@@ -39,7 +39,10 @@ class Ic9700 {
   // echo the value in a data frame (FE FE E0 A2 16 5A 00 FD), simic910 sends nothing that answers.
   enum class SatAnswer { fb, data, silent };
   std::atomic<SatAnswer> sat_answer{SatAnswer::fb};
-  std::atomic<bool> refuse_band{false};      // 07 D0 / D1 answered FA
+  std::atomic<bool> refuse_band{false};      // 07 D0 / D1 (and 07 00 / 01) answered FA
+  // 07 D0 / D1 answered FB but not followed; 07 00 / 01 select VFO A / B (kept as Main / Sub), as
+  // Hamlib's simic910 does.
+  std::atomic<bool> ignore_band_select{false};
   std::atomic<bool> data_for_mode{false};    // 06 answered with a data frame, not FB
   std::atomic<bool> refuse_tx_read{false};   // 1C 03 answered FA (simic9700 falls through to FA)
   // Switched off: no echo, no answer; switched on again: out of satellite mode.
@@ -98,6 +101,11 @@ class Ic9700 {
       end_.write(icom::frame(icom::kController, kAddr, 0x06, d));
     } else if (f->cmd == 0x06) {
       answer(!d.empty());
+    } else if (f->cmd == 0x07 && d.size() == 1 && (d[0] == 0x00 || d[0] == 0x01) && ignore_band_select) {
+      selected_main_ = d[0] == 0x00;
+      answer(true);
+    } else if (f->cmd == 0x07 && d.size() == 1 && (d[0] == 0xD0 || d[0] == 0xD1) && ignore_band_select) {
+      answer(true);
     } else if (f->cmd == 0x07 && d.size() == 1 && (d[0] == 0xD0 || d[0] == 0xD1)) {
       if (!refuse_band) selected_main_ = d[0] == 0xD0;
       answer(!refuse_band);

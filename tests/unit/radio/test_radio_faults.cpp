@@ -119,7 +119,7 @@ TEST_CASE("Satellite mode answered with data (simic9700, simic9100) or not at al
 TEST_CASE("Band select refused, a mode answered with data, 1C 03 refused: each said once, the tuning goes on" *
           doctest::skip(tb::testing::skip_without({"socat"}))) {
   tb::testing::require_tools({"socat"});
-  SUBCASE("band select refused (FA): not sent again until the next connect; the frequencies still go out") {
+  SUBCASE("band select refused (FA), VFO select too: neither sent again until the next connect; the frequencies go out") {
     LogCapture log;
     PtyPair pair;
     REQUIRE(pair.ok());
@@ -127,10 +127,30 @@ TEST_CASE("Band select refused, a mode answered with data, 1C 03 refused: each s
     rig.refuse_band = true;
     auto made = make_radio("ic9700:" + pair.radio_side(), RadioConfig{}, timing());
     rs44_updates(*made.driver, 3);
-    CHECK(count_frames(rig.frames(), 0x07) == 1);
+    CHECK(count_frames(rig.frames(), 0x07) == 2);   // 07 D0, then 07 00, each refused once
     CHECK(count_frames(rig.frames(), 0x05) == 6);
     CHECK(made.driver->status().delivered >= 6);
     CHECK(log.count("band select not confirmed") == 1);
+    CHECK(log.count("VFO select not confirmed either") == 1);
+  }
+  SUBCASE("band select acknowledged but not followed (simic910): seen on a read, VFO A / B from then on") {
+    LogCapture log;
+    PtyPair pair;
+    REQUIRE(pair.ok());
+    Ic9700 rig(pair.test_side(), false, 0x60);
+    rig.sat_answer = Ic9700::SatAnswer::silent;
+    rig.ignore_band_select = true;
+    auto made = make_radio("ic910h:" + pair.radio_side(), RadioConfig{}, timing());
+    RadioDriver& radio = *made.driver;
+    rs44_updates(radio, 1);
+    CHECK(rig.frequency(icom::Band::main) == 145'963'730);   // both on VFO A: the uplink came last
+    radio.set_frequency_guarded(Link::downlink, 435'643'740, 60);   // dial follow reads it first
+    REQUIRE(radio.wait_idle(10000ms));
+    CHECK_FALSE(radio.take_dial_turn(Link::downlink));   // not taken for a turn of the dial
+    REQUIRE(eventually([&] { return rig.frequency(icom::Band::main) == 435'643'740 && rig.frequency(icom::Band::sub) == 145'963'730; }));
+    CHECK(log.count("band select (07 D0/D1) is acknowledged but not followed") == 1);
+    const auto frames = rig.frames();
+    CHECK(std::find(frames.begin(), frames.end(), Bytes{0xFE, 0xFE, 0x60, 0xE0, 0x07, 0x01, 0xFD}) != frames.end());
   }
   SUBCASE("a mode answered with a data frame instead of FB: reported once, the frequencies tuned") {
     LogCapture log;
