@@ -3,9 +3,20 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <utility>
 
 namespace tb::radio {
+
+namespace {
+
+// A Doppler update moves a link by less than its tolerance (2 steps + a second's Doppler); a guarded
+// move several times that is the Tuner pairing this link with the other link's turned dial.
+bool moves_after_turn(Hz hz, Hz guard, const std::optional<Hz>& accepted) {
+  return guard > 0 && accepted && std::llabs(hz - *accepted) > 4 * guard;
+}
+
+}  // namespace
 
 WorkerRadio::WorkerRadio(std::unique_ptr<RadioLink> link, WorkerTiming timing)
     : link_(std::move(link)), description_(link_->describe()), timing_(timing) {
@@ -51,7 +62,15 @@ void WorkerRadio::set_frequency_guarded(Link link, Hz hz, Hz tolerance) {
     std::lock_guard lock(mu_);
     want_hz_[link_index(link)] = hz;
     guard_[link_index(link)] = tolerance;
-    enqueue_locked({Job::Kind::frequency, link, hz, Mode::none, {}, tolerance});
+    Job job{Job::Kind::frequency, link, hz, Mode::none, {}, tolerance};
+    if (moves_after_turn(hz, tolerance, link == Link::downlink ? status_.downlink_hz : status_.uplink_hz)) {
+      // The other link following a turn of the dial once the knob has rested: ahead of the queue
+      // (on a slow line, the FT-847's, a tick's reads and Doppler writes would hold it ~1 s).
+      std::erase_if(queue_, [&](const Job& j) { return j.kind == job.kind && j.link == job.link; });
+      queue_.push_front(std::move(job));
+    } else {
+      enqueue_locked(std::move(job));
+    }
   }
   cv_.notify_all();
 }
@@ -296,20 +315,28 @@ void WorkerRadio::deliver_next(Lock& lock) {
   Job job = std::move(queue_.front());
   queue_.pop_front();
   if (job.kind == Job::Kind::frequency && job.guard > 0 && link_->can_read(job.link)) {
-    // Read before writing: a turn of the dial since the last command is kept, not overwritten,
-    // and so is one seen earlier that the station has not taken yet.
-    busy_ = true;
-    const auto failures = status_.failures;
-    const bool turned = turned_[link_index(job.link)] || read_dial(lock, job.link, job.guard);
-    busy_ = false;
-    if (!open_) queue_.push_front(std::move(job));   // the link broke while reading: later
-    if (turned || !open_) return;
-    // The radio did not answer the read (switched off; its writes, never acknowledged, would go
-    // nowhere unseen): the write waits for it, tried again as a failed command is.
-    if (status_.failures != failures) {
-      if (!std::any_of(queue_.begin(), queue_.end(), [&](const Job& j) { return j.kind == job.kind && j.link == job.link; }))
-        queue_.push_back(std::move(job));
-      return;
+    const int i = link_index(job.link);
+    // A turn seen earlier that the station has not taken yet is kept, not overwritten.
+    if (turned_[i]) return;
+    // Read before writing: a turn of the dial since the last command is kept too. Not for the
+    // other link's move after a turn when that link was read within the last second (its dial
+    // unturned then): the move goes out at once.
+    const bool fresh = std::chrono::steady_clock::now() - read_at_[i] < 2 * timing_.check_every;
+    const bool follow = moves_after_turn(job.hz, job.guard, job.link == Link::downlink ? status_.downlink_hz : status_.uplink_hz);
+    if (!(follow && fresh)) {
+      busy_ = true;
+      const auto failures = status_.failures;
+      const bool turned = read_dial(lock, job.link, job.guard);
+      busy_ = false;
+      if (!open_) queue_.push_front(std::move(job));   // the link broke while reading: later
+      if (turned || !open_) return;
+      // The radio did not answer the read (switched off; its writes, never acknowledged, would go
+      // nowhere unseen): the write waits for it, tried again as a failed command is.
+      if (status_.failures != failures) {
+        if (!std::any_of(queue_.begin(), queue_.end(), [&](const Job& j) { return j.kind == job.kind && j.link == job.link; }))
+          queue_.push_back(std::move(job));
+        return;
+      }
     }
   }
   busy_ = true;
