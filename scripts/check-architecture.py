@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """check-architecture.py [SOURCE_DIR]: docs/ARCHITECTURE.md's module table against the code.
 
-Each folder's dependencies are derived from the #include "..." lines of the files directly in it
-(src/NAME, menus, menus/term): an include "orbit/sgp4.h" is a dependency on orbit, "menus/term/x.h"
+Each folder's dependencies are derived from the #include "..." lines of the files in it (src/NAME
+and its subfolders, menus, menus/term directly): an include "orbit/sgp4.h" is a dependency on orbit, "menus/term/x.h"
 on term. The table's "depends on" cell must name exactly those folders (by their last path part;
 "nothing" or an empty cell for none). Outside libraries in the cell (libcurl, ncurses, ...) are
 not checked here: CMake's target_link_libraries says what links. Every folder must have a row.
@@ -44,7 +44,11 @@ def derived(mods):
     for folder, short in mods.items():
         d = os.path.join(ROOT, folder)
         found = {}
-        for f in sorted(os.listdir(d)):
+        files = sorted(os.listdir(d))
+        if folder.startswith("src/"):   # a module's subfolders are part of it (src/radio/icom/ ...)
+            files += sorted(os.path.join(sub, f) for sub in os.listdir(d) if os.path.isdir(os.path.join(d, sub))
+                            for f in os.listdir(os.path.join(d, sub)))
+        for f in files:
             if not f.endswith((".cpp", ".h")):
                 continue
             with open(os.path.join(d, f), encoding="utf-8") as fh:

@@ -22,18 +22,6 @@ std::optional<double> signed_degrees(std::string_view item, char pos, char neg, 
   return station::parse_hemisphere_degrees(t, pos, neg);
 }
 
-std::vector<std::string_view> split(std::string_view s, char sep) {
-  std::vector<std::string_view> out;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t end = s.find(sep, start);
-    out.push_back(s.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start));
-    if (end == std::string_view::npos) break;
-    start = end + 1;
-  }
-  return out;
-}
-
 bool is_locator(std::string_view s) { return maidenhead_centre(s).has_value(); }
 
 }  // namespace
@@ -50,7 +38,7 @@ Parsed<orbit::Observer> parse_station_text(std::string_view text) {
                           : why + " in '" + std::string(text) + "'; expected " + expected;
     return r;
   };
-  const std::vector<std::string_view> items = split(text, ',');
+  const std::vector<std::string_view> items = text::split(text, ',');
   auto height = [&](std::string_view item) -> std::optional<double> {
     const auto h = text::parse_double(text::trim(item));
     if (!h || *h < -1000.0 || *h > 100000.0) return std::nullopt;

@@ -65,10 +65,8 @@ std::string csv_field(std::string_view s) {
   return r + "\"";
 }
 
-std::string trim(std::string_view s) { return std::string(text::trim(s)); }
-
 std::string choice_label(const Elements& e) {
-  const std::string name = trim(e.name);
+  const std::string name(text::trim(e.name));
   return name.empty() ? std::to_string(e.catalog_number) : name + " (" + std::to_string(e.catalog_number) + ")";
 }
 
@@ -190,9 +188,9 @@ std::optional<std::size_t> match_sat(const std::vector<Elements>& sets, const st
   for (std::size_t i = 0; i < sets.size(); ++i)
     if (sets[i].name == key) hits.push_back(i);
   if (hits.empty()) {
-    const std::string k = lower(trim(key));
+    const std::string k = lower(text::trim(key));
     for (std::size_t i = 0; i < sets.size(); ++i)
-      if (!k.empty() && lower(trim(sets[i].name)) == k) hits.push_back(i);
+      if (!k.empty() && lower(text::trim(sets[i].name)) == k) hits.push_back(i);
   }
   if (hits.empty()) {
     std::optional<std::int64_t> number = to_int64(key);

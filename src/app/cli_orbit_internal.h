@@ -25,7 +25,6 @@ using text::printf_string;
 void out(const std::string& s);  // to stdout, as is
 std::string json_string(std::string_view s);
 std::string csv_field(std::string_view s);
-std::string trim(std::string_view s);
 // "ISS (ZARYA) (25544)" or "25544".
 std::string choice_label(const Elements& e);
 // A warning on stderr when the set is past the age its orbit allows at `first` or `last` (the span

@@ -11,6 +11,7 @@
 #include "app/cli_orbit.h"
 #include "app/cli_orbit_internal.h"
 #include "app/pass_plot.h"
+#include "util/text.h"
 #include "orbit/element_age.h"
 #include "orbit/passes.h"
 #include "orbit/sgp4.h"
@@ -174,7 +175,7 @@ int run_passes(std::vector<std::string> args) {
     const orbit::Sgp4 sat(e);
     if (!check_window(e, sat, *start, stop)) status = kExitFailure;
     if (sat.init_error() != orbit::Sgp4Error::none) continue;
-    const std::string label = trim(e.name).empty() ? std::to_string(e.catalog_number) : trim(e.name);
+    const std::string label = text::trim(e.name).empty() ? std::to_string(e.catalog_number) : std::string(text::trim(e.name));
     for (const orbit::Pass& p : orbit::find_passes(sat, *station, *start, stop, options, eo))
       passes.push_back({label, p, set});
   }

@@ -15,7 +15,6 @@ namespace tb::host {
 
 namespace {
 
-std::string_view trim(std::string_view s) { return text::trim(s, text::kWhitespace); }
 using text::upper;
 
 bool blank(char c) { return c == ' ' || c == '\t'; }
@@ -64,7 +63,7 @@ Reply error(std::string text) {
 
 AzElParse parse_az_el(std::string_view line) {
   const char* kForm = "expected AZxxx ELxxx in degrees, e.g. AZ220 EL45";
-  std::string_view s = trim(line);
+  std::string_view s = text::trim(line, text::kWhitespace);
   AzElParse r;
   if (s.size() < 2 || upper(s.substr(0, 2)) != "AZ") {
     r.error = kForm;
@@ -178,7 +177,7 @@ std::vector<std::string> Interpreter::help() {
 }
 
 Reply Interpreter::execute(std::string_view line) {
-  const std::string_view s = trim(line);
+  const std::string_view s = text::trim(line, text::kWhitespace);
   if (s.empty()) return {};
   const std::string u = upper(s);
   if (u == "Q") {
@@ -234,7 +233,7 @@ Reply Interpreter::az_el(std::string_view line) {
 }
 
 Reply Interpreter::mode(std::string_view cmd, std::string_view arg) {
-  const std::string_view a = trim(arg);
+  const std::string_view a = text::trim(arg, text::kWhitespace);
   const auto m = radio::parse_mode(a);
   if (!m || *m == radio::Mode::none)
     return error(std::string(cmd) + ": '" + std::string(a) + "' is not a radio mode: expected FM, LSB, USB or CW, e.g. " +
@@ -245,7 +244,7 @@ Reply Interpreter::mode(std::string_view cmd, std::string_view arg) {
 }
 
 Reply Interpreter::frequency(std::string_view cmd, std::string_view arg) {
-  const std::string_view a = trim(arg);
+  const std::string_view a = text::trim(arg, text::kWhitespace);
   const auto hz = parse_ten_hz(a);
   if (!hz)
     return error(std::string(cmd) + ": '" + std::string(a) +

@@ -61,6 +61,12 @@ class RadioDriver {
   }
   // The radio frequency the operator turned a link to, once (then forgotten); nothing when not.
   virtual std::optional<Hz> take_dial_turn(Link) { return std::nullopt; }
+  // How long ago the turn not yet taken was read from the radio (0 when none): the knob's rest is
+  // timed from the read, not from the station's next tick.
+  virtual std::chrono::milliseconds dial_turn_age(Link) const { return std::chrono::milliseconds(0); }
+  // One of two radios (--uplink-radio) carries the station's `link` on its own one link: its
+  // messages name that link ("uplink dial turned"), not its own.
+  virtual void carries_for_station(Link link) { (void)link; }
   // CTCSS tone on the uplink in tenths of Hz (670: 67.0 Hz), 0: off. Ignored where unsupported.
   virtual void set_ctcss_tone(int tenths_hz) { (void)tenths_hz; }
   // Host mode "S": bytes to the radio as they are (Icom: the caller supplies the whole frame).

@@ -3,7 +3,7 @@
 #include <charconv>
 #include <vector>
 
-#include "radio/hamlib_models.h"
+#include "radio/hamlib/hamlib_models.h"
 #include "radio/two_radios.h"
 #include "util/text.h"
 
@@ -11,16 +11,11 @@ namespace tb::radio {
 
 namespace {
 
-std::vector<std::string> split(std::string_view s, char sep) {
-  std::vector<std::string> out;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t p = s.find(sep, start);
-    out.emplace_back(s.substr(start, p == std::string_view::npos ? std::string_view::npos : p - start));
-    if (p == std::string_view::npos) break;
-    start = p + 1;
-  }
-  return out;
+// The ':'-separated fields of a spec after its name, as strings (none for an empty rest).
+std::vector<std::string> fields(std::string_view rest) {
+  if (rest.empty()) return {};
+  const auto parts = text::split(rest, ':');
+  return {parts.begin(), parts.end()};
 }
 
 // Digits only, as the spec forms print them ("+9600" is not a speed).
@@ -50,15 +45,6 @@ RadioSpecParse parse_radio_spec(std::string_view text, std::string_view option) 
                        " (trakbox --radio list shows their forms, e.g. ic9700:/dev/ttyUSB0 or rigctld:HOST:PORT)");
   RadioSpec spec;
   spec.name = std::string(m->name);
-  switch (m->protocol) {
-    case Protocol::simulated: spec.kind = RadioSpec::Kind::simulated; break;
-    case Protocol::icom: spec.kind = RadioSpec::Kind::icom; break;
-    case Protocol::kenwood: spec.kind = RadioSpec::Kind::kenwood; break;
-    case Protocol::ft736: case Protocol::ft847: case Protocol::ft817: spec.kind = RadioSpec::Kind::yaesu; break;
-    case Protocol::cat: spec.kind = RadioSpec::Kind::cat; break;
-    case Protocol::hamlib: spec.kind = RadioSpec::Kind::hamlib; break;
-    case Protocol::rigctld: spec.kind = RadioSpec::Kind::rigctld; break;
-  }
 
   switch (m->form) {
     case SpecForm::none:
@@ -70,7 +56,7 @@ RadioSpecParse parse_radio_spec(std::string_view text, std::string_view option) 
       return {spec, {}};
     case SpecForm::device_baud: {
       const std::string usage = "expected " + spec_form(*m) + ", e.g. " + kind + ":/dev/ttyUSB0";
-      std::vector<std::string> parts = rest.empty() ? std::vector<std::string>{} : split(rest, ':');
+      std::vector<std::string> parts = fields(rest);
       if (!parts.empty() && (parts.back() == "maindown" || parts.back() == "mainup")) {
         if (m->satmode == SatCommand::kenwood_sa && parts.back() == "mainup")
           return error(quoted + "\"mainup\": the " + std::string(m->label) +
@@ -98,7 +84,7 @@ RadioSpecParse parse_radio_spec(std::string_view text, std::string_view option) 
       break;
   }
 
-  std::vector<std::string> parts = rest.empty() ? std::vector<std::string>{} : split(rest, ':');
+  std::vector<std::string> parts = fields(rest);
   if (!parts.empty() && (parts.back() == "split" || parts.back() == "mainsub")) {
     spec.scheme = parts.back() == "split" ? HamlibVfoScheme::split : HamlibVfoScheme::main_sub;
     parts.pop_back();

@@ -22,15 +22,14 @@
 #include "radio/config.h"
 #include "radio/registry.h"
 #include "radio/driver.h"
-#include "radio/hamlib_radio.h"
+#include "radio/hamlib/hamlib_radio.h"
 #include "radio/worker.h"
 
 namespace tb::radio {
 
 struct RadioSpec {
-  enum class Kind { simulated, icom, kenwood, yaesu, cat, hamlib, rigctld };
-  Kind kind = Kind::simulated;     // the protocol family
-  std::string name = "sim";        // the registry entry (radio/registry.h): "ic9700", "icom", ...
+  std::string name = "sim";        // the registry entry (radio/registry.h): "ic9700", "icom", ...;
+                                   // its row says the protocol and everything else
   std::optional<Link> main_link;   // :maindown / :mainup: overrides the model's satellite-mode band
   std::string device;          // icom/kenwood/yaesu/cat/hamlib
   int model = 0;               // hamlib

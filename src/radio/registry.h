@@ -47,6 +47,8 @@ struct RadioCaps {
   bool reads = false;            // the dial can be read back (dial follow)
   bool ctcss = false;            // a CTCSS encoder on the uplink trakbox can set
   Hz step_hz = 10;               // the finest frequency step the CAT format carries
+  // Icom: 1C 03 reads the transmit frequency in satellite mode without a band select (IC-9700).
+  bool reads_tx_1c03 = false;
 };
 
 // What a radio carries: both links (one radio), or one of two (--uplink-radio): a satellite rig

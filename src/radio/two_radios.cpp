@@ -6,7 +6,9 @@ namespace tb::radio {
 
 // Each radio carries its link on its own (current) VFO: the driver's downlink link.
 TwoRadios::TwoRadios(std::unique_ptr<RadioDriver> downlink, std::unique_ptr<RadioDriver> uplink)
-    : down_(std::move(downlink)), up_(std::move(uplink)) {}
+    : down_(std::move(downlink)), up_(std::move(uplink)) {
+  up_->carries_for_station(Link::uplink);
+}
 
 std::string TwoRadios::describe() const {
   return "downlink: " + down_->describe() + "; uplink: " + up_->describe();
@@ -21,6 +23,10 @@ void TwoRadios::set_frequency_guarded(Link l, Hz hz, Hz tolerance) {
 }
 
 std::optional<Hz> TwoRadios::take_dial_turn(Link l) { return radio(l).take_dial_turn(Link::downlink); }
+
+std::chrono::milliseconds TwoRadios::dial_turn_age(Link l) const {
+  return (l == Link::downlink ? *down_ : *up_).dial_turn_age(Link::downlink);
+}
 
 void TwoRadios::set_ctcss_tone(int tenths_hz) { up_->set_ctcss_tone(tenths_hz); }
 

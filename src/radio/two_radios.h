@@ -19,6 +19,7 @@ class TwoRadios final : public RadioDriver {
   void set_mode(Link link, Mode mode) override;
   void set_frequency_guarded(Link link, Hz radio_hz, Hz tolerance_hz) override;
   std::optional<Hz> take_dial_turn(Link link) override;
+  std::chrono::milliseconds dial_turn_age(Link link) const override;
   void set_ctcss_tone(int tenths_hz) override;          // to the uplink radio
   void send_raw(std::string bytes) override;            // to the downlink radio (host mode S)
   RadioStatus status() const override;

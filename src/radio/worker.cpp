@@ -3,9 +3,20 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <utility>
 
 namespace tb::radio {
+
+namespace {
+
+// A Doppler update moves a link by less than its tolerance (2 steps + a second's Doppler); a guarded
+// move several times that is the Tuner pairing this link with the other link's turned dial.
+bool moves_after_turn(Hz hz, Hz guard, const std::optional<Hz>& accepted) {
+  return guard > 0 && accepted && std::llabs(hz - *accepted) > 4 * guard;
+}
+
+}  // namespace
 
 WorkerRadio::WorkerRadio(std::unique_ptr<RadioLink> link, WorkerTiming timing)
     : link_(std::move(link)), description_(link_->describe()), timing_(timing) {
@@ -51,7 +62,15 @@ void WorkerRadio::set_frequency_guarded(Link link, Hz hz, Hz tolerance) {
     std::lock_guard lock(mu_);
     want_hz_[link_index(link)] = hz;
     guard_[link_index(link)] = tolerance;
-    enqueue_locked({Job::Kind::frequency, link, hz, Mode::none, {}, tolerance});
+    Job job{Job::Kind::frequency, link, hz, Mode::none, {}, tolerance};
+    if (moves_after_turn(hz, tolerance, link == Link::downlink ? status_.downlink_hz : status_.uplink_hz)) {
+      // The other link following a turn of the dial once the knob has rested: ahead of the queue
+      // (on a slow line, the FT-847's, a tick's reads and Doppler writes would hold it ~1 s).
+      std::erase_if(queue_, [&](const Job& j) { return j.kind == job.kind && j.link == job.link; });
+      queue_.push_front(std::move(job));
+    } else {
+      enqueue_locked(std::move(job));
+    }
   }
   cv_.notify_all();
 }
@@ -59,6 +78,18 @@ void WorkerRadio::set_frequency_guarded(Link link, Hz hz, Hz tolerance) {
 std::optional<Hz> WorkerRadio::take_dial_turn(Link link) {
   std::lock_guard lock(mu_);
   return std::exchange(turned_[link_index(link)], std::nullopt);
+}
+
+std::chrono::milliseconds WorkerRadio::dial_turn_age(Link link) const {
+  std::lock_guard lock(mu_);
+  if (!turned_[link_index(link)]) return std::chrono::milliseconds(0);
+  return std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() -
+                                                               turned_at_[link_index(link)]);
+}
+
+void WorkerRadio::carries_for_station(Link link) {
+  std::lock_guard lock(mu_);
+  station_link_ = link;
 }
 
 void WorkerRadio::set_ctcss_tone(int tenths_hz) {
@@ -83,7 +114,7 @@ bool WorkerRadio::read_dial(Lock& lock, Link link, Hz guard) {
   } catch (const LinkError& e) {
     lock.lock();
     if (e.action == LinkError::Action::drop) return false;
-    fail(e.what());
+    fail(e.what(), e.action);
     if (e.action == LinkError::Action::reconnect) {
       link_fault_ = true;
       lose_link(lock);
@@ -92,11 +123,14 @@ bool WorkerRadio::read_dial(Lock& lock, Link link, Hz guard) {
   }
   lock.lock();
   read_at_[i] = std::chrono::steady_clock::now();
+  radio_back();
   (link == Link::downlink ? status_.downlink_read_hz : status_.uplink_read_hz) = read;
   std::optional<Hz>& accepted = link == Link::downlink ? status_.downlink_hz : status_.uplink_hz;
   if (guard <= 0 || !accepted || !dial_turned(*read, *accepted, guard)) return false;
-  spdlog::info("radio {}: {} dial turned to {} Hz (set {} Hz)", description_, to_string(link), *read, *accepted);
+  spdlog::info("radio {}: {} dial turned to {} Hz (set {} Hz)", description_, to_string(station_link_.value_or(link)),
+               *read, *accepted);
   turned_[i] = *read;
+  turned_at_[i] = read_at_[i];
   want_hz_[i] = *read;
   accepted = *read;   // the radio is there now; trakbox's next command starts from it
   return true;
@@ -141,14 +175,24 @@ void WorkerRadio::execute(const Job& job) {
   }
 }
 
-void WorkerRadio::fail(const std::string& message) {
+void WorkerRadio::fail(const std::string& message, LinkError::Action action) {
   ++status_.failures;
   if (message != logged_) spdlog::warn("radio {}: {}", description_, message);  // once, until it works
   logged_ = message;
   status_.fault = true;
   status_.message = message;
-  retry_at_ = std::chrono::steady_clock::now() + backoff_;
+  const bool retry = action == LinkError::Action::retry;
+  retry_at_ = std::chrono::steady_clock::now() + (retry ? std::min(backoff_, timing_.retry_max) : backoff_);
   backoff_ = std::min(backoff_ * 2, timing_.backoff_max);
+}
+
+void WorkerRadio::radio_back() {
+  if (!link_->answered_again()) return;
+  for (Link l : {Link::downlink, Link::uplink}) {
+    const int i = link_index(l);
+    if (want_mode_[i]) enqueue_locked({Job::Kind::mode, l, 0, *want_mode_[i], {}});
+    if (want_hz_[i] && !turned_[i]) enqueue_locked({Job::Kind::frequency, l, *want_hz_[i], Mode::none, {}, guard_[i]});
+  }
 }
 
 void WorkerRadio::run() {
@@ -246,6 +290,7 @@ bool WorkerRadio::connect(Lock& lock) {
   }
   open_ = true;
   want_open_ = false;
+  link_->answered_again();   // everything is sent again below
   next_check_ = std::chrono::steady_clock::now() + timing_.check_every;
   status_.connected = true;
   note_readable();
@@ -270,13 +315,29 @@ void WorkerRadio::deliver_next(Lock& lock) {
   Job job = std::move(queue_.front());
   queue_.pop_front();
   if (job.kind == Job::Kind::frequency && job.guard > 0 && link_->can_read(job.link)) {
-    // Read before writing: a turn of the dial since the last command is kept, not overwritten,
-    // and so is one seen earlier that the station has not taken yet.
-    busy_ = true;
-    const bool turned = turned_[link_index(job.link)] || read_dial(lock, job.link, job.guard);
-    busy_ = false;
-    if (!open_) queue_.push_front(std::move(job));   // the link broke while reading: later
-    if (turned || !open_) return;
+    const int i = link_index(job.link);
+    // A turn seen earlier that the station has not taken yet is kept, not overwritten.
+    if (turned_[i]) return;
+    // Read before writing: a turn of the dial since the last command is kept too. Not for the
+    // other link's move after a turn when that link was read within the last second (its dial
+    // unturned then): the move goes out at once.
+    const bool fresh = std::chrono::steady_clock::now() - read_at_[i] < 2 * timing_.check_every;
+    const bool follow = moves_after_turn(job.hz, job.guard, job.link == Link::downlink ? status_.downlink_hz : status_.uplink_hz);
+    if (!(follow && fresh)) {
+      busy_ = true;
+      const auto failures = status_.failures;
+      const bool turned = read_dial(lock, job.link, job.guard);
+      busy_ = false;
+      if (!open_) queue_.push_front(std::move(job));   // the link broke while reading: later
+      if (turned || !open_) return;
+      // The radio did not answer the read (switched off; its writes, never acknowledged, would go
+      // nowhere unseen): the write waits for it, tried again as a failed command is.
+      if (status_.failures != failures) {
+        if (!std::any_of(queue_.begin(), queue_.end(), [&](const Job& j) { return j.kind == job.kind && j.link == job.link; }))
+          queue_.push_back(std::move(job));
+        return;
+      }
+    }
   }
   busy_ = true;
   lock.unlock();
@@ -298,6 +359,7 @@ void WorkerRadio::deliver_next(Lock& lock) {
     return;
   }
   ++status_.delivered;
+  radio_back();
   note_readable();  // a command may have changed it (a Hamlib radio that just went into split)
   if (status_.fault || link_fault_) spdlog::info("radio {}: working again", description_);
   link_fault_ = false;
@@ -325,7 +387,7 @@ void WorkerRadio::job_failed(Lock& lock, Job job, const LinkError& error) {
     status_.message = error.what();
     return;
   }
-  fail(error.what());
+  fail(error.what(), error.action);
   if (error.action == LinkError::Action::reconnect) {
     link_fault_ = true;
     lose_link(lock);

@@ -48,12 +48,18 @@ class RadioLink {
   // LinkError(reconnect) when the port or connection is gone (a serial adapter unplugged, the pty's
   // other end closed), so a loss is seen and reported without waiting for the next command.
   virtual void check() {}
+  // True once when the radio answered again after a silence (switched off and on behind a port
+  // that stayed): the worker then sends everything again, as after a reconnect.
+  virtual bool answered_again() { return false; }
 };
 
 struct WorkerTiming {
   std::chrono::milliseconds backoff_first{200};    // wait after the first failure
   std::chrono::milliseconds backoff_max{5000};     // doubling up to this
   std::chrono::milliseconds check_every{500};      // RadioLink::check() while open and idle
+  // A radio that stopped answering on a port that works (switched off behind its interface):
+  // asked again at least this often, so it is tuned within a second or two of answering again.
+  std::chrono::milliseconds retry_max{1000};
 };
 
 class WorkerRadio final : public RadioDriver {
@@ -68,6 +74,8 @@ class WorkerRadio final : public RadioDriver {
   void set_mode(Link link, Mode mode) override;
   void set_frequency_guarded(Link link, Hz radio_hz, Hz tolerance_hz) override;
   std::optional<Hz> take_dial_turn(Link link) override;
+  void carries_for_station(Link link) override;
+  std::chrono::milliseconds dial_turn_age(Link link) const override;
   void set_ctcss_tone(int tenths_hz) override;
   void send_raw(std::string bytes) override;
   RadioStatus status() const override;
@@ -90,7 +98,12 @@ class WorkerRadio final : public RadioDriver {
   bool connect(Lock& lock);          // opens the link; false (fault recorded) when it did not
   void deliver_next(Lock& lock);     // runs the job at the head of the queue
   void job_failed(Lock& lock, Job job, const LinkError& error);
-  void fail(const std::string& message);  // records a fault and the back-off before the next try
+  // Records a fault and the back-off before the next try (a retry on a working port: at most
+  // retry_max; a lost port: doubling to backoff_max).
+  void fail(const std::string& message, LinkError::Action action = LinkError::Action::reconnect);
+  // The radio answered again after a silence (RadioLink::answered_again): whatever it was told is
+  // sent again, as after a connect (its link asks for satellite mode again itself).
+  void radio_back();
   void finish(Lock& lock);           // stopping: one attempt at what is queued, then close
   void wait_for_work(Lock& lock);    // until stop, a job, a reconnect due, or a check due
   void check_link(Lock& lock);       // the idle check; a lost link is closed for reconnecting
@@ -102,6 +115,7 @@ class WorkerRadio final : public RadioDriver {
   bool read_dial(Lock& lock, Link link, Hz guard);
 
   std::unique_ptr<RadioLink> link_;
+  std::optional<Link> station_link_;   // one of two radios: the station's link its one link carries
   const std::string description_;
   const WorkerTiming timing_;
 
@@ -116,6 +130,7 @@ class WorkerRadio final : public RadioDriver {
   RadioStatus status_;
   Hz guard_[2] = {0, 0};             // the tolerance of the last guarded frequency per link
   std::optional<Hz> turned_[2];      // a turn of the dial not yet taken
+  std::chrono::steady_clock::time_point turned_at_[2]{};   // ... and when it was read
   // When each link was last read: an idle read comes only when none was made for check_every
   // (a guarded write reads first, so a link written each second is not read twice as often).
   std::chrono::steady_clock::time_point read_at_[2]{};

@@ -6,6 +6,8 @@
 #include <charconv>
 #include <vector>
 
+#include "util/text.h"
+
 namespace tb::rotator {
 
 namespace {
@@ -21,24 +23,13 @@ std::optional<int> number(std::string_view s) {
   return v;
 }
 
-std::vector<std::string_view> split(std::string_view s, char sep) {
-  std::vector<std::string_view> out;
-  for (;;) {
-    auto i = s.find(sep);
-    out.push_back(s.substr(0, i));
-    if (i == std::string_view::npos) break;
-    s.remove_prefix(i + 1);
-  }
-  return out;
-}
-
 SpecResult fail(std::string_view text, std::string why) {
   return {std::nullopt, "bad --rotator '" + std::string(text) + "': " + why};
 }
 
 SpecResult parse_hamlib(std::string_view text, std::string_view rest) {
   const std::string usage = "expected hamlib:MODEL:DEVICE[:BAUD], e.g. hamlib:603:/dev/ttyUSB0:9600";
-  auto f = split(rest, ':');
+  auto f = text::split(rest, ':');
   if (rest.empty() || f[0].empty()) return fail(text, "missing MODEL; " + usage);
   auto model = number(f[0]);
   if (!model) return fail(text, "MODEL '" + std::string(f[0]) + "' is not a Hamlib model number (see `rotctl -l`); " + usage);
@@ -80,7 +71,7 @@ SpecResult parse_rotctld(std::string_view text, std::string_view rest) {
       if (port.empty()) return fail(text, "empty PORT; " + usage);
     }
   } else {
-    auto f = split(rest, ':');
+    auto f = text::split(rest, ':');
     if (f.size() > 2) return fail(text, "too many ':' (an IPv6 address goes in brackets); " + usage);
     host = f[0];
     if (f.size() == 2) {

@@ -122,13 +122,17 @@ void StationLoop::follow_radio(int db_index, const orbit::Observation& obs) {
   const bool follow = tuner_.dial_follow_active();
   // Dial follow: a turn of either dial the radio reported since the last tick moves that link's
   // spot at once; the other link follows once the knob has rested (Tuner::settle).
+  // The knob's rest is timed on the station's clock (real time, or --clock-rate's), from when the
+  // radio's dial was read, not from this tick.
+  const auto age_down = radio_->dial_turn_age(down), age_up = radio_->dial_turn_age(up);
   const std::optional<radio::Hz> turned_down = radio_->take_dial_turn(down);
   const std::optional<radio::Hz> turned_up = radio_->take_dial_turn(up);
-  // The knob's rest is timed on the station's clock (real time, or --clock-rate's).
+  const double read_ago_s = std::chrono::duration<double>(turned_down && turned_up ? std::min(age_down, age_up)
+                                                                                   : std::max(age_down, age_up)).count();
   const double now_s = std::chrono::duration<double>(clock_.now().time_since_epoch()).count();
   if (follow && (turned_down || turned_up)) {
     using Turn = radio::Tuner::Turn;
-    switch (tuner_.dial_turn(turned_down, turned_up, rr, now_s)) {
+    switch (tuner_.dial_turn(turned_down, turned_up, rr, now_s - read_ago_s)) {
       case Turn::downlink:
       case Turn::uplink: {
         const bool d = turned_down.has_value();

@@ -1,5 +1,7 @@
 """An Icom IC-9700 on a pseudo-terminal, written from Icom's IC-9700 CI-V reference guide and
-radios-2026.md: a helper of the integration tests, not a test.
+docs/radio.md: a helper of the integration tests, not a test. With sat_answer="data" it answers
+16 5A as Hamlib's simulators/simic9700.c does (a data frame with the value, not FB); power(False)
+switches it off (no echo, no answer) until power(True).
 
 Frames FE FE <to> <from> <cmd> [data] FD; the radio is at A2h, the controller E0h. It answers
 FB (OK) / FA (NG); 07 D0 / D1 select Main / Sub; 05 / 06 set the selected band's frequency / mode;
@@ -35,9 +37,12 @@ def from_bcd_le(b):
 
 
 class IC9700(PtyRadio):
-    def __init__(self, path, echo=False, refuse_tone=False):
+    def __init__(self, path, echo=False, refuse_tone=False, sat_answer="fb"):
         self.echo = echo
         self.refuse_tone = refuse_tone
+        # 16 5A answered FB, or as Hamlib's simic9700 does: "data" (the value echoed, not taken)
+        self.sat_answer = sat_answer
+        self.off = False          # switched off: no echo, no answer
         self.hz = {"main": 145_000_000, "sub": 435_000_000}
         self.mode = {"main": None, "sub": None}
         self.selected = "main"
@@ -55,8 +60,17 @@ class IC9700(PtyRadio):
             self.hz[band] += delta
             self.write(bytes([0xFE, 0xFE, 0x00, ADDR, 0x00]) + bcd_le(self.hz[band]) + b"\xfd")
 
+    def power(self, on):
+        """Switched off, then on again: a radio switched on comes up out of satellite mode."""
+        with self.lock:
+            if on and self.off:
+                self.satellite = False
+            self.off = not on
+
     def handle(self, f):
         self.frames.append((time.time(), f))
+        if self.off:
+            return
         if self.echo:
             self.write(f)
         if len(f) < 6 or f[2] != ADDR:
@@ -77,6 +91,8 @@ class IC9700(PtyRadio):
         elif cmd == 0x1C and d == b"\x03":   # the transmit frequency: Sub in satellite mode
             tx = "sub" if self.satellite else band
             self.write(bytes([0xFE, 0xFE, CTRL, ADDR, 0x1C, 0x03]) + bcd_le(self.hz[tx]) + b"\xfd")
+        elif cmd == 0x16 and len(d) == 2 and d[0] == 0x5A and self.sat_answer == "data":
+            self.write(bytes([0xFE, 0xFE, CTRL, ADDR, 0x16, 0x5A, 0x00, 0xFD]))
         elif cmd == 0x16 and len(d) == 2 and d[0] == 0x5A:
             self.satellite = d[1] == 1
             self.answer(True)

@@ -89,7 +89,7 @@ def rs44_knob_turn(get_down, get_up, turn_down, clock_now):
     check(abs(d2 - e_down) < 400, f"downlink kept on the new spot: {d2}, expected {e_down:.0f}")
     check(abs(u2 - e_up) < 400, f"uplink on the paired spot: {u2}, expected {e_up:.0f}")
     return (f"downlink {d1} -> {d1 + 10_000} (knob) -> {d2}; uplink {u1} -> {u2}, moved {moved_after:.2f} s "
-            "after the turn")
+            f"after the turn ({moved_after - 1.0:+.2f} s after the 1.0 s rest)")
 
 
 def so50_doppler_goes_on(get_down, get_up, clock_now):

@@ -26,7 +26,7 @@ done
 err=$("$BIN" --state "$TMP/s" --radio ic9800:/dev/ttyUSB0 </dev/null 2>&1 >/dev/null)
 code=$?
 [ "$code" -eq 2 ] || bad "a bad --radio exits $code, expected 2"
-grep -qF 'unknown radio "ic9800"; expected one of sim, icom,' <<<"$err" || bad "a bad --radio says: $err"
+grep -qF 'unknown radio "ic9800"; expected one of sim, cat, icom,' <<<"$err" || bad "a bad --radio says: $err"
 err=$("$BIN" --state "$TMP/s" --radio hamlib:IC-9701:/dev/ttyUSB0 </dev/null 2>&1 >/dev/null)
 grep -qF 'Icom IC-9700 (3081)' <<<"$err" || bad "a Hamlib name not found lists the near ones: $err"
 

@@ -1,4 +1,5 @@
-// Every byte string of /work/shared/reference/cat-protocols.md, byte for byte, and back.
+// Every byte string of docs/radio.md's "CAT formats" (from the manual's CAT section and the radios'
+// own CAT references), byte for byte, and back.
 #include <doctest/doctest.h>
 
 #include <stdexcept>

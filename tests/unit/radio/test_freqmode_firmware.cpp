@@ -1,6 +1,6 @@
 // The later TrakBox firmware's FREQ.DAT (v3.20d-3.50b) through the same parser as the 1994 file.
 // The files in tests/data/firmware/ were written from the format description
-// (/work/shared/reference/element-data-2026.md, "TrakBox files of the later firmware").
+// of the later firmware's files (docs/radio.md, "Two items of the later firmware's files").
 #include <doctest/doctest.h>
 #include "support/data_files.h"
 

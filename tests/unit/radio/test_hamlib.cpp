@@ -4,8 +4,8 @@
 #include <doctest/doctest.h>
 
 #include "radio/factory.h"
-#include "radio/hamlib_radio.h"
-#include "radio/rigctld_link.h"
+#include "radio/hamlib/hamlib_radio.h"
+#include "radio/hamlib/rigctld_link.h"
 #include "support.h"
 
 using namespace tb::radio;

@@ -7,7 +7,9 @@
 #include <mutex>
 #include <thread>
 
-#include "radio/cat_links.h"
+#include "radio/icom/link.h"
+#include "radio/kenwood/link.h"
+#include "radio/yaesu/link.h"
 #include "support.h"
 
 using tbtest::PtyPair;

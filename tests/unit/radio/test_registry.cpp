@@ -5,7 +5,7 @@
 #include <set>
 
 #include "radio/factory.h"
-#include "radio/hamlib_models.h"
+#include "radio/hamlib/hamlib_models.h"
 #include "radio/registry.h"
 
 using namespace tb::radio;
@@ -33,13 +33,15 @@ TEST_CASE("registry: names are unique, every model has a factory and a sane desc
 
 TEST_CASE("registry: the satellite rigs' defaults") {
   const RadioModel& ic9700 = *find_radio_model("ic9700");
-  CHECK(ic9700.civ_address == 0xA2);              // radios-2026.md, Hamlib ic9700.c
+  CHECK(ic9700.civ_address == 0xA2);              // docs/radio.md, Hamlib ic9700.c
   CHECK(ic9700.satmode == SatCommand::icom_16_5a);
   CHECK(ic9700.main_link == Link::downlink);      // satellite mode: Main receives, Sub transmits
   CHECK(ic9700.hamlib_model == 3081);
   CHECK(ic9700.caps.links == 2);
   CHECK(ic9700.caps.reads);
   CHECK(ic9700.caps.ctcss);
+  CHECK(ic9700.caps.reads_tx_1c03);                 // 1C 03: the IC-9700 only
+  for (const char* other : {"ic9100", "ic910h", "ic705"}) CHECK_FALSE(find_radio_model(other)->caps.reads_tx_1c03);
   CHECK(find_radio_model("ic9100")->civ_address == 0x7C);
   CHECK(find_radio_model("ic910h")->civ_address == 0x60);
   CHECK(find_radio_model("ic910h")->satmode == SatCommand::icom_1a_07);   // Hamlib ic910.c
@@ -60,7 +62,7 @@ TEST_CASE("--radio MODEL:DEVICE[:BAUD]: parsed from the table") {
   auto a = parse_radio_spec("ic9700:/dev/ttyUSB0");
   REQUIRE(a.spec);
   CHECK(a.spec->name == "ic9700");
-  CHECK(a.spec->kind == RadioSpec::Kind::icom);
+  CHECK(find_radio_model(a.spec->name)->protocol == Protocol::icom);   // the row says the protocol
   CHECK(a.spec->device == "/dev/ttyUSB0");
   CHECK(a.spec->baud == 0);
   CHECK_FALSE(a.spec->main_link);
@@ -68,7 +70,7 @@ TEST_CASE("--radio MODEL:DEVICE[:BAUD]: parsed from the table") {
   REQUIRE(b.spec);
   CHECK(b.spec->baud == 9600);
   CHECK(b.spec->main_link == Link::downlink);
-  CHECK(parse_radio_spec("ft847:/dev/ttyS0").spec->kind == RadioSpec::Kind::yaesu);
+  CHECK(find_radio_model(parse_radio_spec("ft847:/dev/ttyS0").spec->name)->protocol == Protocol::ft847);
   CHECK(parse_radio_spec("ts2000:/dev/ttyS0:57600").spec->baud == 57600);
   CHECK(parse_radio_spec("ft818:/dev/ttyS0").spec->name == "ft818");
 
@@ -83,7 +85,7 @@ TEST_CASE("--radio MODEL:DEVICE[:BAUD]: parsed from the table") {
   CHECK(parse_radio_spec("ic9700:/dev/x:19200:7").error.find("BAUD 7 is not a serial speed") != std::string::npos);
   CHECK(parse_radio_spec("sim:/dev/x").error == "--radio \"sim:/dev/x\": sim takes no device");
   const auto unknown = parse_radio_spec("ic9800:/dev/x", "--uplink-radio");
-  CHECK(unknown.error.rfind("--uplink-radio \"ic9800:/dev/x\": unknown radio \"ic9800\"; expected one of sim, icom,", 0) == 0);
+  CHECK(unknown.error.rfind("--uplink-radio \"ic9800:/dev/x\": unknown radio \"ic9800\"; expected one of sim, cat, icom,", 0) == 0);
   CHECK(unknown.error.find("ic9700") != std::string::npos);
 }
 

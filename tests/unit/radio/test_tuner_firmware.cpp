@@ -5,7 +5,9 @@
 #include <tuple>
 #include <utility>
 
-#include "radio/cat_links.h"
+#include "radio/icom/link.h"
+#include "radio/kenwood/link.h"
+#include "radio/yaesu/link.h"
 #include "radio/config.h"
 #include "radio/doppler.h"
 

@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "radio/hamlib_radio.h"
+#include "radio/hamlib/hamlib_radio.h"
 #include "radio/worker.h"
 
 namespace tb::radio {

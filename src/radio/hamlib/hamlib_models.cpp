@@ -1,4 +1,4 @@
-#include "radio/hamlib_models.h"
+#include "radio/hamlib/hamlib_models.h"
 
 #include <hamlib/rig.h>
 

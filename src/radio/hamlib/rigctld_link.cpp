@@ -1,4 +1,4 @@
-#include "radio/rigctld_link.h"
+#include "radio/hamlib/rigctld_link.h"
 
 #include <fcntl.h>
 #include <hamlib/rig.h>

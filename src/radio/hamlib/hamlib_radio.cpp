@@ -1,4 +1,4 @@
-#include "radio/hamlib_radio.h"
+#include "radio/hamlib/hamlib_radio.h"
 
 #include <hamlib/rig.h>
 #include <poll.h>
@@ -9,7 +9,7 @@
 #include <spdlog/spdlog.h>
 
 #include "radio/registry.h"
-#include "radio/rigctld_link.h"
+#include "radio/hamlib/rigctld_link.h"
 #include "util/sigpipe.h"
 
 namespace tb::radio {

@@ -1,0 +1,40 @@
+// Hamlib: any backend through libhamlib, and a rigctld daemon: the registry's rows of this family (radio/registry.h) and the factories they name.
+#include "radio/factory.h"
+#include "radio/registry.h"
+#include "radio/registry_rows.h"
+
+#include "radio/hamlib/hamlib_models.h"
+#include "radio/hamlib/hamlib_radio.h"
+
+namespace tb::radio {
+
+namespace {
+
+using std::chrono::milliseconds;
+
+MakeRadio make_hamlib(const RadioModel&, const RadioSpec& spec, const RadioConfig&, const DriverTiming& t, RadioRole) {
+  if (hamlib_model_name(spec.model).empty())
+    return {nullptr, "--radio hamlib:" + std::to_string(spec.model) + ": Hamlib has no rig model " +
+                         std::to_string(spec.model) + " (see rigctl -l)"};
+  return {make_hamlib_radio({spec.model, spec.device, spec.baud, spec.scheme}, t.worker), {}};
+}
+
+MakeRadio make_rigctld(const RadioModel&, const RadioSpec& spec, const RadioConfig&, const DriverTiming& t, RadioRole) {
+  return {make_hamlib_radio({2, spec.host + ":" + std::to_string(spec.port), 0, spec.scheme}, t.worker), {}};
+}
+
+}  // namespace
+
+std::span<const RadioModel> hamlib_rows() {
+  static const RadioModel rows[] = {
+      {.name = "hamlib", .label = "any Hamlib backend", .form = SpecForm::hamlib, .protocol = Protocol::hamlib,
+       .caps = {.links = 2, .reads = true, .ctcss = true, .step_hz = 1},
+       .note = "MODEL: Hamlib's number or name (rigctl -l)", .make = make_hamlib},
+      {.name = "rigctld", .label = "a rigctld daemon (Hamlib NET rigctl)", .form = SpecForm::rigctld,
+       .protocol = Protocol::rigctld, .caps = {.links = 2, .reads = true, .ctcss = true, .step_hz = 1},
+       .hamlib_model = 2, .note = "HOST 127.0.0.1, PORT 4532 by default", .make = make_rigctld},
+  };
+  return rows;
+}
+
+}  // namespace tb::radio

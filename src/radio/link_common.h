@@ -1,0 +1,33 @@
+// What the serial CAT links of every family share (internal to src/radio): the write slack, the
+// tone's text, the refusal of a tone a radio cannot set, a rig's serial settings at a configured
+// speed.
+#pragma once
+#include <chrono>
+#include <string>
+
+#include "radio/serial.h"
+#include "radio/worker.h"
+
+namespace tb::radio::link {
+
+// A write may take its time on the wire plus this.
+inline constexpr std::chrono::milliseconds kWriteSlack{1000};
+
+inline std::string tone_text(int tenths_hz) {
+  return std::to_string(tenths_hz / 10) + "." + std::to_string(tenths_hz % 10) + " Hz";
+}
+
+// A radio without a CTCSS encoder trakbox can set: a tone is refused with a message, never dropped
+// silently; turning the tone off is nothing to refuse.
+inline void refuse_tone(const std::string& radio, int tenths_hz) {
+  if (tenths_hz <= 0) return;
+  throw LinkError(LinkError::Action::drop, radio + " has no CTCSS encoder trakbox can set: tone " + tone_text(tenths_hz) + " not sent");
+}
+
+// A rig's standard serial settings at the configured speed (STATION.DAT line 4), when one is set.
+inline SerialSettings at_baud(SerialSettings s, int baud) {
+  if (baud > 0) s.baud = static_cast<unsigned>(baud);
+  return s;
+}
+
+}  // namespace tb::radio::link
