@@ -121,6 +121,13 @@ function drawStatus(st) {
   $("radio-down").textContent = mhz(r.downlink_hz) + (r.downlink_mode ? " " + r.downlink_mode : "");
   $("radio-up").textContent = mhz(r.uplink_hz) + (r.uplink_mode ? " " + r.uplink_mode : "");
   $("radio-state").textContent = r.fault ? "fault: " + r.message : (r.radio || "-") + (r.connected ? ", connected" : "");
+  const lk = r.links || {};
+  const linkText = (l) => !l ? "-" : l.state + (l.message ? ": " + l.message : "");
+  $("link-down").textContent = linkText(lk.downlink);
+  $("link-up").textContent = linkText(lk.uplink);
+  const c = r.correction;
+  $("radio-corr").textContent = !c ? "-" : (c.hz > 0 ? "+" : "") + c.hz + " Hz" +
+    (c.key ? " (" + c.key + (c.remembered ? ", kept" : "") + ")" : "") + (c.dial_follow ? ", dial follow" : "");
   doppler = st.doppler !== false;
   $("doppler").textContent = doppler ? "on" : "off";
   $("btn-doppler").textContent = doppler ? "Doppler off" : "Doppler on";
