@@ -18,6 +18,8 @@ test_pkgs=(
   gpsd gpsd-clients
   # the web page's browser tests (tests/integration/web_browser.py)
   chromium chromium-driver python3-selenium
+  # TLS in front: the reverse proxy of packaging/nginx-trakbox.conf (tests/integration/web_tls.py)
+  nginx openssl
   # the Debian package and its checks (scripts/package-check.sh), the completion test
   dpkg-dev lintian man-db groff-base systemd bash-completion
   # what a one-shot command asks the kernel for (one_shot_ports.py: no bind)

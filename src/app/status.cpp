@@ -10,6 +10,7 @@
 #include "app/station_app.h"
 #include "gps/monitor.h"
 #include "orbit/element_age.h"
+#include "radio/two_radios.h"
 #include "station/clock.h"
 #include "station/station.h"
 #include "tracker/elements_refresh.h"
@@ -79,10 +80,46 @@ nlohmann::json antenna_json(StationApp& app) {
   return a;
 }
 
+// One link's state: "idle" (nothing sent: no satellite tuned, or no frequency for the link), "fault"
+// (the radio serving it, with its message), "not connected", "not confirmed" (sent, but the radio
+// has not accepted that frequency yet), "confirmed".
+nlohmann::json link_json(const radio::RadioStatus& s, radio::Link link, std::optional<radio::Hz> sent) {
+  const bool down = link == radio::Link::downlink;
+  const std::optional<radio::Hz> accepted = down ? s.downlink_hz : s.uplink_hz;
+  const char* state = !sent ? "idle"
+                      : s.fault ? "fault"
+                      : !s.connected ? "not connected"
+                      : accepted != sent ? "not confirmed"
+                                         : "confirmed";
+  return {{"state", state},
+          {"sent_hz", hz_or_null(sent)},
+          {"read_hz", hz_or_null(down ? s.downlink_read_hz : s.uplink_read_hz)},
+          {"message", s.fault ? s.message : std::string()}};
+}
+
+// The radio's links, each from the radio that serves it (two radios: menu 6-7's U), and the
+// dial-follow correction (the RIT) kept for the satellite and mode. Additive to the document.
+void add_links(StationApp& app, const radio::RadioStatus& both, nlohmann::json& out) {
+  radio::RadioDriver& r = app.station().radio();
+  const radio::Tuner& t = app.station().tuner();
+  radio::RadioStatus down = both, up = both;
+  if (auto* two = dynamic_cast<radio::TwoRadios*>(&r)) {
+    down = two->downlink_radio().status();
+    up = two->uplink_radio().status();
+    if (t.reversed()) std::swap(down, up);
+  }
+  out["links"] = {{"downlink", link_json(down, radio::Link::downlink, t.last_sent_downlink_hz())},
+                  {"uplink", link_json(up, radio::Link::uplink, t.last_sent_uplink_hz())}};
+  out["correction"] = {{"key", t.correction_key().empty() ? nlohmann::json(nullptr) : nlohmann::json(t.correction_key())},
+                       {"hz", t.rit_hz()},
+                       {"remembered", t.correction_remembered()},
+                       {"dial_follow", t.dial_follow_active()}};
+}
+
 nlohmann::json radio_json(StationApp& app) {
   radio::RadioDriver& r = app.station().radio();
   const radio::RadioStatus s = r.status();
-  return {{"radio", r.describe()},
+  nlohmann::json j = {{"radio", r.describe()},
           {"connected", s.connected},
           {"fault", s.fault},
           {"message", s.message},
@@ -94,6 +131,8 @@ nlohmann::json radio_json(StationApp& app) {
           {"failures", s.failures},
           {"connects", s.connects},
           {"pending", s.pending}};
+  add_links(app, s, j);
+  return j;
 }
 
 // The tracking list: each satellite now, its element age and its next pass (the tracker's search).

@@ -462,6 +462,28 @@ std::optional<std::string> start_web(StationApp& app, const TrackerConfig& c, Se
   return std::nullopt;
 }
 
+// --udp-events: the destinations stored (as the command line just set them, or as last given). One
+// named on this command line that cannot be resolved stops the start (nothing is saved before); a
+// stored one that cannot (a name while the network is down) is warned about and the station runs
+// without them, so a service is not kept down by its logger.
+std::optional<std::string> open_udp_events(StationApp& app, const TrackerConfig& c, spdlog::logger& log,
+                                           std::unique_ptr<UdpEvents>& udp) {
+  std::vector<UdpTarget> targets;
+  for (const std::string& text : app.model().udp_events) {
+    std::string why;
+    if (auto t = inet::parse_host_port(text, why)) targets.push_back(std::move(*t));
+  }
+  if (targets.empty()) return std::nullopt;
+  try {
+    udp = std::make_unique<UdpEvents>(app.io(), targets, log);
+  } catch (const std::exception& e) {
+    if (c.udp_events) return std::string(e.what());
+    log.warn("{} (stored; events go to no other computer: --udp-events none forgets them)", e.what());
+    if (!c.service) std::fprintf(stderr, "trakbox: WARNING: %s (stored)\n", e.what());
+  }
+  return std::nullopt;
+}
+
 // What the command line sets over the stored state: --cross-limit-sector, the drivers
 // (stored_drivers.h; what that says goes to the log and where the operator sees it) and the GPS.
 std::optional<std::string> apply_command_line(TrackerConfig& c, Startup& startup, spdlog::logger& log) {
@@ -482,6 +504,10 @@ std::optional<std::string> apply_command_line(TrackerConfig& c, Startup& startup
     else startup.drivers_said.push_back(line);
   }
   if (c.gps_source) startup.model.gps.source = *c.gps_source;
+  if (c.udp_events) {
+    startup.model.udp_events.clear();
+    for (const UdpTarget& t : *c.udp_events) startup.model.udp_events.push_back(inet::host_port_text(t));
+  }
   if (c.gps_follow) startup.model.gps.follow = *c.gps_follow;
   if (c.gps_threshold_m) startup.model.gps.threshold_m = *c.gps_threshold_m;
   return std::nullopt;
@@ -559,11 +585,7 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   }
   EventHooks hooks(app.io(), c.hooks, std::chrono::seconds(c.hook_timeout_s), *log);
   std::unique_ptr<UdpEvents> udp;
-  try {
-    if (!c.udp_events.empty()) udp = std::make_unique<UdpEvents>(app.io(), c.udp_events, *log);
-  } catch (const std::exception& e) {
-    return usage_error(e.what());
-  }
+  if (auto err = open_udp_events(app, c, *log, udp)) return usage_error(*err);
   app.set_events(
       [&](const tracker::Event& e) {
         const nlohmann::json j = tracker::to_json(e);

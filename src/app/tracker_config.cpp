@@ -8,6 +8,7 @@
 #include "gps/gpsd_client.h"
 #include "station/clock.h"
 #include "menus/term/line_terminal.h"
+#include "store/model.h"
 #include "store/refresh.h"
 #include "store/state_file.h"
 #include "util/secret.h"
@@ -84,7 +85,8 @@ std::vector<OptionSpec> tracker_option_specs() {
                                      "elements, link-lost, link-back, save-failed; the event is in its environment "
                                      "(TRAKBOX_EVENT, TRAKBOX_SATELLITE, TRAKBOX_AOS, ...; docs/service.md)", true},
       {"udp-events", "HOST:PORT", "send each event as one JSON datagram (the fields of trakbox events) to HOST:PORT, "
-                                  "e.g. 192.168.1.20:9000 (repeatable)", true},
+                                  "e.g. 192.168.1.20:9000 (repeatable; stored, so later starts send there too; none: "
+                                  "no more)", true},
       {"hook-timeout", "S", "seconds an --on-event command may run before it is killed, 1 to 3600 (default 60)"},
       {"event-lead", "S", "the AOS event comes S seconds before AOS, 0 to 3600 (default 0)"},
       {"gps", "SPEC", "a GPS receiver through gpsd: gpsd (localhost:2947), gpsd:HOST or gpsd:HOST:PORT; none: no "
@@ -271,6 +273,26 @@ void check_front_end(const ParsedOptions& o, OptionReader& r, FrontEnd front_end
     r.fail(o.has("tty") ? "--tty" : "--standalone", "not with trakbox host (host mode talks on stdin/stdout)");
 }
 
+// --udp-events: every destination checked before any is kept; "none" alone clears the stored ones.
+void read_udp_events(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
+  const std::vector<std::string> given = o.values("udp-events");
+  if (given.empty()) return;
+  std::vector<UdpTarget> targets;
+  for (const std::string& u : given) {
+    std::string why;
+    if (u == "none") {
+      if (given.size() > 1) return r.fail("--udp-events", "'none' clears the destinations: not with others");
+    } else if (auto t = parse_udp_target(u, why)) {
+      targets.push_back(std::move(*t));
+    } else {
+      return r.fail("--udp-events", why);
+    }
+  }
+  if (targets.size() > store::kMaxUdpEvents)
+    return r.fail("--udp-events", "at most " + std::to_string(store::kMaxUdpEvents) + " destinations");
+  c.udp_events = std::move(targets);
+}
+
 }  // namespace
 
 ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEnd front_end) {
@@ -343,11 +365,7 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
     if (auto hook = parse_event_hook(h, why)) c.hooks.push_back(std::move(*hook));
     else r.fail("--on-event", why);
   }
-  for (const std::string& u : o.values("udp-events")) {
-    std::string why;
-    if (auto t = parse_udp_target(u, why)) c.udp_events.push_back(std::move(*t));
-    else r.fail("--udp-events", why);
-  }
+  read_udp_events(o, r, c);
   if (const auto v = r.integer("hook-timeout", false, "seconds, 1 to 3600", Range{1, 3600}))
     c.hook_timeout_s = static_cast<int>(*v);
   if (const auto v = r.integer("event-lead", false, "seconds, 0 to 3600", Range{0, 3600}))

@@ -87,7 +87,9 @@ struct TrackerConfig {
   std::string socket;
   // --on-event hooks, their time limit (--hook-timeout) and the AOS event's lead (--event-lead).
   std::vector<EventHook> hooks;
-  std::vector<UdpTarget> udp_events;  // --udp-events HOST:PORT
+  // --udp-events HOST:PORT (repeatable; stored): nullopt keeps the stored destinations, an empty
+  // list (--udp-events none) clears them.
+  std::optional<std::vector<UdpTarget>> udp_events;
   int hook_timeout_s = 60;
   int event_lead_s = 0;
   // --gps gpsd[:HOST[:PORT]] (canonical "gpsd:HOST:PORT") or none (""), --gps-follow, --gps-threshold:

@@ -6,36 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
-#include "util/text.h"
 
 namespace tb::app {
-
-std::optional<UdpTarget> parse_udp_target(const std::string& text, std::string& error) {
-  std::string host, port;
-  if (!text.empty() && text.front() == '[') {
-    const auto end = text.find("]:");
-    if (end == std::string::npos) {
-      error = "'" + text + "': expected [IPV6]:PORT";
-      return std::nullopt;
-    }
-    host = text.substr(1, end - 1);
-    port = text.substr(end + 2);
-  } else {
-    const auto colon = text.rfind(':');
-    if (colon == std::string::npos || text.find(':') != colon) {
-      error = "'" + text + "': expected HOST:PORT, e.g. 192.168.1.20:9000 or [2001:db8::2]:9000";
-      return std::nullopt;
-    }
-    host = text.substr(0, colon);
-    port = text.substr(colon + 1);
-  }
-  const auto p = text::parse_double(port);
-  if (host.empty() || !p || *p < 1 || *p > 65535 || *p != static_cast<int>(*p)) {
-    error = "'" + text + "': expected HOST:PORT with a port 1 to 65535";
-    return std::nullopt;
-  }
-  return UdpTarget{host, static_cast<std::uint16_t>(*p)};
-}
 
 struct UdpEvents::Impl {
   Impl(boost::asio::io_context& io, spdlog::logger& log) : v4(io), v6(io), log(log) {}

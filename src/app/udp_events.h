@@ -10,6 +10,8 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "util/host_port.h"
+
 namespace boost::asio {
 class io_context;
 }
@@ -19,12 +21,11 @@ class logger;
 
 namespace tb::app {
 
-struct UdpTarget {
-  std::string host;  // a name or an address (IPv6 without its brackets)
-  std::uint16_t port = 0;
-};
-// "HOST:PORT" or "[IPV6]:PORT"; nullopt with the reason otherwise.
-std::optional<UdpTarget> parse_udp_target(const std::string& text, std::string& error);
+using UdpTarget = inet::HostPort;
+// "HOST:PORT" or "[IPV6]:PORT"; nullopt with the reason otherwise (util/host_port.h).
+inline std::optional<UdpTarget> parse_udp_target(const std::string& text, std::string& error) {
+  return inet::parse_host_port(text, error);
+}
 
 class UdpEvents {
  public:

@@ -9,6 +9,7 @@
 #include "gps/gpsd_client.h"
 #include "radio/factory.h"
 #include "store/json_fields.h"
+#include "util/host_port.h"
 #include "util/safe_text.h"
 
 namespace tb::store {
@@ -292,6 +293,7 @@ json to_json(const Model& m) {
               {"threshold_m", m.gps.threshold_m},
               {"position_from_gps", m.gps.position_from_gps},
               {"position_time_us", m.gps.position_time ? json(m.gps.position_time->time_since_epoch().count()) : json()}};
+  j["udp_events"] = m.udp_events;
   return j;
 }
 
@@ -472,6 +474,21 @@ station::GpsSettings gps_from(const json& g) {
   return s;
 }
 
+std::vector<std::string> udp_events_from(const json& u) {
+  if (!u.is_array()) bad("udp_events", "expected a list of HOST:PORT");
+  if (u.size() > kMaxUdpEvents) bad("udp_events", "more than " + std::to_string(kMaxUdpEvents) + " destinations");
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < u.size(); ++i) {
+    const std::string w = "udp_events[" + std::to_string(i) + "]";
+    if (!u[i].is_string()) bad(w, "expected HOST:PORT");
+    std::string why;
+    const auto t = inet::parse_host_port(u[i].get<std::string>(), why);
+    if (!t) bad(w, why);
+    out.push_back(inet::host_port_text(*t));
+  }
+  return out;
+}
+
 }  // namespace
 
 Model model_from_json(const json& j) {
@@ -505,6 +522,8 @@ Model model_from_json(const json& j) {
   }
   // Absent in state files written before the GPS receiver existed.
   if (j.contains("gps")) m.gps = gps_from(j["gps"]);
+  // Absent in state files written before --udp-events was stored.
+  if (j.contains("udp_events")) m.udp_events = udp_events_from(j["udp_events"]);
   return m;
 }
 

@@ -4,7 +4,9 @@
 #pragma once
 #include <array>
 #include <chrono>
+#include <cstddef>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -59,7 +61,11 @@ struct Model {
   std::string rotator_driver;
   std::string radio_driver;
   station::GpsSettings gps;                   // --gps, menu 4: the receiver and the position's origin
+  // --udp-events as last given: "HOST:PORT" or "[IPV6]:PORT" each (util/host_port.h), at most
+  // kMaxUdpEvents; --udp-events none empties it.
+  std::vector<std::string> udp_events;
 };
+inline constexpr std::size_t kMaxUdpEvents = 16;
 
 // The factory defaults (menu 6-9 without a station file), with the shipped database when given.
 Model factory_defaults();

@@ -12,6 +12,7 @@
 #include "store/model.h"
 #include "tracker/operations.h"
 #include "tracker/station_loop.h"
+#include "util/cidr.h"
 #include "util/json_limits.h"
 #include "util/text.h"
 #include "web/page.h"
@@ -131,6 +132,15 @@ Response Api::handle(const Request& r, std::chrono::steady_clock::time_point now
   }
 }
 
+// The session cookie's attributes. Secure when the browser reached the page over HTTPS: trakbox
+// speaks plain HTTP, so that is only known from a TLS proxy in front (docs/security.md), and its
+// X-Forwarded-Proto is believed only from a loopback peer; a client elsewhere could send the header
+// itself, and a cookie marked Secure over plain HTTP would just be dropped by the browser.
+static std::string cookie_attributes(const Request& r) {
+  const bool https = inet::is_loopback(r.peer) && text::trim(r.forwarded_proto, text::kWhitespace) == "https";
+  return std::string("; Path=/; HttpOnly; SameSite=Strict") + (https ? "; Secure" : "");
+}
+
 Response Api::login(const Request& r, std::chrono::steady_clock::time_point now) {
   if (!r.origin.empty() && !Access::origin_matches(r.origin, r.host))
     return error(403, "a login must come from the login page itself (Origin)");
@@ -142,7 +152,7 @@ Response Api::login(const Request& r, std::chrono::steady_clock::time_point now)
   if (!token) return redirect(wait > 0 ? "/login#wait" : "/login#wrong");
   Response res = redirect("/");
   res.headers.emplace_back("Set-Cookie",
-                           std::string(kSessionCookie) + "=" + *token + "; Path=/; HttpOnly; SameSite=Strict");
+                           std::string(kSessionCookie) + "=" + *token + cookie_attributes(r));
   return res;
 }
 
@@ -185,7 +195,7 @@ Response Api::route(const Request& r, const Grant& g) {
   if (path == "/logout") {
     access_.logout(r.cookie);
     Response res = redirect("/login");
-    res.headers.emplace_back("Set-Cookie", std::string(kSessionCookie) + "=; Path=/; HttpOnly; SameSite=Strict; Max-Age=0");
+    res.headers.emplace_back("Set-Cookie", std::string(kSessionCookie) + "=" + cookie_attributes(r) + "; Max-Age=0");
     return res;
   }
   if (path.rfind("/api/v1/", 0) != 0) return error(404, "no such endpoint: " + printable(path, 60));

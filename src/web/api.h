@@ -41,6 +41,7 @@ struct Request {
   std::string content_type;
   std::string body;
   std::string peer;           // the client's address ("127.0.0.1", "::1", ...)
+  std::string forwarded_proto;  // X-Forwarded-Proto: believed only from a loopback peer (a proxy)
 };
 
 struct Response {

@@ -55,6 +55,7 @@ Request to_request(const http::request<http::string_body>& req, const std::strin
   r.content_type = header(req, http::field::content_type);
   r.body = req.body();
   r.peer = peer;
+  if (const auto it = req.find("X-Forwarded-Proto"); it != req.end()) r.forwarded_proto = std::string(it->value());
   return r;
 }
 

@@ -78,8 +78,11 @@ class WebStation:
 class WebSocket:
     """A client of /api/v1/live: text frames only, masked as RFC 6455 asks."""
 
-    def __init__(self, port, origin=None, path="/api/v1/live", headers=None):
+    def __init__(self, port, origin=None, path="/api/v1/live", headers=None, tls=None):
+        """tls: an ssl.SSLContext to speak through (a TLS proxy in front, web_tls.py)."""
         self.sock = socket.create_connection(("127.0.0.1", port), timeout=15)
+        if tls is not None:
+            self.sock = tls.wrap_socket(self.sock, server_hostname="127.0.0.1")
         key = base64.b64encode(os.urandom(16)).decode()
         lines = [f"GET {path} HTTP/1.1", f"Host: 127.0.0.1:{port}", "Upgrade: websocket", "Connection: Upgrade",
                  f"Sec-WebSocket-Key: {key}", "Sec-WebSocket-Version: 13"]

@@ -1,7 +1,8 @@
 """--udp-events HOST:PORT on the real binary: the service sends each event as one JSON datagram with
 the fields of `trakbox events` (here the AOS and LOS of the ISS pass at 13:44-13:55 UTC over the
 factory station, on a clock ten times fast), to two listeners at once; a malformed destination is
-refused at start."""
+refused at start. The destinations are stored: a later start without the option sends there too, a
+refused one changes nothing stored, and `--udp-events none` forgets them."""
 import json
 import os
 import socket
@@ -11,7 +12,7 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, check, run_test  # noqa: E402
+from _tbharness import BIN, check, load_state, run_test  # noqa: E402
 
 
 def listener():
@@ -51,9 +52,46 @@ def main():
     finally:
         p.terminate()
         p.wait(30)
+    path = os.path.join(state, "trakbox-state.json")
+    stored = [f"127.0.0.1:{a.getsockname()[1]}", f"localhost:{b.getsockname()[1]}"]
+    check(load_state(path).get("udp_events") == stored, f"stored: {load_state(path).get('udp_events')}")
     r = subprocess.run([BIN, "--service", "--state", state, "--satrak-port", "0", "--udp-events", "nohost"],
                        stdin=subprocess.DEVNULL, capture_output=True, text=True, timeout=20)
     check(r.returncode == 2 and "--udp-events: 'nohost': expected HOST:PORT" in r.stderr, f"refused: {r.stderr}")
+    r = subprocess.run([BIN, "--service", "--state", state, "--satrak-port", "0", "--udp-events", "127.0.0.1:9",
+                        "--udp-events", "no-such-host.invalid:9"],
+                       stdin=subprocess.DEVNULL, capture_output=True, text=True, timeout=60)
+    check(r.returncode == 2 and "no-such-host.invalid:9: cannot resolve" in r.stderr, f"unresolvable: {r.stderr}")
+    check(load_state(path).get("udp_events") == stored, "a refused start changes nothing stored")
+
+    # A later start without the option: the stored destinations get the events.
+    p = subprocess.Popen([BIN, "--service", "--state", state, "--satrak-port", "0", "--clock", "2026-05-21T13:44:20Z",
+                          "--clock-rate", "20"], stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
+                         stderr=subprocess.PIPE)
+    try:
+        seen = None
+        deadline = time.time() + 30
+        while time.time() < deadline and seen is None:
+            try:
+                e = json.loads(a.recv(65536))
+            except socket.timeout:
+                continue
+            if e.get("satellite") == "ISS" and e.get("event") == "aos":
+                seen = e
+        check(seen is not None, "the stored destination gets the AOS without --udp-events")
+    finally:
+        p.terminate()
+        p.wait(30)
+    r = subprocess.run([BIN, "--service", "--state", state, "--satrak-port", "0", "--udp-events", "none",
+                        "--udp-events", "127.0.0.1:9"], stdin=subprocess.DEVNULL, capture_output=True, text=True,
+                       timeout=20)
+    check(r.returncode == 2 and "'none' clears the destinations: not with others" in r.stderr, f"none+: {r.stderr}")
+    p = subprocess.Popen([BIN, "--service", "--state", state, "--satrak-port", "0", "--udp-events", "none"],
+                         stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    time.sleep(2)
+    p.terminate()
+    check(p.wait(30) == 0, "the service with --udp-events none stops cleanly")
+    check(load_state(path).get("udp_events") == [], f"forgotten: {load_state(path).get('udp_events')}")
 
 
 run_test(main)

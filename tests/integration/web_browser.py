@@ -80,6 +80,29 @@ def check_marker(d):
     print(f"marker ({cx:.2f}, {cy:.2f}) vs Skyfield ({x:.2f}, {y:.2f}) at {when}")
 
 
+def radio_expected(r):
+    """The radio panel's link and correction lines as the page words them from `status --json`."""
+    def link(l):
+        return l["state"] + (": " + l["message"] if l["message"] else "")
+    c = r["correction"]
+    corr = ("+" if c["hz"] > 0 else "") + f"{c['hz']} Hz" + \
+        (f" ({c['key']}" + (", kept" if c["remembered"] else "") + ")" if c["key"] else "") + \
+        (", dial follow" if c["dial_follow"] else "")
+    return link(r["links"]["downlink"]), link(r["links"]["uplink"]), corr
+
+
+def check_radio(d, w):
+    """Each link's state and the correction kept for the satellite: on the page as in status (a tick)."""
+    def same():
+        want = radio_expected(w.status()["radios"][0])
+        return (text(d, "link-down"), text(d, "link-up"), text(d, "radio-corr")) == want and want
+    want = poll("the radio panel equal to status --json", same, 10)
+    check(want[0] in ("idle", "not confirmed", "confirmed") and want[1] in ("idle", "not confirmed", "confirmed"),
+          f"the simulated radio's links: {want}")
+    check(want[2].endswith("(ISS FM)") or want[2].endswith("(ISS FM, kept)") or want[2] == "0 Hz",
+          f"the correction for ISS: {want}")
+
+
 def phone(w, url):
     d = browser(390, 844)
     try:
@@ -97,6 +120,7 @@ def phone(w, url):
         d.find_element("id", "btn-rotor").click()
         poll("rotor control toggled in trakbox status", lambda: w.status()["antenna"]["rotor_control"] != rotor_was, 10)
         poll("the sky plot follows ISS", lambda: text(d, "sat-name") == "ISS", 10)
+        check_radio(d, w)
         time.sleep(1.5)  # a tick or two: the marker drawn from the tracker's state
         check_marker(d)
         # The page updates: the clock it shows moves on.
@@ -127,6 +151,9 @@ def desktop(url):
         errors = console_errors(d)
         check(not errors, f"no console errors: {errors}")
         no_horizontal_scroll(d, "desktop 1280x800")
+        shot = os.environ.get("TRAKBOX_SCREENSHOT_DESKTOP")
+        if shot:
+            d.save_screenshot(shot)
     finally:
         d.quit()
 

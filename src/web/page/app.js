@@ -58,12 +58,20 @@ function drawSky(sky) {
     else { if (run.length > 1) lost.appendChild(el("polyline", { points: points(run) })); run = []; }
   });
   if (run.length > 1) lost.appendChild(el("polyline", { points: points(run) }));
-  for (const [name, t, az, e] of [["AOS", p.aos, p.aos_az_deg, 0], ["TCA", p.tca, p.tca_az_deg, p.max_el_deg],
-                                  ["LOS", p.los, p.los_az_deg, 0]]) {
+  // AOS and LOS at the ends of the track drawn (a pass up when tracking began starts where it was);
+  // a label that would sit on another's moves down a line (20 px text in the 640 viewBox).
+  const first = p.track[0], last = p.track[p.track.length - 1];
+  const placed = [];
+  for (const [name, t, az, e] of [["AOS", p.aos, first ? first[0] : p.aos_az_deg, first ? first[1] : 0],
+                                  ["TCA", p.tca, p.tca_az_deg, p.max_el_deg],
+                                  ["LOS", p.los, last ? last[0] : p.los_az_deg, last ? last[1] : 0]]) {
     const [x, y] = xy(az, e);
     marks.appendChild(el("circle", { cx: x, cy: y, r: 5 }));
-    marks.appendChild(el("text", { x: x + (x > C ? -10 : 10), y: y + (y > C ? 22 : -10),
-                                   "text-anchor": x > C ? "end" : "start" }, name + " " + hhmm(t)));
+    const lx = x + (x > C ? -10 : 10);
+    let ly = y + (y > C ? 22 : -10);
+    for (let hit; (hit = placed.find(([px, py]) => Math.abs(px - lx) < 150 && Math.abs(py - ly) < 22));) ly = hit[1] + 22;
+    placed.push([lx, ly]);
+    marks.appendChild(el("text", { x: lx, y: ly, "text-anchor": x > C ? "end" : "start" }, name + " " + hhmm(t)));
   }
 }
 
@@ -121,6 +129,13 @@ function drawStatus(st) {
   $("radio-down").textContent = mhz(r.downlink_hz) + (r.downlink_mode ? " " + r.downlink_mode : "");
   $("radio-up").textContent = mhz(r.uplink_hz) + (r.uplink_mode ? " " + r.uplink_mode : "");
   $("radio-state").textContent = r.fault ? "fault: " + r.message : (r.radio || "-") + (r.connected ? ", connected" : "");
+  const lk = r.links || {};
+  const linkText = (l) => !l ? "-" : l.state + (l.message ? ": " + l.message : "");
+  $("link-down").textContent = linkText(lk.downlink);
+  $("link-up").textContent = linkText(lk.uplink);
+  const c = r.correction;
+  $("radio-corr").textContent = !c ? "-" : (c.hz > 0 ? "+" : "") + c.hz + " Hz" +
+    (c.key ? " (" + c.key + (c.remembered ? ", kept" : "") + ")" : "") + (c.dial_follow ? ", dial follow" : "");
   doppler = st.doppler !== false;
   $("doppler").textContent = doppler ? "on" : "off";
   $("btn-doppler").textContent = doppler ? "Doppler off" : "Doppler on";

@@ -133,3 +133,27 @@ TEST_CASE("trakbox host serves no port unless one is asked for (issue 39)") {
 TEST_CASE("--rotater: did you mean --rotator (issue 39)") {
   CHECK(error_of({"--rotater", "simulated"}) == "--rotater: unknown option; did you mean --rotator?");
 }
+
+TEST_CASE("--udp-events: stored destinations kept, replaced, or cleared by none; all checked first") {
+  CHECK_FALSE(parse({"--state", "/tmp/x"}).config->udp_events.has_value());  // the stored ones stay
+  const auto two = parse({"--udp-events", "192.168.1.20:9000", "--udp-events", "[2001:db8::2]:9001"});
+  REQUIRE(two.config);
+  REQUIRE(two.config->udp_events.has_value());
+  CHECK(*two.config->udp_events ==
+        std::vector<UdpTarget>{{"192.168.1.20", 9000}, {"2001:db8::2", 9001}});
+  const auto none = parse({"--udp-events", "none"});
+  REQUIRE(none.config);
+  REQUIRE(none.config->udp_events.has_value());
+  CHECK(none.config->udp_events->empty());
+  // A bad one among good ones: nothing is configured, so nothing can be stored.
+  CHECK(error_of({"--udp-events", "10.0.0.1:9000", "--udp-events", "nohost"}) ==
+        "--udp-events: 'nohost': expected HOST:PORT, e.g. 192.168.1.20:9000 or [2001:db8::2]:9000");
+  CHECK(error_of({"--udp-events", "none", "--udp-events", "10.0.0.1:9000"}) ==
+        "--udp-events: 'none' clears the destinations: not with others");
+  std::vector<std::string> many;
+  for (int i = 1; i <= 17; ++i) {
+    many.push_back("--udp-events");
+    many.push_back("10.0.0.1:" + std::to_string(9000 + i));
+  }
+  CHECK(error_of(many) == "--udp-events: at most 16 destinations");
+}

@@ -136,3 +136,24 @@ TEST_CASE("the tracking choice and --event-min-el round-trip; a bad mode is refu
   CHECK(model_from_json(j).tracking == tb::store::TrackingChoice{});
   CHECK(model_from_json(j).event_min_el_deg == 0.0);
 }
+
+TEST_CASE("the --udp-events destinations round-trip in their one written form; bad ones name their entry") {
+  Model m = factory_defaults();
+  CHECK(to_json(m)["udp_events"] == json::array());
+  m.udp_events = {"192.168.1.20:9000", "[2001:db8::2]:9001", "logger.local:1"};
+  json j = to_json(m);
+  CHECK(j["udp_events"] == json({"192.168.1.20:9000", "[2001:db8::2]:9001", "logger.local:1"}));
+  CHECK(model_from_json(j).udp_events == m.udp_events);
+  j["udp_events"][1] = "2001:db8::2:9001";
+  CHECK_THROWS_WITH_AS(model_from_json(j),
+                       "udp_events[1]: '2001:db8::2:9001': expected HOST:PORT, e.g. 192.168.1.20:9000 or "
+                       "[2001:db8::2]:9000",
+                       std::runtime_error);
+  j["udp_events"] = "192.168.1.20:9000";
+  CHECK_THROWS_WITH_AS(model_from_json(j), "udp_events: expected a list of HOST:PORT", std::runtime_error);
+  j["udp_events"] = json::array();
+  for (int i = 0; i < 17; ++i) j["udp_events"].push_back("10.0.0.1:" + std::to_string(9000 + i));
+  CHECK_THROWS_WITH_AS(model_from_json(j), "udp_events: more than 16 destinations", std::runtime_error);
+  j.erase("udp_events");  // a state file from before they were stored
+  CHECK(model_from_json(j).udp_events.empty());
+}

@@ -189,6 +189,7 @@ TEST_CASE("web: with a secret, changes need the bearer or a session with the pag
   CHECK(set_cookie.find("HttpOnly") != std::string::npos);
   CHECK(set_cookie.find("SameSite=Strict") != std::string::npos);
   CHECK(set_cookie.find("correct") == std::string::npos);
+  CHECK(set_cookie.find("Secure") == std::string::npos);  // plain HTTP: a Secure cookie would be dropped
   w.cookie = set_cookie.substr(0, set_cookie.find(';'));
   // The session from another site (no Origin, or another one) changes nothing.
   CHECK(w.post("/api/v1/rotor", R"({"control":false})").status == 403);
@@ -225,4 +226,36 @@ TEST_CASE("web: the sky of a followed pass: the satellite now, the track from AO
   CHECK(sky["antenna"].is_array());
   // Slewing from where it was to the pass: the word says so.
   CHECK(sky["antenna_state"] == "moving");
+}
+
+TEST_CASE("the session cookie is Secure behind a TLS proxy on loopback, and only there") {
+  web::AccessOptions o;
+  o.secret = "correct horse battery staple";
+  o.loopback_only = false;
+  Web w(o);
+  auto login = [&](const std::string& peer, const std::string& proto) {
+    w.t += std::chrono::seconds(5);  // past the guessing throttle
+    web::Request r;
+    r.method = "POST";
+    r.target = "/login";
+    r.host = "127.0.0.1:8073";
+    r.origin = "https://127.0.0.1:8073";
+    r.content_type = "application/x-www-form-urlencoded";
+    r.body = "secret=correct+horse+battery+staple";
+    r.peer = peer;
+    r.forwarded_proto = proto;
+    const web::Response res = w.api->handle(r, w.t);
+    for (const auto& [k, v] : res.headers)
+      if (k == "Set-Cookie") return v;
+    return std::string();
+  };
+  const std::string proxied = login("127.0.0.1", "https");
+  CHECK(proxied.find("; HttpOnly; SameSite=Strict; Secure") != std::string::npos);
+  CHECK(login("::1", "https").find("; Secure") != std::string::npos);
+  CHECK(login("127.0.0.1", "http").find("Secure") == std::string::npos);
+  CHECK(login("127.0.0.1", "").find("Secure") == std::string::npos);
+  // From elsewhere the header is the client's own word: not believed.
+  const std::string direct = login("192.0.2.7", "https");
+  CHECK(direct.find("HttpOnly") != std::string::npos);
+  CHECK(direct.find("Secure") == std::string::npos);
 }
