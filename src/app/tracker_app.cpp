@@ -180,6 +180,9 @@ struct Servers {
   std::unique_ptr<web::Api> web_api;
   std::unique_ptr<web::Server> web;
   std::string web_url;
+  // The one budget of wrong secrets for every endpoint (netctl/guesses.h): a budget per port
+  // multiplied it. Made by start_netctl, shared by the web endpoint.
+  std::shared_ptr<netctl::GuessGuard> guesses;
 
   // Closed before the last save; the Satrak unit after it (its settings are saved with the model).
   void close_listeners() {
@@ -223,7 +226,8 @@ std::optional<std::string> start_netctl(StationApp& app, const TrackerConfig& c,
   // One guessing budget for every endpoint (netctl/guesses.h): a budget per port multiplied it.
   netctl::GuessPolicy policy;
   policy.exempt = c.guess_exempt;
-  auto guard = std::make_shared<netctl::GuessGuard>(policy);
+  out.guesses = std::make_shared<netctl::GuessGuard>(policy);
+  auto guard = out.guesses;
   auto opts = [&c, guard](netctl::ServerOptions so, const std::string& secret) {
     so.address = c.listen;
     so.allow = c.allow;
@@ -433,7 +437,7 @@ std::optional<std::string> start_web(StationApp& app, const TrackerConfig& c, Se
   ao.secret = c.http_secret;
   ao.public_view = c.http_public_view;
   ao.loopback_only = inet::is_loopback(c.listen);
-  out.web_access = std::make_unique<web::Access>(ao);
+  out.web_access = std::make_unique<web::Access>(ao, out.guesses);
   web::ApiHooks hooks;
   hooks.status = [&app, &c, &out, attach] {
     StatusContext cx{kVersion, c.state_dir.string(), {}, {}, c.service, [&out] { return servers_json(out); }};

@@ -94,19 +94,19 @@ Grant Access::grant(const std::string& peer, const std::string& host, const std:
       g.status_not_change = 401;
       return g;
     }
-    if (guesses_.free_at(peer, now) > now || guesses_.locked_until(peer, now) > now) {
+    if (guesses_->free_at(peer, now) > now || guesses_->locked_until(peer, now) > now) {
       g.why_not_change = "too many wrong secrets from this address: wait and try again";
       g.status_not_change = 429;
       return g;
     }
     bearer = secret::equal(text::trim(std::string_view(auth).substr(7), text::kWhitespace), o_.secret);
     if (!bearer) {
-      guesses_.wrong(peer, now);
+      guesses_->wrong(peer, now, "web");
       g.why_not_change = "wrong secret";
       g.status_not_change = 401;
       return g;
     }
-    guesses_.right(peer);
+    guesses_->right(peer);
   }
   const bool session = !bearer && valid_session(session_of(cookie), now);
   g.view = bearer || session || o_.public_view;
@@ -127,16 +127,16 @@ Grant Access::grant(const std::string& peer, const std::string& host, const std:
 std::optional<std::string> Access::login(const std::string& peer, const std::string& given, Clock::time_point now,
                                          int& retry_after_s) {
   retry_after_s = 0;
-  const auto free = std::max(guesses_.free_at(peer, now), guesses_.locked_until(peer, now));
+  const auto free = std::max(guesses_->free_at(peer, now), guesses_->locked_until(peer, now));
   if (free > now) {
     retry_after_s = static_cast<int>(std::chrono::ceil<std::chrono::seconds>(free - now).count());
     return std::nullopt;
   }
   if (o_.secret.empty() || !secret::equal(given, o_.secret)) {
-    guesses_.wrong(peer, now);
+    guesses_->wrong(peer, now, "web");
     return std::nullopt;
   }
-  guesses_.right(peer);
+  guesses_->right(peer);
   if (sessions_.size() >= o_.max_sessions) {
     auto oldest = sessions_.begin();
     for (auto it = sessions_.begin(); it != sessions_.end(); ++it)

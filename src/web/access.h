@@ -8,12 +8,13 @@
 //    otherwise). A change needs a session (cookie from the login page, HttpOnly, SameSite=Strict)
 //    with a matching Origin, or `Authorization: Bearer SECRET`. Viewing needs the same unless
 //    --http-public-view.
-//  - Wrong secrets are slowed and locked out per address by netctl::GuessGuard, as on the other
-//    ports.
+//  - Wrong secrets are slowed and locked out per address (an IPv6 /64 as one) by netctl::GuessGuard:
+//    the process's one budget, shared with the other ports (issue 38), when the caller passes it.
 #pragma once
 #include <chrono>
 #include <cstddef>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -41,7 +42,10 @@ struct Grant {
 class Access {
  public:
   using Clock = std::chrono::steady_clock;
-  explicit Access(AccessOptions o) : o_(std::move(o)) {}
+  // `guesses`: the budget of wrong secrets shared by every endpoint of the process; one of its own
+  // when none is given (the unit tests, the fuzz target).
+  explicit Access(AccessOptions o, std::shared_ptr<netctl::GuessGuard> guesses = nullptr)
+      : o_(std::move(o)), guesses_(guesses ? std::move(guesses) : std::make_shared<netctl::GuessGuard>()) {}
 
   // Host, Origin, Cookie and Authorization headers as sent; `state_changing`: a POST.
   Grant grant(const std::string& peer, const std::string& host, const std::string& origin, const std::string& cookie,
@@ -63,7 +67,7 @@ class Access {
  private:
   bool valid_session(const std::string& token, Clock::time_point now);
   AccessOptions o_;
-  netctl::GuessGuard guesses_;
+  std::shared_ptr<netctl::GuessGuard> guesses_;
   std::map<std::string, Clock::time_point> sessions_;  // token -> expiry
 };
 

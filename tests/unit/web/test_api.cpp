@@ -17,7 +17,8 @@ using json = nlohmann::json;
 namespace {
 
 struct Web : testing::StationFixture {
-  explicit Web(web::AccessOptions o = {}) : access(o) {
+  explicit Web(web::AccessOptions o = {}, std::shared_ptr<netctl::GuessGuard> guesses = nullptr)
+      : access(o, std::move(guesses)) {
     build_station();
     web::ApiHooks hooks;
     hooks.status = [] { return json{{"running", true}}; };
@@ -197,6 +198,28 @@ TEST_CASE("web: with a secret, changes need the bearer or a session with the pag
   CHECK(w.model.rotor_control);
   CHECK(w.post("/api/v1/rotor", R"({"control":false})", "http://127.0.0.1:8073").status == 200);
   CHECK_FALSE(w.model.rotor_control);
+}
+
+TEST_CASE("web: wrong secrets share the process's one budget with the other ports, an IPv6 /64 as one") {
+  // Issue 38: one GuessGuard for every endpoint. Wrong secrets given to rotctld from 2001:db8:1::1
+  // make a bearer from 2001:db8:1::2 (the same /64) wait on the web endpoint, and the web's own
+  // wrong secret is counted in the same budget, under its name.
+  auto guard = std::make_shared<netctl::GuessGuard>();
+  web::AccessOptions o;
+  o.secret = "correct horse battery staple";
+  o.loopback_only = false;
+  Web w(o, guard);
+  const auto now = w.t;
+  CHECK_FALSE(guard->wrong("2001:db8:1::1", now, "rotctld"));
+  w.peer = "2001:db8:1::2";
+  w.authorization = "Bearer correct horse battery staple";
+  CHECK(w.post("/api/v1/rotor", R"({"control":true})").status == 429);
+  CHECK_FALSE(w.model.rotor_control);
+  w.t += std::chrono::seconds(1);  // the 0.5 s the first wrong secret earned has passed
+  w.authorization = "Bearer wrong";
+  CHECK(w.post("/api/v1/rotor", R"({"control":true})").status == 401);
+  CHECK(guard->failures("2001:db8:1::99") == 2);
+  CHECK(guard->failures("2001:db8:2::1") == 0);
 }
 
 TEST_CASE("web: the sky of a followed pass: the satellite now, the track from AOS to LOS, the plan") {
