@@ -23,7 +23,7 @@ from _tbharness import check, run_test, skip  # noqa: E402
 def rs44(rig, tb, state, clock_now):
     tuned("RS-44", lambda: rig.get("rx"), lambda: rig.get("tx"), ("SAT RX", "SAT TX"))
     first = rig.sent()[:2]
-    check(first == ["00 00 00 00 00", "00 00 00 00 4E"], f"CAT on, then satellite mode, first: {first}")
+    check(first == ["00 00 00 00 00", "00 00 00 00 4E"], f"CAT on, then satellite mode, first: {rig.sent()[:8]}")
     check(rig.mode.get("rx") == 0x01 and rig.mode.get("tx") == 0x00, f"USB on SAT RX, LSB on SAT TX: {rig.mode}")
     on_doppler("RS-44", lambda: rig.get("rx"), lambda: rig.get("tx"), clock_now, 400)
 
