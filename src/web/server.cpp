@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
+#include "util/backoff.h"
 #include "util/keepalive.h"
 #include "web/api.h"
 
@@ -70,12 +71,14 @@ struct Conn {
 struct Viewer;
 
 struct Server::Impl : std::enable_shared_from_this<Impl> {
-  Impl(asio::io_context& io, Api& api, ServerOptions o) : io(io), api(api), o(std::move(o)), acceptor(io), timer(io) {}
+  Impl(asio::io_context& io, Api& api, ServerOptions o) : io(io), api(api), o(std::move(o)), acceptor(io), timer(io), retry(io) {}
   asio::io_context& io;
   Api& api;
   ServerOptions o;
   tcp::acceptor acceptor;
   asio::steady_timer timer;
+  asio::steady_timer retry;       // the next accept after a failed one (util/backoff.h)
+  util::AcceptBackoff backoff;
   bool closed = false;
   bool push_posted = false;
   std::map<std::string, std::size_t> per_address;
@@ -273,8 +276,22 @@ struct HttpSession : Conn, std::enable_shared_from_this<HttpSession> {
 
 void Server::Impl::accept() {
   acceptor.async_accept([self = shared_from_this()](boost::system::error_code ec, tcp::socket socket) {
-    if (self->closed) return;
-    if (!ec) {
+    if (self->closed || ec == asio::error::operation_aborted) return;
+    if (ec) {
+      // Out of descriptors and the like: the next accept after a back-off, never at once (issue 38:
+      // re-arming at once spun a core), said once a run.
+      if (self->backoff.failed())
+        spdlog::error("web: accept failed: {}; retrying every 100 ms to 1 s (said once until it works again)",
+                      ec.message());
+      self->retry.expires_after(self->backoff.delay());
+      self->retry.async_wait([w = self->weak_from_this()](boost::system::error_code e) {
+        if (auto me = w.lock(); me && !e && !me->closed) me->accept();
+      });
+      return;
+    }
+    if (const auto failed = self->backoff.succeeded())
+      spdlog::warn("web: accepting again after {} failed accepts", failed);
+    {
       const std::string peer = peer_of(socket);
       const auto it = self->per_address.find(peer);
       const std::size_t mine = it == self->per_address.end() ? 0 : it->second;
@@ -291,7 +308,7 @@ void Server::Impl::accept() {
         session->read();
       }
     }
-    if (ec != asio::error::operation_aborted) self->accept();
+    self->accept();
   });
 }
 
@@ -339,6 +356,7 @@ Server::~Server() {
   boost::system::error_code ec;
   impl_->acceptor.close(ec);
   impl_->timer.cancel();
+  impl_->retry.cancel();
   for (const auto& w : impl_->conns)
     if (const auto c = w.lock()) c->close();
 }
