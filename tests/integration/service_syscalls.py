@@ -81,6 +81,18 @@ def exercise(state, host_port, http_port):
     check(st.stdout.lstrip().startswith("{"), f"trakbox status answers: {st.stdout!r} {st.stderr!r}")
 
 
+def stop_group(proc):
+    """Kills strace AND the trakbox it traces. proc.kill() alone killed strace only: the tracee,
+    detached, lived on as an orphan retrying its CAT port (/dev/pts/N) every 5 s for ever, and
+    wrote FT-847 CAT-on / satellite-mode / frequency bytes into whichever later test's pty got that
+    number (integ_ft847_satellite's frames out of step, integ_link_faults' FA...; never seen)."""
+    try:
+        os.killpg(proc.pid, signal.SIGKILL)
+    except ProcessLookupError:
+        pass
+    proc.wait()
+
+
 def main():
     for tool in ("strace", "systemd-analyze", "socat"):
         if not shutil.which(tool):
@@ -98,7 +110,8 @@ def main():
          "--http-port", str(http_port), "--radio", f"ft847:{pair.trakbox_side}",
          "--elements-url", "file://" + os.path.join(SOURCE, "data", "amateur.tle"),
          "--on-event", f"echo \"$TRAKBOX_EVENT\" >> {hook_mark}"],
-        stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+        stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
+        start_new_session=True)   # strace and trakbox in a group of their own: killed together
     try:
         exercise(state, host_port, http_port)
         deadline = time.time() + 60
@@ -113,13 +126,11 @@ def main():
         try:
             proc.wait(60)
         except subprocess.TimeoutExpired:
-            proc.kill()
+            stop_group(proc)
             raise
         check(proc.returncode == 0, f"the service stops cleanly: {proc.returncode} {proc.stderr.read()}")
     finally:
-        if proc.poll() is None:
-            proc.kill()
-            proc.wait()
+        stop_group(proc)
         pair.close()
     made = syscalls_of(log)
     check(len(made) > 30, f"strace saw the service's calls: {sorted(made)}")
