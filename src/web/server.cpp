@@ -291,22 +291,20 @@ void Server::Impl::accept() {
     }
     if (const auto failed = self->backoff.succeeded())
       spdlog::warn("web: accepting again after {} failed accepts", failed);
-    {
-      const std::string peer = peer_of(socket);
-      const auto it = self->per_address.find(peer);
-      const std::size_t mine = it == self->per_address.end() ? 0 : it->second;
-      if (peer.empty() || !inet::allowed(self->o.allow, peer) || self->connections >= self->o.max_connections ||
-          mine >= self->o.per_address) {
-        ++self->stats.refused;
-        boost::system::error_code ignored;
-        socket.close(ignored);
-      } else {
-        inet::enable_keepalive(socket.native_handle());
-        auto slot = std::make_unique<Slot>(self, peer);
-        auto session = std::make_shared<HttpSession>(std::move(socket), self, std::move(slot));
-        self->track(session);
-        session->read();
-      }
+    const std::string peer = peer_of(socket);
+    const auto it = self->per_address.find(peer);
+    const std::size_t mine = it == self->per_address.end() ? 0 : it->second;
+    if (peer.empty() || !inet::allowed(self->o.allow, peer) || self->connections >= self->o.max_connections ||
+        mine >= self->o.per_address) {
+      ++self->stats.refused;
+      boost::system::error_code ignored;
+      socket.close(ignored);
+    } else {
+      inet::enable_keepalive(socket.native_handle());
+      auto slot = std::make_unique<Slot>(self, peer);
+      auto session = std::make_shared<HttpSession>(std::move(socket), self, std::move(slot));
+      self->track(session);
+      session->read();
     }
     self->accept();
   });
