@@ -156,6 +156,7 @@ void Tuner::pair_from(bool downlink) {
   if (downlink) {
     sat_.uplink_hz = t->uplink_for(sat_.downlink_hz);
     sent_up_.reset();   // the move goes out at once, whatever the Doppler step
+    moved_uplink_ = true;
   } else {
     sat_.downlink_hz = t->downlink_for(sat_.uplink_hz);
     sent_down_.reset();
@@ -238,12 +239,18 @@ TuneCommands Tuner::compute(double elevation_deg, double rr) {
   if (sat_.doppler == DopplerControl::cat) {
     const bool allowed = config_.cat_policy == CatPolicy::full_orbit || aos_now;
     if (!allowed) return cmd;
+    // While the knob rests (a turn seen, the other link not moved yet) neither link is written:
+    // the turned dial is the operator's, and the other link is about to go to the new pair. The
+    // line stays free to read the turned dial and to carry the move when the rest ends (on the
+    // FT-847's 50 ms a byte, a Doppler write in the way held the move back by up to half a second).
+    if (waiting_) return cmd;
     if (send_down)
       emit(tuning_.downlink_radio_hz, sent_down_, sat_.downlink_mode, sent_down_mode_,
            cmd.downlink_hz, cmd.downlink_mode);
     if (send_up)
       emit(tuning_.uplink_radio_hz, sent_up_, sat_.uplink_mode, sent_up_mode_, cmd.uplink_hz,
            cmd.uplink_mode);
+    cmd.uplink_first = std::exchange(moved_uplink_, false) && cmd.uplink_hz;
     return cmd;
   }
 
@@ -290,6 +297,7 @@ TuneCommands Tuner::update(double elevation_deg, double rr) {
   if (reversed()) {
     std::swap(cmd.downlink_hz, cmd.uplink_hz);
     std::swap(cmd.downlink_mode, cmd.uplink_mode);
+    cmd.uplink_first = !cmd.uplink_first && cmd.uplink_hz && cmd.downlink_hz;   // the same link, by its other name
   }
   return cmd;
 }

@@ -90,6 +90,9 @@ struct TuneCommands {
   std::optional<Mode> downlink_mode;   // sent before the frequency of the same link
   std::optional<Mode> uplink_mode;
   bool aos = false;                    // this tick is the AOS edge (or the first tick at AOS)
+  // The other link's move after a turn of the dial (Tuner::settle) goes out before the turned
+  // link's Doppler step, so that on a slow line it does not wait behind it.
+  bool uplink_first = false;
   // Mic-click satellites with "automatic up pulse generation at AOS": the correction the pulses
   // must make at the radio (the radio was set to the nominal frequency by CAT, if at all).
   std::optional<Hz> aos_pulse_correction_hz;
@@ -201,6 +204,7 @@ class Tuner {
     double last_turn_s;
   };
   std::optional<Waiting> waiting_;
+  bool moved_uplink_ = false;   // settle() just moved the uplink: it goes first at the next update
   std::string correction_key_;
 
   RadioConfig config_;

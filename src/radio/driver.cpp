@@ -10,10 +10,13 @@ void apply(RadioDriver& radio, const TuneCommands& c, DialGuard guard) {
     if (tolerance > 0) radio.set_frequency_guarded(l, hz, tolerance);
     else radio.set_frequency(l, hz);
   };
-  if (c.downlink_mode) radio.set_mode(Link::downlink, *c.downlink_mode);
-  if (c.downlink_hz) frequency(Link::downlink, *c.downlink_hz, guard.downlink_hz);
-  if (c.uplink_mode) radio.set_mode(Link::uplink, *c.uplink_mode);
-  if (c.uplink_hz) frequency(Link::uplink, *c.uplink_hz, guard.uplink_hz);
+  auto link = [&](Link l) {
+    const bool down = l == Link::downlink;
+    if (const auto& m = down ? c.downlink_mode : c.uplink_mode) radio.set_mode(l, *m);
+    if (const auto& hz = down ? c.downlink_hz : c.uplink_hz) frequency(l, *hz, down ? guard.downlink_hz : guard.uplink_hz);
+  };
+  link(c.uplink_first ? Link::uplink : Link::downlink);
+  link(c.uplink_first ? Link::downlink : Link::uplink);
 }
 
 }  // namespace tb::radio

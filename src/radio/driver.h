@@ -82,8 +82,9 @@ class RadioDriver {
   void set_uplink_mode(Mode m) { set_mode(Link::uplink, m); }
 };
 
-// Sends a Tuner's commands: each link's mode before its frequency, downlink first. A frequency is
-// guarded (set_frequency_guarded) when its link's tolerance is above 0.
+// Sends a Tuner's commands: each link's mode before its frequency, downlink first (uplink first when
+// the commands say so: the uplink's move after a turn of the downlink dial). A frequency is guarded
+// (set_frequency_guarded) when its link's tolerance is above 0.
 struct DialGuard {
   Hz downlink_hz = 0;
   Hz uplink_hz = 0;

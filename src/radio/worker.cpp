@@ -131,6 +131,7 @@ bool WorkerRadio::read_dial(Lock& lock, Link link, Hz guard) {
                *read, *accepted);
   turned_[i] = *read;
   turned_at_[i] = read_at_[i];
+  quiet_[1 - i] = true;
   want_hz_[i] = *read;
   accepted = *read;   // the radio is there now; trakbox's next command starts from it
   return true;
@@ -248,7 +249,7 @@ void WorkerRadio::check_link(Lock& lock) {
   // cleared at the reopen; a refused command's fault stays until the next delivery).
   // Dial follow: the guarded links that can be read, while nothing waits to be sent to them.
   for (Link l : {Link::downlink, Link::uplink}) {
-    if (guard_[link_index(l)] <= 0 || turned_[link_index(l)] || !link_->can_read(l)) continue;
+    if (guard_[link_index(l)] <= 0 || turned_[link_index(l)] || quiet_[link_index(l)] || !link_->can_read(l)) continue;
     if (now - read_at_[link_index(l)] < timing_.check_every) continue;   // read lately (before a write)
     if (std::any_of(queue_.begin(), queue_.end(), [&](const Job& j) { return j.kind == Job::Kind::frequency && j.link == l; }))
       continue;
@@ -320,8 +321,8 @@ void WorkerRadio::deliver_next(Lock& lock) {
     if (turned_[i]) return;
     // Read before writing: a turn of the dial since the last command is kept too. Not for the
     // other link's move after a turn when that link was read within the last second (its dial
-    // unturned then): the move goes out at once.
-    const bool fresh = std::chrono::steady_clock::now() - read_at_[i] < 2 * timing_.check_every;
+    // unturned then) or left unread since the turn (quiet_): the move goes out at once.
+    const bool fresh = quiet_[i] || std::chrono::steady_clock::now() - read_at_[i] < 2 * timing_.check_every;
     const bool follow = moves_after_turn(job.hz, job.guard, job.link == Link::downlink ? status_.downlink_hz : status_.uplink_hz);
     if (!(follow && fresh)) {
       busy_ = true;
@@ -368,6 +369,7 @@ void WorkerRadio::deliver_next(Lock& lock) {
   status_.message.clear();
   backoff_ = timing_.backoff_first;
   if (job.kind == Job::Kind::frequency) {
+    quiet_[link_index(job.link)] = false;
     (job.link == Link::downlink ? status_.downlink_hz : status_.uplink_hz) = job.hz;
     (job.link == Link::downlink ? status_.downlink_read_hz : status_.uplink_read_hz).reset();
   }

@@ -131,6 +131,10 @@ class WorkerRadio final : public RadioDriver {
   Hz guard_[2] = {0, 0};             // the tolerance of the last guarded frequency per link
   std::optional<Hz> turned_[2];      // a turn of the dial not yet taken
   std::chrono::steady_clock::time_point turned_at_[2]{};   // ... and when it was read
+  // Not read while idle: the other link after a turn of one dial, until trakbox writes it again
+  // (it moves it to the new pair once the knob rests). Only what can have turned is read then, and
+  // on a slow line (the FT-847's) the move does not wait behind a read of the link it moves.
+  bool quiet_[2] = {false, false};
   // When each link was last read: an idle read comes only when none was made for check_every
   // (a guarded write reads first, so a link written each second is not read twice as often).
   std::chrono::steady_clock::time_point read_at_[2]{};

@@ -56,6 +56,31 @@ TEST_CASE("Knob rest: the turned link follows the dial at once, the other link m
   CHECK(*after.uplink_hz == 145'953'000);
 }
 
+TEST_CASE("Knob rest: neither link is written while the knob rests; then the other link's move goes first") {
+  Tuner t(full_orbit());
+  t.select(rs44());
+  t.update(30.0, 0.0);
+  CHECK(t.dial_turn(435'650'000, std::nullopt, 0.0, 10.0) == Tuner::Turn::downlink);
+  // Approaching at 3 km/s: the downlink's Doppler moved 4.4 kHz, the uplink's 1.5 kHz. Nothing is
+  // written during the rest: the downlink dial is the operator's, the uplink is about to jump.
+  const auto during = t.update(30.0, -3.0);
+  CHECK_FALSE(during.downlink_hz);
+  CHECK_FALSE(during.uplink_hz);
+  REQUIRE(t.settle(11.0));
+  const auto after = t.update(30.0, -3.0);
+  REQUIRE(after.uplink_hz);
+  REQUIRE(after.downlink_hz);     // the downlink's Doppler step from where the operator put it
+  CHECK(after.uplink_first);      // the move does not wait behind it on a slow line
+  const auto next = t.update(30.0, -3.01);
+  CHECK_FALSE(next.uplink_first);
+  // The uplink dial turned: the downlink moves, and it goes first anyway.
+  CHECK(t.dial_turn(std::nullopt, 145'950'000, -3.01, 20.0) == Tuner::Turn::uplink);
+  REQUIRE(t.settle(21.0));
+  const auto down_moved = t.update(30.0, -3.02);
+  REQUIRE(down_moved.downlink_hz);
+  CHECK_FALSE(down_moved.uplink_first);
+}
+
 TEST_CASE("Knob rest: settable; 0 moves the other link at once") {
   RadioConfig c = full_orbit();
   c.dial_rest_ms = 2500;
