@@ -9,6 +9,8 @@
 #include "satrak/commands.h"
 #include "store/json_fields.h"
 
+#include "util/safe_text.h"
+
 namespace tb::satrak {
 using nlohmann::json;
 
@@ -101,7 +103,7 @@ int sensor_from_adc(double adc_counts) {
 bool frame_text(std::string_view s) {
   for (unsigned char c : s)
     if (c < 0x20 || c == 0x7F || c == ',' || c == '*' || c == '$') return false;
-  return true;
+  return text::is_safe_text(s);   // and printable UTF-8: no invalid bytes, no C1 controls (issue 38)
 }
 
 bool safe_file_name(std::string_view name) {

@@ -124,8 +124,9 @@ nlohmann::json to_json(const Settings& s);
 // range. `where` prefixes the field names.
 Settings settings_from_json(const nlohmann::json& j, const std::string& where = "satrak");
 
-// Text a reply frame can carry back as one field: no control bytes (nor DEL), no `,` (the field
-// separator), `*` (the checksum mark) or `$` (the frame start). Every text setting the unit takes
+// Text a reply frame can carry back as one field: printable UTF-8 (util/safe_text.h: no invalid
+// bytes, no control characters, C1 included), no `,` (the field separator), `*` (the checksum
+// mark) or `$` (the frame start). Every text setting the unit takes
 // is checked with this before it is stored, and the state file's reader checks the same, so what
 // the unit stores always reads back.
 bool frame_text(std::string_view s);

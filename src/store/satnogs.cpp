@@ -9,6 +9,8 @@
 
 #include "util/text.h"
 
+#include "util/safe_text.h"
+
 namespace tb::store {
 
 using json = nlohmann::json;
@@ -79,7 +81,9 @@ SatnogsImport import_satnogs(Database& db, std::string_view json_text, bool repl
     }
     const bool alive = !o.contains("alive") || (o["alive"].is_boolean() && o["alive"].get<bool>());
     if (!alive || str(o, "status") != "active") continue;
-    Transmitter t{str(o, "description"), str(o, "type"), str(o, "mode"), hz(o, "uplink_low"), hz(o, "uplink_high"),
+    // The description is shown to the operator: printable UTF-8 whatever the download held, and
+    // not a paragraph (util/safe_text.h; cut at 80 bytes, a cut character replaced).
+    Transmitter t{text::safe_text(str(o, "description").substr(0, 80)), str(o, "type"), str(o, "mode"), hz(o, "uplink_low"), hz(o, "uplink_high"),
                   hz(o, "downlink_low"), hz(o, "downlink_high"),
                   o.contains("invert") && o["invert"].is_boolean() && o["invert"].get<bool>()};
     if (!t.down_low) continue;  // an uplink alone is nothing to listen to

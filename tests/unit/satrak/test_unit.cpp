@@ -348,7 +348,8 @@ TEST_CASE("SATELLITE= names a file in the TLE directory and a satellite in it") 
   CHECK(acu.cmd("SATELLITE=,amateur.txt,NO SUCH SAT,1,1") == err("SATELLITE=", Error::satellite_not_found));
   CHECK(acu.errstatus(3) == "0");
   CHECK(acu.errstatus(4) == "1");
-  for (const char* bad : {"../amateur.txt", "tle/amateur.txt", "..", ".hidden", "a\\b"})
+  // ... and text a terminal could not show: an invalid byte, a C1 control (issue 38).
+  for (const char* bad : {"../amateur.txt", "tle/amateur.txt", "..", ".hidden", "a\\b", "a\xff.txt", "a\xc2\x85.txt"})
     CHECK(acu.cmd(std::string("SATELLITE=,") + bad + ",ISS,1,1") == err("SATELLITE=", Error::bad_value));
   write_file(acu.dir.path / "tle" / "junk.txt", "not elements\n");
   CHECK(acu.cmd("SATELLITE=,junk.txt,ISS,1,1") == err("SATELLITE=", Error::invalid_file));

@@ -135,3 +135,29 @@ TEST_CASE("SatNOGS: a text that is not a transmitter list changes nothing and sa
         "transmitter 1: norad_cat_id is not a whole number");
   CHECK_FALSE(db.satellites[0].radio.has_downlink());
 }
+
+TEST_CASE("SatNOGS: a description is shown as printable UTF-8, cut at 80 bytes, whatever was downloaded") {
+  Database db = db_of({{25544, "ISS"}});
+  // An escape sequence (clear screen), a C1 control, an invalid byte, and a paragraph.
+  const std::string list = R"([{"description":"FM\u001b[2J voice\u0085 \u00e9)" + std::string("\xff") + R"( )" +
+                           std::string(100, 'x') + R"(","alive":true,"status":"active","type":"Transceiver",
+    "uplink_low":145990000,"uplink_high":null,"downlink_low":437800000,"downlink_high":null,"mode":"FM",
+    "invert":false,"norad_cat_id":25544}])";
+  const SatnogsImport r = import_satnogs(db, list, false);
+  // An invalid byte makes the list not JSON at all: nothing changes.
+  CHECK_FALSE(r.ok());
+  const std::string valid = R"([{"description":"FM\u001b[2J voice\u0085 \u00e9 )" + std::string(100, 'x') +
+                            R"(","alive":true,"status":"active","type":"Transceiver",
+    "uplink_low":145990000,"uplink_high":null,"downlink_low":437800000,"downlink_high":null,"mode":"FM",
+    "invert":false,"norad_cat_id":25544}])";
+  const SatnogsImport ok = import_satnogs(db, valid, false);
+  REQUIRE(ok.ok());
+  REQUIRE(ok.updated.size() == 1);
+  const std::string& line = ok.updated[0];
+  CHECK(line.find('\x1b') == std::string::npos);
+  CHECK(line.find("\xc2\x85") == std::string::npos);
+  CHECK(line.find("\xc3\xa9") != std::string::npos);   // é is kept
+  CHECK(line.rfind("ISS: downlink 437.800 FM, uplink 145.990 FM (FM", 0) == 0);
+  // 80 bytes kept; the two control characters each became U+FFFD (3 bytes for 1 and 2).
+  CHECK(line.size() == std::string("ISS: downlink 437.800 FM, uplink 145.990 FM ()").size() + 80 + 2 + 1);
+}
