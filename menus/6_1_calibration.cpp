@@ -16,6 +16,7 @@
 #include "menus/6_configuration.h"
 #include "rotator/controller.h"
 #include "store/model.h"
+#include "tracker/operations.h"
 #include "tracker/station_loop.h"
 
 namespace tb::menus {
@@ -80,7 +81,7 @@ void menu_6_1_calibration(term::Terminal& t, Services& s) {
       const char c = static_cast<char>(std::toupper(k));
       if (c == '4' || c == '6' || c == '8' || c == '2' || c == '5') {
         if (!s.station.rotor_control() && c != '5') {
-          s.station.set_rotor_control(true);  // the operator's key to move it: explicit
+          tracker::StationOps(s.station).rotor_control(true);  // the operator's key to move it: explicit
           m.note("Rotor control switched ON (E key in the realtime display switches it OFF).");
           if (const auto err = s.save()) m.note("State not saved: " + *err);
         }

@@ -9,6 +9,7 @@
 
 #include "rotator/controller.h"
 #include "store/model.h"
+#include "tracker/operations.h"
 #include "tracker/station_loop.h"
 
 namespace tb::menus {
@@ -272,7 +273,7 @@ bool commit_rotator(term::Terminal& t, Services& s, const rotator::RotatorConfig
 
 void take_rotor_control(term::Terminal& t, Services& s) {
   if (s.station.rotor_control()) return;
-  s.station.set_rotor_control(true);
+  tracker::StationOps(s.station).rotor_control(true);
   t.line("Rotor control switched ON (E key in the realtime display switches it OFF).");
   save_or_report(t, s);
 }

@@ -3,6 +3,7 @@
 // antenna or leaves it where it is as set here; --rotor-control on|off sets the same.
 #include "menus/6_configuration.h"
 #include "store/model.h"
+#include "tracker/operations.h"
 #include "tracker/station_loop.h"
 
 namespace tb::menus {
@@ -16,7 +17,7 @@ void menu_6_r_rotor_control(term::Terminal& t, Services& s) {
     t.line("Rotor control unchanged.");
     return;
   }
-  s.station.set_rotor_control(on);  // saved by the station (StationLoop::on_settings_changed)
+  tracker::StationOps(s.station).rotor_control(on);  // saved by the station (StationLoop::on_settings_changed)
   t.line(on ? "Rotor control switched ON" : "Rotor control switched OFF");
   save_or_report(t, s);
 }

@@ -9,6 +9,7 @@
 
 #include "station/clock.h"
 #include "store/model.h"
+#include "tracker/operations.h"
 #include "tracker/station_loop.h"
 
 namespace tb::menus {
@@ -194,7 +195,7 @@ class Panel {
   }
 
   void toggle_track_switch() {
-    s_.station.set_rotor_control(!s_.model.rotor_control);
+    tracker::StationOps(s_.station).rotor_control(!s_.model.rotor_control);
     say(std::string("Track switch ") + (s_.model.rotor_control ? "ON" : "OFF"));
     save_or_report(t_, s_);
   }
@@ -247,7 +248,7 @@ void standalone(term::Terminal& t, Services& s, int selector, const std::functio
   t.line("TrakBox standalone mode.  Selector: 0-9, +/- one position (to 15); 0 = terminal mode.");
   t.line("E = track switch, Q = quit; Enter at position 0 starts the menus.");
   // The track switch starts off: the LED blinks in range and the antenna stays put until E.
-  s.station.set_rotor_control(false);
+  tracker::StationOps(s.station).rotor_control(false);
   Panel panel(t, s);
   panel.start(selector);
   for (;;) {

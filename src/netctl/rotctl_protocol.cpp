@@ -72,7 +72,7 @@ Outcome RotctlProtocol::execute(int id, const std::vector<std::string>& args) {
 }
 
 Error RotctlProtocol::cannot_move() {
-  if (!station_.rotor_control()) station_.set_rotor_control(true);
+  if (!station_.rotor_control()) tracker::StationOps(station_).rotor_control(true);
   if (!station_.rotator().status().link.ok()) return Error::io;
   return Error::none;
 }
