@@ -98,9 +98,13 @@ function drawList(st) {
       tr = fresh;
     }
     tr.className = st.tracking && st.tracking.followed === e.name ? "tracked" : "";
+    // No pass in the day searched (a satellite that never comes up here) and one that never sets
+    // (geostationary) are said, not shown as a blank.
     const np = e.next_pass;
-    const cells = [e.number, e.name, np ? hhmm(np.aos) : "-", np ? fixed(np.max_el_deg, 0) + "°" : "-",
-                   np ? (np.in_progress ? "up" : countdown(np.aos, st.time)) : "-", fixed(e.element_age_days, 1) + " d"];
+    const when = !np ? ["none in 24 h", "", ""]
+               : np.always_up ? ["always up", fixed(np.max_el_deg, 0) + "°", "up"]
+               : [hhmm(np.aos), fixed(np.max_el_deg, 0) + "°", np.in_progress ? "up" : countdown(np.aos, st.time)];
+    const cells = [e.number, e.name, ...when, fixed(e.element_age_days, 1) + " d"];
     cells.forEach((c, i) => {
       const td = tr.cells[i];
       if (td.textContent !== String(c)) td.textContent = c;
