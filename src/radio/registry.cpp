@@ -85,17 +85,33 @@ std::string radio_model_names() {
 }
 
 std::string radio_list_text() {
-  std::string out = "radio spec                                   radio                              links sat read tone step  CI-V  baud hamlib  notes\n";
-  char line[512];
+  // 80 columns (a phone's terminal, the serial console): the spec on a line of its own, the radio and
+  // what it can do under it, then its note wrapped four columns in.
+  constexpr const char* kRow = "  %-33s %5s %-3s %-4s %-4s %4s %5s %5s %6s\n";
+  char line[256];
+  std::snprintf(line, sizeof line, kRow, "radio", "links", "sat", "read", "tone", "step", "CI-V", "baud", "hamlib");
+  std::string out = "radio spec\n" + std::string(line);
   for (const RadioModel& m : radio_models()) {
-    const std::string civ = m.civ_address ? [&] { char b[8]; std::snprintf(b, sizeof b, "%02Xh", m.civ_address); return std::string(b); }() : "-";
-    const std::string form = spec_form(m);
-    std::snprintf(line, sizeof line, "%-44s %-34s %5d %-3s %-4s %-4s %4lld %5s %5s %6s  %s\n", form.c_str(),
-                  std::string(m.label).c_str(), m.caps.links, m.caps.satellite_mode ? "yes" : "no",
-                  m.caps.reads ? "yes" : "no", m.caps.ctcss ? "yes" : "no", static_cast<long long>(m.caps.step_hz),
-                  civ.c_str(), m.baud ? std::to_string(m.baud).c_str() : "-",
-                  m.hamlib_model ? std::to_string(m.hamlib_model).c_str() : "-", std::string(m.note).c_str());
+    char civ[8] = "-";
+    if (m.civ_address) std::snprintf(civ, sizeof civ, "%02Xh", m.civ_address);
+    out += spec_form(m) + "\n";
+    std::snprintf(line, sizeof line, kRow, std::string(m.label).c_str(), std::to_string(m.caps.links).c_str(),
+                  m.caps.satellite_mode ? "yes" : "no", m.caps.reads ? "yes" : "no", m.caps.ctcss ? "yes" : "no",
+                  std::to_string(m.caps.step_hz).c_str(), civ, m.baud ? std::to_string(m.baud).c_str() : "-",
+                  m.hamlib_model ? std::to_string(m.hamlib_model).c_str() : "-");
     out += line;
+    std::string note;   // word-wrapped at 78 columns
+    for (std::string_view rest = m.note; !rest.empty();) {
+      const std::size_t space = rest.find(' ');
+      const std::string_view word = rest.substr(0, space);
+      if (!note.empty() && note.size() + 1 + word.size() > 74) {
+        out += "    " + note + "\n";
+        note.clear();
+      }
+      note += (note.empty() ? "" : " ") + std::string(word);
+      rest = space == std::string_view::npos ? std::string_view{} : rest.substr(space + 1);
+    }
+    if (!note.empty()) out += "    " + note + "\n";
   }
   return out;
 }

@@ -16,12 +16,18 @@ for form in 'ic9700:DEVICE[:BAUD][:maindown|:mainup]' 'ic9100:DEVICE' 'ic910h:DE
             'yaesu:DEVICE' 'hamlib:MODEL:DEVICE[:BAUD][:split|:mainsub]' 'rigctld[:HOST[:PORT]]'; do
   grep -qF -- "$form" <<<"$out" || bad "--radio list lacks $form"
 done
-grep -qE '^ic9700:.* A2h +19200 +3081 ' <<<"$out" || bad "--radio list: the IC-9700's address, speed and Hamlib number"
+grep -A1 '^ic9700:' <<<"$out" | grep -qE '^  Icom IC-9700 .* A2h +19200 +3081$' ||
+  bad "--radio list: the IC-9700's address, speed and Hamlib number under its spec"
+# 80 columns: a phone's terminal or a serial console shows both lists without wrapping.
+wide=$(awk 'length > 80' <<<"$out")
+[ -z "$wide" ] || bad "--radio list has lines over 80 columns: $wide"
 
 out=$("$BIN" --rotator list) || bad "--rotator list exits non-zero"
 for form in simulated 'hamlib:MODEL:DEVICE[:BAUD]' 'rotctld:HOST[:PORT]' 'satrak:HOST[:PORT]'; do
   grep -qF -- "$form" <<<"$out" || bad "--rotator list lacks $form"
 done
+wide=$(awk 'length > 80' <<<"$out")
+[ -z "$wide" ] || bad "--rotator list has lines over 80 columns: $wide"
 
 err=$("$BIN" --state "$TMP/s" --radio ic9800:/dev/ttyUSB0 </dev/null 2>&1 >/dev/null)
 code=$?

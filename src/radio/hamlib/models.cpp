@@ -30,7 +30,7 @@ std::span<const RadioModel> hamlib_rows() {
       {.name = "hamlib", .label = "any Hamlib backend", .form = SpecForm::hamlib, .protocol = Protocol::hamlib,
        .caps = {.links = 2, .reads = true, .ctcss = true, .step_hz = 1},
        .note = "MODEL: Hamlib's number or name (rigctl -l)", .make = make_hamlib},
-      {.name = "rigctld", .label = "a rigctld daemon (Hamlib NET rigctl)", .form = SpecForm::rigctld,
+      {.name = "rigctld", .label = "a rigctld daemon (NET rigctl)", .form = SpecForm::rigctld,
        .protocol = Protocol::rigctld, .caps = {.links = 2, .reads = true, .ctcss = true, .step_hz = 1},
        .hamlib_model = 2, .note = "HOST 127.0.0.1, PORT 4532 by default", .make = make_rigctld},
   };
