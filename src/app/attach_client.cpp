@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/attach_server.h"
+#include "app/station_socket.h"
 #include "app/options.h"
 #include "app/status.h"
 
@@ -27,9 +28,9 @@ namespace {
 std::vector<OptionSpec> client_specs(const std::string& command) {
   std::vector<OptionSpec> specs{
       {"help", "", "this list"},
-      {"socket", "PATH", "the station's socket (default: STATE/trakbox.sock of --state or of the default state "
-                         "directory, else the system service's /run/trakbox/trakbox.sock)"},
-      {"state", "DIR", "the state directory of the station (its socket is DIR/trakbox.sock)"},
+      {"socket", "PATH", "the station's socket (default: STATE/" + std::string(kSocketFile) + " of --state or of the "
+                         "default state directory, else the system service's " + std::string(kServiceSocket) + ")"},
+      {"state", "DIR", "the state directory of the station (its socket is DIR/" + std::string(kSocketFile) + ")"},
   };
   if (command == "status") specs.push_back({"json", "", "the whole status document as JSON"});
   if (command == "attach") specs.push_back({"line", "", "plain lines even on a terminal"});

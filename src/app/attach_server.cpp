@@ -30,22 +30,12 @@
 #include "app/attach_internal.h"
 #include "menus/term/curses_terminal.h"
 #include "menus/term/line_terminal.h"
-#include "store/state_file.h"
 #include "util/backoff.h"
 
 namespace tb::app {
 
 namespace asio = boost::asio;
 using stream = asio::local::stream_protocol;
-
-std::string socket_for_state(const std::string& state_dir) { return state_dir + "/trakbox.sock"; }
-
-std::string default_client_socket() {
-  const std::string own = socket_for_state(store::default_state_directory().string());
-  std::error_code ec;
-  if (std::filesystem::exists(own, ec)) return own;
-  return "/run/trakbox/trakbox.sock";
-}
 
 namespace {
 

@@ -85,11 +85,6 @@ class AttachServer {
   std::unique_ptr<Impl> impl_;
 };
 
-// The socket's path for a state directory (STATE_DIR/trakbox.sock), and the one `trakbox attach`,
-// `status` and `events` use when neither --socket nor --state says: the default state directory's
-// when it exists, else the system service's (/run/trakbox/trakbox.sock).
-std::string socket_for_state(const std::string& state_dir);
-std::string default_client_socket();
 
 // Input of an attached client: bytes, and 0xFF 'W' ROWS COLS (two bytes each, big-endian) for a
 // window size; 0xFF 0xFF is a 0xFF byte.

@@ -1,11 +1,14 @@
 #include "app/rotator_registry.h"
 
+#include <algorithm>
+
 namespace tb::app {
 
 namespace {
 
+template <rotator::SpecResult (*Parse)(std::string_view)>
 std::optional<std::string> parse_driver(std::string_view text, RotatorChoice& choice) {
-  rotator::SpecResult r = rotator::parse_rotator_spec(text);
+  rotator::SpecResult r = Parse(text);
   if (!r.spec) return r.error;
   choice.rotator = r.spec;
   return std::nullopt;
@@ -18,11 +21,27 @@ std::optional<std::string> parse_satrak(std::string_view text, RotatorChoice& ch
   return std::nullopt;
 }
 
+std::unique_ptr<rotator::RotatorDriver> make_simulated(const RotatorChoice&, const RotatorContext& c) {
+  return rotator::make_simulated_rotator(c.clock, c.simulated);
+}
+
+std::unique_ptr<rotator::RotatorDriver> make_hamlib(const RotatorChoice& choice, const RotatorContext&) {
+  return rotator::make_hamlib_rotator(*choice.rotator);
+}
+
+std::unique_ptr<rotator::RotatorDriver> make_satrak(const RotatorChoice& choice, const RotatorContext&) {
+  return std::make_unique<satrak::SatrakRotator>(*choice.satrak);
+}
+
 constexpr RotatorKind kKinds[] = {
-    {"simulated", "simulated", "the simulated rotator (the default)", parse_driver},
-    {"hamlib", "hamlib:MODEL:DEVICE[:BAUD]", "any rotator Hamlib drives (MODEL: rotctl -l)", parse_driver},
-    {"rotctld", "rotctld:HOST[:PORT]", "a rotctld daemon (Hamlib NET rotctl; PORT 4533)", parse_driver},
-    {"satrak", "satrak:HOST[:PORT]", "another Satrak ACU over its TCP protocol (PORT 4001)", parse_satrak},
+    {.name = "simulated", .form = "simulated", .what = "the simulated rotator (the default)",
+     .parse = parse_driver<rotator::parse_simulated_spec>, .make = make_simulated},
+    {.name = "hamlib", .form = "hamlib:MODEL:DEVICE[:BAUD]", .what = "any rotator Hamlib drives (MODEL: rotctl -l)",
+     .parse = parse_driver<rotator::parse_hamlib_spec>, .make = make_hamlib},
+    {.name = "rotctld", .form = "rotctld:HOST[:PORT]", .what = "a rotctld daemon (Hamlib NET rotctl; PORT 4533)",
+     .parse = parse_driver<rotator::parse_rotctld_spec>, .make = make_hamlib},
+    {.name = "satrak", .form = "satrak:HOST[:PORT]", .what = "another Satrak ACU, over TCP (PORT 4001)",
+     .parse = parse_satrak, .make = make_satrak},
 };
 
 }  // namespace
@@ -35,12 +54,18 @@ RotatorParse parse_rotator(std::string_view text) {
     if (k.name != name) continue;
     RotatorParse out;
     if (auto e = k.parse(text, out.choice)) return {{}, *e};
+    out.choice.kind = &k;
     return out;
   }
   std::string forms;
   for (const RotatorKind& k : kKinds) forms += (forms.empty() ? "" : ", ") + std::string(k.form);
   return {{}, "bad --rotator '" + std::string(text) + "': unknown rotator '" + std::string(name) + "'; expected " +
                   forms + " (trakbox --rotator list)"};
+}
+
+std::unique_ptr<rotator::RotatorDriver> make_rotator(const RotatorChoice& choice, const RotatorContext& context) {
+  const RotatorKind& kind = choice.kind ? *choice.kind : kKinds[0];   // nothing chosen: the simulated one
+  return kind.make(choice, context);
 }
 
 std::string rotator_list_text() {

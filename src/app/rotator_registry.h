@@ -1,9 +1,11 @@
 // The rotator registry: one table of the rotators --rotator names (simulated, hamlib, rotctld,
-// satrak), each with its spec form, what it is and its parser, so tracker_config reads one table
-// instead of choosing a parser by prefix, and `trakbox --rotator list` prints it. The parsers stay
-// with their drivers (rotator/factory.h for simulated/hamlib/rotctld, satrak/client.h for a Satrak
-// ACU); the table is here because it spans both modules.
+// satrak), each row with its spec form, what it is, its parser and its factory, so tracker_config
+// reads one table instead of choosing a parser by prefix, build_station makes the driver the row
+// names without asking which kind it is, and `trakbox --rotator list` prints it. The parsers and
+// drivers stay with their modules (rotator/factory.h for simulated/hamlib/rotctld, satrak/client.h
+// for a Satrak ACU); the table is here because it spans both.
 #pragma once
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -14,10 +16,21 @@
 
 namespace tb::app {
 
-// A parsed --rotator: a rotator driver spec, or another Satrak ACU.
+struct RotatorKind;
+
+// A parsed --rotator: the row that read it, and what it read (a rotator driver spec, or another
+// Satrak ACU).
 struct RotatorChoice {
+  const RotatorKind* kind = nullptr;
   std::optional<rotator::RotatorSpec> rotator;
   std::optional<satrak::SatrakRotatorOptions> satrak;
+};
+
+// What a factory may need beyond the spec: the station's clock and the simulated rotator's
+// parameters (matching the configured limits).
+struct RotatorContext {
+  const station::Clock& clock;
+  rotator::SimulatedRotatorParams simulated;
 };
 
 struct RotatorKind {
@@ -26,6 +39,8 @@ struct RotatorKind {
   std::string_view what;
   // Fills choice, or returns what is wrong.
   std::optional<std::string> (*parse)(std::string_view text, RotatorChoice& choice);
+  // The driver for a choice this row parsed.
+  std::unique_ptr<rotator::RotatorDriver> (*make)(const RotatorChoice& choice, const RotatorContext& context);
 };
 
 std::span<const RotatorKind> rotator_kinds();
@@ -35,6 +50,9 @@ struct RotatorParse {
   std::string error;   // set when nothing was chosen
 };
 RotatorParse parse_rotator(std::string_view text);
+
+// The driver for a parsed choice, by its row's factory.
+std::unique_ptr<rotator::RotatorDriver> make_rotator(const RotatorChoice& choice, const RotatorContext& context);
 
 // `trakbox --rotator list`.
 std::string rotator_list_text();

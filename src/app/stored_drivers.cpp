@@ -19,6 +19,13 @@ std::optional<std::string> apply_stored_drivers(TrackerConfig& c, store::Model& 
     said.push_back("Radio: " + m.radio_driver + " (" + store::driver_label(m.radio_driver) +
                    ", stored; --radio simulated to use the simulated one)");
   }
+  // The uplink radio (menu 6-7 keeps it in the model's radio): read once here, driven as read.
+  if (c.uplink_radio_text) m.radio.uplink_radio = *c.uplink_radio_text;
+  else if (!m.radio.uplink_radio.empty()) {
+    const auto parsed = radio::parse_radio_spec(m.radio.uplink_radio, "--uplink-radio");
+    if (!parsed.spec) return "the stored uplink radio '" + m.radio.uplink_radio + "': " + parsed.error + " (give --uplink-radio)";
+    c.uplink_radio = parsed.spec;
+  }
   return std::nullopt;
 }
 

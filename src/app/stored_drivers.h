@@ -1,5 +1,5 @@
-// --rotator and --radio are remembered like --uplink-radio (issue 30): given, they are stored;
-// left out, the stored ones are driven, and the operator is told so.
+// --rotator, --radio and --uplink-radio are remembered (issue 30): given, they are stored; left
+// out, the stored ones are driven (the rotator and radio said to the operator).
 #pragma once
 #include <optional>
 #include <string>

@@ -142,24 +142,15 @@ Startup load_state(store::StateFile& file, const TrackerConfig& c, spdlog::logge
 std::optional<std::string> build_station(StationApp& app, const TrackerConfig& c) {
   if (c.clock_start) app.clock().start_at(*c.clock_start, c.clock_rate.value_or(1.0));
   else if (c.clock_rate) app.clock().start_at(station::system_now(), *c.clock_rate);
-  if (c.uplink_radio_text) app.model().radio.uplink_radio = *c.uplink_radio_text;
   if (c.dial_rest_ms) app.model().radio.dial_rest_ms = *c.dial_rest_ms;
   if (c.doppler_steps) {
     app.model().radio.doppler_step_ssb_hz = c.doppler_steps->first;
     app.model().radio.doppler_step_fm_hz = c.doppler_steps->second;
   }
-  std::optional<radio::RadioSpec> uplink;
-  if (const std::string& up = app.model().radio.uplink_radio; !up.empty()) {
-    const auto parsed = radio::parse_radio_spec(up, "--uplink-radio");
-    if (!parsed.spec) return parsed.error;
-    uplink = parsed.spec;
-  }
-  radio::MakeRadio made = radio::make_radios(c.radio, uplink, app.model().radio);
+  radio::MakeRadio made = radio::make_radios(c.radio, c.uplink_radio, app.model().radio);
   if (!made.driver) return "--radio: " + made.error;
   std::unique_ptr<rotator::RotatorDriver> rot =
-      c.satrak_rotator ? std::make_unique<satrak::SatrakRotator>(*c.satrak_rotator)
-                       : rotator::make_rotator(*c.rotator, app.clock(),
-                                               rotator::SimulatedRotatorParams::matching(app.model().rotator));
+      make_rotator(c.rotator, {app.clock(), rotator::SimulatedRotatorParams::matching(app.model().rotator)});
   const std::string rot_name = rot->description();
   app.build_station(std::move(rot), std::move(made.driver));
   app.log().info("rotator: {}; radio: {}", rot_name, app.station().radio().describe());

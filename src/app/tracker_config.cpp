@@ -5,6 +5,7 @@
 
 #include "app/build_info.h"
 #include "app/rotator_registry.h"
+#include "app/station_socket.h"
 #include "gps/gpsd_client.h"
 #include "station/clock.h"
 #include "menus/term/line_terminal.h"
@@ -79,8 +80,9 @@ std::vector<OptionSpec> tracker_option_specs() {
                                   "it with nobody attached); off: it stays where it is (the E key, menu 6-R; stored)"},
       {"event-min-el", "DEG", "no AOS/LOS event nor hook for a pass whose maximum elevation stays under DEG, "
                               "-2 to 90 (factory 0: none for a pass that never rises; stored)"},
-      {"socket", "PATH", "the station's socket for trakbox attach, status and events (default STATE/trakbox.sock; "
-                         "the system service's is /run/trakbox/trakbox.sock), made for the user and group only"},
+      {"socket", "PATH", "the station's socket for trakbox attach, status and events (default STATE/" +
+                             std::string(kSocketFile) + "; the system service's is " + std::string(kServiceSocket) +
+                             "), made for the user and group only"},
       {"on-event", "[KIND,...=]CMD", "run CMD (with /bin/sh) on every event, or on the kinds named: aos, los, "
                                      "elements, link-lost, link-back, save-failed; the event is in its environment "
                                      "(TRAKBOX_EVENT, TRAKBOX_SATELLITE, TRAKBOX_AOS, ...; docs/service.md)", true},
@@ -128,9 +130,8 @@ std::optional<spdlog::level::level_enum> log_level_named(const std::string& l) {
 std::optional<std::string> set_rotator_spec(TrackerConfig& c, const std::string& text) {
   // One table of rotators (app/rotator_registry.h) chooses the parser.
   RotatorParse rot = parse_rotator(text);
-  c.satrak_rotator = rot.choice.satrak;
-  c.rotator = rot.choice.rotator;
   if (!rot.error.empty()) return rot.error;
+  c.rotator = rot.choice;
   return std::nullopt;
 }
 
@@ -154,6 +155,7 @@ void read_devices(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
     if (!c.uplink_radio_text->empty()) {
       const auto up_spec = radio::parse_radio_spec(*up, "--uplink-radio");
       if (!up_spec.spec) r.fail("--uplink-radio", up_spec.error);
+      c.uplink_radio = up_spec.spec;
     }
   }
 }
@@ -282,10 +284,10 @@ void read_udp_events(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) 
     std::string why;
     if (u == "none") {
       if (given.size() > 1) return r.fail("--udp-events", "'none' clears the destinations: not with others");
-    } else if (auto t = parse_udp_target(u, why)) {
+    } else if (auto t = inet::parse_host_port(u, why)) {
       targets.push_back(std::move(*t));
     } else {
-      return r.fail("--udp-events", why);
+      return r.fail("--udp-events", "'" + u + "': " + why);
     }
   }
   if (targets.size() > store::kMaxUdpEvents)
@@ -383,7 +385,7 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
   c.listen = o.value("listen").value_or("127.0.0.1");
   c.state_dir = o.value("state") ? std::filesystem::path(*o.value("state")) : store::default_state_directory();
   c.data_dir = o.value("data").value_or(default_data_directory());
-  c.socket = o.value("socket").value_or((c.state_dir / "trakbox.sock").string());
+  c.socket = o.value("socket").value_or(socket_for_state(c.state_dir.string()));
   return ConfigOutcome::run(std::move(c));
 }
 

@@ -16,8 +16,7 @@
 #include "app/udp_events.h"
 #include "orbit/time.h"
 #include "radio/factory.h"
-#include "rotator/factory.h"
-#include "satrak/client.h"
+#include "app/rotator_registry.h"
 #include "util/cidr.h"
 
 namespace tb::app {
@@ -42,12 +41,14 @@ struct TrackerConfig {
   std::optional<orbit::UtcTime> clock_start;
   std::optional<double> clock_rate;
   int tick_ms = 1000;
-  // The rotator: a Satrak ACU (satrak:HOST[:PORT]) or a rotator driver spec.
-  std::optional<satrak::SatrakRotatorOptions> satrak_rotator;
-  std::optional<rotator::RotatorSpec> rotator;
+  // The rotator, as a row of the rotator registry read it (a driver spec or a Satrak ACU).
+  RotatorChoice rotator;
   radio::RadioSpec radio;
   // --uplink-radio: a second radio's spec ("" for none); unset: the stored choice (menu 6-7).
   std::optional<std::string> uplink_radio_text;
+  // The uplink radio to drive: --uplink-radio's, else the stored one (apply_stored_drivers), read
+  // once; none: the radio carries both links.
+  std::optional<radio::RadioSpec> uplink_radio;
   // --dial-rest, --doppler-step (SSB/CW, FM): the operating practice, stored in the model's radio.
   std::optional<int> dial_rest_ms;
   std::optional<std::pair<radio::Hz, radio::Hz>> doppler_steps;

@@ -21,11 +21,8 @@ class logger;
 
 namespace tb::app {
 
+// "HOST:PORT" or "[IPV6]:PORT", read by inet::parse_host_port (util/host_port.h), a port required.
 using UdpTarget = inet::HostPort;
-// "HOST:PORT" or "[IPV6]:PORT"; nullopt with the reason otherwise (util/host_port.h).
-inline std::optional<UdpTarget> parse_udp_target(const std::string& text, std::string& error) {
-  return inet::parse_host_port(text, error);
-}
 
 class UdpEvents {
  public:

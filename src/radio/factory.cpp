@@ -5,6 +5,7 @@
 
 #include "radio/hamlib/hamlib_models.h"
 #include "radio/two_radios.h"
+#include "util/host_port.h"
 #include "util/text.h"
 
 namespace tb::radio {
@@ -90,15 +91,16 @@ RadioSpecParse parse_radio_spec(std::string_view text, std::string_view option) 
     parts.pop_back();
   }
   if (m->form == SpecForm::rigctld) {
-    if (parts.size() > 2) return error(quoted + "expected rigctld:HOST:PORT");
-    spec.host = parts.size() >= 1 && !parts[0].empty() ? parts[0] : "127.0.0.1";
+    std::string peer;   // HOST[:PORT] as given, the scheme taken off
+    for (std::size_t i = 0; i < parts.size(); ++i) peer += (i ? ":" : "") + parts[i];
+    spec.host = "127.0.0.1";
     spec.port = 4532;
-    if (parts.size() == 2) {
-      auto p = to_int(parts[1]);
-      if (!p || *p <= 0 || *p > 65535)
-        return error(quoted + "port \"" + parts[1] + "\" is not a TCP port (1-65535)");
-      spec.port = *p;
-    }
+    if (peer.empty()) return {spec, {}};
+    std::string why;
+    const auto hp = inet::parse_host_port(peer, why, 4532);
+    if (!hp) return error(quoted + why + "; expected rigctld[:HOST[:PORT]][:split|:mainsub]");
+    spec.host = hp->host.find(':') != std::string::npos ? "[" + hp->host + "]" : hp->host;   // Hamlib's pathname form
+    spec.port = hp->port;
     return {spec, {}};
   }
   if (parts.size() < 2 || parts[1].empty())

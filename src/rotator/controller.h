@@ -1,7 +1,7 @@
 // The rotator controller: owns the ADC model and a driver, and makes the per-tick control decision.
 // The tracker, the menus and host mode call it; nothing else moves the antenna.
 //
-//   Controller rot(config, station.rotor_start, make_rotator(spec, clock));
+//   Controller rot(config, station.rotor_start, make_hamlib_rotator(spec));   // or any RotatorDriver
 //   rot.set_target({az, el});        // every second while tracking
 //   rot.tick(clock.now());           // from the event loop, once a second or faster
 //   menu 6-5: format_monitor_line(rot.status())  ->  "AZ= 519 / 32.8deg EL= 462 / 90.0deg."

@@ -6,13 +6,13 @@
 #include <charconv>
 #include <vector>
 
+#include "util/host_port.h"
 #include "util/text.h"
 
 namespace tb::rotator {
 
 namespace {
 
-constexpr const char* kExpected = "expected simulated, hamlib:MODEL:DEVICE[:BAUD] or rotctld:HOST[:PORT]";
 constexpr int kBauds[] = {300, 600, 1200, 2400, 4800, 9600, 19200, 38400, 57600, 115200, 230400};
 
 std::optional<int> number(std::string_view s) {
@@ -27,7 +27,16 @@ SpecResult fail(std::string_view text, std::string why) {
   return {std::nullopt, "bad --rotator '" + std::string(text) + "': " + why};
 }
 
-SpecResult parse_hamlib(std::string_view text, std::string_view rest) {
+// What follows "NAME:" ("" when nothing does).
+std::string_view after_name(std::string_view text) {
+  const auto colon = text.find(':');
+  return colon == std::string_view::npos ? std::string_view{} : text.substr(colon + 1);
+}
+
+}  // namespace
+
+SpecResult parse_hamlib_spec(std::string_view text) {
+  const std::string_view rest = after_name(text);
   const std::string usage = "expected hamlib:MODEL:DEVICE[:BAUD], e.g. hamlib:603:/dev/ttyUSB0:9600";
   auto f = text::split(rest, ':');
   if (rest.empty() || f[0].empty()) return fail(text, "missing MODEL; " + usage);
@@ -54,57 +63,22 @@ SpecResult parse_hamlib(std::string_view text, std::string_view rest) {
   return {s, {}};
 }
 
-SpecResult parse_rotctld(std::string_view text, std::string_view rest) {
-  const std::string usage = "expected rotctld:HOST[:PORT], e.g. rotctld:localhost:4533";
+SpecResult parse_rotctld_spec(std::string_view text) {
+  std::string why;
+  const auto hp = inet::parse_host_port(after_name(text), why, 4533);
+  if (!hp) return fail(text, why + "; expected rotctld:HOST[:PORT], e.g. rotctld:localhost:4533");
   RotatorSpec s;
   s.kind = RotatorSpec::Kind::rotctld;
   s.model = ROT_MODEL_NETROTCTL;
-  std::string_view host, port;
-  if (!rest.empty() && rest.front() == '[') {  // [IPv6]:PORT
-    auto close = rest.find(']');
-    if (close == std::string_view::npos) return fail(text, "unclosed '[' in the host; " + usage);
-    host = rest.substr(0, close + 1);
-    std::string_view after = rest.substr(close + 1);
-    if (!after.empty()) {
-      if (after.front() != ':') return fail(text, "expected ':' after ']'; " + usage);
-      port = after.substr(1);
-      if (port.empty()) return fail(text, "empty PORT; " + usage);
-    }
-  } else {
-    auto f = text::split(rest, ':');
-    if (f.size() > 2) return fail(text, "too many ':' (an IPv6 address goes in brackets); " + usage);
-    host = f[0];
-    if (f.size() == 2) {
-      port = f[1];
-      if (port.empty()) return fail(text, "empty PORT; " + usage);
-    }
-  }
-  if (host.empty() || host == "[]") return fail(text, "missing HOST; " + usage);
-  s.host = std::string(host);
-  s.port = 4533;
-  if (!port.empty()) {
-    auto p = number(port);
-    if (!p || *p < 1 || *p > 65535) return fail(text, "PORT '" + std::string(port) + "' is not a TCP port (1..65535)");
-    s.port = *p;
-  }
+  s.host = hp->host.find(':') != std::string::npos ? "[" + hp->host + "]" : hp->host;   // Hamlib's pathname form
+  s.port = hp->port;
   s.device = s.host + ":" + std::to_string(s.port);
   return {s, {}};
 }
 
-}  // namespace
-
-SpecResult parse_rotator_spec(std::string_view text) {
-  if (text.empty()) return fail(text, std::string("empty; ") + kExpected);
-  auto colon = text.find(':');
-  std::string_view kind = text.substr(0, colon);
-  std::string_view rest = colon == std::string_view::npos ? std::string_view{} : text.substr(colon + 1);
-  if (kind == "simulated") {
-    if (colon != std::string_view::npos) return fail(text, "simulated takes no parameters");
-    return {RotatorSpec{}, {}};
-  }
-  if (kind == "hamlib") return parse_hamlib(text, rest);
-  if (kind == "rotctld") return parse_rotctld(text, rest);
-  return fail(text, "unknown rotator '" + std::string(kind) + "'; " + kExpected);
+SpecResult parse_simulated_spec(std::string_view text) {
+  if (text != "simulated") return fail(text, "simulated takes no parameters");
+  return {RotatorSpec{}, {}};
 }
 
 std::string to_string(const RotatorSpec& s) {
@@ -117,9 +91,11 @@ std::string to_string(const RotatorSpec& s) {
   return "simulated";
 }
 
-std::unique_ptr<RotatorDriver> make_rotator(const RotatorSpec& spec, const station::Clock& clock,
-                                            const SimulatedRotatorParams& sim, HamlibOptions hamlib) {
-  if (spec.kind == RotatorSpec::Kind::simulated) return std::make_unique<SimulatedRotator>(clock, sim);
+std::unique_ptr<RotatorDriver> make_simulated_rotator(const station::Clock& clock, const SimulatedRotatorParams& sim) {
+  return std::make_unique<SimulatedRotator>(clock, sim);
+}
+
+std::unique_ptr<RotatorDriver> make_hamlib_rotator(const RotatorSpec& spec, HamlibOptions hamlib) {
   hamlib.model = spec.model;
   hamlib.pathname = spec.device;
   hamlib.baud = spec.baud;

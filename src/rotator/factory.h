@@ -32,14 +32,19 @@ struct SpecResult {
   std::string error;  // what is wrong and what is expected, when there is no spec
 };
 
-// Parses (and checks: the Hamlib model must exist) a --rotator value.
-SpecResult parse_rotator_spec(std::string_view text);
+// Each kind's parser, given the whole --rotator value ("hamlib:603:/dev/ttyUSB0:9600"); the rotator
+// registry (app/rotator_registry.h) picks one by the name before the first ':'. The Hamlib model
+// must exist.
+SpecResult parse_simulated_spec(std::string_view text);
+SpecResult parse_hamlib_spec(std::string_view text);
+SpecResult parse_rotctld_spec(std::string_view text);
 // The spec written back ("simulated", "hamlib:603:/dev/ttyUSB0:9600", "rotctld:localhost:4533").
 std::string to_string(const RotatorSpec& spec);
 
-// The driver for a valid spec. The simulated rotator runs on `clock` with `sim`; Hamlib drivers
-// take their timings from `hamlib` (model, pathname and baud come from the spec).
-std::unique_ptr<RotatorDriver> make_rotator(const RotatorSpec& spec, const station::Clock& clock,
-                                            const SimulatedRotatorParams& sim = {}, HamlibOptions hamlib = {});
+// The drivers, one factory per kind: the simulated rotator runs on `clock` with `sim`; a Hamlib
+// rotator (hamlib: or rotctld:) takes its timings from `hamlib`, and model, pathname and baud from
+// the spec.
+std::unique_ptr<RotatorDriver> make_simulated_rotator(const station::Clock& clock, const SimulatedRotatorParams& sim = {});
+std::unique_ptr<RotatorDriver> make_hamlib_rotator(const RotatorSpec& spec, HamlibOptions hamlib = {});
 
 }  // namespace tb::rotator

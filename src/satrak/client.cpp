@@ -14,6 +14,7 @@
 #include <cstring>
 
 #include "satrak/commands.h"
+#include "util/host_port.h"
 
 namespace tb::satrak {
 
@@ -27,59 +28,6 @@ int ms_left(Steady::time_point deadline) {
 }
 
 }  // namespace
-
-std::optional<HostPort> parse_host_port(std::string_view text, std::string& error) {
-  HostPort hp;
-  std::string_view host = text, port;
-  if (!text.empty() && text.front() == '[') {
-    const auto close = text.find(']');
-    if (close == std::string_view::npos) {
-      error = "unclosed '[' in '" + std::string(text) + "'";
-      return std::nullopt;
-    }
-    host = text.substr(1, close - 1);
-    std::string_view after = text.substr(close + 1);
-    if (!after.empty()) {
-      if (after.front() != ':') {
-        error = "expected ':' after ']' in '" + std::string(text) + "'";
-        return std::nullopt;
-      }
-      port = after.substr(1);
-      if (port.empty()) {
-        error = "empty port in '" + std::string(text) + "'";
-        return std::nullopt;
-      }
-    }
-  } else {
-    const auto colon = text.find(':');
-    if (colon != std::string_view::npos) {
-      if (text.find(':', colon + 1) != std::string_view::npos) {
-        error = "too many ':' in '" + std::string(text) + "' (an IPv6 address goes in brackets)";
-        return std::nullopt;
-      }
-      host = text.substr(0, colon);
-      port = text.substr(colon + 1);
-      if (port.empty()) {
-        error = "empty port in '" + std::string(text) + "'";
-        return std::nullopt;
-      }
-    }
-  }
-  if (host.empty()) {
-    error = "missing host in '" + std::string(text) + "'";
-    return std::nullopt;
-  }
-  hp.host = std::string(host);
-  if (!port.empty()) {
-    const auto p = parse_integer(port);
-    if (!p || *p < 1 || *p > 65535 || port.front() == '+') {
-      error = "port '" + std::string(port) + "' is not a TCP port (1..65535)";
-      return std::nullopt;
-    }
-    hp.port = static_cast<unsigned short>(*p);
-  }
-  return hp;
-}
 
 // ---------------------------------------------------------------------------------------------
 // Client
@@ -250,9 +198,9 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     return 2;
   }
   std::string e;
-  const auto hp = parse_host_port(*target, e);
+  const auto hp = inet::parse_host_port(*target, e, kDefaultPort);
   if (!hp) {
-    err << "trakbox satrak: " << e << "\n";
+    err << "trakbox satrak: '" << *target << "': " << e << "\n";
     return 2;
   }
   // A whole frame given on the command line is taken as its payload.
@@ -297,7 +245,7 @@ std::optional<SatrakRotatorOptions> parse_rotator_spec(std::string_view text, st
     return std::nullopt;
   }
   std::string e;
-  const auto hp = parse_host_port(text.substr(kPrefix.size()), e);
+  const auto hp = inet::parse_host_port(text.substr(kPrefix.size()), e, kDefaultPort);
   if (!hp) {
     error = "bad --rotator '" + std::string(text) + "': " + e + "; expected satrak:HOST[:PORT], e.g. satrak:192.0.2.7:4001";
     return std::nullopt;

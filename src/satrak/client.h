@@ -17,12 +17,8 @@ namespace tb::satrak {
 
 inline constexpr unsigned short kDefaultPort = 4001;
 
-// "HOST", "HOST:PORT", "[IPv6]", "[IPv6]:PORT". Nothing (with `error` set) when malformed.
-struct HostPort {
-  std::string host;
-  unsigned short port = kDefaultPort;
-};
-std::optional<HostPort> parse_host_port(std::string_view text, std::string& error);
+// HOST[:PORT] of `trakbox satrak` and satrak:HOST[:PORT] are read by inet::parse_host_port
+// (util/host_port.h) with this default port.
 
 // A blocking client. Every call returns within its timeout.
 class Client {

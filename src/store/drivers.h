@@ -7,8 +7,9 @@
 
 namespace tb::store {
 
-// "SIM" for the simulated driver (or none given); "hamlib 603" for hamlib:603:/dev/ttyUSB0;
-// "rotctld localhost" for rotctld:localhost:4533; otherwise the driver's kind ("icom", "satrak").
+// "SIM" for the simulated driver (or none given); else the spec's name and its first field unless
+// that is a device path: "hamlib 603" for hamlib:603:/dev/ttyUSB0, "rotctld localhost" for
+// rotctld:localhost:4533, "satrak acu" for satrak:acu, "icom" for icom:/dev/ttyUSB1.
 std::string driver_label(std::string_view spec);
 
 }  // namespace tb::store

@@ -482,8 +482,9 @@ std::vector<std::string> udp_events_from(const json& u) {
     const std::string w = "udp_events[" + std::to_string(i) + "]";
     if (!u[i].is_string()) bad(w, "expected HOST:PORT");
     std::string why;
-    const auto t = inet::parse_host_port(u[i].get<std::string>(), why);
-    if (!t) bad(w, why);
+    const std::string text = u[i].get<std::string>();
+    const auto t = inet::parse_host_port(text, why);
+    if (!t) bad(w, "'" + text + "': " + why);
     out.push_back(inet::host_port_text(*t));
   }
   return out;

@@ -1,7 +1,7 @@
 // Command-line values: trakbox's option parser (app::parse_options with the program's own option
 // table), the conversions and checks run_tracker makes before anything starts (OptionReader with
 // its ranges, --clock, the --rotator / --radio / satrak: device specs), and the other readers of
-// command-line text (to_double_list for --station, satrak::parse_host_port for `trakbox satrak`).
+// command-line text (to_double_list for --station, inet::parse_host_port for `trakbox satrak`).
 // The orbit subcommands (propagate, schedule, passes) are not run: their work is what the values
 // ask for (up to 10^7 lines), not a parser's.
 //
@@ -12,8 +12,10 @@
 #include "app/tracker_app.h"
 #include "fuzz_station.h"
 #include "radio/factory.h"
+#include "app/rotator_registry.h"
 #include "rotator/factory.h"
 #include "satrak/client.h"
+#include "util/host_port.h"
 
 using namespace tb;
 
@@ -51,20 +53,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     (void)app::to_double(a);
     (void)app::to_int64(a);
     std::string error;
-    if (const auto hp = satrak::parse_host_port(a, error)) (void)hp->host;
+    if (const auto hp = inet::parse_host_port(a, error, satrak::kDefaultPort)) (void)hp->host;
     else TB_FUZZ_CHECK(!error.empty(), a);
     error.clear();
-    if (a.rfind("satrak:", 0) == 0) {
-      if (!satrak::parse_rotator_spec(a, error)) TB_FUZZ_CHECK(!error.empty(), a);
-    } else {
-      const auto rot = rotator::parse_rotator_spec(a);
-      if (rot.spec) {
-        const std::string back = rotator::to_string(*rot.spec);
-        const auto again = rotator::parse_rotator_spec(back);
-        TB_FUZZ_CHECK(again.spec && *again.spec == *rot.spec, a + " -> " + back);
-      } else {
-        TB_FUZZ_CHECK(!rot.error.empty(), a);
-      }
+    const auto rot = app::parse_rotator(a);
+    if (rot.choice.rotator) {
+      const std::string back = rotator::to_string(*rot.choice.rotator);
+      const auto again = app::parse_rotator(back);
+      TB_FUZZ_CHECK(again.choice.rotator && *again.choice.rotator == *rot.choice.rotator, a + " -> " + back);
+    } else if (!rot.choice.satrak) {
+      TB_FUZZ_CHECK(!rot.error.empty(), a);
     }
     const auto rad = radio::parse_radio_spec(a);
     if (!rad.spec) TB_FUZZ_CHECK(!rad.error.empty(), a);

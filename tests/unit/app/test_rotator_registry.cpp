@@ -1,7 +1,9 @@
-// The rotator registry (app/rotator_registry.h): one table chooses the parser for every --rotator.
+// The rotator registry (app/rotator_registry.h): one table chooses the parser and the factory for
+// every --rotator.
 #include <doctest/doctest.h>
 
 #include "app/rotator_registry.h"
+#include "station/clock.h"
 
 using namespace tb;
 
@@ -25,6 +27,10 @@ TEST_CASE("--rotator: one table for the drivers and a Satrak ACU") {
   // Each kind's own parser says what is wrong; an unknown kind lists the table's forms.
   CHECK(app::parse_rotator("rotctld:").error.find("missing HOST") != std::string::npos);
   CHECK(app::parse_rotator("satrak:").error.find("expected satrak:HOST[:PORT]") != std::string::npos);
+  CHECK(app::parse_rotator("").error ==
+        "bad --rotator '': unknown rotator ''; expected simulated, hamlib:MODEL:DEVICE[:BAUD], rotctld:HOST[:PORT], "
+        "satrak:HOST[:PORT] (trakbox --rotator list)");
+  CHECK(app::parse_rotator("simulated:fast").error == "bad --rotator 'simulated:fast': simulated takes no parameters");
   CHECK(app::parse_rotator("gs232:/dev/ttyS0").error ==
         "bad --rotator 'gs232:/dev/ttyS0': unknown rotator 'gs232'; expected simulated, hamlib:MODEL:DEVICE[:BAUD], "
         "rotctld:HOST[:PORT], satrak:HOST[:PORT] (trakbox --rotator list)");
@@ -32,4 +38,29 @@ TEST_CASE("--rotator: one table for the drivers and a Satrak ACU") {
 
   const std::string list = app::rotator_list_text();
   for (const app::RotatorKind& k : app::rotator_kinds()) CHECK(list.find(std::string(k.form)) != std::string::npos);
+}
+
+TEST_CASE("--rotator: each row's factory makes its own driver") {
+  station::ManualClock clock(orbit::from_civil(2026, 1, 1));
+  const app::RotatorContext context{clock, {}};
+  auto make = [&](const char* spec) {
+    const auto parsed = app::parse_rotator(spec);
+    REQUIRE(parsed.error.empty());
+    REQUIRE(parsed.choice.kind);
+    CHECK(parsed.choice.kind->name == std::string_view(spec).substr(0, std::string_view(spec).find(':')));
+    return app::make_rotator(parsed.choice, context);
+  };
+  auto sim = make("simulated");
+  REQUIRE(sim->as_adc());
+  CHECK(sim->description() == "simulated");
+  auto ham = make("hamlib:601:/nonexistent/ttyTB0:9600");
+  REQUIRE(ham->as_degrees());
+  CHECK(ham->description() == "hamlib 601 /nonexistent/ttyTB0 9600");
+  auto net = make("rotctld:127.0.0.1:9");
+  REQUIRE(net->as_degrees());
+  CHECK(net->description().find("127.0.0.1:9") != std::string::npos);
+  auto acu = make("satrak:127.0.0.1:9");
+  CHECK(acu->description().find("127.0.0.1") != std::string::npos);
+  // Nothing chosen (a TrackerConfig made in code): the simulated rotator.
+  CHECK(app::make_rotator({}, context)->description() == "simulated");
 }

@@ -27,8 +27,11 @@ TEST_CASE("no options: the simulated station on loopback with the default Satrak
   CHECK(c.satrak_bind == "127.0.0.1");
   CHECK(c.listen == "127.0.0.1");
   CHECK(c.tick_ms == 1000);
-  CHECK(c.rotator);
-  CHECK_FALSE(c.satrak_rotator);
+  REQUIRE(c.rotator.kind);
+  CHECK(c.rotator.kind->name == "simulated");
+  CHECK(c.rotator.rotator);
+  CHECK_FALSE(c.rotator.satrak);
+  CHECK(c.socket == "/tmp/x/trakbox.sock");
   CHECK_FALSE(c.rotctld_port);
   CHECK(c.allow.empty());
   CHECK(c.log_level == spdlog::level::info);
@@ -49,8 +52,10 @@ TEST_CASE("values are typed and ranged") {
   CHECK(o.config->clock_rate == 20.0);
   CHECK(o.config->allow.size() == 2);
   CHECK(o.config->log_level == spdlog::level::debug);
-  CHECK(o.config->satrak_rotator);
-  CHECK_FALSE(o.config->rotator);
+  REQUIRE(o.config->rotator.kind);
+  CHECK(o.config->rotator.kind->name == "satrak");
+  CHECK(o.config->rotator.satrak);
+  CHECK_FALSE(o.config->rotator.rotator);
 }
 
 TEST_CASE("the first bad value is named, and nothing is configured") {

@@ -365,6 +365,14 @@ TEST_CASE("--radio spec parsing") {
   CHECK(parse_radio_spec("rigctld").spec->port == 4532);
   CHECK(parse_radio_spec("rigctld:radio.lan").spec->host == "radio.lan");
   CHECK(parse_radio_spec("rigctld:h:4532:mainsub").spec->scheme == HamlibVfoScheme::main_sub);
+  // Read as every network peer is (util/host_port.h): an IPv6 address in brackets, kept in them
+  // for Hamlib's pathname.
+  auto v6 = parse_radio_spec("rigctld:[::1]:4600:split");
+  REQUIRE(v6.spec);
+  CHECK(v6.spec->host == "[::1]");
+  CHECK(v6.spec->port == 4600);
+  CHECK(v6.spec->scheme == HamlibVfoScheme::split);
+  CHECK(parse_radio_spec("rigctld:::1:4600").error.find("IPv6 address goes in brackets") != std::string::npos);
 
   auto bad = parse_radio_spec("icom");
   CHECK_FALSE(bad.spec);

@@ -1,4 +1,5 @@
-// The --rotator spec: simulated, hamlib:MODEL:DEVICE[:BAUD], rotctld:HOST[:PORT].
+// The --rotator specs of the rotator module: simulated, hamlib:MODEL:DEVICE[:BAUD], rotctld:HOST[:PORT]
+// (each kind's parser and factory; app/rotator_registry.h picks them, tests/unit/app).
 #include <doctest/doctest.h>
 #include <spdlog/spdlog.h>
 
@@ -10,12 +11,12 @@ using tb::station::ManualClock;
 
 TEST_CASE("Rotator specs that parse") {
   spdlog::set_level(spdlog::level::off);
-  auto sim = parse_rotator_spec("simulated");
+  auto sim = parse_simulated_spec("simulated");
   REQUIRE(sim.spec);
   CHECK(sim.spec->kind == RotatorSpec::Kind::simulated);
   CHECK(to_string(*sim.spec) == "simulated");
 
-  auto gs = parse_rotator_spec("hamlib:603:/dev/ttyUSB0:9600");
+  auto gs = parse_hamlib_spec("hamlib:603:/dev/ttyUSB0:9600");
   REQUIRE(gs.spec);
   CHECK(gs.spec->kind == RotatorSpec::Kind::hamlib);
   CHECK(gs.spec->model == 603);
@@ -23,12 +24,12 @@ TEST_CASE("Rotator specs that parse") {
   CHECK(gs.spec->baud == 9600);
   CHECK(to_string(*gs.spec) == "hamlib:603:/dev/ttyUSB0:9600");
 
-  auto nobaud = parse_rotator_spec("hamlib:1:/dev/null");
+  auto nobaud = parse_hamlib_spec("hamlib:1:/dev/null");
   REQUIRE(nobaud.spec);
   CHECK(nobaud.spec->baud == 0);
   CHECK(nobaud.spec->device == "/dev/null");
 
-  auto net = parse_rotator_spec("rotctld:127.0.0.1:4599");
+  auto net = parse_rotctld_spec("rotctld:127.0.0.1:4599");
   REQUIRE(net.spec);
   CHECK(net.spec->kind == RotatorSpec::Kind::rotctld);
   CHECK(net.spec->model == 2);
@@ -37,10 +38,10 @@ TEST_CASE("Rotator specs that parse") {
   CHECK(net.spec->device == "127.0.0.1:4599");
   CHECK(to_string(*net.spec) == "rotctld:127.0.0.1:4599");
 
-  auto dflt = parse_rotator_spec("rotctld:localhost");
+  auto dflt = parse_rotctld_spec("rotctld:localhost");
   REQUIRE(dflt.spec);
   CHECK(dflt.spec->port == 4533);
-  auto v6 = parse_rotator_spec("rotctld:[::1]:4533");
+  auto v6 = parse_rotctld_spec("rotctld:[::1]:4533");
   REQUIRE(v6.spec);
   CHECK(v6.spec->host == "[::1]");
   CHECK(v6.spec->device == "[::1]:4533");
@@ -48,14 +49,13 @@ TEST_CASE("Rotator specs that parse") {
 
 TEST_CASE("Bad rotator specs say what is wrong and what is expected") {
   auto err = [](const char* s) {
-    SpecResult r = parse_rotator_spec(s);
+    const std::string_view text(s);
+    SpecResult r = text.starts_with("hamlib") ? parse_hamlib_spec(s)
+                   : text.starts_with("rotctld") ? parse_rotctld_spec(s)
+                                                 : parse_simulated_spec(s);
     CHECK_FALSE(r.spec);
     return r.error;
   };
-  CHECK(err("") == "bad --rotator '': empty; expected simulated, hamlib:MODEL:DEVICE[:BAUD] or rotctld:HOST[:PORT]");
-  CHECK(err("gs232:/dev/ttyS0") ==
-        "bad --rotator 'gs232:/dev/ttyS0': unknown rotator 'gs232'; expected simulated, hamlib:MODEL:DEVICE[:BAUD] or "
-        "rotctld:HOST[:PORT]");
   CHECK(err("simulated:fast") == "bad --rotator 'simulated:fast': simulated takes no parameters");
   CHECK(err("hamlib") == "bad --rotator 'hamlib': missing MODEL; expected hamlib:MODEL:DEVICE[:BAUD], e.g. hamlib:603:/dev/ttyUSB0:9600");
   CHECK(err("hamlib:gs232b:/dev/ttyUSB0").find("MODEL 'gs232b' is not a Hamlib model number (see `rotctl -l`)") !=
@@ -68,15 +68,16 @@ TEST_CASE("Bad rotator specs say what is wrong and what is expected") {
   CHECK(err("rotctld").find("missing HOST") != std::string::npos);
   CHECK(err("rotctld:").find("missing HOST") != std::string::npos);
   CHECK(err("rotctld:host:") .find("empty PORT") != std::string::npos);
-  CHECK(err("rotctld:host:http") == "bad --rotator 'rotctld:host:http': PORT 'http' is not a TCP port (1..65535)");
+  CHECK(err("rotctld:host:http") == "bad --rotator 'rotctld:host:http': PORT 'http' is not a TCP port (1..65535); "
+                                    "expected rotctld:HOST[:PORT], e.g. rotctld:localhost:4533");
   CHECK(err("rotctld:host:70000").find("not a TCP port") != std::string::npos);
   CHECK(err("rotctld:::1:4533").find("IPv6 address goes in brackets") != std::string::npos);
   CHECK(err("rotctld:[::1").find("unclosed '['") != std::string::npos);
 }
 
-TEST_CASE("make_rotator builds the simulated rotator on the given clock") {
+TEST_CASE("make_simulated_rotator builds the simulated rotator on the given clock") {
   ManualClock clock(from_civil(2026, 1, 1));
-  auto d = make_rotator(*parse_rotator_spec("simulated").spec, clock);
+  auto d = make_simulated_rotator(clock);
   REQUIRE(d);
   REQUIRE(d->as_adc());
   CHECK_FALSE(d->as_degrees());
@@ -91,7 +92,7 @@ TEST_CASE("A Hamlib rotator that cannot connect reports the fault and keeps retr
   t.backoff_min = std::chrono::milliseconds(20);
   t.backoff_max = std::chrono::milliseconds(50);
   // A serial rotator on a device that does not exist.
-  auto d = make_rotator(*parse_rotator_spec("hamlib:601:/nonexistent/ttyTB0:9600").spec, clock, {}, t);
+  auto d = make_hamlib_rotator(*parse_hamlib_spec("hamlib:601:/nonexistent/ttyTB0:9600").spec, t);
   REQUIRE(d->as_degrees());
   CHECK(d->description() == "hamlib 601 /nonexistent/ttyTB0 9600");
   Health h;

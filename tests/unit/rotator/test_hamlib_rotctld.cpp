@@ -132,15 +132,14 @@ TEST_CASE("HamlibRotator against rotctld: drive, read back, lose the daemon, rec
   REQUIRE_MESSAGE(daemon, "rotctld did not start on port " << port);
 
   const std::string spec_text = "rotctld:127.0.0.1:" + std::to_string(port);
-  SpecResult spec = parse_rotator_spec(spec_text);
+  SpecResult spec = parse_rotctld_spec(spec_text);
   REQUIRE(spec.spec);
   HamlibOptions timing;
   timing.poll = 100ms;
   timing.io_timeout = 500ms;
   timing.backoff_min = 100ms;
   timing.backoff_max = 400ms;
-  tb::station::ManualClock unused(tb::orbit::from_civil(2026, 1, 1));
-  auto driver = make_rotator(*spec.spec, unused, {}, timing);
+  auto driver = make_hamlib_rotator(*spec.spec, timing);
   RotatorDriver* drv = driver.get();
   CHECK(drv->description() == "rotctld " + spec.spec->device);
   Controller ctl(RotatorConfig{}, tb::station::RotorStart::north, std::move(driver));

@@ -315,10 +315,12 @@ TEST_CASE("trakbox satrak HOST[:PORT] COMMAND...: the command-line client") {
     CHECK(err.str().find("cannot connect") != std::string::npos);
   }
   std::string e;
-  CHECK(satrak::parse_host_port("[::1]:4002", e)->host == "::1");
-  CHECK(satrak::parse_host_port("host", e)->port == 4001);
-  CHECK_FALSE(satrak::parse_host_port("a:b:c", e));
-  CHECK_FALSE(satrak::parse_host_port(":4001", e));
+  CHECK(satrak::parse_rotator_spec("satrak:[::1]:4002", e)->host == "::1");
+  CHECK(satrak::parse_rotator_spec("satrak:host", e)->port == 4001);
+  CHECK_FALSE(satrak::parse_rotator_spec("satrak:a:b:c", e));
+  CHECK(e == "bad --rotator 'satrak:a:b:c': too many ':' (an IPv6 address goes in brackets); expected "
+             "satrak:HOST[:PORT], e.g. satrak:192.0.2.7:4001");
+  CHECK_FALSE(satrak::parse_rotator_spec("satrak::4001", e));
 }
 
 TEST_CASE("SatrakRotator: another Satrak ACU as trakbox's rotator, with lost connections retried") {
