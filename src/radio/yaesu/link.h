@@ -73,7 +73,9 @@ class Ft8xxLink final : public RadioLink {
   yaesu::Target target(Link l) const;
   void require(Link l) const;      // throws drop for a link this radio does not carry
   void ensure_satellite_mode();
-  void send(std::span<const std::uint8_t> bytes);   // a byte at a time, byte_gap after each
+  // A byte at a time, byte_gap after each; after a read command's last byte the reply is waited for
+  // instead (the radio has taken the command when it answers).
+  void send(std::span<const std::uint8_t> bytes, bool gap_after_last = true);
   SerialPort port_;
   Ft8xxOptions opt_;
   bool satellite_on_ = false;
