@@ -7,6 +7,7 @@ service restarts. With TRAKBOX_SCREENSHOT=PATH it writes the phone-size screensh
 (docs/web-phone.png)."""
 import math
 import os
+import re
 import shutil
 import sys
 import tempfile
@@ -151,6 +152,16 @@ def desktop(url):
         errors = console_errors(d)
         check(not errors, f"no console errors: {errors}")
         no_horizontal_scroll(d, "desktop 1280x800")
+        # Every satellite of the list says when it comes: a time, "always up" (geostationary and
+        # in sight) or "none in 24 h" (never up here): never a blank dash.
+        rows = poll("the tracking list", lambda: d.find_elements("css selector", "#list tbody tr"), 10)
+        said = {}
+        for r in rows:
+            aos = r.find_elements("tag name", "td")[2].text
+            check(re.fullmatch(r"\d\d:\d\d:\d\d|always up|none in 24 h", aos),
+                  f"{r.get_attribute('data-name')}: the AOS cell says {aos!r}")
+            said[aos if not aos[0].isdigit() else "a time"] = said.get(aos if not aos[0].isdigit() else "a time", 0) + 1
+        print(f"tracking list: {said}")
         shot = os.environ.get("TRAKBOX_SCREENSHOT_DESKTOP")
         if shot:
             d.save_screenshot(shot)
