@@ -1,7 +1,7 @@
 // The later TrakBox firmware's STATION.DAT (v3.20d-3.50b): seven numbered lines and `;` comments,
 // through the same parse_station_file / apply_station_file as the 1994 five-line file. The files in
 // tests/data/firmware/ were written from the format description
-// (/work/shared/reference/element-data-2026.md, "TrakBox files of the later firmware").
+// (docs/menus/2-3.md and docs/menus/6-7-8.md give the format).
 #include <doctest/doctest.h>
 
 #include <tuple>
