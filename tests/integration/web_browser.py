@@ -153,13 +153,14 @@ def desktop(url):
         check(not errors, f"no console errors: {errors}")
         no_horizontal_scroll(d, "desktop 1280x800")
         # Every satellite of the list says when it comes: a time, "always up" (geostationary and
-        # in sight) or "none in 24 h" (never up here): never a blank dash.
+        # in sight) or "none" in "> 24 h" (never up here): never a blank dash.
         rows = poll("the tracking list", lambda: d.find_elements("css selector", "#list tbody tr"), 10)
         said = {}
         for r in rows:
-            aos = r.find_elements("tag name", "td")[2].text
-            check(re.fullmatch(r"\d\d:\d\d:\d\d|always up|none in 24 h", aos),
-                  f"{r.get_attribute('data-name')}: the AOS cell says {aos!r}")
+            cells = [c.text for c in r.find_elements("tag name", "td")]
+            aos, when = cells[2], cells[4]
+            check(re.fullmatch(r"\d\d:\d\d:\d\d|always up|none", aos) and (aos != "none" or when == "> 24 h"),
+                  f"{r.get_attribute('data-name')}: the AOS cell says {aos!r}, in {when!r}")
             said[aos if not aos[0].isdigit() else "a time"] = said.get(aos if not aos[0].isdigit() else "a time", 0) + 1
         print(f"tracking list: {said}")
         shot = os.environ.get("TRAKBOX_SCREENSHOT_DESKTOP")

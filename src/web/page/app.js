@@ -98,10 +98,10 @@ function drawList(st) {
       tr = fresh;
     }
     tr.className = st.tracking && st.tracking.followed === e.name ? "tracked" : "";
-    // No pass in the day searched (a satellite that never comes up here) and one that never sets
-    // (geostationary) are said, not shown as a blank.
+    // No pass in the day searched (a satellite that never comes up here: "none", in "> 24 h") and one
+    // that never sets (geostationary: "always up") are said, not shown as a blank.
     const np = e.next_pass;
-    const when = !np ? ["none in 24 h", "", ""]
+    const when = !np ? ["none", "", "> 24 h"]
                : np.always_up ? ["always up", fixed(np.max_el_deg, 0) + "°", "up"]
                : [hhmm(np.aos), fixed(np.max_el_deg, 0) + "°", np.in_progress ? "up" : countdown(np.aos, st.time)];
     const cells = [e.number, e.name, ...when, fixed(e.element_age_days, 1) + " d"];
