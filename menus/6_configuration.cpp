@@ -110,8 +110,10 @@ std::vector<std::string> configuration_lines(const store::Model& m) {
   std::vector<std::string> out;
   out.push_back(fmt("Callsign:%s  Lat:%s Long:%s Hgt:%s", st.callsign.c_str(), cfg::fmt1(st.lat_deg).c_str(),
                     cfg::fmt1(st.lon_deg).c_str(), cfg::fmt1(st.height_m).c_str()));
+  // An overlap rotator's travel (--az-travel) is shown only when it is not the TrakBox's 360.
   out.push_back(label("ADC span value") + fmt("AZ:%4d - %4d  EL:%4d - %4d", r.az_span.min, r.az_span.max, r.el_span.min,
-                                              r.el_span.max));
+                                              r.el_span.max) +
+                (r.az_travel_deg != 360.0 ? fmt("  travel %.0f deg", r.az_travel_deg) : ""));
   out.push_back(label("Dead band") + "AZ:" + cfg::fmt1(r.az_dead_band) + " EL:" + cfg::fmt1(r.el_dead_band) +
                 "  Skew AZ:" + cfg::fmt1(r.az_skew) + " EL:" + cfg::fmt1(r.el_skew));
   out.push_back(label("Antenna parking") +

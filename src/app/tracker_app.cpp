@@ -33,6 +33,7 @@
 #include "satrak/unit.h"
 #include "station/clock.h"
 #include "app/stored_drivers.h"
+#include "rotator/config.h"
 #include "store/drivers.h"
 #include "tracker/elements_refresh.h"
 #include "tracker/events.h"
@@ -483,6 +484,13 @@ std::optional<std::string> open_udp_events(StationApp& app, const TrackerConfig&
 // (stored_drivers.h; what that says goes to the log and where the operator sees it) and the GPS.
 std::optional<std::string> apply_command_line(TrackerConfig& c, Startup& startup, spdlog::logger& log) {
   if (c.cross_limit_sector) startup.model.rotator.cross_limit_sector = *c.cross_limit_sector;
+  if (c.az_travel_deg) {
+    // Checked with the stored rotator settings before anything is kept (limits, parking, span).
+    rotator::RotatorConfig next = startup.model.rotator;
+    next.az_travel_deg = *c.az_travel_deg;
+    if (const auto problems = rotator::validate(next); !problems.empty()) return "--az-travel: " + problems.front();
+    startup.model.rotator = next;
+  }
   if (c.event_min_el_deg) startup.model.event_min_el_deg = *c.event_min_el_deg;
   std::vector<std::string> said;
   if (c.rotor_control) {
@@ -594,7 +602,7 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
       std::chrono::seconds(c.event_lead_s));
   app.start(std::chrono::milliseconds(c.tick_ms));
   // Stored options given on the command line are stored now, not only at the next save.
-  if (startup.ram_lost || startup.fresh || c.rotor_control || c.event_min_el_deg) app.save();
+  if (startup.ram_lost || startup.fresh || c.rotor_control || c.event_min_el_deg || c.az_travel_deg) app.save();
   log->info("trakbox {} started, state {}", kVersion, file.path().string());
   stopped_line.started = true;
 

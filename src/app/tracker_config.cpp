@@ -76,6 +76,8 @@ std::vector<OptionSpec> tracker_option_specs() {
       {"cross-limit-sector", "yes|no", "when the rotator limits split its travel (the rotor stop inside them): yes, "
                                        "they are pointing limits the antenna may cross between passes; no (the "
                                        "factory setting), they are barriers (stored)"},
+      {"az-travel", "DEG", "azimuth travel from the rotor stop, 360 to 720: 360 (the factory setting), 450 for an "
+                           "overlap rotator such as a G-5500 or a GS-232 in 450-degree mode (stored)"},
       {"rotor-control", "on|off", "on: the antenna follows the satellite tracked, from the start (a service moves "
                                   "it with nobody attached); off: it stays where it is (the E key, menu 6-R; stored)"},
       {"event-min-el", "DEG", "no AOS/LOS event nor hook for a pass whose maximum elevation stays under DEG, "
@@ -350,6 +352,8 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
     if (*x == "yes" || *x == "no") c.cross_limit_sector = *x == "yes";
     else r.fail("--cross-limit-sector", "expected yes or no; found '" + *x + "'");
   }
+  c.az_travel_deg = r.number("az-travel", false, "degrees, 360 to 720",
+                             Range{rotator::limits::kTravelMinDeg, rotator::limits::kTravelMaxDeg});
   if (const auto x = o.value("rotor-control")) {
     if (*x == "on" || *x == "off") c.rotor_control = *x == "on";
     else r.fail("--rotor-control", "expected on or off; found '" + *x + "'");

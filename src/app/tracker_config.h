@@ -80,6 +80,9 @@ struct TrackerConfig {
   // --cross-limit-sector yes|no: whether limits that split the rotator's travel may be crossed
   // between passes (RotatorConfig::cross_limit_sector); stored in the state when given.
   std::optional<bool> cross_limit_sector;
+  // --az-travel DEG: the rotator's azimuth travel from its stop (RotatorConfig::az_travel_deg: 450
+  // for an overlap rotator); stored in the state when given.
+  std::optional<double> az_travel_deg;
   // --rotor-control on|off: the E key's switch, stored (a service starts moving its antenna);
   // --event-min-el DEG: no AOS/LOS event for a pass whose maximum stays under it (stored).
   std::optional<bool> rotor_control;

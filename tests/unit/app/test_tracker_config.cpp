@@ -58,6 +58,15 @@ TEST_CASE("values are typed and ranged") {
   CHECK_FALSE(o.config->rotator.rotator);
 }
 
+TEST_CASE("--az-travel: an overlap rotator's travel, 360 to 720 degrees") {
+  const auto o = parse({"--az-travel", "450"});
+  REQUIRE(o.config);
+  CHECK(o.config->az_travel_deg == 450.0);
+  CHECK_FALSE(parse({}).config->az_travel_deg);
+  CHECK(error_of({"--az-travel", "300"}).rfind("--az-travel: ", 0) == 0);
+  CHECK(error_of({"--az-travel", "many"}).rfind("--az-travel: ", 0) == 0);
+}
+
 TEST_CASE("the first bad value is named, and nothing is configured") {
   CHECK(error_of({"--baud", "300"}) == "--baud: expected 1200, 2400, 4800, 9600 or 19200; found '300'");
   CHECK(error_of({"--log-level", "loud"}) == "--log-level: expected error, warn, info or debug; found 'loud'");

@@ -349,6 +349,13 @@ TEST_CASE("6-0 shows the later firmware's items only when they differ from the f
   CHECK(lines[15] == "Rotator error    Detection off");
 }
 
+TEST_CASE("6-0 shows an overlap rotator's travel, and nothing for the TrakBox's 360") {
+  store::Model m = store::factory_defaults();
+  CHECK(menus::configuration_lines(m)[1] == "ADC span value   AZ:   0 - 1023  EL:   0 -  511");
+  m.rotator.az_travel_deg = 450;
+  CHECK(menus::configuration_lines(m)[1] == "ADC span value   AZ:   0 - 1023  EL:   0 -  511  travel 450 deg");
+}
+
 TEST_CASE("6-0 and the status bar name the drivers (issue 30)") {
   store::Model m = store::factory_defaults();
   m.rotator_driver = "hamlib:603:/dev/ttyUSB0";
