@@ -80,7 +80,7 @@ orbit::UtcTime ask_start(term::Terminal& t, Services& s) {
     t.write(format_date(now) + " " + format_time(now) +
             " Starting Day/Time ? [YY/MM/DD HH:MM:SS] Day of the Year [T] >");
     t.flush();
-    const std::string a = trim(read_line(t));
+    const std::string a = text::trimmed(read_line(t));
     if (a.empty()) return whole_seconds(s.clock.now());
     const auto r = parse_start(a, now);
     if (const auto* time = std::get_if<orbit::UtcTime>(&r)) return *time;
@@ -93,7 +93,7 @@ long ask_step_part(term::Terminal& t, const char* prompt, long fallback, long hi
   for (;;) {
     t.write(prompt);
     t.flush();
-    const std::string a = trim(read_line(t));
+    const std::string a = text::trimmed(read_line(t));
     if (a.empty()) return fallback;
     const auto v = parse_integer(a);
     if (v && *v >= 0 && *v <= hi) return *v;

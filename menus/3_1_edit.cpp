@@ -47,7 +47,7 @@ void ask_field(term::Terminal& t, const char* label, const std::string& shown, c
     std::snprintf(buf, sizeof buf, "%-16s: %-13s%s", label, shown.c_str(), prompt);
     t.write(buf);
     t.flush();
-    const std::string a = trim(read_line(t));
+    const std::string a = text::trimmed(read_line(t));
     const std::optional<std::string> error = a.empty() ? (keep ? keep() : std::nullopt) : accept(a);
     if (!error) return;
     t.line("  " + *error);

@@ -53,7 +53,7 @@ void show_refresh(term::Terminal& t, const store::RefreshSettings& r, const trac
 void add_source(term::Terminal& t, Services& s) {
   t.write("URL or file: ");
   t.flush();
-  const std::string url = trim(read_line(t, store::kRefreshMaxUrl + 10));
+  const std::string url = text::trimmed(read_line(t, store::kRefreshMaxUrl + 10));
   if (url.empty()) return;
   if (const auto why = store::add_refresh_source(s.model.refresh, url)) {
     t.line("  Not added: " + *why);
@@ -68,7 +68,7 @@ void delete_source(term::Terminal& t, Services& s) {
   if (sources.empty()) return;
   t.write("Delete which (1-" + std::to_string(sources.size()) + ")? ");
   t.flush();
-  const std::string a = trim(read_line(t));
+  const std::string a = text::trimmed(read_line(t));
   const auto n = parse_integer(a);
   if (!n || *n < 1 || *n > static_cast<long>(sources.size())) {
     if (!a.empty()) t.line("  '" + a + "': enter a number from 1 to " + std::to_string(sources.size()));
@@ -133,7 +133,7 @@ std::optional<std::string> fetch(term::Terminal& t, const std::string& where, st
 void satnogs(term::Terminal& t, Services& s) {
   t.write("SatNOGS transmitters, file or URL (Enter: db.satnogs.org): ");
   t.flush();
-  std::string where = trim(read_line(t, 400));
+  std::string where = text::trimmed(read_line(t, 400));
   if (where.empty()) where = "https://db.satnogs.org/api/transmitters/?format=json";
   const bool replace = ask_yes_no(t, "Replace the records you entered yourself too ? [Y/N] ? ");
   std::string text;

@@ -125,8 +125,8 @@ std::vector<std::string> configuration_lines(const store::Model& m) {
                                         " EL:" + cfg::fmt1(r.el_limit_min) + "-" + cfg::fmt1(r.el_limit_max) +
                                         (r.cross_limit_sector ? "  cross between passes" : "")
                                   : "Off"));
-  out.push_back(label("Preset position") + trim(preset_lines(r).front()) +
-                (preset_lines(r).size() > 1 ? " " + trim(preset_lines(r).back()) : ""));
+  out.push_back(label("Preset position") + text::trimmed(preset_lines(r).front()) +
+                (preset_lines(r).size() > 1 ? " " + text::trimmed(preset_lines(r).back()) : ""));
   std::string cat = std::string(radio::to_string(rc.rig)) +
                     (rc.cat_policy == radio::CatPolicy::aos_only ? " AOS" : " Full");
   if (rc.rig == radio::Rig::icom) cat += fmt("  RX:%02XH TX:%02XH", rc.icom_rx_address, rc.icom_tx_address);
@@ -195,7 +195,7 @@ std::string fmt1(double v) {
 std::string answer(term::Terminal& t, std::string_view prompt) {
   t.write(prompt);
   t.flush();
-  std::string a = trim(read_line(t));
+  std::string a = text::trimmed(read_line(t));
   if (a == "Q" || a == "q") throw Quit{};
   return a;
 }

@@ -31,7 +31,6 @@ char ask_key(term::Terminal& t, std::string_view prompt, std::string_view keys, 
   return *c;
 }
 
-std::string trim(std::string_view s) { return std::string(text::trim(s, text::kWhitespace)); }
 
 void run_menu(term::Terminal& t, const std::function<void()>& show, std::string_view prompt,
               const std::function<MenuStep(char key)>& choose) {
@@ -67,7 +66,7 @@ std::string edit_text(term::Terminal& t, std::string_view label, std::string_vie
     t.write(current);
     t.write("  ");
     t.flush();
-    std::string answer = trim(read_line(t));
+    std::string answer = text::trimmed(read_line(t));
     if (t.last_line_had_non_ascii()) {
       // Refused, not kept without the letters the terminal could not give ("PRIS" for "Pàris").
       t.line("  only ASCII characters are taken here (A-Z, a-z, 0-9 and punctuation): '" + answer +
@@ -150,7 +149,7 @@ std::optional<int> choose_satellite(term::Terminal& t, std::string_view title, c
     std::string a;
     try {
       EscapeLeaves esc(t);
-      a = trim(read_line(t));
+      a = text::trimmed(read_line(t));
     } catch (const Escaped&) {
       return std::nullopt;
     }

@@ -8,6 +8,7 @@
 
 #include "menus/term/terminal.h"
 #include "orbit/time.h"
+#include "util/text.h"   // text::trimmed, the menus' answers as read
 
 namespace tb::menus {
 
@@ -31,8 +32,6 @@ class EscapeLeaves {
 
 // Reads a line, throwing InputClosed when input ends (and Escaped on Esc under EscapeLeaves).
 std::string read_line(term::Terminal& t, std::size_t max_length = 80);
-// The text without the white space around it.
-std::string trim(std::string_view text);
 // A [Y/N] question: prints the prompt, returns true for Y. Any other key is No.
 bool ask_yes_no(term::Terminal& t, std::string_view prompt);
 // A single-key choice among `keys` (upper-cased); Enter returns '\r' when allow_enter.

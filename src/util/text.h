@@ -34,6 +34,11 @@ constexpr std::string_view trim(std::string_view s, std::string_view chars = kBl
   return trim_left(trim_right(s, chars), chars);
 }
 
+// trim() as a string of its own (what a prompt's answer is kept as), any white space taken off.
+inline std::string trimmed(std::string_view s, std::string_view chars = kWhitespace) {
+  return std::string(trim(s, chars));
+}
+
 inline std::string lower(std::string_view s) {
   std::string r(s);
   for (char& c : r) c = to_lower(c);

@@ -117,3 +117,9 @@ TEST_CASE("append_fixed writes what printf's %W.Pf writes, character for charact
     for (int p = 0; p <= 9; ++p) differ += fixed(v, 16, p) != printf_fixed(v, 16, p);
   CHECK(differ == 0);
 }
+
+TEST_CASE("trimmed: trim as a string of its own, any white space by default") {
+  CHECK(tb::text::trimmed(" \t ISS \r\n") == "ISS");
+  CHECK(tb::text::trimmed("  ") == "");
+  CHECK(tb::text::trimmed("\tA B\t", " ") == "\tA B\t");   // only the characters given
+}
