@@ -99,7 +99,7 @@ RadioSpecParse parse_radio_spec(std::string_view text, std::string_view option) 
     std::string why;
     const auto hp = inet::parse_host_port(peer, why, 4532);
     if (!hp) return error(quoted + why + "; expected rigctld[:HOST[:PORT]][:split|:mainsub]");
-    spec.host = hp->host.find(':') != std::string::npos ? "[" + hp->host + "]" : hp->host;   // Hamlib's pathname form
+    spec.host = inet::host_text(hp->host);   // Hamlib's pathname form
     spec.port = hp->port;
     return {spec, {}};
   }

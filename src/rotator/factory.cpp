@@ -70,7 +70,7 @@ SpecResult parse_rotctld_spec(std::string_view text) {
   RotatorSpec s;
   s.kind = RotatorSpec::Kind::rotctld;
   s.model = ROT_MODEL_NETROTCTL;
-  s.host = hp->host.find(':') != std::string::npos ? "[" + hp->host + "]" : hp->host;   // Hamlib's pathname form
+  s.host = inet::host_text(hp->host);   // Hamlib's pathname form
   s.port = hp->port;
   s.device = s.host + ":" + std::to_string(s.port);
   return {s, {}};

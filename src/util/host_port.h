@@ -83,10 +83,13 @@ inline std::optional<HostPort> parse_host_port(std::string_view text, std::strin
   return out;
 }
 
-// The text parse_host_port reads back: "[2001:db8::2]:9000" for an IPv6 address.
-inline std::string host_port_text(const HostPort& h) {
-  const std::string host = h.host.find(':') != std::string::npos ? "[" + h.host + "]" : h.host;
-  return host + ":" + std::to_string(h.port);
+// A host as it is written before ":PORT": an IPv6 address in brackets ("[2001:db8::2]"), as
+// parse_host_port reads it back and Hamlib takes it in a pathname.
+inline std::string host_text(std::string_view host) {
+  return host.find(':') != std::string_view::npos ? "[" + std::string(host) + "]" : std::string(host);
 }
+
+// The text parse_host_port reads back: "[2001:db8::2]:9000" for an IPv6 address.
+inline std::string host_port_text(const HostPort& h) { return host_text(h.host) + ":" + std::to_string(h.port); }
 
 }  // namespace tb::inet
