@@ -160,6 +160,7 @@ void Tuner::pair_from(bool downlink) {
   } else {
     sat_.downlink_hz = t->downlink_for(sat_.uplink_hz);
     sent_down_.reset();
+    moved_uplink_ = false;
   }
 }
 
@@ -250,7 +251,6 @@ TuneCommands Tuner::compute(double elevation_deg, double rr) {
     if (send_up)
       emit(tuning_.uplink_radio_hz, sent_up_, sat_.uplink_mode, sent_up_mode_, cmd.uplink_hz,
            cmd.uplink_mode);
-    cmd.uplink_first = std::exchange(moved_uplink_, false) && cmd.uplink_hz;
     return cmd;
   }
 
@@ -278,6 +278,7 @@ TuneCommands Tuner::compute(double elevation_deg, double rr) {
 TuneCommands Tuner::update(double elevation_deg, double rr) {
   const bool was_up = was_aos_.value_or(true);  // the first tick below the horizon parks too
   TuneCommands cmd = compute(elevation_deg, rr);
+  const std::optional<bool> moved_uplink = std::exchange(moved_uplink_, std::nullopt);
   const RadioParking& park = config_.parking;
   if (park.enabled && !at_aos(elevation_deg)) {
     // From LOS to the next AOS the radios sit on the parking frequencies: one set of commands at
@@ -297,8 +298,9 @@ TuneCommands Tuner::update(double elevation_deg, double rr) {
   if (reversed()) {
     std::swap(cmd.downlink_hz, cmd.uplink_hz);
     std::swap(cmd.downlink_mode, cmd.uplink_mode);
-    cmd.uplink_first = !cmd.uplink_first && cmd.uplink_hz && cmd.downlink_hz;   // the same link, by its other name
   }
+  // The link just moved goes first: the radio's uplink when it carries the one that moved.
+  cmd.uplink_first = moved_uplink && *moved_uplink != reversed() && cmd.uplink_hz;
   return cmd;
 }
 

@@ -204,7 +204,9 @@ class Tuner {
     double last_turn_s;
   };
   std::optional<Waiting> waiting_;
-  bool moved_uplink_ = false;   // settle() just moved the uplink: it goes first at the next update
+  // Which link pair_from() just moved (true: the uplink, in the satellite's terms): it goes first at
+  // the next update.
+  std::optional<bool> moved_uplink_;
   std::string correction_key_;
 
   RadioConfig config_;

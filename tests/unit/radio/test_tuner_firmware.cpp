@@ -97,6 +97,7 @@ TEST_CASE("FREQ.DAT ir on an Icom rig swaps main and sub; on a Kenwood rig it do
   CHECK(*swapped.uplink_hz == 435'850'000);
   CHECK(*swapped.uplink_mode == Mode::usb);
   CHECK(*icom.last_sent_downlink_hz() == 435'850'000);  // the Tuner's own links keep their meaning
+  CHECK_FALSE(swapped.uplink_first);                    // an ordinary update: downlink radio first
 
   c.rig = Rig::kenwood;
   Tuner kenwood(c);
