@@ -39,7 +39,8 @@ std::vector<OptionSpec> tracker_option_specs() {
       {"radio", "SPEC", "simulated (default), a model MODEL:DEV[:BAUD] (ic9700, ic9100, ic910h, ft847, ft817, "
                         "ts2000 ...; `trakbox --radio list` prints them all), icom:DEV, kenwood:DEV, yaesu:DEV, "
                         "cat:DEV (rig of menu 6-7), hamlib:MODEL:DEV[:BAUD] (MODEL a number or a name such as "
-                        "IC-9700), rigctld[:HOST[:PORT]]"},
+                        "IC-9700), rigctld[:HOST[:PORT]], gqrx[:HOST[:PORT]] or sdrpp[:HOST[:PORT]] (receivers: "
+                        "the downlink only)"},
       {"uplink-radio", "SPEC", "a second radio for the uplink, in the same forms as --radio (which then drives "
                                "the downlink); stored, so later starts use it too; none: one radio again"},
       {"dial-rest", "MS", "dial follow: the other link moves once the operator's knob has rested this many "

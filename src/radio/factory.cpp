@@ -80,6 +80,17 @@ RadioSpecParse parse_radio_spec(std::string_view text, std::string_view option) 
       spec.device = parts[0];
       return {spec, {}};
     }
+    case SpecForm::receiver: {
+      spec.host = "127.0.0.1";
+      spec.port = m->port;
+      if (rest.empty()) return {spec, {}};
+      std::string why;
+      const auto hp = inet::parse_host_port(rest, why, m->port);
+      if (!hp) return error(quoted + why + "; expected " + spec_form(*m));
+      spec.host = inet::host_text(hp->host);
+      spec.port = hp->port;
+      return {spec, {}};
+    }
     case SpecForm::hamlib:
     case SpecForm::rigctld:
       break;

@@ -72,8 +72,23 @@ void WorkerRotator::Shared::run() {
       backoff = std::min(backoff * 2, timing.backoff_max);
       continue;
     }
+    // Open is not connected: the first valid reply is.
+    LinkReport first;
+    if (!link->poll(first, error)) {
+      const std::string who = link->peer().empty() ? label : link->peer();
+      link->close();
+      const std::string msg = "no answer from " + who + ": " + link->silent_hint() + " (" + error + ")";
+      set_fault(msg);
+      if (!reported) spdlog::warn("rotator: {}; trying again, less often each time", msg);
+      reported = true;
+      if (!wait(backoff)) break;
+      backoff = std::min(backoff * 2, timing.backoff_max);
+      continue;
+    }
     {
       std::lock_guard lk(m);
+      if (first.position) pos = first.position;
+      if (first.limits) limits = *first.limits;
       connected = true;
       health.state = LinkState::ok;
       health.message.clear();
