@@ -29,6 +29,10 @@ std::unique_ptr<rotator::RotatorDriver> make_hamlib(const RotatorChoice& choice,
   return rotator::make_hamlib_rotator(*choice.rotator);
 }
 
+std::unique_ptr<rotator::RotatorDriver> make_easycomm(const RotatorChoice& choice, const RotatorContext&) {
+  return rotator::make_easycomm_rotator(*choice.rotator);
+}
+
 std::unique_ptr<rotator::RotatorDriver> make_satrak(const RotatorChoice& choice, const RotatorContext&) {
   return std::make_unique<satrak::SatrakRotator>(*choice.satrak);
 }
@@ -40,6 +44,12 @@ constexpr RotatorKind kKinds[] = {
      .parse = parse_driver<rotator::parse_hamlib_spec>, .make = make_hamlib},
     {.name = "rotctld", .form = "rotctld:HOST[:PORT]", .what = "a rotctld daemon (Hamlib NET rotctl; PORT 4533)",
      .parse = parse_driver<rotator::parse_rotctld_spec>, .make = make_hamlib},
+    {.name = "easycomm3", .form = "easycomm3:DEVICE[:BAUD]",
+     .what = "an Easycomm III controller (SatNOGS rotator; BAUD 19200), natively",
+     .parse = parse_driver<rotator::parse_easycomm_spec>, .make = make_easycomm},
+    {.name = "easycomm2", .form = "easycomm2:DEVICE[:BAUD]",
+     .what = "an Easycomm II controller (SARCNET, REF, K3NG; BAUD 9600), natively",
+     .parse = parse_driver<rotator::parse_easycomm_spec>, .make = make_easycomm},
     {.name = "satrak", .form = "satrak:HOST[:PORT]", .what = "another Satrak ACU, over TCP (PORT 4001)",
      .parse = parse_satrak, .make = make_satrak},
 };

@@ -31,6 +31,9 @@ struct LinkReport {
   std::optional<AzEl> position;
   std::optional<AxisMotion> motion;
   std::optional<LimitFlags> limits;
+  // A fault the controller reported of its own (Easycomm's "AL..." line): the link stays up; the
+  // health shows it (a fault, said once in the log) until the controller has been quiet 10 s.
+  std::optional<std::string> alarm;
 };
 
 // Every call but close() returns false when the link is lost (or could not be opened), with
