@@ -312,8 +312,10 @@ bool WorkerRadio::connect(Lock& lock) {
   busy_ = true;
   lock.unlock();
   std::optional<LinkError> error;
+  bool opened = false;
   try {
     link_->open();
+    opened = true;
     answers();
   } catch (const LinkError& e) {
     error = e;
@@ -321,7 +323,9 @@ bool WorkerRadio::connect(Lock& lock) {
   lock.lock();
   busy_ = false;
   if (error) {
-    fail(error->what(), LinkError::Action::reconnect, error->hold_off);
+    // A port that opens on a silent radio is asked again as a silent radio is (at most retry_max
+    // apart: it is tuned within a second or two of answering), one fault all the while.
+    fail(error->what(), opened ? LinkError::Action::retry : LinkError::Action::reconnect, error->hold_off);
     link_fault_ = true;
     return false;
   }
