@@ -45,10 +45,10 @@ constexpr RotatorKind kKinds[] = {
     {.name = "rotctld", .form = "rotctld:HOST[:PORT]", .what = "a rotctld daemon (Hamlib NET rotctl; PORT 4533)",
      .parse = parse_driver<rotator::parse_rotctld_spec>, .make = make_hamlib},
     {.name = "easycomm3", .form = "easycomm3:DEVICE[:BAUD]",
-     .what = "an Easycomm III controller (SatNOGS rotator; BAUD 19200), natively",
+     .what = "Easycomm III natively (SatNOGS rotator; BAUD 19200)",
      .parse = parse_driver<rotator::parse_easycomm_spec>, .make = make_easycomm},
     {.name = "easycomm2", .form = "easycomm2:DEVICE[:BAUD]",
-     .what = "an Easycomm II controller (SARCNET, REF, K3NG; BAUD 9600), natively",
+     .what = "Easycomm II natively (SARCNET, REF, K3NG; BAUD 9600)",
      .parse = parse_driver<rotator::parse_easycomm_spec>, .make = make_easycomm},
     {.name = "satrak", .form = "satrak:HOST[:PORT]", .what = "another Satrak ACU, over TCP (PORT 4001)",
      .parse = parse_satrak, .make = make_satrak},
@@ -85,6 +85,11 @@ std::string rotator_list_text() {
     form.resize(std::max<std::size_t>(form.size(), 28), ' ');
     out += form + " " + std::string(k.what) + "\n";
   }
+  // The controllers most stations own, by Hamlib's number (rotctl -l, Hamlib 4.5) for hamlib:MODEL.
+  out += "\nHamlib's numbers (hamlib:MODEL:DEVICE[:BAUD]) of common controllers:\n"
+         "  GS-232A 601, GS-232B 603 (az only 611), SPID Rot2Prog 901, Rot1Prog 902,\n"
+         "  SPID MD-01/02 in Rot2Prog mode 903, Easycomm I 201, II 202, III 204;\n"
+         "  a K3NG controller answers GS-232B (603) and Easycomm (202, 204).\n";
   return out;
 }
 
