@@ -51,6 +51,8 @@ std::vector<OptionSpec> tracker_option_specs() {
       {"satrak-port", "N", "Satrak ACU protocol on TCP port N (default 4001; 0 turns it off)"},
       {"satrak-bind", "ADDR", "address the Satrak server listens on (default 127.0.0.1)"},
       {"rotctld-port", "N", "answer the rotctld protocol on TCP port N (4533 by convention; off by default)"},
+      {"pst-port", "N", "take PstRotator's UDP commands on port N (12000 by convention; replies to the sender's "
+                        "next port; off by default)"},
       {"rigctld-port", "N", "answer the rigctld protocol on TCP port N (4532 by convention; off by default)"},
       {"host-port", "N", "host mode (menu 7's commands) on TCP port N (off by default)"},
       {"http-port", "N", "the web page and its API (docs/web-api.md) on TCP port N (the service's is 8073; off by "
@@ -341,6 +343,7 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
     if (const auto v = r.integer(name, false, "a TCP port 1 to 65535", Range{1, 65535})) out = static_cast<int>(*v);
   };
   port("rotctld-port", c.rotctld_port);
+  if (const auto v = r.integer("pst-port", false, "a UDP port 1 to 65534", Range{1, 65534})) c.pst_port = static_cast<int>(*v);
   port("rigctld-port", c.rigctld_port);
   port("host-port", c.host_port);
   port("http-port", c.http_port);
