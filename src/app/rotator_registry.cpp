@@ -33,6 +33,10 @@ std::unique_ptr<rotator::RotatorDriver> make_easycomm(const RotatorChoice& choic
   return rotator::make_easycomm_rotator(*choice.rotator);
 }
 
+std::unique_ptr<rotator::RotatorDriver> make_pst(const RotatorChoice& choice, const RotatorContext&) {
+  return rotator::make_pst_rotator(*choice.rotator);
+}
+
 std::unique_ptr<rotator::RotatorDriver> make_satrak(const RotatorChoice& choice, const RotatorContext&) {
   return std::make_unique<satrak::SatrakRotator>(*choice.satrak);
 }
@@ -50,6 +54,9 @@ constexpr RotatorKind kKinds[] = {
     {.name = "easycomm2", .form = "easycomm2:DEVICE[:BAUD]",
      .what = "Easycomm II natively (SARCNET, REF, K3NG; BAUD 9600)",
      .parse = parse_driver<rotator::parse_easycomm_spec>, .make = make_easycomm},
+    {.name = "pstrotator", .form = "pstrotator:HOST[:PORT]",
+     .what = "PstRotator's UDP (CSN S.A.T.; PORT 12000, replies +1)",
+     .parse = parse_driver<rotator::parse_pstrotator_spec>, .make = make_pst},
     {.name = "satrak", .form = "satrak:HOST[:PORT]", .what = "another Satrak ACU, over TCP (PORT 4001)",
      .parse = parse_satrak, .make = make_satrak},
 };

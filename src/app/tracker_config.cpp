@@ -52,7 +52,7 @@ std::vector<OptionSpec> tracker_option_specs() {
       {"satrak-bind", "ADDR", "address the Satrak server listens on (default 127.0.0.1)"},
       {"rotctld-port", "N", "answer the rotctld protocol on TCP port N (4533 by convention; off by default)"},
       {"pst-port", "N", "take PstRotator's UDP commands on port N (12000 by convention; replies to the sender's "
-                        "next port; off by default)"},
+                        "port N+1; off by default)"},
       {"rigctld-port", "N", "answer the rigctld protocol on TCP port N (4532 by convention; off by default)"},
       {"host-port", "N", "host mode (menu 7's commands) on TCP port N (off by default)"},
       {"http-port", "N", "the web page and its API (docs/web-api.md) on TCP port N (the service's is 8073; off by "

@@ -34,8 +34,8 @@ void PstServer::receive() {
     if (ec == asio::error::operation_aborted) return;
     if (!ec) {
       const std::string from = sender_.address().to_string();
-      // Replies go to the sender's next port, as PstRotator's (12000 -> 12001).
-      const udp::endpoint back(sender_.address(), static_cast<std::uint16_t>(sender_.port() + 1));
+      // Replies go to the sender's address on this server's next port, as PstRotator's (12000 -> 12001).
+      const udp::endpoint back(sender_.address(), static_cast<std::uint16_t>(port_ + 1));
       try {
         for (const std::string& reply : handler_.handle(std::string_view(buf_.data(), n), from)) {
           boost::system::error_code send_ec;

@@ -5,9 +5,9 @@
 // rotctld's set_pos does. Azimuth and elevation come in datagrams of their own; each moves the
 // antenna to it and to the other axis's last one (the antenna's own while none came). AZ? and EL?
 // are answered with where the antenna is ("AZ:297.0"), to the sender's address on the port after
-// the one it sent from, PstRotator's convention (12001 for a sender on 12000). Loopback unless
-// --listen; senders outside --allow are refused; a bad datagram is refused whole, counted and
-// logged (at most once a second), never acted on.
+// this server's, PstRotator's convention (commands to 12000, replies to the sender's 12001).
+// Loopback unless --listen; senders outside --allow are refused; a bad datagram is refused whole,
+// counted and logged (at most once a second), never acted on.
 #pragma once
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/udp.hpp>

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "rotator/easycomm_rotator.h"
+#include "rotator/pst_rotator.h"
 #include "util/host_port.h"
 #include "util/text.h"
 
@@ -99,6 +100,19 @@ SpecResult parse_easycomm_spec(std::string_view text) {
   return {s, {}};
 }
 
+SpecResult parse_pstrotator_spec(std::string_view text) {
+  std::string why;
+  const auto hp = inet::parse_host_port(after_name(text), why, 12000);
+  if (!hp) return fail(text, why + "; expected pstrotator:HOST[:PORT], e.g. pstrotator:192.168.1.20:12000");
+  if (hp->port >= 65535) return fail(text, "PORT " + std::to_string(hp->port) + ": its replies come to PORT+1, so at most 65534");
+  RotatorSpec s;
+  s.kind = RotatorSpec::Kind::pstrotator;
+  s.host = inet::host_text(hp->host);
+  s.port = hp->port;
+  s.device = s.host + ":" + std::to_string(s.port);
+  return {s, {}};
+}
+
 SpecResult parse_simulated_spec(std::string_view text) {
   if (text != "simulated") return fail(text, "simulated takes no parameters");
   return {RotatorSpec{}, {}};
@@ -110,6 +124,7 @@ std::string to_string(const RotatorSpec& s) {
     case RotatorSpec::Kind::hamlib:
       return "hamlib:" + std::to_string(s.model) + ":" + s.device + (s.baud ? ":" + std::to_string(s.baud) : "");
     case RotatorSpec::Kind::rotctld: return "rotctld:" + s.host + ":" + std::to_string(s.port);
+    case RotatorSpec::Kind::pstrotator: return "pstrotator:" + s.host + ":" + std::to_string(s.port);
     case RotatorSpec::Kind::easycomm2:
     case RotatorSpec::Kind::easycomm3:
       return std::string(s.kind == RotatorSpec::Kind::easycomm3 ? "easycomm3:" : "easycomm2:") + s.device +
@@ -128,6 +143,13 @@ std::unique_ptr<RotatorDriver> make_easycomm_rotator(const RotatorSpec& spec) {
   o.device = spec.device;
   o.baud = spec.baud;
   return std::make_unique<EasycommRotator>(o);
+}
+
+std::unique_ptr<RotatorDriver> make_pst_rotator(const RotatorSpec& spec) {
+  PstRotatorOptions o;
+  o.host = spec.host;
+  o.port = spec.port;
+  return std::make_unique<PstRotator>(o);
 }
 
 std::unique_ptr<RotatorDriver> make_hamlib_rotator(const RotatorSpec& spec, HamlibOptions hamlib) {

@@ -7,6 +7,7 @@
 //                                    defaults to 4533; an IPv6 HOST goes in brackets: [::1]:4533
 //   easycomm3:DEVICE[:BAUD]          an Easycomm III controller natively (SatNOGS; 19200 baud)
 //   easycomm2:DEVICE[:BAUD]          an Easycomm II controller natively (9600 baud)
+//   pstrotator:HOST[:PORT]           a box speaking PstRotator's UDP (PORT 12000; replies to PORT+1)
 #pragma once
 #include <memory>
 #include <optional>
@@ -19,7 +20,7 @@
 namespace tb::rotator {
 
 struct RotatorSpec {
-  enum class Kind { simulated, hamlib, rotctld, easycomm2, easycomm3 };
+  enum class Kind { simulated, hamlib, rotctld, easycomm2, easycomm3, pstrotator };
   Kind kind = Kind::simulated;
   int model = 0;        // hamlib: Hamlib model number (rotctld: 2)
   std::string device;   // hamlib: the serial device; rotctld: HOST:PORT (Hamlib's pathname)
@@ -41,6 +42,7 @@ SpecResult parse_simulated_spec(std::string_view text);
 SpecResult parse_hamlib_spec(std::string_view text);
 SpecResult parse_rotctld_spec(std::string_view text);
 SpecResult parse_easycomm_spec(std::string_view text);   // easycomm2:... and easycomm3:...
+SpecResult parse_pstrotator_spec(std::string_view text);
 // The spec written back ("simulated", "hamlib:603:/dev/ttyUSB0:9600", "rotctld:localhost:4533").
 std::string to_string(const RotatorSpec& spec);
 
@@ -50,5 +52,6 @@ std::string to_string(const RotatorSpec& spec);
 std::unique_ptr<RotatorDriver> make_simulated_rotator(const station::Clock& clock, const SimulatedRotatorParams& sim = {});
 std::unique_ptr<RotatorDriver> make_hamlib_rotator(const RotatorSpec& spec, HamlibOptions hamlib = {});
 std::unique_ptr<RotatorDriver> make_easycomm_rotator(const RotatorSpec& spec);
+std::unique_ptr<RotatorDriver> make_pst_rotator(const RotatorSpec& spec);
 
 }  // namespace tb::rotator

@@ -25,7 +25,7 @@ wide=$(awk 'length > 80' <<<"$out")
 
 out=$("$BIN" --rotator list) || bad "--rotator list exits non-zero"
 for form in simulated 'hamlib:MODEL:DEVICE[:BAUD]' 'rotctld:HOST[:PORT]' 'satrak:HOST[:PORT]' \
-            'easycomm3:DEVICE[:BAUD]' 'easycomm2:DEVICE[:BAUD]' 'GS-232B 603' 'Easycomm I 201, II 202, III 204'; do
+            'easycomm3:DEVICE[:BAUD]' 'easycomm2:DEVICE[:BAUD]' 'pstrotator:HOST[:PORT]' 'GS-232B 603' 'Easycomm I 201, II 202, III 204'; do
   grep -qF -- "$form" <<<"$out" || bad "--rotator list lacks $form"
 done
 wide=$(awk 'length > 80' <<<"$out")

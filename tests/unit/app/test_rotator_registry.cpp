@@ -29,11 +29,12 @@ TEST_CASE("--rotator: one table for the drivers and a Satrak ACU") {
   CHECK(app::parse_rotator("satrak:").error.find("expected satrak:HOST[:PORT]") != std::string::npos);
   CHECK(app::parse_rotator("").error ==
         "bad --rotator '': unknown rotator ''; expected simulated, hamlib:MODEL:DEVICE[:BAUD], rotctld:HOST[:PORT], "
-        "easycomm3:DEVICE[:BAUD], easycomm2:DEVICE[:BAUD], satrak:HOST[:PORT] (trakbox --rotator list)");
+        "easycomm3:DEVICE[:BAUD], easycomm2:DEVICE[:BAUD], pstrotator:HOST[:PORT], satrak:HOST[:PORT] (trakbox --rotator list)");
   CHECK(app::parse_rotator("simulated:fast").error == "bad --rotator 'simulated:fast': simulated takes no parameters");
   CHECK(app::parse_rotator("gs232:/dev/ttyS0").error ==
         "bad --rotator 'gs232:/dev/ttyS0': unknown rotator 'gs232'; expected simulated, hamlib:MODEL:DEVICE[:BAUD], "
-        "rotctld:HOST[:PORT], easycomm3:DEVICE[:BAUD], easycomm2:DEVICE[:BAUD], satrak:HOST[:PORT] (trakbox --rotator list)");
+        "rotctld:HOST[:PORT], easycomm3:DEVICE[:BAUD], easycomm2:DEVICE[:BAUD], pstrotator:HOST[:PORT], satrak:HOST[:PORT] "
+        "(trakbox --rotator list)");
   CHECK_FALSE(app::parse_rotator("gs232").choice.rotator);
 
   // Easycomm natively: the SatNOGS firmware's 19200 baud for III unless given, 9600 for II.
@@ -53,6 +54,12 @@ TEST_CASE("--rotator: one table for the drivers and a Satrak ACU") {
         "bad --rotator 'easycomm2:/dev/ttyUSB0:9601': BAUD '9601' is not a serial speed (1200..115200); expected "
         "easycomm2:DEVICE[:BAUD], e.g. easycomm2:/dev/ttyUSB0:9600");
   CHECK(app::parse_rotator("easycomm3:/dev/x:19200:7").error.find("too many fields") != std::string::npos);
+  auto box = app::parse_rotator("pstrotator:192.0.2.20");
+  REQUIRE(box.choice.rotator);
+  CHECK(box.choice.rotator->port == 12000);
+  CHECK(rotator::to_string(*box.choice.rotator) == "pstrotator:192.0.2.20:12000");
+  CHECK(app::parse_rotator("pstrotator:192.0.2.20:65535").error ==
+        "bad --rotator 'pstrotator:192.0.2.20:65535': PORT 65535: its replies come to PORT+1, so at most 65534");
 
   const std::string list = app::rotator_list_text();
   for (const app::RotatorKind& k : app::rotator_kinds()) CHECK(list.find(std::string(k.form)) != std::string::npos);
