@@ -55,7 +55,7 @@ constexpr RotatorKind kKinds[] = {
      .what = "Easycomm II natively (SARCNET, REF, K3NG; BAUD 9600)",
      .parse = parse_driver<rotator::parse_easycomm_spec>, .make = make_easycomm},
     {.name = "pstrotator", .form = "pstrotator:HOST[:PORT]",
-     .what = "PstRotator's UDP (CSN S.A.T.; PORT 12000, replies +1)",
+     .what = "PstRotator's UDP (CSN S.A.T.; PORT 12000)",
      .parse = parse_driver<rotator::parse_pstrotator_spec>, .make = make_pst},
     {.name = "satrak", .form = "satrak:HOST[:PORT]", .what = "another Satrak ACU, over TCP (PORT 4001)",
      .parse = parse_satrak, .make = make_satrak},
