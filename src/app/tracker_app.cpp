@@ -386,6 +386,11 @@ nlohmann::json servers_json(const Servers& s) {
                    {"evicted", st.evicted},
                    {"dropped_slow", st.dropped_slow}});
   }
+  if (s.pst) {
+    const netctl::PstStats& st = s.pst->stats();
+    out.push_back({{"name", "pstrotator"}, {"port", s.pst->port()}, {"taken", st.taken}, {"refused_bad", st.refused_bad},
+                   {"refused_not_allowed", st.refused_not_allowed}, {"refused_by_station", st.refused_by_station}});
+  }
   if (s.rotctld) line("rotctld", s.rotctld->server());
   if (s.rigctld) line("rigctld", s.rigctld->server());
   if (s.host) line("host", s.host->server());
