@@ -162,13 +162,14 @@ def trakbox_aims_box(procs):
                               stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
         procs.append(tb)
         wait_listening(rot, "rotctld", proc=tb)
-        poll("the box read back", lambda: position(state)[0] == 0.0, 15)
+        poll("the box read back", lambda: position(state)[0] is not None and abs(position(state)[0]) < 0.5, 15)
         with socket.create_connection(("127.0.0.1", rot), timeout=5) as s:
             s.sendall(b"P 120 30\n")
             check(s.recv(64).startswith(b"RPRT 0"), "rotctld P accepted")
         poll("the box told 120 / 30", lambda: "<PST><AZIMUTH>120.0</AZIMUTH></PST>" in box.got
              and "<PST><ELEVATION>30.0</ELEVATION></PST>" in box.got, 15)
-        poll("the box's position read back on its way", lambda: box.az > 20 and abs(position(state)[0] - box.az) < 8, 15)
+        poll("the box's position read back on its way",
+             lambda: box.az > 20 and abs((position(state)[0] or -99) - box.az) < 8, 15)
         tb.stdin.close()
         check(tb.wait(20) == 0, "trakbox leaves cleanly")
         procs.remove(tb)
