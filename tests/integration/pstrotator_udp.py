@@ -110,7 +110,7 @@ class Box:
         self.sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
         self.sock.bind(("127.0.0.1", port))
         self.sock.settimeout(0.2)
-        self.az, self.el, self.target, self.at = 0.0, 0.0, None, time.time()
+        self.az, self.el, self.target, self.at = 10.0, 5.0, None, time.time()
         self.got, self.lock, self.stop = [], threading.Lock(), False
         threading.Thread(target=self.run, daemon=True).start()
 
@@ -162,7 +162,7 @@ def trakbox_aims_box(procs):
                               stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
         procs.append(tb)
         wait_listening(rot, "rotctld", proc=tb)
-        poll("the box read back", lambda: position(state)[0] is not None and abs(position(state)[0]) < 0.5, 15)
+        poll("the box read back", lambda: position(state)[0] is not None and abs(position(state)[0] - 10.0) < 0.5, 15)
         with socket.create_connection(("127.0.0.1", rot), timeout=5) as s:
             s.sendall(b"P 120 30\n")
             check(s.recv(64).startswith(b"RPRT 0"), "rotctld P accepted")
