@@ -183,7 +183,8 @@ def main():
         t0 = time.time()
         tb = subprocess.Popen([BIN, "--state", state, "--line", "--satrak-port", "0", "--clock",
                                start.strftime("%Y-%m-%dT%H:%M:%SZ"), "--clock-rate", str(RATE),
-                               "--radio", f"gqrx:127.0.0.1:{rig.port}"],
+                               "--radio", f"gqrx:127.0.0.1:{rig.port}",
+                               "--elements-url", "file://" + os.path.join(SOURCE, "data", "amateur.tle")],
                               stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
         procs.append(tb)
         tb.stdin.write(b"S\r5\r")   # single tracking of the shipped list's #5, SO-50
