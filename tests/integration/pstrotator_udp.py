@@ -23,7 +23,7 @@ import threading
 import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, check, free_port, poll, reap, run_test, wait_listening  # noqa: E402
+from _tbharness import BIN, SOURCE, check, free_port, poll, reap, run_test, wait_listening  # noqa: E402
 
 
 def udp_pair_port():
@@ -57,7 +57,7 @@ def client_aims_trakbox(procs):
     me.bind(("127.0.0.1", port + 1))
     me.settimeout(3)
     try:
-        tb = subprocess.Popen([BIN, "--state", state, "--line", "--satrak-port", "0", "--pst-port", str(port),
+        tb = subprocess.Popen([BIN, "--state", state, "--line", "--satrak-port", "0", "--elements-url", LOCAL, "--pst-port", str(port),
                                "--clock-rate", "20"],
                               stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
         procs.append(tb)
@@ -99,6 +99,9 @@ def client_aims_trakbox(procs):
     finally:
         me.close()
         shutil.rmtree(state, ignore_errors=True)
+
+
+LOCAL = "file://" + os.path.join(SOURCE, "data", "amateur.tle")
 
 
 class Box:
@@ -157,7 +160,7 @@ def trakbox_aims_box(procs):
     state = tempfile.mkdtemp(prefix="trakbox-pst-client-")
     try:
         rot = free_port()
-        tb = subprocess.Popen([BIN, "--state", state, "--line", "--satrak-port", "0", "--rotctld-port", str(rot),
+        tb = subprocess.Popen([BIN, "--state", state, "--line", "--satrak-port", "0", "--elements-url", LOCAL, "--rotctld-port", str(rot),
                                "--rotator", f"pstrotator:127.0.0.1:{port}"],
                               stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
         procs.append(tb)

@@ -18,7 +18,7 @@ import threading
 import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, SerialPair, check, reap, run_test, skip  # noqa: E402
+from _tbharness import BIN, SOURCE, SerialPair, check, reap, run_test, skip  # noqa: E402
 
 WINDOW = 14.0
 
@@ -31,6 +31,9 @@ KINDS = [
     ("radio", "ft847:{pty}", "no answer: check the speed, the cable, the power"),
     ("radio", "ft817:{pty}", "no answer: check the speed, the cable, the power"),
 ]
+
+
+LOCAL = "file://" + os.path.join(SOURCE, "data", "amateur.tle")
 
 
 class Silent:
@@ -70,7 +73,7 @@ def main():
             far = Silent(pair.terminal_side)
             state = tempfile.mkdtemp(prefix="trakbox-silent-")
             opt = "--rotator" if what == "rotator" else "--radio"
-            tb = subprocess.Popen([BIN, "--state", state, "--line", "--satrak-port", "0", opt,
+            tb = subprocess.Popen([BIN, "--state", state, "--line", "--satrak-port", "0", "--elements-url", LOCAL, opt,
                                    spec.format(pty=pair.trakbox_side)],
                                   stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
             procs.append(tb)
