@@ -169,8 +169,14 @@ def trakbox_aims_box(procs):
         with socket.create_connection(("127.0.0.1", rot), timeout=5) as s:
             s.sendall(b"P 120 30\n")
             check(s.recv(64).startswith(b"RPRT 0"), "rotctld P accepted")
-        poll("the box told 120 / 30", lambda: "<PST><AZIMUTH>120.0</AZIMUTH></PST>" in box.got
-             and "<PST><ELEVATION>30.0</ELEVATION></PST>" in box.got, 15)
+        def told(tag, want):
+            for g in list(box.got):
+                m = re.fullmatch(rf"<PST><{tag}>(-?\d+\.\d)</{tag}></PST>", g)
+                if m and abs(float(m.group(1)) - want) < 0.5:
+                    return g
+            return None
+        poll("the box told 120 / 30", lambda: told("AZIMUTH", 120.0) and told("ELEVATION", 30.0), 15)
+        sent = (told("AZIMUTH", 120.0), told("ELEVATION", 30.0))
         poll("the box's position read back on its way",
              lambda: box.az > 20 and abs((position(state)[0] or -99) - box.az) < 8, 15)
         tb.stdin.close()
@@ -180,7 +186,7 @@ def trakbox_aims_box(procs):
             log = f.read()
         check("rotator: connected to PstRotator 127.0.0.1:" in log, "connected once the box answered")
         asks = sum(1 for g in box.got if g == "<PST>AZ?</PST>")
-        print(f"pstrotator_udp client: rotctld P 120 30 -> the box got AZIMUTH 120.0 and ELEVATION 30.0; "
+        print(f"pstrotator_udp client: rotctld P 120 30 -> the box got {sent[0]} and {sent[1]}; "
               f"position read back ({asks} AZ? asked)")
     finally:
         box.close()
