@@ -294,7 +294,7 @@ void WorkerRadio::lose_link(Lock& lock) {
 // speed, the radio off, a cable) stays one fault with one message while its port is reopened with
 // backoff. A link that cannot read (the FT-736's CAT only listens) is connected once it is open.
 void WorkerRadio::answers() {
-  if (!link_->can_read(Link::downlink)) return;
+  if (!timing_.ask_at_connect || !link_->can_read(Link::downlink)) return;
   try {
     (void)link_->read_frequency(Link::downlink);
   } catch (const LinkError& e) {

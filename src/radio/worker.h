@@ -70,6 +70,10 @@ struct WorkerTiming {
   // A radio that stopped answering on a port that works (switched off behind its interface):
   // asked again at least this often, so it is tuned within a second or two of answering again.
   std::chrono::milliseconds retry_max{1000};
+  // Connected means answering: a link that can read is asked its downlink's frequency at each
+  // connect, and only an answer makes it connected. Off only for the unit tests that compare a
+  // radio's exact command sequence from the first byte (the integration tests run it on).
+  bool ask_at_connect = true;
 };
 
 class WorkerRadio final : public RadioDriver {

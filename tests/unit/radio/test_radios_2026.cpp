@@ -45,6 +45,10 @@ DriverTiming timing() {
   t.yaesu_byte_gap = 1ms;
   t.icom_echo_margin = 1000ms;   // patient: a loaded machine is no collision
   t.icom_reply_timeout = 1000ms;
+  // These tests compare each radio's commands from the first byte: without the connect's read
+  // (WorkerTiming::ask_at_connect), which tests/integration/silent_links.py and the satellite
+  // radios' integration tests run on.
+  t.worker.ask_at_connect = false;
   return t;
 }
 
