@@ -29,6 +29,14 @@ std::unique_ptr<rotator::RotatorDriver> make_hamlib(const RotatorChoice& choice,
   return rotator::make_hamlib_rotator(*choice.rotator);
 }
 
+std::unique_ptr<rotator::RotatorDriver> make_easycomm(const RotatorChoice& choice, const RotatorContext&) {
+  return rotator::make_easycomm_rotator(*choice.rotator);
+}
+
+std::unique_ptr<rotator::RotatorDriver> make_pst(const RotatorChoice& choice, const RotatorContext&) {
+  return rotator::make_pst_rotator(*choice.rotator);
+}
+
 std::unique_ptr<rotator::RotatorDriver> make_satrak(const RotatorChoice& choice, const RotatorContext&) {
   return std::make_unique<satrak::SatrakRotator>(*choice.satrak);
 }
@@ -40,6 +48,15 @@ constexpr RotatorKind kKinds[] = {
      .parse = parse_driver<rotator::parse_hamlib_spec>, .make = make_hamlib},
     {.name = "rotctld", .form = "rotctld:HOST[:PORT]", .what = "a rotctld daemon (Hamlib NET rotctl; PORT 4533)",
      .parse = parse_driver<rotator::parse_rotctld_spec>, .make = make_hamlib},
+    {.name = "easycomm3", .form = "easycomm3:DEVICE[:BAUD]",
+     .what = "Easycomm III natively (SatNOGS rotator; 19200 baud)",
+     .parse = parse_driver<rotator::parse_easycomm_spec>, .make = make_easycomm},
+    {.name = "easycomm2", .form = "easycomm2:DEVICE[:BAUD]",
+     .what = "Easycomm II natively (SARCNET, REF, K3NG; 9600)",
+     .parse = parse_driver<rotator::parse_easycomm_spec>, .make = make_easycomm},
+    {.name = "pstrotator", .form = "pstrotator:HOST[:PORT]",
+     .what = "PstRotator's UDP (CSN S.A.T.; PORT 12000)",
+     .parse = parse_driver<rotator::parse_pstrotator_spec>, .make = make_pst},
     {.name = "satrak", .form = "satrak:HOST[:PORT]", .what = "another Satrak ACU, over TCP (PORT 4001)",
      .parse = parse_satrak, .make = make_satrak},
 };
@@ -75,6 +92,11 @@ std::string rotator_list_text() {
     form.resize(std::max<std::size_t>(form.size(), 28), ' ');
     out += form + " " + std::string(k.what) + "\n";
   }
+  // The controllers most stations own, by Hamlib's number (rotctl -l, Hamlib 4.5) for hamlib:MODEL.
+  out += "\nHamlib's numbers (hamlib:MODEL:DEVICE[:BAUD]) of common controllers:\n"
+         "  GS-232A 601, GS-232B 603 (az only 611), SPID Rot2Prog 901, Rot1Prog 902,\n"
+         "  SPID MD-01/02 in Rot2Prog mode 903, Easycomm I 201, II 202, III 204;\n"
+         "  a K3NG controller answers GS-232B (603) and Easycomm (202, 204).\n";
   return out;
 }
 

@@ -80,11 +80,15 @@ nlohmann::json antenna_json(StationApp& app) {
   return a;
 }
 
-// One link's state: "idle" (nothing sent: no satellite tuned, or no frequency for the link), "fault"
-// (the radio serving it, with its message), "not connected", "not confirmed" (sent, but the radio
-// has not accepted that frequency yet), "confirmed".
+// One link's state: "idle" (nothing sent: no satellite tuned, or no frequency for the link), "not
+// sent" (the uplink of a radio that carries none: a receiver such as GQRX), "fault" (the radio
+// serving it, with its message), "not connected", "not confirmed" (sent, but the radio has not
+// accepted that frequency yet), "confirmed".
 nlohmann::json link_json(const radio::RadioStatus& s, radio::Link link, std::optional<radio::Hz> sent) {
   const bool down = link == radio::Link::downlink;
+  if (!down && s.no_uplink && sent)
+    return {{"state", "not sent"}, {"sent_hz", nullptr}, {"read_hz", nullptr},
+            {"message", "the radio carries no uplink: give the uplink its own radio with --uplink-radio"}};
   const std::optional<radio::Hz> accepted = down ? s.downlink_hz : s.uplink_hz;
   const char* state = !sent ? "idle"
                       : s.fault ? "fault"
@@ -130,7 +134,8 @@ nlohmann::json radio_json(StationApp& app) {
           {"delivered", s.delivered},
           {"failures", s.failures},
           {"connects", s.connects},
-          {"pending", s.pending}};
+          {"pending", s.pending},
+          {"limits", s.limits}};
   add_links(app, s, j);
   return j;
 }
@@ -345,7 +350,8 @@ std::string format_status(const nlohmann::json& s) {
   for (const auto& r : s.at("radios"))
     line("  radio     " + r.value("radio", "") + ": downlink " + num(r.value("downlink_hz", nlohmann::json()), 0) +
          " Hz, uplink " + num(r.value("uplink_hz", nlohmann::json()), 0) + " Hz, " +
-         (r.value("fault", false) ? "fault: " + r.value("message", "") : std::string("ok")));
+         (r.value("fault", false) ? "fault: " + r.value("message", "") : std::string("ok")) +
+         (r.value("limits", "").empty() ? std::string() : " (" + r.value("limits", "") + ")"));
   for (const auto& e : s.at("tracking_list")) {
     std::string l = "  list #" + std::to_string(e.value("number", 0)) + "  " + e.value("name", "") + ", elements " +
                     num(e["element_age_days"], 1) + " days old" + (e.value("elements_stale", false) ? " (STALE)" : "");

@@ -28,6 +28,7 @@
 #include "menus/term/curses_terminal.h"
 #include "menus/term/line_terminal.h"
 #include "netctl/host_server.h"
+#include "netctl/pst_server.h"
 #include "netctl/server.h"
 #include "satrak/server.h"
 #include "satrak/unit.h"
@@ -167,6 +168,7 @@ struct Servers {
   std::unique_ptr<netctl::RotctldServer> rotctld;
   std::unique_ptr<netctl::RigctldServer> rigctld;
   std::unique_ptr<netctl::HostServer> host;
+  std::unique_ptr<netctl::PstServer> pst;   // --pst-port: PstRotator's UDP commands
   // The web page and API (--http-port): who may do what, the requests' handler, the server.
   std::unique_ptr<web::Access> web_access;
   std::unique_ptr<web::Api> web_api;
@@ -182,6 +184,7 @@ struct Servers {
     rotctld.reset();
     rigctld.reset();
     host.reset();
+    pst.reset();
     satrak.reset();
   }
 };
@@ -243,6 +246,10 @@ std::optional<std::string> start_netctl(StationApp& app, const TrackerConfig& c,
     if (c.host_port)
       out.host = std::make_unique<netctl::HostServer>(app.io(), port(*c.host_port), app.station(),
                                                        opts(netctl::HostServer::defaults(), c.host_secret));
+    starting = "--pst-port";
+    if (c.pst_port)
+      out.pst = std::make_unique<netctl::PstServer>(app.io(), port(*c.pst_port), app.station(),
+                                                     netctl::PstOptions{c.listen, c.allow});
   } catch (const std::exception& e) {
     return std::string(starting) + ": " + e.what();
   }
@@ -264,6 +271,7 @@ void warn_open_endpoints(const TrackerConfig& c, const Servers& s, spdlog::logge
   open_to_all("the rotctld server", c.listen, s.rotctld != nullptr);
   open_to_all("the rigctld server", c.listen, s.rigctld != nullptr);
   open_to_all("the host-mode server", c.listen, s.host != nullptr);
+  open_to_all("the PstRotator UDP server", c.listen, s.pst != nullptr);
   open_to_all("the web server", c.listen, s.web != nullptr);
 }
 
@@ -377,6 +385,11 @@ nlohmann::json servers_json(const Servers& s) {
                    {"refused_per_address", st.refused_per_address},
                    {"evicted", st.evicted},
                    {"dropped_slow", st.dropped_slow}});
+  }
+  if (s.pst) {
+    const netctl::PstStats& st = s.pst->stats();
+    out.push_back({{"name", "pstrotator"}, {"port", s.pst->port()}, {"taken", st.taken}, {"refused_bad", st.refused_bad},
+                   {"refused_not_allowed", st.refused_not_allowed}, {"refused_by_station", st.refused_by_station}});
   }
   if (s.rotctld) line("rotctld", s.rotctld->server());
   if (s.rigctld) line("rigctld", s.rigctld->server());

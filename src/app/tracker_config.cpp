@@ -34,12 +34,13 @@ std::vector<OptionSpec> tracker_option_specs() {
                       "freq/mode files"},
       {"clock", "ISO8601", "start the real-time clock at this UTC time (e.g. 2026-05-21T12:00:00Z)"},
       {"clock-rate", "R", "run the clock R times faster than real time, R at most 200 (with or without --clock)"},
-      {"rotator", "SPEC", "simulated (default), hamlib:MODEL:DEVICE[:BAUD], rotctld:HOST[:PORT], satrak:HOST[:PORT] "
-                          "(trakbox --rotator list)"},
+      {"rotator", "SPEC", "simulated (default), hamlib:MODEL:DEVICE[:BAUD], rotctld:HOST[:PORT], easycomm3:DEVICE[:BAUD], "
+                          "easycomm2:DEVICE[:BAUD], pstrotator:HOST[:PORT], satrak:HOST[:PORT] (trakbox --rotator list)"},
       {"radio", "SPEC", "simulated (default), a model MODEL:DEV[:BAUD] (ic9700, ic9100, ic910h, ft847, ft817, "
                         "ts2000 ...; `trakbox --radio list` prints them all), icom:DEV, kenwood:DEV, yaesu:DEV, "
                         "cat:DEV (rig of menu 6-7), hamlib:MODEL:DEV[:BAUD] (MODEL a number or a name such as "
-                        "IC-9700), rigctld[:HOST[:PORT]]"},
+                        "IC-9700), rigctld[:HOST[:PORT]], gqrx[:HOST[:PORT]] or sdrpp[:HOST[:PORT]] (receivers: "
+                        "the downlink only)"},
       {"uplink-radio", "SPEC", "a second radio for the uplink, in the same forms as --radio (which then drives "
                                "the downlink); stored, so later starts use it too; none: one radio again"},
       {"dial-rest", "MS", "dial follow: the other link moves once the operator's knob has rested this many "
@@ -50,6 +51,8 @@ std::vector<OptionSpec> tracker_option_specs() {
       {"satrak-port", "N", "Satrak ACU protocol on TCP port N (default 4001; 0 turns it off)"},
       {"satrak-bind", "ADDR", "address the Satrak server listens on (default 127.0.0.1)"},
       {"rotctld-port", "N", "answer the rotctld protocol on TCP port N (4533 by convention; off by default)"},
+      {"pst-port", "N", "take PstRotator's UDP commands on port N (12000 by convention; replies to the sender's "
+                        "port N+1; off by default)"},
       {"rigctld-port", "N", "answer the rigctld protocol on TCP port N (4532 by convention; off by default)"},
       {"host-port", "N", "host mode (menu 7's commands) on TCP port N (off by default)"},
       {"http-port", "N", "the web page and its API (docs/web-api.md) on TCP port N (the service's is 8073; off by "
@@ -340,6 +343,7 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
     if (const auto v = r.integer(name, false, "a TCP port 1 to 65535", Range{1, 65535})) out = static_cast<int>(*v);
   };
   port("rotctld-port", c.rotctld_port);
+  if (const auto v = r.integer("pst-port", false, "a UDP port 1 to 65534", Range{1, 65534})) c.pst_port = static_cast<int>(*v);
   port("rigctld-port", c.rigctld_port);
   port("host-port", c.host_port);
   port("http-port", c.http_port);

@@ -60,6 +60,7 @@ struct TrackerConfig {
   bool satrak_port_explicit = false;
   std::string satrak_bind = "127.0.0.1";
   std::optional<int> rotctld_port, rigctld_port, host_port;
+  std::optional<int> pst_port;   // --pst-port: PstRotator's UDP commands (12000 by convention); off by default
   std::string listen = "127.0.0.1";
   std::vector<inet::Cidr> allow;
   std::vector<inet::Cidr> guess_exempt;  // --guess-exempt: never locked out for wrong secrets

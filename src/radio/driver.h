@@ -40,6 +40,10 @@ struct RadioStatus {
   bool reads_uplink = false;
   std::optional<Hz> downlink_read_hz;
   std::optional<Hz> uplink_read_hz;
+  // What the radio cannot do, learnt from its answers or known from its registry row, each once:
+  // "GQRX: no CTCSS, no uplink" (empty when nothing is lacking). Never a fault.
+  std::string limits;
+  bool no_uplink = false;        // it carries no uplink: the uplink is not sent (--uplink-radio)
 };
 
 class RadioDriver {

@@ -33,6 +33,19 @@ bool is_baud(int v) {
 
 RadioSpecParse error(std::string message) { return {std::nullopt, std::move(message)}; }
 
+// gqrx[:HOST[:PORT]]: the row's port unless given, on this computer unless named.
+RadioSpecParse receiver_spec(const RadioModel& m, const std::string& rest, const std::string& quoted, RadioSpec spec) {
+  spec.host = "127.0.0.1";
+  spec.port = m.port;
+  if (rest.empty()) return {spec, {}};
+  std::string why;
+  const auto hp = inet::parse_host_port(rest, why, m.port);
+  if (!hp) return error(quoted + why + "; expected " + spec_form(m));
+  spec.host = inet::host_text(hp->host);
+  spec.port = hp->port;
+  return {spec, {}};
+}
+
 }  // namespace
 
 RadioSpecParse parse_radio_spec(std::string_view text, std::string_view option) {
@@ -80,6 +93,7 @@ RadioSpecParse parse_radio_spec(std::string_view text, std::string_view option) 
       spec.device = parts[0];
       return {spec, {}};
     }
+    case SpecForm::receiver: return receiver_spec(*m, rest, quoted, spec);
     case SpecForm::hamlib:
     case SpecForm::rigctld:
       break;

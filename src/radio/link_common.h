@@ -18,10 +18,10 @@ inline std::string tone_text(int tenths_hz) {
 }
 
 // A radio without a CTCSS encoder trakbox can set: a tone is refused with a message, never dropped
-// silently; turning the tone off is nothing to refuse.
+// silently (a limit of the radio, said once: not a fault); turning the tone off is nothing to refuse.
 inline void refuse_tone(const std::string& radio, int tenths_hz) {
   if (tenths_hz <= 0) return;
-  throw LinkError(LinkError::Action::drop, radio + " has no CTCSS encoder trakbox can set: tone " + tone_text(tenths_hz) + " not sent");
+  throw LinkError("no CTCSS", radio + " has no CTCSS encoder trakbox can set: tone " + tone_text(tenths_hz) + " not sent");
 }
 
 // A rig's standard serial settings at the configured speed (STATION.DAT line 4), when one is set.

@@ -74,6 +74,7 @@ std::string spec_form(const RadioModel& m) {
       return n + ":DEVICE[:BAUD]" + (m.caps.satellite_mode && m.protocol == Protocol::icom ? "[:maindown|:mainup]" : "");
     case SpecForm::hamlib: return n + ":MODEL:DEVICE[:BAUD][:split|:mainsub]";
     case SpecForm::rigctld: return n + "[:HOST[:PORT]][:split|:mainsub]";
+    case SpecForm::receiver: return n + "[:HOST[:PORT]]";
   }
   return n;
 }

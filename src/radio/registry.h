@@ -26,6 +26,7 @@ enum class SpecForm {
   device_baud,   // ic9700:DEVICE[:BAUD][:maindown|:mainup]
   hamlib,        // hamlib:MODEL:DEVICE[:BAUD][:split|:mainsub]
   rigctld,       // rigctld[:HOST[:PORT]][:split|:mainsub]
+  receiver,      // gqrx[:HOST[:PORT]]: a receiver's rigctld-like server (the row's port by default)
 };
 
 // Which satellite-mode command a model has.
@@ -39,7 +40,7 @@ enum class SatCommand {
 };
 
 // The protocol a model speaks (its driver).
-enum class Protocol { simulated, icom, kenwood, ft736, ft847, ft817, cat, hamlib, rigctld };
+enum class Protocol { simulated, icom, kenwood, ft736, ft847, ft817, cat, hamlib, rigctld, receiver };
 
 struct RadioCaps {
   int links = 1;                 // 2: one radio carries downlink and uplink
@@ -74,6 +75,8 @@ struct RadioModel {
   bool four_byte_frequency = false;   // IC-820H/821H
   RadioCaps caps;
   int hamlib_model = 0;          // Hamlib's number for the same radio (Hamlib 4.5), 0: none
+  int port = 0;                  // a network radio's TCP port unless the spec gives one
+  bool one_client = false;       // a network radio that serves one client at a time
   std::string_view note;         // one line for --radio list
   RadioFactory make = nullptr;
 };

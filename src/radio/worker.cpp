@@ -114,7 +114,11 @@ bool WorkerRadio::read_dial(Lock& lock, Link link, Hz guard) {
   } catch (const LinkError& e) {
     lock.lock();
     if (e.action == LinkError::Action::drop) return false;
-    fail(e.what(), e.action);
+    if (e.action == LinkError::Action::lacks) {
+      learn(e);
+      return false;
+    }
+    fail(e.what(), e.action, e.hold_off);
     if (e.action == LinkError::Action::reconnect) {
       link_fault_ = true;
       lose_link(lock);
@@ -176,14 +180,26 @@ void WorkerRadio::execute(const Job& job) {
   }
 }
 
-void WorkerRadio::fail(const std::string& message, LinkError::Action action) {
+void WorkerRadio::learn(const LinkError& error) {
+  retry_at_ = {};
+  if (std::find(lacks_.begin(), lacks_.end(), error.capability) != lacks_.end()) return;
+  lacks_.push_back(error.capability);
+  spdlog::info("radio {}: {}", description_, error.what());
+  std::string limits = link_->name() + ":";
+  for (std::size_t i = 0; i < lacks_.size(); ++i) limits += (i ? ", " : " ") + lacks_[i];
+  status_.limits = limits;
+  if (error.capability == "no uplink") status_.no_uplink = true;
+}
+
+void WorkerRadio::fail(const std::string& message, LinkError::Action action, std::chrono::milliseconds hold_off) {
   ++status_.failures;
   if (message != logged_) spdlog::warn("radio {}: {}", description_, message);  // once, until it works
   logged_ = message;
   status_.fault = true;
   status_.message = message;
   const bool retry = action == LinkError::Action::retry;
-  retry_at_ = std::chrono::steady_clock::now() + (retry ? std::min(backoff_, timing_.retry_max) : backoff_);
+  retry_at_ = std::chrono::steady_clock::now() +
+              std::max(hold_off, retry ? std::min(backoff_, timing_.retry_max) : backoff_);
   backoff_ = std::min(backoff_ * 2, timing_.backoff_max);
 }
 
@@ -241,7 +257,7 @@ void WorkerRadio::check_link(Lock& lock) {
   }
   lock.lock();
   if (error) {
-    fail(error->what());
+    fail(error->what(), LinkError::Action::reconnect, error->hold_off);
     link_fault_ = true;
     return lose_link(lock);
   }
@@ -273,19 +289,43 @@ void WorkerRadio::lose_link(Lock& lock) {
   status_.connected = false;
 }
 
+// Connected means answering: a link whose dial can be read is asked its downlink's frequency right
+// after the port opens, and only an answer makes it connected. A radio that is silent (a wrong
+// speed, the radio off, a cable) stays one fault with one message while its port is reopened with
+// backoff. A link that cannot read (the FT-736's CAT only listens) is connected once it is open.
+void WorkerRadio::answers() {
+  if (!timing_.ask_at_connect || !link_->can_read(Link::downlink)) return;
+  try {
+    (void)link_->read_frequency(Link::downlink);
+  } catch (const LinkError& e) {
+    if (e.action == LinkError::Action::drop || e.action == LinkError::Action::lacks) return;
+    link_->close();
+    if (e.hold_off.count() > 0) throw;   // the peer is held by another program: its own words
+    LinkError silent(LinkError::Action::reconnect,
+                     "no answer: check the speed, the cable, the power (" + std::string(e.what()) + ")");
+    silent.hold_off = e.hold_off;
+    throw silent;
+  }
+}
+
 bool WorkerRadio::connect(Lock& lock) {
   busy_ = true;
   lock.unlock();
   std::optional<LinkError> error;
+  bool opened = false;
   try {
     link_->open();
+    opened = true;
+    answers();
   } catch (const LinkError& e) {
     error = e;
   }
   lock.lock();
   busy_ = false;
   if (error) {
-    fail(error->what());
+    // A port that opens on a silent radio is asked again as a silent radio is (at most retry_max
+    // apart: it is tuned within a second or two of answering), one fault all the while.
+    fail(error->what(), opened ? LinkError::Action::retry : LinkError::Action::reconnect, error->hold_off);
     link_fault_ = true;
     return false;
   }
@@ -377,6 +417,7 @@ void WorkerRadio::deliver_next(Lock& lock) {
 }
 
 void WorkerRadio::job_failed(Lock& lock, Job job, const LinkError& error) {
+  if (error.action == LinkError::Action::lacks) return learn(error);   // not a failure: nothing to retry
   if (error.action == LinkError::Action::drop) {
     // Refused (a tone, a mode, an uplink the radio cannot carry): reported the first time, then
     // only counted, so a refusal repeated every Doppler update neither fills the log nor makes the
@@ -389,7 +430,7 @@ void WorkerRadio::job_failed(Lock& lock, Job job, const LinkError& error) {
     status_.message = error.what();
     return;
   }
-  fail(error.what(), error.action);
+  fail(error.what(), error.action, error.hold_off);
   if (error.action == LinkError::Action::reconnect) {
     link_fault_ = true;
     lose_link(lock);

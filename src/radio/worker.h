@@ -12,6 +12,7 @@
 #include <set>
 #include <stdexcept>
 #include <thread>
+#include <vector>
 
 #include "radio/driver.h"
 
@@ -22,16 +23,25 @@ struct LinkError : std::runtime_error {
   enum class Action {
     reconnect,  // the port or connection is broken: close, reopen with backoff, retry
     retry,      // the link is up but this attempt failed (no echo, collision, timeout): retry
-    drop,       // the radio refused this command (NG, unsupported): don't retry it
+    drop,       // the radio refused this command (NG, a value out of range): don't retry it
+    // The radio has no such feature (no CTCSS encoder, no uplink, a mode it lacks): a capability
+    // learnt once, said once in the log and in the status's `limits`, never a fault or a failure.
+    lacks,
   };
   Action action;
+  std::string capability;                 // lacks: "no CTCSS", "no uplink", "no mode CW"
+  std::chrono::milliseconds hold_off{0};  // reconnect: wait at least this long (a peer held elsewhere)
   LinkError(Action a, const std::string& what) : std::runtime_error(what), action(a) {}
+  LinkError(std::string lacking, const std::string& what)
+      : std::runtime_error(what), action(Action::lacks), capability(std::move(lacking)) {}
 };
 
 class RadioLink {
  public:
   virtual ~RadioLink() = default;
   virtual std::string describe() const = 0;
+  // The radio's short name for the status's limits ("GQRX: no CTCSS, no uplink").
+  virtual std::string name() const { return describe(); }
   virtual void open() = 0;                 // throws LinkError
   virtual void close() noexcept = 0;       // leave the radio tidy (Yaesu: CAT off), close the port
   virtual void set_frequency(Link link, Hz hz) = 0;
@@ -60,6 +70,10 @@ struct WorkerTiming {
   // A radio that stopped answering on a port that works (switched off behind its interface):
   // asked again at least this often, so it is tuned within a second or two of answering again.
   std::chrono::milliseconds retry_max{1000};
+  // Connected means answering: a link that can read is asked its downlink's frequency at each
+  // connect, and only an answer makes it connected. Off only for the unit tests that compare a
+  // radio's exact command sequence from the first byte (the integration tests run it on).
+  bool ask_at_connect = true;
 };
 
 class WorkerRadio final : public RadioDriver {
@@ -96,11 +110,15 @@ class WorkerRadio final : public RadioDriver {
   void execute(const Job& job);
   // The worker thread's steps, each called with mu_ held (lock) and unlocking it around radio I/O.
   bool connect(Lock& lock);          // opens the link; false (fault recorded) when it did not
+  void answers();                    // after open, mu_ unlocked: throws LinkError when it is silent
   void deliver_next(Lock& lock);     // runs the job at the head of the queue
   void job_failed(Lock& lock, Job job, const LinkError& error);
   // Records a fault and the back-off before the next try (a retry on a working port: at most
   // retry_max; a lost port: doubling to backoff_max).
-  void fail(const std::string& message, LinkError::Action action = LinkError::Action::reconnect);
+  void fail(const std::string& message, LinkError::Action action = LinkError::Action::reconnect,
+            std::chrono::milliseconds hold_off = {});
+  // A feature the radio lacks (LinkError::Action::lacks): kept in the status, said once.
+  void learn(const LinkError& error);
   // The radio answered again after a silence (RadioLink::answered_again): whatever it was told is
   // sent again, as after a connect (its link asks for satellite mode again itself).
   void radio_back();
@@ -144,6 +162,7 @@ class WorkerRadio final : public RadioDriver {
   bool link_fault_ = false;          // the port failed (open, lost) and has not worked since
   std::string logged_;               // the failure last logged (not again until something works)
   std::set<std::string> refusals_said_;  // refused commands already reported (each once)
+  std::vector<std::string> lacks_;       // capabilities learnt missing, in the order learnt
   std::chrono::steady_clock::time_point next_check_{};
   std::chrono::milliseconds backoff_{};
   std::chrono::steady_clock::time_point retry_at_{};

@@ -6,6 +6,8 @@
 #include <charconv>
 #include <vector>
 
+#include "rotator/easycomm_rotator.h"
+#include "rotator/pst_rotator.h"
 #include "util/host_port.h"
 #include "util/text.h"
 
@@ -76,6 +78,41 @@ SpecResult parse_rotctld_spec(std::string_view text) {
   return {s, {}};
 }
 
+SpecResult parse_easycomm_spec(std::string_view text) {
+  const std::string_view name = text.substr(0, text.find(':'));
+  const bool three = name == "easycomm3";
+  const std::string usage = "expected " + std::string(name) + ":DEVICE[:BAUD], e.g. " + std::string(name) +
+                            ":/dev/ttyUSB0" + (three ? ":19200" : ":9600");
+  const std::string_view rest = after_name(text);
+  auto f = text::split(rest, ':');
+  if (rest.empty() || f[0].empty()) return fail(text, "missing DEVICE; " + usage);
+  RotatorSpec s;
+  s.kind = three ? RotatorSpec::Kind::easycomm3 : RotatorSpec::Kind::easycomm2;
+  s.model = three ? 204 : 202;   // Hamlib's number of the same protocol, for the record
+  if (f.size() > 2) return fail(text, "too many fields; " + usage);
+  if (f.size() == 2) {
+    const auto baud = number(f[1]);
+    if (!baud || std::find(std::begin(kBauds), std::end(kBauds), *baud) == std::end(kBauds) || *baud < 1200 || *baud > 115200)
+      return fail(text, "BAUD '" + std::string(f[1]) + "' is not a serial speed (1200..115200); " + usage);
+    s.baud = *baud;
+  }
+  s.device = std::string(f[0]);
+  return {s, {}};
+}
+
+SpecResult parse_pstrotator_spec(std::string_view text) {
+  std::string why;
+  const auto hp = inet::parse_host_port(after_name(text), why, 12000);
+  if (!hp) return fail(text, why + "; expected pstrotator:HOST[:PORT], e.g. pstrotator:192.168.1.20:12000");
+  if (hp->port >= 65535) return fail(text, "PORT " + std::to_string(hp->port) + ": its replies come to PORT+1, so at most 65534");
+  RotatorSpec s;
+  s.kind = RotatorSpec::Kind::pstrotator;
+  s.host = inet::host_text(hp->host);
+  s.port = hp->port;
+  s.device = s.host + ":" + std::to_string(s.port);
+  return {s, {}};
+}
+
 SpecResult parse_simulated_spec(std::string_view text) {
   if (text != "simulated") return fail(text, "simulated takes no parameters");
   return {RotatorSpec{}, {}};
@@ -87,12 +124,32 @@ std::string to_string(const RotatorSpec& s) {
     case RotatorSpec::Kind::hamlib:
       return "hamlib:" + std::to_string(s.model) + ":" + s.device + (s.baud ? ":" + std::to_string(s.baud) : "");
     case RotatorSpec::Kind::rotctld: return "rotctld:" + s.host + ":" + std::to_string(s.port);
+    case RotatorSpec::Kind::pstrotator: return "pstrotator:" + s.host + ":" + std::to_string(s.port);
+    case RotatorSpec::Kind::easycomm2:
+    case RotatorSpec::Kind::easycomm3:
+      return std::string(s.kind == RotatorSpec::Kind::easycomm3 ? "easycomm3:" : "easycomm2:") + s.device +
+             (s.baud ? ":" + std::to_string(s.baud) : "");
   }
   return "simulated";
 }
 
 std::unique_ptr<RotatorDriver> make_simulated_rotator(const station::Clock& clock, const SimulatedRotatorParams& sim) {
   return std::make_unique<SimulatedRotator>(clock, sim);
+}
+
+std::unique_ptr<RotatorDriver> make_easycomm_rotator(const RotatorSpec& spec) {
+  EasycommOptions o;
+  o.version = spec.kind == RotatorSpec::Kind::easycomm3 ? easycomm::Version::three : easycomm::Version::two;
+  o.device = spec.device;
+  o.baud = spec.baud;
+  return std::make_unique<EasycommRotator>(o);
+}
+
+std::unique_ptr<RotatorDriver> make_pst_rotator(const RotatorSpec& spec) {
+  PstRotatorOptions o;
+  o.host = spec.host;
+  o.port = spec.port;
+  return std::make_unique<PstRotator>(o);
 }
 
 std::unique_ptr<RotatorDriver> make_hamlib_rotator(const RotatorSpec& spec, HamlibOptions hamlib) {

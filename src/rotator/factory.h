@@ -5,6 +5,9 @@
 //                                    when it is all digits)
 //   rotctld:HOST[:PORT]              a rotctld on the network (Hamlib NET rotctl, model 2); PORT
 //                                    defaults to 4533; an IPv6 HOST goes in brackets: [::1]:4533
+//   easycomm3:DEVICE[:BAUD]          an Easycomm III controller natively (SatNOGS; 19200 baud)
+//   easycomm2:DEVICE[:BAUD]          an Easycomm II controller natively (9600 baud)
+//   pstrotator:HOST[:PORT]           a box speaking PstRotator's UDP (PORT 12000; replies to PORT+1)
 #pragma once
 #include <memory>
 #include <optional>
@@ -17,11 +20,11 @@
 namespace tb::rotator {
 
 struct RotatorSpec {
-  enum class Kind { simulated, hamlib, rotctld };
+  enum class Kind { simulated, hamlib, rotctld, easycomm2, easycomm3, pstrotator };
   Kind kind = Kind::simulated;
   int model = 0;        // hamlib: Hamlib model number (rotctld: 2)
   std::string device;   // hamlib: the serial device; rotctld: HOST:PORT (Hamlib's pathname)
-  int baud = 0;         // hamlib: serial speed, 0 = the backend's default
+  int baud = 0;         // hamlib, easycomm: serial speed, 0 = the backend's (the protocol's) default
   std::string host;     // rotctld
   int port = 0;         // rotctld
   friend bool operator==(const RotatorSpec&, const RotatorSpec&) = default;
@@ -38,6 +41,8 @@ struct SpecResult {
 SpecResult parse_simulated_spec(std::string_view text);
 SpecResult parse_hamlib_spec(std::string_view text);
 SpecResult parse_rotctld_spec(std::string_view text);
+SpecResult parse_easycomm_spec(std::string_view text);   // easycomm2:... and easycomm3:...
+SpecResult parse_pstrotator_spec(std::string_view text);
 // The spec written back ("simulated", "hamlib:603:/dev/ttyUSB0:9600", "rotctld:localhost:4533").
 std::string to_string(const RotatorSpec& spec);
 
@@ -46,5 +51,7 @@ std::string to_string(const RotatorSpec& spec);
 // the spec.
 std::unique_ptr<RotatorDriver> make_simulated_rotator(const station::Clock& clock, const SimulatedRotatorParams& sim = {});
 std::unique_ptr<RotatorDriver> make_hamlib_rotator(const RotatorSpec& spec, HamlibOptions hamlib = {});
+std::unique_ptr<RotatorDriver> make_easycomm_rotator(const RotatorSpec& spec);
+std::unique_ptr<RotatorDriver> make_pst_rotator(const RotatorSpec& spec);
 
 }  // namespace tb::rotator

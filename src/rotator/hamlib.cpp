@@ -106,6 +106,18 @@ class HamlibLink final : public RotatorLink {
 
   Range az_range() override { return {rot_->state.min_az, rot_->state.max_az}; }
 
+  std::string peer() const override {
+    if (opt_.model == ROT_MODEL_NETROTCTL) return "the rotctld at " + opt_.pathname;
+    std::string name = rot_ && rot_->caps && rot_->caps->model_name ? rot_->caps->model_name : "rotator";
+    const int baud = opt_.baud > 0 ? opt_.baud : rot_ ? rot_->state.rotport.parm.serial.rate : 0;
+    return "the " + name + " on " + opt_.pathname + (baud > 0 ? " at " + std::to_string(baud) + " baud" : "");
+  }
+
+  std::string silent_hint() const override {
+    if (opt_.model == ROT_MODEL_NETROTCTL) return "check that rotctld runs and reaches its rotator";
+    return "check the speed, the cable, the power";
+  }
+
   bool stop(std::string& error) override {
     int rc = rot_stop(rot_);
     if (rc == -RIG_ENAVAIL || rc == -RIG_ENIMPL) rc = RIG_OK;  // nothing moving to stop

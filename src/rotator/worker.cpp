@@ -28,12 +28,31 @@ struct WorkerRotator::Shared {
   AxisMotion motion;
   LimitFlags limits;
   Range az_range{0.0, 360.0};
+  std::string alarm;                   // the controller's last alarm line, while it is shown
+  SteadyClock::time_point alarm_at{};
 
   void run();
+  void note_alarm(const LinkReport& report);  // under m
   std::string serve();
   void set_fault(const std::string& message);
   bool wait(std::chrono::milliseconds d);  // false when told to quit
 };
+
+void WorkerRotator::Shared::note_alarm(const LinkReport& report) {
+  const auto now = SteadyClock::now();
+  if (report.alarm) {
+    if (*report.alarm != alarm) spdlog::warn("rotator: {} reports an alarm: {}", label, *report.alarm);
+    alarm = *report.alarm;
+    alarm_at = now;
+    health.state = LinkState::fault;
+    health.message = label + " reports an alarm: " + alarm;
+  } else if (!alarm.empty() && now - alarm_at > std::chrono::seconds(10)) {
+    spdlog::info("rotator: {}: no alarm for 10 s", label);
+    alarm.clear();
+    health.state = LinkState::ok;
+    health.message.clear();
+  }
+}
 
 bool WorkerRotator::Shared::wait(std::chrono::milliseconds d) {
   std::unique_lock lk(m);
@@ -51,6 +70,7 @@ void WorkerRotator::Shared::set_fault(const std::string& message) {
   limits = {};
   pending_pos.reset();  // motion commands stop: nothing queued is replayed after a reconnect
   pending_stop = false;
+  alarm.clear();        // the link's fault is what the health says now
 }
 
 void WorkerRotator::Shared::run() {
@@ -72,8 +92,23 @@ void WorkerRotator::Shared::run() {
       backoff = std::min(backoff * 2, timing.backoff_max);
       continue;
     }
+    // Open is not connected: the first valid reply is.
+    LinkReport first;
+    if (!link->poll(first, error)) {
+      const std::string who = link->peer().empty() ? label : link->peer();
+      link->close();
+      const std::string msg = "no answer from " + who + ": " + link->silent_hint() + " (" + error + ")";
+      set_fault(msg);
+      if (!reported) spdlog::warn("rotator: {}; trying again, less often each time", msg);
+      reported = true;
+      if (!wait(backoff)) break;
+      backoff = std::min(backoff * 2, timing.backoff_max);
+      continue;
+    }
     {
       std::lock_guard lk(m);
+      if (first.position) pos = first.position;
+      if (first.limits) limits = *first.limits;
       connected = true;
       health.state = LinkState::ok;
       health.message.clear();
@@ -129,7 +164,7 @@ std::string WorkerRotator::Shared::serve() {
       if (refusal) {
         health.state = LinkState::fault;
         health.message = label + " " + *refusal;
-      } else if (health.state == LinkState::fault) {
+      } else if (health.state == LinkState::fault && alarm.empty()) {
         health.state = LinkState::ok;
         health.message.clear();
       }
@@ -142,6 +177,7 @@ std::string WorkerRotator::Shared::serve() {
         if (report.position) pos = report.position;
         if (report.motion) motion = *report.motion;
         if (report.limits) limits = *report.limits;
+        note_alarm(report);
       }
       next_poll = SteadyClock::now() + timing.poll;
     }

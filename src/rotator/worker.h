@@ -8,6 +8,12 @@
 // (backoff_min doubling to backoff_max). A position the rotator refuses is a fault (health) until
 // one is accepted; the link stays up.
 //
+// Connected means answering: after open() the link is polled once, and only a valid reply makes it
+// connected (health ok, "connected" in the log). A peer that never answers is one problem ("no
+// answer from the GS-232B at 9600 baud: check the speed, the cable, the power"), logged once, its
+// port reopened with the same backoff, and one fault however long it lasts: at most one link-lost /
+// link-back pair per episode for the events.
+//
 // The device-specific part is a RotatorLink, used only on the worker thread.
 #pragma once
 #include <chrono>
@@ -25,6 +31,9 @@ struct LinkReport {
   std::optional<AzEl> position;
   std::optional<AxisMotion> motion;
   std::optional<LimitFlags> limits;
+  // A fault the controller reported of its own (Easycomm's "AL..." line): the link stays up; the
+  // health shows it (a fault, said once in the log) until the controller has been quiet 10 s.
+  std::optional<std::string> alarm;
 };
 
 // Every call but close() returns false when the link is lost (or could not be opened), with
@@ -40,6 +49,10 @@ class RotatorLink {
   // `refusal` set (the link staying up) when the rotator answered but refused the position.
   virtual bool go_to(AzEl p, std::optional<std::string>& refusal, std::string& error) = 0;
   virtual bool poll(LinkReport& report, std::string& error) = 0;
+  // Who answers (or does not), for the one message of a silent peer: "the GS-232B at 9600 baud"
+  // and what to look at ("check the speed, the cable, the power"). Asked after open().
+  virtual std::string peer() const { return {}; }
+  virtual std::string silent_hint() const { return "check the speed, the cable, the power"; }
 };
 
 struct LinkTiming {

@@ -13,7 +13,8 @@ bad() { fails=$((fails + 1)); echo "FAIL: $*"; }
 out=$("$BIN" --radio list) || bad "--radio list exits non-zero"
 for form in 'ic9700:DEVICE[:BAUD][:maindown|:mainup]' 'ic9100:DEVICE' 'ic910h:DEVICE' 'ts2000:DEVICE[:BAUD]' \
             'ft847:DEVICE[:BAUD]' 'ft817:DEVICE[:BAUD]' 'ft818:DEVICE[:BAUD]' 'ic705:DEVICE' 'icom:DEVICE' \
-            'yaesu:DEVICE' 'hamlib:MODEL:DEVICE[:BAUD][:split|:mainsub]' 'rigctld[:HOST[:PORT]]'; do
+            'yaesu:DEVICE' 'hamlib:MODEL:DEVICE[:BAUD][:split|:mainsub]' 'rigctld[:HOST[:PORT]]' \
+            'gqrx[:HOST[:PORT]]' 'sdrpp[:HOST[:PORT]]'; do
   grep -qF -- "$form" <<<"$out" || bad "--radio list lacks $form"
 done
 grep -A1 '^ic9700:' <<<"$out" | grep -qE '^  Icom IC-9700 .* A2h +19200 +3081$' ||
@@ -23,7 +24,8 @@ wide=$(awk 'length > 80' <<<"$out")
 [ -z "$wide" ] || bad "--radio list has lines over 80 columns: $wide"
 
 out=$("$BIN" --rotator list) || bad "--rotator list exits non-zero"
-for form in simulated 'hamlib:MODEL:DEVICE[:BAUD]' 'rotctld:HOST[:PORT]' 'satrak:HOST[:PORT]'; do
+for form in simulated 'hamlib:MODEL:DEVICE[:BAUD]' 'rotctld:HOST[:PORT]' 'satrak:HOST[:PORT]' \
+            'easycomm3:DEVICE[:BAUD]' 'easycomm2:DEVICE[:BAUD]' 'pstrotator:HOST[:PORT]' 'GS-232B 603' 'Easycomm I 201, II 202, III 204'; do
   grep -qF -- "$form" <<<"$out" || bad "--rotator list lacks $form"
 done
 wide=$(awk 'length > 80' <<<"$out")

@@ -5,6 +5,7 @@
 
 #include "radio/hamlib/hamlib_models.h"
 #include "radio/hamlib/hamlib_radio.h"
+#include "radio/hamlib/rigctld_link.h"
 
 namespace tb::radio {
 
@@ -23,6 +24,13 @@ MakeRadio make_rigctld(const RadioModel&, const RadioSpec& spec, const RadioConf
   return {make_hamlib_radio({2, spec.host + ":" + std::to_string(spec.port), 0, spec.scheme}, t.worker), {}};
 }
 
+// A receiver's remote control (GQRX, SDR++): rigctld's protocol, the downlink only.
+MakeRadio make_receiver(const RadioModel& m, const RadioSpec& spec, const RadioConfig&, const DriverTiming& t, RadioRole) {
+  RigctldPeer peer{std::string(m.label.substr(0, m.label.find(' '))), true, m.one_client};
+  auto link = std::make_unique<RigctldLink>(spec.host + ":" + std::to_string(spec.port), HamlibVfoScheme::split, peer);
+  return {std::make_unique<WorkerRadio>(std::move(link), t.worker), {}};
+}
+
 }  // namespace
 
 std::span<const RadioModel> hamlib_rows() {
@@ -33,6 +41,18 @@ std::span<const RadioModel> hamlib_rows() {
       {.name = "rigctld", .label = "a rigctld daemon (NET rigctl)", .form = SpecForm::rigctld,
        .protocol = Protocol::rigctld, .caps = {.links = 2, .reads = true, .ctcss = true, .step_hz = 1},
        .hamlib_model = 2, .note = "HOST 127.0.0.1, PORT 4532 by default", .make = make_rigctld},
+      {.name = "gqrx", .label = "GQRX remote control (receiver)", .form = SpecForm::receiver,
+       .protocol = Protocol::receiver, .caps = {.links = 1, .reads = true, .step_hz = 1}, .port = 7356,
+       .one_client = true,
+       .note = "downlink only: no uplink, no tone; HOST 127.0.0.1, PORT 7356 by default; one client at a time "
+               "(Tools > Remote control in GQRX)",
+       .make = make_receiver},
+      {.name = "sdrpp", .label = "SDR++ rigctl server (receiver)", .form = SpecForm::receiver,
+       .protocol = Protocol::receiver, .caps = {.links = 1, .reads = true, .step_hz = 1}, .port = 4532,
+       .one_client = true,
+       .note = "downlink only: no uplink, no tone; HOST 127.0.0.1, PORT 4532 by default (trakbox's own "
+               "rigctld server's too: give one of them another); one client at a time",
+       .make = make_receiver},
   };
   return rows;
 }

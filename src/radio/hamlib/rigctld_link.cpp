@@ -24,7 +24,15 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
-std::string rprt_text(int rprt) { return "RPRT " + std::to_string(rprt) + " (" + hamlib_error_text(rprt) + ")"; }
+// A receiver's refusal is a positive code (GQRX, SDR++: `RPRT 1`), not Hamlib's negative ones.
+std::string rprt_text(int rprt) {
+  if (rprt > 0) return "RPRT " + std::to_string(rprt);
+  return "RPRT " + std::to_string(rprt) + " (" + hamlib_error_text(rprt) + ")";
+}
+
+// After being knocked off by another program, the first try again comes after 5 s, then 10, 20 ...
+// up to 5 minutes while it keeps happening; a connection that lasted 5 minutes starts it over.
+constexpr std::chrono::seconds kTakenFirst{5}, kTakenMax{300};
 
 bool starts_with(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
 
@@ -37,8 +45,8 @@ std::optional<Hz> parse_hz(const std::string& line) {
 
 }  // namespace
 
-RigctldLink::RigctldLink(std::string address, HamlibVfoScheme scheme, std::chrono::milliseconds timeout)
-    : address_(std::move(address)), scheme_(scheme), timeout_(timeout) {
+RigctldLink::RigctldLink(std::string address, HamlibVfoScheme scheme, RigctldPeer peer, std::chrono::milliseconds timeout)
+    : peer_(std::move(peer)), address_(std::move(address)), scheme_(scheme), timeout_(timeout) {
   const auto colon = address_.rfind(':');
   host_ = colon == std::string::npos ? address_ : address_.substr(0, colon);
   port_ = colon == std::string::npos ? 4532 : std::atoi(address_.c_str() + colon + 1);
@@ -47,7 +55,9 @@ RigctldLink::RigctldLink(std::string address, HamlibVfoScheme scheme, std::chron
 
 RigctldLink::~RigctldLink() { close(); }
 
-std::string RigctldLink::describe() const { return "Hamlib rigctld at " + address_; }
+std::string RigctldLink::describe() const {
+  return (peer_.receiver ? peer_.name : std::string("Hamlib rigctld")) + " at " + address_;
+}
 
 void RigctldLink::close() noexcept {
   if (fd_ >= 0) ::close(fd_);
@@ -95,6 +105,9 @@ void RigctldLink::open() {
   }
   ::freeaddrinfo(found);
   if (fd_ < 0) throw LinkError(Action::reconnect, describe() + ": cannot open: " + why);
+  answered_ = false;
+  opened_at_ = Clock::now();
+  if (peer_.receiver) return open_receiver();
 
   split_on_ = false;
   split_verified_ = false;
@@ -143,11 +156,36 @@ void RigctldLink::open() {
   }
 }
 
+// A receiver answers its first `f` with the frequency it is on: that answer is the connection.
+void RigctldLink::open_receiver() {
+  const Reply f = ask("f", 1);
+  if (f.rprt != 0 || !parse_hz(f.lines[0]))
+    transport("\"f\" answered \"" + (f.rprt != 0 ? rprt_text(f.rprt) : f.lines[0]) + "\", expected a frequency");
+  if (!announced_)
+    spdlog::info("radio {}: a receiver: the downlink only (F / f, no VFO named), no uplink, no tone{}", describe(),
+                 peer_.one_client ? "; it keeps one client" : "");
+  announced_ = true;
+}
+
+void RigctldLink::taken() {
+  const bool lasted = Clock::now() - opened_at_ > kTakenMax;
+  close();
+  if (lasted) takeovers_ = 0;
+  const auto wait = std::min<std::chrono::milliseconds>(kTakenFirst * (1 << std::min(takeovers_, 6)), kTakenMax);
+  ++takeovers_;
+  LinkError e(Action::reconnect, "another program holds " + peer_.name + "'s remote control (it closed trakbox's "
+                                 "connection: it keeps one client); trakbox tries again, less often each time");
+  e.hold_off = wait;
+  throw e;
+}
+
 void RigctldLink::check() {
   if (fd_ < 0) throw LinkError(Action::reconnect, describe() + " is not open");
   pollfd p{fd_, POLLRDHUP, 0};
-  if (::poll(&p, 1, 0) > 0 && (p.revents & (POLLHUP | POLLERR | POLLNVAL | POLLRDHUP)) != 0)
-    transport("the connection was closed (rigctld went away)");
+  if (::poll(&p, 1, 0) > 0 && (p.revents & (POLLHUP | POLLERR | POLLNVAL | POLLRDHUP)) != 0) {
+    if (peer_.one_client && answered_) taken();
+    transport("the connection was closed (" + peer_.name + " went away)");
+  }
 }
 
 void RigctldLink::write_all(const std::string& text) {
@@ -179,11 +217,18 @@ std::string RigctldLink::read_line() {
     }
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(until - Clock::now()).count();
     pollfd p{fd_, POLLIN, 0};
-    if (left <= 0 || ::poll(&p, 1, static_cast<int>(left)) <= 0)
+    if (left <= 0 || ::poll(&p, 1, static_cast<int>(left)) <= 0) {
+      if (peer_.one_client && !answered_)
+        transport("no answer within " + std::to_string(timeout_.count()) + " ms: another program may hold " + peer_.name +
+                  "'s remote control (it serves one client at a time), or its server is not started");
       transport("no reply within " + std::to_string(timeout_.count()) + " ms");
+    }
     char buf[512];
     const ssize_t n = ::recv(fd_, buf, sizeof buf, 0);
-    if (n == 0) transport("the connection was closed (rigctld went away)");
+    if (n == 0) {
+      if (peer_.one_client && answered_) taken();
+      transport("the connection was closed (" + peer_.name + " went away)");
+    }
     if (n < 0) {
       if (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR) continue;
       transport(std::string("cannot read: ") + std::strerror(errno));
@@ -197,6 +242,7 @@ RigctldLink::Reply RigctldLink::ask(const std::string& command, int lines) {
   write_all(command + "\n");
   Reply r;
   std::string line = read_line();
+  answered_ = true;
   if (starts_with(line, "RPRT ")) {
     r.rprt = std::atoi(line.c_str() + 5);
     if (r.rprt == 0 && lines > 0) transport("\"" + command + "\" answered RPRT 0 without its value");
@@ -208,11 +254,12 @@ RigctldLink::Reply RigctldLink::ask(const std::string& command, int lines) {
   return r;
 }
 
-void RigctldLink::refused(const std::string& what, int rprt, bool frequency) {
+void RigctldLink::refused(const std::string& what, int rprt, bool frequency, const std::string& lacking) {
   const int code = rprt < 0 ? -rprt : rprt;
   const bool soft = RIG_IS_SOFT_ERRCODE(code);
   std::string msg = describe() + ": " + what + " refused: " + rprt_text(rprt);
   if (!frequency) msg += "; Doppler tuning goes on";
+  if (!lacking.empty()) throw LinkError(lacking, msg + " (said once)");
   throw LinkError(frequency && !soft ? Action::retry : Action::drop, msg);
 }
 
@@ -226,7 +273,7 @@ std::string RigctldLink::vfo_arg(Link l) const {
 }
 
 void RigctldLink::ensure_split() {
-  if (uplink_refused_) throw LinkError(Action::drop, *uplink_refused_);
+  if (uplink_refused_) throw LinkError("no uplink", *uplink_refused_);
   if (split_on_ || carry_ == Carry::main_sub) return;
   const std::string cmd = std::string("S ") + (vfo_mode_ ? (carry_ == Carry::vfo_ab ? "VFOA " : "currVFO ") : "") + "1 VFOB";
   const Reply r = ask(cmd, 0);
@@ -234,7 +281,7 @@ void RigctldLink::ensure_split() {
     uplink_refused_ = describe() + ": split (" + cmd + ") refused: " + rprt_text(r.rprt) +
                       "; the uplink is not sent (give it its own radio with --uplink-radio); Doppler tuning "
                       "of the downlink goes on";
-    throw LinkError(Action::drop, *uplink_refused_);
+    throw LinkError("no uplink", *uplink_refused_);
   }
   split_on_ = true;
 }
@@ -259,10 +306,16 @@ void RigctldLink::verify_split(Hz uplink_hz) {
                     "--vfo so trakbox can address the VFOs, or give the uplink its own radio with "
                     "--uplink-radio; Doppler tuning of the downlink goes on";
   if (last_down_) ask("F " + vfo_arg(Link::downlink) + std::to_string(*last_down_), 0);  // put it back
-  throw LinkError(Action::drop, *uplink_refused_);
+  throw LinkError("no uplink", *uplink_refused_);
+}
+
+void RigctldLink::no_uplink_of_receiver() const {
+  throw LinkError("no uplink", describe() + ": a receiver carries no uplink: the uplink is not sent (give it its own "
+                               "radio with --uplink-radio); Doppler tuning of the downlink goes on");
 }
 
 void RigctldLink::set_frequency(Link l, Hz hz) {
+  if (l == Link::uplink && peer_.receiver) no_uplink_of_receiver();
   const std::string value = std::to_string(hz);
   if (l == Link::uplink && carry_ != Carry::main_sub) {
     ensure_split();
@@ -279,17 +332,19 @@ void RigctldLink::set_frequency(Link l, Hz hz) {
 
 void RigctldLink::set_mode(Link l, Mode mode) {
   if (mode == Mode::none) return;
+  if (l == Link::uplink && peer_.receiver) no_uplink_of_receiver();
   const char* name = to_string(mode);   // rigctld's names: FM, LSB, USB, CW
   const bool split_cmd = l == Link::uplink && carry_ == Carry::split;
   if (l == Link::uplink && carry_ != Carry::main_sub) ensure_split();
   const Reply r = ask(std::string(split_cmd ? "X " : "M ") + vfo_arg(l) + name + " 0", 0);
-  if (r.rprt != 0) refused(std::string(to_string(l)) + " mode " + name, r.rprt, false);
+  if (r.rprt != 0) refused(std::string(to_string(l)) + " mode " + name, r.rprt, false, std::string("no mode ") + name);
 }
 
-bool RigctldLink::can_read(Link l) const { return !(l == Link::uplink && uplink_refused_); }
+bool RigctldLink::can_read(Link l) const { return !(l == Link::uplink && (uplink_refused_ || peer_.receiver)); }
 
 Hz RigctldLink::read_frequency(Link l) {
-  if (l == Link::uplink && uplink_refused_) throw LinkError(Action::drop, *uplink_refused_);
+  if (l == Link::uplink && uplink_refused_) throw LinkError("no uplink", *uplink_refused_);
+  if (l == Link::uplink && peer_.receiver) no_uplink_of_receiver();
   const bool split_cmd = l == Link::uplink && carry_ == Carry::split;
   const std::string cmd = std::string(split_cmd ? "i" : "f") + (vfo_mode_ ? " " + vfo_arg(l) : "");
   Reply r = ask(cmd.back() == ' ' ? cmd.substr(0, cmd.size() - 1) : cmd, 1);
@@ -300,15 +355,21 @@ Hz RigctldLink::read_frequency(Link l) {
 }
 
 void RigctldLink::set_ctcss_tone(int tenths_hz) {
+  if (peer_.receiver) {
+    if (tenths_hz > 0)
+      throw LinkError("no CTCSS", describe() + ": a receiver has no CTCSS encoder: tone " + std::to_string(tenths_hz / 10) +
+                                      "." + std::to_string(tenths_hz % 10) + " Hz not sent");
+    return;
+  }
   // The encoder of the transmitting VFO: Main in Main/Sub, VFOB in VFO A/B, the current one in split.
   const std::string v = vfo_arg(Link::uplink);
   const std::string vfo = carry_ == Carry::split ? (vfo_mode_ ? "currVFO " : "") : v;
   const Reply r = ask("C " + vfo + std::to_string(tenths_hz), 0);
   if (r.rprt != 0) refused("CTCSS tone " + std::to_string(tenths_hz / 10) + "." + std::to_string(tenths_hz % 10) + " Hz",
-                           r.rprt, false);
+                           r.rprt, false, "no CTCSS");
   if (tenths_hz <= 0) return;
   const Reply on = ask("U " + vfo + "TONE 1", 0);
-  if (on.rprt != 0) refused("CTCSS encoder on (U TONE 1)", on.rprt, false);
+  if (on.rprt != 0) refused("CTCSS encoder on (U TONE 1)", on.rprt, false, "no CTCSS");
 }
 
 void RigctldLink::send_raw(const std::string& bytes) {

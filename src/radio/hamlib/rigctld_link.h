@@ -27,11 +27,24 @@
 
 namespace tb::radio {
 
+// What the program at the other end is: rigctld itself, or a receiver that speaks a part of its
+// protocol (GQRX's remote control, SDR++'s rigctl server: --radio gqrx / sdrpp). A receiver gets
+// plain one-letter commands without a VFO (no `\chk_vfo` hand-shake: its answer is the first `f`),
+// carries no uplink and no tone (each said once as a limit, never a fault), and may keep one
+// client: GQRX closes the first connection when a second arrives, SDR++ serves the next only
+// after the first ends. Its answers to refusals are positive (`RPRT 1`), a refusal all the same.
+struct RigctldPeer {
+  std::string name = "rigctld";   // "GQRX", "SDR++": the log's and the status's word for it
+  bool receiver = false;          // one link (the downlink), no tone, no split, no hand-shake
+  bool one_client = false;        // another program's connection takes the peer from trakbox
+};
+
 class RigctldLink final : public RadioLink {
  public:
   // host:port as --radio rigctld:HOST:PORT gives it (the last ':' separates the port).
-  RigctldLink(std::string address, HamlibVfoScheme scheme,
+  RigctldLink(std::string address, HamlibVfoScheme scheme, RigctldPeer peer = {},
               std::chrono::milliseconds timeout = std::chrono::milliseconds(1500));
+  std::string name() const override { return peer_.name; }
   ~RigctldLink() override;
   std::string describe() const override;
   void open() override;
@@ -64,11 +77,22 @@ class RigctldLink final : public RadioLink {
   // An RPRT error for a command: frequency commands are retried (the radio may answer next time)
   // unless Hamlib calls the code a soft one (the radio or backend refused the value); everything
   // else (tone, mode, satellite mode, split) is reported and dropped.
-  [[noreturn]] void refused(const std::string& what, int rprt, bool frequency);
+  // `lacking` names the feature a refusal shows the radio lacks ("no CTCSS", "no mode CW"): a
+  // capability learnt (LinkError::Action::lacks) rather than a refused command.
+  [[noreturn]] void refused(const std::string& what, int rprt, bool frequency, const std::string& lacking = {});
+  [[noreturn]] void no_uplink_of_receiver() const;
   std::string vfo_arg(Link l) const;     // "Sub " / "Main " / "VFOA " ... in --vfo mode, else ""
   void ensure_split();
   void verify_split(Hz uplink_hz);
 
+  void open_receiver();
+  // The peer closed an established connection: a one-client peer taken by another program.
+  [[noreturn]] void taken();
+
+  RigctldPeer peer_;
+  bool answered_ = false;                       // this connection has had a valid reply
+  int takeovers_ = 0;                           // knocked off in a row (one-client peer)
+  std::chrono::steady_clock::time_point opened_at_{};
   std::string address_, host_;
   int port_ = 0;
   HamlibVfoScheme scheme_;

@@ -20,7 +20,7 @@ KenwoodLink::KenwoodLink(std::string device, KenwoodOptions options, SerialSetti
     : port_(std::move(device), serial), opt_(options) {}
 
 std::string KenwoodLink::describe() const {
-  return (opt_.model == "Kenwood radio" ? std::string("Kenwood") : opt_.model) + " CAT on " + port_.device() +
+  return opt_.label + " CAT on " + port_.device() +
          (opt_.satellite_mode ? " (satellite mode)" : "");
 }
 

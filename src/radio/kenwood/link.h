@@ -24,6 +24,7 @@ struct KenwoodOptions {
   bool reads = false;             // read back with FA; / FB; (TS-2000)
   milliseconds reply_timeout{500};
   std::string model = "Kenwood radio";  // in messages ("the Kenwood radio has ...")
+  std::string label = "Kenwood";        // in describe(): "Kenwood CAT on /dev/ttyUSB0" (the registry row's)
   char vfo_select = 'N';          // FN0; / FN1; (TS-790/711/811); 'R': FR0; / FR1; (TS-2000)
   bool one_link = false;          // one of two radios: its one link on VFO A, whichever it is
   // The TS-2000's satellite mode (kenwood::Satellite): SA read, set before the first frequency

@@ -18,6 +18,7 @@ MakeRadio make_kenwood(const RadioModel& m, const RadioSpec& spec, const RadioCo
     o.reads = m.caps.reads;
     o.ctcss = m.caps.ctcss;
     o.model = std::string(m.label);
+    o.label = o.model;   // a model's row names it; the family's (menu 6-7's rig) says "Kenwood"
     o.one_link = role != RadioRole::both;
     if (m.satmode == SatCommand::kenwood_sa) {   // (:mainup is refused by parse_radio_spec)
       o.vfo_select = 'R';

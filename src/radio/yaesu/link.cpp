@@ -87,7 +87,7 @@ bool Ft8xxLink::carries(Link l) const {
 
 void Ft8xxLink::require(Link l) const {
   if (!carries(l))
-    throw LinkError(Action::drop, "the " + opt_.label + " carries one link (the downlink): the " + to_string(l) +
+    throw LinkError("no uplink", "the " + opt_.label + " carries one link (the downlink): the " + to_string(l) +
                                       " needs a second radio (--uplink-radio)");
 }
 

@@ -29,12 +29,37 @@ TEST_CASE("--rotator: one table for the drivers and a Satrak ACU") {
   CHECK(app::parse_rotator("satrak:").error.find("expected satrak:HOST[:PORT]") != std::string::npos);
   CHECK(app::parse_rotator("").error ==
         "bad --rotator '': unknown rotator ''; expected simulated, hamlib:MODEL:DEVICE[:BAUD], rotctld:HOST[:PORT], "
-        "satrak:HOST[:PORT] (trakbox --rotator list)");
+        "easycomm3:DEVICE[:BAUD], easycomm2:DEVICE[:BAUD], pstrotator:HOST[:PORT], satrak:HOST[:PORT] (trakbox --rotator list)");
   CHECK(app::parse_rotator("simulated:fast").error == "bad --rotator 'simulated:fast': simulated takes no parameters");
   CHECK(app::parse_rotator("gs232:/dev/ttyS0").error ==
         "bad --rotator 'gs232:/dev/ttyS0': unknown rotator 'gs232'; expected simulated, hamlib:MODEL:DEVICE[:BAUD], "
-        "rotctld:HOST[:PORT], satrak:HOST[:PORT] (trakbox --rotator list)");
+        "rotctld:HOST[:PORT], easycomm3:DEVICE[:BAUD], easycomm2:DEVICE[:BAUD], pstrotator:HOST[:PORT], satrak:HOST[:PORT] "
+        "(trakbox --rotator list)");
   CHECK_FALSE(app::parse_rotator("gs232").choice.rotator);
+
+  // Easycomm natively: the SatNOGS firmware's 19200 baud for III unless given, 9600 for II.
+  auto ec3 = app::parse_rotator("easycomm3:/dev/ttyACM0");
+  REQUIRE(ec3.choice.rotator);
+  CHECK(ec3.choice.rotator->kind == rotator::RotatorSpec::Kind::easycomm3);
+  CHECK(ec3.choice.rotator->device == "/dev/ttyACM0");
+  CHECK(ec3.choice.rotator->baud == 0);
+  CHECK(rotator::to_string(*ec3.choice.rotator) == "easycomm3:/dev/ttyACM0");
+  auto ec2 = app::parse_rotator("easycomm2:/dev/ttyUSB0:4800");
+  REQUIRE(ec2.choice.rotator);
+  CHECK(ec2.choice.rotator->baud == 4800);
+  CHECK(rotator::to_string(*ec2.choice.rotator) == "easycomm2:/dev/ttyUSB0:4800");
+  CHECK(app::parse_rotator("easycomm3:").error ==
+        "bad --rotator 'easycomm3:': missing DEVICE; expected easycomm3:DEVICE[:BAUD], e.g. easycomm3:/dev/ttyUSB0:19200");
+  CHECK(app::parse_rotator("easycomm2:/dev/ttyUSB0:9601").error ==
+        "bad --rotator 'easycomm2:/dev/ttyUSB0:9601': BAUD '9601' is not a serial speed (1200..115200); expected "
+        "easycomm2:DEVICE[:BAUD], e.g. easycomm2:/dev/ttyUSB0:9600");
+  CHECK(app::parse_rotator("easycomm3:/dev/x:19200:7").error.find("too many fields") != std::string::npos);
+  auto box = app::parse_rotator("pstrotator:192.0.2.20");
+  REQUIRE(box.choice.rotator);
+  CHECK(box.choice.rotator->port == 12000);
+  CHECK(rotator::to_string(*box.choice.rotator) == "pstrotator:192.0.2.20:12000");
+  CHECK(app::parse_rotator("pstrotator:192.0.2.20:65535").error ==
+        "bad --rotator 'pstrotator:192.0.2.20:65535': PORT 65535: its replies come to PORT+1, so at most 65534");
 
   const std::string list = app::rotator_list_text();
   for (const app::RotatorKind& k : app::rotator_kinds()) CHECK(list.find(std::string(k.form)) != std::string::npos);
@@ -59,6 +84,9 @@ TEST_CASE("--rotator: each row's factory makes its own driver") {
   auto net = make("rotctld:127.0.0.1:9");
   REQUIRE(net->as_degrees());
   CHECK(net->description().find("127.0.0.1:9") != std::string::npos);
+  auto ec = make("easycomm3:/nonexistent/ttyTB0");
+  REQUIRE(ec->as_degrees());
+  CHECK(ec->description() == "Easycomm III on /nonexistent/ttyTB0 at 19200 baud");
   auto acu = make("satrak:127.0.0.1:9");
   CHECK(acu->description().find("127.0.0.1") != std::string::npos);
   // Nothing chosen (a TrackerConfig made in code): the simulated rotator.

@@ -128,3 +128,29 @@ TEST_CASE("make_radio: each model's driver from the table, one of two radios wit
   cfg.rig_model = RigModel::yaesu_736;
   CHECK(make_radio("yaesu:/nonexistent/tty", cfg).driver->describe() == "Yaesu FT-736 CAT on /nonexistent/tty");
 }
+
+TEST_CASE("--radio gqrx / sdrpp: receivers, one link, no tone, their own ports") {
+  auto g = parse_radio_spec("gqrx");
+  REQUIRE(g.spec);
+  CHECK(g.spec->host == "127.0.0.1");
+  CHECK(g.spec->port == 7356);
+  g = parse_radio_spec("gqrx:192.0.2.4");
+  REQUIRE(g.spec);
+  CHECK(g.spec->host == "192.0.2.4");
+  CHECK(g.spec->port == 7356);
+  auto s = parse_radio_spec("sdrpp:localhost:4533");
+  REQUIRE(s.spec);
+  CHECK(s.spec->name == "sdrpp");
+  CHECK(s.spec->port == 4533);
+  CHECK(parse_radio_spec("sdrpp").spec->port == 4532);
+  CHECK(parse_radio_spec("gqrx:host:99999").error.find("expected gqrx[:HOST[:PORT]]") != std::string::npos);
+  const RadioModel* m = find_radio_model("gqrx");
+  REQUIRE(m);
+  CHECK(m->caps.links == 1);
+  CHECK_FALSE(m->caps.ctcss);
+  CHECK(m->one_client);
+  CHECK(spec_form(*m) == "gqrx[:HOST[:PORT]]");
+  auto made = make_radio("gqrx:127.0.0.1:9", RadioConfig{});
+  REQUIRE(made.driver);
+  CHECK(made.driver->describe() == "GQRX at 127.0.0.1:9");
+}

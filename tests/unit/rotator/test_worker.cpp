@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -25,6 +26,7 @@ struct Script {
   std::mutex m;
   int open_failures = 0;          // the next opens that fail
   bool lose = false;              // the next poll loses the link
+  bool silent = false;            // every poll goes unanswered (wrong speed, controller off)
   std::optional<std::string> refuse;  // go_to refuses with this
   AzEl position{12.5, 3.0};
   std::vector<std::string> calls;  // "open", "close", "stop", "goto 10.0/20.0" (polls not kept)
@@ -74,9 +76,9 @@ class ScriptedLink final : public RotatorLink {
     ++s_->polls_entered;
     std::lock_guard lk(s_->m);
     s_->log("poll");
-    if (s_->lose) {
+    if (s_->lose || s_->silent) {
       s_->lose = false;
-      error = "gone";
+      error = s_->silent ? "timed out" : "gone";
       return false;
     }
     report.position = s_->position;
@@ -187,4 +189,36 @@ TEST_CASE("WorkerRotator: a lost link is closed, reported, its position forgotte
   CHECK(r.script->seen() == std::vector<std::string>{"open", "close", "open"});
   r.rot.reset();  // the worker closes the link on its way out
   CHECK(r.script->seen() == std::vector<std::string>{"open", "close", "open", "close"});
+}
+
+TEST_CASE("WorkerRotator: open is not connected; a peer that never answers is one fault, with backoff") {
+  spdlog::set_level(spdlog::level::off);
+  auto script = std::make_shared<Script>();
+  script->silent = true;
+  // Backoff 50 ms doubling to 400 ms: in 1.5 s at most 1 + 50/50... about 6 opens, not one per poll.
+  WorkerRotator rot("scripted", std::make_unique<ScriptedLink>(script), {20ms, 200ms, 50ms, 400ms});
+  REQUIRE(wait_for([&] { return rot.health().state == LinkState::fault; }));
+  std::vector<LinkState> states;
+  const auto end = std::chrono::steady_clock::now() + 1500ms;
+  while (std::chrono::steady_clock::now() < end) {
+    states.push_back(rot.health().state);
+    std::this_thread::sleep_for(5ms);
+  }
+  // Never ok in between (so no link-back / link-lost pairs), never counted as a connection.
+  CHECK(std::count(states.begin(), states.end(), LinkState::ok) == 0);
+  CHECK(rot.health().connects == 0);
+  CHECK(rot.health().message.rfind("no answer from scripted: check the speed, the cable, the power", 0) == 0);
+  CHECK_FALSE(rot.read().has_value());
+  const auto calls = script->seen();
+  const auto opens = std::count(calls.begin(), calls.end(), std::string("open"));
+  CHECK(opens >= 3);
+  CHECK(opens <= 8);   // 50 + 100 + 200 + 400 + 400 ... ms apart
+  // It answers: connected, ok, once.
+  {
+    std::lock_guard lk(script->m);
+    script->silent = false;
+  }
+  REQUIRE(wait_for([&] { return rot.health().state == LinkState::ok; }));
+  CHECK(rot.health().connects == 1);
+  CHECK(rot.read().has_value());
 }
