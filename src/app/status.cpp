@@ -294,7 +294,7 @@ std::vector<std::string> status_problems(const nlohmann::json& s) {
   if (s.at("elements_refresh").value("last_failed", false))
     out.push_back("element refresh failed: " + s["elements_refresh"].value("last_result", ""));
   if (const auto l = s.value("log", nlohmann::json()); l.is_object()) {
-    if (!l.value("open", true)) out.push_back("logbook: " + l.value("problem", std::string("not open")));
+    if (l.contains("problem")) out.push_back("logbook: " + l.value("problem", std::string()));
     if (l.contains("upload_problem")) out.push_back("logger: " + l.value("upload_problem", std::string()));
   }
   return out;

@@ -32,7 +32,9 @@ LogResult LogOps::fill(const LogRequest& r) const {
   q.note = r.note;
   q.source = r.source;
   q.power_w = r.power_w;
-  q.station_call = model.station.callsign;
+  // The station's callsign as menu 4 has it; the factory's NOCALL (or anything else that is no
+  // callsign) is left out rather than refusing the operator's QSO.
+  if (!logbook::check_callsign("station_call", model.station.callsign)) q.station_call = model.station.callsign;
   q.my_grid = station::maidenhead_locator(model.station.lat_deg, model.station.lon_deg).substr(0, 6);
   const auto now = std::chrono::floor<std::chrono::seconds>(station_.clock().now());
   q.time_on = r.time_on ? *r.time_on : now.time_since_epoch().count();

@@ -45,7 +45,7 @@ Response log_get(tracker::StationLoop& station, const std::string& path, const s
   tracker::LogOps ops(station);
   std::string why;
   logbook::Logbook* b = ops.book(why);
-  if (!b) return refuse(503, why);
+  if (!b) return refuse(409, why);
   const auto since = since_of(target);
   if (!since) return refuse(400, "since: expected a UTC date like 2026-12-01 or a time like 2026-12-01T21:00Z");
   const auto qsos = b->list(*since);
@@ -68,7 +68,7 @@ Response log_post(tracker::StationLoop& station, const std::string& path, const 
   tracker::LogOps ops(station);
   std::string why;
   logbook::Logbook* b = ops.book(why);
-  if (!b) return refuse(503, why);
+  if (!b) return refuse(409, why);
   if (path == "/api/v1/log") {
     tracker::LogRequest req;
     req.source = logbook::Source::web;
