@@ -3,13 +3,11 @@ tracks, one from each of the page's API, host mode over TCP and `trakbox log add
 killed with SIGKILL right after the third acknowledgement, restarted, and all three are there.
 The ADIF export gives TQSL's names (<SAT_NAME:5>RS-44, <SAT_NAME:5>ARISS) with the uplink in
 BAND/FREQ, and a malformed file is refused whole, naming the record and the field."""
-import json
 import os
 import re
 import shutil
 import signal
 import socket
-import subprocess
 import sys
 import tempfile
 import time
