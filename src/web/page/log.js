@@ -8,9 +8,14 @@
   async function call(method, path, body) {
     const opts = { method, credentials: "same-origin" };
     if (body) { opts.headers = { "Content-Type": "application/json" }; opts.body = JSON.stringify(body); }
-    const res = await fetch(path, opts);
-    if (res.status === 401) { location.href = "/login"; return null; }
-    const j = await res.json();
+    let res, j;
+    try {
+      res = await fetch(path, opts);
+      if (res.status === 401) { location.href = "/login"; return null; }
+      j = await res.json();
+    } catch (e) {
+      throw new Error("the station does not answer");
+    }
     if (!res.ok) throw new Error(j.error || ("HTTP " + res.status));
     return j;
   }
