@@ -1,4 +1,5 @@
 #include "menus/realtime_display.h"
+#include "menus/realtime_log.h"
 
 
 #include <algorithm>
@@ -174,7 +175,7 @@ std::string elements_age_line(Services& s, int db_index) {
   return line;
 }
 
-// A key typed under the live display, other than Q and the end of the input: E, Y, U, D, +, -, 0.
+// A key typed under the live display, other than Q and the end of the input: E, Y, U, D, L, +, -, 0.
 void realtime_key(term::Terminal& t, Services& s, int k) {
   switch (k) {
     case term::kTimeout: break;
@@ -208,6 +209,10 @@ void realtime_key(term::Terminal& t, Services& s, int k) {
       s.station.tuner().set_config(s.model.radio);
       save_or_report(t, s);
       if (!t.full_screen()) t.line(s.model.radio.dial_follow ? "Dial follow ON" : "Dial follow OFF");
+      break;
+    case 'l':
+    case 'L':
+      realtime_log_qso(t, s);  // a QSO of this pass into the logbook (menus/realtime_log.cpp)
       break;
     case '+':
     case '-':

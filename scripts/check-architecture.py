@@ -15,7 +15,7 @@ import sys
 
 ROOT = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), ".."))
 DOC = os.path.join(ROOT, "docs", "ARCHITECTURE.md")
-EXTERNAL = {"nlohmann-json", "pugixml", "libcurl", "libgps", "ncurses", "boost.asio", "spdlog", "hamlib", "nothing", "—", "-", ""}
+EXTERNAL = {"nlohmann-json", "pugixml", "libcurl", "libgps", "ncurses", "boost.asio", "spdlog", "hamlib", "libsqlite3", "nothing", "—", "-", ""}
 
 
 def modules():

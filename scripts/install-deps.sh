@@ -8,7 +8,7 @@ what=${1:-all}
 run_pkgs=(
   cmake ninja-build g++ pkg-config
   libncurses-dev libboost-dev libspdlog-dev libfmt-dev nlohmann-json3-dev
-  libcurl4-openssl-dev libhamlib-dev libpugixml-dev libcairo2-dev libgps-dev
+  libcurl4-openssl-dev libhamlib-dev libpugixml-dev libcairo2-dev libgps-dev libsqlite3-dev
 )
 test_pkgs=(
   python3 doctest-dev libbenchmark-dev

@@ -7,6 +7,7 @@
 #include "app/attach_client.h"
 #include "app/cli_elements.h"
 #include "app/cli_orbit.h"
+#include "app/log_requests.h"
 #include "app/options.h"
 #include "app/rotator_registry.h"
 #include "app/tracker_app.h"
@@ -34,6 +35,7 @@ std::string usage() {
          "  status [--json] [--socket PATH|--state DIR]   what the running station does; exit 0 healthy,\n"
          "                      1 running with problems, 3 not running\n"
          "  events [--socket PATH|--state DIR]   the running station's events as JSON lines\n"
+         "  log add|list|export|import ...   the logbook: a QSO of the pass tracked, ADIF out and in\n"
          "  host [options]      host mode (menu 7's commands: AZ EL, MU, MD, FU, FD, S, ?A, ?, Q) on\n"
          "                      stdin/stdout for scripts; takes the options above\n" +
          "\n"
@@ -71,7 +73,8 @@ int main(int argc, char** argv) {
     if (command == "attach") return run_attach(rest);
     if (command == "status") return run_status(rest);
     if (command == "events") return run_events(rest);
-    std::fprintf(stderr, "trakbox: %s: unknown command; expected propagate, schedule, passes, next, elements, host, satrak, attach, status or events (see trakbox --help)\n",
+    if (command == "log") return run_log(rest);
+    std::fprintf(stderr, "trakbox: %s: unknown command; expected propagate, schedule, passes, next, elements, host, satrak, attach, status, events or log (see trakbox --help)\n",
                  command.c_str());
     return kExitUsage;
   }

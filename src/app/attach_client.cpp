@@ -299,6 +299,20 @@ int request(const std::string& command, const std::vector<std::string>& args, st
   return fd;
 }
 
+std::optional<std::string> station_request(const std::string& socket, const std::string& command,
+                                           const std::string& line, bool& not_running) {
+  const int fd = connect_station(socket, command, not_running);
+  if (fd < 0) return std::nullopt;
+  if (!send_all(fd, line + "\n")) {
+    std::fprintf(stderr, "trakbox %s: %s: the station closed the connection\n", command.c_str(), socket.c_str());
+    ::close(fd);
+    return std::nullopt;
+  }
+  auto text = read_to_end(fd);
+  ::close(fd);
+  return text;
+}
+
 int run_status(const std::vector<std::string>& args) {
   std::optional<ClientArgs> a;
   int code = kExitOk;

@@ -309,7 +309,8 @@ struct AttachServer::Impl {
       return;
     }
     ++greeting;
-    auto buf = std::make_shared<asio::streambuf>(4096);
+    // 1 MiB: the longest first line, a `trakbox log import` with its file (a local socket).
+    auto buf = std::make_shared<asio::streambuf>(1 << 20);
     auto timer = std::make_shared<asio::steady_timer>(io, std::chrono::seconds(10));
     timer->async_wait([out](const boost::system::error_code& ec) {
       if (!ec) out->close();
@@ -336,6 +337,9 @@ struct AttachServer::Impl {
         out->finish();
       } else if (line == "events") {
         subscribe(out);
+      } else if (line.rfind("log ", 0) == 0 && opt.log) {
+        out->send(opt.log(line.substr(4)) + "\n");
+        out->finish();
       } else if (line.rfind("attach", 0) == 0 && !opt.menus) {
         out->send("refused: this trakbox's menus are on its own terminal (pid " + std::to_string(::getpid()) +
                   "); status and events answer here\n");

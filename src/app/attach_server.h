@@ -49,6 +49,8 @@ inline constexpr std::size_t kMaxScreenTypes = 8;  // terminal types with a kept
 struct AttachServerOptions {
   std::string path;                           // the socket
   std::function<nlohmann::json()> status;     // the status document
+  // "log {json}": the logbook's request (`trakbox log ...`, app/log_requests.h), its JSON reply.
+  std::function<std::string(const std::string&)> log;
   // Whether the menus are offered (a trakbox whose menus are on its console answers status and
   // events, and tells an attach where its menus are).
   bool menus = true;

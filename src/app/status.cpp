@@ -14,6 +14,7 @@
 #include "station/clock.h"
 #include "station/station.h"
 #include "tracker/elements_refresh.h"
+#include "tracker/log_json.h"
 #include "tracker/station_loop.h"
 
 namespace tb::app {
@@ -256,6 +257,7 @@ nlohmann::json station_status(StationApp& app, const StatusContext& cx) {
   j["attached"] = cx.attached;
   j["keyboard"] = cx.keyboard.empty() ? nlohmann::json(nullptr) : nlohmann::json(cx.keyboard);
   j["status_line"] = app.station().status_line();
+  j["log"] = tracker::log_summary(tracker::LogOps(app.station()));
   const auto problems = status_problems(j);
   j["healthy"] = problems.empty();
   j["problems"] = problems;
@@ -296,6 +298,10 @@ std::vector<std::string> status_problems(const nlohmann::json& s) {
   }
   if (s.at("elements_refresh").value("last_failed", false))
     out.push_back("element refresh failed: " + s["elements_refresh"].value("last_result", ""));
+  if (const auto l = s.value("log", nlohmann::json()); l.is_object()) {
+    if (l.contains("problem")) out.push_back("logbook: " + l.value("problem", std::string()));
+    if (l.contains("upload_problem")) out.push_back("logger: " + l.value("upload_problem", std::string()));
+  }
   return out;
 }
 
@@ -373,6 +379,13 @@ std::string format_status(const nlohmann::json& s) {
           key == "dropped_slow")
         if (value.is_number() && value.get<long long>() > 0) l += ", " + key + " " + std::to_string(value.get<long long>());
     line(l);
+  }
+  if (const auto l = s.value("log", nlohmann::json()); l.is_object() && l.value("open", false)) {
+    std::string t = "  log       " + std::to_string(l.value("count", 0)) + " QSO(s)";
+    if (l.contains("last") && l["last"].is_object())
+      t += ", last " + l["last"].value("call", "") + " " + l["last"].value("sat_name", "") + " " + l["last"].value("time_on", "");
+    t += ", " + std::to_string(l.value("queue", 0)) + " to upload";
+    line(t);
   }
   const auto& sv = s.at("save");
   line("  saved     " + (sv.at("last_saved").is_null() ? std::string("not yet") : sv["last_saved"].get<std::string>()));

@@ -19,6 +19,7 @@
 #include "app/attach_server.h"
 #include "app/build_info.h"
 #include "app/event_hooks.h"
+#include "app/log_requests.h"
 #include "app/state_lock.h"
 #include "app/station_app.h"
 #include "app/status.h"
@@ -38,6 +39,7 @@
 #include "store/drivers.h"
 #include "tracker/elements_refresh.h"
 #include "tracker/events.h"
+#include "tracker/log_ops.h"
 #include "tracker/station_loop.h"
 #include "web/access.h"
 #include "web/api.h"
@@ -420,6 +422,7 @@ std::unique_ptr<AttachServer> open_socket(StationApp& app, const TrackerConfig& 
     if (*self) cx.attached = (*self)->attached(), cx.keyboard = (*self)->keyboard();
     return station_status(app, cx);
   };
+  o.log = [&app](const std::string& request) { return log_socket_request(app, request); };
   try {
     auto server = std::make_unique<AttachServer>(
         app.io(), [&app](int fd, std::optional<term::Duration> t) { return app.wait_readable(fd, t); }, o, app.log());
@@ -578,6 +581,7 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   } stopped_line{log};
   StationApp app(startup.model, file, log);
   if (auto err = build_station(app, c)) return usage_error(*err);
+  const std::unique_ptr<tracker::Logging> logging = open_logging(app, c);
   configure_refresh(app, c);
   app.start_gps();
   app.set_satrak_saved(startup.satrak_saved);

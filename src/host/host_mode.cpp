@@ -1,4 +1,5 @@
 #include "host/host_mode.h"
+#include "host/host_log.h"
 
 #include <cctype>
 #include <charconv>
@@ -171,6 +172,7 @@ std::vector<std::string> Interpreter::help() {
       "?A           present antenna position          reply AZ220.0 EL45.0",
       "RF           refresh the elements now          (menu 3-5's sources)",
       "?R           the last element refresh          reply REFRESH ...",
+      "LOG CALL [GRID] [RST]  log a QSO of this pass  reply LOGGED n CALL SAT TIME",
       "?            this list",
       "Q            quit to the main menu",
   };
@@ -189,6 +191,7 @@ Reply Interpreter::execute(std::string_view line) {
   if (u == "?A") return antenna();
   if (u == "RF") return refresh_now();
   if (u == "?R") return refresh_status();
+  if (u == "LOG" || u.rfind("LOG ", 0) == 0) return log_command(station_, s.substr(3));
   if (u.rfind("AZ", 0) == 0) return az_el(s);
   if (u.rfind("MU", 0) == 0 || u.rfind("MD", 0) == 0) return mode(u.substr(0, 2), s.substr(2));
   if (u.rfind("FU", 0) == 0 || u.rfind("FD", 0) == 0) return frequency(u.substr(0, 2), s.substr(2));

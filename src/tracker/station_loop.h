@@ -19,6 +19,7 @@
 namespace tb::tracker {
 
 class ElementsRefresh;
+struct Logging;
 
 class StationLoop {
  public:
@@ -120,6 +121,10 @@ class StationLoop {
   // unit read it through here. The status line carries its word (Monitor::status_word).
   void set_gps(gps::Monitor* m) { gps_ = m; }
   gps::Monitor* gps() const { return gps_; }
+  // The operator's logbook, when the program has one (tracker::LogOps reaches it through here).
+  void set_logging(Logging* l) { logging_ = l; }
+  Logging* logging() const { return logging_; }
+  const station::Clock& clock() const { return clock_; }
   // When the station follows the receiver (model.gps.follow) and its confirmed position is farther
   // than model.gps.threshold_m from the station's (or the position was typed in): the station moves
   // there (a 2D fix keeps the stored height), the geometry is reconfigured and true is returned (the
@@ -146,6 +151,7 @@ class StationLoop {
   std::string notice_;
   ElementsRefresh* refresh_ = nullptr;
   gps::Monitor* gps_ = nullptr;
+  Logging* logging_ = nullptr;
   std::uint64_t position_generation_ = 0;
   std::optional<int> remote_db_;  // remote_'s satellite in the database
   std::function<void()> wake_;

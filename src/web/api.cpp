@@ -15,6 +15,7 @@
 #include "util/cidr.h"
 #include "util/json_limits.h"
 #include "util/text.h"
+#include "web/api_log.h"
 #include "web/page.h"
 
 namespace tb::web {
@@ -189,6 +190,9 @@ Response Api::route(const Request& r, const Grant& g) {
     if (path == "/api/v1/satellites") return satellites();
     if (path == "/api/v1/passes") return passes(r.target);
     if (path == "/api/v1/sky") return ok(sky());
+    if (is_log_path(path))
+      return log_get(station_, path, r.target, hooks_.wall_now_unix ? hooks_.wall_now_unix() : 0,
+                     hooks_.status ? hooks_.status().value("version", std::string()) : std::string());
     return error(404, "no such endpoint: " + printable(path, 60));
   }
   if (r.method != "POST") return error(405, "method " + printable(r.method, 10) + " not allowed: GET or POST");
@@ -207,6 +211,11 @@ Response Api::route(const Request& r, const Grant& g) {
   const json body = r.body.empty() ? json::object() : json::parse(r.body, nullptr, false);
   if (body.is_discarded()) return error(400, "the body is not valid JSON");
   if (!body.is_object()) return error(400, "the body must be a JSON object");
+  if (is_log_path(path)) {
+    Response res = log_post(station_, path, body);
+    if (res.status == 200 && hooks_.changed) hooks_.changed();
+    return res;
+  }
   return post(path, body);
 }
 

@@ -1,0 +1,105 @@
+// The "Log QSO" card (docs/logbook.md): call, grid and report typed at the rig; the station fills
+// the satellite, mode, both frequencies and the time from the pass it tracks (POST /api/v1/log).
+// Below it today's QSOs (UTC) with edit and delete, and the ADIF export link.
+"use strict";
+(function () {
+  const el = (id) => document.getElementById(id);
+
+  async function call(method, path, body) {
+    const opts = { method, credentials: "same-origin" };
+    if (body) { opts.headers = { "Content-Type": "application/json" }; opts.body = JSON.stringify(body); }
+    let res, j;
+    try {
+      res = await fetch(path, opts);
+      if (res.status === 401) { location.href = "/login"; return null; }
+      j = await res.json();
+    } catch (e) {
+      throw new Error("the station does not answer");
+    }
+    if (!res.ok) throw new Error(j.error || ("HTTP " + res.status));
+    return j;
+  }
+
+  function today() { return new Date().toISOString().slice(0, 10); }
+
+  function say(text, bad) {
+    const r = el("log-reply");
+    r.textContent = text;
+    r.className = bad ? "note bad" : "note";
+  }
+
+  function button(text, onClick) {
+    const b = document.createElement("button");
+    b.type = "button";
+    b.textContent = text;
+    b.addEventListener("click", onClick);
+    return b;
+  }
+
+  async function edit(q) {
+    const grid = prompt("Grid of " + q.call, q.grid);
+    if (grid === null) return;
+    try {
+      await call("POST", "/api/v1/log/edit", { id: q.id, grid: grid.trim() });
+      say("QSO " + q.id + " changed");
+      refresh();
+    } catch (e) { say(e.message, true); }
+  }
+
+  async function remove(q) {
+    if (!confirm("Delete QSO " + q.id + " with " + q.call + "?")) return;
+    try {
+      await call("POST", "/api/v1/log/delete", { id: q.id });
+      say("QSO " + q.id + " deleted");
+      refresh();
+    } catch (e) { say(e.message, true); }
+  }
+
+  async function refresh() {
+    let j;
+    try { j = await call("GET", "/api/v1/log?since=" + today()); } catch (e) { say(e.message, true); return; }
+    if (!j) return;
+    const body = el("log-list").querySelector("tbody");
+    body.textContent = "";
+    for (const q of j.qsos.slice().reverse()) {
+      const tr = document.createElement("tr");
+      for (const v of [q.time_on.slice(11, 16), q.call, q.sat_name, q.grid, q.mode]) {
+        const td = document.createElement("td");
+        td.textContent = v;
+        tr.appendChild(td);
+      }
+      const td = document.createElement("td");
+      td.appendChild(button("Edit", () => edit(q)));
+      td.appendChild(button("Delete", () => remove(q)));
+      tr.appendChild(td);
+      body.appendChild(tr);
+    }
+    el("log-count").textContent = j.qsos.length + " today, " + j.summary.count + " in the log" +
+      (j.summary.queue ? ", " + j.summary.queue + " to upload" : "");
+  }
+
+  async function logQso(ev) {
+    ev.preventDefault();
+    const body = { call: el("log-call").value.trim() };
+    const grid = el("log-grid").value.trim(), rst = el("log-rst").value.trim();
+    if (grid) body.grid = grid;
+    if (rst) body.rst_sent = rst;
+    say("…");
+    try {
+      const j = await call("POST", "/api/v1/log", body);
+      if (!j) return;
+      say("Logged " + j.qso.call + " on " + j.qso.sat_name + " " + j.qso.mode + " at " + j.qso.time_on.slice(11, 19) + " UTC");
+      el("log-call").value = "";
+      el("log-grid").value = "";
+      el("log-call").focus();
+      refresh();
+    } catch (e) { say(e.message, true); }
+  }
+
+  document.addEventListener("DOMContentLoaded", () => {
+    if (!el("log-form")) return;
+    el("log-form").addEventListener("submit", logQso);
+    refresh();
+    setInterval(refresh, 60000);
+  });
+})();

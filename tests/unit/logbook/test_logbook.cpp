@@ -1,0 +1,184 @@
+#include <doctest/doctest.h>
+#include <sqlite3.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+
+#include "logbook/logbook.h"
+
+using namespace tb::logbook;
+namespace fs = std::filesystem;
+
+namespace {
+struct TempBook {
+  fs::path dir;
+  TempBook() {
+    static int n = 0;
+    dir = fs::temp_directory_path() / ("trakbox-logbook-" + std::to_string(::getpid()) + "-" + std::to_string(++n));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+  }
+  ~TempBook() { fs::remove_all(dir); }
+  std::string path() const { return (dir / "logbook.sqlite").string(); }
+};
+
+Qso rs44() {
+  Qso q;
+  q.call = "W1AW";
+  q.grid = "FN31";
+  q.rst_sent = "59";
+  q.rst_rcvd = "57";
+  q.time_on = 1796161460;  // 2026-12-01 21:44:20
+  q.sat_name = "RS-44";
+  q.lotw_name = "RS-44";
+  q.norad = 44909;
+  q.mode = "SSB";
+  q.uplink_hz = 145'965'000;
+  q.downlink_hz = 435'640'000;
+  q.uplink_tuned_hz = 145'962'310;
+  q.downlink_tuned_hz = 435'648'070;
+  q.my_grid = "DM42";
+  q.station_call = "WA7GXD";
+  q.power_w = 25;
+  q.note = "first RS-44";
+  q.source = Source::web;
+  return q;
+}
+}  // namespace
+
+TEST_CASE("A QSO is stored with every field, survives reopening, and the schema is version 1") {
+  TempBook t;
+  std::string err;
+  {
+    auto book = Logbook::open(t.path(), err);
+    REQUIRE_MESSAGE(book, err);
+    const Added a = book->add(rs44());
+    REQUIRE_MESSAGE(a.ok(), a.error);
+    CHECK(a.id == 1);
+  }
+  auto book = Logbook::open(t.path(), err);
+  REQUIRE(book);
+  const auto q = book->get(1);
+  REQUIRE(q);
+  Qso want = rs44();
+  want.id = 1;
+  want.band = "2m";
+  want.band_rx = "70cm";
+  CHECK(*q == want);
+  CHECK(book->count() == 1);
+  CHECK(book->last()->call == "W1AW");
+  CHECK(fs::exists(t.dir / "logbook.sqlite-wal"));
+}
+
+TEST_CASE("A bad record is refused naming the field and nothing is stored") {
+  TempBook t;
+  std::string err;
+  auto book = Logbook::open(t.path(), err);
+  REQUIRE(book);
+  Qso q = rs44();
+  q.grid = "FN3";
+  const Added a = book->add(q);
+  CHECK_FALSE(a.ok());
+  CHECK(a.error.rfind("grid: 'FN3'", 0) == 0);
+  CHECK(book->count() == 0);
+}
+
+TEST_CASE("An edit keeps the previous version; delete is a mark with a version of its own") {
+  TempBook t;
+  std::string err;
+  auto book = Logbook::open(t.path(), err);
+  REQUIRE(book);
+  REQUIRE(book->add(rs44()).ok());
+  Qso changed = rs44();
+  changed.grid = "FN42";
+  changed.source = Source::cli;  // the source of a record stays the one it was made by
+  REQUIRE(book->edit(1, changed).ok());
+  auto now = book->get(1);
+  REQUIRE(now);
+  CHECK(now->grid == "FN42");
+  CHECK(now->version == 2);
+  CHECK(now->source == Source::web);
+  auto old = book->versions(1);
+  REQUIRE(old.size() == 1);
+  CHECK(old[0].grid == "FN31");
+  CHECK(old[0].version == 1);
+  REQUIRE(book->remove(1).ok());
+  CHECK(book->count() == 0);
+  CHECK(book->list().empty());
+  REQUIRE(book->list(0, true).size() == 1);
+  CHECK(book->list(0, true)[0].deleted);
+  CHECK(book->versions(1).size() == 2);
+  CHECK(book->remove(1).error == "id: no QSO 1 in the log");
+  CHECK(book->edit(7, rs44()).error == "id: no QSO 7 in the log");
+}
+
+TEST_CASE("Import stores all or nothing and recognises duplicates") {
+  TempBook t;
+  std::string err;
+  auto book = Logbook::open(t.path(), err);
+  REQUIRE(book);
+  REQUIRE(book->add(rs44()).ok());
+  Qso other = rs44();
+  other.call = "K1JT";
+  Qso bad = rs44();
+  bad.call = "K1 JT";
+  const Imported refused = book->import({other, bad});
+  CHECK(refused.error == "record 2: call: 'K1 JT' is not a callsign (letters, digits and '/' only)");
+  CHECK(book->count() == 1);
+  const Imported r = book->import({rs44(), other, other});
+  CHECK(r.error.empty());
+  CHECK(r.added == 1);
+  CHECK(r.duplicates == 2);
+  CHECK(book->count() == 2);
+}
+
+TEST_CASE("The upload queue is on disk: it is there after reopening until marked done") {
+  TempBook t;
+  std::string err;
+  {
+    auto book = Logbook::open(t.path(), err);
+    REQUIRE(book);
+    REQUIRE(book->add(rs44(), true).ok());
+    book->upload_failed(1, 1796161520, "logger: connection refused");
+  }
+  auto book = Logbook::open(t.path(), err);
+  REQUIRE(book);
+  const auto q = book->upload_queue();
+  REQUIRE(q.size() == 1);
+  CHECK(q[0].qso_id == 1);
+  CHECK(q[0].attempts == 1);
+  CHECK(q[0].next_try == 1796161520);
+  CHECK(q[0].last_error == "logger: connection refused");
+  book->upload_done(1);
+  CHECK(book->upload_queue_length() == 0);
+}
+
+TEST_CASE("A logbook of a newer schema is refused, not changed") {
+  TempBook t;
+  std::string err;
+  REQUIRE(Logbook::open(t.path(), err));
+  sqlite3* db = nullptr;
+  REQUIRE(sqlite3_open(t.path().c_str(), &db) == SQLITE_OK);
+  CHECK(sqlite3_exec(db, "PRAGMA user_version = 99", nullptr, nullptr, nullptr) == SQLITE_OK);
+  sqlite3_close(db);
+  CHECK_FALSE(Logbook::open(t.path(), err));
+  CHECK(err == t.path() + ": its schema version 99 is newer than this trakbox's (1)");
+}
+
+TEST_CASE("The cost of one insert with synchronous=FULL (one transaction, fsync in WAL)") {
+  TempBook t;
+  std::string err;
+  auto book = Logbook::open(t.path(), err);
+  REQUIRE(book);
+  const auto t0 = std::chrono::steady_clock::now();
+  constexpr int kN = 20;
+  for (int i = 0; i < kN; ++i) {
+    Qso q = rs44();
+    q.time_on += i;
+    REQUIRE(book->add(q).ok());
+  }
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() / kN;
+  MESSAGE("one QSO insert: " << ms << " ms");
+  CHECK(book->count() == kN);
+}
