@@ -15,6 +15,7 @@
 #include "store/refresh.h"
 #include "store/satnogs.h"
 #include "tracker/elements_refresh.h"
+#include "tracker/operations.h"
 #include "tracker/station_loop.h"
 #include "util/files.h"
 
@@ -87,12 +88,13 @@ void set_interval(term::Terminal& t, Services& s) {
 }
 
 void refresh_now(term::Terminal& t, Services& s) {
-  tracker::ElementsRefresh* live = s.station.refresh();
-  if (!live) {
+  if (!s.station.refresh()) {
     t.line("  No refresh here.");
     return;
   }
-  if (const auto why = live->refresh_now(tracker::ElementsRefresh::wall_now())) t.line("  Not started: " + *why);
+  // Through the operations' one home: the same 10-minute limit per source as every front end.
+  const tracker::OpResult done = tracker::StationOps(s.station).refresh_elements(tracker::ElementsRefresh::wall_now());
+  if (!done.ok()) t.line("  Not started: " + *done.refusal);
   else t.line("  Refresh started: the result shows here, in the status line and in the log.");
 }
 

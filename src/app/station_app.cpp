@@ -147,6 +147,7 @@ struct StationApp::Impl {
   bool started = false;  // the tick timer runs (start() was called)
   int last_signal = 0;
   bool unattended = false;
+  std::function<void()> on_hangup;
   store::Model model;
   store::StateFile file;
   std::shared_ptr<spdlog::logger> log;
@@ -227,6 +228,7 @@ StationApp::StationApp(store::Model model, store::StateFile file, std::shared_pt
   impl_->refresh = std::make_unique<tracker::ElementsRefresh>(
       impl_->model, [this](std::function<void()> f) { asio::post(impl_->io, std::move(f)); },
       [this] { save(); });
+  impl_->refresh->set_station_clock(&impl_->clock);
 }
 StationApp::~StationApp() = default;
 
@@ -423,6 +425,8 @@ void StationApp::Impl::park_before_leaving(StationApp& app) {
   log->info("service: antenna {}", station->rotator().status().on_target ? "parked" : "not parked in time");
 }
 
+void StationApp::on_hangup(std::function<void()> f) { impl_->on_hangup = std::move(f); }
+
 int StationApp::run_service(const std::string& data_dir, const std::function<void()>& menus) {
   Impl& m = *impl_;
   m.unattended = true;
@@ -434,6 +438,7 @@ int StationApp::run_service(const std::string& data_dir, const std::function<voi
     } catch (const Shutdown&) {
       if (m.last_signal == SIGHUP) {
         if (m.reread_data(data_dir)) save();
+        if (m.on_hangup) m.on_hangup();
         m.arm_signals();
         continue;
       }

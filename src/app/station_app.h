@@ -100,6 +100,8 @@ class StationApp {
   // when given, runs the menus for attached terminals on the event loop meanwhile (it is started
   // again after a SIGHUP). Returns the exit status; the caller saves.
   int run_service(const std::string& data_dir, const std::function<void()>& menus = {});
+  // Also run on each SIGHUP of run_service, after the data files (the endpoints' secret files).
+  void on_hangup(std::function<void()> f);
 
  private:
   struct Impl;

@@ -20,6 +20,7 @@
 #include "app/build_info.h"
 #include "app/event_hooks.h"
 #include "app/log_requests.h"
+#include "app/secret_reload.h"
 #include "app/state_lock.h"
 #include "app/station_app.h"
 #include "app/status.h"
@@ -190,6 +191,17 @@ struct Servers {
     satrak.reset();
   }
 };
+
+// What SIGHUP re-reads (secret_reload.h): each endpoint with a secret file.
+std::vector<SecretEndpoint> secret_endpoints(const TrackerConfig& c, Servers& s) {
+  std::vector<SecretEndpoint> e;
+  const auto& f = c.secret_files;
+  if (s.rotctld) e.push_back({"rotctld", f.rotctld, c.rotctld_secret, [&s](const std::string& v) { s.rotctld->set_secret(v); }});
+  if (s.rigctld) e.push_back({"rigctld", f.rigctld, c.rigctld_secret, [&s](const std::string& v) { s.rigctld->set_secret(v); }});
+  if (s.host) e.push_back({"host", f.host, c.host_secret, [&s](const std::string& v) { s.host->set_secret(v); }});
+  if (s.web_access) e.push_back({"web", f.http, c.http_secret, [&s](const std::string& v) { s.web_access->set_secret(v); }});
+  return e;
+}
 
 // The Satrak unit and server. A busy default port is a note; a port asked for is an error.
 std::optional<std::string> start_satrak(StationApp& app, const TrackerConfig& c, Startup& s, Servers& out) {
@@ -444,6 +456,7 @@ std::optional<std::string> start_web(StationApp& app, const TrackerConfig& c, Se
   web::AccessOptions ao;
   ao.secret = c.http_secret;
   ao.public_view = c.http_public_view;
+  ao.hosts = c.http_hosts;
   ao.loopback_only = inet::is_loopback(c.listen);
   out.web_access = std::make_unique<web::Access>(ao, out.guesses);
   web::ApiHooks hooks;
@@ -595,6 +608,8 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   }
   std::unique_ptr<AttachServer> attach = open_socket(app, c, *lock, servers);
   if (auto err = start_web(app, c, servers, attach.get())) return usage_error(*err);
+  std::vector<SecretEndpoint> secrets = secret_endpoints(c, servers);
+  app.on_hangup([&secrets, &log] { reload_secrets(secrets, *log); });
   if (c.service && c.tty) {
     // The box's serial port: the service's menus there as well, for good.
     if (!attach) return usage_error("--tty: the service's menus need its socket");

@@ -1,5 +1,6 @@
 #include "app/tracker_config.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 
@@ -12,6 +13,7 @@
 #include "store/model.h"
 #include "store/refresh.h"
 #include "store/state_file.h"
+#include "util/safe_text.h"
 #include "util/secret.h"
 
 namespace tb::app {
@@ -31,7 +33,7 @@ std::vector<OptionSpec> tracker_option_specs() {
       {"service", "", "unattended (a system service): no terminal, no standard input; tracks the stored "
                       "tracking list, serves the enabled ports, logs to standard error too; SIGTERM parks "
                       "(when parking is on), saves and exits 0; SIGHUP re-reads the data directory's element and "
-                      "freq/mode files"},
+                      "freq/mode files and the endpoints' secret files"},
       {"clock", "ISO8601", "start the real-time clock at this UTC time (e.g. 2026-05-21T12:00:00Z)"},
       {"clock-rate", "R", "run the clock R times faster than real time, R at most 200 (with or without --clock)"},
       {"rotator", "SPEC", "simulated (default), hamlib:MODEL:DEVICE[:BAUD], rotctld:HOST[:PORT], easycomm3:DEVICE[:BAUD], "
@@ -61,6 +63,8 @@ std::vector<OptionSpec> tracker_option_specs() {
                                    "this file's first line"},
       {"http-public-view", "", "with --http-secret-file: anyone allowed may view the page; changes still need the "
                                "secret"},
+      {"http-host", "NAME", "a name the web page answers to in the Host header beyond IP addresses and localhost "
+                            "(the station's name on the LAN, or behind a proxy; repeatable)", true},
       {"listen", "ADDR", "address the host, rotctld, rigctld and web servers listen on (default 127.0.0.1)"},
       {"rotctld-secret-file", "FILE", "rotctld clients must first send \\password with the secret on this file's "
                                       "first line (never on the command line)"},
@@ -173,11 +177,13 @@ void read_secrets(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
     const char* port_option;
     bool on;
     std::string& secret;
+    std::string& file;
   };
-  const Endpoint endpoints[] = {{"rotctld-secret-file", "rotctld-port", c.rotctld_port.has_value(), c.rotctld_secret},
-                                {"rigctld-secret-file", "rigctld-port", c.rigctld_port.has_value(), c.rigctld_secret},
-                                {"host-secret-file", "host-port", c.host_port.has_value(), c.host_secret},
-                                {"http-secret-file", "http-port", c.http_port.has_value(), c.http_secret}};
+  const Endpoint endpoints[] = {
+      {"rotctld-secret-file", "rotctld-port", c.rotctld_port.has_value(), c.rotctld_secret, c.secret_files.rotctld},
+      {"rigctld-secret-file", "rigctld-port", c.rigctld_port.has_value(), c.rigctld_secret, c.secret_files.rigctld},
+      {"host-secret-file", "host-port", c.host_port.has_value(), c.host_secret, c.secret_files.host},
+      {"http-secret-file", "http-port", c.http_port.has_value(), c.http_secret, c.secret_files.http}};
   for (const Endpoint& e : endpoints) {
     const auto path = o.value(e.option);
     if (!path) continue;
@@ -187,7 +193,7 @@ void read_secrets(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
       continue;
     }
     std::string error, warning;
-    if (const auto s = secret::read_file(*path, error, warning)) e.secret = *s;
+    if (const auto s = secret::read_file(*path, error, warning)) e.secret = *s, e.file = *path;
     else r.fail(label, error);
     if (!warning.empty()) c.warnings.push_back(warning);
   }
@@ -262,6 +268,17 @@ void read_allow(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
 // The web endpoint beyond loopback: only for the --allow ranges, and only with a secret.
 void check_web(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
   c.http_public_view = o.has("http-public-view");
+  for (const std::string& n : o.values("http-host")) {
+    const bool name = !n.empty() && n.size() <= 253 && n.front() != '.' && n.front() != '-' &&
+                      std::all_of(n.begin(), n.end(), [](char ch) {
+                        return (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') ||
+                               ch == '-' || ch == '.';
+                      });
+    if (!name) r.fail("--http-host", "expected a host name of letters, digits, '-' and '.' (no port); found '" +
+                                         text::visible_bytes(n.substr(0, 60)) + "'");
+    else if (!c.http_port) r.fail("--http-host", "the web server is off (give --http-port)");
+    else c.http_hosts.push_back(n);
+  }
   if (c.http_public_view && !o.has("http-secret-file"))
     r.fail("--http-public-view", "only with --http-secret-file (without a secret everyone allowed may do anything)");
   if (!c.http_port || inet::is_loopback(o.value("listen").value_or("127.0.0.1"))) return;

@@ -67,11 +67,16 @@ struct TrackerConfig {
   // Shared secrets of the rotctld, rigctld and host-mode servers (read from --*-secret-file; empty:
   // none) and how long a client has to give one.
   std::string rotctld_secret, rigctld_secret, host_secret;
+  // The files they came from, re-read on SIGHUP (secret_reload.h).
+  struct SecretFiles {
+    std::string rotctld, rigctld, host, http;
+  } secret_files;
   // The web page and API (src/web): --http-port, its secret (--http-secret-file) and whether viewing
   // needs it (--http-public-view).
   std::optional<int> http_port;
   std::string http_secret;
   bool http_public_view = false;
+  std::vector<std::string> http_hosts;  // --http-host: names the page answers to (issue 46)
   int auth_timeout_s = 10;
   // The scheduled element refresh: --elements-url (replaces the stored sources when given),
   // --elements-refresh-hours, --elements-timeout.

@@ -10,6 +10,7 @@
 #include "tracker/elements_refresh.h"
 #include "tracker/operations.h"
 #include "tracker/station_loop.h"
+#include "util/exact_number.h"
 #include "util/text.h"
 
 namespace tb::host {
@@ -47,11 +48,7 @@ void skip_blanks(std::string_view& s) {
   while (!s.empty() && blank(s.front())) s.remove_prefix(1);
 }
 
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
+std::string num(double v) { return text::exact_number(v); }
 
 Reply error(std::string text) {
   Reply r;

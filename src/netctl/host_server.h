@@ -44,6 +44,7 @@ class HostServer {
   std::size_t client_count() const { return server_.client_count(); }
   const LineServer& server() const { return server_; }
   void close() { server_.close(); }
+  void set_secret(std::string secret) { server_.set_secret(std::move(secret)); }
 
   static ServerOptions defaults();
 

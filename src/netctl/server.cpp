@@ -384,6 +384,17 @@ const ServerStats& LineServer::stats() const { return core_->stats; }
 
 const ServerOptions& LineServer::options() const { return core_->options; }
 
+void LineServer::set_secret(std::string secret) {
+  if (secret == core_->options.secret) return;
+  core_->options.secret = std::move(secret);
+  std::vector<std::shared_ptr<Session>> live;
+  for (auto& [p, w] : core_->sessions)
+    if (auto s = w.lock()) live.push_back(std::move(s));
+  for (auto& s : live) s->close("the secret changed");
+  spdlog::info("{}: the secret changed (its file re-read on SIGHUP): {} client(s) of the old one closed",
+               core_->options.name, live.size());
+}
+
 void LineServer::close() {
   if (!core_->open) return;
   core_->open = false;

@@ -97,6 +97,9 @@ class LineServer {
   std::size_t client_count() const;
   const ServerStats& stats() const;
   const ServerOptions& options() const;
+  // A new secret (SIGHUP re-read its file): the clients of the old one are closed, each newcomer
+  // must give the new one. Nothing happens when it is the same.
+  void set_secret(std::string secret);
   // Stops listening and drops every client. Also done by the destructor.
   void close();
 
@@ -122,6 +125,7 @@ class RotctldServer {
   const LineServer& server() const { return server_; }
   RotctlProtocol& protocol() { return protocol_; }
   void close() { server_.close(); }
+  void set_secret(std::string secret) { server_.set_secret(std::move(secret)); }
 
   static ServerOptions named(std::string name) {
     ServerOptions o;
@@ -145,6 +149,7 @@ class RigctldServer {
   const LineServer& server() const { return server_; }
   RigctlProtocol& protocol() { return protocol_; }
   void close() { server_.close(); }
+  void set_secret(std::string secret) { server_.set_secret(std::move(secret)); }
 
  private:
   RigctlProtocol protocol_;

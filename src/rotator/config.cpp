@@ -5,17 +5,14 @@
 #include <string>
 
 #include "rotator/adc_model.h"
+#include "util/exact_number.h"
 
 namespace tb::rotator {
 
 namespace {
 using limits::kMinSpanWidth;
 
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
+std::string num(double v) { return text::exact_number(v); }
 
 void check_span(std::vector<std::string>& out, const char* axis, const AxisSpan& s) {
   std::string name = std::string(axis) + " ADC span";

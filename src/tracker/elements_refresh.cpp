@@ -10,6 +10,7 @@
 #include "orbit/element_age.h"
 #include "orbit/elements.h"
 #include "orbit/time.h"
+#include "station/clock.h"
 #include "store/model.h"
 #include "store/refresh.h"
 
@@ -53,6 +54,31 @@ std::optional<std::string> ElementsRefresh::refresh_now(std::int64_t now_unix) {
   if (pending_ > 0) return std::string("a refresh is running");
   start(now_unix);
   return std::nullopt;
+}
+
+orbit::UtcTime ElementsRefresh::station_now() const {
+  if (station_clock_) return station_clock_->now();
+  return std::chrono::time_point_cast<std::chrono::microseconds>(std::chrono::system_clock::now());
+}
+
+std::optional<orbit::UtcTime> ElementsRefresh::manual_next(orbit::UtcTime now) const {
+  std::optional<orbit::UtcTime> next;
+  for (const auto& source : model_.refresh.sources)
+    for (const auto& [url, at] : manual_)
+      if (url == source.url && at + kManualEvery > now && (!next || at + kManualEvery > *next)) next = at + kManualEvery;
+  return next;
+}
+
+void ElementsRefresh::note_manual(orbit::UtcTime now) {
+  std::erase_if(manual_, [&](const auto& m) {
+    return std::none_of(model_.refresh.sources.begin(), model_.refresh.sources.end(),
+                        [&](const store::RefreshSource& s) { return s.url == m.first; });
+  });
+  for (const auto& source : model_.refresh.sources) {
+    const auto it = std::find_if(manual_.begin(), manual_.end(), [&](const auto& m) { return m.first == source.url; });
+    if (it == manual_.end()) manual_.emplace_back(source.url, now);
+    else it->second = now;
+  }
 }
 
 std::string refresh_status_text(const RefreshState& s) {

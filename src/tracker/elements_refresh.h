@@ -16,6 +16,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "orbit/time.h"
@@ -26,6 +27,9 @@ struct DownloadResult;
 }  // namespace tb::download
 namespace tb::store {
 struct Model;
+}
+namespace tb::station {
+class Clock;
 }
 
 namespace tb::tracker {
@@ -66,6 +70,16 @@ class ElementsRefresh {
   std::optional<std::string> refresh_now(std::int64_t now_unix);
   bool running() const { return pending_ > 0; }
 
+  // Manual refreshes (StationOps::refresh_elements, issue 46) come at most once per
+  // kManualEvery per source, counted in the station's time: when the next may come (a time after
+  // `now`), or nullopt when it may come now; note_manual says one came at `now` for every source.
+  static constexpr std::chrono::minutes kManualEvery{10};
+  // The station's clock (--clock, --clock-rate) the limit counts in; without one, the system's.
+  void set_station_clock(const station::Clock* clock) { station_clock_ = clock; }
+  orbit::UtcTime station_now() const;
+  std::optional<orbit::UtcTime> manual_next(orbit::UtcTime now) const;
+  void note_manual(orbit::UtcTime now);
+
   // The outcome of the last refresh, one line ("" before the first); whether it failed (any source).
   const std::string& last_result() const { return last_result_; }
   bool last_failed() const { return last_failed_; }
@@ -92,6 +106,8 @@ class ElementsRefresh {
   std::string last_result_;
   bool last_failed_ = false;
   int last_updated_ = 0;
+  std::vector<std::pair<std::string, orbit::UtcTime>> manual_;  // source URL -> its last manual refresh
+  const station::Clock* station_clock_ = nullptr;
 };
 
 }  // namespace tb::tracker

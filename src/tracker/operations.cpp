@@ -7,6 +7,7 @@
 #include "store/model.h"
 #include "tracker/elements_refresh.h"
 #include "tracker/station_loop.h"
+#include "util/exact_number.h"
 #include "util/text.h"
 
 namespace tb::tracker {
@@ -25,17 +26,9 @@ std::string quoted(std::string_view name) {
   return out + "'";
 }
 
-std::string az_el_text(double az, double el) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "AZ%.1f EL%.1f", az, el);
-  return buf;
-}
+using text::az_el_text;
 
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
+std::string number(double v) { return text::exact_number(v); }
 
 }  // namespace
 
@@ -171,7 +164,18 @@ OpResult StationOps::doppler(bool on) {
 OpResult StationOps::refresh_elements(std::int64_t now_unix) {
   ElementsRefresh* refresh = station_.refresh();
   if (!refresh) return OpResult::refuse("this trakbox has no element refresh (it runs only with the station)");
+  // The sources' servers block addresses that ask too often (CelesTrak: once per two hours): a
+  // manual refresh at most every 10 minutes per source, whichever front end asks (issue 46), in the
+  // station's clock (--clock-rate makes it pass faster, as the tests want).
+  const orbit::UtcTime now = refresh->station_now();
+  if (const auto next = refresh->manual_next(now)) {
+    const auto wait = std::chrono::ceil<std::chrono::seconds>(*next - now).count();
+    const std::string at = orbit::format_iso8601(*next).substr(11, 8);
+    return OpResult::refuse("the elements were refreshed less than 10 minutes ago: the next manual refresh at " + at +
+                            " UTC, in " + std::to_string(wait) + " s");
+  }
   if (const auto why = refresh->refresh_now(now_unix)) return OpResult::refuse(*why);
+  refresh->note_manual(now);
   OpResult r;
   r.note = "element refresh started";
   return r;

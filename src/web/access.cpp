@@ -1,8 +1,12 @@
 #include "web/access.h"
 
+#include <arpa/inet.h>
+
+#include <algorithm>
 #include <array>
 #include <random>
 
+#include "util/safe_text.h"
 #include "util/secret.h"
 #include "util/text.h"
 
@@ -27,22 +31,44 @@ std::string new_token() {
 
 std::string lower_trimmed(std::string_view s) { return text::lower(text::trim(s, text::kWhitespace)); }
 
-// "host:port" -> "host"; "[::1]:8073" -> "::1".
-std::string host_name(std::string_view host) {
-  host = text::trim(host, text::kWhitespace);
-  if (!host.empty() && host.front() == '[') {
-    const auto end = host.find(']');
-    return std::string(end == std::string_view::npos ? host.substr(1) : host.substr(1, end - 1));
+bool port_ok(std::string_view p) {
+  if (p.empty() || p.size() > 5) return false;
+  unsigned v = 0;
+  for (const char c : p) {
+    if (c < '0' || c > '9') return false;
+    v = v * 10 + static_cast<unsigned>(c - '0');
   }
-  const auto colon = host.find(':');
-  return text::lower(colon == std::string_view::npos ? host : host.substr(0, colon));
+  return v <= 65535;
 }
 
 }  // namespace
 
-bool Access::loopback_host(const std::string& host) {
-  const std::string h = host_name(host);
-  return h == "localhost" || h == "::1" || h.rfind("127.", 0) == 0;
+bool Access::host_allowed(const std::string& host, const std::vector<std::string>& names) {
+  const std::string_view h = text::trim(host, " \t");
+  std::string_view name, port;
+  bool has_port = false;
+  if (!h.empty() && h.front() == '[') {
+    const auto end = h.find(']');
+    if (end == std::string_view::npos) return false;
+    const std::string inside(h.substr(1, end - 1));
+    in6_addr a6{};
+    if (::inet_pton(AF_INET6, inside.c_str(), &a6) != 1) return false;
+    const std::string_view rest = h.substr(end + 1);
+    if (rest.empty()) return true;
+    return rest.front() == ':' && port_ok(rest.substr(1));
+  }
+  const auto colon = h.find(':');
+  name = h.substr(0, colon);
+  if (colon != std::string_view::npos) {
+    has_port = true;
+    port = h.substr(colon + 1);
+  }
+  if (name.empty() || (has_port && !port_ok(port))) return false;
+  const std::string n(name);
+  in_addr a4{};
+  if (::inet_pton(AF_INET, n.c_str(), &a4) == 1) return true;
+  if (text::iequals(n, "localhost")) return true;
+  return std::any_of(names.begin(), names.end(), [&](const std::string& want) { return text::iequals(n, want); });
 }
 
 bool Access::origin_matches(const std::string& origin, const std::string& host) {
@@ -75,12 +101,13 @@ Grant Access::grant(const std::string& peer, const std::string& host, const std:
                     Clock::time_point now) {
   Grant g;
   const bool origin_ok = origin.empty() || origin_matches(origin, host);
+  if (!host_allowed(host)) {
+    g.why_not_change = "Host '" + text::visible_bytes(host.substr(0, 60)) +
+                       "' is not this station's name (an IP address, localhost, or a name given with --http-host)";
+    return g;
+  }
   if (!needs_secret()) {
     // Loopback only: the machine's own users; a browser only from the page itself.
-    if (!loopback_host(host)) {
-      g.why_not_change = "this station answers only to a loopback name (localhost, 127.0.0.1, [::1])";
-      return g;
-    }
     g.view = true;
     g.change = origin_ok;
     if (!origin_ok) g.why_not_change = "a request from another site (Origin " + std::string("does not match the page") + ")";
@@ -94,9 +121,10 @@ Grant Access::grant(const std::string& peer, const std::string& host, const std:
       g.status_not_change = 401;
       return g;
     }
-    if (guesses_->free_at(peer, now) > now || guesses_->locked_until(peer, now) > now) {
+    if (const auto free = std::max(guesses_->free_at(peer, now), guesses_->locked_until(peer, now)); free > now) {
       g.why_not_change = "too many wrong secrets from this address: wait and try again";
       g.status_not_change = 429;
+      g.retry_after_s = static_cast<int>(std::chrono::ceil<std::chrono::seconds>(free - now).count());
       return g;
     }
     bearer = secret::equal(text::trim(std::string_view(auth).substr(7), text::kWhitespace), o_.secret);
@@ -149,5 +177,11 @@ std::optional<std::string> Access::login(const std::string& peer, const std::str
 }
 
 void Access::logout(const std::string& cookie) { sessions_.erase(session_of(cookie)); }
+
+void Access::set_secret(std::string secret) {
+  if (secret == o_.secret) return;
+  o_.secret = std::move(secret);
+  sessions_.clear();
+}
 
 }  // namespace tb::web

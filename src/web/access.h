@@ -1,9 +1,13 @@
 // Who may do what on the web endpoint (docs/security.md, "The web page and API"). Pure: the
 // caller passes the request's facts and the time.
 //
+//  - Every request, with or without a secret, names this station in its Host (no DNS rebinding,
+//    issue 46): an IP literal (a browser that typed the address: rebinding needs a name), localhost,
+//    or a name given with --http-host, each with an optional port; nothing else (127.evil.example,
+//    127.0.0.1.nip.io and localhost.evil are names of other sites).
 //  - Loopback only, no secret (the default): every client on the machine may view and change, but
 //    a browser request must come from the page itself: a state change needs an Origin that names
-//    the Host it was sent to, and the Host must be a loopback name (no DNS rebinding).
+//    the Host it was sent to.
 //  - Another address: --allow ranges and a secret are required (the configuration refuses
 //    otherwise). A change needs a session (cookie from the login page, HttpOnly, SameSite=Strict)
 //    with a matching Origin, or `Authorization: Bearer SECRET`. Viewing needs the same unless
@@ -29,6 +33,7 @@ struct AccessOptions {
   bool loopback_only = true;   // the server listens on a loopback address
   std::chrono::hours session_life{12};
   std::size_t max_sessions = 64;
+  std::vector<std::string> hosts;  // --http-host: the names the station answers to beyond localhost
 };
 
 // What a request may do.
@@ -37,6 +42,7 @@ struct Grant {
   bool change = false;
   std::optional<std::string> why_not_change;  // a sentence, when change is false
   int status_not_change = 403;
+  int retry_after_s = 0;  // with 429: when the address may try again
 };
 
 class Access {
@@ -61,7 +67,12 @@ class Access {
   static bool origin_matches(const std::string& origin, const std::string& host);
   // The session token of a Cookie header ("" when none).
   static std::string session_of(const std::string& cookie);
-  static bool loopback_host(const std::string& host);
+  // Whether a Host header names this station: an IPv4 or [IPv6] literal, localhost, or one of
+  // `names` (ASCII case ignored), each with an optional port 0-65535; an exact parse.
+  static bool host_allowed(const std::string& host, const std::vector<std::string>& names);
+  bool host_allowed(const std::string& host) const { return host_allowed(host, o_.hosts); }
+  // The secret changed (SIGHUP re-read the file): the sessions of the old one end.
+  void set_secret(std::string secret);
   std::size_t sessions() const { return sessions_.size(); }
 
  private:

@@ -35,13 +35,21 @@ std::string printable(std::string_view s, std::size_t max) {
 Response error(int status, std::string sentence) {
   Response r;
   r.status = status;
-  r.body = json{{"error", std::move(sentence)}}.dump();
+  r.body = json{{"error", sentence}}.dump();
+  r.why = std::move(sentence);
   return r;
 }
 
 Response ok(const json& j) {
   Response r;
   r.body = j.dump(-1, ' ', false, json::error_handler_t::replace);
+  return r;
+}
+
+// A request the grant does not allow: its status and sentence; 429 says when to try again.
+Response refused(const Grant& g) {
+  Response r = error(g.status_not_change, g.why_not_change.value_or("log in first"));
+  if (g.status_not_change == 429 && g.retry_after_s > 0) r.headers.emplace_back("Retry-After", std::to_string(g.retry_after_s));
   return r;
 }
 
@@ -143,6 +151,8 @@ static std::string cookie_attributes(const Request& r) {
 }
 
 Response Api::login(const Request& r, std::chrono::steady_clock::time_point now) {
+  if (!access_.host_allowed(r.host))
+    return error(403, "Host '" + printable(r.host, 60) + "' is not this station's name");
   if (!r.origin.empty() && !Access::origin_matches(r.origin, r.host))
     return error(403, "a login must come from the login page itself (Origin)");
   if (!access_.needs_secret()) return redirect("/");
@@ -162,7 +172,11 @@ std::optional<Response> Api::refuse_live(const Request& r, std::chrono::steady_c
     const Grant g = access_.grant(r.peer, r.host, r.origin, r.cookie, r.authorization, false, now);
     if (!r.origin.empty() && !Access::origin_matches(r.origin, r.host))
       return error(403, "the live feed is for the page itself (Origin does not match)");
-    if (!g.view) return error(g.why_not_change ? g.status_not_change : 401, g.why_not_change.value_or("log in first"));
+    if (!g.view) {
+      Grant why = g;
+      if (!why.why_not_change) why.status_not_change = 401;
+      return refused(why);
+    }
     return std::nullopt;
   } catch (...) {
     return error(400, "the request could not be handled");
@@ -181,7 +195,7 @@ Response Api::route(const Request& r, const Grant& g) {
       return res;
     }
     if (path.rfind("/api/v1/", 0) != 0) return error(404, "no such page: " + printable(path, 60));
-    if (!g.view) return error(g.status_not_change == 403 ? 403 : 401, g.why_not_change.value_or("log in first"));
+    if (!g.view) return refused(g);
     if (path == "/api/v1/status") {
       json j = hooks_.status ? hooks_.status() : json::object();
       j["schema"] = kApiSchema;
@@ -195,7 +209,11 @@ Response Api::route(const Request& r, const Grant& g) {
                      hooks_.status ? hooks_.status().value("version", std::string()) : std::string());
     return error(404, "no such endpoint: " + printable(path, 60));
   }
-  if (r.method != "POST") return error(405, "method " + printable(r.method, 10) + " not allowed: GET or POST");
+  if (r.method != "POST") {
+    Response res = error(405, "method " + printable(r.method, 10) + " not allowed: GET, HEAD or POST");
+    res.headers.emplace_back("Allow", "GET, HEAD, POST");  // RFC 9110 15.5.6
+    return res;
+  }
   if (path == "/logout") {
     access_.logout(r.cookie);
     Response res = redirect("/login");
@@ -203,7 +221,7 @@ Response Api::route(const Request& r, const Grant& g) {
     return res;
   }
   if (path.rfind("/api/v1/", 0) != 0) return error(404, "no such endpoint: " + printable(path, 60));
-  if (!g.change) return error(g.status_not_change, g.why_not_change.value_or("not allowed"));
+  if (!g.change) return refused(g);
   if (r.body.size() > kMaxBody) return error(413, "the request body is over 16 kB");
   const std::string type = text::lower(text::trim(r.content_type.substr(0, r.content_type.find(';')), text::kWhitespace));
   if (type != "application/json") return error(415, "the body must be JSON (Content-Type: application/json)");

@@ -49,6 +49,7 @@ struct Response {
   std::string content_type = "application/json";
   std::string body;
   std::vector<std::pair<std::string, std::string>> headers;  // beyond the security headers
+  std::string why;  // an error's sentence (the body's "error"), for the log's line of refusals
 };
 
 // The headers every response carries.

@@ -1,6 +1,8 @@
-// The one file that includes Boost.Beast (its templates cost compile time: keep them here).
+// One of the two files that include Boost.Beast, with http_reader.cpp (its templates cost compile
+// time: keep them here).
 #include "web/server.h"
 
+#include <array>
 #include <deque>
 #include <map>
 #include <optional>
@@ -15,9 +17,12 @@
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
+#include "netctl/guesses.h"
 #include "util/backoff.h"
 #include "util/keepalive.h"
 #include "web/api.h"
+#include "web/http_reader.h"
+#include "web/refusals.h"
 
 namespace tb::web {
 
@@ -38,26 +43,6 @@ std::string peer_of(const tcp::socket& s) {
   asio::ip::address a = e.address();
   if (a.is_v6() && a.to_v6().is_v4_mapped()) a = asio::ip::make_address_v4(asio::ip::v4_mapped, a.to_v6());
   return a.to_string();
-}
-
-std::string header(const http::request<http::string_body>& req, http::field f) {
-  const auto it = req.find(f);
-  return it == req.end() ? std::string() : std::string(it->value());
-}
-
-Request to_request(const http::request<http::string_body>& req, const std::string& peer) {
-  Request r;
-  r.method = std::string(req.method_string());
-  r.target = std::string(req.target());
-  r.host = header(req, http::field::host);
-  r.origin = header(req, http::field::origin);
-  r.cookie = header(req, http::field::cookie);
-  r.authorization = header(req, http::field::authorization);
-  r.content_type = header(req, http::field::content_type);
-  r.body = req.body();
-  r.peer = peer;
-  if (const auto it = req.find("X-Forwarded-Proto"); it != req.end()) r.forwarded_proto = std::string(it->value());
-  return r;
 }
 
 }  // namespace
@@ -87,6 +72,11 @@ struct Server::Impl : std::enable_shared_from_this<Impl> {
   std::vector<std::weak_ptr<Viewer>> viewers;
   std::deque<std::string> recent;  // the last events, as sent
   Stats stats;
+  RefusalLog refusals;
+  std::size_t lingering = 0;       // refused at accept, their last bytes being read (Refused)
+
+  void note_refusal(const std::string& peer, int status, const std::string& why);
+  void refuse_at_accept(tcp::socket socket, const std::string& peer, int status, const std::string& why);
 
   void accept();
   void tick();
@@ -102,16 +92,17 @@ struct Server::Impl : std::enable_shared_from_this<Impl> {
 struct Slot {
   std::weak_ptr<Server::Impl> server;
   std::string peer;
-  Slot(const std::shared_ptr<Server::Impl>& s, std::string p) : server(s), peer(std::move(p)) {
+  std::string key;  // as the guessing budget counts addresses (an IPv6 /64 as one)
+  Slot(const std::shared_ptr<Server::Impl>& s, std::string p) : server(s), peer(std::move(p)), key(netctl::key_of(peer)) {
     ++s->connections;
-    ++s->per_address[peer];
+    ++s->per_address[key];
   }
   Slot(const Slot&) = delete;
   Slot& operator=(const Slot&) = delete;
   ~Slot() {
     if (auto s = server.lock()) {
       --s->connections;
-      if (--s->per_address[peer] == 0) s->per_address.erase(peer);
+      if (--s->per_address[key] == 0) s->per_address.erase(key);
     }
   }
 };
@@ -140,6 +131,7 @@ struct Viewer : Conn, std::enable_shared_from_this<Viewer> {
     ws.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
     ws.read_message_max(4096);
     ws.set_option(websocket::stream_base::decorator([](websocket::response_type& res) {
+      res.set(http::field::server, "trakbox");  // ours, not Beast's
       for (const auto& [k, v] : security_headers()) res.set(k, v);
     }));
     ws.async_accept(upgrade, [self = shared_from_this()](boost::system::error_code ec) {
@@ -198,53 +190,60 @@ struct HttpSession : Conn, std::enable_shared_from_this<HttpSession> {
   beast::tcp_stream stream;
   std::shared_ptr<Server::Impl> server;
   std::unique_ptr<Slot> slot;
-  beast::flat_buffer buffer;
-  std::optional<http::request_parser<http::string_body>> parser;
+  RequestReader reader;              // every part of a request bounded (http_reader.h)
+  std::array<char, 4096> scratch{};  // what one read brings, before the reader takes it
   http::response<http::string_body> res;
+  std::size_t drained = 0;
 
   void close() override {
     boost::system::error_code ec;
     stream.socket().close(ec);
   }
 
+  // A new request: it must be whole within the request timeout (a slow client is dropped).
   void read() {
-    parser.emplace();
-    parser->header_limit(static_cast<std::uint32_t>(server->o.header_limit));
-    parser->body_limit(kMaxBody);
-    stream.expires_after(server->o.request_timeout);  // a slow client is dropped
-    http::async_read(stream, buffer, *parser, [self = shared_from_this()](boost::system::error_code ec, std::size_t) {
-      self->on_read(ec);
+    stream.expires_after(server->o.request_timeout);
+    next(reader.feed());  // a pipelined request may be held already
+  }
+
+  void next(RequestReader::State st) {
+    if (server->closed) return;
+    if (st == RequestReader::State::refused) return refuse_and_close(reader.status(), reader.why());
+    if (st == RequestReader::State::done) return on_request(reader.take());
+    const std::size_t n = std::min(reader.room(), scratch.size());
+    stream.async_read_some(asio::buffer(scratch.data(), n), [self = shared_from_this()](boost::system::error_code ec,
+                                                                                       std::size_t got) {
+      if (self->server->closed) return;
+      if (ec) return self->close();  // gone, or too slow: nothing to answer
+      self->next(self->reader.feed(std::string_view(self->scratch.data(), got)));
     });
   }
 
-  void on_read(boost::system::error_code ec) {
-    if (server->closed) return;
-    if (ec == http::error::body_limit) return reply_and_close(413, "the request body is over 16 kB");
-    if (ec == http::error::header_limit) return reply_and_close(431, "the request headers are over 8 kB");
-    if (ec) {
-      if (ec != http::error::end_of_stream && ec != beast::error::timeout && ec != asio::error::operation_aborted &&
-          ec != asio::error::connection_reset && ec != asio::error::eof && buffer.size() > 0)
-        return reply_and_close(400, "a malformed HTTP request");
-      return close();
-    }
+  void on_request(ReadRequest in) {
     ++server->stats.requests;
-    http::request<http::string_body> req = parser->release();
-    const std::string peer = slot->peer;
-    if (websocket::is_upgrade(req)) {
-      if (req.target() != "/api/v1/live") return reply_and_close(404, "the WebSocket is at /api/v1/live");
-      if (auto refused = server->api.refuse_live(to_request(req, peer), std::chrono::steady_clock::now()))
+    in.request.peer = slot->peer;
+    if (in.upgrade) {
+      if (target_path(in.request.target) != "/api/v1/live")
+        return refuse_and_close(404, "the WebSocket is at /api/v1/live");
+      if (auto refused = server->api.refuse_live(in.request, std::chrono::steady_clock::now())) {
+        server->note_refusal(slot->peer, refused->status, refused->why);
         return write(*refused, false);
+      }
+      http::request<http::string_body> req{http::verb::get, in.request.target, in.version};
+      for (const auto& [k, v] : in.fields) req.insert(k, v);
       stream.expires_never();
       auto viewer = std::make_shared<Viewer>(stream.release_socket(), server, std::move(slot));
       server->track(viewer);
       viewer->start(std::move(req));
       return;
     }
-    const Response out = server->api.handle(to_request(req, peer), std::chrono::steady_clock::now());
-    write(out, req.keep_alive(), req.method() == http::verb::head);
+    const Response out = server->api.handle(in.request, std::chrono::steady_clock::now());
+    if (out.status >= 400) server->note_refusal(slot->peer, out.status, out.why);
+    write(out, in.keep_alive, in.head);
   }
 
-  void reply_and_close(int status, const std::string& sentence) {
+  void refuse_and_close(int status, const std::string& sentence) {
+    server->note_refusal(slot->peer, status, sentence);
     Response r;
     r.status = status;
     r.body = nlohmann::json{{"error", sentence}}.dump();
@@ -259,17 +258,35 @@ struct HttpSession : Conn, std::enable_shared_from_this<HttpSession> {
     res.set(http::field::content_type, out.content_type);
     for (const auto& [k, v] : security_headers()) res.set(k, v);
     for (const auto& [k, v] : out.headers) res.insert(k, v);
-    res.body() = head ? std::string() : out.body;
     res.keep_alive(keep_alive);
-    res.prepare_payload();
+    if (head) {
+      res.content_length(out.body.size());  // RFC 9110 9.3.2: the length GET would send
+    } else {
+      res.body() = out.body;
+      res.prepare_payload();
+    }
     stream.expires_after(server->o.request_timeout);
     http::async_write(stream, res, [self = shared_from_this(), keep_alive](boost::system::error_code ec, std::size_t) {
-      if (ec || !keep_alive || self->server->closed) {
-        boost::system::error_code ignored;
-        self->stream.socket().shutdown(tcp::socket::shutdown_send, ignored);
-        return;
-      }
+      if (ec || self->server->closed) return self->close();
+      if (!keep_alive) return self->linger();
       self->read();
+    });
+  }
+
+  // Closing with the client's bytes unread would reset the connection and could lose the answer
+  // (RFC 9112 9.6): what it still sends is read and dropped, up to 1 MB or 2 s, then it is closed.
+  void linger() {
+    boost::system::error_code ignored;
+    stream.socket().shutdown(tcp::socket::shutdown_send, ignored);
+    stream.expires_after(std::chrono::seconds(2));
+    drain();
+  }
+
+  void drain() {
+    stream.async_read_some(asio::buffer(scratch), [self = shared_from_this()](boost::system::error_code ec, std::size_t n) {
+      self->drained += n;
+      if (ec || self->server->closed || self->drained > (1u << 20)) return self->close();
+      self->drain();
     });
   }
 };
@@ -292,13 +309,20 @@ void Server::Impl::accept() {
     if (const auto failed = self->backoff.succeeded())
       spdlog::warn("web: accepting again after {} failed accepts", failed);
     const std::string peer = peer_of(socket);
-    const auto it = self->per_address.find(peer);
+    const auto it = self->per_address.find(netctl::key_of(peer));
     const std::size_t mine = it == self->per_address.end() ? 0 : it->second;
-    if (peer.empty() || !inet::allowed(self->o.allow, peer) || self->connections >= self->o.max_connections ||
-        mine >= self->o.per_address) {
+    if (peer.empty()) {
       ++self->stats.refused;
       boost::system::error_code ignored;
       socket.close(ignored);
+    } else if (!inet::allowed(self->o.allow, peer)) {
+      self->refuse_at_accept(std::move(socket), peer, 403, "this address is not in --allow");
+    } else if (self->connections >= self->o.max_connections) {
+      self->refuse_at_accept(std::move(socket), peer, 503,
+                             "the station has " + std::to_string(self->o.max_connections) + " web connections already");
+    } else if (mine >= self->o.per_address) {
+      self->refuse_at_accept(std::move(socket), peer, 503,
+                             "this address has " + std::to_string(self->o.per_address) + " web connections already");
     } else {
       inet::enable_keepalive(socket.native_handle());
       auto slot = std::make_unique<Slot>(self, peer);
@@ -308,6 +332,69 @@ void Server::Impl::accept() {
     }
     self->accept();
   });
+}
+
+// A connection refused at accept: a short answer written at once (it fits the socket's buffer),
+// then what the client still sends is read and dropped for up to a second so that the close does
+// not reset the answer away. At most max_connections of them at once; beyond that, closed at once.
+struct Refused : std::enable_shared_from_this<Refused> {
+  Refused(tcp::socket s, std::shared_ptr<Server::Impl> owner)
+      : socket(std::move(s)), timer(socket.get_executor()), server(std::move(owner)) {
+    ++server->lingering;
+  }
+  ~Refused() { --server->lingering; }
+  tcp::socket socket;
+  asio::steady_timer timer;
+  std::shared_ptr<Server::Impl> server;
+  std::array<char, 512> scratch{};
+
+  void start() {
+    timer.expires_after(std::chrono::seconds(1));
+    timer.async_wait([self = shared_from_this()](boost::system::error_code ec) {
+      if (!ec) self->close();
+    });
+    read();
+  }
+  void read() {
+    socket.async_read_some(asio::buffer(scratch), [self = shared_from_this()](boost::system::error_code ec, std::size_t) {
+      if (ec || self->server->closed) {
+        self->timer.cancel();
+        return self->close();
+      }
+      self->read();
+    });
+  }
+  void close() {
+    boost::system::error_code ignored;
+    socket.close(ignored);
+  }
+};
+
+void Server::Impl::note_refusal(const std::string& peer, int status, const std::string& why) {
+  if (const auto unsaid = refusals.note(peer, status, std::chrono::steady_clock::now())) {
+    if (*unsaid > 0)
+      spdlog::warn("web: refused {} ({}): {} (and {} refusals of it in the minute before)", peer, status, why, *unsaid);
+    else
+      spdlog::warn("web: refused {} ({}): {}", peer, status, why);
+  }
+}
+
+void Server::Impl::refuse_at_accept(tcp::socket socket, const std::string& peer, int status, const std::string& why) {
+  ++stats.refused;
+  note_refusal(peer, status, why);
+  const std::string body = nlohmann::json{{"error", why}}.dump();
+  std::string reply = status == 403 ? "HTTP/1.1 403 Forbidden\r\n" : "HTTP/1.1 503 Service Unavailable\r\nRetry-After: 10\r\n";
+  reply += "Server: trakbox\r\nContent-Type: application/json\r\nX-Content-Type-Options: nosniff\r\n"
+           "Cache-Control: no-store\r\nConnection: close\r\nContent-Length: " + std::to_string(body.size()) + "\r\n\r\n" + body;
+  boost::system::error_code ec;
+  socket.non_blocking(true, ec);
+  if (!ec) socket.write_some(asio::buffer(reply), ec);
+  socket.shutdown(tcp::socket::shutdown_send, ec);
+  if (lingering >= o.max_connections) {
+    socket.close(ec);
+    return;
+  }
+  std::make_shared<Refused>(std::move(socket), shared_from_this())->start();
 }
 
 void Server::Impl::tick() {

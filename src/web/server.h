@@ -3,9 +3,12 @@
 // web::Api; the WebSocket /api/v1/live gets the live state at every push (once a second, and at
 // once after a change) and every event as it happens.
 //
-// Bounds (docs/security.md): request header 8 kB, body 16 kB, a request must arrive within 10 s,
-// at most 8 connections per address and 64 in all, --allow ranges checked at accept, a viewer more
-// than 16 messages behind is dropped (a slow client never holds the station).
+// Bounds (docs/security.md): every part of a request before it is held (http_reader.h: request
+// line 2 kB, headers 8 kB, body 16 kB, 1 kB of a chunked body's framing held at once, the read
+// buffer 16 kB), a request must arrive within 10 s, at most 8 connections per address (an IPv6 /64
+// as one, as the guessing budget counts) and 64 in all (503 with Retry-After), --allow ranges
+// checked at accept (403), a viewer more than 16 messages behind is dropped (a slow client never
+// holds the station). Every refusal is logged once a minute per address and kind (refusals.h).
 #pragma once
 #include <chrono>
 #include <cstdint>

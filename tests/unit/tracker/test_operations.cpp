@@ -3,8 +3,14 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
 
 #include "support/sim_station.h"
+#include "test_paths.h"  // TRAKBOX_SOURCE_DIR
+#include "tracker/elements_refresh.h"
 #include "tracker/operations.h"
 
 using namespace tb;
@@ -140,4 +146,49 @@ TEST_CASE("StationOps: stop, rotor control and Doppler") {
   // No refresh in this station: the refusal says so.
   CHECK(f.ops().refresh_elements(0).refusal.value() ==
         "this trakbox has no element refresh (it runs only with the station)");
+}
+
+TEST_CASE("StationOps: a manual element refresh at most once per 10 minutes of station time per source") {
+  Ops f;
+  std::mutex mu;
+  std::vector<std::function<void()>> posted;  // the download's results, run here as the loop would
+  tracker::ElementsRefresh refresh(
+      f.model,
+      [&](std::function<void()> fn) {
+        std::lock_guard<std::mutex> lock(mu);
+        posted.push_back(std::move(fn));
+      },
+      [] {});
+  f.model.refresh.sources = {{"file://" TRAKBOX_SOURCE_DIR "/data/amateur.tle", "", ""}};
+  refresh.set_station_clock(&f.clock);
+  f.station->set_refresh(&refresh);
+  auto finish = [&] {
+    for (int i = 0; i < 500 && refresh.running(); ++i) {
+      std::vector<std::function<void()>> run;
+      {
+        std::lock_guard<std::mutex> lock(mu);
+        run.swap(posted);
+      }
+      for (auto& fn : run) fn();
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    REQUIRE_FALSE(refresh.running());
+  };
+  f.step(std::chrono::milliseconds(100));  // the station's time: 12:00:00.1
+  REQUIRE(f.ops().refresh_elements(0).ok());
+  finish();
+  const tracker::OpResult again = f.ops().refresh_elements(0);
+  REQUIRE_FALSE(again.ok());
+  CHECK(*again.refusal ==
+        "the elements were refreshed less than 10 minutes ago: the next manual refresh at 12:10:00 UTC, in 600 s");
+  f.step(std::chrono::seconds(599));
+  CHECK(*f.ops().refresh_elements(0).refusal ==
+        "the elements were refreshed less than 10 minutes ago: the next manual refresh at 12:10:00 UTC, in 1 s");
+  f.step(std::chrono::seconds(1));
+  CHECK(f.ops().refresh_elements(0).ok());
+  finish();
+  // A new source has not been asked for: it may come, the old one still may not.
+  f.model.refresh.sources.push_back({"file://" TRAKBOX_SOURCE_DIR "/data/amateur.tle?b", "", ""});
+  CHECK_FALSE(f.ops().refresh_elements(0).ok());
+  f.station->set_refresh(nullptr);
 }
