@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/control_status.h"
 #include "app/station_app.h"
 #include "gps/monitor.h"
 #include "orbit/element_age.h"
@@ -251,6 +252,7 @@ nlohmann::json station_status(StationApp& app, const StatusContext& cx) {
   j["attached"] = cx.attached;
   j["keyboard"] = cx.keyboard.empty() ? nlohmann::json(nullptr) : nlohmann::json(cx.keyboard);
   j["status_line"] = app.station().status_line();
+  add_control_status(app.station(), j);
   const auto problems = status_problems(j);
   j["healthy"] = problems.empty();
   j["problems"] = problems;
@@ -342,6 +344,9 @@ std::string format_status(const nlohmann::json& s) {
   if (!a.at("target").is_null()) ant += " to az " + num(a["target"]["az_deg"], 1) + " el " + num(a["target"]["el_deg"], 1);
   ant += ", rotor control " + std::string(a.value("rotor_control", false) ? "on" : "off") + ", link " + a.value("link", "");
   line(ant);
+  if (const auto c = s.value("control", nlohmann::json()); c.is_object())
+    line("  control   antenna " + c["antenna"].value("label", "") + ", radio " + c["radio"].value("label", "") +
+         (s.value("standby", false) ? " (STANDBY)" : ""));
   for (const auto& r : s.at("radios"))
     line("  radio     " + r.value("radio", "") + ": downlink " + num(r.value("downlink_hz", nlohmann::json()), 0) +
          " Hz, uplink " + num(r.value("uplink_hz", nlohmann::json()), 0) + " Hz, " +

@@ -492,6 +492,8 @@ std::optional<std::string> apply_command_line(TrackerConfig& c, Startup& startup
     startup.model.rotator = next;
   }
   if (c.event_min_el_deg) startup.model.event_min_el_deg = *c.event_min_el_deg;
+  if (c.handback_s) startup.model.sharing.handback_s = *c.handback_s;
+  if (c.exclusive) startup.model.sharing.exclusive = *c.exclusive;
   std::vector<std::string> said;
   if (c.rotor_control) {
     startup.model.rotor_control = *c.rotor_control;
@@ -602,7 +604,8 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
       std::chrono::seconds(c.event_lead_s));
   app.start(std::chrono::milliseconds(c.tick_ms));
   // Stored options given on the command line are stored now, not only at the next save.
-  if (startup.ram_lost || startup.fresh || c.rotor_control || c.event_min_el_deg || c.az_travel_deg) app.save();
+  if (startup.ram_lost || startup.fresh || c.rotor_control || c.event_min_el_deg || c.az_travel_deg || c.handback_s || c.exclusive)
+    app.save();
   log->info("trakbox {} started, state {}", kVersion, file.path().string());
   stopped_line.started = true;
 

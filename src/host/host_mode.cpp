@@ -222,8 +222,10 @@ Reply Interpreter::az_el(std::string_view line) {
   if (!p.args) return error("AZ/EL: " + p.error);
   // A host program pointing the antenna takes control, as the operator pressing E would: it has no
   // other way to switch rotor control on. The limits still hold (go_to clamps).
-  const tracker::OpResult done = ops().go_to(p.args->az, p.args->el);
-  if (!done.ok()) return error("AZ/EL: " + *done.refusal);
+  const std::string command(text::trim(line, text::kWhitespace));
+  const tracker::OpResult done = ops(!unconfirmed_.empty() && unconfirmed_ == command).go_to(p.args->az, p.args->el);
+  unconfirmed_ = done.confirm ? command : std::string();
+  if (!done.ok()) return error("AZ/EL: " + *done.refusal + (done.confirm ? " (send it again to confirm)" : ""));
   Reply r;
   const rotator::AzEl asked{p.args->az, p.args->el};
   const rotator::AzEl got = *done.commanded;

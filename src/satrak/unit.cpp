@@ -169,6 +169,9 @@ void Unit::take_control() {
 
 void Unit::take_antenna() {
   if (station_.tracker().mode() != tracker::Mode::off) station_.tracker().stop();
+  // The Satrak client holds the antenna (tracker/control.h): status, the page and events say so.
+  station_.apply(station_.control().request(tracker::Resource::antenna, {tracker::HolderKind::satrak, "satrak"},
+                                            station_.now()).changes);
 }
 
 void Unit::command(RotatorPosition p, rotator::Controller::Approach how) {

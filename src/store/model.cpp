@@ -294,6 +294,8 @@ json to_json(const Model& m) {
               {"position_from_gps", m.gps.position_from_gps},
               {"position_time_us", m.gps.position_time ? json(m.gps.position_time->time_since_epoch().count()) : json()}};
   j["udp_events"] = m.udp_events;
+  j["sharing"] = {{"handback_s", m.sharing.handback_s}, {"exclusive", m.sharing.exclusive},
+                  {"standby", m.sharing.standby}};
   return j;
 }
 
@@ -474,6 +476,17 @@ station::GpsSettings gps_from(const json& g) {
   return s;
 }
 
+Sharing sharing_from(const json& j) {
+  if (!j.is_object()) bad("sharing", "expected an object");
+  Sharing s;
+  s.handback_s = static_cast<int>(integer(j, "sharing", "handback_s", 0, 86400));
+  s.exclusive = text(j, "sharing", "exclusive", 16);
+  if (s.exclusive != "" && s.exclusive != "rotctld" && s.exclusive != "rigctld" && s.exclusive != "satrak")
+    bad("sharing.exclusive", "expected rotctld, rigctld, satrak or \"\"; found '" + s.exclusive + "'");
+  s.standby = boolean(j, "sharing", "standby");
+  return s;
+}
+
 std::vector<std::string> udp_events_from(const json& u) {
   if (!u.is_array()) bad("udp_events", "expected a list of HOST:PORT");
   if (u.size() > kMaxUdpEvents) bad("udp_events", "more than " + std::to_string(kMaxUdpEvents) + " destinations");
@@ -525,6 +538,8 @@ Model model_from_json(const json& j) {
   if (j.contains("gps")) m.gps = gps_from(j["gps"]);
   // Absent in state files written before --udp-events was stored.
   if (j.contains("udp_events")) m.udp_events = udp_events_from(j["udp_events"]);
+  // Absent in state files written before the station was shared (issue 44).
+  if (j.contains("sharing")) m.sharing = sharing_from(j["sharing"]);
   return m;
 }
 

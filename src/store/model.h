@@ -40,6 +40,16 @@ struct TrackingChoice {
   bool operator==(const TrackingChoice&) const = default;
 };
 
+// Sharing the station (issue 44, docs/sharing.md): how long an outside client's silence ends its
+// hold (--handback, 0: never by silence), the kind of client that holds exclusively (--exclusive:
+// "rotctld", "rigctld", "satrak" or "" for none), standby (nothing moves by itself).
+struct Sharing {
+  int handback_s = 30;
+  std::string exclusive;
+  bool standby = false;
+  bool operator==(const Sharing&) const = default;
+};
+
 struct Model {
   station::StationConfig station;
   rotator::RotatorConfig rotator;
@@ -64,6 +74,7 @@ struct Model {
   // --udp-events as last given: "HOST:PORT" or "[IPV6]:PORT" each (util/host_port.h), at most
   // kMaxUdpEvents; --udp-events none empties it.
   std::vector<std::string> udp_events;
+  Sharing sharing;
 };
 inline constexpr std::size_t kMaxUdpEvents = 16;
 

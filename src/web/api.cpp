@@ -1,4 +1,5 @@
 #include "web/api.h"
+#include "web/control_api.h"
 
 #include <algorithm>
 #include <cmath>
@@ -207,11 +208,14 @@ Response Api::route(const Request& r, const Grant& g) {
   const json body = r.body.empty() ? json::object() : json::parse(r.body, nullptr, false);
   if (body.is_discarded()) return error(400, "the body is not valid JSON");
   if (!body.is_object()) return error(400, "the body must be a JSON object");
-  return post(path, body);
+  return post(path, body, r.peer);
 }
 
-Response Api::post(const std::string& path, const json& b) {
-  tracker::StationOps ops(station_);
+Response Api::post(const std::string& path, const json& b, const std::string& peer) {
+  // The page acts as the operator "web ADDRESS" (tracker/control.h); "confirm":true takes the antenna
+  // from an outside client or a reservation, which is otherwise a 409 naming the holder.
+  const bool confirmed = b.contains("confirm") && b["confirm"].is_boolean() && b["confirm"].get<bool>();
+  tracker::StationOps ops(station_, {tracker::HolderKind::web, "web " + printable(peer, 60)}, confirmed);
   tracker::OpResult done;
   auto boolean = [&b](const char* key) -> std::optional<bool> {
     const auto it = b.find(key);
@@ -261,12 +265,16 @@ Response Api::post(const std::string& path, const json& b) {
     const auto on = boolean("doppler");
     if (!on) return error(400, "radio: expected {\"doppler\":true|false}");
     done = ops.doppler(*on);
+  } else if (path == "/api/v1/standby" || path == "/api/v1/control") {
+    if (const auto r = control_post(ops, path, b)) done = *r;
+    else return error(400, path == "/api/v1/standby" ? "standby: expected {\"on\":true|false}"
+                                                     : "control: expected {\"take_back\":true}");
   } else if (path == "/api/v1/elements/refresh") {
     done = ops.refresh_elements(hooks_.wall_now_unix ? hooks_.wall_now_unix() : 0);
   } else {
     return error(404, "no such endpoint: " + printable(path, 60));
   }
-  if (!done.ok()) return error(409, *done.refusal);
+  if (!done.ok()) return refused(done);
   json reply{{"ok", true}, {"note", done.note}};
   if (done.model_changed && hooks_.save)
     if (const auto why = hooks_.save()) reply["saved"] = false, reply["save_failure"] = *why;

@@ -125,7 +125,13 @@ TEST_CASE("StationOps: stop, rotor control and Doppler") {
   Ops f;
   REQUIRE(f.ops().track("ISS").ok());
   REQUIRE(f.ops().stop().ok());
-  CHECK(f.tracker.mode() == tracker::Mode::off);
+  // Stop stops the rotator only (issue 44): the choice stays for the radio's Doppler, and the menus
+  // hold the antenna until the operator chooses what to track again.
+  CHECK(f.tracker.mode() == tracker::Mode::single);
+  CHECK(f.station->control().holder(tracker::Resource::antenna).kind == tracker::HolderKind::menus);
+  CHECK(f.station->control().tracking_drives(tracker::Resource::radio));
+  REQUIRE(f.ops().track("ISS").ok());
+  CHECK(f.station->control().tracking_drives(tracker::Resource::antenna));
 
   CHECK(f.ops().rotor_control(true).ok());
   CHECK(f.model.rotor_control);

@@ -136,7 +136,9 @@ TEST_CASE("web: POST track, rotor and radio act through StationOps; bad input is
   CHECK(w.post("/api/v1/radio", R"({"doppler":false})").status == 200);
   CHECK_FALSE(w.station->doppler());
   CHECK(w.post("/api/v1/rotor", R"({"action":"stop"})").status == 200);
-  CHECK(w.tracker.mode() == tracker::Mode::off);
+  // Stop stops the rotator only (issue 44): the page holds the antenna, the choice stays.
+  CHECK(w.tracker.mode() == tracker::Mode::single);
+  CHECK(w.station->control().holder(tracker::Resource::antenna).kind == tracker::HolderKind::web);
 }
 
 TEST_CASE("web: passes of a satellite, checked against the pass search; bad hours and names refused") {

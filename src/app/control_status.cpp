@@ -1,0 +1,59 @@
+#include "app/control_status.h"
+
+#include <nlohmann/json.hpp>
+
+#include "tracker/station_loop.h"
+
+namespace tb::app {
+
+namespace {
+
+nlohmann::json holder_json(const tracker::Holder& h) {
+  return {{"kind", tracker::kind_name(h.kind)},
+          {"label", h.label},
+          {"since", orbit::format_iso8601(h.since, 0)},
+          {"until", h.until ? nlohmann::json(orbit::format_iso8601(*h.until, 0)) : nlohmann::json(nullptr)}};
+}
+
+// Whether trakbox tunes the radio now, in a few words.
+std::string doppler_text(const tracker::StationLoop& st) {
+  const tracker::Holder& h = st.control().holder(tracker::Resource::radio);
+  if (h.kind == tracker::HolderKind::standby) return "paused (standby)";
+  if (h.kind != tracker::HolderKind::tracking) return "held by " + h.label;
+  if (!st.doppler()) return "off";
+  if (st.tracker().mode() == tracker::Mode::off && !st.remote_followed()) return "paused (nothing tracked)";
+  return "on";
+}
+
+}  // namespace
+
+void add_control_status(const tracker::StationLoop& station, nlohmann::json& j) {
+  const tracker::Control& c = station.control();
+  j["control"] = {{"antenna", holder_json(c.holder(tracker::Resource::antenna))},
+                  {"radio", holder_json(c.holder(tracker::Resource::radio))}};
+  j["standby"] = c.standby();
+  nlohmann::json res = nlohmann::json::array();
+  for (const tracker::Window& w : c.windows())
+    res.push_back({{"kind", w.kind},
+                   {"id", w.id},
+                   {"start", orbit::format_iso8601(w.start, 0)},
+                   {"end", orbit::format_iso8601(w.end, 0)},
+                   {"satellite", w.satellite},
+                   {"note", w.note}});
+  j["reservations"] = std::move(res);
+  // The antenna's target is the holder's: where the antenna was last sent, never a stale decision.
+  if (j.contains("antenna") && !c.tracking_drives(tracker::Resource::antenna)) {
+    nlohmann::json& a = j["antenna"];
+    const auto& rs = station.rotator().status();
+    a["action"] = "held";
+    if (rs.target)
+      a["target"] = {{"az_deg", station.rotator().model().compass_from_travel(rs.target->az_travel)},
+                     {"el_deg", rs.target->el}};
+    else
+      a["target"] = nullptr;
+  }
+  if (j.contains("radios"))
+    for (auto& r : j["radios"]) r["doppler"] = doppler_text(station);
+}
+
+}  // namespace tb::app
