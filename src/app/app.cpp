@@ -71,7 +71,8 @@ int main(int argc, char** argv) {
     if (command == "attach") return run_attach(rest);
     if (command == "status") return run_status(rest);
     if (command == "events") return run_events(rest);
-    std::fprintf(stderr, "trakbox: %s: unknown command; expected propagate, schedule, passes, next, elements, host, satrak, attach, status or events (see trakbox --help)\n",
+    if (command == "standby" || command == "reserve") return run_station_command(command, rest);
+    std::fprintf(stderr, "trakbox: %s: unknown command; expected propagate, schedule, passes, next, elements, host, satrak, attach, status, events, standby or reserve (see trakbox --help)\n",
                  command.c_str());
     return kExitUsage;
   }

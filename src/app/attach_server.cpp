@@ -31,6 +31,7 @@
 #include "menus/term/curses_terminal.h"
 #include "menus/term/line_terminal.h"
 #include "util/backoff.h"
+#include "util/safe_text.h"
 
 namespace tb::app {
 
@@ -336,6 +337,9 @@ struct AttachServer::Impl {
         out->finish();
       } else if (line == "events") {
         subscribe(out);
+      } else if (opt.is_command && opt.is_command(line)) {
+        out->send(text::safe_text(opt.command(line)) + "\n");
+        out->finish();
       } else if (line.rfind("attach", 0) == 0 && !opt.menus) {
         out->send("refused: this trakbox's menus are on its own terminal (pid " + std::to_string(::getpid()) +
                   "); status and events answer here\n");

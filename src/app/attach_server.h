@@ -49,6 +49,9 @@ inline constexpr std::size_t kMaxScreenTypes = 8;  // terminal types with a kept
 struct AttachServerOptions {
   std::string path;                           // the socket
   std::function<nlohmann::json()> status;     // the status document
+  // `trakbox standby`, `trakbox reserve` (app/station_command.h): the request line in, the answer out.
+  std::function<bool(const std::string&)> is_command;
+  std::function<std::string(const std::string&)> command;
   // Whether the menus are offered (a trakbox whose menus are on its console answers status and
   // events, and tells an attach where its menus are).
   bool menus = true;

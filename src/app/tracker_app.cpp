@@ -22,6 +22,7 @@
 #include "app/state_lock.h"
 #include "app/station_app.h"
 #include "app/status.h"
+#include "app/station_command.h"
 #include "app/udp_events.h"
 #include "menus/menus.h"
 #include "menus/standalone.h"
@@ -407,6 +408,8 @@ std::unique_ptr<AttachServer> open_socket(StationApp& app, const TrackerConfig& 
     if (*self) cx.attached = (*self)->attached(), cx.keyboard = (*self)->keyboard();
     return station_status(app, cx);
   };
+  o.is_command = is_station_command;
+  o.command = [&app](const std::string& line) { return run_station_command(app, line); };
   try {
     auto server = std::make_unique<AttachServer>(
         app.io(), [&app](int fd, std::optional<term::Duration> t) { return app.wait_readable(fd, t); }, o, app.log());

@@ -294,8 +294,11 @@ json to_json(const Model& m) {
               {"position_from_gps", m.gps.position_from_gps},
               {"position_time_us", m.gps.position_time ? json(m.gps.position_time->time_since_epoch().count()) : json()}};
   j["udp_events"] = m.udp_events;
+  json res = json::array();
+  for (const Reservation& r : m.sharing.reservations)
+    res.push_back({{"id", r.id}, {"start_unix", r.start_unix}, {"end_unix", r.end_unix}, {"note", r.note}});
   j["sharing"] = {{"handback_s", m.sharing.handback_s}, {"exclusive", m.sharing.exclusive},
-                  {"standby", m.sharing.standby}};
+                  {"standby", m.sharing.standby}, {"reservations", res}};
   return j;
 }
 
@@ -484,6 +487,21 @@ Sharing sharing_from(const json& j) {
   if (s.exclusive != "" && s.exclusive != "rotctld" && s.exclusive != "rigctld" && s.exclusive != "satrak")
     bad("sharing.exclusive", "expected rotctld, rigctld, satrak or \"\"; found '" + s.exclusive + "'");
   s.standby = boolean(j, "sharing", "standby");
+  if (j.contains("reservations")) {
+    const json& r = j["reservations"];
+    if (!r.is_array() || r.size() > kMaxReservations)
+      bad("sharing.reservations", "expected a list of at most " + std::to_string(kMaxReservations));
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      const std::string w = "sharing.reservations[" + std::to_string(i) + "]";
+      Reservation x;
+      x.id = text(r[i], w, "id", 32);
+      x.start_unix = integer(r[i], w, "start_unix", 0, 1LL << 40);
+      x.end_unix = integer(r[i], w, "end_unix", 0, 1LL << 40);
+      if (x.end_unix <= x.start_unix) bad(w + ".end_unix", "expected after start_unix");
+      x.note = text(r[i], w, "note", 200);
+      s.reservations.push_back(std::move(x));
+    }
+  }
   return s;
 }
 

@@ -227,6 +227,31 @@ OpResult StationOps::standby(bool on) {
   return r;
 }
 
+OpResult StationOps::reserve(orbit::UtcTime start, orbit::UtcTime end, std::string note) {
+  if (end <= start) return OpResult::refuse("a reservation ends after it starts");
+  const orbit::UtcTime now = station_.now();
+  if (end <= now) return OpResult::refuse("that reservation is over already (" + orbit::format_iso8601(end) + ")");
+  if (note.size() > 200) return OpResult::refuse("the note of a reservation takes 200 bytes at most");
+  auto& list = model_.sharing.reservations;
+  const auto unix_s = [](orbit::UtcTime t) {
+    return static_cast<std::int64_t>(std::chrono::duration_cast<std::chrono::seconds>(t.time_since_epoch()).count());
+  };
+  std::vector<store::Reservation> kept;
+  for (const auto& r : list)
+    if (r.end_unix > unix_s(now)) kept.push_back(r);
+  if (kept.size() >= store::kMaxReservations)
+    return OpResult::refuse("the station keeps " + std::to_string(store::kMaxReservations) + " reservations at most");
+  store::Reservation r{"op-" + std::to_string(unix_s(start)), unix_s(start), unix_s(end), std::move(note)};
+  kept.push_back(r);
+  std::sort(kept.begin(), kept.end(), [](const auto& a, const auto& b) { return a.start_unix < b.start_unix; });
+  list = std::move(kept);
+  station_.sharing_changed();
+  OpResult o;
+  o.model_changed = true;
+  o.note = "reserved " + orbit::format_iso8601(start) + " to " + orbit::format_iso8601(end) + " (" + r.id + ")";
+  return o;
+}
+
 OpResult StationOps::take_back() {
   if (auto no = ask(Resource::antenna, true)) return *no;
   if (auto no = ask(Resource::radio, true)) return *no;

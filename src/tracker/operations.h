@@ -84,6 +84,10 @@ class StationOps {
   // The operator takes the antenna and the radio back for trakbox's tracking, which resumes what
   // was chosen (the confirmation rule applies).
   OpResult take_back();
+  // The operator's own reservation (`trakbox reserve`, the web): from start to end trakbox's
+  // tracking yields, as to a SatNOGS observation; stored. Refused when it ends before it starts or
+  // is over, or when 64 are kept; those already over are forgotten.
+  OpResult reserve(orbit::UtcTime start, orbit::UtcTime end, std::string note);
   // The element refresh from the stored sources, now (menu 3-5 R, host RF).
   OpResult refresh_elements(std::int64_t now_unix);
 

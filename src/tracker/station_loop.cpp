@@ -84,6 +84,11 @@ void StationLoop::sharing_changed() {
   cs.handback_s = model_.sharing.handback_s;
   cs.exclusive = kind_named(model_.sharing.exclusive);
   control_.set_settings(cs);
+  std::vector<Window> w = satnogs_windows_;
+  for (const store::Reservation& r : model_.sharing.reservations)
+    w.push_back({"operator", r.id, orbit::UtcTime{std::chrono::seconds(r.start_unix)},
+                 orbit::UtcTime{std::chrono::seconds(r.end_unix)}, "", r.note});
+  control_.set_windows(std::move(w));
 }
 
 bool StationLoop::apply_gps_position() {

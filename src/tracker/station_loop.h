@@ -68,8 +68,13 @@ class StationLoop {
   // handed back to tracking is tuned afresh, an antenna handed back moves at once.
   void apply(const std::vector<Change>& changes);
   void on_control(std::function<void(const Change&)> f) { control_changed_ = std::move(f); }
-  // model.sharing (--handback, --exclusive) into the controller; reconfigure() does it too.
+  // model.sharing (--handback, --exclusive, the operator's reservations) and the SatNOGS jobs into
+  // the controller; reconfigure() does it too.
   void sharing_changed();
+  void set_satnogs_windows(std::vector<Window> w) {
+    satnogs_windows_ = std::move(w);
+    sharing_changed();
+  }
   // Someone moved the antenna through rotator() directly (the Satrak unit's targets and jogs):
   // tick now rather than at the end of the interval being waited out (see on_wake).
   void antenna_changed() { wake(); }
@@ -169,6 +174,7 @@ class StationLoop {
   std::function<void()> wake_;
   std::function<void()> settings_changed_;
   Control control_;
+  std::vector<Window> satnogs_windows_;
   std::function<void(const Change&)> control_changed_;
   std::shared_ptr<int> alive_ = std::make_shared<int>(0);  // the Tracker's hook checks this
   void record_choice();
