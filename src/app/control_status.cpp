@@ -41,6 +41,12 @@ void add_control_status(const tracker::StationLoop& station, nlohmann::json& j) 
                    {"satellite", w.satellite},
                    {"note", w.note}});
   j["reservations"] = std::move(res);
+  if (const auto& sn = station.satnogs_state())
+    j["satnogs"] = {{"station", sn->station},
+                    {"url", sn->url},
+                    {"jobs", sn->jobs},
+                    {"last_poll", sn->last_poll.empty() ? nlohmann::json(nullptr) : nlohmann::json(sn->last_poll)},
+                    {"error", sn->error ? nlohmann::json(*sn->error) : nlohmann::json(nullptr)}};
   // The antenna's target is the holder's: where the antenna was last sent, never a stale decision.
   if (j.contains("antenna") && !c.tracking_drives(tracker::Resource::antenna)) {
     nlohmann::json& a = j["antenna"];

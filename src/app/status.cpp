@@ -266,6 +266,8 @@ std::vector<std::string> status_problems(const nlohmann::json& s) {
   for (const auto& r : s.at("radios"))
     if (r.value("fault", false)) out.push_back("radio fault: " + r.value("message", ""));
   if (!s.at("save").at("failure").is_null()) out.push_back("state not saved: " + s["save"]["failure"].get<std::string>());
+  if (const auto sn = s.value("satnogs", nlohmann::json()); sn.is_object() && sn.value("error", nlohmann::json()).is_string())
+    out.push_back(sn["error"].get<std::string>());
   // GPS: a receiver that cannot be heard, or a clock off GPS time, is a problem; a lost fix is
   // shown, not counted (the station keeps its position).
   if (const auto g = s.value("gps", nlohmann::json()); g.is_object()) {

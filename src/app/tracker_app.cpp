@@ -22,6 +22,7 @@
 #include "app/state_lock.h"
 #include "app/station_app.h"
 #include "app/status.h"
+#include "app/satnogs_poll.h"
 #include "app/station_command.h"
 #include "app/udp_events.h"
 #include "menus/menus.h"
@@ -37,6 +38,7 @@
 #include "rotator/config.h"
 #include "store/drivers.h"
 #include "tracker/elements_refresh.h"
+#include "tracker/satnogs_jobs.h"
 #include "tracker/events.h"
 #include "tracker/station_loop.h"
 #include "web/access.h"
@@ -424,6 +426,24 @@ std::unique_ptr<AttachServer> open_socket(StationApp& app, const TrackerConfig& 
   }
 }
 
+// --satnogs-station: the station's SatNOGS calendar (app/satnogs_poll.h), and the warning when the
+// SatNOGS flowgraph's rigctl port (4532) is trakbox's rigctld's too.
+std::unique_ptr<SatnogsPoll> start_satnogs(StationApp& app, const TrackerConfig& c, spdlog::logger& log) {
+  const store::Sharing& sh = app.model().sharing;
+  if (sh.satnogs_station <= 0) return nullptr;
+  if (c.rigctld_port && *c.rigctld_port == 4532) {
+    const char* why = "--rigctld-port 4532 with --satnogs-station: the SatNOGS flowgraph listens for Doppler on "
+                      "4532 too; give trakbox's rigctld another port (docs/sharing.md)";
+    log.warn("{}", why);
+    std::fprintf(stderr, "trakbox: WARNING: %s\n", why);
+  }
+  log.info("satnogs: reading the jobs of station {} every {} minutes", sh.satnogs_station,
+           tracker::kSatnogsPollSeconds / 60);
+  return std::make_unique<SatnogsPoll>(app.io(), app.station(),
+                                       sh.satnogs_url.empty() ? tracker::kSatnogsNetworkUrl : sh.satnogs_url,
+                                       sh.satnogs_station, std::chrono::seconds(c.elements_timeout_s));
+}
+
 // The web page and API on the station's loop (src/web), when --http-port asks; the URL is said at
 // start and in `trakbox status`.
 std::optional<std::string> start_web(StationApp& app, const TrackerConfig& c, Servers& out, AttachServer* attach) {
@@ -497,6 +517,8 @@ std::optional<std::string> apply_command_line(TrackerConfig& c, Startup& startup
   if (c.event_min_el_deg) startup.model.event_min_el_deg = *c.event_min_el_deg;
   if (c.handback_s) startup.model.sharing.handback_s = *c.handback_s;
   if (c.exclusive) startup.model.sharing.exclusive = *c.exclusive;
+  if (c.satnogs_station) startup.model.sharing.satnogs_station = *c.satnogs_station;
+  if (c.satnogs_url) startup.model.sharing.satnogs_url = *c.satnogs_url;
   std::vector<std::string> said;
   if (c.rotor_control) {
     startup.model.rotor_control = *c.rotor_control;
@@ -594,6 +616,7 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   EventHooks hooks(app.io(), c.hooks, std::chrono::seconds(c.hook_timeout_s), *log);
   std::unique_ptr<UdpEvents> udp;
   if (auto err = open_udp_events(app, c, *log, udp)) return usage_error(*err);
+  const auto satnogs = start_satnogs(app, c, *log);
   app.set_events(
       [&](const tracker::Event& e) {
         const nlohmann::json j = tracker::to_json(e);
@@ -607,7 +630,8 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
       std::chrono::seconds(c.event_lead_s));
   app.start(std::chrono::milliseconds(c.tick_ms));
   // Stored options given on the command line are stored now, not only at the next save.
-  if (startup.ram_lost || startup.fresh || c.rotor_control || c.event_min_el_deg || c.az_travel_deg || c.handback_s || c.exclusive)
+  if (startup.ram_lost || startup.fresh || c.rotor_control || c.event_min_el_deg || c.az_travel_deg || c.handback_s || c.exclusive ||
+      c.satnogs_station || c.satnogs_url)
     app.save();
   log->info("trakbox {} started, state {}", kVersion, file.path().string());
   stopped_line.started = true;

@@ -85,6 +85,11 @@ std::vector<OptionSpec> tracker_option_specs() {
       {"exclusive", "KIND", "rotctld, rigctld or satrak: while a client of that kind holds the antenna or the radio, "
                             "other clients' moves are refused; none (the factory setting): the latest takes it "
                             "(stored)"},
+      {"satnogs-station", "ID", "the SatNOGS ground station sharing this antenna: its upcoming observations are read "
+                                "every 10 minutes, anonymously, and trakbox's tracking yields in their windows; 0: "
+                                "none (stored; docs/sharing.md)"},
+      {"satnogs-url", "URL", std::string("the SatNOGS Network whose jobs --satnogs-station reads (default ") +
+                                 "https://network.satnogs.org; stored)"},
       {"event-min-el", "DEG", "no AOS/LOS event nor hook for a pass whose maximum elevation stays under DEG, "
                               "-2 to 90 (factory 0: none for a pass that never rises; stored)"},
       {"socket", "PATH", "the station's socket for trakbox attach, status and events (default STATE/" +
@@ -366,6 +371,12 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
   c.event_min_el_deg = r.number("event-min-el", false, "degrees, -2 to 90", Range{-2.0, 90.0});
   if (const auto h = r.integer("handback", false, "seconds, 0 to 86400", Range{0, 86400}))
     c.handback_s = static_cast<int>(*h);
+  if (const auto v = r.integer("satnogs-station", false, "a station id, 0 to 1000000000", Range{0, 1000000000}))
+    c.satnogs_station = static_cast<int>(*v);
+  if (const auto u = o.value("satnogs-url")) {
+    if (u->rfind("http://", 0) == 0 || u->rfind("https://", 0) == 0) c.satnogs_url = *u;
+    else r.fail("--satnogs-url", "expected an http:// or https:// URL; found '" + *u + "'");
+  }
   if (const auto x = o.value("exclusive")) {
     if (*x == "rotctld" || *x == "rigctld" || *x == "satrak" || *x == "none") c.exclusive = *x == "none" ? "" : *x;
     else r.fail("--exclusive", "expected rotctld, rigctld, satrak or none; found '" + *x + "'");

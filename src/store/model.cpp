@@ -298,7 +298,8 @@ json to_json(const Model& m) {
   for (const Reservation& r : m.sharing.reservations)
     res.push_back({{"id", r.id}, {"start_unix", r.start_unix}, {"end_unix", r.end_unix}, {"note", r.note}});
   j["sharing"] = {{"handback_s", m.sharing.handback_s}, {"exclusive", m.sharing.exclusive},
-                  {"standby", m.sharing.standby}, {"reservations", res}};
+                  {"standby", m.sharing.standby}, {"reservations", res},
+                  {"satnogs_station", m.sharing.satnogs_station}, {"satnogs_url", m.sharing.satnogs_url}};
   return j;
 }
 
@@ -487,6 +488,9 @@ Sharing sharing_from(const json& j) {
   if (s.exclusive != "" && s.exclusive != "rotctld" && s.exclusive != "rigctld" && s.exclusive != "satrak")
     bad("sharing.exclusive", "expected rotctld, rigctld, satrak or \"\"; found '" + s.exclusive + "'");
   s.standby = boolean(j, "sharing", "standby");
+  if (j.contains("satnogs_station"))
+    s.satnogs_station = static_cast<int>(integer(j, "sharing", "satnogs_station", 0, 1000000000));
+  if (j.contains("satnogs_url")) s.satnogs_url = text(j, "sharing", "satnogs_url", 512);
   if (j.contains("reservations")) {
     const json& r = j["reservations"];
     if (!r.is_array() || r.size() > kMaxReservations)

@@ -57,6 +57,8 @@ struct Sharing {
   std::string exclusive;
   bool standby = false;
   std::vector<Reservation> reservations;  // start order
+  int satnogs_station = 0;                 // --satnogs-station (0: none)
+  std::string satnogs_url;                 // --satnogs-url ("": the public Network)
   bool operator==(const Sharing&) const = default;
 };
 

@@ -75,6 +75,16 @@ class StationLoop {
     satnogs_windows_ = std::move(w);
     sharing_changed();
   }
+  // What the SatNOGS calendar's poller (--satnogs-station) last found, for status.
+  struct SatnogsState {
+    int station = 0;
+    std::string url;
+    std::size_t jobs = 0;
+    std::string last_poll;             // station time, ISO 8601; "" before the first answer
+    std::optional<std::string> error;  // the last poll failed: why (the last good list is kept)
+  };
+  void set_satnogs_state(SatnogsState s) { satnogs_state_ = std::move(s); }
+  const std::optional<SatnogsState>& satnogs_state() const { return satnogs_state_; }
   // Someone moved the antenna through rotator() directly (the Satrak unit's targets and jogs):
   // tick now rather than at the end of the interval being waited out (see on_wake).
   void antenna_changed() { wake(); }
@@ -175,6 +185,7 @@ class StationLoop {
   std::function<void()> settings_changed_;
   Control control_;
   std::vector<Window> satnogs_windows_;
+  std::optional<SatnogsState> satnogs_state_;
   std::function<void(const Change&)> control_changed_;
   std::shared_ptr<int> alive_ = std::make_shared<int>(0);  // the Tracker's hook checks this
   void record_choice();
