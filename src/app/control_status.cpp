@@ -48,10 +48,12 @@ void add_control_status(const tracker::StationLoop& station, nlohmann::json& j) 
                     {"last_poll", sn->last_poll.empty() ? nlohmann::json(nullptr) : nlohmann::json(sn->last_poll)},
                     {"error", sn->error ? nlohmann::json(*sn->error) : nlohmann::json(nullptr)}};
   // The antenna's target is the holder's: where the antenna was last sent, never a stale decision.
-  if (j.contains("antenna") && !c.tracking_drives(tracker::Resource::antenna)) {
+  const bool held = !c.tracking_drives(tracker::Resource::antenna);
+  if (j.contains("antenna") && (held || station.tracker().mode() == tracker::Mode::off)) {
     nlohmann::json& a = j["antenna"];
     const auto& rs = station.rotator().status();
-    a["action"] = "held";
+    // Not a decision of a tracker that no longer decides (issue 44: "park to az 0 el 0" with parking off).
+    a["action"] = held ? "held" : rs.target ? "point" : "hold";
     if (rs.target)
       a["target"] = {{"az_deg", station.rotator().model().compass_from_travel(rs.target->az_travel)},
                      {"el_deg", rs.target->el}};

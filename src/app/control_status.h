@@ -14,8 +14,8 @@ namespace tb::app {
 
 // Adds "control": {"antenna": {kind, label, since, until}, "radio": {...}}, "standby" and
 // "reservations" to the status document; while someone other than trakbox's tracking holds the
-// antenna, antenna.target is where that one last sent it (the rotator's commanded target) and
-// antenna.action "held"; each radio's "doppler" says whether trakbox tunes it now and, if not, why.
+// antenna (or nothing tracks), antenna.target is where the antenna was last sent (the rotator's
+// commanded target) and antenna.action "held" (or "point"/"hold"); each radio's "doppler" says whether trakbox tunes it now and, if not, why.
 void add_control_status(const tracker::StationLoop& station, nlohmann::json& status);
 
 }  // namespace tb::app

@@ -343,9 +343,13 @@ json Api::sky() {
                       antenna && rotator::azimuth_distance(antenna->az, station_.rotator().config().parking.az) < 2.0 &&
                       std::abs(antenna->el - station_.rotator().config().parking.el) < 2.0;
   j["antenna_state"] = !rs.link.ok() ? "fault" : moving ? "moving" : parked ? "parked" : rs.on_target ? "on target" : "idle";
-  j["target"] = tr.mode() == tracker::Mode::off || d.antenna == tracker::Decision::Antenna::hold
-                    ? json(nullptr)
-                    : az_el(d.az_deg, d.el_deg);
+  // Where the antenna was last sent by whoever holds it (issue 44): the tracker's decision only while
+  // trakbox's tracking drives it, else the rotator's commanded target (a goto, rotctld, Satrak).
+  if (tr.mode() == tracker::Mode::off || !station_.control().tracking_drives(tracker::Resource::antenna))
+    j["target"] = rs.target ? az_el(station_.rotator().model().compass_from_travel(rs.target->az_travel), rs.target->el)
+                            : json(nullptr);
+  else
+    j["target"] = d.antenna == tracker::Decision::Antenna::hold ? json(nullptr) : az_el(d.az_deg, d.el_deg);
   const tracker::SatNow* f = tr.mode() == tracker::Mode::off ? nullptr : tr.followed();
   if (!f || !f->obs.ok()) {
     j["satellite"] = nullptr;
