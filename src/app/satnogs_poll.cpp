@@ -1,11 +1,16 @@
 #include "app/satnogs_poll.h"
 
+#include <cstdio>
+
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/post.hpp>
 #include <boost/asio/steady_timer.hpp>
 #include <spdlog/spdlog.h>
 
+#include "app/station_app.h"
+#include "app/tracker_config.h"
 #include "download/download.h"
+#include "store/model.h"
 #include "tracker/satnogs_jobs.h"
 #include "tracker/station_loop.h"
 
@@ -94,6 +99,24 @@ SatnogsPoll::SatnogsPoll(boost::asio::io_context& io, tracker::StationLoop& stat
 SatnogsPoll::~SatnogsPoll() {
   impl_->alive.reset();
   impl_->timer.cancel();
+}
+
+// --satnogs-station: the station's SatNOGS calendar (app/satnogs_poll.h), and the warning when the
+// SatNOGS flowgraph's rigctl port (4532) is trakbox's rigctld's too.
+std::unique_ptr<SatnogsPoll> start_satnogs(StationApp& app, const TrackerConfig& c, spdlog::logger& log) {
+  const store::Sharing& sh = app.model().sharing;
+  if (sh.satnogs_station <= 0) return nullptr;
+  if (c.rigctld_port && *c.rigctld_port == 4532) {
+    const char* why = "--rigctld-port 4532 with --satnogs-station: the SatNOGS flowgraph listens for Doppler on "
+                      "4532 too; give trakbox's rigctld another port (docs/sharing.md)";
+    log.warn("{}", why);
+    std::fprintf(stderr, "trakbox: WARNING: %s\n", why);
+  }
+  log.info("satnogs: reading the jobs of station {} every {} minutes", sh.satnogs_station,
+           tracker::kSatnogsPollSeconds / 60);
+  return std::make_unique<SatnogsPoll>(app.io(), app.station(),
+                                       sh.satnogs_url.empty() ? tracker::kSatnogsNetworkUrl : sh.satnogs_url,
+                                       sh.satnogs_station, std::chrono::seconds(c.elements_timeout_s));
 }
 
 }  // namespace tb::app

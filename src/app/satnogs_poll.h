@@ -13,6 +13,9 @@
 namespace boost::asio {
 class io_context;
 }
+namespace spdlog {
+class logger;
+}
 namespace tb::tracker {
 class StationLoop;
 }
@@ -32,5 +35,11 @@ class SatnogsPoll {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+class StationApp;
+struct TrackerConfig;
+// The poll of the stored --satnogs-station (none without one), and the warning when the SatNOGS
+// flowgraph's rigctl port (4532) is trakbox's rigctld's too.
+std::unique_ptr<SatnogsPoll> start_satnogs(StationApp& app, const TrackerConfig& c, spdlog::logger& log);
 
 }  // namespace tb::app

@@ -38,7 +38,6 @@
 #include "rotator/config.h"
 #include "store/drivers.h"
 #include "tracker/elements_refresh.h"
-#include "tracker/satnogs_jobs.h"
 #include "tracker/events.h"
 #include "tracker/station_loop.h"
 #include "web/access.h"
@@ -424,24 +423,6 @@ std::unique_ptr<AttachServer> open_socket(StationApp& app, const TrackerConfig& 
     std::fprintf(stderr, "trakbox: WARNING: no attach socket: %s\n", e.what());
     return nullptr;
   }
-}
-
-// --satnogs-station: the station's SatNOGS calendar (app/satnogs_poll.h), and the warning when the
-// SatNOGS flowgraph's rigctl port (4532) is trakbox's rigctld's too.
-std::unique_ptr<SatnogsPoll> start_satnogs(StationApp& app, const TrackerConfig& c, spdlog::logger& log) {
-  const store::Sharing& sh = app.model().sharing;
-  if (sh.satnogs_station <= 0) return nullptr;
-  if (c.rigctld_port && *c.rigctld_port == 4532) {
-    const char* why = "--rigctld-port 4532 with --satnogs-station: the SatNOGS flowgraph listens for Doppler on "
-                      "4532 too; give trakbox's rigctld another port (docs/sharing.md)";
-    log.warn("{}", why);
-    std::fprintf(stderr, "trakbox: WARNING: %s\n", why);
-  }
-  log.info("satnogs: reading the jobs of station {} every {} minutes", sh.satnogs_station,
-           tracker::kSatnogsPollSeconds / 60);
-  return std::make_unique<SatnogsPoll>(app.io(), app.station(),
-                                       sh.satnogs_url.empty() ? tracker::kSatnogsNetworkUrl : sh.satnogs_url,
-                                       sh.satnogs_station, std::chrono::seconds(c.elements_timeout_s));
 }
 
 // The web page and API on the station's loop (src/web), when --http-port asks; the URL is said at

@@ -215,6 +215,22 @@ void read_refresh(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
 }
 
 // The GPS receiver: its gpsd, whether the station follows it, and how far it must move first.
+// --handback, --exclusive, --satnogs-station, --satnogs-url (issue 44, docs/sharing.md).
+void read_sharing(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
+  if (const auto h = r.integer("handback", false, "seconds, 0 to 86400", Range{0, 86400}))
+    c.handback_s = static_cast<int>(*h);
+  if (const auto v = r.integer("satnogs-station", false, "a station id, 0 to 1000000000", Range{0, 1000000000}))
+    c.satnogs_station = static_cast<int>(*v);
+  if (const auto u = o.value("satnogs-url")) {
+    if (u->rfind("http://", 0) == 0 || u->rfind("https://", 0) == 0) c.satnogs_url = *u;
+    else r.fail("--satnogs-url", "expected an http:// or https:// URL; found '" + *u + "'");
+  }
+  if (const auto x = o.value("exclusive")) {
+    if (*x == "rotctld" || *x == "rigctld" || *x == "satrak" || *x == "none") c.exclusive = *x == "none" ? "" : *x;
+    else r.fail("--exclusive", "expected rotctld, rigctld, satrak or none; found '" + *x + "'");
+  }
+}
+
 void read_gps(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
   if (const auto g = o.value("gps")) {
     std::string why;
@@ -369,18 +385,7 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
     else r.fail("--rotor-control", "expected on or off; found '" + *x + "'");
   }
   c.event_min_el_deg = r.number("event-min-el", false, "degrees, -2 to 90", Range{-2.0, 90.0});
-  if (const auto h = r.integer("handback", false, "seconds, 0 to 86400", Range{0, 86400}))
-    c.handback_s = static_cast<int>(*h);
-  if (const auto v = r.integer("satnogs-station", false, "a station id, 0 to 1000000000", Range{0, 1000000000}))
-    c.satnogs_station = static_cast<int>(*v);
-  if (const auto u = o.value("satnogs-url")) {
-    if (u->rfind("http://", 0) == 0 || u->rfind("https://", 0) == 0) c.satnogs_url = *u;
-    else r.fail("--satnogs-url", "expected an http:// or https:// URL; found '" + *u + "'");
-  }
-  if (const auto x = o.value("exclusive")) {
-    if (*x == "rotctld" || *x == "rigctld" || *x == "satrak" || *x == "none") c.exclusive = *x == "none" ? "" : *x;
-    else r.fail("--exclusive", "expected rotctld, rigctld, satrak or none; found '" + *x + "'");
-  }
+  read_sharing(o, r, c);
   read_gps(o, r, c);
   if (const auto l = o.value("log-level")) {
     if (const auto level = log_level_named(*l)) c.log_level = *level;
