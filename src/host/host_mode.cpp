@@ -171,6 +171,8 @@ std::vector<std::string> Interpreter::help() {
       "?A           present antenna position          reply AZ220.0 EL45.0",
       "RF           refresh the elements now          (menu 3-5's sources)",
       "?R           the last element refresh          reply REFRESH ...",
+      "?C           who holds the antenna and radio   reply CONTROL ANTENNA ... RADIO ...",
+      "STANDBY ON   standby (STANDBY OFF ends it)     nothing moves by itself",
       "?            this list",
       "Q            quit to the main menu",
   };
@@ -189,6 +191,12 @@ Reply Interpreter::execute(std::string_view line) {
   if (u == "?A") return antenna();
   if (u == "RF") return refresh_now();
   if (u == "?R") return refresh_status();
+  if (u == "?C") return control();
+  if (u == "STANDBY ON" || u == "STANDBY OFF") {  // before S: not a string for the radio
+    const tracker::OpResult done = ops().standby(u == "STANDBY ON");
+    if (!done.ok()) return error("STANDBY: " + *done.refusal);
+    return Reply{{done.note}, true, false};
+  }
   if (u.rfind("AZ", 0) == 0) return az_el(s);
   if (u.rfind("MU", 0) == 0 || u.rfind("MD", 0) == 0) return mode(u.substr(0, 2), s.substr(2));
   if (u.rfind("FU", 0) == 0 || u.rfind("FD", 0) == 0) return frequency(u.substr(0, 2), s.substr(2));
@@ -200,6 +208,14 @@ Reply Interpreter::execute(std::string_view line) {
   std::string shown(s.substr(0, 20));
   if (s.size() > 20) shown += "...";
   return error("unknown command '" + shown + "': expected AZxxx ELxxx, MUxxx, MDxxx, FUxxx, FDxxx, Sxxx, ?A, ? or Q");
+}
+
+// ?C: who holds the antenna and the radio (tracker/control.h), one line.
+Reply Interpreter::control() {
+  const tracker::Control& c = station_.control();
+  return Reply{{"CONTROL ANTENNA " + c.holder(tracker::Resource::antenna).label + " RADIO " +
+                c.holder(tracker::Resource::radio).label},
+               true, false};
 }
 
 // RF / ?R: trakbox's own commands (the manual's set has no element refresh), answered with one line.

@@ -83,6 +83,7 @@ class Interpreter {
   Reply antenna();
   Reply refresh_now();
   Reply refresh_status();
+  Reply control();
   Reply radio_outcome(std::string_view cmd);
 
   tracker::StationLoop& station_;

@@ -210,6 +210,7 @@ OpResult StationOps::standby(bool on) {
   OpResult r;
   if (model_.sharing.standby != on) r.model_changed = true;
   model_.sharing.standby = on;
+  if (r.model_changed) station_.save_settings();  // on disk before it is acknowledged
   if (on) {
     station_.apply(station_.control().set_standby(true, station_.now()));
     if (station_.rotator().config().parking_enabled) {
@@ -246,6 +247,7 @@ OpResult StationOps::reserve(orbit::UtcTime start, orbit::UtcTime end, std::stri
   std::sort(kept.begin(), kept.end(), [](const auto& a, const auto& b) { return a.start_unix < b.start_unix; });
   list = std::move(kept);
   station_.sharing_changed();
+  station_.save_settings();
   OpResult o;
   o.model_changed = true;
   o.note = "reserved " + orbit::format_iso8601(start) + " to " + orbit::format_iso8601(end) + " (" + r.id + ")";

@@ -49,6 +49,10 @@ class StationLoop {
   // of what to track, recorded in model.tracking): the program saves the state here, so a restart
   // does what was asked whichever front end asked it.
   void on_settings_changed(std::function<void()> f) { settings_changed_ = std::move(f); }
+  // Saves now through that hook (standby, a reservation: stored before they are acknowledged).
+  void save_settings() {
+    if (settings_changed_) settings_changed_();
+  }
 
   // Direct antenna control (menus 6-6 and 8, host AZ/EL, Satrak GOTO): tracking stops, the antenna
   // goes where it is told (still inside the limits). Returns the commanded compass position.

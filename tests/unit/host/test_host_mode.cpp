@@ -238,6 +238,16 @@ TEST_CASE("AZ/EL while an outside client holds the antenna: refused once, done w
   CHECK(s.station->control().holder(tracker::Resource::antenna).kind == tracker::HolderKind::rotctld);
   CHECK(s.cmd("AZ10 EL10").ok);
   CHECK(s.station->control().holder(tracker::Resource::antenna).kind == tracker::HolderKind::host);
+  const auto who = s.cmd("?C");
+  REQUIRE(who.lines.size() == 1);
+  CHECK(who.lines[0] == "CONTROL ANTENNA host RADIO trakbox tracking");
+  const auto sb = s.cmd("standby on");
+  CHECK(sb.ok);
+  CHECK(s.station->control().standby());
+  CHECK(s.model.sharing.standby);
+  CHECK_FALSE(s.cmd("AZ20 EL10").ok);  // standby: nothing moves
+  CHECK(s.cmd("STANDBY OFF").ok);
+  CHECK_FALSE(s.station->control().standby());
 }
 
 TEST_CASE("Q, ?, blank lines and unknown commands") {
