@@ -152,6 +152,7 @@ std::string Unit::dispatch(const Command& c) {
     if (c.word != e.word) continue;
     if ((c.kind == Kind::query && !e.query) || (c.kind == Kind::request && !e.request)) break;
     save_failed_ = false;
+    station_.control().heard("satrak", station_.now());  // a Satrak client that speaks keeps its hold
     Reply reply = (this->*e.fn)(c);
     // A setting that could not be stored is not acknowledged: it holds until the next start only.
     if (save_failed_ && reply == reply_ok(c.head())) return reply_error(c.head(), Error::internal);
