@@ -60,8 +60,16 @@ void add_control_status(const tracker::StationLoop& station, nlohmann::json& j) 
     else
       a["target"] = nullptr;
   }
+  // A link trakbox does not tune now says why, not "confirmed" (the Radio panel shows the state).
+  const std::string doppler = doppler_text(station);
   if (j.contains("radios"))
-    for (auto& r : j["radios"]) r["doppler"] = doppler_text(station);
+    for (auto& r : j["radios"]) {
+      r["doppler"] = doppler;
+      if (doppler == "on" || !r.contains("links")) continue;
+      for (auto& [name, link] : r["links"].items())
+        if (link.value("state", "") != "fault" && link.value("state", "") != "not connected")
+          link["state"] = "Doppler " + doppler;
+    }
 }
 
 }  // namespace tb::app

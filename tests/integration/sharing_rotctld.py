@@ -156,6 +156,7 @@ def main():
             check(s["control"]["radio"]["kind"] == "rigctld" and s["control"]["antenna"]["kind"] == "tracking",
                   f"rigctld holds the radio only: {s['control']}")
             check(s["radios"][0]["doppler"].startswith("held by rigctld 127.0.0.1:"), f"{s['radios'][0]['doppler']}")
+            check(s["radios"][0]["links"]["downlink"]["state"].startswith("Doppler held by rigctld 127.0.0.1:"), f"{s['radios'][0]['links']}")
         wait_for("the radio back to tracking", lambda: web.status()["control"]["radio"]["kind"] == "tracking", 5)
 
         time.sleep(0.5)
