@@ -265,10 +265,11 @@ Response Api::post(const std::string& path, const json& b, const std::string& pe
     const auto on = boolean("doppler");
     if (!on) return error(400, "radio: expected {\"doppler\":true|false}");
     done = ops.doppler(*on);
-  } else if (path == "/api/v1/standby" || path == "/api/v1/control") {
+  } else if (path == "/api/v1/standby" || path == "/api/v1/control" || path == "/api/v1/reserve") {
     if (const auto r = control_post(ops, path, b)) done = *r;
-    else return error(400, path == "/api/v1/standby" ? "standby: expected {\"on\":true|false}"
-                                                     : "control: expected {\"take_back\":true}");
+    else return error(400, path == "/api/v1/standby"   ? "standby: expected {\"on\":true|false}"
+                           : path == "/api/v1/reserve" ? "reserve: expected {\"start\":ISO,\"end\":ISO,\"note\":TEXT}"
+                                                       : "control: expected {\"take_back\":true}");
   } else if (path == "/api/v1/elements/refresh") {
     done = ops.refresh_elements(hooks_.wall_now_unix ? hooks_.wall_now_unix() : 0);
   } else {

@@ -1,5 +1,6 @@
 // The web API's part in sharing the station (issue 44, docs/sharing.md): POST /api/v1/standby
-// {"on":true|false}, POST /api/v1/control {"take_back":true[,"confirm":true]}, and the refusal of
+// {"on":true|false}, POST /api/v1/control {"take_back":true[,"confirm":true]}, POST /api/v1/reserve
+// {"start":ISO,"end":ISO[,"note":TEXT]}, and the refusal of
 // an operation as a 409 that names the holder when the operator must confirm first.
 #pragma once
 #include <optional>
