@@ -147,3 +147,35 @@ TEST_CASE("StationOps: stop, rotor control and Doppler") {
   CHECK(f.ops().refresh_elements(0).refusal.value() ==
         "this trakbox has no element refresh (it runs only with the station)");
 }
+
+TEST_CASE("StationOps: a list that pushes satellites out of a full tracking list names them (issue 46)") {
+  Ops f;
+  REQUIRE(f.model.db.satellites.size() >= 17);
+  f.model.db.selected.clear();
+  for (int i = 0; i < 15; ++i) f.model.db.selected.push_back(i);
+  const std::string a = f.model.db.satellites[15].name(), b = f.model.db.satellites[16].name();
+  const tracker::OpResult r = f.ops().track_list({a, b}, false);
+  REQUIRE(r.ok());
+  CHECK(f.model.db.selected.size() == 15);
+  CHECK(f.model.db.selected[0] == 15);
+  CHECK(f.model.db.selected[1] == 16);
+  CHECK(r.note == "multiple tracking (normal) of #1-#2; the tracking list holds 15: " + f.model.db.satellites[13].name() +
+                      ", " + f.model.db.satellites[14].name() + " left it");
+}
+
+TEST_CASE("StationOps: Stop stops the rotator only; the radio keeps its Doppler (issue 44)") {
+  Ops f;
+  REQUIRE(f.ops().track("ISS").ok());
+  f.run(5.0);
+  const auto before = f.radio_sim->frequency(radio::Link::downlink);
+  REQUIRE(f.ops().stop().ok());
+  CHECK_FALSE(f.station->rotator().status().target);
+  f.run(60.0);
+  CHECK(f.radio_sim->frequency(radio::Link::downlink) != before);  // still tuned for Doppler
+  CHECK(f.tracker.mode() == tracker::Mode::single);
+  // Doppler off: the radio is left where it is.
+  REQUIRE(f.ops().doppler(false).ok());
+  const auto held = f.radio_sim->frequency(radio::Link::downlink);
+  f.run(60.0);
+  CHECK(f.radio_sim->frequency(radio::Link::downlink) == held);
+}
