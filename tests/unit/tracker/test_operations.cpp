@@ -165,6 +165,7 @@ TEST_CASE("StationOps: a list that pushes satellites out of a full tracking list
 
 TEST_CASE("StationOps: Stop stops the rotator only; the radio keeps its Doppler (issue 44)") {
   Ops f;
+  f.now = orbit::from_civil(2026, 5, 21, 12, 10, 0);  // ISS is up (12:09:10 to 12:15:37 at -2 deg)
   REQUIRE(f.ops().track("ISS").ok());
   f.run(5.0);
   const auto before = f.radio_sim->frequency(radio::Link::downlink);
