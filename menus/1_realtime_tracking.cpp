@@ -1,6 +1,7 @@
 // Menu 1: Realtime Tracking. Choose from the tracking list (Enter: the one marked '*'), then the live
 // display. Rotor control stays as it was (E toggles it); tracking goes on after Q.
 #include "menus/realtime_display.h"
+#include "menus/take_back.h"
 #include "store/model.h"
 #include "tracker/operations.h"
 #include "tracker/station_loop.h"
@@ -12,7 +13,9 @@ std::optional<int> choose_and_track(term::Terminal& t, Services& s) {
   const auto pick = choose_satellite(t, "     *** Tracking object satellite ***", tracking_list_names(s), s.model.db.marked);
   if (!pick) return std::nullopt;
   const int db_index = s.model.db.selected[static_cast<std::size_t>(*pick)];
-  tracker::StationOps(s.station).track(db_index);  // marks it '*' in the list
+  // Marks it '*' in the list; asks first when an outside client or a SatNOGS window holds the antenna.
+  if (!with_confirmation(t, s.station, [db_index](tracker::StationOps& o) { return o.track(db_index); }).ok())
+    return std::nullopt;
   save_or_report(t, s);
   return db_index;
 }

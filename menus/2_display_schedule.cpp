@@ -19,6 +19,7 @@
 #include "menus/realtime_display.h"
 #include "station/clock.h"
 #include "store/model.h"
+#include "tracker/station_loop.h"
 
 namespace tb::menus {
 
@@ -165,6 +166,9 @@ void menu_2_display_schedule(term::Terminal& t, Services& s) {
         return;
       }
       shown.push_back(format_schedule_row(*n));
+      // A time booked by a SatNOGS observation or the operator's reservation (issue 44) says so.
+      if (const tracker::Window* w = s.station.control().window_at(when))
+        shown.back() += w->kind == "satnogs" ? " SatNOGS " + w->id : std::string(" reserved");
       t.line(shown.back());
     }
     for (;;) {

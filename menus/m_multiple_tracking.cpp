@@ -7,6 +7,7 @@
 
 #include "menus/realtime_display.h"
 #include "menus/standalone.h"
+#include "menus/take_back.h"
 #include "store/model.h"
 #include "tracker/operations.h"
 #include "tracker/station_loop.h"
@@ -85,8 +86,10 @@ void menu_m_multiple_tracking(term::Terminal& t, Services& s) {
 
   s.model.db.marked = *pick;
   const int lcd_db_index = s.model.db.selected[static_cast<std::size_t>(*pick)];
+  const bool prio = *priority;
+  if (!with_confirmation(t, s.station, [prio](tracker::StationOps& o) { return o.track_multi(prio); }).ok())
+    return;  // stores the sub-mode; asks first when an outside client holds the antenna
   tracker::StationOps ops(s.station);
-  ops.track_multi(*priority);  // stores the sub-mode
   ops.rotor_control(true);     // as S: the antenna follows (E turns it off)
   save_or_report(t, s);
 

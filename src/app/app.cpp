@@ -74,7 +74,8 @@ int main(int argc, char** argv) {
     if (command == "status") return run_status(rest);
     if (command == "events") return run_events(rest);
     if (command == "log") return run_log(rest);
-    std::fprintf(stderr, "trakbox: %s: unknown command; expected propagate, schedule, passes, next, elements, host, satrak, attach, status, events or log (see trakbox --help)\n",
+    if (command == "standby" || command == "reserve") return run_station_command(command, rest);
+    std::fprintf(stderr, "trakbox: %s: unknown command; expected propagate, schedule, passes, next, elements, host, satrak, attach, status, events, log, standby or reserve (see trakbox --help)\n",
                  command.c_str());
     return kExitUsage;
   }

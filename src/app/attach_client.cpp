@@ -39,6 +39,14 @@ std::vector<OptionSpec> client_specs(const std::string& command) {
 
 std::string help_text(const std::string& command) {
   std::string what;
+  if (command == "standby" || command == "reserve")
+    return "usage: trakbox " + command + (command == "standby" ? " on|off" : " START END [NOTE]") +
+           " [--socket PATH | --state DIR]\n\n" +
+           (command == "standby" ? "Standby on: the antenna parks (or stops), the radio is left alone, nothing tracks by itself and\n"
+                                   "outside clients are refused, until standby off. Stored.\n"
+                                 : "Reserves the station from START to END (ISO 8601 UTC, e.g. 2026-05-21T12:20:00Z): trakbox's\n"
+                                   "tracking yields in that window, as to a SatNOGS observation. Stored.\n") +
+           "\noptions:\n" + describe_options(client_specs(command));
   if (command == "attach")
     what = "The TrakBox menus of the running station (the service, or a trakbox on another terminal) on this\n"
            "terminal: full screen on a terminal, plain lines otherwise. Ctrl-] detaches (the station goes on);\n"
@@ -338,6 +346,34 @@ int run_status(const std::vector<std::string>& args) {
   if (a->options.has("json")) std::fputs((doc.dump(2) + "\n").c_str(), stdout);
   else std::fputs(format_status(doc).c_str(), stdout);
   return doc.value("healthy", false) ? kStatusHealthy : kStatusUnhealthy;
+}
+
+int run_station_command(const std::string& command, const std::vector<std::string>& args) {
+  // The command's words first (a note may have several), then the options.
+  std::vector<std::string> words, opts;
+  for (const std::string& s : args) (s.rfind("--", 0) == 0 || !opts.empty() ? opts : words).push_back(s);
+  int code = kExitOk;
+  const auto a = read_args(command, opts, code);
+  if (!a) return code;
+  if (words.empty()) {
+    std::fprintf(stderr, "trakbox %s: %s (see trakbox %s --help)\n", command.c_str(),
+                 command == "standby" ? "expected on or off" : "expected START END [NOTE]", command.c_str());
+    return kExitUsage;
+  }
+  std::string line = command;
+  for (const std::string& w : words) line += " " + w;
+  bool not_running = false;
+  const int fd = connect_station(a->socket, command, not_running);
+  if (fd < 0) return not_running ? kStatusNotRunning : kExitFailure;
+  if (!send_all(fd, line + "\n")) {
+    ::close(fd);
+    return kExitFailure;
+  }
+  const auto text = read_to_end(fd);
+  ::close(fd);
+  const std::string answer = text ? *text : std::string();
+  std::fputs(answer.c_str(), answer.rfind("ok:", 0) == 0 ? stdout : stderr);
+  return answer.rfind("ok:", 0) == 0 ? kExitOk : kExitFailure;
 }
 
 int run_events(const std::vector<std::string>& args) {

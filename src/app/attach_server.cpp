@@ -31,6 +31,7 @@
 #include "menus/term/curses_terminal.h"
 #include "menus/term/line_terminal.h"
 #include "util/backoff.h"
+#include "util/safe_text.h"
 
 namespace tb::app {
 
@@ -339,6 +340,8 @@ struct AttachServer::Impl {
         subscribe(out);
       } else if (line.rfind("log ", 0) == 0 && opt.log) {
         out->send(opt.log(line.substr(4)) + "\n");
+      } else if (opt.is_command && opt.is_command(line)) {
+        out->send(text::safe_text(opt.command(line)) + "\n");
         out->finish();
       } else if (line.rfind("attach", 0) == 0 && !opt.menus) {
         out->send("refused: this trakbox's menus are on its own terminal (pid " + std::to_string(::getpid()) +

@@ -51,6 +51,9 @@ struct AttachServerOptions {
   std::function<nlohmann::json()> status;     // the status document
   // "log {json}": the logbook's request (`trakbox log ...`, app/log_requests.h), its JSON reply.
   std::function<std::string(const std::string&)> log;
+  // `trakbox standby`, `trakbox reserve` (app/station_command.h): the request line in, the answer out.
+  std::function<bool(const std::string&)> is_command;
+  std::function<std::string(const std::string&)> command;
   // Whether the menus are offered (a trakbox whose menus are on its console answers status and
   // events, and tells an attach where its menus are).
   bool menus = true;

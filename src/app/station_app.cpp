@@ -253,6 +253,14 @@ void StationApp::build_station(std::unique_ptr<rotator::RotatorDriver> rot, std:
   m.station->set_refresh(m.refresh.get());
   // Rotor control and the choice of what to track are saved when they change, by whoever.
   m.station->on_settings_changed([this] { save(); });
+  // Each change of who holds the antenna or the radio is an event (hooks, UDP, the stream; issue 44).
+  m.station->on_control([&m](const tracker::Change& c) {
+    tracker::Event e;
+    e.kind = "control";
+    e.detail = std::string(tracker::resource_name(c.resource)) + ": " + c.to.label + " (" + c.why + ")";
+    e.control = c;
+    m.emit(std::move(e));
+  });
   m.station->on_wake([&m] {
     if (m.started) m.arm_tick(std::chrono::microseconds(0));
   });

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/control_status.h"
 #include "app/station_app.h"
 #include "gps/monitor.h"
 #include "orbit/element_age.h"
@@ -258,6 +259,7 @@ nlohmann::json station_status(StationApp& app, const StatusContext& cx) {
   j["keyboard"] = cx.keyboard.empty() ? nlohmann::json(nullptr) : nlohmann::json(cx.keyboard);
   j["status_line"] = app.station().status_line();
   j["log"] = tracker::log_summary(tracker::LogOps(app.station()));
+  add_control_status(app.station(), j);
   const auto problems = status_problems(j);
   j["healthy"] = problems.empty();
   j["problems"] = problems;
@@ -271,6 +273,8 @@ std::vector<std::string> status_problems(const nlohmann::json& s) {
   for (const auto& r : s.at("radios"))
     if (r.value("fault", false)) out.push_back("radio fault: " + r.value("message", ""));
   if (!s.at("save").at("failure").is_null()) out.push_back("state not saved: " + s["save"]["failure"].get<std::string>());
+  if (const auto sn = s.value("satnogs", nlohmann::json()); sn.is_object() && sn.value("error", nlohmann::json()).is_string())
+    out.push_back(sn["error"].get<std::string>());
   // GPS: a receiver that cannot be heard, or a clock off GPS time, is a problem; a lost fix is
   // shown, not counted (the station keeps its position).
   if (const auto g = s.value("gps", nlohmann::json()); g.is_object()) {
@@ -353,6 +357,9 @@ std::string format_status(const nlohmann::json& s) {
   if (!a.at("target").is_null()) ant += " to az " + num(a["target"]["az_deg"], 1) + " el " + num(a["target"]["el_deg"], 1);
   ant += ", rotor control " + std::string(a.value("rotor_control", false) ? "on" : "off") + ", link " + a.value("link", "");
   line(ant);
+  if (const auto c = s.value("control", nlohmann::json()); c.is_object())
+    line("  control   antenna " + c["antenna"].value("label", "") + ", radio " + c["radio"].value("label", "") +
+         (s.value("standby", false) ? " (STANDBY)" : ""));
   for (const auto& r : s.at("radios"))
     line("  radio     " + r.value("radio", "") + ": downlink " + num(r.value("downlink_hz", nlohmann::json()), 0) +
          " Hz, uplink " + num(r.value("uplink_hz", nlohmann::json()), 0) + " Hz, " +

@@ -24,6 +24,8 @@
 #include "app/state_lock.h"
 #include "app/station_app.h"
 #include "app/status.h"
+#include "app/satnogs_poll.h"
+#include "app/station_command.h"
 #include "app/udp_events.h"
 #include "menus/menus.h"
 #include "menus/standalone.h"
@@ -435,6 +437,8 @@ std::unique_ptr<AttachServer> open_socket(StationApp& app, const TrackerConfig& 
     return station_status(app, cx);
   };
   o.log = [&app](const std::string& request) { return log_socket_request(app, request); };
+  o.is_command = is_station_command;
+  o.command = [&app](const std::string& line) { return run_station_command(app, line); };
   try {
     auto server = std::make_unique<AttachServer>(
         app.io(), [&app](int fd, std::optional<term::Duration> t) { return app.wait_readable(fd, t); }, o, app.log());
@@ -521,6 +525,10 @@ std::optional<std::string> apply_command_line(TrackerConfig& c, Startup& startup
     startup.model.rotator = next;
   }
   if (c.event_min_el_deg) startup.model.event_min_el_deg = *c.event_min_el_deg;
+  if (c.handback_s) startup.model.sharing.handback_s = *c.handback_s;
+  if (c.exclusive) startup.model.sharing.exclusive = *c.exclusive;
+  if (c.satnogs_station) startup.model.sharing.satnogs_station = *c.satnogs_station;
+  if (c.satnogs_url) startup.model.sharing.satnogs_url = *c.satnogs_url;
   std::vector<std::string> said;
   if (c.rotor_control) {
     startup.model.rotor_control = *c.rotor_control;
@@ -621,6 +629,7 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   EventHooks hooks(app.io(), c.hooks, std::chrono::seconds(c.hook_timeout_s), *log);
   std::unique_ptr<UdpEvents> udp;
   if (auto err = open_udp_events(app, c, *log, udp)) return usage_error(*err);
+  const auto satnogs = start_satnogs(app, c, *log);
   app.set_events(
       [&](const tracker::Event& e) {
         const nlohmann::json j = tracker::to_json(e);
@@ -634,7 +643,9 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
       std::chrono::seconds(c.event_lead_s));
   app.start(std::chrono::milliseconds(c.tick_ms));
   // Stored options given on the command line are stored now, not only at the next save.
-  if (startup.ram_lost || startup.fresh || c.rotor_control || c.event_min_el_deg || c.az_travel_deg) app.save();
+  if (startup.ram_lost || startup.fresh || c.rotor_control || c.event_min_el_deg || c.az_travel_deg || c.handback_s || c.exclusive ||
+      c.satnogs_station || c.satnogs_url)
+    app.save();
   log->info("trakbox {} started, state {}", kVersion, file.path().string());
   stopped_line.started = true;
 

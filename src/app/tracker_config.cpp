@@ -87,13 +87,23 @@ std::vector<OptionSpec> tracker_option_specs() {
                            "overlap rotator such as a G-5500 or a GS-232 in 450-degree mode (stored)"},
       {"rotor-control", "on|off", "on: the antenna follows the satellite tracked, from the start (a service moves "
                                   "it with nobody attached); off: it stays where it is (the E key, menu 6-R; stored)"},
+      {"handback", "S", "an outside client (rotctld, rigctld, Satrak) silent S seconds hands the antenna or the radio "
+                        "back to trakbox's tracking, 0 to 86400, 0: only when it disconnects (default 30; stored)"},
+      {"exclusive", "KIND", "rotctld, rigctld or satrak: while a client of that kind holds the antenna or the radio, "
+                            "other clients' moves are refused; none (the factory setting): the latest takes it "
+                            "(stored)"},
+      {"satnogs-station", "ID", "the SatNOGS ground station sharing this antenna: its upcoming observations are read "
+                                "every 10 minutes, anonymously, and trakbox's tracking yields in their windows; 0: "
+                                "none (stored; docs/sharing.md)"},
+      {"satnogs-url", "URL", std::string("the SatNOGS Network whose jobs --satnogs-station reads (default ") +
+                                 "https://network.satnogs.org; stored)"},
       {"event-min-el", "DEG", "no AOS/LOS event nor hook for a pass whose maximum elevation stays under DEG, "
                               "-2 to 90 (factory 0: none for a pass that never rises; stored)"},
       {"socket", "PATH", "the station's socket for trakbox attach, status and events (default STATE/" +
                              std::string(kSocketFile) + "; the system service's is " + std::string(kServiceSocket) +
                              "), made for the user and group only"},
       {"on-event", "[KIND,...=]CMD", "run CMD (with /bin/sh) on every event, or on the kinds named: aos, los, "
-                                     "elements, link-lost, link-back, save-failed; the event is in its environment "
+                                     "elements, link-lost, link-back, save-failed, control; the event is in its environment "
                                      "(TRAKBOX_EVENT, TRAKBOX_SATELLITE, TRAKBOX_AOS, ...; docs/service.md)", true},
       {"udp-events", "HOST:PORT", "send each event as one JSON datagram (the fields of trakbox events) to HOST:PORT, "
                                   "e.g. 192.168.1.20:9000 (repeatable; stored, so later starts send there too; none: "
@@ -214,6 +224,22 @@ void read_refresh(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
 }
 
 // The GPS receiver: its gpsd, whether the station follows it, and how far it must move first.
+// --handback, --exclusive, --satnogs-station, --satnogs-url (issue 44, docs/sharing.md).
+void read_sharing(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
+  if (const auto h = r.integer("handback", false, "seconds, 0 to 86400", Range{0, 86400}))
+    c.handback_s = static_cast<int>(*h);
+  if (const auto v = r.integer("satnogs-station", false, "a station id, 0 to 1000000000", Range{0, 1000000000}))
+    c.satnogs_station = static_cast<int>(*v);
+  if (const auto u = o.value("satnogs-url")) {
+    if (u->rfind("http://", 0) == 0 || u->rfind("https://", 0) == 0) c.satnogs_url = *u;
+    else r.fail("--satnogs-url", "expected an http:// or https:// URL; found '" + *u + "'");
+  }
+  if (const auto x = o.value("exclusive")) {
+    if (*x == "rotctld" || *x == "rigctld" || *x == "satrak" || *x == "none") c.exclusive = *x == "none" ? "" : *x;
+    else r.fail("--exclusive", "expected rotctld, rigctld, satrak or none; found '" + *x + "'");
+  }
+}
+
 void read_gps(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
   if (const auto g = o.value("gps")) {
     std::string why;
@@ -380,6 +406,7 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
     else r.fail("--rotor-control", "expected on or off; found '" + *x + "'");
   }
   c.event_min_el_deg = r.number("event-min-el", false, "degrees, -2 to 90", Range{-2.0, 90.0});
+  read_sharing(o, r, c);
   read_gps(o, r, c);
   if (const auto l = o.value("log-level")) {
     if (const auto level = log_level_named(*l)) c.log_level = *level;

@@ -93,6 +93,12 @@ struct TrackerConfig {
   // --event-min-el DEG: no AOS/LOS event for a pass whose maximum stays under it (stored).
   std::optional<bool> rotor_control;
   std::optional<double> event_min_el_deg;
+  // --handback S and --exclusive KIND (store::Sharing; "" for none), stored (issue 44).
+  std::optional<int> handback_s;
+  std::optional<std::string> exclusive;
+  // --satnogs-station ID (0: none) and --satnogs-url URL, stored (issue 44).
+  std::optional<int> satnogs_station;
+  std::optional<std::string> satnogs_url;
   // The station's socket (attach, status, events): --socket, else STATE_DIR/trakbox.sock.
   std::string socket;
   // --on-event hooks, their time limit (--hook-timeout) and the AOS event's lead (--event-lead).

@@ -170,6 +170,8 @@ std::vector<std::string> Interpreter::help() {
       "RF           refresh the elements now          (menu 3-5's sources)",
       "?R           the last element refresh          reply REFRESH ...",
       "LOG CALL [GRID] [RST]  log a QSO of this pass  reply LOGGED n CALL SAT TIME",
+      "?C           who holds the antenna and radio   reply CONTROL ANTENNA ... RADIO ...",
+      "STANDBY ON   standby (STANDBY OFF ends it)     nothing moves by itself",
       "?            this list",
       "Q            quit to the main menu",
   };
@@ -189,6 +191,12 @@ Reply Interpreter::execute(std::string_view line) {
   if (u == "RF") return refresh_now();
   if (u == "?R") return refresh_status();
   if (u == "LOG" || u.rfind("LOG ", 0) == 0) return log_command(station_, s.substr(3));
+  if (u == "?C") return control();
+  if (u == "STANDBY ON" || u == "STANDBY OFF") {  // before S: not a string for the radio
+    const tracker::OpResult done = ops().standby(u == "STANDBY ON");
+    if (!done.ok()) return error("STANDBY: " + *done.refusal);
+    return Reply{{done.note}, true, false};
+  }
   if (u.rfind("AZ", 0) == 0) return az_el(s);
   if (u.rfind("MU", 0) == 0 || u.rfind("MD", 0) == 0) return mode(u.substr(0, 2), s.substr(2));
   if (u.rfind("FU", 0) == 0 || u.rfind("FD", 0) == 0) return frequency(u.substr(0, 2), s.substr(2));
@@ -200,6 +208,14 @@ Reply Interpreter::execute(std::string_view line) {
   std::string shown(s.substr(0, 20));
   if (s.size() > 20) shown += "...";
   return error("unknown command '" + shown + "': expected AZxxx ELxxx, MUxxx, MDxxx, FUxxx, FDxxx, Sxxx, ?A, ? or Q");
+}
+
+// ?C: who holds the antenna and the radio (tracker/control.h), one line.
+Reply Interpreter::control() {
+  const tracker::Control& c = station_.control();
+  return Reply{{"CONTROL ANTENNA " + c.holder(tracker::Resource::antenna).label + " RADIO " +
+                c.holder(tracker::Resource::radio).label},
+               true, false};
 }
 
 // RF / ?R: trakbox's own commands (the manual's set has no element refresh), answered with one line.
@@ -222,8 +238,10 @@ Reply Interpreter::az_el(std::string_view line) {
   if (!p.args) return error("AZ/EL: " + p.error);
   // A host program pointing the antenna takes control, as the operator pressing E would: it has no
   // other way to switch rotor control on. The limits still hold (go_to clamps).
-  const tracker::OpResult done = ops().go_to(p.args->az, p.args->el);
-  if (!done.ok()) return error("AZ/EL: " + *done.refusal);
+  const std::string command(text::trim(line, text::kWhitespace));
+  const tracker::OpResult done = ops(!unconfirmed_.empty() && unconfirmed_ == command).go_to(p.args->az, p.args->el);
+  unconfirmed_ = done.confirm ? command : std::string();
+  if (!done.ok()) return error("AZ/EL: " + *done.refusal + (done.confirm ? " (send it again to confirm)" : ""));
   Reply r;
   const rotator::AzEl asked{p.args->az, p.args->el};
   const rotator::AzEl got = *done.commanded;

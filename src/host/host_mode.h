@@ -83,10 +83,17 @@ class Interpreter {
   Reply antenna();
   Reply refresh_now();
   Reply refresh_status();
+  Reply control();
   Reply radio_outcome(std::string_view cmd);
 
   tracker::StationLoop& station_;
-  tracker::StationOps ops() const { return tracker::StationOps(station_); }
+  // Host mode acts as the operator "host" (tracker/control.h). A move refused because an outside
+  // client or a reservation holds the antenna is done when the same command comes again at once:
+  // the second command is the confirmation.
+  std::string unconfirmed_;
+  tracker::StationOps ops(bool confirmed = false) const {
+    return tracker::StationOps(station_, {tracker::HolderKind::host, "host"}, confirmed);
+  }
 };
 
 }  // namespace tb::host

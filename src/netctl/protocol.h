@@ -80,6 +80,10 @@ class LineHandler {
   virtual Reply handle(std::string_view line) = 0;
   // A line longer than the server's max_line (discarded up to its line end).
   virtual Reply overlong() const = 0;
+  // Who sends the line handle() gets next ("127.0.0.1:51234"), and a client that has gone: what it
+  // held of the station is handed back (tracker/control.h).
+  virtual void client_line(const std::string& peer) { (void)peer; }
+  virtual void client_left(const std::string& peer) { (void)peer; }
   // Sent to each client as it connects (empty: nothing).
   virtual std::string greeting() const { return {}; }
   // Sent to a client refused at accept, in the protocol's words, for the reason given (empty: just

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "radio/doppler.h"
+#include "tracker/operations.h"
 
 namespace tb::netctl {
 
@@ -71,7 +72,6 @@ std::optional<radio::Hz> parse_hz(std::string_view s) {
 }
 }  // namespace
 
-RigctlProtocol::RigctlProtocol(tracker::StationLoop& station) : station_(station) {}
 
 const std::vector<LineProtocol::Command>& RigctlProtocol::commands() const {
   static const std::vector<Command> table = {
@@ -131,17 +131,27 @@ Outcome RigctlProtocol::execute(int id, const std::vector<std::string>& args) {
   }
 }
 
-bool RigctlProtocol::tracker_tunes(radio::Link link) const {
-  if (station_.tracker().mode() == tracker::Mode::off) return false;
-  const radio::SatelliteRadio& sat = station_.tuner().satellite();
-  const radio::RadioConfig& cfg = station_.tuner().config();
-  if (link == radio::Link::downlink) return sat.has_downlink() && cfg.downlink_correction != radio::DownlinkCorrection::off;
-  return sat.has_uplink() && cfg.uplink_correction;
+RigctlProtocol::RigctlProtocol(tracker::StationLoop& station, tracker::HolderKind kind)
+    : station_(station), kind_(kind) {}
+
+std::string RigctlProtocol::label(const std::string& peer) const {
+  return std::string(tracker::kind_name(kind_)) + " " + peer;
 }
 
-Error RigctlProtocol::cannot_set(radio::Link link) const {
-  if (tracker_tunes(link)) return Error::rejected;
+void RigctlProtocol::client_line(const std::string& peer) {
+  peer_ = peer;
+  station_.control().heard(label(peer), station_.now());
+}
+
+void RigctlProtocol::client_left(const std::string& peer) {
+  station_.apply(station_.control().left(label(peer), station_.now()));
+}
+
+Error RigctlProtocol::cannot_set() {
   if (station_.radio().status().fault) return Error::io;
+  // The client takes the radio: trakbox's Doppler pauses until it disconnects or falls silent
+  // (--handback); standby or another client's --exclusive hold refuses it.
+  if (!tracker::StationOps(station_, {kind_, label(peer_)}).take_radio().ok()) return Error::rejected;
   return Error::none;
 }
 
@@ -149,7 +159,7 @@ Outcome RigctlProtocol::set_freq(radio::Link link, const std::vector<std::string
   if (args.size() != 1) return Outcome::fail(Error::invalid);
   const auto hz = parse_hz(args[0]);
   if (!hz) return Outcome::fail(Error::invalid);
-  if (const Error e = cannot_set(link); e != Error::none) return Outcome::fail(e);
+  if (const Error e = cannot_set(); e != Error::none) return Outcome::fail(e);
   station_.radio().set_frequency(link, radio::quantise(static_cast<double>(*hz), radio::kTuningStepHz));
   return {};
 }
@@ -169,7 +179,7 @@ Outcome RigctlProtocol::set_mode(radio::Link link, const std::vector<std::string
   const auto mode = parse_hamlib_mode(args[0]);
   const auto passband = parse_integer(args[1]);
   if (!mode || !passband || *passband < -1) return Outcome::fail(Error::invalid);
-  if (const Error e = cannot_set(link); e != Error::none) return Outcome::fail(e);
+  if (const Error e = cannot_set(); e != Error::none) return Outcome::fail(e);
   station_.radio().set_mode(link, *mode);
   return {};
 }

@@ -17,9 +17,9 @@
 //  * frequencies 10 kHz .. 100 GHz (integer or decimal Hz), else RPRT -1; rounded to trakbox's
 //    10 Hz tuning step. Modes FM, USB, LSB, CW ("M ?" lists them); others RPRT -1. The passband
 //    is accepted and not applied: trakbox does not set filters; m reads passband 0.
-//  * while trakbox's tracker tunes a link (a satellite followed whose entry has that frequency and
-//    whose correction is on) sets on that link are refused, RPRT -9: two Doppler sources fighting
-//    over one VFO is worse than an explicit refusal.
+//  * a set takes the radio (tracker/control.h, docs/sharing.md): trakbox's Doppler pauses while the
+//    client holds it, until it disconnects or is silent --handback seconds; then tracking tunes
+//    again. Standby, or another client holding under --exclusive, refuses sets, RPRT -9.
 //  * gets answer what the radio last accepted; a frequency never tuned reads 0 (Hamlib's client
 //    gives a command up when its frequency read fails), a mode never set RPRT -6.
 //  * a radio in fault: sets RPRT -6 and nothing is queued.
@@ -36,7 +36,10 @@ namespace tb::netctl {
 
 class RigctlProtocol final : public LineProtocol {
  public:
-  explicit RigctlProtocol(tracker::StationLoop& station);
+  explicit RigctlProtocol(tracker::StationLoop& station,
+                          tracker::HolderKind kind = tracker::HolderKind::rigctld);
+  void client_line(const std::string& peer) override;
+  void client_left(const std::string& peer) override;
 
   static constexpr radio::Hz kMinHz = 10'000;
   static constexpr radio::Hz kMaxHz = 100'000'000'000;
@@ -59,10 +62,12 @@ class RigctlProtocol final : public LineProtocol {
   Outcome dump_state();
   Outcome dump_caps();
   // Why a link cannot be set now, if it cannot.
-  Error cannot_set(radio::Link link) const;
-  bool tracker_tunes(radio::Link link) const;
+  Error cannot_set();
+  std::string label(const std::string& peer) const;
 
   tracker::StationLoop& station_;
+  tracker::HolderKind kind_;
+  std::string peer_;  // the client whose line is being handled
   radio::Link current_ = radio::Link::downlink;
   std::string current_name_ = "VFOA";
   bool split_ = false;

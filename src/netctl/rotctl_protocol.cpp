@@ -20,7 +20,23 @@ std::string six(double v) {
 }
 }  // namespace
 
-RotctlProtocol::RotctlProtocol(tracker::StationLoop& station) : station_(station) {}
+RotctlProtocol::RotctlProtocol(tracker::StationLoop& station, tracker::HolderKind kind)
+    : station_(station), kind_(kind) {}
+
+std::string RotctlProtocol::label(const std::string& peer) const {
+  return std::string(tracker::kind_name(kind_)) + " " + peer;
+}
+
+void RotctlProtocol::client_line(const std::string& peer) {
+  peer_ = peer;
+  station_.control().heard(label(peer), station_.now());
+}
+
+void RotctlProtocol::client_left(const std::string& peer) {
+  station_.apply(station_.control().left(label(peer), station_.now()));
+}
+
+tracker::StationOps RotctlProtocol::ops() { return tracker::StationOps(station_, {kind_, label(peer_)}); }
 
 const std::vector<LineProtocol::Command>& RotctlProtocol::commands() const {
   static const std::vector<Command> table = {
@@ -72,6 +88,11 @@ Outcome RotctlProtocol::execute(int id, const std::vector<std::string>& args) {
 }
 
 Error RotctlProtocol::cannot_move() {
+  // The client takes the antenna first (its tracking suspended), unless standby or another
+  // client's --exclusive hold refuses it: then nothing changes, rotor control included.
+  tracker::Control::Answer a = station_.control().request(tracker::Resource::antenna, {kind_, label(peer_)}, station_.now());
+  station_.apply(a.changes);
+  if (!a.granted) return Error::rejected;
   if (!station_.rotor_control()) tracker::StationOps(station_).rotor_control(true);
   if (!station_.rotator().status().link.ok()) return Error::io;
   return Error::none;
@@ -86,7 +107,8 @@ Outcome RotctlProtocol::set_pos(const std::vector<std::string>& args) {
   // The client's frame, as far as this azimuth tells it (0..180 is the same in both).
   if (*az < 0.0) az_frame_lo_ = -180.0;
   if (*az > 180.0) az_frame_lo_ = 0.0;
-  if (!tracker::StationOps(station_).go_to(rotator::wrap360(*az), *el).ok()) return Outcome::fail(Error::invalid);
+  const tracker::OpResult r = ops().go_to(rotator::wrap360(*az), *el);
+  if (!r.ok()) return Outcome::fail(Error::rejected);  // held: standby, --exclusive
   return {};
 }
 
@@ -97,13 +119,13 @@ Outcome RotctlProtocol::get_pos() {
 }
 
 Outcome RotctlProtocol::stop() {
-  tracker::StationOps(station_).stop();
+  if (!ops().stop().ok()) return Outcome::fail(Error::rejected);  // another client holds exclusively
   return {};
 }
 
 Outcome RotctlProtocol::park() {
   if (const Error e = cannot_move(); e != Error::none) return Outcome::fail(e);
-  if (!tracker::StationOps(station_).park().ok()) return Outcome::fail(Error::rejected);  // parking is off
+  if (!ops().park().ok()) return Outcome::fail(Error::rejected);  // parking is off, or held
   return {};
 }
 
@@ -123,8 +145,8 @@ Outcome RotctlProtocol::move(const std::vector<std::string>& args) {
     default: return Outcome::fail(Error::invalid);
   }
   if (const Error e = cannot_move(); e != Error::none) return Outcome::fail(e);
-  // trakbox's motors have one speed: the axis runs at the rotator's rate until S.
-  station_.tracker().stop();
+  // trakbox's motors have one speed: the axis runs at the rotator's rate until S. The client holds
+  // the antenna (its tracking suspended), as a P would.
   station_.rotator().manual(axis, drive);
   return {};
 }

@@ -20,6 +20,9 @@
 //    negative azimuth (Gpredict set to -180..180) in (-180, 180], after one above 180 (a 0..360
 //    client) and before any P in [0, 360). A client that compares p with what it sent (Gpredict
 //    re-sends P whenever they differ by more than its threshold) then sees the antenna arrive.
+//  * each client is a holder of the antenna (tracker/control.h, docs/sharing.md): its P, S, K or M
+//    suspends trakbox's own tracking until it disconnects or is silent --handback seconds; standby
+//    or another client holding under --exclusive refuses them, RPRT -9, and nothing changes;
 //  * with rotor control off (the E key) P, K and M are refused (RPRT -9) and nothing changes;
 //    S always works. K with parking disabled: RPRT -9. A rotator link in fault: P, K, M and p
 //    answer RPRT -6.
@@ -29,13 +32,17 @@
 #include <vector>
 
 #include "netctl/protocol.h"
+#include "tracker/operations.h"
 #include "tracker/station_loop.h"
 
 namespace tb::netctl {
 
 class RotctlProtocol final : public LineProtocol {
  public:
-  explicit RotctlProtocol(tracker::StationLoop& station);
+  explicit RotctlProtocol(tracker::StationLoop& station,
+                          tracker::HolderKind kind = tracker::HolderKind::rotctld);
+  void client_line(const std::string& peer) override;
+  void client_left(const std::string& peer) override;
 
   // The protocol's coordinate range (what \dump_state advertises and P accepts).
   static constexpr double kMinAz = -180.0;
@@ -65,7 +72,12 @@ class RotctlProtocol final : public LineProtocol {
   // and Satrak; then io when the rotator link is in fault.
   Error cannot_move();
 
+  tracker::StationOps ops();  // as the client sending the current line
+  std::string label(const std::string& peer) const;
+
   tracker::StationLoop& station_;
+  tracker::HolderKind kind_;
+  std::string peer_;          // the client whose line is being handled
   double az_frame_lo_ = 0.0;  // set by the azimuths P receives
 };
 

@@ -97,6 +97,7 @@ class Session : public std::enable_shared_from_this<Session> {
     socket_.close(ec);
     core_->sessions.erase(this);
     spdlog::info("{}: client {} closed ({})", core_->options.name, peer_, why);
+    if (core_->protocol && authenticated_) core_->protocol->client_left(peer_);
   }
 
   // A handler of the client's input: an exception ends that client, never the station (issue 38).
@@ -295,6 +296,7 @@ class Session : public std::enable_shared_from_this<Session> {
   void handle_line() {
     if (!core_->protocol) return;
     if (gate_line()) return;
+    core_->protocol->client_line(peer_);
     const Reply r = core_->protocol->handle(line_);
     if (spdlog::should_log(spdlog::level::debug))  // --log-level debug: what a client asked, what it got
       spdlog::debug("{}: client {}: '{}' -> '{}'", core_->options.name, peer_, one_line(line_.substr(0, 200)),

@@ -152,6 +152,7 @@ std::string Unit::dispatch(const Command& c) {
     if (c.word != e.word) continue;
     if ((c.kind == Kind::query && !e.query) || (c.kind == Kind::request && !e.request)) break;
     save_failed_ = false;
+    station_.control().heard("satrak", station_.now());  // a Satrak client that speaks keeps its hold
     Reply reply = (this->*e.fn)(c);
     // A setting that could not be stored is not acknowledged: it holds until the next start only.
     if (save_failed_ && reply == reply_ok(c.head())) return reply_error(c.head(), Error::internal);
@@ -169,6 +170,9 @@ void Unit::take_control() {
 
 void Unit::take_antenna() {
   if (station_.tracker().mode() != tracker::Mode::off) station_.tracker().stop();
+  // The Satrak client holds the antenna (tracker/control.h): status, the page and events say so.
+  station_.apply(station_.control().request(tracker::Resource::antenna, {tracker::HolderKind::satrak, "satrak"},
+                                            station_.now()).changes);
 }
 
 void Unit::command(RotatorPosition p, rotator::Controller::Approach how) {

@@ -103,6 +103,7 @@ void Unit::track(orbit::UtcTime now) {
     return;
   }
   // The station keeps the radio on this satellite and names it on the status line.
+  station_.control().heard("satrak", station_.now());  // its TRACK is the client's hold going on
   station_.remote_follow(tracker::StationLoop::RemoteFollow{"Satrak", elements_->label(), elements_->catalog_number, *o});
   const orbit::Pass* p = pass_at(t);
   if (o->look.el_deg >= s_.el_threshold_deg) {

@@ -294,6 +294,12 @@ json to_json(const Model& m) {
               {"position_from_gps", m.gps.position_from_gps},
               {"position_time_us", m.gps.position_time ? json(m.gps.position_time->time_since_epoch().count()) : json()}};
   j["udp_events"] = m.udp_events;
+  json res = json::array();
+  for (const Reservation& r : m.sharing.reservations)
+    res.push_back({{"id", r.id}, {"start_unix", r.start_unix}, {"end_unix", r.end_unix}, {"note", r.note}});
+  j["sharing"] = {{"handback_s", m.sharing.handback_s}, {"exclusive", m.sharing.exclusive},
+                  {"standby", m.sharing.standby}, {"reservations", res},
+                  {"satnogs_station", m.sharing.satnogs_station}, {"satnogs_url", m.sharing.satnogs_url}};
   return j;
 }
 
@@ -474,6 +480,35 @@ station::GpsSettings gps_from(const json& g) {
   return s;
 }
 
+Sharing sharing_from(const json& j) {
+  if (!j.is_object()) bad("sharing", "expected an object");
+  Sharing s;
+  s.handback_s = static_cast<int>(integer(j, "sharing", "handback_s", 0, 86400));
+  s.exclusive = text(j, "sharing", "exclusive", 16);
+  if (s.exclusive != "" && s.exclusive != "rotctld" && s.exclusive != "rigctld" && s.exclusive != "satrak")
+    bad("sharing.exclusive", "expected rotctld, rigctld, satrak or \"\"; found '" + s.exclusive + "'");
+  s.standby = boolean(j, "sharing", "standby");
+  if (j.contains("satnogs_station"))
+    s.satnogs_station = static_cast<int>(integer(j, "sharing", "satnogs_station", 0, 1000000000));
+  if (j.contains("satnogs_url")) s.satnogs_url = text(j, "sharing", "satnogs_url", 512);
+  if (j.contains("reservations")) {
+    const json& r = j["reservations"];
+    if (!r.is_array() || r.size() > kMaxReservations)
+      bad("sharing.reservations", "expected a list of at most " + std::to_string(kMaxReservations));
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      const std::string w = "sharing.reservations[" + std::to_string(i) + "]";
+      Reservation x;
+      x.id = text(r[i], w, "id", 32);
+      x.start_unix = integer(r[i], w, "start_unix", 0, 1LL << 40);
+      x.end_unix = integer(r[i], w, "end_unix", 0, 1LL << 40);
+      if (x.end_unix <= x.start_unix) bad(w + ".end_unix", "expected after start_unix");
+      x.note = text(r[i], w, "note", 200);
+      s.reservations.push_back(std::move(x));
+    }
+  }
+  return s;
+}
+
 std::vector<std::string> udp_events_from(const json& u) {
   if (!u.is_array()) bad("udp_events", "expected a list of HOST:PORT");
   if (u.size() > kMaxUdpEvents) bad("udp_events", "more than " + std::to_string(kMaxUdpEvents) + " destinations");
@@ -525,6 +560,8 @@ Model model_from_json(const json& j) {
   if (j.contains("gps")) m.gps = gps_from(j["gps"]);
   // Absent in state files written before --udp-events was stored.
   if (j.contains("udp_events")) m.udp_events = udp_events_from(j["udp_events"]);
+  // Absent in state files written before the station was shared (issue 44).
+  if (j.contains("sharing")) m.sharing = sharing_from(j["sharing"]);
   return m;
 }
 

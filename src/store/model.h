@@ -5,6 +5,7 @@
 #include <array>
 #include <chrono>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,27 @@ struct TrackingChoice {
   bool operator==(const TrackingChoice&) const = default;
 };
 
+// Sharing the station (issue 44, docs/sharing.md): how long an outside client's silence ends its
+// hold (--handback, 0: never by silence), the kind of client that holds exclusively (--exclusive:
+// "rotctld", "rigctld", "satrak" or "" for none), standby (nothing moves by itself).
+struct Reservation {  // the operator's own (`trakbox reserve`, the web): a window trakbox's tracking yields to
+  std::string id;
+  std::int64_t start_unix = 0, end_unix = 0;
+  std::string note;
+  bool operator==(const Reservation&) const = default;
+};
+inline constexpr std::size_t kMaxReservations = 64;
+
+struct Sharing {
+  int handback_s = 30;
+  std::string exclusive;
+  bool standby = false;
+  std::vector<Reservation> reservations;  // start order
+  int satnogs_station = 0;                 // --satnogs-station (0: none)
+  std::string satnogs_url;                 // --satnogs-url ("": the public Network)
+  bool operator==(const Sharing&) const = default;
+};
+
 struct Model {
   station::StationConfig station;
   rotator::RotatorConfig rotator;
@@ -64,6 +86,7 @@ struct Model {
   // --udp-events as last given: "HOST:PORT" or "[IPV6]:PORT" each (util/host_port.h), at most
   // kMaxUdpEvents; --udp-events none empties it.
   std::vector<std::string> udp_events;
+  Sharing sharing;
 };
 inline constexpr std::size_t kMaxUdpEvents = 16;
 

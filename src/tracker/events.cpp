@@ -10,7 +10,9 @@
 namespace tb::tracker {
 
 const std::vector<std::string>& event_kinds() {
-  static const std::vector<std::string> kinds{"aos", "los", "elements", "link-lost", "link-back", "save-failed"};
+  static const std::vector<std::string> kinds{"aos",       "los",         "elements",
+                                                "link-lost", "link-back",   "save-failed",
+                                                "control"};
   return kinds;
 }
 
@@ -33,6 +35,18 @@ nlohmann::json to_json(const Event& e) {
     j["los_az_deg"] = e.pass->los_az_deg;
   }
   if (!e.detail.empty()) j["detail"] = e.detail;
+  if (e.control) {
+    const auto holder = [](const Holder& h) {
+      return nlohmann::json{{"kind", kind_name(h.kind)},
+                            {"label", h.label},
+                            {"since", orbit::format_iso8601(h.since, 0)},
+                            {"until", h.until ? nlohmann::json(orbit::format_iso8601(*h.until, 0)) : nlohmann::json()}};
+    };
+    j["resource"] = resource_name(e.control->resource);
+    j["from"] = holder(e.control->from);
+    j["to"] = holder(e.control->to);
+    j["why"] = e.control->why;
+  }
   return j;
 }
 
@@ -55,6 +69,12 @@ std::vector<std::pair<std::string, std::string>> event_environment(const Event& 
     env.emplace_back("TRAKBOX_MAX_EL_DEG", buf);
   }
   if (!e.detail.empty()) env.emplace_back("TRAKBOX_DETAIL", e.detail);
+  if (e.control) {
+    env.emplace_back("TRAKBOX_RESOURCE", std::string(resource_name(e.control->resource)));
+    env.emplace_back("TRAKBOX_HOLDER", std::string(kind_name(e.control->to.kind)));
+    env.emplace_back("TRAKBOX_HOLDER_LABEL", e.control->to.label);
+    env.emplace_back("TRAKBOX_PREVIOUS_HOLDER", std::string(kind_name(e.control->from.kind)));
+  }
   env.emplace_back("TRAKBOX_EVENT_JSON", to_json(e).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
   return env;
 }

@@ -18,6 +18,7 @@
 
 #include "orbit/passes.h"
 #include "orbit/time.h"
+#include "tracker/control.h"
 
 namespace tb::store {
 struct Model;
@@ -28,7 +29,7 @@ namespace tb::tracker {
 class Tracker;
 
 struct Event {
-  std::string kind;  // aos, los, elements, link-lost, link-back, save-failed
+  std::string kind;  // aos, los, elements, link-lost, link-back, save-failed, control
   orbit::UtcTime time{};
   // AOS and LOS: the satellite, its pass and its frequencies (RF at the satellite, 0: none).
   std::string satellite;
@@ -38,6 +39,8 @@ struct Event {
   long long downlink_hz = 0, uplink_hz = 0;
   // The rest: which link (rotator, radio), what happened.
   std::string detail;
+  // control: who held the antenna or the radio, who holds it now, and why (tracker/control.h).
+  std::optional<Change> control;
 };
 
 // The kinds, in the order the documentation lists them.

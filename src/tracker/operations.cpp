@@ -32,7 +32,21 @@ std::string number(double v) { return text::exact_number(v); }
 
 }  // namespace
 
-StationOps::StationOps(StationLoop& station) : station_(station), model_(station.model()) {}
+StationOps::StationOps(StationLoop& station, Requester who, bool confirmed)
+    : station_(station), model_(station.model()), who_(std::move(who)), confirmed_(confirmed) {}
+
+std::optional<OpResult> StationOps::ask(Resource r, bool to_tracking) {
+  Control::Answer a = station_.control().request(r, who_, station_.now(), confirmed_, to_tracking);
+  station_.apply(a.changes);
+  if (a.granted) return std::nullopt;
+  if (a.confirm) {
+    OpResult o = OpResult::refuse(a.confirm->label + " holds the " + std::string(resource_name(r)) +
+                                  ": confirm to take it back");
+    o.confirm = a.confirm;
+    return o;
+  }
+  return OpResult::refuse(a.refusal.value_or("the " + std::string(resource_name(r)) + " is held"));
+}
 
 std::optional<int> StationOps::find_satellite(std::string_view name) const {
   const auto& db = model_.db;
@@ -48,6 +62,8 @@ OpResult StationOps::track(int db_index) {
   auto& db = model_.db;
   if (db_index < 0 || db_index >= static_cast<int>(db.satellites.size()))
     return OpResult::refuse("no satellite " + std::to_string(db_index) + " in the database");
+  if (auto no = ask(Resource::antenna, true)) return *no;
+  if (auto no = ask(Resource::radio, true)) return *no;
   OpResult r;
   if (const int n = db.list_number(db_index); n > 0 && db.marked != n - 1) {
     db.marked = n - 1;
@@ -69,6 +85,8 @@ OpResult StationOps::track_multi(bool priority) {
   auto& db = model_.db;
   if (db.selected.size() < static_cast<std::size_t>(store::kMinMultiTrack))
     return OpResult::refuse("multiple tracking needs two or more satellites in the tracking list (menu 3-2)");
+  if (auto no = ask(Resource::antenna, true)) return *no;
+  if (auto no = ask(Resource::radio, true)) return *no;
   OpResult r;
   if (model_.priority_mode != priority) {
     model_.priority_mode = priority;
@@ -95,34 +113,46 @@ OpResult StationOps::track_list(const std::vector<std::string>& names, bool prio
       return OpResult::refuse("satellite " + quoted(name) + " is named twice");
     chosen.push_back(*i);
   }
-  // Validated: the chosen ones first, the rest of the list after them, at most 15.
+  if (auto no = ask(Resource::antenna, true)) return *no;
+  if (auto no = ask(Resource::radio, true)) return *no;
+  // Validated: the chosen ones first, the rest of the list after them, at most 15; those that no
+  // longer fit are named in the note (issue 46: never dropped without a word).
   auto& db = model_.db;
   std::vector<int> list = chosen;
-  for (const int i : db.selected)
-    if (std::find(chosen.begin(), chosen.end(), i) == chosen.end() &&
-        list.size() < static_cast<std::size_t>(store::kMaxSelected))
-      list.push_back(i);
+  std::string dropped;
+  for (const int i : db.selected) {
+    if (std::find(chosen.begin(), chosen.end(), i) != chosen.end()) continue;
+    if (list.size() < static_cast<std::size_t>(store::kMaxSelected)) list.push_back(i);
+    else dropped += (dropped.empty() ? "" : ", ") + db.satellites[static_cast<std::size_t>(i)].name();
+  }
   db.selected = std::move(list);
   db.multi_count = static_cast<int>(chosen.size());
   db.marked = 0;
   db.normalise();
   OpResult r = track_multi(priority);
   r.model_changed = true;
+  if (!dropped.empty())
+    r.note += "; the tracking list holds " + std::to_string(store::kMaxSelected) + ": " + dropped + " left it";
   return r;
 }
 
 OpResult StationOps::stop() {
-  station_.stop_antenna();
+  // Stop always works, in standby too: nothing moves.
+  if (!station_.control().standby())
+    if (auto no = ask(Resource::antenna)) return *no;
+  station_.rotator().stop();
+  station_.antenna_changed();
   OpResult r;
-  r.note = "tracking stopped, antenna stopped";
+  r.note = "antenna stopped";
   return r;
 }
 
 OpResult StationOps::park() {
   if (!station_.rotator().config().parking_enabled)
     return OpResult::refuse("parking is off (menu 6-2 sets the parking position)");
+  if (auto no = ask(Resource::antenna)) return *no;
   OpResult r = rotor_control(true);
-  station_.tracker().stop();
+  if (!outside()) station_.tracker().stop();  // an outside client's park suspends tracking, as a move does
   station_.rotator().park();
   station_.antenna_changed();
   r.note = "parking";
@@ -143,10 +173,12 @@ OpResult StationOps::go_to(double az_deg, double el_deg) {
   const double top = station_.rotator().config().el_top_deg();  // 90, or 180 for a flip rotator
   if (!std::isfinite(el_deg) || el_deg < 0.0 || el_deg > top)
     return OpResult::refuse("elevation " + number(el_deg) + " out of range: expected 0 to " + number(top));
+  if (auto no = ask(Resource::antenna)) return *no;
   // Pointing takes control, as the operator pressing E would; the limits still hold (point clamps).
+  // The operator's goto ends tracking; an outside client's suspends it until its hold ends.
   OpResult r = rotor_control(true);
   const rotator::AzEl asked{rotator::wrap360(az_deg), el_deg};
-  const rotator::AzEl got = station_.point(asked);
+  const rotator::AzEl got = outside() ? station_.point_held(asked) : station_.point(asked);
   r.commanded = got;
   r.note = "pointing at " + az_el_text(got.az, got.el);
   if (rotator::azimuth_distance(asked.az, got.az) > 0.05 || std::abs(asked.el - got.el) > 0.05)
@@ -158,6 +190,68 @@ OpResult StationOps::doppler(bool on) {
   station_.set_doppler(on);
   OpResult r;
   r.note = std::string("Doppler ") + (on ? "on" : "off");
+  return r;
+}
+
+OpResult StationOps::take_radio() {
+  if (auto no = ask(Resource::radio)) return *no;
+  return {};
+}
+
+OpResult StationOps::standby(bool on) {
+  if (is_outside(who_.kind)) return OpResult::refuse("standby is the operator's");
+  OpResult r;
+  if (model_.sharing.standby != on) r.model_changed = true;
+  model_.sharing.standby = on;
+  if (r.model_changed) station_.save_settings();  // on disk before it is acknowledged
+  if (on) {
+    station_.apply(station_.control().set_standby(true, station_.now()));
+    if (station_.rotator().config().parking_enabled) {
+      rotor_control(true);
+      station_.rotator().park();
+    } else {
+      station_.rotator().stop();
+    }
+    station_.antenna_changed();
+    r.note = "standby on: nothing moves by itself";
+  } else {
+    station_.apply(station_.control().set_standby(false, station_.now()));
+    r.note = "standby off";
+  }
+  return r;
+}
+
+OpResult StationOps::reserve(orbit::UtcTime start, orbit::UtcTime end, std::string note) {
+  if (end <= start) return OpResult::refuse("a reservation ends after it starts");
+  const orbit::UtcTime now = station_.now();
+  if (end <= now) return OpResult::refuse("that reservation is over already (" + orbit::format_iso8601(end) + ")");
+  if (note.size() > 200) return OpResult::refuse("the note of a reservation takes 200 bytes at most");
+  auto& list = model_.sharing.reservations;
+  const auto unix_s = [](orbit::UtcTime t) {
+    return static_cast<std::int64_t>(std::chrono::duration_cast<std::chrono::seconds>(t.time_since_epoch()).count());
+  };
+  std::vector<store::Reservation> kept;
+  for (const auto& r : list)
+    if (r.end_unix > unix_s(now)) kept.push_back(r);
+  if (kept.size() >= store::kMaxReservations)
+    return OpResult::refuse("the station keeps " + std::to_string(store::kMaxReservations) + " reservations at most");
+  store::Reservation r{"op-" + std::to_string(unix_s(start)), unix_s(start), unix_s(end), std::move(note)};
+  kept.push_back(r);
+  std::sort(kept.begin(), kept.end(), [](const auto& a, const auto& b) { return a.start_unix < b.start_unix; });
+  list = std::move(kept);
+  station_.sharing_changed();
+  station_.save_settings();
+  OpResult o;
+  o.model_changed = true;
+  o.note = "reserved " + orbit::format_iso8601(start) + " to " + orbit::format_iso8601(end) + " (" + r.id + ")";
+  return o;
+}
+
+OpResult StationOps::take_back() {
+  if (auto no = ask(Resource::antenna, true)) return *no;
+  if (auto no = ask(Resource::radio, true)) return *no;
+  OpResult r;
+  r.note = "trakbox's tracking holds the antenna and the radio";
   return r;
 }
 

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "rotator/controller.h"
+#include "tracker/control.h"
 
 namespace tb::store {
 struct Model;
@@ -29,6 +30,8 @@ struct OpResult {
   std::string note;                    // what happened, when it is worth saying ("limited to ...")
   bool model_changed = false;          // the stored state changed: the caller saves
   std::optional<rotator::AzEl> commanded;  // go_to: where the antenna was sent (inside the limits)
+  // Refused until the operator confirms: this outside client or reservation holds (tracker/control.h).
+  std::optional<Holder> confirm;
   bool ok() const { return !refusal; }
   static OpResult refuse(std::string why) {
     OpResult r;
@@ -39,7 +42,11 @@ struct OpResult {
 
 class StationOps {
  public:
-  explicit StationOps(StationLoop& station);
+  // `who` asks (tracker/control.h): the menus when not said. An outside client's (rotctld, rigctld,
+  // satrak, pstrotator) move or tune suspends trakbox's tracking of what it holds; the operator's
+  // (menus, web, host) is refused with `confirm` set while an outside client or a reservation's
+  // window holds, unless `confirmed` (the operator said yes); standby refuses every move.
+  explicit StationOps(StationLoop& station, Requester who = Requester::menus(), bool confirmed = false);
 
   // The database index of a satellite by name: exact first (the manual's names are case
   // sensitive), else the one whose name matches ignoring case and surrounding blanks.
@@ -54,7 +61,8 @@ class StationOps {
   // Multiple tracking of these satellites (2 to 5, by name, no repeats): they move to the front of
   // the tracking list in this order, multi_count becomes their number (menus 3-2 and 3-4), then M.
   OpResult track_list(const std::vector<std::string>& names, bool priority);
-  // Tracking stops and the antenna stops where it is.
+  // The antenna stops where it is, held by whoever asked; the Tracker's choice stays and the radio
+  // keeps its Doppler (unless Doppler is off): Stop stops the rotator only.
   OpResult stop();
   // Tracking stops and the antenna goes to its parking position; rotor control is switched on
   // (parking is a movement). Refused when parking is off (menu 6-2).
@@ -68,12 +76,30 @@ class StationOps {
   OpResult go_to(double az_deg, double el_deg);
   // The radio follows the tracked satellite with Doppler (on, the default) or is left alone.
   OpResult doppler(bool on);
+  // An outside client (rigctld) is about to tune the radio: the radio's hold, or why not.
+  OpResult take_radio();
+  // Standby on: parks (parking on) or stops, no automatic tracking, CAT paused, outside clients
+  // refused; off: trakbox's tracking holds again. Stored.
+  OpResult standby(bool on);
+  // The operator takes the antenna and the radio back for trakbox's tracking, which resumes what
+  // was chosen (the confirmation rule applies).
+  OpResult take_back();
+  // The operator's own reservation (`trakbox reserve`, the web): from start to end trakbox's
+  // tracking yields, as to a SatNOGS observation; stored. Refused when it ends before it starts or
+  // is over, or when 64 are kept; those already over are forgotten.
+  OpResult reserve(orbit::UtcTime start, orbit::UtcTime end, std::string note);
   // The element refresh from the stored sources, now (menu 3-5 R, host RF).
   OpResult refresh_elements(std::int64_t now_unix);
 
  private:
+  // The controller's answer for `r`, applied: nothing when granted, else the refusal.
+  std::optional<OpResult> ask(Resource r, bool to_tracking = false);
+  bool outside() const { return is_outside(who_.kind); }
+
   StationLoop& station_;
   store::Model& model_;
+  Requester who_;
+  bool confirmed_ = false;
 };
 
 }  // namespace tb::tracker

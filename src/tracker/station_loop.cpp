@@ -23,10 +23,17 @@ StationLoop::StationLoop(store::Model& model, const station::Clock& clock, Track
       tuner_(model.radio) {
   rotator_->set_control_enabled(model_.rotor_control);
   rotator_->set_error_detection(model_.rotator_error_detection);
+  sharing_changed();
+  if (model_.sharing.standby) control_.set_standby(true, clock_.now());  // stored: it survives a restart
   // The Tracker may outlive this station (a test rebuilds it around the same Tracker): the hook
   // does nothing once this one is gone, and a newer station's hook replaces it.
   tracker_.on_choice([this, alive = std::weak_ptr<int>(alive_)] {
-    if (!alive.expired()) record_choice();
+    if (alive.expired()) return;
+    // A choice of what to track (any front end; StationOps asked the operator to confirm first
+    // when an outside client held): trakbox's tracking drives both again.
+    for (const Resource r : {Resource::antenna, Resource::radio})
+      if (!control_.standby()) apply(control_.request(r, Requester::menus(), clock_.now(), true, true).changes);
+    record_choice();
   });
 }
 
@@ -69,6 +76,19 @@ void StationLoop::reconfigure() {
   rotator_->set_error_detection(model_.rotator_error_detection);
   tuner_.set_config(model_.radio);
   tuned_.reset();  // frequencies may have changed: select the satellite again
+  sharing_changed();
+}
+
+void StationLoop::sharing_changed() {
+  ControlSettings cs;
+  cs.handback_s = model_.sharing.handback_s;
+  cs.exclusive = kind_named(model_.sharing.exclusive);
+  control_.set_settings(cs);
+  std::vector<Window> w = satnogs_windows_;
+  for (const store::Reservation& r : model_.sharing.reservations)
+    w.push_back({"operator", r.id, orbit::UtcTime{std::chrono::seconds(r.start_unix)},
+                 orbit::UtcTime{std::chrono::seconds(r.end_unix)}, "", r.note});
+  control_.set_windows(std::move(w));
 }
 
 bool StationLoop::apply_gps_position() {
@@ -210,6 +230,25 @@ rotator::AzEl StationLoop::point(rotator::AzEl compass) {
   return rotator::AzEl{rotator_->model().compass_from_travel(p.az_travel), p.el};
 }
 
+rotator::AzEl StationLoop::point_held(rotator::AzEl compass) {
+  const rotator::RotatorPosition p = rotator_->set_target(compass, rotator::Controller::Piece::containing);
+  wake();
+  return rotator::AzEl{rotator_->model().compass_from_travel(p.az_travel), p.el};
+}
+
+void StationLoop::apply(const std::vector<Change>& changes) {
+  for (const Change& c : changes) {
+    spdlog::info("control: the {} is held by {} ({}), was {}", resource_name(c.resource), c.to.label, c.why,
+                 c.from.label);
+    if (c.to.kind == HolderKind::tracking) {
+      if (c.resource == Resource::radio) tuned_.reset();  // select the satellite again: sent afresh
+      else planned_.reset();
+      wake();
+    }
+    if (control_changed_) control_changed_(c);
+  }
+}
+
 void StationLoop::stop_antenna() {
   tracker_.stop();
   rotator_->stop();
@@ -251,6 +290,9 @@ const rotator::PassPlan* StationLoop::plan_for(const SatNow& s) {
 
 void StationLoop::tick() {
   const orbit::UtcTime now = clock_.now();
+  apply(control_.tick(now));
+  const bool drive_antenna = control_.tracking_drives(Resource::antenna);
+  const bool drive_radio = control_.tracking_drives(Resource::radio);
   if (tracker_.mode() != Mode::off) remote_follow(std::nullopt);
   if (doppler_ && remote_ && remote_db_ && static_cast<std::size_t>(*remote_db_) < model_.db.satellites.size())
     follow_radio(*remote_db_, remote_->obs);
@@ -258,9 +300,11 @@ void StationLoop::tick() {
     const Decision d = tracker_.tick();
     const SatNow* followed = tracker_.followed();
     const rotator::PassPlan* plan = nullptr;
-    if (followed && (d.antenna == Decision::Antenna::point || d.antenna == Decision::Antenna::preposition))
+    if (drive_antenna && followed &&
+        (d.antenna == Decision::Antenna::point || d.antenna == Decision::Antenna::preposition))
       plan = plan_for(*followed);
-    switch (d.antenna) {
+    // While someone else holds the antenna the decision is kept, not applied (the hold suspends).
+    switch (drive_antenna ? d.antenna : Decision::Antenna::hold) {
       case Decision::Antenna::point:
         if (plan) rotator_->set_target(plan->map(d.az_deg, std::max(0.0, d.el_deg)));
         else rotator_->set_target(rotator::AzEl{d.az_deg, std::max(0.0, d.el_deg)});
@@ -276,7 +320,7 @@ void StationLoop::tick() {
         break;
     }
     // The radio follows the satellite being followed.
-    if (const SatNow* f = tracker_.followed(); f && doppler_) follow_radio(f->db_index, f->obs);
+    if (const SatNow* f = tracker_.followed(); f && doppler_ && drive_radio) follow_radio(f->db_index, f->obs);
   }
   rotator_->tick(now);
 }
@@ -344,6 +388,7 @@ std::string StationLoop::status_line() const {
   if (radio.fault) line += " | RADIO FAULT";
   if (save_failure_) line += " | STATE NOT SAVED";
   if (!notice_.empty()) line += " | " + notice_;
+  if (const std::string held = held_text(control_); !held.empty()) line += " | " + held;
   if (gps_)
     if (const std::string w = gps_->status_word(); !w.empty()) line += " | " + w;
   if (const SatNow* f = tracker_.followed(); f && tracker_.mode() != Mode::off)

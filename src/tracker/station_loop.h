@@ -14,6 +14,7 @@
 #include "radio/driver.h"
 #include "rotator/controller.h"
 #include "rotator/pass_plan.h"
+#include "tracker/control.h"
 #include "tracker/tracker.h"
 
 namespace tb::tracker {
@@ -49,11 +50,46 @@ class StationLoop {
   // of what to track, recorded in model.tracking): the program saves the state here, so a restart
   // does what was asked whichever front end asked it.
   void on_settings_changed(std::function<void()> f) { settings_changed_ = std::move(f); }
+  // Saves now through that hook (standby, a reservation: stored before they are acknowledged).
+  void save_settings() {
+    if (settings_changed_) settings_changed_();
+  }
 
   // Direct antenna control (menus 6-6 and 8, host AZ/EL, Satrak GOTO): tracking stops, the antenna
   // goes where it is told (still inside the limits). Returns the commanded compass position.
   rotator::AzEl point(rotator::AzEl compass);
   void stop_antenna();
+  // The same for whoever holds the antenna (tracker/control.h) without ending the Tracker's choice:
+  // it goes on deciding (and tuning the radio while trakbox's tracking holds that), and drives the
+  // antenna again when the hold ends.
+  rotator::AzEl point_held(rotator::AzEl compass);
+
+  // Who holds the antenna and the radio (issue 44). The station applies the Tracker's decisions to
+  // each only while trakbox's tracking holds it; every change of holder goes through apply().
+  Control& control() { return control_; }
+  const Control& control() const { return control_; }
+  orbit::UtcTime now() const { return clock_.now(); }
+  // Logs each change at info and tells on_control (the program's events: `control`); a radio
+  // handed back to tracking is tuned afresh, an antenna handed back moves at once.
+  void apply(const std::vector<Change>& changes);
+  void on_control(std::function<void(const Change&)> f) { control_changed_ = std::move(f); }
+  // model.sharing (--handback, --exclusive, the operator's reservations) and the SatNOGS jobs into
+  // the controller; reconfigure() does it too.
+  void sharing_changed();
+  void set_satnogs_windows(std::vector<Window> w) {
+    satnogs_windows_ = std::move(w);
+    sharing_changed();
+  }
+  // What the SatNOGS calendar's poller (--satnogs-station) last found, for status.
+  struct SatnogsState {
+    int station = 0;
+    std::string url;
+    std::size_t jobs = 0;
+    std::string last_poll;             // station time, ISO 8601; "" before the first answer
+    std::optional<std::string> error;  // the last poll failed: why (the last good list is kept)
+  };
+  void set_satnogs_state(SatnogsState s) { satnogs_state_ = std::move(s); }
+  const std::optional<SatnogsState>& satnogs_state() const { return satnogs_state_; }
   // Someone moved the antenna through rotator() directly (the Satrak unit's targets and jogs):
   // tick now rather than at the end of the interval being waited out (see on_wake).
   void antenna_changed() { wake(); }
@@ -95,6 +131,7 @@ class StationLoop {
   // How long until a link waiting for the knob to rest moves (tick then); nothing when none waits.
   std::optional<std::chrono::milliseconds> radio_due_in() const;
   Tracker& tracker() { return tracker_; }
+  const Tracker& tracker() const { return tracker_; }
   store::Model& model() { return model_; }
   const store::Model& model() const { return model_; }
 
@@ -156,6 +193,10 @@ class StationLoop {
   std::optional<int> remote_db_;  // remote_'s satellite in the database
   std::function<void()> wake_;
   std::function<void()> settings_changed_;
+  Control control_;
+  std::vector<Window> satnogs_windows_;
+  std::optional<SatnogsState> satnogs_state_;
+  std::function<void(const Change&)> control_changed_;
   std::shared_ptr<int> alive_ = std::make_shared<int>(0);  // the Tracker's hook checks this
   void record_choice();
   void wake() {

@@ -1,4 +1,5 @@
 #include "web/api.h"
+#include "web/control_api.h"
 
 #include <algorithm>
 #include <cmath>
@@ -234,11 +235,14 @@ Response Api::route(const Request& r, const Grant& g) {
     if (res.status == 200 && hooks_.changed) hooks_.changed();
     return res;
   }
-  return post(path, body);
+  return post(path, body, r.peer);
 }
 
-Response Api::post(const std::string& path, const json& b) {
-  tracker::StationOps ops(station_);
+Response Api::post(const std::string& path, const json& b, const std::string& peer) {
+  // The page acts as the operator "web ADDRESS" (tracker/control.h); "confirm":true takes the antenna
+  // from an outside client or a reservation, which is otherwise a 409 naming the holder.
+  const bool confirmed = b.contains("confirm") && b["confirm"].is_boolean() && b["confirm"].get<bool>();
+  tracker::StationOps ops(station_, {tracker::HolderKind::web, "web " + printable(peer, 60)}, confirmed);
   tracker::OpResult done;
   auto boolean = [&b](const char* key) -> std::optional<bool> {
     const auto it = b.find(key);
@@ -288,12 +292,17 @@ Response Api::post(const std::string& path, const json& b) {
     const auto on = boolean("doppler");
     if (!on) return error(400, "radio: expected {\"doppler\":true|false}");
     done = ops.doppler(*on);
+  } else if (path == "/api/v1/standby" || path == "/api/v1/control" || path == "/api/v1/reserve") {
+    if (const auto r = control_post(ops, path, b)) done = *r;
+    else return error(400, path == "/api/v1/standby"   ? "standby: expected {\"on\":true|false}"
+                           : path == "/api/v1/reserve" ? "reserve: expected {\"start\":ISO,\"end\":ISO,\"note\":TEXT}"
+                                                       : "control: expected {\"take_back\":true}");
   } else if (path == "/api/v1/elements/refresh") {
     done = ops.refresh_elements(hooks_.wall_now_unix ? hooks_.wall_now_unix() : 0);
   } else {
     return error(404, "no such endpoint: " + printable(path, 60));
   }
-  if (!done.ok()) return error(409, *done.refusal);
+  if (!done.ok()) return refused(done);
   json reply{{"ok", true}, {"note", done.note}};
   if (done.model_changed && hooks_.save)
     if (const auto why = hooks_.save()) reply["saved"] = false, reply["save_failure"] = *why;
@@ -362,9 +371,13 @@ json Api::sky() {
                       antenna && rotator::azimuth_distance(antenna->az, station_.rotator().config().parking.az) < 2.0 &&
                       std::abs(antenna->el - station_.rotator().config().parking.el) < 2.0;
   j["antenna_state"] = !rs.link.ok() ? "fault" : moving ? "moving" : parked ? "parked" : rs.on_target ? "on target" : "idle";
-  j["target"] = tr.mode() == tracker::Mode::off || d.antenna == tracker::Decision::Antenna::hold
-                    ? json(nullptr)
-                    : az_el(d.az_deg, d.el_deg);
+  // Where the antenna was last sent by whoever holds it (issue 44): the tracker's decision only while
+  // trakbox's tracking drives it, else the rotator's commanded target (a goto, rotctld, Satrak).
+  if (tr.mode() == tracker::Mode::off || !station_.control().tracking_drives(tracker::Resource::antenna))
+    j["target"] = rs.target ? az_el(station_.rotator().model().compass_from_travel(rs.target->az_travel), rs.target->el)
+                            : json(nullptr);
+  else
+    j["target"] = d.antenna == tracker::Decision::Antenna::hold ? json(nullptr) : az_el(d.az_deg, d.el_deg);
   const tracker::SatNow* f = tr.mode() == tracker::Mode::off ? nullptr : tr.followed();
   if (!f || !f->obs.ok()) {
     j["satellite"] = nullptr;

@@ -83,7 +83,7 @@ class Api {
 
  private:
   Response route(const Request& r, const Grant& g);
-  Response post(const std::string& path, const nlohmann::json& body);
+  Response post(const std::string& path, const nlohmann::json& body, const std::string& peer);
   Response satellites();
   Response passes(const std::string& query);
   Response login(const Request& r, std::chrono::steady_clock::time_point now);

@@ -201,7 +201,7 @@ function connect() {
   ws.onmessage = (m) => {
     let j;
     try { j = JSON.parse(m.data); } catch (e) { return; }
-    if (j.type === "state") { drawStatus(j.status); drawSky(j.sky); }
+    if (j.type === "state") { drawStatus(j.status); drawSky(j.sky); drawControl(j.status); }
     else if (j.type === "event") addEvent(j.event, false);
     else if (j.type === "events") { $("events").replaceChildren(); (j.events || []).forEach((e) => addEvent(e, true)); }
   };
@@ -232,6 +232,6 @@ $("btn-rotor").addEventListener("click", () => post("/api/v1/rotor", { control: 
 $("btn-stop").addEventListener("click", () => post("/api/v1/rotor", { action: "stop" }));
 $("btn-park").addEventListener("click", () => post("/api/v1/rotor", { action: "park" }));
 $("btn-doppler").addEventListener("click", () => post("/api/v1/radio", { doppler: !doppler }));
-$("btn-multi").addEventListener("click", () => post("/api/v1/track", { multi: true }));
+$("btn-multi").addEventListener("click", chooseMulti);  // control.js: asks which satellites
 $("btn-refresh").addEventListener("click", () => post("/api/v1/elements/refresh", {}));
 start();

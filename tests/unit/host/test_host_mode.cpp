@@ -221,6 +221,33 @@ TEST_CASE("Commands to antenna or radio stop trakbox's own tracking; queries do 
   s.tracker.track_single(0);
   CHECK(s.cmd("AZ10 EL10").ok);
   CHECK(s.tracker.mode() == tracker::Mode::off);
+  CHECK(s.station->control().holder(tracker::Resource::antenna).kind == tracker::HolderKind::host);
+}
+
+TEST_CASE("AZ/EL while an outside client holds the antenna: refused once, done when sent again (issue 44)") {
+  Station s;
+  s.tracker.track_single(0);
+  s.station->tick();
+  const tracker::Requester gpredict{tracker::HolderKind::rotctld, "rotctld 127.0.0.1:51234"};
+  REQUIRE(tracker::StationOps(*s.station, gpredict).go_to(200.0, 30.0).ok());
+  const auto first = s.cmd("AZ10 EL10");
+  CHECK_FALSE(first.ok);
+  REQUIRE(!first.lines.empty());
+  CHECK(first.lines[0] == "ERROR AZ/EL: rotctld 127.0.0.1:51234 holds the antenna: confirm to take it back "
+                          "(send it again to confirm)");
+  CHECK(s.station->control().holder(tracker::Resource::antenna).kind == tracker::HolderKind::rotctld);
+  CHECK(s.cmd("AZ10 EL10").ok);
+  CHECK(s.station->control().holder(tracker::Resource::antenna).kind == tracker::HolderKind::host);
+  const auto who = s.cmd("?C");
+  REQUIRE(who.lines.size() == 1);
+  CHECK(who.lines[0] == "CONTROL ANTENNA host RADIO trakbox tracking");
+  const auto sb = s.cmd("standby on");
+  CHECK(sb.ok);
+  CHECK(s.station->control().standby());
+  CHECK(s.model.sharing.standby);
+  CHECK_FALSE(s.cmd("AZ20 EL10").ok);  // standby: nothing moves
+  CHECK(s.cmd("STANDBY OFF").ok);
+  CHECK_FALSE(s.station->control().standby());
 }
 
 TEST_CASE("Q, ?, blank lines and unknown commands") {

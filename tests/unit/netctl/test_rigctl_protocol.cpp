@@ -5,6 +5,7 @@
 
 #include "fixture.h"
 #include "netctl/rigctl_protocol.h"
+#include "tracker/operations.h"
 
 using namespace tb;
 using namespace nettest;
@@ -203,7 +204,7 @@ TEST_CASE_FIXTURE(Rig, "rigctl: malformed requests are answered RPRT -1 / -8 / -
   CHECK(st.radio_sim->history() == before);
 }
 
-TEST_CASE("rigctl: a link trakbox's tracker is tuning is refused (RPRT -9), the other is free") {
+TEST_CASE("rigctl: a set takes the radio from trakbox's Doppler (issue 44); standby refuses it (RPRT -9)") {
   store::Model m = shipped_model();
   m.radio.uplink_correction = false;  // trakbox corrects the downlink only
   SimStation st(m);
@@ -213,15 +214,25 @@ TEST_CASE("rigctl: a link trakbox's tracker is tuning is refused (RPRT -9), the 
   st.tracker.track_single(*ao7);
   st.step();
   REQUIRE(st.station->tuner().satellite().has_downlink());
+  CHECK(ask(p, "F 145950000") == "RPRT 0\n");
+  CHECK(st.station->control().holder(tracker::Resource::radio).kind == tracker::HolderKind::rigctld);
+  CHECK(st.station->control().tracking_drives(tracker::Resource::antenna));  // held separately
+  st.step();
+  st.step();
+  CHECK(st.radio_sim->frequency(Link::downlink) == 145950000);  // Doppler paused: the client's stays
+  CHECK(ask(p, "I 432150000") == "RPRT 0\n");
+  CHECK(st.radio_sim->frequency(Link::uplink) == 432150000);
+  // It goes: trakbox tunes again.
+  p.client_left("");
+  st.step();
+  CHECK(st.station->control().tracking_drives(tracker::Resource::radio));
+  CHECK(st.radio_sim->frequency(Link::downlink) != 145950000);
+  // Standby: refused, nothing sent.
+  REQUIRE(tracker::StationOps(*st.station).standby(true).ok());
   const auto before = st.radio_sim->history();
   CHECK(ask(p, "F 145950000") == "RPRT -9\n");
   CHECK(ask(p, "M USB 0") == "RPRT -9\n");
   CHECK(st.radio_sim->history() == before);
-  CHECK(ask(p, "I 432150000") == "RPRT 0\n");  // uplink correction off: the client may tune it
-  CHECK(st.radio_sim->frequency(Link::uplink) == 432150000);
-  st.tracker.stop();
-  CHECK(ask(p, "F 145950000") == "RPRT 0\n");
-  CHECK(st.radio_sim->frequency(Link::downlink) == 145950000);
 }
 
 TEST_CASE_FIXTURE(Rig, "rigctl: a radio in fault refuses sets (RPRT -6) and reads back what it last took") {

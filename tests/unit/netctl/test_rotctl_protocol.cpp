@@ -188,7 +188,7 @@ TEST_CASE("rotctl: elevation up to 180 where the rotator may flip over the top")
   CHECK(ask(p, "\\dump_state").find("max_el=180.000000\n") != std::string::npos);
 }
 
-TEST_CASE("rotctl: P stops trakbox's tracking; S stops everything and always works") {
+TEST_CASE("rotctl: P suspends trakbox's tracking (the client holds the antenna); S stops the rotator and always works") {
   SimStation st(shipped_model());
   RotctlProtocol p(*st.station);
   const auto iss = st.model.db.find("ISS");
@@ -197,7 +197,9 @@ TEST_CASE("rotctl: P stops trakbox's tracking; S stops everything and always wor
   st.step();
   CHECK(st.tracker.mode() == tracker::Mode::single);
   CHECK(ask(p, "P 45 45") == "RPRT 0\n");
-  CHECK(st.tracker.mode() == tracker::Mode::off);
+  CHECK(st.tracker.mode() == tracker::Mode::single);  // suspended, not stopped (issue 44)
+  CHECK(st.station->control().holder(tracker::Resource::antenna).kind == tracker::HolderKind::rotctld);
+  CHECK(st.station->control().tracking_drives(tracker::Resource::radio));
   for (int i = 0; i < 20; ++i) st.step();
   CHECK(st.station->rotator().status().az.motion != rotator::Drive::stop);
 
@@ -211,9 +213,14 @@ TEST_CASE("rotctl: P stops trakbox's tracking; S stops everything and always wor
   const auto after = st.rotator_sim->true_position();
   CHECK(std::abs(after.az_travel - still.az_travel) < 0.01);
 
-  st.tracker.track_single(*iss);
+  st.tracker.track_single(*iss);  // the operator's choice: trakbox's tracking holds again
+  CHECK(st.station->control().tracking_drives(tracker::Resource::antenna));
   CHECK(ask(p, "\\stop") == "RPRT 0\n");
-  CHECK(st.tracker.mode() == tracker::Mode::off);
+  CHECK_FALSE(st.station->control().tracking_drives(tracker::Resource::antenna));
+  // The client goes: tracking drives the antenna again, what was chosen.
+  p.client_left("");
+  CHECK(st.station->control().tracking_drives(tracker::Resource::antenna));
+  CHECK(st.tracker.mode() == tracker::Mode::single);
 }
 
 TEST_CASE("rotctl: with rotor control off (the E key) S changes nothing; P takes control") {
@@ -246,7 +253,8 @@ TEST_CASE("rotctl: K / \\park goes to the parking position, refused when parking
   RotctlProtocol p(*st.station);
   st.tracker.track_single(*st.model.db.find("ISS"));
   CHECK(ask(p, "K") == "RPRT 0\n");
-  CHECK(st.tracker.mode() == tracker::Mode::off);
+  CHECK(st.tracker.mode() == tracker::Mode::single);  // suspended while the client holds (issue 44)
+  CHECK_FALSE(st.station->control().tracking_drives(tracker::Resource::antenna));
   REQUIRE(st.settle());
   CHECK(az_diff(st.truth().az, 90.0) < 1.1);
   CHECK(std::abs(st.truth().el - 10.0) < 0.36);

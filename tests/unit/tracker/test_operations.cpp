@@ -131,7 +131,13 @@ TEST_CASE("StationOps: stop, rotor control and Doppler") {
   Ops f;
   REQUIRE(f.ops().track("ISS").ok());
   REQUIRE(f.ops().stop().ok());
-  CHECK(f.tracker.mode() == tracker::Mode::off);
+  // Stop stops the rotator only (issue 44): the choice stays for the radio's Doppler, and the menus
+  // hold the antenna until the operator chooses what to track again.
+  CHECK(f.tracker.mode() == tracker::Mode::single);
+  CHECK(f.station->control().holder(tracker::Resource::antenna).kind == tracker::HolderKind::menus);
+  CHECK(f.station->control().tracking_drives(tracker::Resource::radio));
+  REQUIRE(f.ops().track("ISS").ok());
+  CHECK(f.station->control().tracking_drives(tracker::Resource::antenna));
 
   CHECK(f.ops().rotor_control(true).ok());
   CHECK(f.model.rotor_control);
@@ -191,4 +197,35 @@ TEST_CASE("StationOps: a manual element refresh at most once per 10 minutes of s
   f.model.refresh.sources.push_back({"file://" TRAKBOX_SOURCE_DIR "/data/amateur.tle?b", "", ""});
   CHECK_FALSE(f.ops().refresh_elements(0).ok());
   f.station->set_refresh(nullptr);
+TEST_CASE("StationOps: a list that pushes satellites out of a full tracking list names them (issue 46)") {
+  Ops f;
+  REQUIRE(f.model.db.satellites.size() >= 17);
+  f.model.db.selected.clear();
+  for (int i = 0; i < 15; ++i) f.model.db.selected.push_back(i);
+  const std::string a = f.model.db.satellites[15].name(), b = f.model.db.satellites[16].name();
+  const tracker::OpResult r = f.ops().track_list({a, b}, false);
+  REQUIRE(r.ok());
+  CHECK(f.model.db.selected.size() == 15);
+  CHECK(f.model.db.selected[0] == 15);
+  CHECK(f.model.db.selected[1] == 16);
+  CHECK(r.note == "multiple tracking (normal) of #1-#2; the tracking list holds 15: " + f.model.db.satellites[13].name() +
+                      ", " + f.model.db.satellites[14].name() + " left it");
+}
+
+TEST_CASE("StationOps: Stop stops the rotator only; the radio keeps its Doppler (issue 44)") {
+  Ops f;
+  f.now = orbit::from_civil(2026, 5, 21, 12, 10, 0);  // ISS is up (12:09:10 to 12:15:37 at -2 deg)
+  REQUIRE(f.ops().track("ISS").ok());
+  f.run(5.0);
+  const auto before = f.radio_sim->frequency(radio::Link::downlink);
+  REQUIRE(f.ops().stop().ok());
+  CHECK_FALSE(f.station->rotator().status().target);
+  f.run(60.0);
+  CHECK(f.radio_sim->frequency(radio::Link::downlink) != before);  // still tuned for Doppler
+  CHECK(f.tracker.mode() == tracker::Mode::single);
+  // Doppler off: the radio is left where it is.
+  REQUIRE(f.ops().doppler(false).ok());
+  const auto held = f.radio_sim->frequency(radio::Link::downlink);
+  f.run(60.0);
+  CHECK(f.radio_sim->frequency(radio::Link::downlink) == held);
 }

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "support/sim_station.h"
+#include "tracker/operations.h"
 #include "web/api.h"
 #include "web/page.h"
 
@@ -136,7 +137,9 @@ TEST_CASE("web: POST track, rotor and radio act through StationOps; bad input is
   CHECK(w.post("/api/v1/radio", R"({"doppler":false})").status == 200);
   CHECK_FALSE(w.station->doppler());
   CHECK(w.post("/api/v1/rotor", R"({"action":"stop"})").status == 200);
-  CHECK(w.tracker.mode() == tracker::Mode::off);
+  // Stop stops the rotator only (issue 44): the page holds the antenna, the choice stays.
+  CHECK(w.tracker.mode() == tracker::Mode::single);
+  CHECK(w.station->control().holder(tracker::Resource::antenna).kind == tracker::HolderKind::web);
 }
 
 TEST_CASE("web: passes of a satellite, checked against the pass search; bad hours and names refused") {
@@ -281,4 +284,41 @@ TEST_CASE("the session cookie is Secure behind a TLS proxy on loopback, and only
   const std::string direct = login("192.0.2.7", "https");
   CHECK(direct.find("HttpOnly") != std::string::npos);
   CHECK(direct.find("Secure") == std::string::npos);
+}
+
+TEST_CASE("web: an outside client holds the antenna: 409 naming it, then confirm; standby and reserve (issue 44)") {
+  Web w;
+  REQUIRE(w.post("/api/v1/track", R"({"satellite":"ISS"})").status == 200);
+  const tracker::Requester gpredict{tracker::HolderKind::rotctld, "rotctld 127.0.0.1:51234"};
+  REQUIRE(tracker::StationOps(*w.station, gpredict).go_to(200.0, 30.0).ok());
+  web::Response r = w.post("/api/v1/rotor", R"({"goto":{"az":90,"el":10}})");
+  CHECK(r.status == 409);
+  const json j = json::parse(r.body);
+  CHECK(j["confirm_needed"] == true);
+  CHECK(j["holder"]["kind"] == "rotctld");
+  CHECK(j["holder"]["label"] == "rotctld 127.0.0.1:51234");
+  CHECK(j["error"] == "rotctld 127.0.0.1:51234 holds the antenna: confirm to take it back");
+  CHECK(w.station->control().holder(tracker::Resource::antenna).kind == tracker::HolderKind::rotctld);
+  r = w.post("/api/v1/control", R"({"take_back":true,"confirm":true})");
+  CHECK(r.status == 200);
+  CHECK(w.station->control().tracking_drives(tracker::Resource::antenna));
+  CHECK(w.tracker.mode() == tracker::Mode::single);  // the suspended tracking resumes what was chosen
+
+  CHECK(w.post("/api/v1/standby", R"({"on":"yes"})").status == 400);
+  CHECK(w.post("/api/v1/standby", R"({"on":true})").status == 200);
+  CHECK(w.model.sharing.standby);
+  CHECK(w.post("/api/v1/rotor", R"({"goto":{"az":90,"el":10}})").status == 409);
+  CHECK(w.post("/api/v1/standby", R"({"on":false})").status == 200);
+  CHECK_FALSE(w.station->control().standby());
+
+  r = w.post("/api/v1/reserve", R"({"start":"2030-01-01T10:00:00Z","end":"2030-01-01T09:00:00Z"})");
+  CHECK(r.status == 409);
+  CHECK(json::parse(r.body)["error"] == "a reservation ends after it starts");
+  CHECK(w.post("/api/v1/reserve", R"({"start":"soon","end":"later"})").status == 409);
+  CHECK(w.model.sharing.reservations.empty());
+  CHECK(w.post("/api/v1/reserve", R"({"start":"2030-01-01T10:00:00Z","end":"2030-01-01T11:00:00Z","note":"EME"})").status ==
+        200);
+  REQUIRE(w.model.sharing.reservations.size() == 1);
+  CHECK(w.model.sharing.reservations[0].note == "EME");
+  CHECK(w.model.sharing.reservations[0].start_unix == 1893492000);
 }
