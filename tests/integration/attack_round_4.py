@@ -277,10 +277,19 @@ def with_secret():
         cookie = h.get("set-cookie", "").split(";")[0]
         origin = {"Origin": f"http://127.0.0.1:{w.port}", "Cookie": cookie}
         st_before = w.request("POST", "/api/v1/rotor", body={"control": True}, headers=origin)[0]
+        feed = WebSocket(w.port, origin=f"http://127.0.0.1:{w.port}")
         with open(secret_file, "w") as f:
             f.write("second-secret-9b2e\n")
         w.proc.send_signal(signal.SIGHUP)
         time.sleep(1.5)
+        ended = False
+        try:
+            for _ in range(10):
+                feed.message()
+        except (ConnectionError, OSError, ValueError):
+            ended = True
+        feed.close()
+        repro("SIGHUP: a live feed of the old secret ends", ended)
         st_new = w.request("POST", "/api/v1/rotor", body={"control": True},
                            headers={"Authorization": "Bearer second-secret-9b2e"})[0]
         st_session = w.request("POST", "/api/v1/rotor", body={"control": True}, headers=origin)[0]
