@@ -201,7 +201,11 @@ std::vector<SecretEndpoint> secret_endpoints(const TrackerConfig& c, Servers& s)
   if (s.rotctld) e.push_back({"rotctld", f.rotctld, c.rotctld_secret, [&s](const std::string& v) { s.rotctld->set_secret(v); }});
   if (s.rigctld) e.push_back({"rigctld", f.rigctld, c.rigctld_secret, [&s](const std::string& v) { s.rigctld->set_secret(v); }});
   if (s.host) e.push_back({"host", f.host, c.host_secret, [&s](const std::string& v) { s.host->set_secret(v); }});
-  if (s.web_access) e.push_back({"web", f.http, c.http_secret, [&s](const std::string& v) { s.web_access->set_secret(v); }});
+  if (s.web_access)
+    e.push_back({"web", f.http, c.http_secret, [&s](const std::string& v) {
+                   s.web_access->set_secret(v);
+                   if (s.web) s.web->close_viewers();
+                 }});
   return e;
 }
 

@@ -462,6 +462,16 @@ void Server::push_soon() {
   });
 }
 
+std::size_t Server::close_viewers() {
+  std::size_t n = 0;
+  for (const auto& w : impl_->viewers)
+    if (const auto v = w.lock(); v && v->open) {
+      v->close();
+      ++n;
+    }
+  return n;
+}
+
 void Server::publish_event(const nlohmann::json& event) {
   const std::string e = event.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   impl_->recent.push_back(e);

@@ -51,6 +51,9 @@ class Server {
   std::uint16_t port() const;
   // Something changed: the viewers get the state now rather than at the next push.
   void push_soon();
+  // Every live viewer closed (the secret changed: a feed opened with the old one ends; the page
+  // reconnects and logs in again). The number closed.
+  std::size_t close_viewers();
   // A station event (tracker/events.h's JSON) to every viewer; the last 50 go to new viewers.
   void publish_event(const nlohmann::json& event);
 
