@@ -70,7 +70,11 @@ std::vector<std::string> PstHandler::handle(std::string_view datagram, const std
   }
   std::vector<std::string> replies;
   const auto& status = station_.rotator().status();
-  tracker::StationOps ops(station_);
+  // An outside client of the antenna (tracker/control.h): it holds as "pstrotator ADDRESS:PORT", each
+  // datagram counts as heard; UDP has no disconnect, so silence (--handback) hands the antenna back.
+  const std::string label = "pstrotator " + from;
+  station_.control().heard(label, station_.now());
+  tracker::StationOps ops(station_, {tracker::HolderKind::pstrotator, label});
   bool aim = false;
   for (const pst::Command& c : d.commands) {
     switch (c.kind) {
@@ -90,9 +94,8 @@ std::vector<std::string> PstHandler::handle(std::string_view datagram, const std
   }
   ++stats_.taken;
   if (!aim) return replies;
-  // An outside client of the antenna, as rotctld's set_pos: rotor control on, then StationOps::go_to.
-  // Issue 44 (the controller of record): pass the holder kind "pstrotator" here, the one place
-  // this server moves the antenna.
+  // As rotctld's set_pos: rotor control on, then StationOps::go_to, the one place this server moves
+  // the antenna.
   if (!station_.rotor_control()) ops.rotor_control(true);
   const double az = az_.value_or(status.has_position ? status.az.deg : 0.0);
   const double el = el_.value_or(status.has_position ? status.el.deg : 0.0);
