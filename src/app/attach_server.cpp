@@ -591,13 +591,14 @@ int MuxTerminal::next_key(std::optional<term::Duration> timeout) {
     } else if (h && h->input_ended) {
       s_.gone(*h, "");  // every key it sent was taken, and the menus answered
     }
-    term::Duration step = std::chrono::milliseconds(50);
+    // The keys come on the loop (a client's bytes): the wait returns after that work, or any other.
+    std::optional<term::Duration> left;
     if (deadline) {
       const auto now = std::chrono::steady_clock::now();
       if (now >= *deadline) return term::kTimeout;
-      step = std::min(step, *deadline - now);
+      left = *deadline - now;
     }
-    s_.wait(-1, step);
+    s_.wait(-1, left);
   }
 }
 
