@@ -111,22 +111,45 @@ class WebSocket:
 
     def message(self):
         """The next text message (its fragments joined), as JSON."""
-        parts = []
+        return json.loads(self.raw())
+
+    def message_size(self):
+        """The next message's bytes on the wire (its frames' headers and payloads)."""
+        return len(self.raw(count=True)[1])
+
+    def send(self, text):
+        """One masked text frame (a client's frames are masked, RFC 6455 section 5.3)."""
+        data = text.encode()
+        head = bytes([0x81])
+        n = len(data)
+        head += bytes([0x80 | n]) if n < 126 else bytes([0x80 | 126]) + struct.pack(">H", n)
+        mask = os.urandom(4)
+        self.sock.sendall(head + mask + bytes(b ^ mask[i % 4] for i, b in enumerate(data)))
+
+    def raw(self, count=False):
+        """The next text message's payload; with count, (payload, every byte read for it)."""
+        parts, wire = [], b""
         while True:
-            b0, b1 = self._read(2)
+            head = self._read(2)
+            b0, b1 = head
             n = b1 & 0x7F
             if n == 126:
-                n = struct.unpack(">H", self._read(2))[0]
+                ext = self._read(2)
+                n = struct.unpack(">H", ext)[0]
+                head += ext
             elif n == 127:
-                n = struct.unpack(">Q", self._read(8))[0]
+                ext = self._read(8)
+                n = struct.unpack(">Q", ext)[0]
+                head += ext
             payload = self._read(n)
+            wire += head + payload
             op = b0 & 0x0F
             if op == 8:
                 raise ConnectionError("closed by the server")
             if op in (0, 1):
                 parts.append(payload)
                 if b0 & 0x80:
-                    return json.loads(b"".join(parts))
+                    return (b"".join(parts), wire) if count else b"".join(parts)
 
     def state(self, within=10):
         deadline = time.time() + within
