@@ -75,6 +75,28 @@ class WebStation:
         return status, json.loads(got) if got else None
 
 
+def merge_patch(target, patch):
+    """RFC 7386 section 2: the patch applied to the target (a new value; the target is not changed)."""
+    if not isinstance(patch, dict):
+        return patch
+    out = dict(target) if isinstance(target, dict) else {}
+    for k, v in patch.items():
+        if v is None:
+            out.pop(k, None)
+        else:
+            out[k] = merge_patch(out.get(k), v)
+    return out
+
+
+def as_drawn(doc):
+    """The live state with its tracking list, sent as an object by position, as a list again."""
+    st = doc.get("status") or {}
+    tl = st.get("tracking_list")
+    if not isinstance(tl, dict):
+        return doc
+    return {**doc, "status": {**st, "tracking_list": [tl[k] for k in sorted(tl, key=int)]}}
+
+
 class WebSocket:
     """A client of /api/v1/live: text frames only, masked as RFC 6455 asks."""
 
@@ -152,11 +174,19 @@ class WebSocket:
                     return (b"".join(parts), wire) if count else b"".join(parts)
 
     def state(self, within=10):
+        """The next live state, whole: a state message, or the last one with the next patch applied
+        (the live feed sends the state whole once, then merge patches; the tracking list, sent by
+        position, made a list again as the page's live.js does)."""
         deadline = time.time() + within
         while time.time() < deadline:
             m = self.message()
             if m.get("type") == "state":
-                return m
+                self.doc = m
+            elif m.get("type") == "patch" and getattr(self, "doc", None) is not None:
+                self.doc = merge_patch(self.doc, m["patch"])
+            else:
+                continue
+            return as_drawn(self.doc)
         check(False, "a state message within %d s" % within)
 
     def close(self):
