@@ -591,8 +591,7 @@ int MuxTerminal::next_key(std::optional<term::Duration> timeout) {
     } else if (h && h->input_ended) {
       s_.gone(*h, "");  // every key it sent was taken, and the menus answered
     }
-    // The keys come on the loop (a client's bytes): the wait returns after that work, or any other.
-    std::optional<term::Duration> left;
+    std::optional<term::Duration> left;  // the wait returns after any work: a client's keys come so
     if (deadline) {
       const auto now = std::chrono::steady_clock::now();
       if (now >= *deadline) return term::kTimeout;

@@ -558,8 +558,7 @@ void Controller::tick_degrees(DegreeRotator& dr, orbit::UtcTime now) {
 }
 
 std::chrono::milliseconds Controller::next_tick_in() const {
-  // Bringing the antenna to a target is busy; holding with no target, or with rotor control off (the
-  // antenna does not follow), is not: the idle station ticks once a second (issue 49).
+  // Bringing the antenna to a target is busy; no target, or rotor control off, is not (issue 49).
   const bool to_target = status_.mode == ControlMode::target && !status_.on_target && status_.target &&
                          status_.control_enabled;
   bool busy = status_.az.moving != Drive::stop || status_.el.moving != Drive::stop || to_target ||
