@@ -1,5 +1,6 @@
 // The web endpoint's cost to the station (issue 37): the station's thread pushing the live state to
-// 0 or 50 WebSocket viewers (CPU per push; at one push a second that is the share of one core),
+// 0 or 50 WebSocket viewers (CPU per push; at one push a second that is the share of one core), the
+// live document built once per push and its merge patch (web/live_feed.h, issue 49),
 // the memory each viewer costs the process, the first load's bytes, and the delay from a change
 // (Server::push_soon) to the message at a viewer. The viewers are Beast clients on a thread of
 // their own: only the station's thread's CPU clock is counted.
@@ -22,6 +23,7 @@
 #include "support/sim_station.h"
 #include "web/access.h"
 #include "web/api.h"
+#include "web/live_feed.h"
 #include "web/page.h"
 #include "web/server.h"
 
@@ -128,6 +130,7 @@ void BM_WebPush(benchmark::State& state) {
   double cpu = 0;
   int pushes = 0;
   for (auto _ : state) {
+    b.station.step(std::chrono::seconds(1));  // a second of the pass: the patch carries what it changed
     const int want = b.received() + n;
     const double t0 = bench::thread_cpu_ns();
     b.server->push_soon();
@@ -151,6 +154,7 @@ void BM_WebStateToViewer(benchmark::State& state) {
   double total_us = 0;
   int n = 0;
   for (auto _ : state) {
+    b.station.step(std::chrono::seconds(1));
     const int want = b.received() + 1;
     const long long t0 = std::chrono::steady_clock::now().time_since_epoch().count();
     b.server->push_soon();
@@ -161,6 +165,28 @@ void BM_WebStateToViewer(benchmark::State& state) {
   state.counters["state_to_viewer_us"] = total_us / n;
 }
 BENCHMARK(BM_WebStateToViewer)->Unit(benchmark::kMicrosecond)->UseRealTime();
+
+// The live document built and turned into this push's message (the whole document or the merge
+// patch of what changed), once per push whatever the number of viewers; the bytes of each.
+void BM_LiveDocument(benchmark::State& state) {
+  Bench b;
+  web::LiveFeed feed;
+  feed.next(b.api->live_document());
+  double cpu = 0, patch_bytes = 0;
+  int pushes = 0;
+  for (auto _ : state) {
+    b.station.step(std::chrono::seconds(1));
+    const double t0 = bench::thread_cpu_ns();
+    const auto m = feed.next(b.api->live_document());
+    cpu += bench::thread_cpu_ns() - t0;
+    patch_bytes += m ? static_cast<double>(m->size()) : 0.0;
+    ++pushes;
+  }
+  state.counters["cpu_us_per_push"] = cpu / pushes / 1e3;
+  state.counters["patch_bytes"] = patch_bytes / pushes;
+  state.counters["full_bytes"] = static_cast<double>(feed.full()->size());
+}
+BENCHMARK(BM_LiveDocument)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 

@@ -47,6 +47,10 @@ echo "== sanitizer build (${#san_targets[@]} programs): $((SECONDS - start)) s"
    LSAN_OPTIONS=suppressions=$PWD/../tests/lsan.supp:print_suppressions=0 \
    ctest --output-on-failure -j"$jobs" -L "unit|fuzz")
 echo "== unit and fuzz-replay tests under the sanitizers: $((SECONDS - start)) s"
+# What the idle station costs (issue 49): a check of its own, 20 s here, not a timed test; it fails
+# only on a gross regression (the idle service over 20 wake-ups a second) and prints the figures.
+python3 scripts/bench_idle.py --bin build/trakbox --seconds 20 || { echo "== idle benchmark FAILED"; exit 1; }
+echo "== idle benchmark: $((SECONDS - start)) s"
 # The Debian package: built from build/, installed, run from /, removed (issue 13).
 scripts/package-check.sh build
 echo "== all done: $((SECONDS - start)) s"

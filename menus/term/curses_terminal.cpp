@@ -412,12 +412,13 @@ int CursesTerminal::next_key(std::optional<Duration> timeout) {
           continue;  // function keys the menus do not use
       }
     }
-    // Waits of at most a quarter second: a resize is seen (above) while no key comes.
-    std::optional<Duration> left = std::chrono::milliseconds(250);
+    // The wait returns after any work of the loop too (the tick, once a second at most): a resize
+    // is seen (above) within a tick while no key comes, without a wake-up of its own.
+    std::optional<Duration> left;
     if (deadline) {
       const auto now = std::chrono::steady_clock::now();
       if (now >= *deadline) return kTimeout;
-      left = std::min<Duration>(*deadline - now, *left);
+      left = *deadline - now;
     }
     if (impl_->wait) impl_->wait(STDIN_FILENO, left);
   }

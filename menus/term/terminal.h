@@ -40,7 +40,9 @@ struct Graphics {
 };
 
 // Runs the program's pending work while a terminal waits (installed by the application).
-// wait(fd, timeout) returns true when fd became readable, false on timeout.
+// wait(fd, timeout) returns true when fd became readable, false on timeout or when the loop did
+// other work meanwhile (the caller looks again: a key may have come by the loop, the tick drew).
+// No timeout: until input or work. It blocks in the loop's one wait; it never polls.
 using WaitReadable = std::function<bool(int fd, std::optional<Duration> timeout)>;
 
 class Terminal {

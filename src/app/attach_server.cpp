@@ -598,13 +598,13 @@ int MuxTerminal::next_key(std::optional<term::Duration> timeout) {
     } else if (h && h->input_ended) {
       s_.gone(*h, "");  // every key it sent was taken, and the menus answered
     }
-    term::Duration step = std::chrono::milliseconds(50);
+    std::optional<term::Duration> left;  // the wait returns after any work: a client's keys come so
     if (deadline) {
       const auto now = std::chrono::steady_clock::now();
       if (now >= *deadline) return term::kTimeout;
-      step = std::min(step, *deadline - now);
+      left = *deadline - now;
     }
-    s_.wait(-1, step);
+    s_.wait(-1, left);
   }
 }
 

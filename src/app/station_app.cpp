@@ -1,10 +1,12 @@
 #include "app/station_app.h"
 
 #include <poll.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <boost/asio/executor_work_guard.hpp>
 #include <boost/asio/io_context.hpp>
+#include <boost/asio/posix/stream_descriptor.hpp>
 #include <boost/asio/post.hpp>
 #include <boost/asio/signal_set.hpp>
 #include <boost/asio/steady_timer.hpp>
@@ -125,11 +127,30 @@ struct StationApp::Impl {
       io.run_one();
     }
   }
-  // Runs the event loop until `done` holds or `limit` passes (steady time).
+  // Runs the event loop until `done` holds or `limit` passes (steady time): done is looked at
+  // after every piece of work the loop did.
   void run_until(const std::function<bool()>& done, std::chrono::milliseconds limit, StationApp& app) {
     const auto end = std::chrono::steady_clock::now() + limit;
-    while (!done() && std::chrono::steady_clock::now() < end) app.wait_readable(-1, std::chrono::milliseconds(50));
+    for (auto now = std::chrono::steady_clock::now(); !done() && now < end; now = std::chrono::steady_clock::now())
+      app.wait_readable(-1, end - now);
   }
+  // A terminal's input as an Asio descriptor, so that its wait is the loop's one blocking wait
+  // (epoll) with the timers and the servers. The descriptor is the terminal's: released, never
+  // closed, and made again when the number names another file.
+  struct Input {
+    Input(asio::io_context& io, int fd, const struct stat& st) : d(io, fd), dev(st.st_dev), ino(st.st_ino) {}
+    ~Input() { d.release(); }
+    Input(const Input&) = delete;
+    Input& operator=(const Input&) = delete;
+    asio::posix::stream_descriptor d;
+    dev_t dev;
+    ino_t ino;
+    bool pending = false;  // an async_wait is outstanding (it stays so across waits)
+    bool ready = false;    // it completed: the input is readable (or failed: the reader finds out)
+  };
+  Input* input(int fd);
+  void arm_input(Input& in);
+  void arm_deadline(term::Duration in);
   void start_stored_tracking();
   void find_events();
   void emit(tracker::Event e) {
@@ -143,6 +164,11 @@ struct StationApp::Impl {
   asio::executor_work_guard<asio::io_context::executor_type> work = asio::make_work_guard(io);
   asio::signal_set signals{io, SIGTERM, SIGHUP, SIGINT};
   asio::steady_timer timer{io};
+  asio::steady_timer deadline{io};  // the end of a terminal's wait
+  unsigned deadline_gen = 0;        // which arm_deadline the pending wait belongs to
+  bool deadline_hit = false;
+  unsigned own_runs = 0;            // handlers of the wait itself (input, deadline) that have run
+  std::unique_ptr<Input> in;        // the terminal's input (one terminal waits at a time)
   std::chrono::milliseconds tick{1000};
   bool started = false;  // the tick timer runs (start() was called)
   int last_signal = 0;
@@ -272,31 +298,73 @@ void StationApp::start(std::chrono::milliseconds tick) {
   impl_->schedule_tick();
 }
 
+StationApp::Impl::Input* StationApp::Impl::input(int fd) {
+  struct stat st {};
+  if (::fstat(fd, &st) != 0) return nullptr;
+  if (!in || in->d.native_handle() != fd || in->dev != st.st_dev || in->ino != st.st_ino) {
+    in.reset();
+    try {
+      in = std::make_unique<Input>(io, fd, st);
+    } catch (const boost::system::system_error&) {
+      return nullptr;  // not a descriptor epoll takes (a regular file: always readable, seen by poll)
+    }
+  }
+  return in.get();
+}
+
+void StationApp::Impl::arm_input(Input& i) {
+  i.ready = false;
+  if (i.pending) return;
+  i.pending = true;
+  i.d.async_wait(asio::posix::stream_descriptor::wait_read, [this, p = &i](const boost::system::error_code& ec) {
+    ++own_runs;
+    if (ec == asio::error::operation_aborted || in.get() != p) return;
+    p->pending = false;
+    p->ready = true;
+  });
+}
+
+void StationApp::Impl::arm_deadline(term::Duration after) {
+  deadline_hit = false;
+  deadline.expires_after(after);  // a wait still pending from an earlier call ends aborted
+  deadline.async_wait([this, gen = ++deadline_gen](const boost::system::error_code& ec) {
+    ++own_runs;
+    if (!ec && gen == deadline_gen) deadline_hit = true;
+  });
+}
+
+// One blocking wait (run_one: epoll) until the input is readable, the deadline passes or the loop
+// did some other work (a tick, a client's bytes, a timer): the callers look again and wait again.
+// Nothing wakes the process while nothing is due; the tick timer is the wake-up at any --clock-rate.
 bool StationApp::wait_readable(int fd, std::optional<term::Duration> timeout) {
-  asio::io_context& io = impl_->io;
-  const auto deadline = timeout ? std::optional(std::chrono::steady_clock::now() + *timeout) : std::nullopt;
-  for (;;) {
-    if (io.stopped()) io.restart();
+  Impl& m = *impl_;
+  asio::io_context& io = m.io;
+  if (io.stopped()) io.restart();
+  if (fd >= 0) {
+    pollfd p{fd, POLLIN, 0};
+    if (::poll(&p, 1, 0) > 0) return true;  // readable already (the descriptor's edge may be past)
+  }
+  if (timeout && *timeout <= term::Duration::zero()) {
     io.poll();
-    int ms = 20;
-    if (deadline) {
-      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(*deadline - std::chrono::steady_clock::now());
-      ms = static_cast<int>(std::clamp<long long>(left.count(), 0, 20));
+    return false;
+  }
+  Impl::Input* input = fd >= 0 ? m.input(fd) : nullptr;
+  if (input) m.arm_input(*input);
+  if (timeout) m.arm_deadline(*timeout);
+  const auto done = [&](bool readable) {
+    if (timeout && !m.deadline_hit) m.deadline.cancel();
+    return readable;
+  };
+  for (;;) {
+    const unsigned before = m.own_runs;
+    if (io.stopped()) io.restart();
+    io.run_one();
+    if (input && input->ready) {
+      input->ready = false;
+      return done(true);
     }
-    // Wake for the tick timer rather than up to 20 ms after it: under a fast --clock-rate the
-    // station ticks every few milliseconds of wall time (schedule_tick).
-    if (impl_->started) {
-      const auto to_tick =
-          std::chrono::ceil<std::chrono::milliseconds>(impl_->timer.expiry() - std::chrono::steady_clock::now());
-      ms = static_cast<int>(std::clamp<long long>(to_tick.count(), 0, ms));
-    }
-    if (fd >= 0) {
-      pollfd p{fd, POLLIN, 0};
-      if (::poll(&p, 1, ms) > 0) return true;
-    } else if (ms > 0) {
-      ::usleep(static_cast<useconds_t>(ms) * 1000);
-    }
-    if (deadline && std::chrono::steady_clock::now() >= *deadline) return false;
+    if (m.deadline_hit || m.own_runs == before) return done(false);
+    // Only a wait of an earlier call ended (aborted): nothing happened yet.
   }
 }
 

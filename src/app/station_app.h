@@ -68,8 +68,9 @@ class StationApp {
   // Starts the tick timer (every `tick`, sooner when the station asks) and the signal wait.
   void start(std::chrono::milliseconds tick);
 
-  // The terminal's way of waiting: run the event loop until fd is readable (fd < 0: only the
-  // timeout) or the timeout passes.
+  // The terminal's way of waiting: one blocking wait of the event loop (run_one) until fd is
+  // readable (fd < 0: no input), the timeout passes, or the loop did other work (false: the caller
+  // looks again). Nothing wakes the process meanwhile; the tick timer is one of the loop's timers.
   bool wait_readable(int fd, std::optional<term::Duration> timeout);
   void set_terminal(term::Terminal* t);  // gets the status line after every tick
 

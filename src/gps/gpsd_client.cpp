@@ -1,12 +1,17 @@
 #include "gps/gpsd_client.h"
 
 #include <gps.h>
+#include <poll.h>
+#include <sys/eventfd.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <exception>
+#include <thread>
 
 #include "util/text.h"
 
@@ -38,17 +43,42 @@ std::optional<GpsdEndpoint> parse_gps_spec(const std::string& spec, std::string&
 }
 
 GpsdClient::GpsdClient(GpsdEndpoint endpoint, Post post, Sink sink)
-    : endpoint_(std::move(endpoint)), post_(std::move(post)), sink_(std::move(sink)) {
+    : endpoint_(std::move(endpoint)), post_(std::move(post)), sink_(std::move(sink)),
+      wake_(::eventfd(0, EFD_CLOEXEC | EFD_NONBLOCK)) {
   thread_ = std::thread([this] { run(); });
 }
 
 GpsdClient::~GpsdClient() {
   stop_ = true;
+  const std::uint64_t one = 1;
+  if (wake_ >= 0 && ::write(wake_, &one, sizeof one) < 0) {
+    // cannot happen with a fresh eventfd; the thread's waits still end within their bounds
+  }
   if (thread_.joinable()) thread_.join();
+  if (wake_ >= 0) ::close(wake_);
 }
 
+// The thread sleeps in the kernel until its deadline or the stop, never in slices.
 void GpsdClient::pause(int ms) const {
-  for (int waited = 0; waited < ms && !stop_; waited += 50) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  if (wake_ < 0) {  // no eventfd (out of descriptors): the pause as one sleep
+    std::this_thread::sleep_for(std::chrono::milliseconds(ms));
+    return;
+  }
+  const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(ms);
+  while (!stop_) {
+    const auto left = std::chrono::ceil<std::chrono::milliseconds>(until - std::chrono::steady_clock::now()).count();
+    if (left <= 0) return;
+    pollfd p{wake_, POLLIN, 0};
+    ::poll(&p, 1, static_cast<int>(left));
+  }
+}
+
+bool GpsdClient::wait_input(int gps_fd) const {
+  pollfd p[2] = {{gps_fd, POLLIN, 0}, {wake_, POLLIN, 0}};
+  while (!stop_) {
+    if (::poll(p, wake_ >= 0 ? 2 : 1, wake_ >= 0 ? -1 : 1000) > 0 && (p[0].revents != 0)) return true;
+  }
+  return false;
 }
 
 void GpsdClient::run() {
@@ -95,9 +125,11 @@ bool GpsdClient::session() {
   post_([s = sink_] { s.link(Link::receiving, {}); });
   char message[4096];
   while (!stop_) {
+    // What libgps holds already, else one wait in the kernel for gpsd's bytes or the stop.
     errno = 0;
-    if (!gps_waiting(&data, 250000)) {
+    if (!gps_waiting(&data, 0)) {
       if (errno != 0 && errno != EINTR && errno != EAGAIN) break;
+      if (!wait_input(data.gps_fd)) break;
       continue;
     }
     message[0] = '\0';

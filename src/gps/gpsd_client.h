@@ -40,11 +40,14 @@ class GpsdClient {
  private:
   void run();
   bool session();  // one connection; false when stopping
-  void pause(int ms) const;
+  void pause(int ms) const;  // until ms pass or the client stops (woken by wake_)
+  // Blocks until gpsd's socket is readable or the client stops; false when stopping.
+  bool wait_input(int gps_fd) const;
   GpsdEndpoint endpoint_;
   Post post_;
   Sink sink_;
   std::atomic<bool> stop_{false};
+  int wake_ = -1;  // an eventfd the destructor writes: the thread's waits end at once
   std::thread thread_;
 };
 

@@ -558,8 +558,11 @@ void Controller::tick_degrees(DegreeRotator& dr, orbit::UtcTime now) {
 }
 
 std::chrono::milliseconds Controller::next_tick_in() const {
-  bool busy = status_.az.moving != Drive::stop || status_.el.moving != Drive::stop ||
-              (status_.mode == ControlMode::target && !status_.on_target) || status_.mode == ControlMode::manual;
+  // Bringing the antenna to a target is busy; no target, or rotor control off, is not (issue 49).
+  const bool to_target = status_.mode == ControlMode::target && !status_.on_target && status_.target &&
+                         status_.control_enabled;
+  bool busy = status_.az.moving != Drive::stop || status_.el.moving != Drive::stop || to_target ||
+              status_.mode == ControlMode::manual;
   return busy ? std::chrono::milliseconds(100) : std::chrono::milliseconds(1000);
 }
 

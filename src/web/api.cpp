@@ -17,6 +17,7 @@
 #include "util/json_limits.h"
 #include "util/text.h"
 #include "web/api_log.h"
+#include "web/live_feed.h"
 #include "web/page.h"
 
 namespace tb::web {
@@ -416,15 +417,19 @@ json Api::sky() {
   return j;
 }
 
+json Api::live_document() {
+  json status = hooks_.status ? hooks_.status() : json::object();
+  status["schema"] = kApiSchema;
+  status["doppler"] = station_.doppler();
+  const auto& st = station_.model().station;
+  status["station"] = {{"lat_deg", st.lat_deg}, {"lon_deg", st.lon_deg}, {"height_m", st.height_m}};
+  shape_for_live(status);
+  return json{{"type", "state"}, {"status", std::move(status)}, {"sky", sky()}};
+}
+
 std::string Api::live_state() {
   try {
-    json status = hooks_.status ? hooks_.status() : json::object();
-    status["schema"] = kApiSchema;
-    status["doppler"] = station_.doppler();
-    const auto& st = station_.model().station;
-    status["station"] = {{"lat_deg", st.lat_deg}, {"lon_deg", st.lon_deg}, {"height_m", st.height_m}};
-    return json{{"type", "state"}, {"status", std::move(status)}, {"sky", sky()}}.dump(
-        -1, ' ', false, json::error_handler_t::replace);
+    return live_document().dump(-1, ' ', false, json::error_handler_t::replace);
   } catch (const std::exception& e) {
     return json{{"type", "error"}, {"error", e.what()}}.dump(-1, ' ', false, json::error_handler_t::replace);
   }

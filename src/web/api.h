@@ -77,6 +77,8 @@ class Api {
 
   // The live state the WebSocket sends at each tick: {"type":"state","status":{...},"sky":{...}}.
   std::string live_state();
+  // The same document as JSON, for the live feed's patches (web/live_feed.h); it may throw.
+  nlohmann::json live_document();
   // The sky plot's facts for the followed satellite: now, its pass (AOS/TCA/LOS and the track),
   // the antenna's reading and target, the planned path and the part it cannot follow.
   nlohmann::json sky();

@@ -14,7 +14,7 @@ const PageFile* find_page_file(std::string_view path) {
 
 std::size_t first_load_bytes() {
   std::size_t n = 0;
-  for (const char* p : {"/index.html", "/style.css", "/app.js"})
+  for (const char* p : {"/index.html", "/style.css", "/app.js", "/live.js"})
     if (const PageFile* f = find_page_file(p)) n += f->body.size();
   return n;
 }

@@ -23,6 +23,7 @@
 #include "web/api.h"
 #include "web/http_reader.h"
 #include "web/refusals.h"
+#include "web/live_feed.h"
 
 namespace tb::web {
 
@@ -71,6 +72,7 @@ struct Server::Impl : std::enable_shared_from_this<Impl> {
   std::vector<std::weak_ptr<Conn>> conns;
   std::vector<std::weak_ptr<Viewer>> viewers;
   std::deque<std::string> recent;  // the last events, as sent
+  LiveFeed feed;                   // the live state: whole once, then what changed (live_feed.h)
   Stats stats;
   RefusalLog refusals;
   std::size_t lingering = 0;       // refused at accept, their last bytes being read (Refused)
@@ -81,6 +83,8 @@ struct Server::Impl : std::enable_shared_from_this<Impl> {
   void accept();
   void tick();
   void push();
+  void push_state();  // builds the document once, sends the viewers what changed
+  std::shared_ptr<const std::string> full_state();
   void broadcast(const std::shared_ptr<const std::string>& m);
   void track(const std::shared_ptr<Conn>& c) {
     std::erase_if(conns, [](const std::weak_ptr<Conn>& w) { return w.expired(); });
@@ -137,11 +141,12 @@ struct Viewer : Conn, std::enable_shared_from_this<Viewer> {
     ws.async_accept(upgrade, [self = shared_from_this()](boost::system::error_code ec) {
       if (ec || self->server->closed) return;
       self->open = true;
+      self->server->push_state();  // the others' patch up to now: this one starts from the same document
       self->server->viewers.push_back(self);
       nlohmann::json events = nlohmann::json::array();
       for (const std::string& e : self->server->recent) events.push_back(nlohmann::json::parse(e, nullptr, false));
       self->send(std::make_shared<const std::string>(nlohmann::json{{"type", "events"}, {"events", events}}.dump()));
-      self->send(std::make_shared<const std::string>(self->server->api.live_state()));
+      self->send(self->server->full_state());
       self->read();
     });
   }
@@ -152,7 +157,9 @@ struct Viewer : Conn, std::enable_shared_from_this<Viewer> {
         self->open = false;
         return;
       }
-      self->buffer.consume(n);  // viewers only listen; what they send is dropped
+      // Viewers listen; one that missed a message asks for the whole document, the rest is dropped.
+      if (LiveFeed::asks_full(beast::buffers_to_string(self->buffer.data()))) self->send(self->server->full_state());
+      self->buffer.consume(n);
       self->read();
     });
   }
@@ -412,8 +419,25 @@ void Server::Impl::push() {
     const auto p = v.lock();
     return !p || !p->open;
   });
-  if (viewers.empty()) return;
-  broadcast(std::make_shared<const std::string>(api.live_state()));
+  if (viewers.empty()) {
+    feed.forget();  // nobody to patch: the next viewer starts from a fresh document
+    return;
+  }
+  push_state();
+}
+
+void Server::Impl::push_state() {
+  try {
+    if (auto m = feed.next(api.live_document())) broadcast(std::make_shared<const std::string>(std::move(*m)));
+  } catch (const std::exception&) {
+    feed.forget();
+    broadcast(std::make_shared<const std::string>(api.live_state()));  // the error, as before
+  }
+}
+
+std::shared_ptr<const std::string> Server::Impl::full_state() {
+  if (auto m = feed.full()) return std::make_shared<const std::string>(std::move(*m));
+  return std::make_shared<const std::string>(api.live_state());
 }
 
 void Server::Impl::broadcast(const std::shared_ptr<const std::string>& m) {

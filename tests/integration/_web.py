@@ -75,6 +75,28 @@ class WebStation:
         return status, json.loads(got) if got else None
 
 
+def merge_patch(target, patch):
+    """RFC 7386 section 2: the patch applied to the target (a new value; the target is not changed)."""
+    if not isinstance(patch, dict):
+        return patch
+    out = dict(target) if isinstance(target, dict) else {}
+    for k, v in patch.items():
+        if v is None:
+            out.pop(k, None)
+        else:
+            out[k] = merge_patch(out.get(k), v)
+    return out
+
+
+def as_drawn(doc):
+    """The live state with its tracking list, sent as an object by position, as a list again."""
+    st = doc.get("status") or {}
+    tl = st.get("tracking_list")
+    if not isinstance(tl, dict):
+        return doc
+    return {**doc, "status": {**st, "tracking_list": [tl[k] for k in sorted(tl, key=int)]}}
+
+
 class WebSocket:
     """A client of /api/v1/live: text frames only, masked as RFC 6455 asks."""
 
@@ -111,29 +133,60 @@ class WebSocket:
 
     def message(self):
         """The next text message (its fragments joined), as JSON."""
-        parts = []
+        return json.loads(self.raw())
+
+    def message_size(self):
+        """The next message's bytes on the wire (its frames' headers and payloads)."""
+        return len(self.raw(count=True)[1])
+
+    def send(self, text):
+        """One masked text frame (a client's frames are masked, RFC 6455 section 5.3)."""
+        data = text.encode()
+        head = bytes([0x81])
+        n = len(data)
+        head += bytes([0x80 | n]) if n < 126 else bytes([0x80 | 126]) + struct.pack(">H", n)
+        mask = os.urandom(4)
+        self.sock.sendall(head + mask + bytes(b ^ mask[i % 4] for i, b in enumerate(data)))
+
+    def raw(self, count=False):
+        """The next text message's payload; with count, (payload, every byte read for it)."""
+        parts, wire = [], b""
         while True:
-            b0, b1 = self._read(2)
+            head = self._read(2)
+            b0, b1 = head
             n = b1 & 0x7F
             if n == 126:
-                n = struct.unpack(">H", self._read(2))[0]
+                ext = self._read(2)
+                n = struct.unpack(">H", ext)[0]
+                head += ext
             elif n == 127:
-                n = struct.unpack(">Q", self._read(8))[0]
+                ext = self._read(8)
+                n = struct.unpack(">Q", ext)[0]
+                head += ext
             payload = self._read(n)
+            wire += head + payload
             op = b0 & 0x0F
             if op == 8:
                 raise ConnectionError("closed by the server")
             if op in (0, 1):
                 parts.append(payload)
                 if b0 & 0x80:
-                    return json.loads(b"".join(parts))
+                    return (b"".join(parts), wire) if count else b"".join(parts)
 
     def state(self, within=10):
+        """The next live state, whole: a state message, or the last one with the next patch applied
+        (the live feed sends the state whole once, then merge patches; the tracking list, sent by
+        position, made a list again as the page's live.js does)."""
         deadline = time.time() + within
         while time.time() < deadline:
             m = self.message()
             if m.get("type") == "state":
-                return m
+                self.doc = m
+            elif m.get("type") == "patch" and getattr(self, "doc", None) is not None:
+                self.doc = merge_patch(self.doc, m["patch"])
+            else:
+                continue
+            return as_drawn(self.doc)
         check(False, "a state message within %d s" % within)
 
     def close(self):

@@ -3,8 +3,8 @@ station: it loads with no console errors and no horizontal scrolling on a phone 
 desktop (1280x800); the azimuth and elevation it shows are those of `trakbox status --json`;
 tapping ISS and rotor control changes `trakbox status`; the satellite's marker in the sky plot sits
 where SGP4 (Skyfield, independent of trakbox) puts ISS; the page reconnects by itself after the
-service restarts. With TRAKBOX_SCREENSHOT=PATH it writes the phone-size screenshot there
-(docs/web-phone.png)."""
+service restarts; a patch missed is recovered by the whole state (live.js). With
+TRAKBOX_SCREENSHOT=PATH it writes the phone-size screenshot there (docs/web-phone.png)."""
 import math
 import os
 import re
@@ -127,6 +127,14 @@ def phone(w, url):
         # The page updates: the clock it shows moves on.
         before = text(d, "clock")
         poll("the page updating", lambda: text(d, "clock") != before, 5)
+        # A patch missed (a gap in the numbers, live.js): the page asks for the whole state, and goes on.
+        seq = d.execute_script("return live.seq")
+        drawn, asked = d.execute_script("return [liveMessage({type: 'patch', seq: live.seq + 2, patch: {}}, ws), live.asked]")
+        check(drawn is None and asked is True, f"a patch after a gap is not drawn ({drawn}), the whole state asked ({asked})")
+        poll("the whole state after the gap, then patches", lambda: d.execute_script(
+            "return live.doc !== null && live.seq > arguments[0]", seq), 10)
+        before = text(d, "clock")
+        poll("the page updating after the gap", lambda: text(d, "clock") != before, 5)
         iw = d.execute_script("return window.innerWidth")
         check(iw == 390, f"the phone's viewport is 390 px wide: {iw}")
         d.execute_script("window.scrollTo(0, 0)")

@@ -201,6 +201,7 @@ function connect() {
   ws.onmessage = (m) => {
     let j;
     try { j = JSON.parse(m.data); } catch (e) { return; }
+    if ((j = liveMessage(j, ws)) === null) return;  // live.js: patches made whole, gaps asked again
     if (j.type === "state") { drawStatus(j.status); drawSky(j.sky); drawControl(j.status); }
     else if (j.type === "event") addEvent(j.event, false);
     else if (j.type === "events") { $("events").replaceChildren(); (j.events || []).forEach((e) => addEvent(e, true)); }

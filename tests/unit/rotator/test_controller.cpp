@@ -134,6 +134,20 @@ TEST_CASE("Presets 1-5 of menu 6-6-3") {
   CHECK(near(rig.ctl->status().el.deg, 10.0, kElBand + 0.1));
 }
 
+TEST_CASE("A target with rotor control off is not busy: the station ticks once a second (issue 49)") {
+  Rig rig;
+  rig.ctl->set_control_enabled(false);
+  rig.ctl->set_target(AzEl{90.0, 45.0});
+  rig.idle(2s);
+  CHECK_FALSE(rig.ctl->status().on_target);
+  CHECK(rig.ctl->status().az.motion == Drive::stop);
+  CHECK(rig.ctl->next_tick_in() == 1000ms);
+  rig.ctl->set_control_enabled(true);
+  rig.ctl->set_target(AzEl{90.0, 45.0});
+  rig.idle(1s);
+  CHECK(rig.ctl->next_tick_in() == 100ms);  // on its way: ticks every 100 ms
+}
+
 TEST_CASE("Keyboard control 4/6/8/2/5 of menu 6-6-1") {
   Rig rig({}, RotorStart::north, {180.0, 45.0});
   CHECK(rig.ctl->manual_key('6'));  // right = CW

@@ -1,0 +1,77 @@
+#include "web/live_feed.h"
+
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+#include "util/json_limits.h"
+#include "web/merge_patch.h"
+
+namespace tb::web {
+
+namespace {
+using json = nlohmann::json;
+std::string text(const json& j) { return j.dump(-1, ' ', false, json::error_handler_t::replace); }
+}  // namespace
+
+void shape_for_live(json& status) {
+  const auto list = status.find("tracking_list");
+  if (list == status.end() || !list->is_array()) return;
+  json by_position = json::object();
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    json entry = std::move((*list)[i]);
+    if (entry.is_object()) {
+      entry.erase("now");
+      const auto age = entry.find("element_age_days");
+      if (age != entry.end() && age->is_number()) *age = std::round(age->get<double>() * 100.0) / 100.0;
+      const auto next = entry.find("next_pass");
+      if (next != entry.end() && next->is_object()) {
+        const auto el = next->find("max_el_deg");
+        if (el != next->end() && el->is_number()) *el = std::round(el->get<double>() * 100.0) / 100.0;
+      }
+    }
+    by_position[std::to_string(i)] = std::move(entry);
+  }
+  *list = std::move(by_position);
+}
+
+LiveFeed::LiveFeed() = default;
+LiveFeed::~LiveFeed() = default;
+
+std::optional<std::string> LiveFeed::next(json doc) {
+  std::optional<json> patch;
+  if (last_) {
+    patch = merge_patch_diff(*last_, doc);
+    if (patch && patch->empty()) return std::nullopt;
+  }
+  ++seq_;
+  last_ = std::make_unique<json>(std::move(doc));
+  full_.reset();
+  if (!patch) return full();
+  return text(json{{"type", "patch"}, {"seq", seq_}, {"patch", std::move(*patch)}});
+}
+
+std::optional<std::string> LiveFeed::full() {
+  if (!last_) return std::nullopt;
+  if (!full_) {
+    json whole = *last_;
+    whole["seq"] = seq_;
+    full_ = text(whole);
+  }
+  return full_;
+}
+
+void LiveFeed::forget() {
+  last_.reset();
+  full_.reset();
+}
+
+bool LiveFeed::asks_full(std::string_view message) {
+  if (message.size() > 256 || json_limits::nesting_depth(message) > 2) return false;
+  const json j = json::parse(message, nullptr, false);
+  if (!j.is_object()) return false;
+  const auto type = j.find("type");
+  return type != j.end() && type->is_string() && type->get_ref<const std::string&>() == "full";
+}
+
+}  // namespace tb::web
