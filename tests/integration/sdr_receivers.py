@@ -14,6 +14,10 @@ command GQRX refuses is sent; no `link-lost` event; `status` healthy with the up
 and stays 3 s: trakbox's connection is closed by the responder; the log says once that another
 program holds GQRX's remote control, trakbox does not knock the other program off while it holds it
 (no reconnect within the hold-off), and it is back after it left.
+
+Then SDR++'s rigctl server (one client at a time: the next is served only when the one before has
+gone) held by another program when trakbox starts: the log says once that another program may hold
+it, and trakbox is connected once the other program leaves.
 """
 import json
 import os
@@ -121,6 +125,73 @@ class Gqrx:
         with self.lock:
             if self.client:
                 self.client.close()
+
+
+class Sdrpp(Gqrx):
+    """SDR++'s rigctl server: one client at a time (the next is served only when the one before has
+    gone), `M` wants its passband, `v` is "VFO"."""
+
+    def _accept(self):
+        while True:
+            try:
+                c, _ = self.sock.accept()
+            except OSError:
+                return
+            with self.lock:
+                self.connections += 1
+                n = self.connections
+            self._serve(c, n)   # here: nobody else is served meanwhile
+            c.close()
+
+    def answer(self, line):
+        words = line.split()
+        if line == "v":
+            return "VFO"
+        if line == "\\chk_vfo":
+            return "CHKVFO 0"
+        if words[:1] == ["M"]:
+            if len(words) != 3:
+                return "RPRT 1"
+            self.mode = words[1]
+            return "RPRT 0"
+        if line in ("V VFOA", "l", "l STRENGTH", "\\get_powerstat"):
+            return "RPRT 1"
+        return super().answer(line)
+
+
+def sdrpp_held_by_another():
+    """SDR++ held by another program when trakbox starts: one line saying so, then tuned once the
+    other program leaves."""
+    rig = Sdrpp()
+    other = socket.create_connection(("127.0.0.1", rig.port))
+    other.sendall(b"f\n")
+    other.recv(64)
+    state = tempfile.mkdtemp(prefix="trakbox-sdrpp-")
+    procs = []
+    try:
+        tb = subprocess.Popen([BIN, "--state", state, "--line", "--satrak-port", "0", "--radio", f"sdrpp:127.0.0.1:{rig.port}",
+                               "--elements-url", "file://" + os.path.join(SOURCE, "data", "amateur.tle")],
+                              stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+        procs.append(tb)
+        log_path = os.path.join(state, "trakbox.log")
+        poll("the log to say another program may hold SDR++", lambda: os.path.exists(log_path) and
+             "another program may hold SDR++'s remote control" in open(log_path).read(), 15)
+        time.sleep(4)
+        other.close()
+        poll("trakbox served by SDR++", lambda: any(n > 1 for _, _, n in rig.sent(lambda line: line == "f")), 20)
+        tb.stdin.close()
+        check(tb.wait(20) == 0, "trakbox leaves cleanly")
+        procs.remove(tb)
+        log = open(log_path).read()
+        said = log.count("another program may hold SDR++'s remote control")
+        check(said == 1, f"said once while held ({said})")
+        check("radio SDR++ at 127.0.0.1:" in log and ": connected" in log, "connected once served")
+        print(f"sdr_receivers SDR++: held by another program: {said} log line, "
+              f"{log.count('event: link-lost')} link-lost; connected once it left")
+    finally:
+        reap(procs)
+        rig.close()
+        shutil.rmtree(state, ignore_errors=True)
 
 
 def so50_pass():
@@ -244,4 +315,4 @@ def main():
 
 
 if __name__ == "__main__":
-    run_test(main)
+    run_test(lambda: (main(), sdrpp_held_by_another()))
