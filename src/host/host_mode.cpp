@@ -171,6 +171,11 @@ std::vector<std::string> Interpreter::help() {
       "?A           present antenna position          reply AZ220.0 EL45.0",
       "RF           refresh the elements now          (menu 3-5's sources)",
       "?R           the last element refresh          reply REFRESH ...",
+      "PBxxxxxxxxx  passband: the downlink spot, Hz   PB435640000 (a linear transponder)",
+      "ORxxx OTxxx  RX / TX offset in Hz, kept        OR+120  OT-300  (OR0 OT0 reset)",
+      "CTxx.x       uplink CTCSS tone in Hz, 0 none   CT67.0",
+      "?T           the tuning                        reply TUNE SPOT ... RX ... TX ... TONE ...",
+      "QTHxxx       the station's position            QTH JN58td  or  QTH 48.15,11.58,520",
       "?            this list",
       "Q            quit to the main menu",
   };
@@ -189,6 +194,7 @@ Reply Interpreter::execute(std::string_view line) {
   if (u == "?A") return antenna();
   if (u == "RF") return refresh_now();
   if (u == "?R") return refresh_status();
+  if (auto t = tuning(u, s)) return *t;
   if (u.rfind("AZ", 0) == 0) return az_el(s);
   if (u.rfind("MU", 0) == 0 || u.rfind("MD", 0) == 0) return mode(u.substr(0, 2), s.substr(2));
   if (u.rfind("FU", 0) == 0 || u.rfind("FD", 0) == 0) return frequency(u.substr(0, 2), s.substr(2));

@@ -84,6 +84,9 @@ class Interpreter {
   Reply refresh_now();
   Reply refresh_status();
   Reply radio_outcome(std::string_view cmd);
+  // trakbox's tuning commands (host_tuning.cpp): PB passband spot, OR/OT offsets, CT tone, ?T.
+  std::optional<Reply> tuning(std::string_view upper_line, std::string_view line);
+  Reply station(std::string_view arg);   // QTH
 
   tracker::StationLoop& station_;
   tracker::StationOps ops() const { return tracker::StationOps(station_); }

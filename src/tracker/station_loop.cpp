@@ -1,4 +1,5 @@
 #include "tracker/station_loop.h"
+#include "tracker/web_url.h"
 
 #include "store/drivers.h"
 
@@ -188,6 +189,12 @@ void StationLoop::adjust_correction(int direction) {
   model_.radio.corrections = tuner_.config().corrections;
 }
 
+void StationLoop::set_tone(int tenths_hz) {
+  tuner_.set_tone(tenths_hz);
+  if (tenths_hz > 0 || tone_sent_) radio_->set_ctcss_tone(tenths_hz);
+  tone_sent_ = tenths_hz > 0;
+}
+
 std::optional<std::chrono::milliseconds> StationLoop::radio_due_in() const {
   const auto due = tuner_.settle_due_s();
   if (!due) return std::nullopt;
@@ -353,6 +360,7 @@ std::string StationLoop::status_line() const {
                 model_.rotor_control ? "ON " : "OFF", rot.c_str(), store::driver_label(model_.radio_driver).c_str(),
                 rig.c_str());
   line += buf;
+  if (!web_page_url().empty()) line += " | " + web_page_url();
   return line;
 }
 

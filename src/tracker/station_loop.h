@@ -48,6 +48,10 @@ class StationLoop {
   // of what to track, recorded in model.tracking): the program saves the state here, so a restart
   // does what was asked whichever front end asked it.
   void on_settings_changed(std::function<void()> f) { settings_changed_ = std::move(f); }
+  // A front end without its own save changed the model through StationOps: save it now.
+  void settings_changed() {
+    if (settings_changed_) settings_changed_();
+  }
 
   // Direct antenna control (menus 6-6 and 8, host AZ/EL, Satrak GOTO): tracking stops, the antenna
   // goes where it is told (still inside the limits). Returns the commanded compass position.
@@ -91,6 +95,10 @@ class StationLoop {
   // The realtime + / - / 0 keys (direction +1, -1, 0): the Tuner's RIT, remembered in the model as
   // the correction for the satellite and mode (the caller saves the model).
   void adjust_correction(int direction);
+  // The database satellite the radio is tuned for (the followed one since its first tick), if any.
+  std::optional<int> tuned() const { return tuned_; }
+  // The tuned satellite's uplink CTCSS tone, sent now (tenths of Hz, 0 off); the caller stores it.
+  void set_tone(int tenths_hz);
   // How long until a link waiting for the knob to rest moves (tick then); nothing when none waits.
   std::optional<std::chrono::milliseconds> radio_due_in() const;
   Tracker& tracker() { return tracker_; }
