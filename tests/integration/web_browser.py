@@ -185,4 +185,5 @@ def main():
         w.stop()
 
 
-run_test(main)
+if __name__ == "__main__":
+    run_test(main)
