@@ -100,6 +100,10 @@ class StationApp {
   // when given, runs the menus for attached terminals on the event loop meanwhile (it is started
   // again after a SIGHUP). Returns the exit status; the caller saves.
   int run_service(const std::string& data_dir, const std::function<void()>& menus = {});
+  // The menus at a terminal: what the operator last chose to track (model.tracking, a satellite or
+  // multiple tracking), resumed as the service resumes it; nothing when no choice was made. The
+  // sentence to show, or "".
+  std::string resume_chosen_tracking();
 
  private:
   struct Impl;

@@ -127,7 +127,7 @@ OpResult StationOps::stop() {
 
 OpResult StationOps::park() {
   if (!station_.rotator().config().parking_enabled)
-    return OpResult::refuse("parking is off (menu 6-2 sets the parking position)");
+    return OpResult::refuse("parking is off (menu 6-4 sets the parking position)");
   OpResult r = rotor_control(true);
   station_.tracker().stop();
   station_.rotator().park();
