@@ -28,7 +28,7 @@ TEST_CASE("registry: names are unique, every model has a factory and a sane desc
                         "ft817", "ft818", "ft736", "icom", "kenwood", "yaesu", "cat", "hamlib", "rigctld", "sim"})
     CHECK_MESSAGE(find_radio_model(n) != nullptr, n);
   CHECK(find_radio_model("simulated") == find_radio_model("sim"));
-  CHECK(find_radio_model("IC9700") == nullptr);   // names are lower case, as listed
+  CHECK(find_radio_model("IC9700") == find_radio_model("ic9700"));   // any case, as Hamlib names are (issue 47)
 }
 
 TEST_CASE("registry: the satellite rigs' defaults") {
