@@ -60,8 +60,12 @@ def main():
         st = poll("SO-50 followed again at the terminal", lambda: (lambda s: s if s["tracking"]["followed"] == "SO-50"
                                                                    else None)(status(state)), 10)
         check(abs(st["station"]["lat_deg"] - 48.145833) < 1e-5, f"the stored station without --station: {st['station']}")
-        time.sleep(0.5)
+        # Menu 6-0 names the web page (the start message's URL is behind the full-screen menus).
+        p.stdin.write(b"6\r0\r")
+        p.stdin.flush()
+        time.sleep(1.5)
         said = open(os.path.join(state, "terminal.out"), "rb").read().decode(errors="replace")
+        check(f"Web page         http://127.0.0.1:{port}/" in said, f"6-0 shows the page: {said[-800:]}")
         check("Resumed: tracking SO-50, as last chosen" in said, f"the terminal says so: {said[-600:]}")
         print("terminal restart: SO-50 resumed; --station JN58td kept")
     finally:

@@ -7,7 +7,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import check, poll, run_test  # noqa: E402
+from _tbharness import check, poll, read_log, run_test  # noqa: E402
 from _web import WebStation  # noqa: E402
 
 RS44_CLOCK = "2026-05-21T10:57:00Z"   # a minute before RS-44's culmination over the factory station
@@ -50,6 +50,11 @@ def rs44_passband():
             check(status == want and isinstance(e.get("error"), str) and (sentence is None or e["error"] == sentence),
                   f"POST /api/v1/radio {body}: {status} {e}")
         check(tuning(w, "RS-44")["downlink_spot_hz"] == 435645000, "the refused bodies changed nothing")
+        # Every change asked from the page is in the log at info, with the client and what came of it.
+        log = read_log(w.state)
+        check('web: /api/v1/radio {"spot_hz":435645000} from 127.0.0.1: 200 spot 435645000 Hz down' in log and
+              "web: /api/v1/radio {\"spot_hz\":435700000} from 127.0.0.1: 409 spot 435700000 Hz is outside" in log,
+              "the page's actions logged: " + "\n".join(l for l in log.splitlines() if "web: /api" in l))
     finally:
         w.stop()
 
