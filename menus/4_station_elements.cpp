@@ -76,6 +76,8 @@ void edit_station_elements(term::Terminal& t, Services& s) {
   }
   st.lon_deg = edit_degrees(t, "Longitude [deg]   ", st.lon_deg, 'E', 'W', 180.0);
   st.height_m = edit_number(t, "Height    [m]     ", st.height_m, fmt("%.3f", st.height_m), -500.0, 9000.0);
+  t.line("  Rotor start: where the azimuth rotator's stop is (turn it fully counter-clockwise and read its");
+  t.line("  dial): N for a stop at north (a GS-232 reporting 0-360 or 0-450, a SPID), S for one at south");
   const std::string rs = edit_text(t, "Rotor start [N/S] ", station::to_string(st.rotor_start),
                                    [](const std::string& a) -> std::optional<std::string> {
                                      const char c = static_cast<char>(std::toupper(static_cast<unsigned char>(a[0])));
@@ -84,6 +86,8 @@ void edit_station_elements(term::Terminal& t, Services& s) {
                                    });
   st.rotor_start = std::toupper(static_cast<unsigned char>(rs[0])) == 'N' ? station::RotorStart::north
                                                                           : station::RotorStart::south;
+  t.line("  COM port baud rate: the speed of the serial line these menus run on (--tty), 1200 to 19200;");
+  t.line("  not the radio's or the rotator's (those are in --radio and --rotator)");
   st.com_baud = edit_int(t, "COM port baud rate", st.com_baud, 1200, 19200);
   while (!term::valid_terminal_baud(st.com_baud)) {
     t.line("  1200, 2400, 4800, 9600 or 19200");

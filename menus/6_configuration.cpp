@@ -11,6 +11,7 @@
 #include "store/model.h"
 #include "tracker/operations.h"
 #include "tracker/station_loop.h"
+#include "tracker/web_url.h"
 
 namespace tb::menus {
 
@@ -173,6 +174,7 @@ std::vector<std::string> configuration_lines(const store::Model& m) {
 
 void menu_6_0_display(term::Terminal& t, Services& s) {
   for (const auto& l : configuration_lines(s.model)) t.line(l);
+  if (!tracker::web_page_url().empty()) t.line(label("Web page") + tracker::web_page_url());
   t.write("Press any key to continue");
   t.flush();
   if (t.read_key() == term::kEndOfInput) throw InputClosed{};

@@ -156,6 +156,9 @@ std::string radio_line(Services& s) {
     const radio::Hz c = tu.config().corrections.at(tu.correction_key());
     line += " | correction " + std::string(c > 0 ? "+" : "") + std::to_string(c) + " Hz kept for " + tu.correction_key();
   }
+  // The TX offset set from the page or host mode (OT), kept the same way.
+  if (tu.xit_hz() != 0)
+    line += " | TX " + std::string(tu.xit_hz() > 0 ? "+" : "") + std::to_string(tu.xit_hz()) + " Hz";
   return line;
 }
 

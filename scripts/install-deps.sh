@@ -18,6 +18,8 @@ test_pkgs=(
   gpsd gpsd-clients
   # the web page's browser tests (tests/integration/web_browser.py)
   chromium chromium-driver python3-selenium
+  # a real iCalendar reader for passes --ics and /api/v1/passes.ics (tests/integration/passes_calendar.py)
+  python3-icalendar
   # TLS in front: the reverse proxy of packaging/nginx-trakbox.conf (tests/integration/web_tls.py)
   nginx openssl
   # the Debian package and its checks (scripts/package-check.sh), the completion test

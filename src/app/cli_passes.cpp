@@ -13,8 +13,10 @@
 #include "app/pass_plot.h"
 #include "util/text.h"
 #include "orbit/element_age.h"
+#include "orbit/pass_tools.h"
 #include "orbit/passes.h"
 #include "orbit/sgp4.h"
+#include "station/station.h"
 #include "rotator/pass_plan.h"
 #include "store/model.h"
 
@@ -27,18 +29,22 @@ const Command kPasses{
     "passes",
     "[ELEMENTS] [--sat NAME|NUMBER]... [--station LAT,LON[,HEIGHT_M]|LOCATOR]\n"
     "                      [--start ISO8601|now|+2h] [--hours H] [--min-el DEG] [--state DIR] [--dut1 S]\n"
-    "                      [--csv|--json] [--no-checksum]",
+    "                      [--with LAT,LON|LOCATOR] [--ics FILE] [--csv|--json] [--no-checksum]",
     "Passes over the station between --start and --start + --hours, sorted by AOS: AOS and LOS are\n"
     "the crossings of -2.0 deg elevation (the manual's AOS rule), TCA the time of maximum elevation.\n"
     "Without --sat, every satellite of the file. CSV and JSON columns: sat, aos_utc, tca_utc, los_utc,\n"
     "max_el_deg, aos_az_deg, los_az_deg. A pass already up at --start begins there; one still up at\n"
     "the end stops there (marked < and > in the table). Without ELEMENTS, the stored database (--state)\n"
-    "and, without --sat, its tracking list; without --station the stored station; from now for 24 h.",
+    "and, without --sat, its tracking list; without --station the stored station; from now for 24 h.\n"
+    "Only passes that rise above 0 deg are listed (--min-el raises that). --with a second station (a\n"
+    "QSO partner's grid): only the times both stations have the satellite above -2.0 deg.",
     {repeatable(kSatOption),
      kStationOption,
      {"start", "ISO8601|now|+2h", "start of the window, UTC, now (the default), or now plus an amount (+2h)"},
      {"hours", "H", "length of the window in hours (> 0, at most 8784; default 24)"},
-     {"min-el", "DEG", "only passes whose maximum elevation reaches DEG (default: all)"},
+     {"min-el", "DEG", "only passes whose maximum elevation reaches DEG (default: those that rise above 0)"},
+     {"with", "LAT,LON|LOCATOR", "a second station: only the times both see the satellite (AOS the later, LOS the earlier)"},
+     {"ics", "FILE", "also write the passes to FILE as an iCalendar (RFC 5545), one event a pass"},
      kDut1Option,
      kCsvOption,
      {"json", "", "a JSON array of pass objects"},
@@ -88,6 +94,26 @@ int plot_passes(const std::string& file, const std::vector<SatPass>& passes, con
     std::fprintf(said, "plot: %s  %s %s\n", name.c_str(), s.sat.c_str(), orbit::format_iso8601(s.pass.aos, 0).c_str());
   }
   if (passes.empty()) std::fprintf(said, "plot: no pass, no file\n");
+  return kExitOk;
+}
+
+// --ics FILE: the passes as an iCalendar, written whole (store's atomic write is not needed: a
+// calendar file is the operator's to import), announced on `said`.
+int write_ics(const std::string& file, const std::vector<SatPass>& passes, const orbit::Observer& station,
+              const std::optional<orbit::Observer>& with, std::FILE* said) {
+  std::vector<orbit::NamedPass> named;
+  for (const SatPass& s : passes) named.push_back({s.sat, s.pass});
+  std::string where = station::maidenhead_locator(station.lat_deg, station.lon_deg);
+  if (with) where += " and " + station::maidenhead_locator(with->lat_deg, with->lon_deg);
+  const std::string body = orbit::ical_passes(named, wall_now(), where);
+  std::FILE* f = std::fopen(file.c_str(), "wb");
+  const bool ok = f && std::fwrite(body.data(), 1, body.size(), f) == body.size();
+  if (f && std::fclose(f) != 0) f = nullptr;
+  if (!ok || !f) {
+    std::fprintf(stderr, "trakbox passes: --ics: %s cannot be written\n", file.c_str());
+    return kExitFailure;
+  }
+  std::fprintf(said, "ics: %s  %zu passes\n", file.c_str(), passes.size());
   return kExitOk;
 }
 
@@ -154,6 +180,13 @@ int run_passes(std::vector<std::string> args) {
   const auto hours = in.number("hours", false, "H, a number of hours > 0 (at most 8784)", Range{0.0, 8784.0, true})
                          .value_or(24.0);
   const auto min_el = in.number("min-el", false, "DEG, an elevation -90..90", Range{-90.0, 90.0});
+  std::optional<orbit::Observer> with;
+  if (const auto w = in.text("with", false, "")) {
+    const Parsed<orbit::Observer> p = parse_station_text(*w);
+    if (!p.value) in.fail("--with", p.error);
+    with = p.value;
+  }
+  const auto ics = in.text("ics", false, "");
   const orbit::EarthOrientation eo = read_dut1(in);
   const OutputFormat format = read_format(in);
   const auto plot = in.text("plot", false, "");
@@ -167,7 +200,8 @@ int run_passes(std::vector<std::string> args) {
   const UtcTime stop = orbit::add_seconds(*start, hours * 3600.0);
   orbit::PassOptions options;
   options.horizon_deg = orbit::kAosThresholdDeg;
-  if (min_el) options.min_max_elevation_deg = *min_el;
+  // Passes that rise (a maximum of -0.4 deg is no pass to plan for), or above --min-el.
+  options.min_max_elevation_deg = min_el ? *min_el : 1e-9;
   std::vector<SatPass> passes;
   int status = kExitOk;
   for (std::size_t set = 0; set < sats.size(); ++set) {
@@ -176,8 +210,9 @@ int run_passes(std::vector<std::string> args) {
     if (!check_window(e, sat, *start, stop)) status = kExitFailure;
     if (sat.init_error() != orbit::Sgp4Error::none) continue;
     const std::string label = text::trim(e.name).empty() ? std::to_string(e.catalog_number) : std::string(text::trim(e.name));
-    for (const orbit::Pass& p : orbit::find_passes(sat, *station, *start, stop, options, eo))
-      passes.push_back({label, p, set});
+    const auto found = with ? orbit::mutual_passes(sat, *station, *with, *start, stop, options)
+                            : orbit::find_passes(sat, *station, *start, stop, options, eo);
+    for (const orbit::Pass& p : found) passes.push_back({label, p, set});
   }
   std::stable_sort(passes.begin(), passes.end(),
                    [](const SatPass& a, const SatPass& b) { return a.pass.aos < b.pass.aos; });
@@ -230,6 +265,8 @@ int run_passes(std::vector<std::string> args) {
     }
   }
   std::fflush(stdout);
+  if (ics && write_ics(*ics, passes, *station, with, format == OutputFormat::table ? stdout : stderr) != kExitOk)
+    return kExitFailure;
   if (plot && plot_passes(*plot, passes, sats, *station, run.stored, format == OutputFormat::table ? stdout : stderr) !=
                   kExitOk)
     return kExitFailure;

@@ -3,6 +3,7 @@
 #include <cairo-svg.h>
 #include <cairo.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -169,8 +170,24 @@ void draw_lost(cairo_t* cr, const PassPicture& p) {
   if (open) cairo_stroke(cr);
 }
 
-// A dot at (az, el) and its label beside it, away from the centre.
-void mark(cairo_t* cr, double az, double el, const std::string& label) {
+}  // namespace
+
+LabelBox place_label(const std::vector<LabelBox>& placed, LabelBox want) {
+  auto overlaps = [](const LabelBox& a, const LabelBox& b) {
+    return a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h;
+  };
+  for (int tries = 0; tries < 16; ++tries) {
+    const auto hit = std::find_if(placed.begin(), placed.end(), [&](const LabelBox& p) { return overlaps(p, want); });
+    if (hit == placed.end()) break;
+    want.y = hit->y + hit->h;   // just below the one it would cover
+  }
+  return want;
+}
+
+namespace {
+
+// A dot at (az, el) and its label beside it, away from the centre, clear of the labels placed.
+void mark(cairo_t* cr, double az, double el, const std::string& label, std::vector<LabelBox>& placed) {
   const double c = kPlotCentre;
   double x, y;
   plot_position(az, std::max(el, -2.0), x, y);
@@ -181,7 +198,10 @@ void mark(cairo_t* cr, double az, double el, const std::string& label) {
   cairo_set_font_size(cr, 12);
   cairo_text_extents_t ext;
   cairo_text_extents(cr, label.c_str(), &ext);
-  show_text(cr, dx < 0 ? x + dx - ext.width : x + dx, y + (y > c ? 16 : -8), label);
+  const double base = y + (y > c ? 16 : -8);
+  const LabelBox box = place_label(placed, {dx < 0 ? x + dx - ext.width : x + dx, base - 12.0, ext.width, 14.0});
+  placed.push_back(box);
+  show_text(cr, box.x, box.y + 12.0, label);
 }
 
 // Azimuth ticks on the horizon every 10 degrees (longer every 30, numbered between the compass letters).
@@ -278,9 +298,10 @@ void draw(cairo_t* cr, const PassPicture& p) {
   draw_time_ticks(cr, p);
   // AOS, TCA, LOS: a dot and the time.
   const orbit::Pass& ps = p.pass;
-  mark(cr, ps.aos_az_deg, -2.0, "AOS " + hms(ps.aos));
-  mark(cr, ps.tca_az_deg, ps.max_el_deg, "TCA " + hms(ps.tca));
-  mark(cr, ps.los_az_deg, -2.0, "LOS " + hms(ps.los));
+  std::vector<LabelBox> placed;
+  mark(cr, ps.aos_az_deg, -2.0, "AOS " + hms(ps.aos), placed);
+  mark(cr, ps.tca_az_deg, ps.max_el_deg, "TCA " + hms(ps.tca), placed);
+  mark(cr, ps.los_az_deg, -2.0, "LOS " + hms(ps.los), placed);
 
   // Title and legend.
   cairo_set_source_rgb(cr, 0, 0, 0);

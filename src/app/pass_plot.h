@@ -31,6 +31,14 @@ inline constexpr double kPlotCentre = 320; // x and y of the zenith
 // Pixel position of az/el on the plot (elevations below 0 lie outside the horizon circle).
 void plot_position(double az_deg, double el_deg, double& x, double& y);
 
+// A label's box (x, y its top left; pixels). place_label: where `want` goes so that it overlaps
+// none of `placed`: moved down by its own height until it is clear (AOS, TCA and LOS of a short
+// pass near the horizon would otherwise be written over each other).
+struct LabelBox {
+  double x = 0, y = 0, w = 0, h = 0;
+};
+LabelBox place_label(const std::vector<LabelBox>& placed, LabelBox want);
+
 // The reason a --plot name cannot be written (it must end .png or .svg, any case); nothing when it can.
 std::optional<std::string> plot_name_problem(const std::string& path);
 

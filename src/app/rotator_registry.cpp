@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "util/text.h"
+
 namespace tb::app {
 
 namespace {
@@ -67,10 +69,13 @@ std::span<const RotatorKind> rotator_kinds() { return kKinds; }
 
 RotatorParse parse_rotator(std::string_view text) {
   const std::string_view name = text.substr(0, text.find(':'));
+  // The kind in any case ("Hamlib:603:...", as --radio takes "IC9700:..."); parsed as written lower.
+  const std::string lower = text::lower(name);
+  const std::string spelled = lower + std::string(text.substr(name.size()));
   for (const RotatorKind& k : kKinds) {
-    if (k.name != name) continue;
+    if (k.name != lower) continue;
     RotatorParse out;
-    if (auto e = k.parse(text, out.choice)) return {{}, *e};
+    if (auto e = k.parse(spelled, out.choice)) return {{}, *e};
     out.choice.kind = &k;
     return out;
   }

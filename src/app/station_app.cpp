@@ -503,6 +503,17 @@ void StationApp::Impl::park_before_leaving(StationApp& app) {
 
 void StationApp::on_hangup(std::function<void()> f) { impl_->on_hangup = std::move(f); }
 
+std::string StationApp::resume_chosen_tracking() {
+  Impl& m = *impl_;
+  if (m.model.tracking.mode == store::TrackingChoice::Mode::list) return "";
+  m.start_stored_tracking();
+  const tracker::SatNow* f = m.tracker.followed();
+  if (m.tracker.mode() == tracker::Mode::off) return "";
+  return m.tracker.mode() == tracker::Mode::multi ? "Resumed: multiple tracking, as last chosen"
+                                                  : "Resumed: tracking " + (f ? f->name : m.model.tracking.name) +
+                                                        ", as last chosen";
+}
+
 int StationApp::run_service(const std::string& data_dir, const std::function<void()>& menus) {
   Impl& m = *impl_;
   m.unattended = true;

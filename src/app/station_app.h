@@ -104,6 +104,11 @@ class StationApp {
   // Also run on each SIGHUP of run_service, after the data files (the endpoints' secret files).
   void on_hangup(std::function<void()> f);
 
+  // The menus at a terminal: what the operator last chose to track (model.tracking, a satellite or
+  // multiple tracking), resumed as the service resumes it; nothing when no choice was made. The
+  // sentence to show, or "".
+  std::string resume_chosen_tracking();
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;

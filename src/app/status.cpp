@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include <nlohmann/json.hpp>
@@ -76,9 +77,14 @@ nlohmann::json antenna_json(StationApp& app) {
   if (const auto pos = st.antenna()) a["position"] = {{"az_deg", pos->az}, {"el_deg", pos->el}};
   else a["position"] = nullptr;
   const tracker::Decision& d = app.tracker().last_decision();
-  a["action"] = antenna_action(d.antenna);
-  a["target"] = d.antenna == tracker::Decision::Antenna::hold ? nlohmann::json(nullptr)
-                                                               : nlohmann::json{{"az_deg", d.az_deg}, {"el_deg", d.el_deg}};
+  // With parking off a "park" decision moves nothing (Controller::park): the antenna holds, and
+  // no parking position (0/0) is shown as wanted.
+  const bool parks = st.rotator().config().parking_enabled;
+  const bool holds = d.antenna == tracker::Decision::Antenna::hold || (d.antenna == tracker::Decision::Antenna::park && !parks);
+  a["action"] = holds ? "hold" : antenna_action(d.antenna);
+  a["target"] = holds ? nlohmann::json(nullptr) : nlohmann::json{{"az_deg", d.az_deg}, {"el_deg", d.el_deg}};
+  a["parking_enabled"] = parks;
+  a["az_travel_deg"] = st.rotator().config().az_travel_deg;
   return a;
 }
 
@@ -103,6 +109,33 @@ nlohmann::json link_json(const radio::RadioStatus& s, radio::Link link, std::opt
           {"message", s.fault ? s.message : std::string()}};
 }
 
+// What the radio is tuned to for the satellite it follows: each link's spot (the satellite's
+// frame), Doppler and dial, the operator's offsets, the tone and a transponder's passbands; null
+// when nothing is tuned.
+nlohmann::json tuning_json(StationApp& app) {
+  const auto tuned = app.station().tuned();
+  if (!tuned || static_cast<std::size_t>(*tuned) >= app.model().db.satellites.size()) return nullptr;
+  const radio::Tuner& t = app.station().tuner();
+  const radio::Tuning& now = t.last_tuning();
+  const auto band = radio::transponder_of(t.satellite());
+  const int tone = t.satellite().ctcss_tenths_hz;
+  return {{"satellite", app.model().db.satellites[static_cast<std::size_t>(*tuned)].name()},
+          {"downlink_spot_hz", t.satellite().has_downlink() ? nlohmann::json(t.downlink_spot_hz()) : nlohmann::json(nullptr)},
+          {"uplink_spot_hz", t.satellite().has_uplink() ? nlohmann::json(t.uplink_spot_hz()) : nlohmann::json(nullptr)},
+          {"downlink_doppler_hz", std::lround(now.downlink_doppler_hz)},
+          {"uplink_doppler_hz", std::lround(now.uplink_doppler_hz)},
+          {"downlink_dial_hz", hz_or_null(now.downlink_radio_hz)},
+          {"uplink_dial_hz", hz_or_null(now.uplink_radio_hz)},
+          {"rx_offset_hz", t.rit_hz()},
+          {"tx_offset_hz", t.xit_hz()},
+          {"tx_key", t.tx_correction_key().empty() ? nlohmann::json(nullptr) : nlohmann::json(t.tx_correction_key())},
+          {"tone_hz", tone > 0 ? nlohmann::json(tone / 10.0) : nlohmann::json(nullptr)},
+          {"passband", !band ? nlohmann::json(nullptr)
+                             : nlohmann::json{{"downlink", {band->downlink_low_hz, band->downlink_high_hz}},
+                                              {"uplink", {band->uplink_low_hz, band->uplink_high_hz}},
+                                              {"inverting", band->inverting}}}};
+}
+
 // The radio's links, each from the radio that serves it (two radios: menu 6-7's U), and the
 // dial-follow correction (the RIT) kept for the satellite and mode. Additive to the document.
 void add_links(StationApp& app, const radio::RadioStatus& both, nlohmann::json& out) {
@@ -120,6 +153,7 @@ void add_links(StationApp& app, const radio::RadioStatus& both, nlohmann::json& 
                        {"hz", t.rit_hz()},
                        {"remembered", t.correction_remembered()},
                        {"dial_follow", t.dial_follow_active()}};
+  out["tuning"] = tuning_json(app);
 }
 
 nlohmann::json radio_json(StationApp& app) {

@@ -43,6 +43,7 @@
 #include "tracker/elements_refresh.h"
 #include "tracker/events.h"
 #include "tracker/log_ops.h"
+#include "tracker/web_url.h"
 #include "tracker/station_loop.h"
 #include "web/access.h"
 #include "web/api.h"
@@ -327,6 +328,7 @@ void run_front_end(StationApp& app, const TrackerConfig& c, const Startup& s, te
     else {
       menus::sign_on(terminal, services);
       for (const auto& line : s.drivers_said) terminal.line(line);
+      if (const std::string resumed = app.resume_chosen_tracking(); !resumed.empty()) terminal.line(resumed);
       menus::main_menu(terminal, services);
     }
   } catch (const menus::InputClosed&) {
@@ -490,6 +492,7 @@ std::optional<std::string> start_web(StationApp& app, const TrackerConfig& c, Se
   }
   const std::string host = c.listen.find(':') != std::string::npos ? "[" + c.listen + "]" : c.listen;
   out.web_url = "http://" + host + ":" + std::to_string(out.web->port()) + "/";
+  tracker::web_page_url() = out.web_url;   // the status line and menu 6-0 show it behind the full-screen menus
   app.log().info("web: the station's page is at {}", out.web_url);
   std::fprintf(stderr, "trakbox: the station's page: %s\n", out.web_url.c_str());
   return std::nullopt;
@@ -521,6 +524,12 @@ std::optional<std::string> open_udp_events(StationApp& app, const TrackerConfig&
 // (stored_drivers.h; what that says goes to the log and where the operator sees it) and the GPS.
 std::optional<std::string> apply_command_line(TrackerConfig& c, Startup& startup, spdlog::logger& log) {
   if (c.cross_limit_sector) startup.model.rotator.cross_limit_sector = *c.cross_limit_sector;
+  if (c.station) {   // typed in, as menu 4 would: the GPS's position no longer stands for it
+    startup.model.station.lat_deg = c.station->lat_deg;
+    startup.model.station.lon_deg = c.station->lon_deg;
+    startup.model.station.height_m = c.station->height_m;
+    startup.model.gps.position_from_gps = false;
+  }
   if (c.az_travel_deg) {
     // Checked with the stored rotator settings before anything is kept (limits, parking, span).
     rotator::RotatorConfig next = startup.model.rotator;
@@ -648,7 +657,7 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   app.start(std::chrono::milliseconds(c.tick_ms));
   // Stored options given on the command line are stored now, not only at the next save.
   if (startup.ram_lost || startup.fresh || c.rotor_control || c.event_min_el_deg || c.az_travel_deg || c.handback_s || c.exclusive ||
-      c.satnogs_station || c.satnogs_url)
+      c.satnogs_station || c.satnogs_url || c.station)
     app.save();
   log->info("trakbox {} started, state {}", kVersion, file.path().string());
   stopped_line.started = true;

@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include "app/build_info.h"
+#include "app/cli_defaults.h"
 #include "app/rotator_registry.h"
 #include "app/station_socket.h"
 #include "gps/gpsd_client.h"
@@ -83,6 +84,8 @@ std::vector<OptionSpec> tracker_option_specs() {
       {"cross-limit-sector", "yes|no", "when the rotator limits split its travel (the rotor stop inside them): yes, "
                                        "they are pointing limits the antenna may cross between passes; no (the "
                                        "factory setting), they are barriers (stored)"},
+      {"station", "LAT,LON[,HEIGHT_M]|LOCATOR", "the station's position (menu 4): degrees north and east, metres above "
+                                                "the WGS-84 ellipsoid, or a Maidenhead locator's centre (stored)"},
       {"az-travel", "DEG", "azimuth travel from the rotor stop, 360 to 720: 360 (the factory setting), 450 for an "
                            "overlap rotator such as a G-5500 or a GS-232 in 450-degree mode (stored)"},
       {"rotor-control", "on|off", "on: the antenna follows the satellite tracked, from the start (a service moves "
@@ -398,6 +401,11 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
   if (const auto x = o.value("cross-limit-sector")) {
     if (*x == "yes" || *x == "no") c.cross_limit_sector = *x == "yes";
     else r.fail("--cross-limit-sector", "expected yes or no; found '" + *x + "'");
+  }
+  if (const auto x = o.value("station")) {
+    const Parsed<orbit::Observer> p = parse_station_text(*x);
+    if (p.value) c.station = TrackerConfig::Position{p.value->lat_deg, p.value->lon_deg, p.value->height_m};
+    else r.fail("--station", p.error);
   }
   c.az_travel_deg = r.number("az-travel", false, "degrees, 360 to 720",
                              Range{rotator::limits::kTravelMinDeg, rotator::limits::kTravelMaxDeg});

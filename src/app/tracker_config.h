@@ -86,6 +86,11 @@ struct TrackerConfig {
   // --cross-limit-sector yes|no: whether limits that split the rotator's travel may be crossed
   // between passes (RotatorConfig::cross_limit_sector); stored in the state when given.
   std::optional<bool> cross_limit_sector;
+  // --station LAT,LON[,HEIGHT_M]|LOCATOR: the station's position (menu 4's), stored when given.
+  struct Position {
+    double lat_deg = 0.0, lon_deg = 0.0, height_m = 0.0;
+  };
+  std::optional<Position> station;
   // --az-travel DEG: the rotator's azimuth travel from its stop (RotatorConfig::az_travel_deg: 450
   // for an overlap rotator); stored in the state when given.
   std::optional<double> az_travel_deg;

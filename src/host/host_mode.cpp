@@ -172,6 +172,11 @@ std::vector<std::string> Interpreter::help() {
       "LOG CALL [GRID] [RST]  log a QSO of this pass  reply LOGGED n CALL SAT TIME",
       "?C           who holds the antenna and radio   reply CONTROL ANTENNA ... RADIO ...",
       "STANDBY ON   standby (STANDBY OFF ends it)     nothing moves by itself",
+      "PBxxxxxxxxx  passband: the downlink spot, Hz   PB435640000 (a linear transponder)",
+      "ORxxx OTxxx  RX / TX offset in Hz, kept        OR+120  OT-300  (OR0 OT0 reset)",
+      "CTxx.x       uplink CTCSS tone in Hz, 0 none   CT67.0",
+      "?T           the tuning                        reply TUNE SPOT ... RX ... TX ... TONE ...",
+      "QTHxxx       the station's position            QTH JN58td  or  QTH 48.15,11.58,520",
       "?            this list",
       "Q            quit to the main menu",
   };
@@ -197,6 +202,7 @@ Reply Interpreter::execute(std::string_view line) {
     if (!done.ok()) return error("STANDBY: " + *done.refusal);
     return Reply{{done.note}, true, false};
   }
+  if (auto t = tuning(u, s)) return *t;
   if (u.rfind("AZ", 0) == 0) return az_el(s);
   if (u.rfind("MU", 0) == 0 || u.rfind("MD", 0) == 0) return mode(u.substr(0, 2), s.substr(2));
   if (u.rfind("FU", 0) == 0 || u.rfind("FD", 0) == 0) return frequency(u.substr(0, 2), s.substr(2));

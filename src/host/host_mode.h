@@ -85,6 +85,9 @@ class Interpreter {
   Reply refresh_status();
   Reply control();
   Reply radio_outcome(std::string_view cmd);
+  // trakbox's tuning commands (host_tuning.cpp): PB passband spot, OR/OT offsets, CT tone, ?T.
+  std::optional<Reply> tuning(std::string_view upper_line, std::string_view line);
+  Reply station(std::string_view arg);   // QTH
 
   tracker::StationLoop& station_;
   // Host mode acts as the operator "host" (tracker/control.h). A move refused because an outside

@@ -169,6 +169,9 @@ struct RadioConfig {
   // Corrections the operator found (realtime + / -) per satellite and downlink mode, "SO-50 FM" ->
   // Hz; applied when that satellite is next selected, forgotten with 0.
   std::map<std::string, Hz> corrections;
+  // The uplink's (TX) corrections, the same way: "RS-44 USB" -> Hz added to the uplink radio's
+  // frequency (the page's and host mode's TX offset), applied when that satellite is next selected.
+  std::map<std::string, Hz> tx_corrections;
 
   bool operator==(const RadioConfig&) const = default;
 };

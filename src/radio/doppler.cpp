@@ -40,7 +40,7 @@ Hz dial_tolerance_hz(double doppler_change_per_s_hz, Hz step) {
   return 2 * step + static_cast<Hz>(std::ceil(std::fabs(doppler_change_per_s_hz)));
 }
 
-Tuning compute_tuning(const SatelliteRadio& sat, const Corrections& corr, double rr, Hz rit_hz) {
+Tuning compute_tuning(const SatelliteRadio& sat, const Corrections& corr, double rr, Hz rit_hz, Hz xit_hz) {
   Tuning t;
   if (sat.has_downlink()) {
     t.downlink_doppler_hz = downlink_heard_hz(sat.downlink_hz, rr) - static_cast<double>(sat.downlink_hz);
@@ -53,7 +53,7 @@ Tuning compute_tuning(const SatelliteRadio& sat, const Corrections& corr, double
   }
   if (sat.has_uplink()) {
     t.uplink_doppler_hz = uplink_send_hz(sat.uplink_hz, rr) - static_cast<double>(sat.uplink_hz);
-    const double radio = static_cast<double>(sat.uplink_hz + sat.uplink_offset_hz) +
+    const double radio = static_cast<double>(sat.uplink_hz + sat.uplink_offset_hz + xit_hz) +
                          (corr.uplink ? t.uplink_doppler_hz : 0.0);
     t.uplink_radio_hz = quantise(radio);
   }
@@ -77,9 +77,36 @@ void Tuner::select(const SatelliteRadio& sat, std::string_view name) {
   updates_ = 0;
   waiting_.reset();
   correction_key_.clear();
+  tx_correction_key_.clear();
+  xit_hz_ = 0;
   if (name.empty()) return;
   correction_key_ = std::string(name) + " " + to_string(sat.downlink_mode);
+  tx_correction_key_ = std::string(name) + " " + to_string(sat.uplink_mode);
   if (const auto it = config_.corrections.find(correction_key_); it != config_.corrections.end()) move_rit(it->second);
+  if (const auto it = config_.tx_corrections.find(tx_correction_key_); it != config_.tx_corrections.end())
+    xit_hz_ = it->second;
+}
+
+void Tuner::set_offsets(std::optional<Hz> rx_hz, std::optional<Hz> tx_hz) {
+  if (rx_hz && *rx_hz != rit_hz_) move_rit(*rx_hz - rit_hz_);
+  if (!tx_hz) return;
+  xit_hz_ = *tx_hz;
+  if (!tx_correction_key_.empty()) {
+    if (xit_hz_ != 0) config_.tx_corrections[tx_correction_key_] = xit_hz_;
+    else config_.tx_corrections.erase(tx_correction_key_);
+  }
+  sent_up_.reset();   // goes out at the next update whatever the Doppler step
+}
+
+bool Tuner::set_spot(Hz downlink_spot_hz) {
+  const auto t = transponder_of(sat_);
+  if (!t || !t->downlink_inside(downlink_spot_hz)) return false;
+  sat_.downlink_hz = downlink_spot_hz;
+  sat_.uplink_hz = t->uplink_for(downlink_spot_hz);
+  waiting_.reset();
+  sent_down_.reset();
+  sent_up_.reset();
+  return true;
 }
 
 Hz Tuner::doppler_step(Mode mode) const {
@@ -135,7 +162,7 @@ bool Tuner::turn(bool downlink, Hz radio_hz, double rr, std::optional<double> no
   } else {
     // The radio: RF / (1 - rr/c) + offset with the uplink correction on, RF + offset without.
     const double factor = config_.uplink_correction ? 1.0 - rr / kSpeedOfLightKmS : 1.0;
-    spot = static_cast<Hz>(std::llround(static_cast<double>(radio_hz - sat_.uplink_offset_hz) * factor));
+    spot = static_cast<Hz>(std::llround(static_cast<double>(radio_hz - sat_.uplink_offset_hz - xit_hz_) * factor));
     if (t && !near_band(spot, t->uplink_low_hz, t->uplink_high_hz)) return false;
     sat_.uplink_hz = spot;
   }
@@ -212,7 +239,7 @@ TuneCommands Tuner::compute(double elevation_deg, double rr) {
   previous_tuning_ = tuning_;
   ++updates_;
   // On a followed transponder the + / - keys moved the spot itself (move_rit): no RIT on top.
-  tuning_ = compute_tuning(sat_, corr, rr, dial_follow_active() ? 0 : rit_hz_);
+  tuning_ = compute_tuning(sat_, corr, rr, dial_follow_active() ? 0 : rit_hz_, xit_hz_);
 
   TuneCommands cmd;
   const bool aos_now = at_aos(elevation_deg);
@@ -259,7 +286,7 @@ TuneCommands Tuner::compute(double elevation_deg, double rr) {
   const MicClickConfig& mc = config_.mic_click;
   std::optional<Hz> down = tuning_.downlink_radio_hz;
   if (mc.auto_up_at_aos && send_down) {
-    const Tuning nominal = compute_tuning(sat_, Corrections{corr.uplink, DownlinkCorrection::off}, rr, rit_hz_);
+    const Tuning nominal = compute_tuning(sat_, Corrections{corr.uplink, DownlinkCorrection::off}, rr, rit_hz_, xit_hz_);
     cmd.aos_pulse_correction_hz = *tuning_.downlink_radio_hz - *nominal.downlink_radio_hz;
     down = nominal.downlink_radio_hz;
   }

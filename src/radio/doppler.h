@@ -81,7 +81,10 @@ struct Tuning {
   double uplink_doppler_hz = 0.0;     // RF: sent - F2 (0 without an uplink)
 };
 Tuning compute_tuning(const SatelliteRadio& sat, const Corrections& corr, double range_rate_km_s,
-                      Hz rit_hz = 0);
+                      Hz rit_hz = 0, Hz xit_hz = 0);
+
+// The offsets an operator may set (the page, host mode): at most this far from the computed value.
+inline constexpr Hz kMaxOffsetHz = 100'000;
 
 // What to tell the radio on one tracking tick. Empty when nothing changed.
 struct TuneCommands {
@@ -141,6 +144,20 @@ class Tuner {
   void rit_down() { move_rit(-kRitStepHz); }
   void rit_zero() { move_rit(-rit_hz_); }
   Hz rit_hz() const { return rit_hz_; }
+  // The operator's offsets (the page's RX and TX, host mode's OFFSET): the RX offset is the RIT
+  // above (on a transponder followed by the dial it moves the spot, as + / - do); the TX offset is
+  // added to the uplink radio's frequency. Both are remembered per satellite and mode
+  // (RadioConfig::corrections, tx_corrections); 0 forgets. |offset| <= kMaxOffsetHz (the caller checks).
+  void set_offsets(std::optional<Hz> rx_hz, std::optional<Hz> tx_hz);
+  Hz xit_hz() const { return xit_hz_; }
+  // The key of the TX correction ("RS-44 USB": the uplink's mode), empty without a name.
+  const std::string& tx_correction_key() const { return tx_correction_key_; }
+  // A linear transponder's passband position: the downlink spot moves to downlink_spot_hz and the
+  // uplink to its pair (the transponder's rule). False, nothing changed, without passbands or when
+  // the spot is outside the downlink passband.
+  bool set_spot(Hz downlink_spot_hz);
+  // The uplink's CTCSS tone of the selected satellite (tenths of Hz, 0: none).
+  void set_tone(int tenths_hz) { sat_.ctcss_tenths_hz = tenths_hz; }
 
   // Dial follow: on for a CAT satellite with passbands while RadioConfig::dial_follow is set.
   bool dial_follow_active() const;
@@ -208,6 +225,8 @@ class Tuner {
   // the next update.
   std::optional<bool> moved_uplink_;
   std::string correction_key_;
+  std::string tx_correction_key_;
+  Hz xit_hz_ = 0;
 
   RadioConfig config_;
   SatelliteRadio sat_;

@@ -7,6 +7,7 @@
 #include "radio/factory.h"
 #include "radio/registry_rows.h"
 #include "radio/simulated.h"
+#include "util/text.h"
 
 namespace tb::radio {
 
@@ -52,7 +53,9 @@ std::span<const RadioModel> radio_models() {
 
 const RadioModel* find_radio_model(std::string_view name) {
   // "simulated" is the rotator's word for it, taken here too.
-  const std::string_view key = std::string_view("simulated") == name ? std::string_view("sim") : name;
+  // Any case: "IC9700" is the ic9700 (the names are lower case; Hamlib's are matched ignoring case too).
+  const std::string lower = text::lower(name);
+  const std::string_view key = lower == "simulated" ? std::string_view("sim") : std::string_view(lower);
   const auto models = radio_models();
   const auto it = std::ranges::find(models, key, &RadioModel::name);
   return it == models.end() ? nullptr : &*it;

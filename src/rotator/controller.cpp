@@ -547,8 +547,11 @@ void Controller::tick_degrees(DegreeRotator& dr, orbit::UtcTime now) {
     }
     cmd.az = ok ? best : ar.clamp(cmd.az);
   }
-  const double half_az = 0.5 * model_.deg_per_count(Axis::az), half_el = 0.5 * model_.deg_per_count(Axis::el);
-  const bool changed = !sent_ || std::abs(cmd.az - sent_->az) > half_az || std::abs(cmd.el - sent_->el) > half_el;
+  // Sent only when it moved beyond the dead band from the last sent (half a count when exact): a GS-232B
+  // rounding to whole degrees had been sent the same W again and again.
+  auto band_deg = [&](Axis a) { return (loop(a).exact ? 0.5 : std::max(0.5, 1.0 * model_.dead_band(a))) * model_.deg_per_count(a); };
+  const bool changed = !sent_ || std::abs(cmd.az - sent_->az) > band_deg(Axis::az) ||
+                       std::abs(cmd.el - sent_->el) > band_deg(Axis::el);
   const bool idle = motion.az == Drive::stop && motion.el == Drive::stop;
   if (changed || (idle && now - sent_at_ >= opt_.resend)) {
     dr.set_position(cmd);

@@ -8,6 +8,7 @@
 
 #include "rotator/easycomm_rotator.h"
 #include "rotator/pst_rotator.h"
+#include "rotator/hamlib.h"
 #include "util/host_port.h"
 #include "util/text.h"
 
@@ -43,7 +44,10 @@ SpecResult parse_hamlib_spec(std::string_view text) {
   auto f = text::split(rest, ':');
   if (rest.empty() || f[0].empty()) return fail(text, "missing MODEL; " + usage);
   auto model = number(f[0]);
-  if (!model) return fail(text, "MODEL '" + std::string(f[0]) + "' is not a Hamlib model number (see `rotctl -l`); " + usage);
+  if (!model) model = hamlib_rotator_model_by_name(f[0]);   // hamlib:GS-232B, as for radios
+  if (!model)
+    return fail(text, "MODEL '" + std::string(f[0]) + "' is neither a Hamlib rotator model number nor the name of one "
+                      "(see `rotctl -l`); " + usage);
   if (f.size() < 2 || f[1].empty()) return fail(text, "missing DEVICE; " + usage);
   RotatorSpec s;
   s.kind = RotatorSpec::Kind::hamlib;
@@ -58,6 +62,9 @@ SpecResult parse_hamlib_spec(std::string_view text) {
     dev_end = f.size() - 1;
   } else if (f.size() >= 3 && f.back().empty()) {
     return fail(text, "empty BAUD; " + usage);
+  } else if (f.size() >= 4 && number(f[f.size() - 2])) {
+    // DEVICE:9600:x: something after the speed is no part of the device.
+    return fail(text, "'" + std::string(f.back()) + "' after BAUD " + std::string(f[f.size() - 2]) + "; " + usage);
   }
   for (std::size_t i = 1; i < dev_end; ++i) s.device += (i > 1 ? ":" : "") + std::string(f[i]);
   if (!hamlib_rotator_model_exists(s.model))

@@ -10,6 +10,8 @@
 #include <ctime>
 #include <mutex>
 #include <pthread.h>
+#include <string>
+#include <vector>
 
 #include "util/sigpipe.h"
 
@@ -167,6 +169,46 @@ bool hamlib_rotator_model_exists(int model) {
   if (!rot) return false;
   rot_cleanup(rot);
   return true;
+}
+
+namespace {
+std::string name_key(std::string_view s) {
+  std::string k;
+  for (const char c : s)
+    if ((c >= '0' && c <= '9') || (c >= 'a' && c <= 'z')) k += c;
+    else if (c >= 'A' && c <= 'Z') k += static_cast<char>(c - 'A' + 'a');
+  return k;
+}
+}  // namespace
+
+std::optional<int> hamlib_rotator_model_by_name(std::string_view name) {
+  struct Known {
+    int model;
+    std::string key, full_key;
+  };
+  static const std::vector<Known> known = [] {
+    quiet_hamlib();
+    rot_load_all_backends();
+    std::vector<Known> out;
+    rot_list_foreach(
+        [](const rot_caps* caps, void* data) -> int {
+          const std::string mfg = caps->mfg_name ? caps->mfg_name : "", model = caps->model_name ? caps->model_name : "";
+          static_cast<std::vector<Known>*>(data)->push_back(
+              {static_cast<int>(caps->rot_model), name_key(model), name_key(mfg + model)});
+          return 1;
+        },
+        &out);
+    return out;
+  }();
+  const std::string want = name_key(name);
+  if (want.empty()) return std::nullopt;
+  std::optional<int> found;
+  for (const Known& k : known)
+    if (k.key == want || k.full_key == want) {
+      if (found && *found != k.model) return std::nullopt;   // two of that name: the number decides
+      found = k.model;
+    }
+  return found;
 }
 
 }  // namespace tb::rotator

@@ -9,7 +9,9 @@
 // terminal.
 #pragma once
 #include <chrono>
+#include <optional>
 #include <string>
+#include <string_view>
 
 #include "rotator/worker.h"
 
@@ -33,5 +35,9 @@ class HamlibRotator final : public WorkerRotator {
 
 // True when Hamlib knows a rotator model of this number.
 bool hamlib_rotator_model_exists(int model);
+// The model number of a Hamlib rotator by its name ("GS-232B", "gs232b", "Yaesu GS-232B": case,
+// blanks and dashes ignored; the maker's name may lead), or nothing when Hamlib has no such model
+// or more than one of that name.
+std::optional<int> hamlib_rotator_model_by_name(std::string_view name);
 
 }  // namespace tb::rotator

@@ -253,6 +253,7 @@ json to_json(const Model& m) {
                 {"doppler_step_ssb_hz", rc.doppler_step_ssb_hz},
                 {"doppler_step_fm_hz", rc.doppler_step_fm_hz},
                 {"corrections", rc.corrections},
+                {"tx_corrections", rc.tx_corrections},
                 {"parking",
                  {{"enabled", rc.parking.enabled},
                   {"rx_hz", rc.parking.rx_hz},
@@ -413,6 +414,12 @@ radio::RadioConfig radio_from(const json& j) {
     if (!cs.is_object()) bad(path(w, "corrections"), "expected an object of \"SATELLITE MODE\": Hz");
     for (const auto& [key, value] : cs.items())
       c.corrections[key] = integer(cs, path(w, "corrections"), key.c_str(), -1'000'000, 1'000'000);
+  }
+  if (r.contains("tx_corrections")) {
+    const json& cs = field(r, w, "tx_corrections");
+    if (!cs.is_object()) bad(path(w, "tx_corrections"), "expected an object of \"SATELLITE MODE\": Hz");
+    for (const auto& [key, value] : cs.items())
+      c.tx_corrections[key] = integer(cs, path(w, "tx_corrections"), key.c_str(), -1'000'000, 1'000'000);
   }
   if (r.contains("parking")) {
     const std::string wp = w + ".parking";

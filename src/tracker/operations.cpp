@@ -149,7 +149,7 @@ OpResult StationOps::stop() {
 
 OpResult StationOps::park() {
   if (!station_.rotator().config().parking_enabled)
-    return OpResult::refuse("parking is off (menu 6-2 sets the parking position)");
+    return OpResult::refuse("parking is off (menu 6-4 sets the parking position)");
   if (auto no = ask(Resource::antenna)) return *no;
   OpResult r = rotor_control(true);
   if (!outside()) station_.tracker().stop();  // an outside client's park suspends tracking, as a move does

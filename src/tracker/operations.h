@@ -65,7 +65,7 @@ class StationOps {
   // keeps its Doppler (unless Doppler is off): Stop stops the rotator only.
   OpResult stop();
   // Tracking stops and the antenna goes to its parking position; rotor control is switched on
-  // (parking is a movement). Refused when parking is off (menu 6-2).
+  // (parking is a movement). Refused when parking is off (menu 6-4).
   OpResult park();
   // The E key.
   OpResult rotor_control(bool on);
@@ -88,6 +88,20 @@ class StationOps {
   // tracking yields, as to a SatNOGS observation; stored. Refused when it ends before it starts or
   // is over, or when 64 are kept; those already over are forgotten.
   OpResult reserve(orbit::UtcTime start, orbit::UtcTime end, std::string note);
+  // Tuning the radio (the page, host mode, menu 1), on the satellite the radio is tuned for:
+  //  - tune_spot: a linear transponder's passband position, the downlink's spot in the satellite's
+  //    frame (inside its downlink passband); the uplink moves to the pair by the transponder's rule.
+  //  - tune_offsets: the operator's RX and TX offsets in Hz (nothing: that one stays), at most
+  //    radio::kMaxOffsetHz either way, kept per satellite and mode for its next pass (0 forgets);
+  //    they are the corrections the + / - keys and the dial follow keep (model.radio.corrections).
+  //  - tune_tone: the uplink's CTCSS tone in Hz (60.0 to 300.0, tenths; 0 off), sent and stored in
+  //    the satellite's radio record.
+  OpResult tune_spot(std::int64_t downlink_hz);
+  OpResult tune_offsets(std::optional<std::int64_t> rx_hz, std::optional<std::int64_t> tx_hz);
+  OpResult tune_tone(double hz);
+  // The station's position (menu 4's; --station, the page, host QTH): latitude -90..90, longitude
+  // -180..180, height -500..9000 m; stored, the geometry redone, GPS no longer its source.
+  OpResult set_station(double lat_deg, double lon_deg, double height_m);
   // The element refresh from the stored sources, now (menu 3-5 R, host RF).
   OpResult refresh_elements(std::int64_t now_unix);
 

@@ -1,4 +1,5 @@
 #include "tracker/station_loop.h"
+#include "tracker/web_url.h"
 
 #include "store/drivers.h"
 
@@ -132,6 +133,30 @@ void StationLoop::follow_radio(int db_index, const orbit::Observation& obs) {
     tuned_ = db_index;
     if (sat.ctcss_tenths_hz > 0 || tone_sent_) radio_->set_ctcss_tone(sat.ctcss_tenths_hz);
     tone_sent_ = sat.ctcss_tenths_hz > 0;
+    // CAT only at AOS: the radio is preset now to the chosen satellite's frequencies and modes (with
+    // the Doppler of the moment), so that it does not stay on the last satellite's until AOS. The
+    // AOS edge sends them afresh.
+    const radio::RadioConfig& rc = tuner_.config();
+    if (obs.ok() && !radio::at_aos(obs.look.el_deg) && rc.cat_policy == radio::CatPolicy::aos_only &&
+        sat.doppler == radio::DopplerControl::cat && !rc.parking.enabled) {
+      const radio::Tuning t = radio::compute_tuning(tuner_.satellite(), radio::Corrections::from(rc),
+                                                    obs.look.range_rate_km_s, tuner_.rit_hz(), tuner_.xit_hz());
+      radio::TuneCommands preset;
+      // A link whose correction is off is the operator's: left alone, as the Tuner leaves it.
+      if (rc.downlink_correction != radio::DownlinkCorrection::off) {
+        preset.downlink_hz = t.downlink_radio_hz;
+        if (sat.downlink_mode != radio::Mode::none && t.downlink_radio_hz) preset.downlink_mode = sat.downlink_mode;
+      }
+      if (rc.uplink_correction) {
+        preset.uplink_hz = t.uplink_radio_hz;
+        if (sat.uplink_mode != radio::Mode::none && t.uplink_radio_hz) preset.uplink_mode = sat.uplink_mode;
+      }
+      if (tuner_.reversed()) {
+        std::swap(preset.downlink_hz, preset.uplink_hz);
+        std::swap(preset.downlink_mode, preset.uplink_mode);
+      }
+      radio::apply(*radio_, preset);
+    }
   }
   if (!obs.ok()) return;
   const double rr = obs.look.range_rate_km_s;
@@ -206,6 +231,12 @@ void StationLoop::adjust_correction(int direction) {
   else tuner_.rit_zero();
   // The correction found for this satellite and mode is kept for its next pass (0 forgets it).
   model_.radio.corrections = tuner_.config().corrections;
+}
+
+void StationLoop::set_tone(int tenths_hz) {
+  tuner_.set_tone(tenths_hz);
+  if (tenths_hz > 0 || tone_sent_) radio_->set_ctcss_tone(tenths_hz);
+  tone_sent_ = tenths_hz > 0;
 }
 
 std::optional<std::chrono::milliseconds> StationLoop::radio_due_in() const {
@@ -398,6 +429,7 @@ std::string StationLoop::status_line() const {
                 model_.rotor_control ? "ON " : "OFF", rot.c_str(), store::driver_label(model_.radio_driver).c_str(),
                 rig.c_str());
   line += buf;
+  if (!web_page_url().empty()) line += " | " + web_page_url();
   return line;
 }
 

@@ -128,6 +128,10 @@ class StationLoop {
   // The realtime + / - / 0 keys (direction +1, -1, 0): the Tuner's RIT, remembered in the model as
   // the correction for the satellite and mode (the caller saves the model).
   void adjust_correction(int direction);
+  // The database satellite the radio is tuned for (the followed one since its first tick), if any.
+  std::optional<int> tuned() const { return tuned_; }
+  // The tuned satellite's uplink CTCSS tone, sent now (tenths of Hz, 0 off); the caller stores it.
+  void set_tone(int tenths_hz);
   // How long until a link waiting for the knob to rest moves (tick then); nothing when none waits.
   std::optional<std::chrono::milliseconds> radio_due_in() const;
   Tracker& tracker() { return tracker_; }

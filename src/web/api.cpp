@@ -18,6 +18,7 @@
 #include "util/text.h"
 #include "web/api_log.h"
 #include "web/live_feed.h"
+#include "web/api_radio.h"
 #include "web/page.h"
 
 namespace tb::web {
@@ -205,6 +206,7 @@ Response Api::route(const Request& r, const Grant& g) {
     }
     if (path == "/api/v1/satellites") return satellites();
     if (path == "/api/v1/passes") return passes(r.target);
+    if (path == "/api/v1/passes.ics") return passes_ics(r.target);
     if (path == "/api/v1/sky") return ok(sky());
     if (is_log_path(path))
       return log_get(station_, path, r.target, hooks_.wall_now_unix ? hooks_.wall_now_unix() : 0,
@@ -236,7 +238,13 @@ Response Api::route(const Request& r, const Grant& g) {
     if (res.status == 200 && hooks_.changed) hooks_.changed();
     return res;
   }
-  return post(path, body, r.peer);
+  Response res = post(path, body, r.peer);
+  // Every change asked from the page, logged with who asked and what came of it.
+  const json reply = json::parse(res.body, nullptr, false);
+  const std::string said = reply.is_object() ? reply.value("note", reply.value("error", std::string())) : std::string();
+  spdlog::info("web: {} {} from {}: {} {}", path, printable(body.dump(-1, ' ', true, json::error_handler_t::replace), 120),
+               printable(r.peer, 60), res.status, printable(said, 160));
+  return res;
 }
 
 Response Api::post(const std::string& path, const json& b, const std::string& peer) {
@@ -290,9 +298,9 @@ Response Api::post(const std::string& path, const json& b, const std::string& pe
       return error(400, "rotor: expected {\"control\":true|false}, {\"action\":\"stop\"|\"park\"} or {\"goto\":{...}}");
     }
   } else if (path == "/api/v1/radio") {
-    const auto on = boolean("doppler");
-    if (!on) return error(400, "radio: expected {\"doppler\":true|false}");
-    done = ops.doppler(*on);
+    if (const auto bad = radio_request(ops, b, done)) return error(400, *bad);
+  } else if (path == "/api/v1/station") {
+    if (const auto bad = station_request(ops, station_.model().station.height_m, b, done)) return error(400, *bad);
   } else if (path == "/api/v1/standby" || path == "/api/v1/control" || path == "/api/v1/reserve") {
     if (const auto r = control_post(ops, path, b)) done = *r;
     else return error(400, path == "/api/v1/standby"   ? "standby: expected {\"on\":true|false}"
@@ -328,34 +336,6 @@ Response Api::satellites() {
     list.push_back(std::move(e));
   }
   return ok(json{{"satellites", std::move(list)}});
-}
-
-Response Api::passes(const std::string& target) {
-  const auto sat = query_param(target, "sat");
-  const auto hours_text = query_param(target, "hours");
-  if (!sat || !hours_text) return error(400, "passes: a bad %-escape in the query");
-  if (sat->empty()) return error(400, "passes: expected ?sat=NAME&hours=H");
-  double hours = 24.0;
-  if (!hours_text->empty()) {
-    const auto h = text::parse_double(*hours_text);
-    if (!h || !(*h >= 1.0 && *h <= 240.0))
-      return error(400, "passes: hours '" + printable(*hours_text, 20) + "': expected 1 to 240");
-    hours = *h;
-  }
-  tracker::StationOps ops(station_);
-  const auto i = ops.find_satellite(*sat);
-  if (!i) return error(404, "unknown satellite '" + printable(*sat, 40) + "'");
-  const orbit::Sgp4* sgp4 = station_.tracker().propagator(*i);
-  if (!sgp4) return error(409, "satellite '" + printable(*sat, 40) + "' has no usable orbit");
-  const orbit::UtcTime now = station_.tracker().last_tick_time();
-  const orbit::UtcTime stop = orbit::add_minutes(now, hours * 60.0);
-  json list = json::array();
-  for (const orbit::Pass& p : orbit::find_passes(*sgp4, station_.model().station.observer(), now, stop))
-    list.push_back(pass_json(p));
-  return ok(json{{"satellite", station_.model().db.satellites[static_cast<std::size_t>(*i)].name()},
-                 {"from", orbit::format_iso8601(now)},
-                 {"hours", hours},
-                 {"passes", std::move(list)}});
 }
 
 json Api::sky() {
@@ -398,7 +378,12 @@ json Api::sky() {
   }
   const orbit::Pass& pass = f->pass->up_at_start ? real_pass_->second : *f->pass;
   json p = pass_json(pass);
+  // The plan in force is this pass's only when what it follows lies inside the pass (before the
+  // next pass is planned, at its pre-positioning, it is still the last one's).
   const rotator::PassPlan* plan = station_.current_plan();
+  if (plan && plan->coverage.from &&
+      (*plan->coverage.from < orbit::add_minutes(pass.aos, -1.0) || orbit::add_minutes(pass.los, 1.0) < *plan->coverage.to))
+    plan = nullptr;
   json track = json::array(), planned = json::array(), lost = json::array();
   for (const orbit::Observation& o : tr.pass_track(f->db_index, pass, 60)) {
     if (!o.ok()) continue;
@@ -413,6 +398,14 @@ json Api::sky() {
   p["planned"] = std::move(planned);
   p["lost"] = std::move(lost);
   if (plan) p["coverage"] = plan->coverage_text();
+  if (plan) p["coverage_full"] = plan->coverage.full();
+  // Before the antenna pre-positions (kPrepositionMinutes before AOS): when and where it will move.
+  const orbit::UtcTime moves = orbit::add_minutes(pass.aos, -tracker::Tracker::kPrepositionMinutes);
+  if (tr.last_tick_time() < moves && d.antenna != tracker::Decision::Antenna::preposition) {
+    const double az = plan ? station_.rotator().model().compass_from_travel(plan->aos.az_travel) : pass.aos_az_deg;
+    j["moves"] = {{"at", orbit::format_iso8601(moves)}, {"az_deg", std::round(az * 10) / 10},
+                  {"lead_min", tracker::Tracker::kPrepositionMinutes}};
+  }
   j["pass"] = std::move(p);
   return j;
 }

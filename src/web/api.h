@@ -87,7 +87,8 @@ class Api {
   Response route(const Request& r, const Grant& g);
   Response post(const std::string& path, const nlohmann::json& body, const std::string& peer);
   Response satellites();
-  Response passes(const std::string& query);
+  Response passes(const std::string& query);       // api_passes.cpp: the planner's passes
+  Response passes_ics(const std::string& query);   // the same as an iCalendar
   Response login(const Request& r, std::chrono::steady_clock::time_point now);
 
   tracker::StationLoop& station_;

@@ -41,7 +41,8 @@ def endpoints(w):
     check(status == 200 and any(s["name"] == "ISS" for s in sats["satellites"]), "satellites lists ISS")
     status, p = w.get_json("/api/v1/passes?sat=ISS&hours=24")
     check(status == 200 and p["satellite"] == "ISS" and len(p["passes"]) >= 2, f"passes: {p}")
-    for q, want in (("sat=ISS&hours=x", 400), ("sat=ISS&hours=0", 400), ("sat=NOPE&hours=2", 404), ("", 400)):
+    for q, want in (("sat=ISS&hours=x", 400), ("sat=ISS&hours=0", 400), ("sat=NOPE&hours=2", 404), ("sat=ISS&hours=73", 400),
+                    ("min_el=-1", 400), ("with=XX99", 400)):
         status, e = w.get_json("/api/v1/passes?" + q)
         check(status == want and isinstance(e.get("error"), str), f"passes?{q}: {status} {e}")
 

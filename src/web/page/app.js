@@ -11,6 +11,9 @@ function xy(az, el) {
 }
 function fixed(v, d) { return typeof v === "number" ? v.toFixed(d) : "-"; }
 function mhz(hz) { return typeof hz === "number" ? (hz / 1e6).toFixed(5) + " MHz" : "-"; }
+function mhz6(hz) { return typeof hz === "number" ? (hz / 1e6).toFixed(6) : "-"; }
+function signedHz(v) { return typeof v === "number" ? (v > 0 ? "+" : "") + Math.round(v) + " Hz" : "-"; }
+function setText(id, t) { const e = $(id); if (e.textContent !== t) e.textContent = t; }
 function hhmm(iso) { return iso ? iso.substring(11, 19) : "-"; }
 function el(tag, attrs, text) {
   const e = document.createElementNS(SVG, tag);
@@ -38,6 +41,7 @@ function place(id, azel) {
 }
 
 function drawSky(sky) {
+  lastSky = sky;
   $("sat-name").textContent = sky.satellite ? sky.satellite.name : "";
   place("sat", sky.satellite ? sky.satellite.az_el : null);
   $("sat").dataset.time = sky.time || "";
@@ -50,7 +54,7 @@ function drawSky(sky) {
   const lost = $("lost"), marks = $("marks");
   lost.replaceChildren();
   marks.replaceChildren();
-  $("coverage").textContent = p && p.coverage ? p.coverage : "";
+  $("coverage").textContent = p && p.coverage ? planText(p, lastStatus && lastStatus.antenna) : "";
   if (!p) return;
   let run = [];
   p.track.forEach((pt, i) => {
@@ -75,6 +79,16 @@ function drawSky(sky) {
   }
 }
 
+// The pass plan in words, the same in the sky panel and the antenna panel; when the antenna cannot
+// follow all of the pass on a 360-degree rotator, the fix: a rotator with overlap and --az-travel 450.
+function planText(p, a) {
+  if (!p || !p.coverage) return "-";
+  let t = p.coverage;
+  if (p.coverage_full === false && a && a.az_travel_deg === 360)
+    t += ". A rotator with overlap (G-5500, a GS-232 in 450° mode) follows it: trakbox --az-travel 450";
+  return t;
+}
+
 function countdown(iso, now) {
   if (!iso || !now) return "-";
   const s = Math.round((Date.parse(iso) - Date.parse(now)) / 1000);
@@ -93,7 +107,7 @@ function drawList(st) {
       const fresh = document.createElement("tr");
       fresh.dataset.name = e.name;
       for (let i = 0; i < 6; ++i) fresh.appendChild(document.createElement("td"));
-      fresh.addEventListener("click", () => post("/api/v1/track", { satellite: e.name }));
+      fresh.addEventListener("click", () => { if (confirmLeave(e.name)) post("/api/v1/track", { satellite: e.name }); });
       if (tr) body.replaceChild(fresh, tr); else body.appendChild(fresh);
       tr = fresh;
     }
@@ -114,8 +128,19 @@ function drawList(st) {
   while (body.rows.length > list.length) body.deleteRow(-1);
 }
 
+// A tap that would take the antenna and radio off a pass in progress asks first.
+let lastStatus = null, lastSky = null;
+function confirmLeave(name) {
+  const f = lastStatus && lastStatus.tracking ? lastStatus.tracking.followed : null;
+  const up = lastSky && lastSky.satellite && lastSky.satellite.in_range;
+  if (!f || !up || f === name) return true;
+  return window.confirm(f + " is passing now. Leave its pass" + (name ? " for " + name : "") + "?");
+}
+
 let doppler = true, rotorOn = false;
 function drawStatus(st) {
+  lastStatus = st;
+  if (typeof planList === "function") planList(st);
   $("clock").textContent = st.time ? st.time.replace("T", " ").substring(0, 19) + " UTC" : "--";
   const probs = st.problems || [];
   $("problems").hidden = probs.length === 0;
@@ -124,7 +149,16 @@ function drawStatus(st) {
   $("ant-az").textContent = a.position ? fixed(a.position.az_deg, 1) : "-";
   $("ant-el").textContent = a.position ? fixed(a.position.el_deg, 1) : "-";
   $("ant-target").textContent = a.target ? fixed(a.target.az_deg, 1) + "° az, " + fixed(a.target.el_deg, 1) + "° el" : "-";
-  $("ant-state").textContent = a.link !== "ok" ? "fault: " + (a.link_message || a.link) : "(" + (a.action || "hold") + ")" + (a.message ? " " + a.message : "");
+  // When the antenna will move for the coming pass (it pre-positions a few minutes before AOS).
+  const mv = lastSky && lastSky.moves;
+  const moves = mv ? "· moves to " + fixed(mv.az_deg, 0) + "° at " + new Date(mv.at).toLocaleTimeString([], { hour12: false }) +
+                     ", " + mv.lead_min + " min before AOS" : "";
+  $("ant-state").textContent = a.link !== "ok" ? "fault: " + (a.link_message || a.link)
+    : (moves || "(" + (a.action || "hold") + ")" + (a.parking_enabled === false && a.action === "hold" ? ", parking is off" : "")) +
+      (a.message ? " " + a.message : "");
+  $("btn-park").hidden = a.parking_enabled === false;
+  const pass = lastSky && lastSky.pass;
+  $("ant-plan").textContent = planText(pass, a);
   rotorOn = !!a.rotor_control;
   $("rotor-control").textContent = rotorOn ? "on" : "off";
   $("btn-rotor").textContent = rotorOn ? "Rotor control off" : "Rotor control on";
@@ -140,6 +174,7 @@ function drawStatus(st) {
   const c = r.correction;
   $("radio-corr").textContent = !c ? "-" : (c.hz > 0 ? "+" : "") + c.hz + " Hz" +
     (c.key ? " (" + c.key + (c.remembered ? ", kept" : "") + ")" : "") + (c.dial_follow ? ", dial follow" : "");
+  drawTuning(r.tuning);
   doppler = st.doppler !== false;
   $("doppler").textContent = doppler ? "on" : "off";
   $("btn-doppler").textContent = doppler ? "Doppler off" : "Doppler on";
@@ -154,6 +189,57 @@ function drawStatus(st) {
   $("clock-gps").textContent = g && typeof g.clock_error_s === "number" ? fixed(g.clock_error_s, 2) + " s from GPS time"
                                                                          : "no GPS time";
   drawList(st);
+}
+
+// The tuning of the satellite the radio follows (status: radios[0].tuning): each link's spot in the
+// satellite's frame, its Doppler, the operator's offset and the dial it gives; a linear transponder's
+// passband position moved by the step or the slider (POST /api/v1/radio {"spot_hz"}).
+let tuning = null;
+function drawTuning(t) {
+  tuning = t || null;
+  $("tuning").hidden = !t;
+  if (!t) return;
+  setText("tune-sat", t.satellite);
+  setText("tune-spot-down", mhz6(t.downlink_spot_hz));
+  setText("tune-spot-up", mhz6(t.uplink_spot_hz));
+  setText("tune-dop-down", t.downlink_spot_hz ? signedHz(t.downlink_doppler_hz) : "-");
+  setText("tune-dop-up", t.uplink_spot_hz ? signedHz(t.uplink_doppler_hz) : "-");
+  setText("tune-rx", signedHz(t.rx_offset_hz));
+  setText("tune-tx", signedHz(t.tx_offset_hz));
+  setText("tune-dial-down", mhz6(t.downlink_dial_hz));
+  setText("tune-dial-up", mhz6(t.uplink_dial_hz));
+  setText("tune-tone", typeof t.tone_hz === "number" ? t.tone_hz.toFixed(1) + " Hz" : "none");
+  const pb = t.passband;
+  $("passband").hidden = !pb;
+  if (!pb) return;
+  const sl = $("pb-slider");
+  if (sl.min !== String(pb.downlink[0])) { sl.min = pb.downlink[0]; sl.max = pb.downlink[1]; sl.step = 10; }
+  if (document.activeElement !== sl) sl.value = t.downlink_spot_hz;
+  setText("pb-range", "down " + mhz6(pb.downlink[0]) + "-" + mhz6(pb.downlink[1]) + ", up " + mhz6(pb.uplink[0]) + "-" +
+          mhz6(pb.uplink[1]) + (pb.inverting ? " (inverting)" : ""));
+}
+function tuneStep() { return Number($("tune-step").value) || 1000; }
+function moveSpot(dir) {
+  if (!tuning || !tuning.passband) return;
+  const [lo, hi] = tuning.passband.downlink;
+  post("/api/v1/radio", { spot_hz: Math.min(hi, Math.max(lo, tuning.downlink_spot_hz + dir * tuneStep())) });
+}
+function moveOffset(key, dir) {
+  if (!tuning) return;
+  post("/api/v1/radio", { [key + "_offset_hz"]: tuning[key + "_offset_hz"] + dir * tuneStep() });
+}
+function wireTuning() {
+  const step = localStorage.getItem("trakbox-step");
+  if (step) $("tune-step").value = step;
+  $("tune-step").addEventListener("change", () => localStorage.setItem("trakbox-step", $("tune-step").value));
+  $("pb-down").addEventListener("click", () => moveSpot(-1));
+  $("pb-up").addEventListener("click", () => moveSpot(1));
+  $("pb-slider").addEventListener("change", () => post("/api/v1/radio", { spot_hz: Number($("pb-slider").value) }));
+  $("rx-down").addEventListener("click", () => moveOffset("rx", -1));
+  $("rx-up").addEventListener("click", () => moveOffset("rx", 1));
+  $("tx-down").addEventListener("click", () => moveOffset("tx", -1));
+  $("tx-up").addEventListener("click", () => moveOffset("tx", 1));
+  $("btn-offsets-reset").addEventListener("click", () => post("/api/v1/radio", { rx_offset_hz: 0, tx_offset_hz: 0 }));
 }
 
 function locator(lat, lon) {
@@ -193,22 +279,45 @@ async function post(path, body) {
   }
 }
 
+// A station that stops answering is shown so: every value greyed, "station not answering since"
+// the time of the last state heard, the buttons disabled, until a state comes again.
+let lastHeard = 0, isStale = true;
+function heard() {
+  lastHeard = Date.now();
+  if (!isStale) return;
+  isStale = false;
+  document.body.classList.remove("stale");
+  $("link").textContent = "live";
+  $("link").className = "";
+  for (const b of document.querySelectorAll("button:not(.keep), input, select")) b.disabled = false;
+  if (typeof planChosen === "function") planChosen();
+}
+function stale() {
+  if (isStale && lastHeard) return;
+  isStale = true;
+  document.body.classList.add("stale");
+  $("link").textContent = lastHeard ? "station not answering since " + new Date(lastHeard).toLocaleTimeString([], { hour12: false })
+                                    : "connecting";
+  $("link").className = "bad";
+  for (const b of document.querySelectorAll("button:not(.keep), input, select")) b.disabled = true;
+}
+setInterval(() => { if (!isStale && Date.now() - lastHeard > 3000) stale(); }, 1000);
+
 let ws = null, wait = 500;
 function connect() {
   const proto = location.protocol === "https:" ? "wss:" : "ws:";
   ws = new WebSocket(proto + "//" + location.host + "/api/v1/live");
-  ws.onopen = () => { $("link").textContent = "live"; $("link").className = ""; wait = 500; };
+  ws.onopen = () => { wait = 500; };
   ws.onmessage = (m) => {
     let j;
     try { j = JSON.parse(m.data); } catch (e) { return; }
     if ((j = liveMessage(j, ws)) === null) return;  // live.js: patches made whole, gaps asked again
-    if (j.type === "state") { drawStatus(j.status); drawSky(j.sky); drawControl(j.status); }
+    if (j.type === "state") { heard(); lastSky = j.sky; drawStatus(j.status); drawSky(j.sky); drawControl(j.status); }
     else if (j.type === "event") addEvent(j.event, false);
     else if (j.type === "events") { $("events").replaceChildren(); (j.events || []).forEach((e) => addEvent(e, true)); }
   };
   ws.onclose = () => {
-    $("link").textContent = "reconnecting";
-    $("link").className = "bad";
+    stale();
     setTimeout(start, wait);
     wait = Math.min(wait * 2, 4000);
   };
@@ -220,7 +329,7 @@ async function start() {
     const res = await fetch("/api/v1/status", { credentials: "same-origin" });
     if (res.status === 401) { location.href = "/login"; return; }
   } catch (e) {
-    $("link").textContent = "reconnecting";
+    stale();
     setTimeout(start, wait);
     wait = Math.min(wait * 2, 4000);
     return;
@@ -228,7 +337,17 @@ async function start() {
   connect();
 }
 
+// The red night theme (dark adaptation at the rig), remembered; otherwise the system's light or dark.
+function night(on) {
+  document.body.classList.toggle("night", on);
+  $("btn-night").setAttribute("aria-pressed", on ? "true" : "false");
+  localStorage.setItem("trakbox-theme", on ? "night" : "");
+}
+night(localStorage.getItem("trakbox-theme") === "night");
+$("btn-night").addEventListener("click", () => night(!document.body.classList.contains("night")));
+stale();
 drawGrid();
+wireTuning();
 $("btn-rotor").addEventListener("click", () => post("/api/v1/rotor", { control: !rotorOn }));
 $("btn-stop").addEventListener("click", () => post("/api/v1/rotor", { action: "stop" }));
 $("btn-park").addEventListener("click", () => post("/api/v1/rotor", { action: "park" }));

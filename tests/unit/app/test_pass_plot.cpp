@@ -183,3 +183,23 @@ TEST_CASE("pass plot: an arrow the way the satellite moves, at the middle of the
   const Rgb plain = across(i, -3.5);  // (the minute labels are on the other side)
   CHECK(plain.r > 200);
 }
+
+TEST_CASE("plot labels: a label that would cover another moves just below it, as often as needed") {
+  using tb::app::LabelBox;
+  using tb::app::place_label;
+  std::vector<LabelBox> placed;
+  // Nothing placed: where it was wanted.
+  LabelBox a = place_label(placed, {100, 200, 80, 14});
+  CHECK(a.y == 200);
+  placed.push_back(a);
+  // Overlapping AOS by 6 px: moved to AOS's bottom edge (214).
+  LabelBox b = place_label(placed, {150, 206, 80, 14});
+  CHECK(b.x == 150);
+  CHECK(b.y == 214);
+  placed.push_back(b);
+  // Over both: below the second (228).
+  LabelBox c = place_label(placed, {120, 203, 60, 14});
+  CHECK(c.y == 228);
+  // Beside them (no horizontal overlap): stays.
+  CHECK(place_label(placed, {300, 206, 50, 14}).y == 206);
+}

@@ -67,6 +67,23 @@ TEST_CASE("--az-travel: an overlap rotator's travel, 360 to 720 degrees") {
   CHECK(error_of({"--az-travel", "many"}).rfind("--az-travel: ", 0) == 0);
 }
 
+TEST_CASE("--station: a locator's centre or LAT,LON[,HEIGHT_M]; a bad one named") {
+  const auto loc = parse({"--station", "JN58td"});
+  REQUIRE(loc.config);
+  REQUIRE(loc.config->station);
+  // JN58td: field J/N (0..20 E, 40..50 N), square 5/8, subsquare t/d: 11.625 E, 48.146 N at its centre.
+  CHECK(loc.config->station->lat_deg == doctest::Approx(48.0 + 1.0 / 8 + 1.0 / 48).epsilon(1e-12));
+  CHECK(loc.config->station->lon_deg == doctest::Approx(11.625).epsilon(1e-12));
+  const auto ll = parse({"--station", "48.85N,2.35E,35"});
+  REQUIRE(ll.config->station);
+  CHECK(ll.config->station->lat_deg == 48.85);
+  CHECK(ll.config->station->lon_deg == 2.35);
+  CHECK(ll.config->station->height_m == 35.0);
+  CHECK_FALSE(parse({}).config->station);
+  CHECK(error_of({"--station", "nowhere"}).rfind("--station: ", 0) == 0);
+  CHECK(error_of({"--station", "95,10"}).rfind("--station: ", 0) == 0);
+}
+
 TEST_CASE("the first bad value is named, and nothing is configured") {
   CHECK(error_of({"--baud", "300"}) == "--baud: expected 1200, 2400, 4800, 9600 or 19200; found '300'");
   CHECK(error_of({"--log-level", "loud"}) == "--log-level: expected error, warn, info or debug; found 'loud'");

@@ -28,7 +28,7 @@ TEST_CASE("registry: names are unique, every model has a factory and a sane desc
                         "ft817", "ft818", "ft736", "icom", "kenwood", "yaesu", "cat", "hamlib", "rigctld", "sim"})
     CHECK_MESSAGE(find_radio_model(n) != nullptr, n);
   CHECK(find_radio_model("simulated") == find_radio_model("sim"));
-  CHECK(find_radio_model("IC9700") == nullptr);   // names are lower case, as listed
+  CHECK(find_radio_model("IC9700") == find_radio_model("ic9700"));   // any case, as Hamlib names are (issue 47)
 }
 
 TEST_CASE("registry: the satellite rigs' defaults") {
@@ -73,6 +73,11 @@ TEST_CASE("--radio MODEL:DEVICE[:BAUD]: parsed from the table") {
   CHECK(find_radio_model(parse_radio_spec("ft847:/dev/ttyS0").spec->name)->protocol == Protocol::ft847);
   CHECK(parse_radio_spec("ts2000:/dev/ttyS0:57600").spec->baud == 57600);
   CHECK(parse_radio_spec("ft818:/dev/ttyS0").spec->name == "ft818");
+  // The model in any case, as hamlib:IC-9700 is (issue 47).
+  const auto upper = parse_radio_spec("IC9700:/dev/ttyUSB0:19200");
+  REQUIRE(upper.spec);
+  CHECK(upper.spec->name == "ic9700");
+  CHECK(upper.spec->baud == 19200);
 
   // Bad specs name what is wrong.
   CHECK(parse_radio_spec("ic9700").error ==

@@ -86,6 +86,27 @@ TEST_CASE("A degree rotator is sent its target once, and nothing inside the dead
   CHECK(rig.rot->sent[1].el == doctest::Approx(45.0));
 }
 
+TEST_CASE("While it moves, a target creeping inside the dead band of the last command sends nothing new") {
+  Rig rig;
+  rig.tick();
+  rig.ctl->set_target(AzEl{90.0, 45.0});
+  rig.tick();
+  REQUIRE(rig.rot->sent.size() == 1);
+  rig.rot->m = {Drive::increase, Drive::increase};   // on its way
+  // A satellite's target moving 0.3 deg a tick: within the 3-count (1.06 deg) dead band of the
+  // command sent (256 counts), nothing is sent; beyond it, the new position.
+  for (const double az : {90.3, 90.6, 90.9}) {
+    rig.ctl->set_target(AzEl{az, 45.0});
+    rig.tick();
+  }
+  CHECK(rig.rot->sent.size() == 1);
+  // 91.6 deg is 260 counts, 4 from the 256 sent: beyond the band.
+  rig.ctl->set_target(AzEl{91.6, 45.0});
+  rig.tick();
+  REQUIRE(rig.rot->sent.size() == 2);
+  CHECK(std::abs(rig.rot->sent[1].az - 91.6) <= kAzCount / 2);
+}
+
 TEST_CASE("Skew means the same counts on a degree rotator") {
   RotatorConfig c;
   c.az_skew = 10;  // 3.52 deg

@@ -58,8 +58,11 @@ TEST_CASE("Bad rotator specs say what is wrong and what is expected") {
   };
   CHECK(err("simulated:fast") == "bad --rotator 'simulated:fast': simulated takes no parameters");
   CHECK(err("hamlib") == "bad --rotator 'hamlib': missing MODEL; expected hamlib:MODEL:DEVICE[:BAUD], e.g. hamlib:603:/dev/ttyUSB0:9600");
-  CHECK(err("hamlib:gs232b:/dev/ttyUSB0").find("MODEL 'gs232b' is not a Hamlib model number (see `rotctl -l`)") !=
-        std::string::npos);
+  CHECK(err("hamlib:nosuch:/dev/ttyUSB0").find("MODEL 'nosuch' is neither a Hamlib rotator model number nor the name "
+                                               "of one (see `rotctl -l`)") != std::string::npos);
+  // Something after the speed is no part of the device (issue 47).
+  CHECK(err("hamlib:603:/dev/ttyUSB0:9600:x") == "bad --rotator 'hamlib:603:/dev/ttyUSB0:9600:x': 'x' after BAUD 9600; "
+                                                 "expected hamlib:MODEL:DEVICE[:BAUD], e.g. hamlib:603:/dev/ttyUSB0:9600");
   CHECK(err("hamlib:603").find("missing DEVICE") != std::string::npos);
   CHECK(err("hamlib:603:").find("missing DEVICE") != std::string::npos);
   CHECK(err("hamlib:603:/dev/ttyUSB0:9601").find("BAUD 9601 is not a serial speed") != std::string::npos);
@@ -108,4 +111,16 @@ TEST_CASE("A Hamlib rotator that cannot connect reports the fault and keeps retr
   d->as_degrees()->set_position({10, 10});  // dropped, returns at once
   d->stop();
   d.reset();  // joins the worker promptly
+}
+
+TEST_CASE("A Hamlib rotator by its name, as radios are: hamlib:GS-232B is model 603 (Hamlib's ROT_MODEL_GS232B)") {
+  for (const char* spec : {"hamlib:GS-232B:/dev/ttyUSB0:9600", "hamlib:gs232b:/dev/ttyUSB0:9600",
+                           "hamlib:Yaesu GS-232B:/dev/ttyUSB0:9600"}) {
+    INFO(spec);
+    const SpecResult r = parse_hamlib_spec(spec);
+    REQUIRE(r.spec);
+    CHECK(r.spec->model == 603);
+    CHECK(r.spec->device == "/dev/ttyUSB0");
+    CHECK(r.spec->baud == 9600);
+  }
 }

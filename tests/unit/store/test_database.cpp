@@ -109,4 +109,17 @@ TEST_CASE("The shipped default data makes a database") {
   const Satellite* qo = &db.satellites[static_cast<std::size_t>(*db.find("QO-100"))];
   CHECK(qo->radio.downlink_hz == 10489550000);
   CHECK(qo->radio.downlink_offset_hz == -9750000000);
+  // The FM repeaters that need a tone open out of the box (issue 47; data/README.md names the sources).
+  for (const auto& [name, tenths] : {std::pair{"SO-50", 670}, {"AO-91", 670}, {"ISS", 670}, {"PO-101", 1413}})
+    CHECK(db.satellites[static_cast<std::size_t>(*db.find(name))].radio.ctcss_tenths_hz == tenths);
+  CHECK(db.satellites[static_cast<std::size_t>(*db.find("AO-27"))].radio.ctcss_tenths_hz == 0);
+  // QO-100 for an IC-9700: 10489.550 MHz through a 10057 MHz downconverter is 432.550 MHz at the
+  // radio; 2400.050 MHz from 144.050 MHz through a 2256 MHz up-converter.
+  const auto if432 = radio::parse_freqmode(read_file(dir + "freqmode-qo100-432.txt"));
+  REQUIRE(if432.ok());
+  REQUIRE(if432.records.size() == 1);
+  const auto& r = if432.records[0];
+  CHECK(r.radio.downlink_hz + r.radio.downlink_offset_hz == 432'550'000);
+  CHECK(r.radio.uplink_hz + r.radio.uplink_offset_hz == 144'050'000);
+  CHECK(r.radio.has_passbands());
 }

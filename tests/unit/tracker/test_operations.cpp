@@ -113,7 +113,7 @@ TEST_CASE("StationOps: park is refused while parking is off, then parks and stop
   f.model.rotator.parking_enabled = false;
   f.station->reconfigure();
   REQUIRE(f.ops().track("ISS").ok());
-  CHECK(f.ops().park().refusal.value() == "parking is off (menu 6-2 sets the parking position)");
+  CHECK(f.ops().park().refusal.value() == "parking is off (menu 6-4 sets the parking position)");
   CHECK(f.tracker.mode() == tracker::Mode::single);
 
   f.model.rotator.parking_enabled = true;

@@ -55,3 +55,23 @@ TEST_CASE("Station: with dial follow off the turn is undone at the next Doppler 
   CHECK(std::llabs(p.down() - d0) < 300);
   CHECK(std::llabs(p.up() - u0) < 100);
 }
+
+TEST_CASE("Station: with CAT only at AOS, choosing a satellite below the horizon presets the radio to it") {
+  testing::StationFixture f(orbit::from_civil(2026, 5, 21, 12, 0, 0));
+  f.model.radio.cat_policy = radio::CatPolicy::aos_only;
+  f.build_station();
+  const auto iss = f.model.db.find("ISS");
+  REQUIRE(iss.has_value());
+  f.tracker.track_single(*iss);
+  f.step(std::chrono::milliseconds(100));
+  REQUIRE(f.tracker.followed() != nullptr);
+  REQUIRE(f.tracker.followed()->obs.look.el_deg < radio::kAosElevationDeg);   // below the horizon
+  // ISS's 437.800 / 145.990 MHz FM (data/freqmode.txt), within its Doppler (under 11 kHz on 70 cm).
+  REQUIRE(f.radio_sim->frequency(radio::Link::downlink).has_value());
+  CHECK(std::llabs(*f.radio_sim->frequency(radio::Link::downlink) - 437'800'000) < 11'000);
+  CHECK(std::llabs(*f.radio_sim->frequency(radio::Link::uplink) - 145'990'000) < 4'000);
+  // Nothing more until AOS: a minute later the dial is where the preset put it.
+  const radio::Hz preset = *f.radio_sim->frequency(radio::Link::downlink);
+  f.run(60.0);
+  CHECK(*f.radio_sim->frequency(radio::Link::downlink) == preset);
+}

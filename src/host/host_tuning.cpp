@@ -1,0 +1,93 @@
+// Host mode's tuning commands, trakbox's own (the manual's set tunes only by FU/FD): the passband
+// position of a linear transponder, the operator's RX and TX offsets and the uplink's CTCSS tone,
+// through the same StationOps operations as the page's POST /api/v1/radio.
+//   PB435640000   the downlink spot in Hz (the uplink follows by the transponder's rule)
+//   OR+120 OT-300 the RX / TX offset in Hz (OR0 OT0: reset), kept per satellite and mode
+//   CT67.0 CT0    the tone in Hz, 0 for none
+//   ?T            TUNE SPOT <down> <up> RX <+hz> TX <+hz> TONE <hz>
+#include <string>
+
+#include "host/host_mode.h"
+#include "radio/doppler.h"
+#include "station/station.h"
+#include "store/model.h"
+#include "tracker/station_loop.h"
+#include "util/text.h"
+
+namespace tb::host {
+
+namespace {
+
+std::string signed_text(long long v) { return (v >= 0 ? "+" : "") + std::to_string(v); }
+
+Reply error(std::string text) {
+  Reply r;
+  r.ok = false;
+  r.lines.push_back("ERROR " + std::move(text));
+  return r;
+}
+
+}  // namespace
+
+std::optional<Reply> Interpreter::tuning(std::string_view u, std::string_view line) {
+  const bool pb = u.rfind("PB", 0) == 0, orx = u.rfind("OR", 0) == 0, otx = u.rfind("OT", 0) == 0;
+  const bool ct = u.rfind("CT", 0) == 0;
+  if (u == "?T") {
+    const radio::Tuner& t = station_.tuner();
+    if (!station_.tuned()) return error("?T: no satellite is tuned: track one first");
+    const int tone = t.satellite().ctcss_tenths_hz;
+    return Reply{{"TUNE SPOT " + std::to_string(t.downlink_spot_hz()) + " " + std::to_string(t.uplink_spot_hz()) +
+                  " RX " + signed_text(t.rit_hz()) + " TX " + signed_text(t.xit_hz()) + " TONE " +
+                  std::to_string(tone / 10) + "." + std::to_string(tone % 10)},
+                 true, false};
+  }
+  if (u.rfind("QTH", 0) == 0) return station(line.substr(3));
+  if (!pb && !orx && !otx && !ct) return std::nullopt;
+  const std::string cmd(u.substr(0, 2));
+  const std::string arg = text::trimmed(line.substr(2));
+  tracker::OpResult done;
+  if (ct) {
+    const auto hz = text::parse_double(arg);
+    if (!hz) return error("CT: '" + arg.substr(0, 20) + "' is not a tone: expected Hz such as CT67.0, or CT0 for none");
+    done = ops().tune_tone(*hz);
+  } else {
+    const auto hz = text::parse_integer<long long>(arg);
+    if (!hz)
+      return error(cmd + ": '" + arg.substr(0, 20) + "' is not a whole number of Hz, e.g. " +
+                   (pb ? "PB435640000" : cmd + "+120"));
+    if (pb) done = ops().tune_spot(*hz);
+    else done = ops().tune_offsets(orx ? std::optional<long long>(*hz) : std::nullopt,
+                                   otx ? std::optional<long long>(*hz) : std::nullopt);
+  }
+  if (!done.ok()) return error(cmd + ": " + *done.refusal);
+  if (done.model_changed) station_.settings_changed();   // on disk before the prompt returns
+  return Reply{};
+}
+
+// QTH JN58td | QTH LAT,LON[,HEIGHT_M]: the station's position, as menu 4 sets it.
+Reply Interpreter::station(std::string_view arg) {
+  const std::string a = text::trimmed(arg);
+  const char* expected = "QTH: expected a Maidenhead locator (QTH JN58td) or LAT,LON[,HEIGHT_M] in degrees and metres";
+  double lat = 0.0, lon = 0.0, height = station_.model().station.height_m;
+  if (const auto o = station::maidenhead_centre(a)) {
+    lat = o->lat_deg;
+    lon = o->lon_deg;
+    height = 0.0;
+  } else {
+    const auto parts = text::split(a, ',');
+    if (parts.size() < 2 || parts.size() > 3) return error(expected);
+    const auto la = text::parse_double(text::trim(parts[0], text::kWhitespace));
+    const auto lo = text::parse_double(text::trim(parts[1], text::kWhitespace));
+    const auto h = parts.size() == 3 ? text::parse_double(text::trim(parts[2], text::kWhitespace)) : std::optional(height);
+    if (!la || !lo || !h) return error(expected);
+    lat = *la;
+    lon = *lo;
+    height = *h;
+  }
+  const tracker::OpResult done = ops().set_station(lat, lon, height);
+  if (!done.ok()) return error("QTH: " + *done.refusal);
+  if (done.model_changed) station_.settings_changed();
+  return Reply{{"QTH " + done.note.substr(done.note.find(' ') + 1)}, true, false};
+}
+
+}  // namespace tb::host

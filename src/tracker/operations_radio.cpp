@@ -1,0 +1,122 @@
+// StationOps' radio operations: the passband position, the operator's offsets and the tone
+// (operations.h). Each checks everything before it changes the tuner or the model.
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "radio/doppler.h"
+#include "store/model.h"
+#include "tracker/operations.h"
+#include "tracker/station_loop.h"
+
+namespace tb::tracker {
+
+namespace {
+
+std::string hz_text(std::int64_t hz) { return std::to_string(hz) + " Hz"; }
+
+std::string signed_hz(std::int64_t hz) { return (hz > 0 ? "+" : "") + hz_text(hz); }
+
+// The satellite the radio is tuned for, or the refusal.
+std::optional<std::string> untuned(StationLoop& station) {
+  if (!station.tuned()) return "no satellite is tuned: track one first";
+  if (!station.doppler()) return "Doppler is off: the radio is left alone (turn Doppler on first)";
+  return std::nullopt;
+}
+
+}  // namespace
+
+OpResult StationOps::tune_spot(std::int64_t downlink_hz) {
+  if (const auto why = untuned(station_)) return OpResult::refuse(*why);
+  radio::Tuner& t = station_.tuner();
+  const std::string& name = model_.db.satellites[static_cast<std::size_t>(*station_.tuned())].name();
+  const auto band = radio::transponder_of(t.satellite());
+  if (!band)
+    return OpResult::refuse(name + " has no transponder passband (its freq/mode record gives no down=LOW-HIGH): "
+                            "its frequencies are fixed");
+  if (!band->downlink_inside(downlink_hz))
+    return OpResult::refuse("spot " + hz_text(downlink_hz) + " is outside " + name + "'s downlink passband " +
+                            std::to_string(band->downlink_low_hz) + "-" + hz_text(band->downlink_high_hz));
+  t.set_spot(downlink_hz);
+  station_.antenna_changed();   // a tick now: the radio hears of it at once
+  OpResult r;
+  r.note = "spot " + hz_text(t.downlink_spot_hz()) + " down, " + hz_text(t.uplink_spot_hz()) + " up";
+  return r;
+}
+
+OpResult StationOps::tune_offsets(std::optional<std::int64_t> rx_hz, std::optional<std::int64_t> tx_hz) {
+  if (!rx_hz && !tx_hz) return OpResult::refuse("no offset given: expected an RX or a TX offset in Hz");
+  for (const auto& [what, v] : {std::pair{"RX", rx_hz}, std::pair{"TX", tx_hz}})
+    if (v && (*v > radio::kMaxOffsetHz || *v < -radio::kMaxOffsetHz))
+      return OpResult::refuse(std::string(what) + " offset " + hz_text(*v) + " out of range: expected -" +
+                              std::to_string(radio::kMaxOffsetHz) + " to " + std::to_string(radio::kMaxOffsetHz));
+  if (const auto why = untuned(station_)) return OpResult::refuse(*why);
+  radio::Tuner& t = station_.tuner();
+  t.set_offsets(rx_hz, tx_hz);
+  OpResult r;
+  if (model_.radio.corrections != t.config().corrections || model_.radio.tx_corrections != t.config().tx_corrections) {
+    model_.radio.corrections = t.config().corrections;
+    model_.radio.tx_corrections = t.config().tx_corrections;
+    r.model_changed = true;
+  }
+  station_.antenna_changed();
+  r.note = "RX offset " + signed_hz(t.rit_hz()) + ", TX offset " + signed_hz(t.xit_hz()) + " (" +
+           (t.correction_key().empty() ? std::string("this pass") : t.correction_key()) + ")";
+  return r;
+}
+
+OpResult StationOps::tune_tone(double hz) {
+  const double tenths = std::round(hz * 10.0);
+  if (!std::isfinite(hz) || std::abs(hz * 10.0 - tenths) > 1e-6 || (hz != 0.0 && (hz < 60.0 || hz > 300.0))) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%g", hz);
+    return OpResult::refuse(std::string("tone ") + buf + " Hz: expected a CTCSS tone from 60.0 to 300.0 Hz "
+                            "(tenths, e.g. 67.0) or 0 for none");
+  }
+  if (const auto why = untuned(station_)) return OpResult::refuse(*why);
+  auto& sat = model_.db.satellites[static_cast<std::size_t>(*station_.tuned())];
+  const int t = static_cast<int>(tenths);
+  OpResult r;
+  if (sat.radio.ctcss_tenths_hz != t) {
+    sat.radio.ctcss_tenths_hz = t;
+    r.model_changed = true;
+  }
+  station_.set_tone(t);
+  r.note = sat.name() + (t > 0 ? " tone " + std::to_string(t / 10) + "." + std::to_string(t % 10) + " Hz" : " no tone");
+  return r;
+}
+
+}  // namespace tb::tracker
+
+namespace tb::tracker {
+
+OpResult StationOps::set_station(double lat_deg, double lon_deg, double height_m) {
+  char buf[96];
+  if (!std::isfinite(lat_deg) || lat_deg < -90.0 || lat_deg > 90.0) {
+    std::snprintf(buf, sizeof buf, "latitude %g out of range: expected -90 to 90 degrees", lat_deg);
+    return OpResult::refuse(buf);
+  }
+  if (!std::isfinite(lon_deg) || lon_deg < -180.0 || lon_deg > 180.0) {
+    std::snprintf(buf, sizeof buf, "longitude %g out of range: expected -180 to 180 degrees", lon_deg);
+    return OpResult::refuse(buf);
+  }
+  if (!std::isfinite(height_m) || height_m < -500.0 || height_m > 9000.0) {
+    std::snprintf(buf, sizeof buf, "height %g m out of range: expected -500 to 9000 m", height_m);
+    return OpResult::refuse(buf);
+  }
+  auto& st = model_.station;
+  OpResult r;
+  r.model_changed = st.lat_deg != lat_deg || st.lon_deg != lon_deg || st.height_m != height_m;
+  st.lat_deg = lat_deg;
+  st.lon_deg = lon_deg;
+  st.height_m = height_m;
+  model_.gps.position_from_gps = false;   // typed in, as menu 4 would
+  model_.gps.position_time.reset();
+  station_.reconfigure();
+  station_.position_changed();
+  std::snprintf(buf, sizeof buf, "station %.4f, %.4f, %.0f m", lat_deg, lon_deg, height_m);
+  r.note = buf;
+  return r;
+}
+
+}  // namespace tb::tracker
