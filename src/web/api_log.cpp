@@ -5,6 +5,7 @@
 #include "logbook/adif.h"
 #include "tracker/log_json.h"
 #include "tracker/log_ops.h"
+#include "tracker/station_loop.h"
 #include "util/text.h"
 
 namespace tb::web {
@@ -20,11 +21,13 @@ Response reply(int status, const json& j) {
 }
 Response refuse(int status, const std::string& sentence) { return reply(status, {{"error", sentence}}); }
 
-// ?since=2026-12-01 (or a time); 0 when absent; nullopt when malformed.
-std::optional<std::int64_t> since_of(const std::string& target) {
+// ?since=2026-12-01 (or a time, or "today": the station clock's UTC day); 0 when absent; nullopt
+// when malformed.
+std::optional<std::int64_t> since_of(const std::string& target, std::int64_t station_now) {
   const auto s = query_param(target, "since");
   if (!s) return std::nullopt;
   if (s->empty()) return 0;
+  if (*s == "today") return station_now - ((station_now % 86400) + 86400) % 86400;
   return logbook::parse_utc(*s);
 }
 
@@ -46,8 +49,9 @@ Response log_get(tracker::StationLoop& station, const std::string& path, const s
   std::string why;
   logbook::Logbook* b = ops.book(why);
   if (!b) return refuse(409, why);
-  const auto since = since_of(target);
-  if (!since) return refuse(400, "since: expected a UTC date like 2026-12-01 or a time like 2026-12-01T21:00Z");
+  const auto now = std::chrono::floor<std::chrono::seconds>(station.clock().now()).time_since_epoch().count();
+  const auto since = since_of(target, now);
+  if (!since) return refuse(400, "since: expected a UTC date like 2026-12-01, a time like 2026-12-01T21:00Z, or today");
   const auto qsos = b->list(*since);
   if (path == "/api/v1/log.adi") {
     const logbook::AdifExport e = logbook::write_adif(qsos, version.empty() ? "unknown" : version, wall_now_unix);

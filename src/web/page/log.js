@@ -1,6 +1,7 @@
 // The "Log QSO" card (docs/logbook.md): call, grid and report typed at the rig; the station fills
 // the satellite, mode, both frequencies and the time from the pass it tracks (POST /api/v1/log).
-// Below it today's QSOs (UTC) with edit and delete, and the ADIF export link.
+// Below it the QSOs of the station's UTC day (since=today: its clock, not the browser's) with edit
+// and delete, and the ADIF export link.
 "use strict";
 (function () {
   const el = (id) => document.getElementById(id);
@@ -19,8 +20,6 @@
     if (!res.ok) throw new Error(j.error || ("HTTP " + res.status));
     return j;
   }
-
-  function today() { return new Date().toISOString().slice(0, 10); }
 
   function say(text, bad) {
     const r = el("log-reply");
@@ -57,7 +56,7 @@
 
   async function refresh() {
     let j;
-    try { j = await call("GET", "/api/v1/log?since=" + today()); } catch (e) { say(e.message, true); return; }
+    try { j = await call("GET", "/api/v1/log?since=today"); } catch (e) { say(e.message, true); return; }
     if (!j) return;
     const body = el("log-list").querySelector("tbody");
     body.textContent = "";

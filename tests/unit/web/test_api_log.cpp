@@ -89,6 +89,7 @@ TEST_CASE("web: POST /api/v1/log stores the pass's QSO; GET lists it; edit keeps
   CHECK(j["summary"]["count"] == 1);
   CHECK(w.request("GET", "/api/v1/log?since=2026-05-22").body.find("\"qsos\":[]") != std::string::npos);
   CHECK(w.request("GET", "/api/v1/log?since=May").status == 400);
+  CHECK(json::parse(w.request("GET", "/api/v1/log?since=today").body)["qsos"].size() == 1);  // the station's day
 
   r = w.request("POST", "/api/v1/log/edit", R"({"id":1,"grid":"FN42"})");
   REQUIRE(r.status == 200);
