@@ -60,7 +60,7 @@ std::optional<Reply> Interpreter::tuning(std::string_view u, std::string_view li
                                    otx ? std::optional<long long>(*hz) : std::nullopt);
   }
   if (!done.ok()) return error(cmd + ": " + *done.refusal);
-  if (done.model_changed) station_.settings_changed();   // on disk before the prompt returns
+  if (done.model_changed) station_.save_settings();   // on disk before the prompt returns
   return Reply{};
 }
 
@@ -86,7 +86,7 @@ Reply Interpreter::station(std::string_view arg) {
   }
   const tracker::OpResult done = ops().set_station(lat, lon, height);
   if (!done.ok()) return error("QTH: " + *done.refusal);
-  if (done.model_changed) station_.settings_changed();
+  if (done.model_changed) station_.save_settings();
   return Reply{{"QTH " + done.note.substr(done.note.find(' ') + 1)}, true, false};
 }
 

@@ -28,6 +28,7 @@ std::optional<std::string> untuned(StationLoop& station) {
 
 OpResult StationOps::tune_spot(std::int64_t downlink_hz) {
   if (const auto why = untuned(station_)) return OpResult::refuse(*why);
+  if (auto no = ask(Resource::radio, true)) return *no;  // the operator tunes trakbox's own tracking (control.h)
   radio::Tuner& t = station_.tuner();
   const std::string& name = model_.db.satellites[static_cast<std::size_t>(*station_.tuned())].name();
   const auto band = radio::transponder_of(t.satellite());
@@ -51,6 +52,7 @@ OpResult StationOps::tune_offsets(std::optional<std::int64_t> rx_hz, std::option
       return OpResult::refuse(std::string(what) + " offset " + hz_text(*v) + " out of range: expected -" +
                               std::to_string(radio::kMaxOffsetHz) + " to " + std::to_string(radio::kMaxOffsetHz));
   if (const auto why = untuned(station_)) return OpResult::refuse(*why);
+  if (auto no = ask(Resource::radio, true)) return *no;  // the operator tunes trakbox's own tracking (control.h)
   radio::Tuner& t = station_.tuner();
   t.set_offsets(rx_hz, tx_hz);
   OpResult r;
@@ -74,6 +76,7 @@ OpResult StationOps::tune_tone(double hz) {
                             "(tenths, e.g. 67.0) or 0 for none");
   }
   if (const auto why = untuned(station_)) return OpResult::refuse(*why);
+  if (auto no = ask(Resource::radio, true)) return *no;  // the operator tunes trakbox's own tracking (control.h)
   auto& sat = model_.db.satellites[static_cast<std::size_t>(*station_.tuned())];
   const int t = static_cast<int>(tenths);
   OpResult r;
