@@ -126,7 +126,7 @@ Unit::Reply Unit::cmd_stop(const Command& c) {
   auto_started_ = false;
   last_track_target_.reset();
   release();
-  tracker::StationOps(station_).stop();
+  tracker::StationOps(station_, {tracker::HolderKind::satrak, "satrak"}).stop();  // the Satrak client's own stop
   return reply_ok(c.head());
 }
 

@@ -137,13 +137,14 @@ OpResult StationOps::track_list(const std::vector<std::string>& names, bool prio
 }
 
 OpResult StationOps::stop() {
-  // Stop always works, in standby too: nothing moves.
-  if (!station_.control().standby())
-    if (auto no = ask(Resource::antenna)) return *no;
+  // Stop always stops the motors (a safety action: in standby, under --exclusive, whoever holds);
+  // it takes the antenna when the controller grants it, else the holder keeps it.
+  const std::optional<OpResult> no = station_.control().standby() ? std::nullopt : ask(Resource::antenna);
   station_.rotator().stop();
   station_.antenna_changed();
   OpResult r;
-  r.note = "antenna stopped";
+  r.note = no ? "antenna stopped; " + station_.control().holder(Resource::antenna).label + " still holds it"
+              : "antenna stopped";
   return r;
 }
 

@@ -188,3 +188,22 @@ TEST_CASE("--udp-events: stored destinations kept, replaced, or cleared by none;
   }
   CHECK(error_of(many) == "--udp-events: at most 16 destinations");
 }
+
+TEST_CASE("--handback, --exclusive, --satnogs-station and --satnogs-url are read and checked (issue 44)") {
+  const auto none = parse({});
+  REQUIRE(none.config);
+  CHECK_FALSE(none.config->handback_s);
+  CHECK_FALSE(none.config->exclusive);
+  CHECK_FALSE(none.config->satnogs_station);
+  const auto set = parse({"--handback", "0", "--exclusive", "rotctld", "--satnogs-station", "5024", "--satnogs-url",
+                          "http://127.0.0.1:8000"});
+  REQUIRE(set.config);
+  CHECK(set.config->handback_s == 0);
+  CHECK(set.config->exclusive == "rotctld");
+  CHECK(set.config->satnogs_station == 5024);
+  CHECK(set.config->satnogs_url == "http://127.0.0.1:8000");
+  CHECK(parse({"--exclusive", "none"}).config->exclusive == "");
+  CHECK(error_of({"--exclusive", "gpredict"}) == "--exclusive: expected rotctld, rigctld, satrak or none; found 'gpredict'");
+  CHECK(error_of({"--handback", "-1"}).rfind("--handback: expected seconds, 0 to 86400", 0) == 0);
+  CHECK(error_of({"--satnogs-url", "ftp://x"}) == "--satnogs-url: expected an http:// or https:// URL; found 'ftp://x'");
+}

@@ -156,3 +156,25 @@ TEST_CASE("the --udp-events destinations round-trip in their one written form; b
   j.erase("udp_events");  // a state file from before they were stored
   CHECK(model_from_json(j).udp_events.empty());
 }
+
+TEST_CASE("sharing (issue 44) round-trips; a bad --exclusive or a reservation ending first is refused by name") {
+  Model m = factory_defaults();
+  CHECK(m.sharing == Sharing{});
+  CHECK(m.sharing.handback_s == 30);
+  m.sharing.handback_s = 0;
+  m.sharing.exclusive = "rigctld";
+  m.sharing.standby = true;
+  m.sharing.satnogs_station = 5024;
+  m.sharing.reservations = {{"op-1893492000", 1893492000, 1893495600, "EME"}};
+  json j = to_json(m);
+  CHECK(model_from_json(j).sharing == m.sharing);
+  j["sharing"]["exclusive"] = "gpredict";
+  CHECK_THROWS_WITH_AS(model_from_json(j), "sharing.exclusive: expected rotctld, rigctld, satrak or \"\"; found 'gpredict'",
+                       std::runtime_error);
+  j["sharing"]["exclusive"] = "";
+  j["sharing"]["reservations"][0]["end_unix"] = 1893492000;
+  CHECK_THROWS_WITH_AS(model_from_json(j), "sharing.reservations[0].end_unix: expected after start_unix",
+                       std::runtime_error);
+  j.erase("sharing");
+  CHECK(model_from_json(j).sharing == Sharing{});  // older states
+}
