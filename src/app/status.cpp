@@ -94,7 +94,7 @@ nlohmann::json antenna_json(StationApp& app) {
 // accepted that frequency yet), "confirmed".
 nlohmann::json link_json(const radio::RadioStatus& s, radio::Link link, std::optional<radio::Hz> sent) {
   const bool down = link == radio::Link::downlink;
-  if (!down && s.no_uplink && sent)
+  if (!down && s.no_uplink)  // before the first uplink too (the radio is preset when a satellite is chosen)
     return {{"state", "not sent"}, {"sent_hz", nullptr}, {"read_hz", nullptr},
             {"message", "the radio carries no uplink: give the uplink its own radio with --uplink-radio"}};
   const std::optional<radio::Hz> accepted = down ? s.downlink_hz : s.uplink_hz;

@@ -20,7 +20,8 @@ namespace tb::web {
 // the page's live.js makes it the list again), each entry without where its satellite is now
 // ("now", new every second for all of them, which the page does not draw; /api/v1/status has it),
 // the element age to 0.01 day and the next pass's highest elevation to 0.01 degree (the page shows
-// tenths and degrees; the pass search's last digits move from one second to the next).
+// tenths and degrees; the pass search's last digits move from one second to the next); the radios
+// and the satellites followed (status.tracking.satellites) by position too.
 void shape_for_live(nlohmann::json& status);
 
 class LiveFeed {

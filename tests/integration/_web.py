@@ -88,13 +88,21 @@ def merge_patch(target, patch):
     return out
 
 
+def as_list(v):
+    """A list sent as an object of its entries by position, as a list again."""
+    return [v[k] for k in sorted(v, key=int)] if isinstance(v, dict) else v
+
+
 def as_drawn(doc):
-    """The live state with its tracking list, sent as an object by position, as a list again."""
-    st = doc.get("status") or {}
-    tl = st.get("tracking_list")
-    if not isinstance(tl, dict):
+    """The live state with its tracking list, radios and followed satellites, sent as objects by
+    position, as lists again."""
+    st = doc.get("status")
+    if not isinstance(st, dict):
         return doc
-    return {**doc, "status": {**st, "tracking_list": [tl[k] for k in sorted(tl, key=int)]}}
+    out = {**st, **{k: as_list(st[k]) for k in ("tracking_list", "radios") if k in st}}
+    if isinstance(st.get("tracking"), dict) and "satellites" in st["tracking"]:
+        out["tracking"] = {**st["tracking"], "satellites": as_list(st["tracking"].get("satellites"))}
+    return {**doc, "status": out}
 
 
 class WebSocket:

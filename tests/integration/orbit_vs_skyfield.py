@@ -215,7 +215,8 @@ def compare_passes(leo, rng):
             t1 = ts.tt_jd(t0.tt + 1.0)
             dut1 = float(ts.tt_jd(t0.tt + 0.5).dut1)
             rc, out, err = run(["passes", SATDATA, "--sat", str(sat.model.satnum), station_arg(st),
-                                "--start", iso(t0), "--hours", "24", "--dut1", repr(dut1), "--json"])
+                                "--start", iso(t0), "--hours", "24", "--dut1", repr(dut1), "--json",
+                                "--min-el", "-2"])  # every pass find_events sees: by default only those that rise above 0
             if rc != 0:
                 fail(f"passes {s.get('NAME')} from {st[0]}: exit {rc}: {err.strip()[-300:]}")
                 continue

@@ -179,6 +179,9 @@ def sdrpp_held_by_another():
         time.sleep(4)
         other.close()
         poll("trakbox served by SDR++", lambda: any(n > 1 for _, _, n in rig.sent(lambda line: line == "f")), 20)
+        # Its answer read and said before trakbox is told to leave (the reply may still be on its way).
+        poll("trakbox to say SDR++ answers", lambda: "radio SDR++ at 127.0.0.1:" in open(log_path).read() and
+             ": connected" in open(log_path).read(), 10)
         tb.stdin.close()
         check(tb.wait(20) == 0, "trakbox leaves cleanly")
         procs.remove(tb)

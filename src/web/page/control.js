@@ -3,7 +3,7 @@
 // it is not trakbox's own tracking, with "Take back"; the operator confirms before taking it from an
 // outside client or a SatNOGS window (the API answers 409 with the holder). Multiple tracking asks
 // which satellites (2 to 5). app.js calls drawControl with each state and chooseMulti for its button.
-let lastStatus = null;
+let controlStatus = null;
 
 function holderText(st) {
   const c = st.control;
@@ -16,7 +16,7 @@ function holderText(st) {
 }
 
 function drawControl(st) {
-  lastStatus = st;
+  controlStatus = st;
   const text = holderText(st);
   const box = document.getElementById("holder");
   box.hidden = text === "";
@@ -44,13 +44,13 @@ async function sendControl(path, body) {
 }
 
 function takeBack() {
-  if (lastStatus && lastStatus.standby) sendControl("/api/v1/standby", { on: false });
+  if (controlStatus && controlStatus.standby) sendControl("/api/v1/standby", { on: false });
   else sendControl("/api/v1/control", { take_back: true });
 }
 
 // Multiple tracking of the satellites the operator names (2 to 5, from the tracking list by default).
 function chooseMulti() {
-  const list = (lastStatus && lastStatus.tracking_list || []).map((e) => e.name);
+  const list = (controlStatus && controlStatus.tracking_list || []).map((e) => e.name);
   const answer = window.prompt("Multiple tracking: which satellites (2 to 5, separated by commas)?",
                                list.slice(0, 2).join(", "));
   if (answer === null) return;

@@ -16,13 +16,20 @@ function mergePatch(target, patch) {
   return out;
 }
 
-// The state as app.js draws it: the tracking list, sent as an object of its entries by position
-// (so that a patch carries only the entries that changed), made a list again.
+// The state as app.js draws it: the tracking list, the radios and the satellites followed, sent as
+// objects of their entries by position (so that a patch carries only the entries that changed), made
+// lists again.
+function asList(v) {
+  if (!v || typeof v !== "object" || Array.isArray(v)) return v;
+  return Object.keys(v).sort((a, b) => a - b).map((k) => v[k]);
+}
 function drawable(doc) {
   const st = doc.status;
-  if (!st || !st.tracking_list || Array.isArray(st.tracking_list)) return doc;
-  const list = Object.keys(st.tracking_list).sort((a, b) => a - b).map((k) => st.tracking_list[k]);
-  return Object.assign({}, doc, { status: Object.assign({}, st, { tracking_list: list }) });
+  if (!st) return doc;
+  const out = Object.assign({}, st, { tracking_list: asList(st.tracking_list), radios: asList(st.radios) });
+  if (st.tracking && typeof st.tracking === "object")
+    out.tracking = Object.assign({}, st.tracking, { satellites: asList(st.tracking.satellites) });
+  return Object.assign({}, doc, { status: out });
 }
 
 // The message as the page draws it: a state stays a state, a patch becomes the whole state it makes;

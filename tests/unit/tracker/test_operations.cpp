@@ -197,6 +197,8 @@ TEST_CASE("StationOps: a manual element refresh at most once per 10 minutes of s
   f.model.refresh.sources.push_back({"file://" TRAKBOX_SOURCE_DIR "/data/amateur.tle?b", "", ""});
   CHECK_FALSE(f.ops().refresh_elements(0).ok());
   f.station->set_refresh(nullptr);
+}
+
 TEST_CASE("StationOps: a list that pushes satellites out of a full tracking list names them (issue 46)") {
   Ops f;
   REQUIRE(f.model.db.satellites.size() >= 17);

@@ -61,6 +61,11 @@ TEST_CASE("shape_for_live: the list by position, without where each satellite is
   CHECK(status == json::parse(R"({"time":"t","tracking_list":{
       "0":{"name":"ISS","element_age_days":0.41,"number":4,"next_pass":{"aos":"a","max_el_deg":22.29}},
       "1":{"name":"AO-07","element_age_days":339.25,"number":1,"next_pass":null}, "2":7}})"));
+  json lists = json::parse(R"({"radios":[{"radio":"a","tuning":{"downlink_dial_hz":1}},{"radio":"b"}],
+      "tracking":{"mode":"single","satellites":[{"name":"ISS","az_deg":1.5}]}})");
+  tb::web::shape_for_live(lists);
+  CHECK(lists == json::parse(R"({"radios":{"0":{"radio":"a","tuning":{"downlink_dial_hz":1}},"1":{"radio":"b"}},
+      "tracking":{"mode":"single","satellites":{"0":{"name":"ISS","az_deg":1.5}}}})"));
   json none = json::parse(R"({"tracking_list":null})");
   tb::web::shape_for_live(none);
   CHECK(none == json::parse(R"({"tracking_list":null})"));
