@@ -25,7 +25,6 @@ import signal
 import socket
 import sys
 import tempfile
-import threading
 import time
 
 sys.path.insert(0, os.path.dirname(__file__))
@@ -319,7 +318,7 @@ def main():
         refresh(w)
         repro("the station is running", w.alive())
     finally:
-        err = w.stop()
+        w.stop()
     log = open(os.path.join(w.state, "trakbox.log")).read()
     repro("bad requests logged with the address", re.search(r"refused 127\.0\.0\.1 \(4\d\d\)", log) is not None)
     held_at_bounds()

@@ -28,7 +28,7 @@ import sys
 import tempfile
 import threading
 import time
-from datetime import datetime, timedelta, timezone
+from datetime import datetime, timedelta
 
 sys.path.insert(0, os.path.dirname(__file__))
 from _tbharness import BIN, SOURCE, check, poll, reap, run_test, satellite_track, sh  # noqa: E402
