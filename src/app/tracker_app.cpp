@@ -15,18 +15,18 @@
 #include <spdlog/sinks/stdout_sinks.h>
 #include <spdlog/spdlog.h>
 
-#include "app/attach_client.h"
-#include "app/attach_server.h"
-#include "app/build_info.h"
-#include "app/event_hooks.h"
-#include "app/log_requests.h"
+#include "cli/attach_client.h"
+#include "live/attach_server.h"
+#include "live/build_info.h"
+#include "live/event_hooks.h"
+#include "live/log_requests.h"
 #include "app/secret_reload.h"
-#include "app/state_lock.h"
-#include "app/station_app.h"
-#include "app/status.h"
-#include "app/satnogs_poll.h"
-#include "app/station_command.h"
-#include "app/udp_events.h"
+#include "live/state_lock.h"
+#include "live/station_app.h"
+#include "live/status.h"
+#include "live/satnogs_poll.h"
+#include "live/station_command.h"
+#include "live/udp_events.h"
 #include "menus/menus.h"
 #include "menus/standalone.h"
 #include "menus/term/curses_terminal.h"
@@ -606,7 +606,7 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   } stopped_line{log};
   StationApp app(startup.model, file, log);
   if (auto err = build_station(app, c)) return usage_error(*err);
-  const std::unique_ptr<tracker::Logging> logging = open_logging(app, c);
+  const std::unique_ptr<tracker::Logging> logging = open_logging(app, c.state_dir, c.data_dir);
   configure_refresh(app, c);
   app.start_gps();
   app.set_satrak_saved(startup.satrak_saved);
@@ -633,7 +633,7 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   EventHooks hooks(app.io(), c.hooks, std::chrono::seconds(c.hook_timeout_s), *log);
   std::unique_ptr<UdpEvents> udp;
   if (auto err = open_udp_events(app, c, *log, udp)) return usage_error(*err);
-  const auto satnogs = start_satnogs(app, c, *log);
+  const auto satnogs = start_satnogs(app, c.rigctld_port, std::chrono::seconds(c.elements_timeout_s), *log);
   app.set_events(
       [&](const tracker::Event& e) {
         const nlohmann::json j = tracker::to_json(e);

@@ -1,6 +1,6 @@
 // `trakbox attach`, `trakbox status` and `trakbox events`: the clients of the running station's
 // socket (attach_server.h, docs/service.md).
-#include "app/attach_client.h"
+#include "cli/attach_client.h"
 
 #include <poll.h>
 #include <sys/ioctl.h>
@@ -17,10 +17,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/attach_server.h"
-#include "app/station_socket.h"
-#include "app/options.h"
-#include "app/status.h"
+#include "live/attach_server.h"
+#include "live/station_socket.h"
+#include "cli/options.h"
+#include "live/status.h"
 
 namespace tb::app {
 namespace {

@@ -1,11 +1,11 @@
-#include "app/cli_defaults.h"
+#include "cli/cli_defaults.h"
 
 #include <cctype>
 #include <chrono>
 #include <cmath>
 
-#include "app/station_app.h"
-#include "app/tracker_config.h"
+#include "live/station_app.h"
+#include "cli/tracker_config.h"
 #include "station/station.h"
 #include "store/model.h"
 #include "store/state_file.h"

@@ -1,4 +1,4 @@
-#include "app/cli_elements.h"
+#include "cli/cli_elements.h"
 
 #include <chrono>
 #include <cstdio>

@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-#include "app/options.h"
+#include "cli/options.h"
 #include "orbit/elements.h"
 
 namespace tb::app {

@@ -11,10 +11,10 @@
 #include <thread>
 #include <vector>
 
-#include "app/cli_defaults.h"
-#include "app/cli_elements.h"
-#include "app/cli_orbit.h"
-#include "app/options.h"
+#include "cli/cli_defaults.h"
+#include "cli/cli_elements.h"
+#include "cli/cli_orbit.h"
+#include "cli/options.h"
 #include "orbit/element_age.h"
 #include "orbit/passes.h"
 #include "orbit/sgp4.h"

@@ -1,5 +1,5 @@
-#include "app/cli_orbit.h"
-#include "app/cli_orbit_internal.h"
+#include "cli/cli_orbit.h"
+#include "cli/cli_orbit_internal.h"
 #include "util/safe_text.h"
 
 #include <algorithm>
@@ -14,9 +14,9 @@
 #include <iterator>
 #include <optional>
 
-#include "app/cli_defaults.h"
-#include "app/cli_elements.h"
-#include "app/options.h"
+#include "cli/cli_defaults.h"
+#include "cli/cli_elements.h"
+#include "cli/options.h"
 #include "orbit/element_age.h"
 #include "orbit/elements.h"
 #include "orbit/observe.h"

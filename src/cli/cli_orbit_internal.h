@@ -6,9 +6,9 @@
 #include <string_view>
 #include <vector>
 
-#include "app/cli_defaults.h"
-#include "app/cli_elements.h"
-#include "app/options.h"
+#include "cli/cli_defaults.h"
+#include "cli/cli_elements.h"
+#include "cli/options.h"
 #include "orbit/elements.h"
 #include "orbit/observe.h"
 #include "util/format.h"

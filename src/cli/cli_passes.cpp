@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "app/cli_orbit.h"
-#include "app/cli_orbit_internal.h"
-#include "app/pass_plot.h"
+#include "cli/cli_orbit.h"
+#include "cli/cli_orbit_internal.h"
+#include "cli/pass_plot.h"
 #include "util/text.h"
 #include "orbit/element_age.h"
 #include "orbit/passes.h"

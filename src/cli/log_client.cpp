@@ -7,10 +7,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/attach_client.h"
-#include "app/log_requests.h"
-#include "app/options.h"
-#include "app/station_socket.h"
+#include "cli/attach_client.h"
+#include "live/log_requests.h"
+#include "cli/options.h"
+#include "live/station_socket.h"
 #include "logbook/logbook.h"
 #include "store/state_file.h"
 #include "tracker/elements_refresh.h"

@@ -1,4 +1,4 @@
-#include "app/pass_plot.h"
+#include "cli/pass_plot.h"
 
 #include <cairo-svg.h>
 #include <cairo.h>

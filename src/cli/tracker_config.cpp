@@ -1,12 +1,12 @@
-#include "app/tracker_config.h"
+#include "cli/tracker_config.h"
 
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 
-#include "app/build_info.h"
-#include "app/rotator_registry.h"
-#include "app/station_socket.h"
+#include "live/build_info.h"
+#include "satrak/rotator_registry.h"
+#include "live/station_socket.h"
 #include "gps/gpsd_client.h"
 #include "station/clock.h"
 #include "menus/term/line_terminal.h"

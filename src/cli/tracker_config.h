@@ -11,12 +11,12 @@
 
 #include <spdlog/common.h>
 
-#include "app/event_hooks.h"
-#include "app/options.h"
-#include "app/udp_events.h"
+#include "live/event_hooks.h"
+#include "cli/options.h"
+#include "live/udp_events.h"
 #include "orbit/time.h"
 #include "radio/factory.h"
-#include "app/rotator_registry.h"
+#include "satrak/rotator_registry.h"
 #include "util/cidr.h"
 
 namespace tb::app {

@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/attach_server.h"
+#include "live/attach_server.h"
 #include "menus/term/terminal.h"
 #include "util/json_limits.h"
 #include "util/safe_text.h"

@@ -1,4 +1,4 @@
-#include "app/attach_server.h"
+#include "live/attach_server.h"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -27,7 +27,7 @@
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
-#include "app/attach_internal.h"
+#include "live/attach_internal.h"
 #include "menus/term/curses_terminal.h"
 #include "menus/term/line_terminal.h"
 #include "util/backoff.h"

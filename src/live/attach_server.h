@@ -49,9 +49,9 @@ inline constexpr std::size_t kMaxScreenTypes = 8;  // terminal types with a kept
 struct AttachServerOptions {
   std::string path;                           // the socket
   std::function<nlohmann::json()> status;     // the status document
-  // "log {json}": the logbook's request (`trakbox log ...`, app/log_requests.h), its JSON reply.
+  // "log {json}": the logbook's request (`trakbox log ...`, live/log_requests.h), its JSON reply.
   std::function<std::string(const std::string&)> log;
-  // `trakbox standby`, `trakbox reserve` (app/station_command.h): the request line in, the answer out.
+  // `trakbox standby`, `trakbox reserve` (live/station_command.h): the request line in, the answer out.
   std::function<bool(const std::string&)> is_command;
   std::function<std::string(const std::string&)> command;
   // Whether the menus are offered (a trakbox whose menus are on its console answers status and

@@ -9,7 +9,7 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "app/attach_internal.h"
+#include "live/attach_internal.h"
 
 namespace tb::app {
 

@@ -1,4 +1,4 @@
-#include "app/control_status.h"
+#include "live/control_status.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,4 +1,4 @@
-#include "app/event_hooks.h"
+#include "live/event_hooks.h"
 
 #include <fcntl.h>
 #include <signal.h>

@@ -1,11 +1,10 @@
-#include "app/log_requests.h"
+#include "live/log_requests.h"
 
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
-#include "app/build_info.h"
-#include "app/station_app.h"
-#include "app/tracker_config.h"
+#include "live/build_info.h"
+#include "live/station_app.h"
 #include "logbook/adif.h"
 #include "tracker/elements_refresh.h"
 #include "tracker/log_json.h"
@@ -15,12 +14,13 @@ namespace tb::app {
 
 using nlohmann::json;
 
-std::unique_ptr<tracker::Logging> open_logging(StationApp& app, const TrackerConfig& c) {
+std::unique_ptr<tracker::Logging> open_logging(StationApp& app, const std::filesystem::path& state_dir,
+                                               const std::string& data_dir) {
   auto l = std::make_unique<tracker::Logging>();
-  const std::string path = (c.state_dir / "logbook.sqlite").string();
+  const std::string path = (state_dir / "logbook.sqlite").string();
   l->book = logbook::Logbook::open(path, l->open_error);
   if (!l->book) app.log().error("logbook: {}", l->open_error);
-  l->names = logbook::load_lotw_names(c.data_dir + "/lotw-satellites.txt");
+  l->names = logbook::load_lotw_names(data_dir + "/lotw-satellites.txt");
   if (!l->names.error.empty()) app.log().warn("logbook: LoTW names: {}", l->names.error);
   app.station().set_logging(l.get());
   return l;

@@ -4,6 +4,7 @@
 // `trakbox log` command, which asks the running station, or with none running opens the state
 // directory's logbook itself for list, export and import.
 #pragma once
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -15,15 +16,14 @@ struct Logging;
 namespace tb::app {
 
 class StationApp;
-struct TrackerConfig;
 
 // Opens the logbook and sets it on the station; a logbook that cannot be opened is logged and
 // reported in status, and logging is refused with the reason (the station runs on).
-std::unique_ptr<tracker::Logging> open_logging(StationApp& app, const TrackerConfig& c);
+// The logbook is STATE/logbook.sqlite; the LoTW names come from the data directory.
+std::unique_ptr<tracker::Logging> open_logging(StationApp& app, const std::filesystem::path& state_dir,
+                                               const std::string& data_dir);
 // One request of the socket: {"action": "add"|"list"|"export"|"import", ...} -> its JSON reply
 // ({"ok": true, ...} or {"error": "..."}). Never throws.
 std::string log_socket_request(StationApp& app, const std::string& request);
-// `trakbox log ...`; its exit status.
-int run_log(const std::vector<std::string>& args);
 
 }  // namespace tb::app

@@ -1,4 +1,4 @@
-#include "app/satnogs_poll.h"
+#include "live/satnogs_poll.h"
 
 #include <cstdio>
 
@@ -7,8 +7,7 @@
 #include <boost/asio/steady_timer.hpp>
 #include <spdlog/spdlog.h>
 
-#include "app/station_app.h"
-#include "app/tracker_config.h"
+#include "live/station_app.h"
 #include "download/download.h"
 #include "store/model.h"
 #include "tracker/satnogs_jobs.h"
@@ -101,12 +100,13 @@ SatnogsPoll::~SatnogsPoll() {
   impl_->timer.cancel();
 }
 
-// --satnogs-station: the station's SatNOGS calendar (app/satnogs_poll.h), and the warning when the
+// --satnogs-station: the station's SatNOGS calendar (live/satnogs_poll.h), and the warning when the
 // SatNOGS flowgraph's rigctl port (4532) is trakbox's rigctld's too.
-std::unique_ptr<SatnogsPoll> start_satnogs(StationApp& app, const TrackerConfig& c, spdlog::logger& log) {
+std::unique_ptr<SatnogsPoll> start_satnogs(StationApp& app, std::optional<int> rigctld_port,
+                                           std::chrono::seconds timeout, spdlog::logger& log) {
   const store::Sharing& sh = app.model().sharing;
   if (sh.satnogs_station <= 0) return nullptr;
-  if (c.rigctld_port && *c.rigctld_port == 4532) {
+  if (rigctld_port && *rigctld_port == 4532) {
     const char* why = "--rigctld-port 4532 with --satnogs-station: the SatNOGS flowgraph listens for Doppler on "
                       "4532 too; give trakbox's rigctld another port (docs/sharing.md)";
     log.warn("{}", why);
@@ -116,7 +116,7 @@ std::unique_ptr<SatnogsPoll> start_satnogs(StationApp& app, const TrackerConfig&
            tracker::kSatnogsPollSeconds / 60);
   return std::make_unique<SatnogsPoll>(app.io(), app.station(),
                                        sh.satnogs_url.empty() ? tracker::kSatnogsNetworkUrl : sh.satnogs_url,
-                                       sh.satnogs_station, std::chrono::seconds(c.elements_timeout_s));
+                                       sh.satnogs_station, timeout);
 }
 
 }  // namespace tb::app

@@ -37,9 +37,9 @@ class SatnogsPoll {
 };
 
 class StationApp;
-struct TrackerConfig;
 // The poll of the stored --satnogs-station (none without one), and the warning when the SatNOGS
 // flowgraph's rigctl port (4532) is trakbox's rigctld's too.
-std::unique_ptr<SatnogsPoll> start_satnogs(StationApp& app, const TrackerConfig& c, spdlog::logger& log);
+std::unique_ptr<SatnogsPoll> start_satnogs(StationApp& app, std::optional<int> rigctld_port,
+                                           std::chrono::seconds timeout, spdlog::logger& log);
 
 }  // namespace tb::app

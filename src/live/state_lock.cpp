@@ -1,4 +1,4 @@
-#include "app/state_lock.h"
+#include "live/state_lock.h"
 
 #include <fcntl.h>
 #include <sys/file.h>

@@ -1,4 +1,4 @@
-#include "app/station_app.h"
+#include "live/station_app.h"
 
 #include <poll.h>
 #include <sys/stat.h>

@@ -1,6 +1,6 @@
-#include "app/station_command.h"
+#include "live/station_command.h"
 
-#include "app/station_app.h"
+#include "live/station_app.h"
 #include "orbit/time.h"
 #include "tracker/operations.h"
 #include "util/safe_text.h"

@@ -1,4 +1,4 @@
-#include "app/station_socket.h"
+#include "live/station_socket.h"
 
 #include <filesystem>
 

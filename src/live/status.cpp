@@ -1,4 +1,4 @@
-#include "app/status.h"
+#include "live/status.h"
 
 #include <unistd.h>
 
@@ -7,8 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/control_status.h"
-#include "app/station_app.h"
+#include "live/control_status.h"
+#include "live/station_app.h"
 #include "gps/monitor.h"
 #include "orbit/element_age.h"
 #include "radio/two_radios.h"

@@ -1,4 +1,4 @@
-#include "app/udp_events.h"
+#include "live/udp_events.h"
 
 #include <stdexcept>
 

@@ -1,4 +1,4 @@
-#include "app/rotator_registry.h"
+#include "satrak/rotator_registry.h"
 
 #include <algorithm>
 
