@@ -6,8 +6,9 @@ and its subfolders, menus, menus/term directly): an include "orbit/sgp4.h" is a 
 on term. The table's "depends on" cell must name exactly those folders (by their last path part;
 "nothing" or an empty cell for none). Outside libraries in the cell (libcurl, ncurses, ...) are
 not checked here: CMake's target_link_libraries says what links. Every folder must have a row.
-Exits 1 naming each folder and each dependency on which the two disagree; run by CTest
-(`architecture_table`).
+The folders' dependencies must also form no cycle (src/app over src/cli over src/live, ...): a
+cycle is named with the include that closes it. Exits 1 naming each folder and each dependency on
+which the two disagree; run by CTest (`architecture_table`).
 """
 import os
 import re
@@ -78,6 +79,27 @@ def documented(mods):
     return rows
 
 
+def cycles(code):
+    """Each loop of folders that include one another, as 'a -> b -> a' with the includes."""
+    graph = {short: sorted(found) for short, (_, found) in code.items()}
+    out, state = [], {}
+
+    def visit(node, path):
+        state[node] = "open"
+        for nxt in graph.get(node, []):
+            if state.get(nxt) == "open":
+                loop = path[path.index(nxt):] + [nxt]
+                out.append(" -> ".join(loop) + " (" + "; ".join(code[a][1][b] for a, b in zip(loop, loop[1:])) + ")")
+            elif nxt not in state:
+                visit(nxt, path + [nxt])
+        state[node] = "done"
+
+    for node in sorted(graph):
+        if node not in state:
+            visit(node, [node])
+    return out
+
+
 def main():
     mods = modules()
     code = derived(mods)
@@ -94,6 +116,7 @@ def main():
             problems.append(f"{folder}: depends on {name} ({found[name]}) but the table does not say so")
         for name in sorted((doc[short] & shorts) - set(found)):
             problems.append(f"{folder}: the table says it depends on {name}, but no file in it includes {name}/")
+    problems += [f"folders include one another: {c}" for c in cycles(code)]
     if problems:
         print("docs/ARCHITECTURE.md's module table disagrees with the includes:")
         for p in problems:

@@ -4,12 +4,11 @@
 #include <string>
 #include <vector>
 
-#include "app/attach_client.h"
-#include "app/cli_elements.h"
-#include "app/cli_orbit.h"
-#include "app/log_requests.h"
-#include "app/options.h"
-#include "app/rotator_registry.h"
+#include "cli/attach_client.h"
+#include "cli/cli_elements.h"
+#include "cli/cli_orbit.h"
+#include "cli/options.h"
+#include "satrak/rotator_registry.h"
 #include "app/tracker_app.h"
 #include "radio/registry.h"
 #include "satrak/client.h"

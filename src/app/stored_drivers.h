@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "app/tracker_config.h"
+#include "cli/tracker_config.h"
 #include "store/model.h"
 
 namespace tb::app {

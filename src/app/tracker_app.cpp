@@ -15,18 +15,19 @@
 #include <spdlog/sinks/stdout_sinks.h>
 #include <spdlog/spdlog.h>
 
-#include "app/attach_client.h"
-#include "app/attach_server.h"
-#include "app/build_info.h"
-#include "app/event_hooks.h"
-#include "app/log_requests.h"
+#include "cli/attach_client.h"
+#include "live/attach_server.h"
+#include "live/build_info.h"
+#include "live/event_hooks.h"
+#include "live/log_requests.h"
 #include "app/secret_reload.h"
-#include "app/state_lock.h"
-#include "app/station_app.h"
-#include "app/status.h"
-#include "app/satnogs_poll.h"
-#include "app/station_command.h"
-#include "app/udp_events.h"
+#include "app/servers.h"
+#include "live/state_lock.h"
+#include "live/station_app.h"
+#include "live/status.h"
+#include "live/satnogs_poll.h"
+#include "live/station_command.h"
+#include "live/udp_events.h"
 #include "menus/menus.h"
 #include "menus/standalone.h"
 #include "menus/term/curses_terminal.h"
@@ -43,7 +44,6 @@
 #include "tracker/elements_refresh.h"
 #include "tracker/events.h"
 #include "tracker/log_ops.h"
-#include "tracker/web_url.h"
 #include "tracker/station_loop.h"
 #include "web/access.h"
 #include "web/api.h"
@@ -166,50 +166,6 @@ std::optional<std::string> build_station(StationApp& app, const TrackerConfig& c
   return std::nullopt;
 }
 
-// Remote control on the same event loop: the Satrak ACU protocol, rotctld/rigctld compatibles,
-// host mode.
-struct Servers {
-  std::unique_ptr<satrak::Unit> satrak_unit;
-  std::unique_ptr<satrak::Server> satrak;
-  std::unique_ptr<netctl::RotctldServer> rotctld;
-  std::unique_ptr<netctl::RigctldServer> rigctld;
-  std::unique_ptr<netctl::HostServer> host;
-  std::unique_ptr<netctl::PstServer> pst;   // --pst-port: PstRotator's UDP commands
-  // The web page and API (--http-port): who may do what, the requests' handler, the server.
-  std::unique_ptr<web::Access> web_access;
-  std::unique_ptr<web::Api> web_api;
-  std::unique_ptr<web::Server> web;
-  std::string web_url;
-  // The one budget of wrong secrets for every endpoint (netctl/guesses.h): a budget per port
-  // multiplied it. Made by start_netctl, shared by the web endpoint.
-  std::shared_ptr<netctl::GuessGuard> guesses;
-
-  // Closed before the last save; the Satrak unit after it (its settings are saved with the model).
-  void close_listeners() {
-    web.reset();
-    rotctld.reset();
-    rigctld.reset();
-    host.reset();
-    pst.reset();
-    satrak.reset();
-  }
-};
-
-// What SIGHUP re-reads (secret_reload.h): each endpoint with a secret file.
-std::vector<SecretEndpoint> secret_endpoints(const TrackerConfig& c, Servers& s) {
-  std::vector<SecretEndpoint> e;
-  const auto& f = c.secret_files;
-  if (s.rotctld) e.push_back({"rotctld", f.rotctld, c.rotctld_secret, [&s](const std::string& v) { s.rotctld->set_secret(v); }});
-  if (s.rigctld) e.push_back({"rigctld", f.rigctld, c.rigctld_secret, [&s](const std::string& v) { s.rigctld->set_secret(v); }});
-  if (s.host) e.push_back({"host", f.host, c.host_secret, [&s](const std::string& v) { s.host->set_secret(v); }});
-  if (s.web_access)
-    e.push_back({"web", f.http, c.http_secret, [&s](const std::string& v) {
-                   s.web_access->set_secret(v);
-                   if (s.web) s.web->close_viewers();
-                 }});
-  return e;
-}
-
 // The Satrak unit and server. A busy default port is a note; a port asked for is an error.
 std::optional<std::string> start_satrak(StationApp& app, const TrackerConfig& c, Startup& s, Servers& out) {
   if (c.satrak_port == 0) return std::nullopt;
@@ -236,64 +192,6 @@ std::optional<std::string> start_satrak(StationApp& app, const TrackerConfig& c,
     out.satrak_unit.reset();
   }
   return std::nullopt;
-}
-
-std::optional<std::string> start_netctl(StationApp& app, const TrackerConfig& c, Servers& out) {
-  // One guessing budget for every endpoint (netctl/guesses.h): a budget per port multiplied it.
-  netctl::GuessPolicy policy;
-  policy.exempt = c.guess_exempt;
-  out.guesses = std::make_shared<netctl::GuessGuard>(policy);
-  auto guard = out.guesses;
-  auto opts = [&c, guard](netctl::ServerOptions so, const std::string& secret) {
-    so.address = c.listen;
-    so.allow = c.allow;
-    so.secret = secret;
-    so.guard = guard;
-    so.auth_deadline = std::chrono::seconds(c.auth_timeout_s);
-    return so;
-  };
-  auto port = [](int p) { return static_cast<std::uint16_t>(p); };
-  const char* starting = "";
-  try {
-    starting = "--rotctld-port";
-    if (c.rotctld_port)
-      out.rotctld = std::make_unique<netctl::RotctldServer>(app.io(), port(*c.rotctld_port), app.station(),
-                                                             opts(netctl::RotctldServer::named("rotctld"), c.rotctld_secret));
-    starting = "--rigctld-port";
-    if (c.rigctld_port)
-      out.rigctld = std::make_unique<netctl::RigctldServer>(app.io(), port(*c.rigctld_port), app.station(),
-                                                             opts(netctl::RotctldServer::named("rigctld"), c.rigctld_secret));
-    starting = "--host-port";
-    if (c.host_port)
-      out.host = std::make_unique<netctl::HostServer>(app.io(), port(*c.host_port), app.station(),
-                                                       opts(netctl::HostServer::defaults(), c.host_secret));
-    starting = "--pst-port";
-    if (c.pst_port)
-      out.pst = std::make_unique<netctl::PstServer>(app.io(), port(*c.pst_port), app.station(),
-                                                     netctl::PstOptions{c.listen, c.allow});
-  } catch (const std::exception& e) {
-    return std::string(starting) + ": " + e.what();
-  }
-  return std::nullopt;
-}
-
-// Beyond loopback with no allow-list, anyone who can reach a port can swing the antenna: say so
-// on standard error and in the log.
-void warn_open_endpoints(const TrackerConfig& c, const Servers& s, spdlog::logger& log) {
-  const auto open_to_all = [&](const std::string& what, const std::string& address, bool on) {
-    if (!on || !c.allow.empty() || inet::is_loopback(address)) return;
-    const std::string msg = what + " listens on " + address +
-                            " for every address: anyone who can reach it can move the antenna and tune the radio "
-                            "(name the stations with --allow CIDR; docs/security.md)";
-    log.warn("{}", msg);
-    std::fprintf(stderr, "trakbox: WARNING: %s\n", msg.c_str());
-  };
-  open_to_all("the Satrak server", c.satrak_bind, s.satrak != nullptr);
-  open_to_all("the rotctld server", c.listen, s.rotctld != nullptr);
-  open_to_all("the rigctld server", c.listen, s.rigctld != nullptr);
-  open_to_all("the host-mode server", c.listen, s.host != nullptr);
-  open_to_all("the PstRotator UDP server", c.listen, s.pst != nullptr);
-  open_to_all("the web server", c.listen, s.web != nullptr);
 }
 
 // The operator's terminal: stdin/stdout for host mode, the serial port of --tty, curses on a
@@ -382,54 +280,6 @@ int state_in_use(const TrackerConfig& c, const LockHolder& holder, const std::st
 
 // The station's socket: status and events always, the menus too for a service. A socket that
 // cannot be made is said and the station runs without it.
-// The servers that run, with what they refused (issue 33's counters) for `trakbox status`.
-nlohmann::json servers_json(const Servers& s) {
-  nlohmann::json out = nlohmann::json::array();
-  const auto line = [&out](const char* name, const netctl::LineServer& srv) {
-    const netctl::ServerStats& st = srv.stats();
-    out.push_back({{"name", name},
-                   {"port", srv.port()},
-                   {"clients", srv.client_count()},
-                   {"refused_not_allowed", st.refused_not_allowed},
-                   {"refused_busy", st.refused_busy},
-                   {"refused_per_address", st.refused_per_address},
-                   {"refused_locked_out", st.refused_locked_out},
-                   {"wrong_secrets", st.wrong_secrets},
-                   {"lockouts", st.lockouts}});
-  };
-  if (s.satrak) {
-    const satrak::Server::Stats st = s.satrak->stats();
-    out.push_back({{"name", "satrak"},
-                   {"port", s.satrak->port()},
-                   {"clients", s.satrak->clients()},
-                   {"accepted", st.accepted},
-                   {"refused", st.refused},
-                   {"refused_per_address", st.refused_per_address},
-                   {"evicted", st.evicted},
-                   {"dropped_slow", st.dropped_slow}});
-  }
-  if (s.pst) {
-    const netctl::PstStats& st = s.pst->stats();
-    out.push_back({{"name", "pstrotator"}, {"port", s.pst->port()}, {"taken", st.taken}, {"refused_bad", st.refused_bad},
-                   {"refused_not_allowed", st.refused_not_allowed}, {"refused_by_station", st.refused_by_station}});
-  }
-  if (s.rotctld) line("rotctld", s.rotctld->server());
-  if (s.rigctld) line("rigctld", s.rigctld->server());
-  if (s.host) line("host", s.host->server());
-  if (s.web) {
-    const web::Server::Stats st = s.web->stats();
-    out.push_back({{"name", "web"},
-                   {"port", s.web->port()},
-                   {"url", s.web_url},
-                   {"clients", st.connections},
-                   {"viewers", st.viewers},
-                   {"requests", st.requests},
-                   {"refused", st.refused},
-                   {"dropped_slow", st.dropped}});
-  }
-  return out;
-}
-
 std::unique_ptr<AttachServer> open_socket(StationApp& app, const TrackerConfig& c, StateLock& lock,
                                           const Servers& servers) {
   AttachServerOptions o;
@@ -457,45 +307,6 @@ std::unique_ptr<AttachServer> open_socket(StationApp& app, const TrackerConfig& 
     std::fprintf(stderr, "trakbox: WARNING: no attach socket: %s\n", e.what());
     return nullptr;
   }
-}
-
-// The web page and API on the station's loop (src/web), when --http-port asks; the URL is said at
-// start and in `trakbox status`.
-std::optional<std::string> start_web(StationApp& app, const TrackerConfig& c, Servers& out, AttachServer* attach) {
-  if (!c.http_port) return std::nullopt;
-  web::AccessOptions ao;
-  ao.secret = c.http_secret;
-  ao.public_view = c.http_public_view;
-  ao.hosts = c.http_hosts;
-  ao.loopback_only = inet::is_loopback(c.listen);
-  out.web_access = std::make_unique<web::Access>(ao, out.guesses);
-  web::ApiHooks hooks;
-  hooks.status = [&app, &c, &out, attach] {
-    StatusContext cx{kVersion, c.state_dir.string(), {}, {}, c.service, [&out] { return servers_json(out); }};
-    if (attach) cx.attached = attach->attached(), cx.keyboard = attach->keyboard();
-    return station_status(app, cx);
-  };
-  hooks.save = [&app] { return app.save(); };
-  hooks.wall_now_unix = [] { return tracker::ElementsRefresh::wall_now(); };
-  hooks.changed = [&out] {
-    if (out.web) out.web->push_soon();
-  };
-  out.web_api = std::make_unique<web::Api>(app.station(), *out.web_access, std::move(hooks));
-  web::ServerOptions so;
-  so.address = c.listen;
-  so.port = static_cast<std::uint16_t>(*c.http_port);
-  so.allow = c.allow;
-  try {
-    out.web = std::make_unique<web::Server>(app.io(), *out.web_api, so);
-  } catch (const std::exception& e) {
-    return std::string("--http-port: ") + e.what();
-  }
-  const std::string host = c.listen.find(':') != std::string::npos ? "[" + c.listen + "]" : c.listen;
-  out.web_url = "http://" + host + ":" + std::to_string(out.web->port()) + "/";
-  tracker::web_page_url() = out.web_url;   // the status line and menu 6-0 show it behind the full-screen menus
-  app.log().info("web: the station's page is at {}", out.web_url);
-  std::fprintf(stderr, "trakbox: the station's page: %s\n", out.web_url.c_str());
-  return std::nullopt;
 }
 
 // --udp-events: the destinations stored (as the command line just set them, or as last given). One
@@ -615,7 +426,7 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   } stopped_line{log};
   StationApp app(startup.model, file, log);
   if (auto err = build_station(app, c)) return usage_error(*err);
-  const std::unique_ptr<tracker::Logging> logging = open_logging(app, c);
+  const std::unique_ptr<tracker::Logging> logging = open_logging(app, c.state_dir, c.data_dir);
   configure_refresh(app, c);
   app.start_gps();
   app.set_satrak_saved(startup.satrak_saved);
@@ -642,7 +453,7 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   EventHooks hooks(app.io(), c.hooks, std::chrono::seconds(c.hook_timeout_s), *log);
   std::unique_ptr<UdpEvents> udp;
   if (auto err = open_udp_events(app, c, *log, udp)) return usage_error(*err);
-  const auto satnogs = start_satnogs(app, c, *log);
+  const auto satnogs = start_satnogs(app, c.rigctld_port, std::chrono::seconds(c.elements_timeout_s), *log);
   app.set_events(
       [&](const tracker::Event& e) {
         const nlohmann::json j = tracker::to_json(e);

@@ -6,7 +6,7 @@
 // every size is 0..65535 and encode_window_size of it decodes to itself; keyboard bytes framed
 // again (0xFF doubled) decode to themselves; decode_keys yields no more keys than bytes, each a
 // byte value or Backspace (DEL becomes Backspace).
-#include "app/attach_server.h"
+#include "live/attach_server.h"
 #include "fuzz_station.h"
 #include "menus/term/terminal.h"
 

@@ -6,7 +6,7 @@
 // at most 64 bytes, a tty name that is printable UTF-8, rows and columns within 0..65535.
 #include <algorithm>
 
-#include "app/attach_server.h"
+#include "live/attach_server.h"
 #include "fuzz_station.h"
 #include "util/safe_text.h"
 

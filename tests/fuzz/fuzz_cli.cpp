@@ -8,11 +8,11 @@
 // The input is the argument vector, words separated by NUL or LF (at most 32).
 // Properties: every error names an argument and says what was expected; the parsed options hold
 // what was given; a spec that parses is written back to one that parses the same.
-#include "app/options.h"
+#include "cli/options.h"
 #include "app/tracker_app.h"
 #include "fuzz_station.h"
 #include "radio/factory.h"
-#include "app/rotator_registry.h"
+#include "satrak/rotator_registry.h"
 #include "rotator/factory.h"
 #include "satrak/client.h"
 #include "util/host_port.h"

@@ -8,7 +8,7 @@
 // the names in the state's database dump without throwing, and read back to themselves.
 #include <nlohmann/json.hpp>
 
-#include "app/cli_orbit_internal.h"
+#include "cli/cli_orbit_internal.h"
 #include "fuzz_station.h"
 #include "orbit/elements.h"
 #include "store/database.h"

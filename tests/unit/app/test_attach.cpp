@@ -7,9 +7,9 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "app/attach_server.h"
-#include "app/event_hooks.h"
-#include "app/state_lock.h"
+#include "live/attach_server.h"
+#include "live/event_hooks.h"
+#include "live/state_lock.h"
 #include "menus/term/terminal.h"
 
 using namespace tb;

@@ -6,7 +6,7 @@
 
 #include <cctype>
 
-#include "app/cli_defaults.h"
+#include "cli/cli_defaults.h"
 #include "station/station.h"
 
 using namespace tb::app;

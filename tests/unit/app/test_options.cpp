@@ -1,4 +1,4 @@
-// The command-line option parser (app/options.h): the shape of a command line, the strict number
+// The command-line option parser (cli/options.h): the shape of a command line, the strict number
 // conversions, typed reading with ranges, and the one-line errors the orbit commands print.
 #include <doctest/doctest.h>
 
@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "app/cli_orbit.h"
-#include "app/options.h"
+#include "cli/cli_orbit.h"
+#include "cli/options.h"
 
 using namespace tb::app;
 

@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <memory>
 
-#include "app/pass_plot.h"
+#include "cli/pass_plot.h"
 #include "orbit/elements.h"
 #include "orbit/sgp4.h"
 #include "rotator/adc_model.h"

@@ -1,8 +1,8 @@
-// The rotator registry (app/rotator_registry.h): one table chooses the parser and the factory for
+// The rotator registry (satrak/rotator_registry.h): one table chooses the parser and the factory for
 // every --rotator.
 #include <doctest/doctest.h>
 
-#include "app/rotator_registry.h"
+#include "satrak/rotator_registry.h"
 #include "station/clock.h"
 
 using namespace tb;

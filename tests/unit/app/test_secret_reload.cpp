@@ -11,7 +11,7 @@
 #include <sstream>
 
 #include "app/secret_reload.h"
-#include "app/tracker_config.h"
+#include "cli/tracker_config.h"
 
 using namespace tb::app;
 

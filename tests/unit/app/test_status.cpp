@@ -1,11 +1,11 @@
-// The status document's text and problems (app/status.h) from documents written here by hand: a
+// The status document's text and problems (live/status.h) from documents written here by hand: a
 // satellite always up has no LOS to print, a "pass" that never rises says so, stale elements are a
 // problem, the station is named (issue 39).
 #include <doctest/doctest.h>
 
 #include <nlohmann/json.hpp>
 
-#include "app/status.h"
+#include "live/status.h"
 
 using namespace tb;
 using nlohmann::json;

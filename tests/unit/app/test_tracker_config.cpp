@@ -1,8 +1,8 @@
-// parse_tracker_config (app/tracker_config.h): the options of `trakbox [options]` read and checked
+// parse_tracker_config (cli/tracker_config.h): the options of `trakbox [options]` read and checked
 // before anything starts, as a value the rest of run_tracker takes.
 #include <doctest/doctest.h>
 
-#include "app/tracker_config.h"
+#include "cli/tracker_config.h"
 
 using namespace tb::app;
 

@@ -1,0 +1,162 @@
+// `trakbox log add|list|export|import`: through the running station's socket ("log {json}"); with
+// no station running, list, export and import open the state directory's logbook themselves.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/attach_client.h"
+#include "live/log_requests.h"
+#include "cli/options.h"
+#include "live/station_socket.h"
+#include "logbook/logbook.h"
+#include "store/state_file.h"
+#include "tracker/elements_refresh.h"
+
+namespace tb::app {
+
+using nlohmann::json;
+
+json log_export(const logbook::Logbook& b, std::int64_t since, std::int64_t now);
+json log_import(logbook::Logbook& b, const std::string& adif);
+json log_list(const logbook::Logbook& b, std::int64_t since);
+
+namespace {
+
+std::vector<OptionSpec> log_specs() {
+  return {{"help", "", "this list"},
+          {"socket", "PATH", "the station's socket (default: that of --state or of the default state directory)"},
+          {"state", "DIR", "the state directory (its socket, or its logbook.sqlite when no station runs)"},
+          {"since", "DATE", "list/export: the QSOs from this UTC date or time on (2026-12-01, 2026-12-01T21:00Z)"},
+          {"adif", "FILE", "export: write the ADIF to FILE (default: standard output)"},
+          {"rst-rcvd", "RST", "add: the report received"},
+          {"note", "TEXT", "add: a note (the ADIF COMMENT)"},
+          {"sat", "NAME", "add: the satellite (default: the one tracked)"},
+          {"mode", "MODE", "add: the emission FM, SSB, CW (default: the tracked radio's)"},
+          {"time", "UTC", "add: the time on (default: now)"},
+          {"power", "W", "add: the transmitter power"}};
+}
+
+std::string usage() {
+  return "usage: trakbox log add CALL [GRID] [RST] [--rst-rcvd RST] [--note TEXT] [--sat NAME] [--mode MODE]\n"
+         "                      [--time UTC] [--power W]\n"
+         "       trakbox log list [--since DATE]\n"
+         "       trakbox log export [--since DATE] [--adif FILE]\n"
+         "       trakbox log import FILE\n"
+         "each with [--socket PATH | --state DIR]\n\n"
+         "The operator's logbook (docs/logbook.md). add logs a QSO with the pass the running station tracks\n"
+         "(satellite, mode, both frequencies, time, your grid); it is acknowledged once on disk. export writes\n"
+         "ADIF 3.1.4 for LoTW and loggers; import reads an ADIF file whole or not at all.\n\noptions:\n" +
+         describe_options(log_specs());
+}
+
+int fail(const std::string& why) {
+  std::fprintf(stderr, "trakbox log: %s\n", why.c_str());
+  return kExitFailure;
+}
+
+// The reply's effect on the terminal; the exit status.
+int show(const std::string& action, const json& r, const ParsedOptions& o) {
+  if (!r.is_object()) return fail("no answer from the station");
+  if (r.contains("error")) return fail(r["error"].get<std::string>());
+  if (action == "add") {
+    const json& q = r["qso"];
+    std::printf("logged %lld %s %s %s %s\n", static_cast<long long>(q.value("id", 0LL)), q.value("call", "").c_str(),
+                q.value("sat_name", "").c_str(), q.value("mode", "").c_str(), q.value("time_on", "").c_str());
+  } else if (action == "list") {
+    for (const auto& q : r["qsos"])
+      std::printf("%4lld  %s  %-10s %-8s %-6s %-4s %s\n", static_cast<long long>(q.value("id", 0LL)),
+                  q.value("time_on", "").c_str(), q.value("call", "").c_str(), q.value("sat_name", "").c_str(),
+                  q.value("grid", "").c_str(), q.value("mode", "").c_str(), q.value("source", "").c_str());
+  } else if (action == "export") {
+    for (const auto& w : r["warnings"]) std::fprintf(stderr, "trakbox log export: WARNING: %s\n", w.get<std::string>().c_str());
+    const std::string adif = r["adif"].get<std::string>();
+    if (const auto file = o.value("adif")) {
+      std::ofstream out(*file, std::ios::binary | std::ios::trunc);
+      if (!(out << adif) || !out.flush()) return fail(*file + ": cannot be written");
+    } else {
+      std::fputs(adif.c_str(), stdout);
+    }
+  } else if (action == "import") {
+    std::printf("imported %lld QSOs, %lld already in the log\n", static_cast<long long>(r.value("added", 0LL)),
+                static_cast<long long>(r.value("duplicates", 0LL)));
+  }
+  return kExitOk;
+}
+
+// The request of the command line; an error names the argument.
+std::optional<json> build_request(const std::string& action, const ParsedOptions& o, std::string& error) {
+  const auto& pos = o.positional();
+  json j{{"action", action}};
+  if (const auto s = o.value("since")) j["since"] = *s;
+  if (action == "add") {
+    if (pos.size() < 2 || pos.size() > 4) return error = "add: expected CALL [GRID] [RST]", std::nullopt;
+    j["call"] = pos[1];
+    for (std::size_t i = 2; i < pos.size(); ++i)
+      j[!pos[i].empty() && pos[i][0] >= '0' && pos[i][0] <= '9' ? "rst_sent" : "grid"] = pos[i];
+    for (const auto& [opt, key] : {std::pair<const char*, const char*>{"rst-rcvd", "rst_rcvd"}, {"note", "note"},
+                                   {"sat", "sat"}, {"mode", "mode"}, {"time", "time_on"}})
+      if (const auto v = o.value(opt)) j[key] = *v;
+    if (const auto p = o.value("power")) {
+      const auto w = to_double(*p);
+      if (!w) return error = "--power: expected watts, found '" + *p + "'", std::nullopt;
+      j["power_w"] = *w;
+    }
+  } else if (action == "import") {
+    if (pos.size() != 2) return error = "import: expected FILE", std::nullopt;
+    std::ifstream in(pos[1], std::ios::binary);
+    if (!in) return error = pos[1] + ": cannot be read", std::nullopt;
+    std::ostringstream s;
+    s << in.rdbuf();
+    j["adif"] = s.str();
+  } else if (pos.size() != 1) {
+    return error = action + ": unexpected argument '" + pos[1] + "'", std::nullopt;
+  }
+  return j;
+}
+
+// No station runs: list, export and import on the state directory's logbook itself.
+json direct(const std::string& state_dir, const json& j) {
+  std::string err;
+  auto book = logbook::Logbook::open(state_dir + "/logbook.sqlite", err);
+  if (!book) return {{"error", err}};
+  const std::string action = j["action"];
+  const std::int64_t since = j.contains("since") ? logbook::parse_utc(j["since"].get<std::string>()).value_or(0) : 0;
+  if (action == "list") return log_list(*book, since);
+  if (action == "export") return log_export(*book, since, tracker::ElementsRefresh::wall_now());
+  return log_import(*book, j["adif"].get<std::string>());
+}
+
+}  // namespace
+
+int run_log(const std::vector<std::string>& args) {
+  ParseOutcome parsed = parse_options(args, log_specs());
+  if (parsed.error) return std::fprintf(stderr, "trakbox log: %s\n%s", parsed.error->text().c_str(), usage().c_str()), kExitUsage;
+  const ParsedOptions& o = parsed.options;
+  if (o.has("help")) return std::fputs(usage().c_str(), stdout), kExitOk;
+  const auto& pos = o.positional();
+  const std::string action = pos.empty() ? "" : pos[0];
+  if (action != "add" && action != "list" && action != "export" && action != "import")
+    return std::fprintf(stderr, "trakbox log: expected add, list, export or import\n%s", usage().c_str()), kExitUsage;
+  if (o.has("socket") && o.has("state")) return fail("--socket: not with --state");
+  if (const auto s = o.value("since"); s && !logbook::parse_utc(*s))
+    return std::fprintf(stderr, "trakbox log: --since: expected a UTC date like 2026-12-01, found '%s'\n", s->c_str()), kExitUsage;
+  std::string error;
+  const auto request = build_request(action, o, error);
+  if (!request) return std::fprintf(stderr, "trakbox log: %s\n", error.c_str()), kExitUsage;
+  const std::string state_dir = o.value("state").value_or(store::default_state_directory().string());
+  const std::string socket = o.value("socket").value_or(o.has("state") ? socket_for_state(state_dir) : default_client_socket());
+  bool not_running = false;
+  const auto text = station_request(socket, "log", "log " + request->dump(-1, ' ', false, json::error_handler_t::replace),
+                                    not_running);
+  if (text) return show(action, json::parse(*text, nullptr, false), o);
+  if (!not_running) return kExitFailure;
+  if (action == "add") return fail("add: no station is running to take the pass from (start trakbox first)");
+  if (!std::filesystem::exists(state_dir + "/logbook.sqlite")) return fail(state_dir + ": no logbook.sqlite there");
+  std::fprintf(stderr, "trakbox log: no station runs; using %s/logbook.sqlite\n", state_dir.c_str());
+  return show(action, direct(state_dir, *request), o);
+}
+
+}  // namespace tb::app

@@ -1,0 +1,669 @@
+#include "live/attach_server.h"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <pwd.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/local/stream_protocol.hpp>
+#include <boost/asio/posix/stream_descriptor.hpp>
+#include <boost/asio/read_until.hpp>
+#include <boost/asio/steady_timer.hpp>
+#include <boost/asio/streambuf.hpp>
+#include <boost/asio/write.hpp>
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstring>
+#include <deque>
+#include <filesystem>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+#include <spdlog/spdlog.h>
+
+#include "live/attach_internal.h"
+#include "menus/term/curses_terminal.h"
+#include "menus/term/line_terminal.h"
+#include "util/backoff.h"
+#include "util/safe_text.h"
+
+namespace tb::app {
+
+namespace asio = boost::asio;
+using stream = asio::local::stream_protocol;
+
+namespace {
+
+constexpr std::size_t kTranscriptLimit = 16 * 1024;
+constexpr int kReplayLines = 30;
+constexpr int kMaxRows = 100, kMaxCols = 250;  // a screen's refresh stays far below the pipe's size
+
+// Plain lines into an outbox (the attached client's line mode): a LineTerminal's output rules.
+class LineSink final : public term::LineOutput {
+ public:
+  LineSink(std::function<void(std::string_view)> out, bool crlf) : LineOutput(crlf), out_(std::move(out)) {}
+  void flush() override {}
+  bool closed() const override { return false; }
+
+ protected:
+  int next_key(std::optional<term::Duration>) override { return term::kEndOfInput; }
+  void emit(std::string_view bytes) override { out_(bytes); }
+
+ private:
+  std::function<void(std::string_view)> out_;
+};
+
+// Who is at the other end: the user of the peer's credentials and the terminal it says it has.
+std::string peer_name(int fd, const std::string& tty) {
+  ucred cred{};
+  socklen_t len = sizeof cred;
+  std::string user = "?";
+  if (::getsockopt(fd, SOL_SOCKET, SO_PEERCRED, &cred, &len) == 0) {
+    std::array<char, 4096> buf{};
+    passwd pw{};
+    passwd* found = nullptr;
+    if (::getpwuid_r(cred.uid, &pw, buf.data(), buf.size(), &found) == 0 && found) user = found->pw_name;
+    else user = "uid " + std::to_string(cred.uid);
+  }
+  std::string t = tty;
+  if (t.rfind("/dev/", 0) == 0) t.erase(0, 5);
+  return t.empty() ? user : user + " " + t;
+}
+
+// A curses screen on a pipe this side drains, kept for the next client of its terminal type
+// (curses_terminal.h: screens are never deleted).
+struct ScreenSlot {
+  std::string type;
+  ::screen* screen = nullptr;
+  FILE* out = nullptr;
+  FILE* in = nullptr;
+  int pipe_rd = -1;
+};
+
+struct Member {
+  int id = 0;
+  std::string who;
+  std::shared_ptr<Outbox> out;
+  std::unique_ptr<term::Terminal> screen;
+  term::CursesTerminal* curses = nullptr;  // screen, when full screen
+  ScreenSlot slot;                         // its curses screen and the pipe of its output
+  std::vector<ScreenSlot>* pool = nullptr; // where the slot goes back
+  FrameDecoder frames;
+  std::deque<int> keys;
+  std::array<char, 4096> rbuf{};
+  bool gone = false;
+  bool permanent = false;  // the serial port of --tty: no detaching, and a lost port is only logged
+  bool input_ended = false;  // a script's input ended: it detaches once the menus took its keys
+  std::string farewell = "\r\n[detached from trakbox: the station goes on]\r\n";  // the session's last words
+  std::string told;  // the keyboard note last given to a line client
+  std::chrono::steady_clock::time_point told_at{};
+
+  // What the curses screen wrote, to the client.
+  void drain() {
+    if (slot.pipe_rd < 0) return;
+    std::fflush(slot.out);
+    std::array<char, 16384> buf{};
+    for (;;) {
+      const ssize_t n = ::read(slot.pipe_rd, buf.data(), buf.size());
+      if (n <= 0) break;
+      if (!out->send(std::string_view(buf.data(), static_cast<std::size_t>(n)))) break;
+    }
+  }
+  ~Member() {
+    screen.reset();  // endwin: the client's terminal is given back as it was
+    drain();
+    if (slot.screen && pool) {
+      // Whatever the client did not take is not for the next one.
+      std::array<char, 16384> buf{};
+      while (::read(slot.pipe_rd, buf.data(), buf.size()) > 0) {
+      }
+      pool->push_back(slot);
+    }
+    if (!out->closed) {
+      out->send(farewell);
+      out->finish();
+    }
+  }
+};
+
+}  // namespace
+
+// The menus' terminal (see the header).
+class MuxTerminal final : public term::Terminal {
+ public:
+  explicit MuxTerminal(AttachServer::Impl& s) : s_(s) {}
+  void write(std::string_view text) override;
+  void bell() override;
+  void clear() override;
+  void flush() override;
+  void live(const std::vector<std::string>& lines) override;
+  void end_live() override;
+  void status(std::string_view text) override;
+  void graphics(const term::Graphics& g) override;
+  bool full_screen() const override;
+  int columns() const override;
+  int rows() const override;
+  bool closed() const override { return false; }
+
+ protected:
+  int next_key(std::optional<term::Duration> timeout) override;
+
+ private:
+  AttachServer::Impl& s_;
+};
+
+struct AttachServer::Impl {
+  Impl(asio::io_context& io, term::WaitReadable wait, AttachServerOptions o, spdlog::logger& log)
+      : io(io), wait(std::move(wait)), opt(std::move(o)), log(log), acceptor(io), retry(io), mux(*this) {}
+
+  asio::io_context& io;
+  term::WaitReadable wait;
+  AttachServerOptions opt;
+  spdlog::logger& log;
+  stream::acceptor acceptor;
+  asio::steady_timer retry;      // the next accept after a failed one
+  util::AcceptBackoff backoff;
+  std::size_t greeting = 0;      // connections that have not said what they want yet
+  bool refusing = false;         // a cap refuses newcomers (logged once a run)
+  MuxTerminal mux;
+  std::vector<ScreenSlot> pool;  // before the members: they give their screens back to it
+  std::size_t screen_types = 0;  // curses screens made (never deleted: curses_terminal.h)
+  SocketId made{};               // the socket file this server made
+  std::vector<std::unique_ptr<Member>> members;
+  std::vector<std::shared_ptr<Outbox>> subscribers;
+  int next_id = 1;
+  int keyboard = 0;  // the member id with the keyboard (0: nobody)
+  std::string transcript;
+  std::vector<std::string> live_block;
+  std::string status_text;
+  bool sweeping = false;
+
+  Member* holder() {
+    for (auto& m : members)
+      if (m->id == keyboard && !m->gone) return m.get();
+    return nullptr;
+  }
+  template <typename F>
+  void each(F&& f) {
+    for (auto& m : members) {
+      if (m->gone) continue;
+      f(*m->screen, *m);
+      sent(*m);
+    }
+  }
+  // What a member's screen wrote goes to its client; a client whose output backed up is gone.
+  void sent(Member& m) {
+    m.drain();
+    if (m.out->closed) gone(m, m.out->overflowed ? "stopped reading (output backed up): disconnected" : "");
+  }
+  void gone(Member& m, const std::string& why) {
+    if (m.gone) return;
+    m.gone = true;
+    if (!why.empty()) log.warn("attach: {} {}", m.who, why);
+    else log.info("attach: {} detached", m.who);
+    if (keyboard == m.id) keyboard = 0;
+    asio::post(io, [this] { sweep(); });
+  }
+  // Members gone are destroyed outside any loop over them.
+  void sweep() {
+    if (sweeping) return;
+    sweeping = true;
+    const auto before = members.size();
+    std::erase_if(members, [](const std::unique_ptr<Member>& m) { return m->gone; });
+    sweeping = false;
+    if (members.size() != before) announce_keyboard();
+  }
+  std::string keyboard_note(const Member& m) {
+    const Member* h = holder();
+    if (h == &m) return "[KEYBOARD: you  ^]=detach] ";
+    if (h) return "[keyboard: " + h->who + "  ^T=take it  ^]=detach] ";
+    return "[keyboard free: type to take it  ^]=detach] ";
+  }
+  void announce_keyboard() {
+    for (auto& m : members) {
+      if (m->gone) continue;
+      if (m->curses) {
+        m->screen->status(keyboard_note(*m) + status_text);
+      } else {
+        const std::string note = keyboard_note(*m);
+        if (note != m->told) {
+          m->told = note;
+          m->told_at = std::chrono::steady_clock::now();
+          m->screen->write("\n*** " + note + "***\n");
+        }
+      }
+      sent(*m);
+    }
+  }
+  // The screen as it was, for a client that just came (or whose screen was laid out again).
+  void replay(Member& m) {
+    term::Terminal& t = *m.screen;
+    t.clear();
+    std::size_t from = transcript.size();
+    for (int n = 0; n <= kReplayLines && from > 0;) {
+      from = transcript.rfind('\n', from - 1);
+      if (from == std::string::npos) {
+        from = 0;
+        break;
+      }
+      ++n;
+      if (n > kReplayLines) ++from;
+    }
+    t.write(std::string_view(transcript).substr(from));
+    if (!live_block.empty()) t.live(live_block);
+    if (m.curses) t.status(keyboard_note(m) + status_text);
+    t.flush();
+    sent(m);
+  }
+
+  // Accepts, backing off on errors (util/backoff.h): out of descriptors never spins the loop.
+  void accept() {
+    acceptor.async_accept([this](const boost::system::error_code& ec, stream::socket sock) {
+      if (ec == asio::error::operation_aborted || !acceptor.is_open()) return;
+      if (ec) {
+        if (backoff.failed())
+          log.error("attach: accept failed: {}; retrying every {} ms to 1 s (said once until it works again)",
+                    ec.message(), util::AcceptBackoff::kFirst.count());
+        retry.expires_after(backoff.delay());
+        retry.async_wait([this](const boost::system::error_code& e) {
+          if (!e && acceptor.is_open()) accept();
+        });
+        return;
+      }
+      if (const auto failed = backoff.succeeded()) log.warn("attach: accepting again after {} failed accepts", failed);
+      try {
+        greet(std::move(sock));
+      } catch (const std::exception& e) {  // nothing a client does may end the station
+        log.error("attach: a new connection failed: {}; dropped", e.what());
+      }
+      accept();
+    });
+  }
+  // A client refused for a cap: told why, the station goes on (logged once until one is admitted).
+  void refuse_cap(const std::shared_ptr<Outbox>& out, const std::string& what, std::size_t cap) {
+    if (!refusing) log.warn("attach: {} (at most {}): newcomers refused until one leaves", what, cap);
+    refusing = true;
+    out->send("refused: " + what + " (at most " + std::to_string(cap) + ")\n");
+    out->finish();
+  }
+  // A handler of a client's input: an exception ends that client, never the station.
+  template <typename F>
+  void guarded(const char* what, const std::shared_ptr<Outbox>& out, F&& f) {
+    try {
+      f();
+    } catch (const std::exception& e) {
+      log.error("attach: {} failed: {}; that client is dropped", what, e.what());
+      out->close();
+    }
+  }
+  // The first line says what the client wants: "status", "events" or "attach {json}".
+  void greet(stream::socket sock) {
+    auto out = std::make_shared<Outbox>(asio::posix::stream_descriptor(io, sock.release()), opt.output_limit);
+    if (greeting >= kMaxGreeting) {
+      refuse_cap(out, "too many connections still to say what they want", kMaxGreeting);
+      return;
+    }
+    ++greeting;
+    // 1 MiB: the longest first line, a `trakbox log import` with its file (a local socket).
+    auto buf = std::make_shared<asio::streambuf>(1 << 20);
+    auto timer = std::make_shared<asio::steady_timer>(io, std::chrono::seconds(10));
+    timer->async_wait([out](const boost::system::error_code& ec) {
+      if (!ec) out->close();
+    });
+    asio::async_read_until(out->sock, *buf, '\n', [this, out, buf, timer](const boost::system::error_code& ec, std::size_t n) {
+      --greeting;
+      timer->cancel();
+      if (ec) {
+        out->close();
+        return;
+      }
+      guarded("a request", out, [&] { request(out, *buf, n); });
+    });
+  }
+  // The first line of a connection, and what came after it.
+  void request(const std::shared_ptr<Outbox>& out, asio::streambuf& buf, std::size_t n) {
+    {
+      std::string line(asio::buffers_begin(buf.data()), asio::buffers_begin(buf.data()) + static_cast<long>(n));
+      buf.consume(n);
+      std::string rest(asio::buffers_begin(buf.data()), asio::buffers_end(buf.data()));
+      while (!line.empty() && (line.back() == '\n' || line.back() == '\r')) line.pop_back();
+      if (line == "status") {
+        out->send(opt.status().dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+        out->finish();
+      } else if (line == "events") {
+        subscribe(out);
+      } else if (line.rfind("log ", 0) == 0 && opt.log) {
+        out->send(opt.log(line.substr(4)) + "\n");
+      } else if (opt.is_command && opt.is_command(line)) {
+        out->send(text::safe_text(opt.command(line)) + "\n");
+        out->finish();
+      } else if (line.rfind("attach", 0) == 0 && !opt.menus) {
+        out->send("refused: this trakbox's menus are on its own terminal (pid " + std::to_string(::getpid()) +
+                  "); status and events answer here\n");
+        out->finish();
+      } else if (line.rfind("attach", 0) == 0) {
+        attach(out, line.size() > 6 ? line.substr(6) : "", rest);
+      } else {
+        out->send("trakbox: unknown request; expected status, events or attach\n");
+        out->finish();
+      }
+    }
+  }
+
+  // An events client: its line of each event; reading its socket notices at once when it leaves.
+  void subscribe(const std::shared_ptr<Outbox>& out) {
+    std::erase_if(subscribers, [](const auto& s) { return s->closed; });
+    if (subscribers.size() >= kMaxSubscribers) {
+      refuse_cap(out, "too many events clients", kMaxSubscribers);
+      return;
+    }
+    refusing = false;
+    subscribers.push_back(out);
+    watch(out, std::make_shared<std::array<char, 256>>());
+  }
+  void watch(const std::shared_ptr<Outbox>& out, const std::shared_ptr<std::array<char, 256>>& scratch) {
+    out->sock.async_read_some(asio::buffer(*scratch), [this, out, scratch](const boost::system::error_code& ec, std::size_t) {
+      if (ec == asio::error::operation_aborted || out->closed) return;
+      if (!ec) {
+        watch(out, scratch);  // what an events client sends is not read: it is dropped
+        return;
+      }
+      out->close();  // it left (or its socket failed): noticed now, not at the next event
+      std::erase_if(subscribers, [](const auto& s) { return s->closed; });
+    });
+  }
+
+  void attach(const std::shared_ptr<Outbox>& out, const std::string& hello_text, const std::string& rest) {
+    std::string why;
+    const auto hello = parse_attach_hello(hello_text, why);
+    if (!hello) {
+      log.warn("attach: a greeting refused: {}", why);
+      out->send("refused: " + why + "\n");
+      out->finish();
+      return;
+    }
+    std::erase_if(members, [](const std::unique_ptr<Member>& m) { return m->gone; });
+    if (members.size() >= kMaxAttached) {
+      refuse_cap(out, "too many attached terminals", kMaxAttached);
+      return;
+    }
+    refusing = false;
+    auto m = std::make_unique<Member>();
+    m->id = next_id++;
+    m->out = out;
+    m->who = peer_name(out->sock.native_handle(), hello->tty);
+    const std::string& term_type = hello->term;
+    const int rows = static_cast<int>(std::clamp<long long>(hello->rows, 5, kMaxRows));
+    const int cols = static_cast<int>(std::clamp<long long>(hello->cols, 20, kMaxCols));
+    if (hello->full_screen && !term_type.empty()) open_screen(*m, term_type, rows, cols);
+    if (!m->screen) {
+      Member* raw = m.get();
+      m->screen = std::make_unique<LineSink>([raw](std::string_view s) { raw->out->send(s); }, hello->crlf);
+    }
+    log.info("attach: {} attached ({})", m->who, m->curses ? "full screen " + term_type : std::string("lines"));
+    Member& ref = *m;
+    members.push_back(std::move(m));
+    out->send("ok\n");  // the session follows
+    if (!m_is_line(ref)) ref.screen->status(keyboard_note(ref) + status_text);
+    else ref.screen->write("trakbox: attached to the running station; Ctrl-] detaches, Ctrl-T takes the keyboard\n");
+    replay(ref);
+    announce_keyboard();
+    if (!rest.empty()) input(ref, rest);
+    read(ref);
+  }
+  static bool m_is_line(const Member& m) { return m.curses == nullptr; }
+
+  // --tty with --service: the serial port is a client for good (it never detaches).
+  void add_serial(int fd, const std::string& who) {
+    auto out = std::make_shared<Outbox>(asio::posix::stream_descriptor(io, fd), opt.output_limit);
+    auto m = std::make_unique<Member>();
+    m->id = next_id++;
+    m->out = out;
+    m->who = who;
+    m->permanent = true;
+    Member* raw = m.get();
+    m->screen = std::make_unique<LineSink>([raw](std::string_view s) { raw->out->send(s); }, true);
+    log.info("attach: the menus on {} too", who);
+    Member& ref = *m;
+    members.push_back(std::move(m));
+    replay(ref);
+    read(ref);
+  }
+
+  // A curses screen of the client's type (one kept from an earlier client, else a new one on a
+  // pipe this side drains into the client's outbox).
+  void open_screen(Member& m, const std::string& term_type, int rows, int cols) {
+    ScreenSlot slot;
+    if (const auto kept = std::find_if(pool.begin(), pool.end(), [&](const ScreenSlot& s) { return s.type == term_type; });
+        kept != pool.end()) {
+      slot = *kept;
+      pool.erase(kept);
+    } else {
+      if (screen_types >= kMaxScreenTypes) {
+        log.info("attach: {} terminal types have screens already: '{}' gets plain lines", kMaxScreenTypes, term_type);
+        return;
+      }
+      int p[2];
+      if (::pipe2(p, O_CLOEXEC) != 0) return;
+      ::fcntl(p[1], F_SETPIPE_SZ, 1 << 20);
+      ::fcntl(p[0], F_SETFL, O_NONBLOCK);
+      slot.type = term_type;
+      slot.out = ::fdopen(p[1], "w");
+      slot.in = std::fopen("/dev/null", "r");
+      slot.pipe_rd = p[0];
+      slot.screen = (slot.out && slot.in) ? term::new_screen(term_type, slot.out, slot.in) : nullptr;
+      if (!slot.screen) {
+        if (slot.out) std::fclose(slot.out);
+        else ::close(p[1]);
+        if (slot.in) std::fclose(slot.in);
+        ::close(p[0]);
+        log.info("attach: terminal type '{}' unknown here: plain lines", term_type);
+        return;
+      }
+      ++screen_types;
+    }
+    m.slot = slot;
+    m.pool = &pool;
+    auto c = std::make_unique<term::CursesTerminal>(slot.screen, rows, cols);
+    m.curses = c.get();
+    m.screen = std::move(c);
+  }
+
+  void read(Member& m) {
+    const int id = m.id;
+    m.out->sock.async_read_some(asio::buffer(m.rbuf), [this, id](const boost::system::error_code& ec, std::size_t n) {
+      Member* m = find(id);
+      if (!m || m->gone) return;
+      try {
+        on_read(*m, ec, n);
+      } catch (const std::exception& e) {
+        log.error("attach: {}'s input failed: {}; detached", m->who, e.what());
+        gone(*m, "");
+      }
+    });
+  }
+  void on_read(Member& member, const boost::system::error_code& ec, std::size_t n) {
+    {
+      Member* m = &member;
+      if (ec) {
+        if (ec == asio::error::eof && keyboard == m->id && !m->keys.empty()) {
+          m->input_ended = true;  // its answers are still to come (next_key detaches it after)
+          return;
+        }
+        gone(*m, "");
+        return;
+      }
+      input(*m, std::string(m->rbuf.data(), n));
+      if (!m->gone) read(*m);
+    }
+  }
+  Member* find(int id) {
+    for (auto& m : members)
+      if (m->id == id) return m.get();
+    return nullptr;
+  }
+
+  void input(Member& m, const std::string& data) {
+    const ClientFrames f = m.frames.feed(data);
+    for (const auto& [r, c] : f.sizes) {
+      if (!m.curses) continue;
+      m.curses->resize(std::clamp(r, 5, kMaxRows), std::clamp(c, 20, kMaxCols));
+      replay(m);
+    }
+    for (const int key : decode_keys(f.bytes)) {
+      // Ctrl-C leaves trakbox at its console; attached, leaving is detaching.
+      if ((key == kDetachKey || key == 3) && !m.permanent) {
+        gone(m, "");
+        return;
+      }
+      if (key == kTakeOverKey || keyboard == 0) {
+        if (keyboard != m.id) {
+          keyboard = m.id;
+          log.info("attach: {} has the keyboard", m.who);
+          announce_keyboard();
+        }
+        if (key == kTakeOverKey) continue;
+      }
+      if (keyboard == m.id) {
+        m.keys.push_back(key);
+      } else if (!m.curses && std::chrono::steady_clock::now() - m.told_at > std::chrono::seconds(2)) {
+        m.told.clear();  // say again who has it (at most every 2 s, however many keys come)
+        announce_keyboard();
+      }
+    }
+  }
+};
+
+void MuxTerminal::write(std::string_view text) {
+  s_.transcript.append(text);
+  if (s_.transcript.size() > kTranscriptLimit) s_.transcript.erase(0, s_.transcript.size() - kTranscriptLimit / 2);
+  s_.each([&](term::Terminal& t, Member&) { t.write(text); });
+}
+void MuxTerminal::bell() {
+  s_.each([](term::Terminal& t, Member&) { t.bell(); });
+}
+void MuxTerminal::clear() {
+  s_.transcript.clear();
+  s_.live_block.clear();
+  s_.each([](term::Terminal& t, Member&) { t.clear(); });
+}
+void MuxTerminal::flush() {
+  s_.each([](term::Terminal& t, Member&) { t.flush(); });
+}
+void MuxTerminal::live(const std::vector<std::string>& lines) {
+  s_.live_block = lines;
+  s_.each([&](term::Terminal& t, Member&) { t.live(lines); });
+}
+void MuxTerminal::end_live() {
+  // The block stays on the screen as text above what follows.
+  for (const auto& l : s_.live_block) s_.transcript.append(l).append("\n");
+  s_.live_block.clear();
+  s_.each([](term::Terminal& t, Member&) { t.end_live(); });
+}
+void MuxTerminal::status(std::string_view text) {
+  s_.status_text.assign(text);
+  s_.each([&](term::Terminal& t, Member& m) {
+    if (m.curses) t.status(s_.keyboard_note(m) + s_.status_text);
+  });
+}
+void MuxTerminal::graphics(const term::Graphics& g) {
+  s_.each([&](term::Terminal& t, Member&) { t.graphics(g); });
+}
+bool MuxTerminal::full_screen() const {
+  Member* h = s_.holder();
+  return h && h->curses;
+}
+int MuxTerminal::columns() const {
+  Member* h = s_.holder();
+  return h ? h->screen->columns() : 80;
+}
+int MuxTerminal::rows() const {
+  Member* h = s_.holder();
+  return h ? h->screen->rows() : 24;
+}
+int MuxTerminal::next_key(std::optional<term::Duration> timeout) {
+  flush();
+  const auto deadline = timeout ? std::optional(std::chrono::steady_clock::now() + *timeout) : std::nullopt;
+  for (;;) {
+    if (Member* h = s_.holder(); h && !h->keys.empty()) {
+      const int k = h->keys.front();
+      h->keys.pop_front();
+      return k;
+    } else if (h && h->input_ended) {
+      s_.gone(*h, "");  // every key it sent was taken, and the menus answered
+    }
+    std::optional<term::Duration> left;  // the wait returns after any work: a client's keys come so
+    if (deadline) {
+      const auto now = std::chrono::steady_clock::now();
+      if (now >= *deadline) return term::kTimeout;
+      left = *deadline - now;
+    }
+    s_.wait(-1, left);
+  }
+}
+
+AttachServer::AttachServer(asio::io_context& io, term::WaitReadable wait, AttachServerOptions options,
+                           spdlog::logger& log)
+    : impl_(std::make_unique<Impl>(io, std::move(wait), std::move(options), log)) {
+  // Clients are written to as descriptors (write(2), not send with MSG_NOSIGNAL): one that went
+  // away must be an EPIPE for that client, never a SIGPIPE that ends the station.
+  std::signal(SIGPIPE, SIG_IGN);
+  const std::string& path = impl_->opt.path;
+  if (path.size() >= sizeof(sockaddr_un{}.sun_path))
+    throw std::runtime_error(path + ": too long for a Unix socket (at most 107 bytes)");
+  impl_->made = bind_socket(impl_->acceptor, path);
+  impl_->accept();
+}
+
+AttachServer::~AttachServer() {
+  boost::system::error_code ec;
+  impl_->acceptor.close(ec);
+  for (auto& s : impl_->subscribers) s->finish();
+  // The station stops: each client is told so, its screen given back (endwin) and all of it
+  // written before the loop ends, so an attached terminal is never left in the menus' full screen.
+  std::vector<std::shared_ptr<Outbox>> outs;
+  for (auto& m : impl_->members) {
+    m->farewell = "\r\n[the station stopped: this session ends]\r\n";
+    outs.push_back(m->out);
+  }
+  impl_->members.clear();
+  for (auto& o : outs) o->flush_now(std::chrono::milliseconds(500));
+  remove_socket(impl_->opt.path, impl_->made);
+}
+
+term::Terminal& AttachServer::terminal() { return impl_->mux; }
+
+void AttachServer::publish(const nlohmann::json& event) {
+  const std::string line = event.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+  for (auto& s : impl_->subscribers)
+    if (!s->send(line) && s->overflowed) impl_->log.warn("events: a reader stopped reading: disconnected");
+  std::erase_if(impl_->subscribers, [](const auto& s) { return s->closed; });
+}
+
+void AttachServer::add_serial(int fd, const std::string& who) { impl_->add_serial(fd, who); }
+
+void AttachServer::detach_keyboard() {
+  if (Member* h = impl_->holder()) impl_->gone(*h, "");
+}
+
+std::vector<std::string> AttachServer::attached() const {
+  std::vector<std::string> out;
+  for (const auto& m : impl_->members)
+    if (!m->gone) out.push_back(m->who);
+  return out;
+}
+
+std::string AttachServer::keyboard() const {
+  const Member* h = impl_->holder();
+  return h ? h->who : std::string();
+}
+
+const std::string& AttachServer::path() const { return impl_->opt.path; }
+
+}  // namespace tb::app

@@ -1,0 +1,43 @@
+#include "live/station_command.h"
+
+#include "live/station_app.h"
+#include "orbit/time.h"
+#include "tracker/operations.h"
+#include "util/safe_text.h"
+#include "util/text.h"
+
+namespace tb::app {
+
+bool is_station_command(const std::string& line) {
+  return line.rfind("standby", 0) == 0 || line.rfind("reserve", 0) == 0;
+}
+
+std::string run_station_command(StationApp& app, const std::string& line) {
+  std::vector<std::string> w;
+  for (const std::string_view piece : text::split(line, ' '))
+    if (!piece.empty()) w.emplace_back(piece);
+  if (w.empty()) return "refused: nothing asked";
+  tracker::StationOps ops(app.station(), tracker::Requester::menus(), true);
+  tracker::OpResult r;
+  if (w.size() == 2 && w[0] == "standby" && (w[1] == "on" || w[1] == "off")) {
+    r = ops.standby(w[1] == "on");
+  } else if (w[0] == "standby") {
+    return "refused: expected standby on or standby off";
+  } else if (w.size() >= 3 && w[0] == "reserve") {
+    const auto start = orbit::parse_iso8601(w[1]);
+    const auto end = orbit::parse_iso8601(w[2]);
+    if (!start || !end)
+      return "refused: expected reserve START END [NOTE] with ISO 8601 UTC times, e.g. 2026-05-21T12:20:00Z";
+    std::string note;
+    for (std::size_t i = 3; i < w.size(); ++i) note += (note.empty() ? "" : " ") + w[i];
+    r = ops.reserve(*start, *end, text::safe_text(note));
+  } else {
+    return "refused: expected reserve START END [NOTE]";
+  }
+  if (!r.ok()) return "refused: " + *r.refusal;
+  if (r.model_changed)
+    if (const auto why = app.save()) return "ok: " + r.note + " (NOT SAVED: " + *why + ")";
+  return "ok: " + r.note;
+}
+
+}  // namespace tb::app

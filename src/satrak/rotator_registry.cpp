@@ -1,0 +1,108 @@
+#include "satrak/rotator_registry.h"
+
+#include <algorithm>
+
+#include "util/text.h"
+
+namespace tb::app {
+
+namespace {
+
+template <rotator::SpecResult (*Parse)(std::string_view)>
+std::optional<std::string> parse_driver(std::string_view text, RotatorChoice& choice) {
+  rotator::SpecResult r = Parse(text);
+  if (!r.spec) return r.error;
+  choice.rotator = r.spec;
+  return std::nullopt;
+}
+
+std::optional<std::string> parse_satrak(std::string_view text, RotatorChoice& choice) {
+  std::string error;
+  choice.satrak = satrak::parse_rotator_spec(text, error);
+  if (!choice.satrak) return error;
+  return std::nullopt;
+}
+
+std::unique_ptr<rotator::RotatorDriver> make_simulated(const RotatorChoice&, const RotatorContext& c) {
+  return rotator::make_simulated_rotator(c.clock, c.simulated);
+}
+
+std::unique_ptr<rotator::RotatorDriver> make_hamlib(const RotatorChoice& choice, const RotatorContext&) {
+  return rotator::make_hamlib_rotator(*choice.rotator);
+}
+
+std::unique_ptr<rotator::RotatorDriver> make_easycomm(const RotatorChoice& choice, const RotatorContext&) {
+  return rotator::make_easycomm_rotator(*choice.rotator);
+}
+
+std::unique_ptr<rotator::RotatorDriver> make_pst(const RotatorChoice& choice, const RotatorContext&) {
+  return rotator::make_pst_rotator(*choice.rotator);
+}
+
+std::unique_ptr<rotator::RotatorDriver> make_satrak(const RotatorChoice& choice, const RotatorContext&) {
+  return std::make_unique<satrak::SatrakRotator>(*choice.satrak);
+}
+
+constexpr RotatorKind kKinds[] = {
+    {.name = "simulated", .form = "simulated", .what = "the simulated rotator (the default)",
+     .parse = parse_driver<rotator::parse_simulated_spec>, .make = make_simulated},
+    {.name = "hamlib", .form = "hamlib:MODEL:DEVICE[:BAUD]", .what = "any rotator Hamlib drives (MODEL: rotctl -l)",
+     .parse = parse_driver<rotator::parse_hamlib_spec>, .make = make_hamlib},
+    {.name = "rotctld", .form = "rotctld:HOST[:PORT]", .what = "a rotctld daemon (Hamlib NET rotctl; PORT 4533)",
+     .parse = parse_driver<rotator::parse_rotctld_spec>, .make = make_hamlib},
+    {.name = "easycomm3", .form = "easycomm3:DEVICE[:BAUD]",
+     .what = "Easycomm III natively (SatNOGS rotator; 19200 baud)",
+     .parse = parse_driver<rotator::parse_easycomm_spec>, .make = make_easycomm},
+    {.name = "easycomm2", .form = "easycomm2:DEVICE[:BAUD]",
+     .what = "Easycomm II natively (SARCNET, REF, K3NG; 9600)",
+     .parse = parse_driver<rotator::parse_easycomm_spec>, .make = make_easycomm},
+    {.name = "pstrotator", .form = "pstrotator:HOST[:PORT]",
+     .what = "PstRotator's UDP (CSN S.A.T.; PORT 12000)",
+     .parse = parse_driver<rotator::parse_pstrotator_spec>, .make = make_pst},
+    {.name = "satrak", .form = "satrak:HOST[:PORT]", .what = "another Satrak ACU, over TCP (PORT 4001)",
+     .parse = parse_satrak, .make = make_satrak},
+};
+
+}  // namespace
+
+std::span<const RotatorKind> rotator_kinds() { return kKinds; }
+
+RotatorParse parse_rotator(std::string_view text) {
+  const std::string_view name = text.substr(0, text.find(':'));
+  // The kind in any case ("Hamlib:603:...", as --radio takes "IC9700:..."); parsed as written lower.
+  const std::string lower = text::lower(name);
+  const std::string spelled = lower + std::string(text.substr(name.size()));
+  for (const RotatorKind& k : kKinds) {
+    if (k.name != lower) continue;
+    RotatorParse out;
+    if (auto e = k.parse(spelled, out.choice)) return {{}, *e};
+    out.choice.kind = &k;
+    return out;
+  }
+  std::string forms;
+  for (const RotatorKind& k : kKinds) forms += (forms.empty() ? "" : ", ") + std::string(k.form);
+  return {{}, "bad --rotator '" + std::string(text) + "': unknown rotator '" + std::string(name) + "'; expected " +
+                  forms + " (trakbox --rotator list)"};
+}
+
+std::unique_ptr<rotator::RotatorDriver> make_rotator(const RotatorChoice& choice, const RotatorContext& context) {
+  const RotatorKind& kind = choice.kind ? *choice.kind : kKinds[0];   // nothing chosen: the simulated one
+  return kind.make(choice, context);
+}
+
+std::string rotator_list_text() {
+  std::string out = "rotator spec                 rotator\n";
+  for (const RotatorKind& k : kKinds) {
+    std::string form(k.form);
+    form.resize(std::max<std::size_t>(form.size(), 28), ' ');
+    out += form + " " + std::string(k.what) + "\n";
+  }
+  // The controllers most stations own, by Hamlib's number (rotctl -l, Hamlib 4.5) for hamlib:MODEL.
+  out += "\nHamlib's numbers (hamlib:MODEL:DEVICE[:BAUD]) of common controllers:\n"
+         "  GS-232A 601, GS-232B 603 (az only 611), SPID Rot2Prog 901, Rot1Prog 902,\n"
+         "  SPID MD-01/02 in Rot2Prog mode 903, Easycomm I 201, II 202, III 204;\n"
+         "  a K3NG controller answers GS-232B (603) and Easycomm (202, 204).\n";
+  return out;
+}
+
+}  // namespace tb::app
