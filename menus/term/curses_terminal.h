@@ -20,7 +20,7 @@ class CursesTerminal final : public Terminal {
   // Takes over the controlling terminal (stdin/stdout). Restores it on destruction.
   explicit CursesTerminal(WaitReadable wait);
   // Output only, on a screen of the caller's (new_screen: an attached client's terminal,
-  // app/attach_server.cpp); every call selects it first, so several can live in one process. The
+  // live/attach_server.cpp); every call selects it first, so several can live in one process. The
   // screen stays the caller's: on destruction the windows go and the screen is left with endwin,
   // ready for another CursesTerminal. Keys come from elsewhere.
   CursesTerminal(::screen* screen, int rows, int cols);

@@ -13,7 +13,7 @@ namespace tb::term {
 // The line front end's output rules, whatever carries the bytes: '\n' sent as "\r\n" when crlf (what
 // a serial terminal expects), the bell as BEL, a new screen as a new line, a live block printed as
 // its lines once per update, no status line and no pictures, 80 x 24. LineTerminal sends them to a
-// descriptor; an attached client's line mode (app/attach_server.cpp) to its socket.
+// descriptor; an attached client's line mode (live/attach_server.cpp) to its socket.
 class LineOutput : public Terminal {
  public:
   explicit LineOutput(bool crlf) : crlf_(crlf) {}

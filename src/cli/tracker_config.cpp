@@ -150,7 +150,7 @@ std::optional<spdlog::level::level_enum> log_level_named(const std::string& l) {
 }  // namespace
 
 std::optional<std::string> set_rotator_spec(TrackerConfig& c, const std::string& text) {
-  // One table of rotators (app/rotator_registry.h) chooses the parser.
+  // One table of rotators (satrak/rotator_registry.h) chooses the parser.
   RotatorParse rot = parse_rotator(text);
   if (!rot.error.empty()) return rot.error;
   c.rotator = rot.choice;

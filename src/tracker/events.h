@@ -5,7 +5,7 @@
 // factory 0: none for a pass that never rises), fired at the first tick at or after AOS - lead and
 // at or after LOS (none for a satellite always up: a geostationary one has no LOS); it reads
 // the model and the tracker's propagators and does no I/O. What the events become (hooks, the
-// event stream) is the application's (app/event_hooks.h, docs/service.md).
+// event stream) is the application's (live/event_hooks.h, docs/service.md).
 #pragma once
 #include <chrono>
 #include <map>

@@ -56,7 +56,7 @@ struct Response {
 std::vector<std::pair<std::string, std::string>> security_headers();
 
 // What the API needs of the running station besides the StationLoop: the document of
-// `trakbox status --json` (app/status.h, built by the caller), saving the state, the wall clock of
+// `trakbox status --json` (live/status.h, built by the caller), saving the state, the wall clock of
 // the element refresh, and a word to the live viewers that something changed.
 struct ApiHooks {
   std::function<nlohmann::json()> status;
