@@ -54,7 +54,7 @@ TEST_CASE("Easycomm: alarms, echoes and what is not a position") {
   CHECK(l.kind == ec::Line::Kind::bad);
   CHECK(l.text == "a position out of any rotator's range: \"AZ9999.0 EL3.0\"");
   // Bytes from outside reach a message only as visible text.
-  l = ec::parse_line(std::string("AZ\x01\xff EL1", 10));
+  l = ec::parse_line(std::string("AZ\x01\xff EL1"));
   CHECK(l.kind == ec::Line::Kind::bad);
   CHECK(l.text.find('\x01') == std::string::npos);
 }
