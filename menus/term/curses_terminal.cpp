@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <curses.h>
 #include <numbers>
+#include <poll.h>
 #include <sys/ioctl.h>
 #include <unistd.h>
 
@@ -373,6 +374,15 @@ void CursesTerminal::graphics(const Graphics& g) {
   flush();
 }
 
+// Whether the terminal's input has hung up: poll(2) reports POLLHUP, POLLERR or POLLNVAL on it (the
+// other end of a pseudo-terminal closed, the serial line's carrier dropped).
+static bool input_hung_up() {
+  pollfd p{STDIN_FILENO, POLLIN, 0};
+  if (::poll(&p, 1, 0) != 1) return false;
+  if (p.revents & (POLLHUP | POLLERR | POLLNVAL)) return true;
+  return false;
+}
+
 bool CursesTerminal::closed() const { return impl_->closed; }
 
 int CursesTerminal::next_key(std::optional<Duration> timeout) {
@@ -392,6 +402,13 @@ int CursesTerminal::next_key(std::optional<Duration> timeout) {
       flush();
     }
     const int ch = wgetch(impl_->text);
+    if (ch == ERR && impl_->wait && input_hung_up()) {
+      // The terminal went away (its window closed, the SSH link dropped): wgetch says ERR as it does
+      // for "no key yet", so the kernel is asked. Leaving as Ctrl-C does saves the state and stops
+      // the rotator; looping on would spin on an end of file that is always readable.
+      impl_->closed = true;
+      return kEndOfInput;
+    }
     if (ch != ERR) {
       switch (ch) {
         case KEY_RESIZE:

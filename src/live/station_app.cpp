@@ -342,7 +342,13 @@ bool StationApp::wait_readable(int fd, std::optional<term::Duration> timeout) {
   if (io.stopped()) io.restart();
   if (fd >= 0) {
     pollfd p{fd, POLLIN, 0};
-    if (::poll(&p, 1, 0) > 0) return true;  // readable already (the descriptor's edge may be past)
+    if (::poll(&p, 1, 0) > 0) {
+      // Readable already (the descriptor's edge may be past), or hung up (a closed terminal stays
+      // "readable" for ever): the loop's ready work runs first, so that a signal, the tick and the
+      // clients are never starved by an input that is always there.
+      io.poll();
+      return true;
+    }
   }
   if (timeout && *timeout <= term::Duration::zero()) {
     io.poll();
