@@ -18,10 +18,9 @@ import stat
 import sys
 import tempfile
 import threading
-import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, CLOCK, SOURCE, Failure, check, free_port, read_log, run_test, sh  # noqa: E402
+from _tbharness import BIN, CLOCK, SOURCE, Failure, check, free_port, poll, read_log, run_test, sh  # noqa: E402
 from _web import WebStation  # noqa: E402
 
 RATE = 20
@@ -129,17 +128,6 @@ def serve(port):
     return srv
 
 
-def wait_for(what, pred, seconds):
-    end = time.time() + seconds
-    while True:
-        v = pred()
-        if v:
-            return v
-        if time.time() > end:
-            raise Failure(f"{what} within {seconds} s")
-        time.sleep(0.2)
-
-
 def first_pass():
     """The first ISS pass above 10 degrees after CLOCK, from `trakbox passes`."""
     code, out, err = sh(BIN, "passes", os.path.join(SOURCE, "data", "amateur.tle"), "--station", STATION,
@@ -167,7 +155,7 @@ def main():
         status, r = w.post("/api/v1/track", {"satellite": "ISS"})
         check(status == 200 and r["ok"], f"track ISS: {status} {r}")
         # While the ISS is up: the satellite's fields, TQSL's name.
-        sat = wait_for("a radio post with prop_mode SAT", lambda: [p for p in LOG.radio if p["prop_mode"] == "SAT"],
+        sat = poll("a radio post with prop_mode SAT", lambda: [p for p in LOG.radio if p["prop_mode"] == "SAT"],
                        60)[0]
         check(sat["sat_name"] == "ARISS" and sat["radio"] == "trakbox" and sat["mode"] == "FM" and
               abs(int(sat["frequency"]) - 145990000) < 5000 and abs(int(sat["frequency_rx"]) - 437800000) < 15000,
@@ -176,7 +164,7 @@ def main():
               f"every SAT post names ARISS: {LOG.radio}")
         status, r = w.post("/api/v1/log", {"call": "W1AW", "grid": "FN31"})
         check(status == 200 and r["ok"], f"QSO 1: {status} {r}")
-        wait_for("QSO 1 at the logger", lambda: len(LOG.qsos) == 1, 30)
+        poll("QSO 1 at the logger", lambda: len(LOG.qsos) == 1, 30)
         q1 = LOG.qsos[0]
         check(q1["call"] == "W1AW" and q1["prop_mode"] == "SAT" and q1["sat_name"] == "ARISS" and
               q1["band"] == "2m" and q1["gridsquare"] == "FN31", f"QSO 1 as the logger has it: {q1}")
@@ -184,14 +172,14 @@ def main():
         check(st["kind"] == "cloudlog" and st["url"] == f"http://127.0.0.1:{port}" and st["queue"] == 0 and
               st["last_upload"] and st["last_radio_post"] and st["problem"] is None, f"status log.logger: {st}")
         # After the pass: one post without the satellite's fields.
-        wait_for("a radio post after the pass with prop_mode ''",
+        poll("a radio post after the pass with prop_mode ''",
                  lambda: LOG.radio[-1]["prop_mode"] == "" and LOG.radio[-1]["sat_name"] == "", (los - aos).seconds / RATE + 60)
         posts = len(LOG.radio)
         # The logger answers 500: the QSO stays queued, a problem in status.
         LOG.mode = "500"
         code, out, err = sh(BIN, "log", "add", "K1JT", "FN20", "--state", w.state)
         check(code == 0 and out.startswith("logged 2 K1JT"), f"QSO 2: {code} {out!r} {err!r}")
-        st = wait_for("a problem in status while the logger fails",
+        st = poll("a problem in status while the logger fails",
                       lambda: (lambda s: s if [p for p in s["problems"] if p.startswith("logger: QSO 2")] else None)(w.status()),
                       30)
         problem = [p for p in st["problems"] if p.startswith("logger: QSO 2")][0]
@@ -202,7 +190,7 @@ def main():
         srv.server_close()
         status, r = w.post("/api/v1/log", {"call": "G4XYZ", "grid": "IO91"})
         check(status == 200 and r["ok"], f"QSO 3: {status} {r}")
-        wait_for("QSO 3 tried against a closed port",
+        poll("QSO 3 tried against a closed port",
                  lambda: [p for p in w.status()["problems"] if p.startswith("logger: QSO 3")], 30)
         check(w.status()["log"]["logger"]["queue"] == 2, "two QSOs wait")
         status_text = w.status_text()
@@ -215,8 +203,8 @@ def main():
         later = zulu(los + datetime.timedelta(hours=1))
         w.args[w.args.index("--clock") + 1] = later
         w.start()
-        wait_for("every QSO at the logger", lambda: len(LOG.qsos) == 3, 60)
-        st = wait_for("the queue empty and the problem gone",
+        poll("every QSO at the logger", lambda: len(LOG.qsos) == 3, 60)
+        st = poll("the queue empty and the problem gone",
                       lambda: (lambda s: s if s["log"]["logger"]["queue"] == 0 and s["log"]["logger"]["problem"] is None
                                else None)(w.status()), 30)
         check(not [p for p in st["problems"] if p.startswith("logger:")], f"no logger problem: {st['problems']}")

@@ -61,7 +61,7 @@
     const save = button("Save", () => {});
     save.type = "submit";
     form.appendChild(save);
-    form.appendChild(button("Cancel", () => refresh()));
+    form.appendChild(button("Cancel", () => refresh(true)));
     form.addEventListener("submit", async (ev) => {
       ev.preventDefault();
       const body = { id: q.id };
@@ -69,11 +69,11 @@
         const v = inputs[key].value.trim();
         if (v !== (q[key] || "")) body[key] = v;
       }
-      if (Object.keys(body).length === 1) { refresh(); return; }
+      if (Object.keys(body).length === 1) { refresh(true); return; }
       try {
         await call("POST", "/api/v1/log/edit", body);
         say("QSO " + q.id + " changed");
-        refresh();
+        refresh(true);
       } catch (e) { say(e.message, true); }
     });
     td.appendChild(form);
@@ -90,7 +90,9 @@
     } catch (e) { say(e.message, true); }
   }
 
-  async function refresh() {
+  // Not while a row is being edited (the list is rebuilt), unless Save or Cancel asks.
+  async function refresh(force) {
+    if (!force && document.querySelector("#log-list .log-edit")) return;
     let j;
     try { j = await call("GET", "/api/v1/log?since=today"); } catch (e) { say(e.message, true); return; }
     if (!j) return;
@@ -135,6 +137,6 @@
     if (!el("log-form")) return;
     el("log-form").addEventListener("submit", logQso);
     refresh();
-    setInterval(() => { if (!document.querySelector("#log-list .log-edit")) refresh(); }, 60000);
+    setInterval(refresh, 60000);
   });
 })();
