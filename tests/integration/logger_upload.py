@@ -7,7 +7,9 @@ The station tracks ISS through a simulated pass: its radio posts carry prop_mode
 ARISS while the ISS is up, and a post after the pass has prop_mode "". Three QSOs are logged (the
 page's API and `trakbox log add`); the logger answers 500, then refuses connections: a problem in
 `status --json`; the station is killed with SIGKILL and restarted, the logger comes back, and it
-holds every QSO exactly once. The key is never in the station's log, its state file or status."""
+holds every QSO exactly once; a fourth QSO the logger stores but whose answer is lost is sent again,
+answered "Duplicate", and counted done. The key is never in the station's log, its state file or
+status."""
 import datetime
 import http.server
 import json
@@ -115,6 +117,12 @@ class Handler(http.server.BaseHTTPRequestHandler):
                 return self.reply(201, {"status": "created", "type": "adif", "string": obj["string"],
                                         "imported_count": 0, "messages": [msg]})
             LOG.qsos.append(rec)
+            if LOG.mode == "lose-reply":  # stored, and the answer lost on the way back
+                LOG.mode = "ok"
+                self.send_response(502)
+                self.send_header("Content-Length", "0")
+                self.end_headers()
+                return
             return self.reply(201, {"status": "created", "type": "adif", "string": obj["string"],
                                     "imported_count": 1, "messages": []})
 
@@ -212,6 +220,15 @@ def main():
         check(calls == ["G4XYZ", "K1JT", "W1AW"], f"every QSO exactly once: {calls}")
         check(len(LOG.radio) == posts or all(p["prop_mode"] == "" for p in LOG.radio[posts:]),
               f"nothing but idle posts after the pass: {LOG.radio[posts:]}")
+        # Stored by the logger but its answer lost: the retry meets Cloudlog's "Duplicate", which is
+        # done, and the logger holds it once.
+        LOG.mode = "lose-reply"
+        status, r = w.post("/api/v1/log", {"call": "JA1XYZ", "grid": "PM95"})
+        check(status == 200 and r["ok"], f"QSO 4: {status} {r}")
+        poll("QSO 4 done after its lost answer", lambda: "logger: QSO 4 (JA1XYZ) uploaded (the logger had it already)"
+             in read_log(w.state), 60)
+        check(sorted(q["call"] for q in LOG.qsos) == ["G4XYZ", "JA1XYZ", "K1JT", "W1AW"], f"QSO 4 once: {LOG.qsos}")
+        check(w.status()["log"]["logger"]["queue"] == 0, "nothing waits")
         status_text += w.status_text()
         status_json += json.dumps(w.status())
     finally:
@@ -226,7 +243,7 @@ def main():
         check(KEY not in text, f"the key is in {where}")
     check(keyfile in state, "the key file's path is stored")
     check("logger: QSO 2 (K1JT) uploaded" in log and "logger: QSO 1 (W1AW) uploaded" in log, "uploads are logged")
-    print(f"{len(LOG.radio)} radio posts, {LOG.qso_posts} QSO posts for 3 QSOs")
+    print(f"{len(LOG.radio)} radio posts, {LOG.qso_posts} QSO posts for 4 QSOs")
 
 
 if __name__ == "__main__":
