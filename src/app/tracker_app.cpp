@@ -459,7 +459,7 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   if (auto err = open_udp_events(app, c, *log, udp)) return usage_error(*err);
   const auto satnogs = start_satnogs(app, c.rigctld_port, std::chrono::seconds(c.elements_timeout_s), *log);
   std::unique_ptr<LoggerUpload> logger;
-  if (auto err = start_logger(app, *logging, std::chrono::seconds(c.elements_timeout_s), *log, logger))
+  if (auto err = start_logger(app, *logging, std::chrono::seconds(c.elements_timeout_s), logger))
     return usage_error(*err);
   app.set_events(
       [&](const tracker::Event& e) {

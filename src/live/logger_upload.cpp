@@ -171,9 +171,8 @@ struct LoggerUpload::Impl {
   }
 };
 
-LoggerUpload::LoggerUpload(boost::asio::io_context& io, tracker::StationLoop& station, tracker::Logging& logging,
-                           LoggerSettings settings)
-    : impl_(std::make_unique<Impl>(io, station, logging, std::move(settings))) {
+LoggerUpload::LoggerUpload(StationApp& app, tracker::Logging& logging, LoggerSettings settings)
+    : impl_(std::make_unique<Impl>(app.io(), app.station(), logging, std::move(settings))) {
   logging.upload = true;
   logging.on_logged = [this] { wake(); };
   impl_->tick();
@@ -214,7 +213,8 @@ std::optional<std::string> read_logger_key(const std::string& path, std::string&
 }
 
 std::optional<std::string> start_logger(StationApp& app, tracker::Logging& logging, std::chrono::seconds timeout,
-                                        spdlog::logger& log, std::unique_ptr<LoggerUpload>& out) {
+                                        std::unique_ptr<LoggerUpload>& out) {
+  spdlog::logger& log = app.log();
   const store::LoggerConfig& c = app.model().logger;
   if (c.spec.empty()) return std::nullopt;
   const logbook::LoggerSpecParse p = logbook::parse_logger_spec(c.spec);
@@ -233,7 +233,7 @@ std::optional<std::string> start_logger(StationApp& app, tracker::Logging& loggi
   log.info("logger: {} at {}, station profile {}; {} QSO(s) waiting", logbook::logger_kind_name(p.spec->kind),
            logbook::logger_display_url(*p.spec), c.station_id,
            logging.book ? logging.book->upload_queue_length() : 0);
-  out = std::make_unique<LoggerUpload>(app.io(), app.station(), logging, std::move(s));
+  out = std::make_unique<LoggerUpload>(app, logging, std::move(s));
   return std::nullopt;
 }
 

@@ -19,16 +19,9 @@
 
 #include "logbook/logger.h"
 
-namespace boost::asio {
-class io_context;
-}
-namespace spdlog {
-class logger;
-}
 namespace tb::tracker {
-class StationLoop;
 struct Logging;
-}  // namespace tb::tracker
+}
 
 namespace tb::app {
 
@@ -39,10 +32,12 @@ struct LoggerSettings {
   std::chrono::milliseconds timeout{30000};
 };
 
+class StationApp;
+
 class LoggerUpload {
  public:
-  LoggerUpload(boost::asio::io_context& io, tracker::StationLoop& station, tracker::Logging& logging,
-               LoggerSettings settings);
+  // On the app's event loop and station; `logging` (the app's) outlives it.
+  LoggerUpload(StationApp& app, tracker::Logging& logging, LoggerSettings settings);
   ~LoggerUpload();
   LoggerUpload(const LoggerUpload&) = delete;
   LoggerUpload& operator=(const LoggerUpload&) = delete;
@@ -58,10 +53,9 @@ class LoggerUpload {
 // /x/key: ..."); `warning` is set when others may read it.
 std::optional<std::string> read_logger_key(const std::string& path, std::string& key, std::string& warning);
 
-class StationApp;
 // The uploader of the stored --logger (none without one). A logger without a readable key or a
 // station id is a refusal (the program does not start).
 std::optional<std::string> start_logger(StationApp& app, tracker::Logging& logging, std::chrono::seconds timeout,
-                                        spdlog::logger& log, std::unique_ptr<LoggerUpload>& out);
+                                        std::unique_ptr<LoggerUpload>& out);
 
 }  // namespace tb::app
