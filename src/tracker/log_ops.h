@@ -21,9 +21,6 @@ namespace tb::tracker {
 
 class StationLoop;
 
-// What the program keeps for logging: the logbook (none when it could not be opened: logging is
-// then refused with the reason), the NORAD to LoTW table, and the logger's hook (a QSO to upload
-// is queued in the same transaction when one is configured; the hook then wakes the uploader).
 // The logger's uploader (live/logger_upload.h) as status shows it: never its key.
 struct LoggerStatus {
   std::string kind;                        // "cloudlog", "wavelog"
@@ -33,6 +30,9 @@ struct LoggerStatus {
   std::optional<std::string> radio_problem;  // the last radio-state post failed
 };
 
+// What the program keeps for logging: the logbook (none when it could not be opened: logging is
+// then refused with the reason), the NORAD to LoTW table, and the logger's hook (a QSO to upload
+// is queued in the same transaction when one is configured; the hook then wakes the uploader).
 struct Logging {
   std::unique_ptr<logbook::Logbook> book;
   std::string open_error;              // why there is no book
