@@ -25,6 +25,7 @@
 #include "live/state_lock.h"
 #include "live/station_app.h"
 #include "live/status.h"
+#include "live/logger_upload.h"
 #include "live/satnogs_poll.h"
 #include "live/station_command.h"
 #include "live/udp_events.h"
@@ -353,6 +354,9 @@ std::optional<std::string> apply_command_line(TrackerConfig& c, Startup& startup
   if (c.exclusive) startup.model.sharing.exclusive = *c.exclusive;
   if (c.satnogs_station) startup.model.sharing.satnogs_station = *c.satnogs_station;
   if (c.satnogs_url) startup.model.sharing.satnogs_url = *c.satnogs_url;
+  if (c.logger) startup.model.logger.spec = *c.logger;
+  if (c.logger_key_file) startup.model.logger.key_file = *c.logger_key_file;
+  if (c.logger_station_id) startup.model.logger.station_id = *c.logger_station_id;
   std::vector<std::string> said;
   if (c.rotor_control) {
     startup.model.rotor_control = *c.rotor_control;
@@ -454,6 +458,9 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   std::unique_ptr<UdpEvents> udp;
   if (auto err = open_udp_events(app, c, *log, udp)) return usage_error(*err);
   const auto satnogs = start_satnogs(app, c.rigctld_port, std::chrono::seconds(c.elements_timeout_s), *log);
+  std::unique_ptr<LoggerUpload> logger;
+  if (auto err = start_logger(app, *logging, std::chrono::seconds(c.elements_timeout_s), logger))
+    return usage_error(*err);
   app.set_events(
       [&](const tracker::Event& e) {
         const nlohmann::json j = tracker::to_json(e);
@@ -468,7 +475,7 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   app.start(std::chrono::milliseconds(c.tick_ms));
   // Stored options given on the command line are stored now, not only at the next save.
   if (startup.ram_lost || startup.fresh || c.rotor_control || c.event_min_el_deg || c.az_travel_deg || c.handback_s || c.exclusive ||
-      c.satnogs_station || c.satnogs_url || c.station)
+      c.satnogs_station || c.satnogs_url || c.station || c.logger || c.logger_key_file || c.logger_station_id)
     app.save();
   log->info("trakbox {} started, state {}", kVersion, file.path().string());
   stopped_line.started = true;

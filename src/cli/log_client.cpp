@@ -149,8 +149,12 @@ int run_log(const std::vector<std::string>& args) {
   const std::string state_dir = o.value("state").value_or(store::default_state_directory().string());
   const std::string socket = o.value("socket").value_or(o.has("state") ? socket_for_state(state_dir) : default_client_socket());
   bool not_running = false;
-  const auto text = station_request(socket, "log", "log " + request->dump(-1, ' ', false, json::error_handler_t::replace),
-                                    not_running);
+  const std::string line = "log " + request->dump(-1, ' ', false, json::error_handler_t::replace);
+  if (line.size() + 1 > kMaxRequestBytes)
+    return fail(pos[0] + ": " + (pos.size() > 1 ? pos[1] : std::string("the request")) + " makes a request of " +
+                std::to_string(line.size() + 1) + " bytes, more than the " + std::to_string(kMaxRequestBytes) +
+                " (" + std::to_string(kMaxRequestBytes >> 20) + " MiB) the station's socket takes: split the file");
+  const auto text = station_request(socket, "log", line, not_running);
   if (text) return show(action, json::parse(*text, nullptr, false), o);
   if (!not_running) return kExitFailure;
   if (action == "add") return fail("add: no station is running to take the pass from (start trakbox first)");

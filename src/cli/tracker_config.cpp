@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 
 #include "live/build_info.h"
 #include "cli/cli_defaults.h"
 #include "satrak/rotator_registry.h"
 #include "live/station_socket.h"
 #include "gps/gpsd_client.h"
+#include "logbook/logger.h"
 #include "station/clock.h"
 #include "menus/term/line_terminal.h"
 #include "store/model.h"
@@ -100,6 +102,13 @@ std::vector<OptionSpec> tracker_option_specs() {
                                 "none (stored; docs/sharing.md)"},
       {"satnogs-url", "URL", std::string("the SatNOGS Network whose jobs --satnogs-station reads (default ") +
                                  "https://network.satnogs.org; stored)"},
+      {"logger", "cloudlog:URL|wavelog:URL|none", "the logger the QSOs go to (api/qso, kept in a queue until it "
+                                                  "has them) and the radio state while tracking (api/radio); none "
+                                                  "removes it (stored; docs/logbook.md)"},
+      {"logger-key-file", "FILE", "the file whose first line is the logger's API key, read at the start (the path "
+                                  "is stored, never the key; keep it chmod 600)"},
+      {"logger-station-id", "N", "the logger's station location (Cloudlog's station_profile_id), 1 to 1000000000 "
+                                 "(stored)"},
       {"event-min-el", "DEG", "no AOS/LOS event nor hook for a pass whose maximum elevation stays under DEG, "
                               "-2 to 90 (factory 0: none for a pass that never rises; stored)"},
       {"socket", "PATH", "the station's socket for trakbox attach, status and events (default STATE/" +
@@ -227,7 +236,8 @@ void read_refresh(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
 }
 
 // The GPS receiver: its gpsd, whether the station follows it, and how far it must move first.
-// --handback, --exclusive, --satnogs-station, --satnogs-url (issue 44, docs/sharing.md).
+// --handback, --exclusive, --satnogs-station, --satnogs-url (issue 44, docs/sharing.md); --logger,
+// --logger-key-file, --logger-station-id (issue 45, docs/logbook.md).
 void read_sharing(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
   if (const auto h = r.integer("handback", false, "seconds, 0 to 86400", Range{0, 86400}))
     c.handback_s = static_cast<int>(*h);
@@ -237,6 +247,17 @@ void read_sharing(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
     if (u->rfind("http://", 0) == 0 || u->rfind("https://", 0) == 0) c.satnogs_url = *u;
     else r.fail("--satnogs-url", "expected an http:// or https:// URL; found '" + *u + "'");
   }
+  if (const auto l = o.value("logger")) {
+    const logbook::LoggerSpecParse p = logbook::parse_logger_spec(*l);
+    if (!p.error.empty()) r.fail("--logger", p.error.substr(std::string_view("--logger: ").size()));
+    else c.logger = p.none ? std::string() : logbook::logger_spec_text(*p.spec);
+  }
+  if (const auto f = o.value("logger-key-file")) {
+    if (f->empty()) r.fail("--logger-key-file", "a file is expected");
+    else c.logger_key_file = std::filesystem::absolute(*f).lexically_normal().string();
+  }
+  if (const auto v = r.integer("logger-station-id", false, "a station profile id, 1 to 1000000000", Range{1, 1000000000}))
+    c.logger_station_id = static_cast<int>(*v);
   if (const auto x = o.value("exclusive")) {
     if (*x == "rotctld" || *x == "rigctld" || *x == "satrak" || *x == "none") c.exclusive = *x == "none" ? "" : *x;
     else r.fail("--exclusive", "expected rotctld, rigctld, satrak or none; found '" + *x + "'");

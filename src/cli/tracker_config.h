@@ -104,6 +104,11 @@ struct TrackerConfig {
   // --satnogs-station ID (0: none) and --satnogs-url URL, stored (issue 44).
   std::optional<int> satnogs_station;
   std::optional<std::string> satnogs_url;
+  // --logger SPEC ("" for none; checked by logbook::parse_logger_spec), --logger-key-file FILE
+  // (the path; the key is read at the start), --logger-station-id N: stored (issue 45).
+  std::optional<std::string> logger;
+  std::optional<std::string> logger_key_file;
+  std::optional<int> logger_station_id;
   // The station's socket (attach, status, events): --socket, else STATE_DIR/trakbox.sock.
   std::string socket;
   // --on-event hooks, their time limit (--hook-timeout) and the AOS event's lead (--event-lead).

@@ -64,6 +64,10 @@ int on_progress(void* user, curl_off_t, curl_off_t, curl_off_t, curl_off_t) {
 DownloadResult download(const DownloadRequest& r, const std::function<bool()>& abort) {
   global_init();
   DownloadResult out;
+  if (!r.method.empty() && r.method != "POST") {
+    out.error = redact::url_credentials(r.url) + ": method '" + r.method.substr(0, 16) + "' is not GET or POST";
+    return out;
+  }
   std::unique_ptr<CURL, void (*)(CURL*)> curl(curl_easy_init(), curl_easy_cleanup);
   if (!curl) {
     out.error = "libcurl could not start a transfer";
@@ -77,10 +81,17 @@ DownloadResult download(const DownloadRequest& r, const std::function<bool()>& a
   curl_easy_setopt(c, CURLOPT_URL, r.url.c_str());
   curl_easy_setopt(c, CURLOPT_PROTOCOLS_STR, r.allow_file ? "http,https,ftp,ftps,sftp,file" : "http,https,ftp,ftps,sftp");
   curl_easy_setopt(c, CURLOPT_REDIR_PROTOCOLS_STR, "http,https");
-  curl_easy_setopt(c, CURLOPT_FOLLOWLOCATION, 1L);
+  const bool post = r.method == "POST";
+  if (post) {
+    curl_easy_setopt(c, CURLOPT_PROTOCOLS_STR, "http,https");
+    curl_easy_setopt(c, CURLOPT_POST, 1L);
+    curl_easy_setopt(c, CURLOPT_POSTFIELDS, r.body.data());
+    curl_easy_setopt(c, CURLOPT_POSTFIELDSIZE_LARGE, static_cast<curl_off_t>(r.body.size()));
+  }
+  curl_easy_setopt(c, CURLOPT_FOLLOWLOCATION, post ? 0L : 1L);
   curl_easy_setopt(c, CURLOPT_MAXREDIRS, 5L);
   curl_easy_setopt(c, CURLOPT_NOSIGNAL, 1L);
-  curl_easy_setopt(c, CURLOPT_FAILONERROR, 1L);
+  curl_easy_setopt(c, CURLOPT_FAILONERROR, r.http_errors_fail ? 1L : 0L);
   curl_easy_setopt(c, CURLOPT_CONNECTTIMEOUT_MS, static_cast<long>(r.connect_timeout.count()));
   curl_easy_setopt(c, CURLOPT_TIMEOUT_MS, static_cast<long>(r.total_timeout.count()));
   curl_easy_setopt(c, CURLOPT_MAXFILESIZE_LARGE, static_cast<curl_off_t>(r.max_bytes));
@@ -97,6 +108,8 @@ DownloadResult download(const DownloadRequest& r, const std::function<bool()>& a
   auto add_header = [&](const std::string& h) { headers.reset(curl_slist_append(headers.release(), h.c_str())); };
   if (!r.if_none_match.empty()) add_header("If-None-Match: " + r.if_none_match);
   if (!r.if_modified_since.empty()) add_header("If-Modified-Since: " + r.if_modified_since);
+  if (post && !r.content_type.empty()) add_header("Content-Type: " + r.content_type);
+  if (post) add_header("Expect:");  // no 100-continue round trip for a small body
   if (headers) curl_easy_setopt(c, CURLOPT_HTTPHEADER, headers.get());
   if (!r.user.empty()) {
     curl_easy_setopt(c, CURLOPT_USERNAME, r.user.c_str());

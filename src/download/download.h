@@ -1,6 +1,6 @@
 // Element-set downloads over HTTP(S) and FTP(S)/SFTP with libcurl, on a worker thread of their own.
 // The Satrak unit's SATELLITE_HTTP/SATELLITE_FTP and the scheduled element refresh
-// (tracker/elements_refresh.h) use them.
+// (tracker/elements_refresh.h) use them; the logger's uploads (live/logger_upload.h) POST JSON.
 // libcurl blocks, so no transfer ever runs on the event loop: submit() queues a job and returns at
 // once; the worker runs the jobs one at a time and hands each result to the job's callback **on
 // the worker thread** (the Satrak unit posts it to its io_context). The destructor aborts a
@@ -31,6 +31,15 @@ struct DownloadRequest {
   std::string if_modified_since;   // the Last-Modified date, sent as If-Modified-Since
   std::string user_agent = "trakbox";
   bool allow_file = false;         // file:// too (the operator's own sources; never a Satrak client's)
+  // A POST (HTTP(S) only): "POST" with its body and Content-Type; "" is a GET. The body may hold a
+  // secret (the logger's key): it is never put in an error text. A POST follows no redirect (libcurl
+  // would turn it into a GET without its body); a 3xx answer is then the result.
+  std::string method;
+  std::string body;
+  std::string content_type;        // "application/json"
+  // false: an HTTP error status (4xx, 5xx) is an answer (ok, with its status and body: an API's
+  // refusal is read); true: it fails the transfer ("The requested URL returned error: 404").
+  bool http_errors_fail = true;
 };
 
 struct DownloadResult {

@@ -28,6 +28,7 @@
 #include <spdlog/spdlog.h>
 
 #include "live/attach_internal.h"
+#include "live/station_socket.h"
 #include "menus/term/curses_terminal.h"
 #include "menus/term/line_terminal.h"
 #include "util/backoff.h"
@@ -310,8 +311,8 @@ struct AttachServer::Impl {
       return;
     }
     ++greeting;
-    // 1 MiB: the longest first line, a `trakbox log import` with its file (a local socket).
-    auto buf = std::make_shared<asio::streambuf>(1 << 20);
+    // The longest first line, a `trakbox log import` with its file (a local socket).
+    auto buf = std::make_shared<asio::streambuf>(kMaxRequestBytes);
     auto timer = std::make_shared<asio::steady_timer>(io, std::chrono::seconds(10));
     timer->async_wait([out](const boost::system::error_code& ec) {
       if (!ec) out->close();

@@ -427,6 +427,11 @@ std::string format_status(const nlohmann::json& s) {
       t += ", last " + l["last"].value("call", "") + " " + l["last"].value("sat_name", "") + " " + l["last"].value("time_on", "");
     t += ", " + std::to_string(l.value("queue", 0)) + " to upload";
     line(t);
+    if (const auto g = l.value("logger", nlohmann::json()); g.is_object()) {
+      const auto when = [&](const char* k) { return g[k].is_string() ? g[k].get<std::string>() : std::string("never"); };
+      line("  logger    " + g.value("kind", "") + " " + g.value("url", "") + ", last upload " + when("last_upload") +
+           ", radio posted " + when("last_radio_post"));
+    }
   }
   const auto& sv = s.at("save");
   line("  saved     " + (sv.at("last_saved").is_null() ? std::string("not yet") : sv["last_saved"].get<std::string>()));

@@ -66,6 +66,16 @@ void write_record(std::string& out, const Qso& q) {
   out += "<EOR>\n";
 }
 
+}  // namespace
+
+std::string adif_record(const Qso& q) {
+  std::string out;
+  write_record(out, q);
+  return out;
+}
+
+namespace {
+
 // One field of the file: its upper-cased name and its bytes.
 struct Field {
   std::string name;

@@ -20,6 +20,9 @@ struct AdifExport {
 
 // `created` is the export's UTC time (CREATED_TIMESTAMP); deleted records are left out.
 AdifExport write_adif(const std::vector<Qso>& qsos, std::string_view program_version, std::int64_t created);
+// One record as write_adif writes it, without a header ("<CALL:4>W1AW ... <EOR>\n"): what the
+// logger's api/qso takes for one QSO.
+std::string adif_record(const Qso& q);
 
 struct AdifRead {
   std::vector<Qso> qsos;   // source import unless the file says it (APP_TRAKBOX_SOURCE)

@@ -49,42 +49,43 @@ class Stmt {
   sqlite3_stmt* s_ = nullptr;
 };
 
+// The record's text and integer fields by their column in kColumns (parameter column + 1 in
+// kInsert): one table for reading a row and for binding one.
+struct TextColumn {
+  int column;
+  std::string Qso::*field;
+};
+constexpr TextColumn kTextColumns[] = {
+    {3, &Qso::call},      {4, &Qso::grid},     {5, &Qso::rst_sent}, {6, &Qso::rst_rcvd},
+    {8, &Qso::sat_name},  {9, &Qso::lotw_name}, {11, &Qso::mode},    {16, &Qso::band},
+    {17, &Qso::band_rx},  {18, &Qso::my_grid},  {19, &Qso::station_call}, {21, &Qso::note}};
+struct IntColumn {
+  int column;
+  std::int64_t Qso::*field;
+};
+constexpr IntColumn kIntColumns[] = {{7, &Qso::time_on},          {12, &Qso::uplink_hz},
+                                     {13, &Qso::downlink_hz},     {14, &Qso::uplink_tuned_hz},
+                                     {15, &Qso::downlink_tuned_hz}};
+
 Qso read_row(const Stmt& s) {
   Qso q;
   q.id = s.i64(0);
   q.version = static_cast<int>(s.i64(1));
   q.deleted = s.i64(2) != 0;
-  q.call = s.str(3);
-  q.grid = s.str(4);
-  q.rst_sent = s.str(5);
-  q.rst_rcvd = s.str(6);
-  q.time_on = s.i64(7);
-  q.sat_name = s.str(8);
-  q.lotw_name = s.str(9);
+  for (const auto& c : kTextColumns) q.*c.field = s.str(c.column);
+  for (const auto& c : kIntColumns) q.*c.field = s.i64(c.column);
   q.norad = static_cast<int>(s.i64(10));
-  q.mode = s.str(11);
-  q.uplink_hz = s.i64(12);
-  q.downlink_hz = s.i64(13);
-  q.uplink_tuned_hz = s.i64(14);
-  q.downlink_tuned_hz = s.i64(15);
-  q.band = s.str(16);
-  q.band_rx = s.str(17);
-  q.my_grid = s.str(18);
-  q.station_call = s.str(19);
   q.power_w = s.real(20);
-  q.note = s.str(21);
   q.source = source_from_name(s.str(22)).value_or(Source::import);
   return q;
 }
 
 // Binds the record's fields from column 2 (version) on as parameters 2..23; parameter 1 is the id.
 void bind_record(Stmt& s, const Qso& q) {
-  s.bind(2, std::int64_t{q.version}).bind(3, std::int64_t{q.deleted}).bind(4, q.call).bind(5, q.grid);
-  s.bind(6, q.rst_sent).bind(7, q.rst_rcvd).bind(8, q.time_on).bind(9, q.sat_name).bind(10, q.lotw_name);
-  s.bind(11, std::int64_t{q.norad}).bind(12, q.mode).bind(13, q.uplink_hz).bind(14, q.downlink_hz);
-  s.bind(15, q.uplink_tuned_hz).bind(16, q.downlink_tuned_hz).bind(17, q.band).bind(18, q.band_rx);
-  s.bind(19, q.my_grid).bind(20, q.station_call).bind(21, q.power_w).bind(22, q.note);
-  s.bind(23, std::string(source_name(q.source)));
+  s.bind(2, std::int64_t{q.version}).bind(3, std::int64_t{q.deleted});
+  for (const auto& c : kTextColumns) s.bind(c.column + 1, q.*c.field);
+  for (const auto& c : kIntColumns) s.bind(c.column + 1, q.*c.field);
+  s.bind(11, std::int64_t{q.norad}).bind(21, q.power_w).bind(23, std::string(source_name(q.source)));
 }
 
 const std::string kInsert = std::string("INSERT INTO qso (") + kColumns +

@@ -301,6 +301,7 @@ json to_json(const Model& m) {
   j["sharing"] = {{"handback_s", m.sharing.handback_s}, {"exclusive", m.sharing.exclusive},
                   {"standby", m.sharing.standby}, {"reservations", res},
                   {"satnogs_station", m.sharing.satnogs_station}, {"satnogs_url", m.sharing.satnogs_url}};
+  j["logger"] = {{"spec", m.logger.spec}, {"key_file", m.logger.key_file}, {"station_id", m.logger.station_id}};
   return j;
 }
 
@@ -569,6 +570,13 @@ Model model_from_json(const json& j) {
   if (j.contains("udp_events")) m.udp_events = udp_events_from(j["udp_events"]);
   // Absent in state files written before the station was shared (issue 44).
   if (j.contains("sharing")) m.sharing = sharing_from(j["sharing"]);
+  // Absent in state files written before the logger (issue 45).
+  if (j.contains("logger")) {
+    const json& l = j["logger"];
+    if (!l.is_object()) bad("logger", "expected an object");
+    m.logger = {text(l, "logger", "spec", 1024), text(l, "logger", "key_file", 4096),
+                static_cast<int>(integer(l, "logger", "station_id", 0, 1000000000))};
+  }
   return m;
 }
 

@@ -62,6 +62,15 @@ struct Sharing {
   bool operator==(const Sharing&) const = default;
 };
 
+// The logger (--logger, --logger-key-file, --logger-station-id; docs/logbook.md): the key itself is
+// never stored, only the file it is read from at the start.
+struct LoggerConfig {
+  std::string spec;       // "cloudlog:URL" or "wavelog:URL"; "": none
+  std::string key_file;
+  int station_id = 0;     // Cloudlog's station_profile_id (0: not given)
+  bool operator==(const LoggerConfig&) const = default;
+};
+
 struct Model {
   station::StationConfig station;
   rotator::RotatorConfig rotator;
@@ -87,6 +96,7 @@ struct Model {
   // kMaxUdpEvents; --udp-events none empties it.
   std::vector<std::string> udp_events;
   Sharing sharing;
+  LoggerConfig logger;
 };
 inline constexpr std::size_t kMaxUdpEvents = 16;
 

@@ -112,6 +112,16 @@ json log_summary(const LogOps& ops) {
                  {"time_on", logbook::utc_text(last->time_on).replace(10, 1, "T") + "Z"}};
   else
     j["last"] = nullptr;
+  if (const auto& l = ops.logging()->logger) {
+    j["logger"] = {{"kind", l->kind},
+                   {"url", l->url},
+                   {"queue", b->upload_queue_length()},
+                   {"last_upload", l->last_upload.empty() ? json(nullptr) : json(l->last_upload)},
+                   {"last_radio_post", l->last_radio_post.empty() ? json(nullptr) : json(l->last_radio_post)},
+                   {"problem", l->problem ? json(*l->problem) : json(nullptr)},
+                   {"radio_problem", l->radio_problem ? json(*l->radio_problem) : json(nullptr)}};
+    if (l->problem) j["upload_problem"] = *l->problem;
+  }
   return j;
 }
 

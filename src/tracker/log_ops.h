@@ -21,6 +21,15 @@ namespace tb::tracker {
 
 class StationLoop;
 
+// The logger's uploader (live/logger_upload.h) as status shows it: never its key.
+struct LoggerStatus {
+  std::string kind;                        // "cloudlog", "wavelog"
+  std::string url;                         // the base URL, a password in it redacted
+  std::string last_upload, last_radio_post;  // ISO 8601 UTC (the station's clock), "" before the first
+  std::optional<std::string> problem;      // the QSO uploads fail (cleared by one that succeeds)
+  std::optional<std::string> radio_problem;  // the last radio-state post failed
+};
+
 // What the program keeps for logging: the logbook (none when it could not be opened: logging is
 // then refused with the reason), the NORAD to LoTW table, and the logger's hook (a QSO to upload
 // is queued in the same transaction when one is configured; the hook then wakes the uploader).
@@ -30,6 +39,7 @@ struct Logging {
   logbook::LotwNames names;
   bool upload = false;                 // a logger is configured: queue each QSO
   std::function<void()> on_logged;     // after a commit (the uploader's wake-up); may be empty
+  std::optional<LoggerStatus> logger;  // set while a logger is configured
 };
 
 struct LogRequest {

@@ -117,6 +117,25 @@ def main():
         check(code != 0 and "record 2: TIME_ON: '2590'" in err and "nothing was stored" in err, f"bad import: {code} {err}")
         status, r = w.get_json("/api/v1/log")
         check(len(r["qsos"]) == 2, f"nothing stored from the bad file: {r['qsos']}")
+        # A file past the socket's first 1 MiB goes through (4200 QSOs of 540 bytes); one past its 16 MiB is
+        # refused by the client, naming the size and the limit.
+        note = "x" * 400
+        big = os.path.join(state, "big.adi")
+        with open(big, "w") as f:
+            for i in range(4200):
+                t = f"{i // 60 % 24:02d}{i % 60:02d}00"
+                f.write(f"<CALL:4>N0AA <QSO_DATE:8>202612{1 + i // 1440:02d} <TIME_ON:6>{t} "
+                        f"<MODE:2>FM <BAND:2>2m <FREQ:10>145.990000 <PROP_MODE:3>SAT <SAT_NAME:5>ARISS "
+                        f"<COMMENT:{len(note)}>{note} <EOR>\n")
+        check(os.path.getsize(big) > 2 << 20, "the big file is over 2 MiB")
+        code, out, err = sh(BIN, "log", "import", big, "--state", state, timeout=60)
+        check(code == 0 and "imported 4200 QSOs, 0 already in the log" in out, f"import of 2 MiB: {code} {out} {err}")
+        huge = os.path.join(state, "huge.adi")
+        with open(huge, "w") as f:
+            f.write("<CALL:4>N0AA <EOR>\n" * ((17 << 20) // 19 + 1))
+        code, out, err = sh(BIN, "log", "import", huge, "--state", state, timeout=60)
+        check(code != 0 and re.search(r"makes a request of \d+ bytes, more than the 16777216 \(16 MiB\)", err),
+              f"a file over 16 MiB: {code} {err}")
     finally:
         w.stop()
     # No station: export opens the logbook itself.

@@ -1,7 +1,7 @@
 // The "Log QSO" card (docs/logbook.md): call, grid and report typed at the rig; the station fills
 // the satellite, mode, both frequencies and the time from the pass it tracks (POST /api/v1/log).
 // Below it the QSOs of the station's UTC day (since=today: its clock, not the browser's) with edit
-// and delete, and the ADIF export link.
+// (call, grid, reports, note, in the row) and delete, and the ADIF export link.
 "use strict";
 (function () {
   const el = (id) => document.getElementById(id);
@@ -35,14 +35,50 @@
     return b;
   }
 
-  async function edit(q) {
-    const grid = prompt("Grid of " + q.call, q.grid);
-    if (grid === null) return;
-    try {
-      await call("POST", "/api/v1/log/edit", { id: q.id, grid: grid.trim() });
-      say("QSO " + q.id + " changed");
-      refresh();
-    } catch (e) { say(e.message, true); }
+  // Edit in place: the row becomes fields for the call, the grid, both reports and the note;
+  // Save sends only what changed (POST /api/v1/log/edit), Cancel puts the row back.
+  const kEditable = [["call", "Call", 12], ["grid", "Grid", 8], ["rst_sent", "RST sent", 3],
+                     ["rst_rcvd", "RST rcvd", 3], ["note", "Note", 24]];
+  function edit(q, tr) {
+    tr.textContent = "";
+    const td = document.createElement("td");
+    td.colSpan = 6;
+    const form = document.createElement("form");
+    form.className = "log-edit";
+    const inputs = {};
+    for (const [key, label, size] of kEditable) {
+      const l = document.createElement("label");
+      l.textContent = label + " ";
+      const i = document.createElement("input");
+      i.value = q[key] || "";
+      i.size = size;
+      i.autocapitalize = key === "note" ? "sentences" : "characters";
+      i.setAttribute("aria-label", label + " of QSO " + q.id);
+      inputs[key] = i;
+      l.appendChild(i);
+      form.appendChild(l);
+    }
+    const save = button("Save", () => {});
+    save.type = "submit";
+    form.appendChild(save);
+    form.appendChild(button("Cancel", () => refresh(true)));
+    form.addEventListener("submit", async (ev) => {
+      ev.preventDefault();
+      const body = { id: q.id };
+      for (const [key] of kEditable) {
+        const v = inputs[key].value.trim();
+        if (v !== (q[key] || "")) body[key] = v;
+      }
+      if (Object.keys(body).length === 1) { refresh(true); return; }
+      try {
+        await call("POST", "/api/v1/log/edit", body);
+        say("QSO " + q.id + " changed");
+        refresh(true);
+      } catch (e) { say(e.message, true); }
+    });
+    td.appendChild(form);
+    tr.appendChild(td);
+    inputs.call.focus();
   }
 
   async function remove(q) {
@@ -54,7 +90,9 @@
     } catch (e) { say(e.message, true); }
   }
 
-  async function refresh() {
+  // Not while a row is being edited (the list is rebuilt), unless Save or Cancel asks.
+  async function refresh(force) {
+    if (!force && document.querySelector("#log-list .log-edit")) return;
     let j;
     try { j = await call("GET", "/api/v1/log?since=today"); } catch (e) { say(e.message, true); return; }
     if (!j) return;
@@ -68,7 +106,7 @@
         tr.appendChild(td);
       }
       const td = document.createElement("td");
-      td.appendChild(button("Edit", () => edit(q)));
+      td.appendChild(button("Edit", () => edit(q, tr)));
       td.appendChild(button("Delete", () => remove(q)));
       tr.appendChild(td);
       body.appendChild(tr);

@@ -82,3 +82,21 @@ TEST_CASE("status problems: a tracked satellite on elements past its orbit's age
   d["tracking_list"][0]["elements_stale"] = false;
   CHECK(app::status_problems(d).empty());
 }
+
+TEST_CASE("status: the logger's line, and its failing uploads a problem (issue 45)") {
+  json d = document();
+  d["log"] = {{"open", true}, {"count", 3}, {"queue", 1},
+              {"last", {{"id", 3}, {"call", "G4XYZ"}, {"sat_name", "ISS"}, {"time_on", "2026-05-21T13:50:00Z"}}},
+              {"logger", {{"kind", "cloudlog"}, {"url", "https://log.example.org"}, {"queue", 1},
+                          {"last_upload", "2026-05-21T13:49:00Z"}, {"last_radio_post", nullptr},
+                          {"problem", nullptr}, {"radio_problem", nullptr}}}};
+  const std::string text = app::format_status(d);
+  CHECK(text.find("  log       3 QSO(s), last G4XYZ ISS 2026-05-21T13:50:00Z, 1 to upload\n") != std::string::npos);
+  CHECK(text.find("  logger    cloudlog https://log.example.org, last upload 2026-05-21T13:49:00Z, radio posted "
+                  "never\n") != std::string::npos);
+  CHECK(app::status_problems(d).empty());
+  d["log"]["upload_problem"] = "QSO 3 (G4XYZ) not uploaded: HTTP 500: an empty reply; next try in 60 s";
+  const auto problems = app::status_problems(d);
+  REQUIRE(problems.size() == 1);
+  CHECK(problems[0] == "logger: QSO 3 (G4XYZ) not uploaded: HTTP 500: an empty reply; next try in 60 s");
+}

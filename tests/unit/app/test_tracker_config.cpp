@@ -207,3 +207,22 @@ TEST_CASE("--handback, --exclusive, --satnogs-station and --satnogs-url are read
   CHECK(error_of({"--handback", "-1"}).rfind("--handback: expected seconds, 0 to 86400", 0) == 0);
   CHECK(error_of({"--satnogs-url", "ftp://x"}) == "--satnogs-url: expected an http:// or https:// URL; found 'ftp://x'");
 }
+
+TEST_CASE("--logger, --logger-key-file and --logger-station-id are read and checked (issue 45)") {
+  const auto none = parse({});
+  REQUIRE(none.config);
+  CHECK_FALSE(none.config->logger);
+  CHECK_FALSE(none.config->logger_key_file);
+  CHECK_FALSE(none.config->logger_station_id);
+  const auto set = parse({"--logger", "wavelog:https://log.example.org/", "--logger-key-file", "/etc/trakbox/./wl.key",
+                          "--logger-station-id", "3"});
+  REQUIRE(set.config);
+  CHECK(set.config->logger == "wavelog:https://log.example.org");
+  CHECK(set.config->logger_key_file == "/etc/trakbox/wl.key");
+  CHECK(set.config->logger_station_id == 3);
+  CHECK(parse({"--logger", "none"}).config->logger == "");
+  CHECK(error_of({"--logger", "cloudlog:log.example.org"}) ==
+        "--logger: 'log.example.org' is not an http:// or https:// URL");
+  CHECK(error_of({"--logger", "eqsl:https://x"}) == "--logger: expected cloudlog:URL, wavelog:URL or none; found 'eqsl:https://x'");
+  CHECK(error_of({"--logger-station-id", "0"}).rfind("--logger-station-id: expected a station profile id, 1 to 1000000000", 0) == 0);
+}

@@ -9,6 +9,7 @@
 #include "host/host_mode.h"
 #include "logbook/lotw_names.h"
 #include "support/sim_station.h"
+#include "support/temp_logbook.h"
 #include "test_paths.h"
 #include "tracker/log_ops.h"
 #include "tracker/operations.h"
@@ -16,25 +17,13 @@
 using namespace tb;
 
 namespace {
-struct LoggingStation : testing::StationFixture {
-  std::filesystem::path dir;
-  tracker::Logging logging;
+struct LoggingStation : testing::StationFixture, testing::TempLogbook {
   std::unique_ptr<host::Interpreter> host;
   LoggingStation() {
-    dir = std::filesystem::temp_directory_path() / ("trakbox-hostlog-" + std::to_string(::getpid()));
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
     build_station();
-    logging.book = logbook::Logbook::open((dir / "logbook.sqlite").string(), logging.open_error);
-    logging.names = logbook::load_lotw_names(std::string(TRAKBOX_SOURCE_DIR) + "/data/lotw-satellites.txt");
-    station->set_logging(&logging);
+    open_logbook(*station, "hostlog");
     host = std::make_unique<host::Interpreter>(*station);
     station->tick();
-  }
-  ~LoggingStation() {
-    station->set_logging(nullptr);
-    logging.book.reset();
-    std::filesystem::remove_all(dir);
   }
 };
 }  // namespace

@@ -2,53 +2,13 @@
 
 #include "logbook/adif.h"
 #include "logbook/lotw_names.h"
+#include "support/qso_samples.h"
 
 using namespace tb::logbook;
 
 namespace {
-Qso rs44() {
-  Qso q;
-  q.id = 1;
-  q.call = "W1AW";
-  q.grid = "FN31";
-  q.rst_sent = "59";
-  q.rst_rcvd = "57";
-  q.time_on = 1796161460;  // 2026-12-01 21:44:20 UTC (Python calendar.timegm)
-  q.sat_name = "RS-44";
-  q.lotw_name = "RS-44";
-  q.norad = 44909;
-  q.mode = "SSB";
-  q.uplink_hz = 145'965'000;
-  q.downlink_hz = 435'640'000;
-  q.uplink_tuned_hz = 145'962'310;
-  q.downlink_tuned_hz = 435'648'070;
-  q.band = "2m";
-  q.band_rx = "70cm";
-  q.my_grid = "DM42";
-  q.station_call = "WA7GXD";
-  q.power_w = 2.5;
-  q.note = "first <RS-44> QSO";
-  q.source = Source::web;
-  return q;
-}
-Qso iss() {
-  Qso q;
-  q.id = 2;
-  q.call = "K1JT";
-  q.grid = "FN20xr";
-  q.time_on = 1796161800;
-  q.sat_name = "ISS";
-  q.lotw_name = "ARISS";
-  q.norad = 25544;
-  q.mode = "FM";
-  q.uplink_hz = 145'990'000;
-  q.downlink_hz = 437'800'000;
-  q.band = "2m";
-  q.band_rx = "70cm";
-  q.my_grid = "DM42";
-  q.source = Source::host;
-  return q;
-}
+Qso rs44() { return tb::testing::rs44_qso(); }
+Qso iss() { return tb::testing::iss_qso(); }
 }  // namespace
 
 TEST_CASE("An RS-44 QSO in ADIF 3.1.4: uplink in BAND/FREQ, TQSL's name, the emission as MODE") {

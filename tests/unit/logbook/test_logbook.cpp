@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "logbook/logbook.h"
+#include "support/qso_samples.h"
 
 using namespace tb::logbook;
 namespace fs = std::filesystem;
@@ -23,26 +24,10 @@ struct TempBook {
   std::string path() const { return (dir / "logbook.sqlite").string(); }
 };
 
+// The shared sample without its id (the logbook gives one).
 Qso rs44() {
-  Qso q;
-  q.call = "W1AW";
-  q.grid = "FN31";
-  q.rst_sent = "59";
-  q.rst_rcvd = "57";
-  q.time_on = 1796161460;  // 2026-12-01 21:44:20
-  q.sat_name = "RS-44";
-  q.lotw_name = "RS-44";
-  q.norad = 44909;
-  q.mode = "SSB";
-  q.uplink_hz = 145'965'000;
-  q.downlink_hz = 435'640'000;
-  q.uplink_tuned_hz = 145'962'310;
-  q.downlink_tuned_hz = 435'648'070;
-  q.my_grid = "DM42";
-  q.station_call = "WA7GXD";
-  q.power_w = 25;
-  q.note = "first RS-44";
-  q.source = Source::web;
+  Qso q = tb::testing::rs44_qso();
+  q.id = 0;
   return q;
 }
 }  // namespace

@@ -114,6 +114,65 @@ TEST_CASE("download(): HTTP body, HTTP 404, a refused connection, a size bound, 
   ::close(fd);
 }
 
+// A server that answers a POST with what it received: the status is the path's number (/201,
+// /401), /moved redirects; the body names the method, Content-Type, Expect and the body.
+const char* kPostServer = R"(
+import http.server, json
+class Echo(http.server.BaseHTTPRequestHandler):
+    def log_message(self, *args): pass
+    def do_POST(self):
+        body = self.rfile.read(int(self.headers.get('Content-Length', '0'))).decode()
+        if self.path == '/moved':
+            self.send_response(302); self.send_header('Location', '/201'); self.send_header('Content-Length', '0')
+            self.end_headers(); return
+        out = json.dumps({'method': self.command, 'type': self.headers.get('Content-Type'),
+                          'expect': self.headers.get('Expect'), 'body': body}).encode()
+        self.send_response(int(self.path[1:])); self.send_header('Content-Length', str(len(out))); self.end_headers()
+        self.wfile.write(out)
+s = http.server.ThreadingHTTPServer(('127.0.0.1', 0), Echo)
+print(s.server_address[1], flush=True)
+s.serve_forever()
+)";
+
+TEST_CASE("download(): a POST of JSON, its error answers read, no redirect followed, the body in no error") {
+  Child http({kPython, "-c", kPostServer});
+  REQUIRE(http.port() != 0);
+  const std::string base = "http://127.0.0.1:" + std::to_string(http.port());
+  download::DownloadRequest r = get(base + "/201");
+  r.method = "POST";
+  r.body = R"({"key":"s3cret-KEY"})";
+  r.content_type = "application/json";
+  r.http_errors_fail = false;
+  auto got = download::download(r);
+  REQUIRE_MESSAGE(got.ok, got.error);
+  CHECK(got.status == 201);
+  CHECK(got.body == R"({"method": "POST", "type": "application/json", "expect": null, "body": "{\"key\":\"s3cret-KEY\"}"})");
+  r.url = base + "/401";
+  got = download::download(r);
+  CHECK(got.ok);  // an API's refusal is an answer to read
+  CHECK(got.status == 401);
+  CHECK(got.body.find("s3cret-KEY") != std::string::npos);
+  r.url = base + "/moved";
+  got = download::download(r);
+  CHECK(got.ok);
+  CHECK(got.status == 302);  // not followed: libcurl would have sent a GET without the body
+  r.http_errors_fail = true;
+  r.url = base + "/500";
+  got = download::download(r);
+  CHECK_FALSE(got.ok);
+  CHECK(got.error.find("500") != std::string::npos);
+  CHECK(got.error.find("s3cret") == std::string::npos);
+  r.url = "http://127.0.0.1:" + std::to_string(unused_port()) + "/x";
+  got = download::download(r);
+  CHECK_FALSE(got.ok);
+  CHECK(got.error.find("s3cret") == std::string::npos);
+  r.url = "ftp://127.0.0.1:" + std::to_string(unused_port()) + "/x";
+  got = download::download(r);
+  CHECK_FALSE(got.ok);  // a POST is HTTP(S) only
+  r.method = "PUT";
+  CHECK(download::download(r).error == r.url + ": method 'PUT' is not GET or POST");
+}
+
 TEST_CASE("SATELLITE_HTTP: elements from the web, periodic updates, and both update error actions") {
   TempDir www;
   write_file(www.path / "iss.tle", iss_file(777));

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "support/sim_station.h"
+#include "support/temp_logbook.h"
 #include "test_paths.h"
 #include "tracker/log_ops.h"
 #include "tracker/operations.h"
@@ -17,29 +18,17 @@ using namespace tb;
 using json = nlohmann::json;
 
 namespace {
-struct LogWeb : testing::StationFixture {
-  std::filesystem::path dir;
-  tracker::Logging logging;
+struct LogWeb : testing::StationFixture, testing::TempLogbook {
   web::Access access{web::AccessOptions{}, nullptr};
   std::unique_ptr<web::Api> api;
   LogWeb() {
-    dir = std::filesystem::temp_directory_path() / ("trakbox-weblog-" + std::to_string(::getpid()));
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
     build_station();
-    logging.book = logbook::Logbook::open((dir / "logbook.sqlite").string(), logging.open_error);
-    logging.names = logbook::load_lotw_names(std::string(TRAKBOX_SOURCE_DIR) + "/data/lotw-satellites.txt");
-    station->set_logging(&logging);
+    open_logbook(*station, "weblog");
     web::ApiHooks hooks;
     hooks.status = [] { return json{{"running", true}, {"version", "9.9"}}; };
     hooks.wall_now_unix = [] { return std::int64_t{1796161460}; };
     api = std::make_unique<web::Api>(*station, access, hooks);
     station->tick();
-  }
-  ~LogWeb() {
-    station->set_logging(nullptr);
-    logging.book.reset();
-    std::filesystem::remove_all(dir);
   }
   web::Response request(const std::string& method, const std::string& target, const std::string& body = "") {
     web::Request r;
