@@ -459,8 +459,12 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   if (auto err = open_udp_events(app, c, *log, udp)) return usage_error(*err);
   const auto satnogs = start_satnogs(app, c.rigctld_port, std::chrono::seconds(c.elements_timeout_s), *log);
   std::unique_ptr<LoggerUpload> logger;
-  if (auto err = start_logger(app, *logging, std::chrono::seconds(c.elements_timeout_s), logger))
-    return usage_error(*err);
+  if (auto err = start_logger(app, *logging, std::chrono::seconds(c.elements_timeout_s), logger)) {
+    // Named on this command line: bad input, refused. Stored from an earlier run (the key file gone
+    // since): the station still tracks and tunes; the QSOs stay queued and status says why.
+    if (c.logger || c.logger_key_file || c.logger_station_id) return usage_error(*err);
+    logger_not_started(app.model().logger, *logging, *err, *log);
+  }
   app.set_events(
       [&](const tracker::Event& e) {
         const nlohmann::json j = tracker::to_json(e);

@@ -237,4 +237,17 @@ std::optional<std::string> start_logger(StationApp& app, tracker::Logging& loggi
   return std::nullopt;
 }
 
+void logger_not_started(const store::LoggerConfig& c, tracker::Logging& logging, const std::string& why,
+                        spdlog::logger& log) {
+  const logbook::LoggerSpecParse p = logbook::parse_logger_spec(c.spec);
+  tracker::LoggerStatus st;
+  st.kind = p.spec ? std::string(logbook::logger_kind_name(p.spec->kind)) : "unknown";
+  st.url = p.spec ? logbook::logger_display_url(*p.spec) : "";
+  st.problem = "the logger did not start: " + why + "; QSOs are kept queued until it is mended and trakbox restarted";
+  logging.upload = true;  // queue what is logged meanwhile
+  logging.logger = st;
+  log.warn("logger: {}", *st.problem);
+  std::fprintf(stderr, "trakbox: WARNING: logger: %s\n", st.problem->c_str());
+}
+
 }  // namespace tb::app

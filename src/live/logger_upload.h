@@ -19,8 +19,14 @@
 
 #include "logbook/logger.h"
 
+namespace spdlog {
+class logger;
+}
 namespace tb::tracker {
 struct Logging;
+}
+namespace tb::store {
+struct LoggerConfig;
 }
 
 namespace tb::app {
@@ -54,8 +60,14 @@ class LoggerUpload {
 std::optional<std::string> read_logger_key(const std::string& path, std::string& key, std::string& warning);
 
 // The uploader of the stored --logger (none without one). A logger without a readable key or a
-// station id is a refusal (the program does not start).
+// station id is the returned refusal; the caller decides what it costs (logger_not_started).
 std::optional<std::string> start_logger(StationApp& app, tracker::Logging& logging, std::chrono::seconds timeout,
                                         std::unique_ptr<LoggerUpload>& out);
+
+// A stored logger that could not start (its key file gone since it was set): the QSOs are still
+// queued (nothing is lost for the logger), status' log.logger carries the reason as its problem,
+// and the log and standard error say it once.
+void logger_not_started(const store::LoggerConfig& c, tracker::Logging& logging, const std::string& why,
+                        spdlog::logger& log);
 
 }  // namespace tb::app

@@ -231,6 +231,20 @@ def main():
         check(w.status()["log"]["logger"]["queue"] == 0, "nothing waits")
         status_text += w.status_text()
         status_json += json.dumps(w.status())
+        # The key file gone since it was stored: the station starts and tracks all the same, the
+        # logger's problem in status, and what is logged meanwhile waits in the queue.
+        w.stop()
+        os.remove(keyfile)
+        for opt in ("--logger", "--logger-key-file", "--logger-station-id"):  # stored, not given again
+            i = w.args.index(opt)
+            del w.args[i:i + 2]
+        w.start()
+        st = w.status()
+        problem = [p for p in st["problems"] if p.startswith("logger: the logger did not start")]
+        check(problem and keyfile in problem[0] and "kept queued" in problem[0], f"the stored logger's problem: {st['problems']}")
+        status, r = w.post("/api/v1/log", {"call": "VK3ABC", "grid": "QF22"})
+        check(status == 200 and r["ok"], f"QSO 5 with the logger not started: {status} {r}")
+        check(w.status()["log"]["logger"]["queue"] == 1, f"QSO 5 waits: {w.status()['log']}")
     finally:
         w.stop()
         srv.shutdown()
