@@ -331,6 +331,13 @@ TEST_CASE("The multi table row") {
   p.aos = from_civil(2026, 5, 21, 15, 2, 7);
   n.pass = p;
   CHECK(menus::format_multi_row(n, ' ') == "  2. AO-27       133.20  -20.00   3012.4       15:02:07");
+  // An AOS on another UTC day than the row's time carries its date (issue 47).
+  n.pass->aos = from_civil(2026, 5, 22, 0, 4, 5);
+  CHECK(menus::format_multi_row(n, ' ') == "  2. AO-27       133.20  -20.00   3012.4       2026/05/22 00:04:05");
+  CHECK(menus::aos_text(from_civil(2026, 5, 21, 23, 59, 59), from_civil(2026, 5, 21, 0, 0, 0)) == "23:59:59");
+  CHECK(menus::aos_text(from_civil(2026, 6, 1, 0, 0, 0), from_civil(2026, 5, 31, 23, 59, 59)) == "2026/06/01 00:00:00");
+  CHECK(menus::format_multi_row(n, ' ').size() <= 79);
+  n.pass->aos = p.aos;
   n.pass.reset();
   CHECK(menus::format_multi_row(n, '&') == "  2.&AO-27       133.20  -20.00   3012.4       none in 24h");
   // The headers line up with the row's columns.
