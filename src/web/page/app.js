@@ -97,6 +97,16 @@ function countdown(iso, now) {
   return (h ? h + "h" : "") + String(m).padStart(h ? 2 : 1, "0") + "m" + String(r).padStart(2, "0") + "s";
 }
 
+// An AOS in the browser's local time; with its date when that is not the station clock's day
+// (local too): "19:12:28", "Thu 22 May 03:04:05".
+function aosText(iso, now) {
+  if (!iso) return "-";
+  const d = new Date(iso), n = now ? new Date(now) : null;
+  const t = d.toLocaleTimeString([], { hour: "2-digit", minute: "2-digit", second: "2-digit" });
+  const today = n && d.getFullYear() === n.getFullYear() && d.getMonth() === n.getMonth() && d.getDate() === n.getDate();
+  return today ? t : d.toLocaleDateString([], { weekday: "short", day: "numeric", month: "short" }) + " " + t;
+}
+
 // The rows are updated in place (a row rebuilt every second would swallow a tap made across a tick).
 function drawList(st) {
   const body = $("list").tBodies[0];
@@ -113,11 +123,13 @@ function drawList(st) {
     }
     tr.className = st.tracking && st.tracking.followed === e.name ? "tracked" : "";
     // No pass in the day searched (a satellite that never comes up here: "none", in "> 24 h") and one
-    // that never sets (geostationary: "always up") are said, not shown as a blank.
+    // that never sets (geostationary: "always up") are said, not shown as a blank. A pass in progress
+    // shows when it rose and the whole pass's maximum (the status gives the whole pass), "up now".
     const np = e.next_pass;
     const when = !np ? ["none", "", "> 24 h"]
                : np.always_up ? ["always up", fixed(np.max_el_deg, 0) + "°", "up"]
-               : [hhmm(np.aos), fixed(np.max_el_deg, 0) + "°", np.in_progress ? "up" : countdown(np.aos, st.time)];
+               : [aosText(np.aos, st.time), fixed(np.max_el_deg, 0) + "°", np.in_progress ? "up now" : countdown(np.aos, st.time)];
+    if (np && np.in_progress && !np.always_up) tr.classList.add("up");
     const cells = [e.number, e.name, ...when, fixed(e.element_age_days, 1) + " d"];
     cells.forEach((c, i) => {
       const td = tr.cells[i];
