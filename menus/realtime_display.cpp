@@ -192,7 +192,8 @@ std::string elements_age_line(Services& s, int db_index) {
 
 // A key typed under the live display, other than Q and the end of the input: E, Y, U, D, L, +, -, 0,
 // and the typed tuning S, R, T (menus/realtime_tuning.h).
-void realtime_key(term::Terminal& t, Services& s, int k) {
+// `said`: what the typed tuning keys said (the full screen keeps it in the live block).
+void realtime_key(term::Terminal& t, Services& s, int k, std::string& said) {
   switch (k) {
     case term::kTimeout: break;
     case 'e':
@@ -234,17 +235,17 @@ void realtime_key(term::Terminal& t, Services& s, int k) {
     case '-':
     case '0':
       // The correction is remembered for this satellite and mode (StationOps::tune_offsets).
-      realtime_step_offset(t, s, k == '+' ? 1 : k == '-' ? -1 : 0);
+      said = realtime_step_offset(t, s, k == '+' ? 1 : k == '-' ? -1 : 0);
       break;
     case 's':
     case 'S':
-      realtime_type_spot(t, s);
+      said = realtime_type_spot(t, s);
       break;
     case 'r':
     case 'R':
     case 't':
     case 'T':
-      realtime_type_offset(t, s, k == 't' || k == 'T');
+      said = realtime_type_offset(t, s, k == 't' || k == 'T');
       break;
     default: break;
   }
@@ -274,6 +275,7 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
   LinkNotices notices;             // full screen has the status line instead
   std::string coverage_said;       // serial terminal: the coverage note last printed
   std::string radio_shown;         // serial terminal: the radio line last printed, without "sent"
+  std::string said;                // full screen: what the last tuning key said, under the radio line
   for (;;) {
     s.station.tick();  // fresh numbers at once, not a second late
     if (!t.full_screen())
@@ -309,7 +311,8 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
       // A pass the antenna cannot follow whole (limits, a split travel): how much it follows.
       const std::optional<std::string> coverage = s.station.coverage_note(f->db_index);
       if (t.full_screen()) {
-        t.live({row, coverage.value_or(""), control_line(s), radio_line(s)});
+        // Five lines always: the last, what a tuning key said (or blank), does not move the pictures.
+        t.live({row, coverage.value_or(""), control_line(s), radio_line(s), said});
         // The pictures on every update, as the table: the satellite's @ and the antenna's X are the
         // numbers of the row above. (Drawn only on clock seconds divisible by 5, they stood still
         // under --clock-rate 10, whose updates step 10 s at a time: issue 30 item 8.)
@@ -345,7 +348,8 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
       if (t.full_screen()) t.clear();
       return RealtimeExit::quit;
     }
-    realtime_key(t, s, k);
+    if (k != term::kTimeout) said.clear();   // said until the next key
+    realtime_key(t, s, k, said);
   }
 }
 

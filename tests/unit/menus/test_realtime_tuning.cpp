@@ -36,12 +36,15 @@ struct Rs44 : testing::MenuFixture {
 
 }  // namespace
 
-TEST_CASE("parse_spot_hz: MHz with up to 6 decimals or whole Hz; nothing else") {
+TEST_CASE("parse_spot_hz: MHz with up to 6 decimals, whole Hz, or whole MHz under 1 000 000; nothing else") {
   CHECK(menus::parse_spot_hz("435.645") == 435'645'000);
   CHECK(menus::parse_spot_hz("435.645001") == 435'645'001);
   CHECK(menus::parse_spot_hz("435.") == 435'000'000);
   CHECK(menus::parse_spot_hz("435645000") == 435'645'000);
   CHECK(menus::parse_spot_hz("10489.750") == 10'489'750'000);
+  CHECK(menus::parse_spot_hz("437") == 437'000'000);          // under 1 000 000: MHz
+  CHECK(menus::parse_spot_hz("999999") == 999'999'000'000);
+  CHECK(menus::parse_spot_hz("1000000") == 1'000'000);        // Hz from there on
   CHECK_FALSE(menus::parse_spot_hz("435.6450001"));   // below 1 Hz
   CHECK_FALSE(menus::parse_spot_hz("-435.645"));
   CHECK_FALSE(menus::parse_spot_hz("+435.645"));
@@ -147,4 +150,19 @@ TEST_CASE("Menu 1: the typed keys and + ask for the radio: an outside client hol
   CHECK(f.station->tuner().rit_hz() == 0);             // + said N: nothing
   CHECK(f.station->tuner().xit_hz() == -300);           // the last T said Y
   CHECK(f.station->control().holder(tracker::Resource::radio).kind != tracker::HolderKind::rigctld);
+}
+
+TEST_CASE("Full screen: what a typed key said stays in the live block under the radio line until the next key") {
+  Rs44 f("S437\r");
+  f.term.set_full_screen(true);
+  f.term.timeouts_before_key = 3;   // three updates after the refusal before Q
+  f.run_menu();
+  const std::string refusal = "spot 437000000 Hz is outside RS-44's downlink passband 435610000-435670000 Hz";
+  const std::string& out = f.term.output();
+  std::size_t shown = 0;
+  for (auto p = out.find("| dial follow\n" + refusal + "\n"); p != std::string::npos;
+       p = out.find("| dial follow\n" + refusal + "\n", p + 1))
+    ++shown;
+  CHECK(shown >= 3);   // each update's live block, right under the radio line
+  CHECK(f.station->tuner().downlink_spot_hz() == 435'640'000);
 }
