@@ -144,6 +144,19 @@ def rows_class(d, name):
     return d.find_element("css selector", f'tr[data-name="{name}"]').get_attribute("class") or ""
 
 
+def sky_words_apart(d):
+    """No two words of the sky plot (compass letters, AOS/TCA/LOS) overlap on the screen."""
+    bad = d.execute_script("""
+      const t = [...document.querySelectorAll('#sky text')].map(e => [e.textContent, e.getBoundingClientRect()])
+        .filter(([, r]) => r.width > 0);
+      const out = [];
+      t.forEach(([a, r], i) => t.slice(i + 1).forEach(([b, s]) => {
+        if (r.left < s.right && s.left < r.right && r.top < s.bottom && s.top < r.bottom) out.push(a + ' / ' + b);
+      }));
+      return out;""")
+    check(not bad, f"sky plot words overlap: {bad}")
+
+
 def _alert(d):
     try:
         return d.switch_to.alert
@@ -163,7 +176,10 @@ def phone(w, url, dark, shots):
         small = small_targets(d)
         check(not small, f"targets under 44 px: {small}")
         if not dark:
+            # RS-44 is followed after passband(): its pass from the real AOS by the compass N.
             passband(d, w)
+            poll("the sky's pass from its AOS", lambda: "AOS" in d.find_element("id", "sky").text, 10)
+            sky_words_apart(d)
             items, passes = planner(d, w)
             small = small_targets(d)
             check(not small, f"targets under 44 px with the planner and tuning shown: {small}")
