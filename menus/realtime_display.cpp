@@ -48,7 +48,13 @@ std::string format_multi_row(const tracker::SatNow& n, char marker) {
     return buf;
   }
   std::string next;
-  if (n.in_range) next = "AOS now";
+  // In range with its whole pass (menu M looks it up): when it rose and the whole pass's maximum.
+  char whole[48];
+  if (n.in_range && n.pass && !n.pass->up_at_start && n.pass->aos <= n.obs.time) {
+    std::snprintf(whole, sizeof whole, "AOS now (%s, max %.1f)", aos_text(n.pass->aos, n.obs.time).c_str(),
+                  n.pass->max_el_deg);
+    next = whole;
+  } else if (n.in_range) next = "AOS now";
   else if (n.pass) next = aos_text(n.pass->aos, n.obs.time);
   else next = "none in 24h";
   std::snprintf(buf, sizeof buf, "%3d.%c%-10.10s%8.2f%8.2f%9.1f  %-3s  %s", n.list_number, marker, n.name.c_str(),

@@ -61,7 +61,8 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
 //                       deg     deg       Km  rng  UTC
 //     2.!AO-27       133.20   -1.52   3012.4  AOS  AOS now
 // list number, marker (or a space), name (10 characters), azimuth, elevation, range, "AOS" while
-// in range (elevation >= -2.0 deg), then "AOS now", the next AOS time (HH:MM:SS; the tracker looks
+// in range (elevation >= -2.0 deg), then "AOS now" ("AOS now (12:09:09, max 45.2)" when n's pass is
+// the whole pass in progress, from its real AOS), the next AOS time (HH:MM:SS; the tracker looks
 // a day ahead; with its date, 2026/05/22 03:04:05, when that is not the UTC day of n's time),
 // "none in 24h", or "no position" when the elements cannot be propagated.
 std::string format_multi_row(const tracker::SatNow& n, char marker);
