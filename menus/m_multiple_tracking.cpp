@@ -48,7 +48,13 @@ std::vector<std::string> table_lines(Services& s, int lcd_db_index, char marker)
   std::vector<std::string> lines;
   const tracker::SatNow* lcd_sat = nullptr;
   for (const auto& c : cands) {
-    lines.push_back(format_multi_row(c, c.db_index == active ? marker : ' '));
+    // A pass up when the tracker searched it begins there for the tracker: the row shows it whole.
+    tracker::SatNow row = c;
+    if (row.in_range && row.pass && row.pass->up_at_start && !row.pass->up_at_end)
+      if (const auto whole = s.tracker.pass_at(row.db_index, row.obs.time);
+          whole && !whole->up_at_start && whole->aos <= row.obs.time && row.obs.time <= whole->los)
+        row.pass = whole;
+    lines.push_back(format_multi_row(row, c.db_index == active ? marker : ' '));
     if (c.db_index == lcd_db_index) lcd_sat = &c;
   }
   std::string lcd = "(none)";

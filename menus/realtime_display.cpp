@@ -1,6 +1,6 @@
 #include "menus/realtime_display.h"
 #include "menus/realtime_log.h"
-
+#include "menus/realtime_tuning.h"
 
 #include <algorithm>
 #include <cmath>
@@ -35,6 +35,11 @@ std::string format_realtime_row(const tracker::SatNow& n) {
   return buf;
 }
 
+std::string aos_text(orbit::UtcTime aos, orbit::UtcTime now) {
+  const std::string date = format_date(aos);
+  return (date == format_date(now) ? "" : date + " ") + format_time(aos);
+}
+
 std::string format_multi_row(const tracker::SatNow& n, char marker) {
   char buf[160];
   if (!n.obs.ok()) {
@@ -43,8 +48,14 @@ std::string format_multi_row(const tracker::SatNow& n, char marker) {
     return buf;
   }
   std::string next;
-  if (n.in_range) next = "AOS now";
-  else if (n.pass) next = format_time(n.pass->aos);
+  // In range with its whole pass (menu M looks it up): when it rose and the whole pass's maximum.
+  char whole[48];
+  if (n.in_range && n.pass && !n.pass->up_at_start && n.pass->aos <= n.obs.time) {
+    std::snprintf(whole, sizeof whole, "AOS now (%s, max %.1f)", aos_text(n.pass->aos, n.obs.time).c_str(),
+                  n.pass->max_el_deg);
+    next = whole;
+  } else if (n.in_range) next = "AOS now";
+  else if (n.pass) next = aos_text(n.pass->aos, n.obs.time);
   else next = "none in 24h";
   std::snprintf(buf, sizeof buf, "%3d.%c%-10.10s%8.2f%8.2f%9.1f  %-3s  %s", n.list_number, marker, n.name.c_str(),
                 n.obs.look.az_deg, n.obs.look.el_deg, n.obs.look.range_km, n.in_range ? "AOS" : "", next.c_str());
@@ -69,13 +80,20 @@ term::Graphics pass_graphics(Services& s, const tracker::SatNow& n) {
   term::Graphics g;
   // A satellite that stays up (geostationary) has no AOS or LOS to show.
   const bool always_up = n.pass && n.pass->up_at_start && n.pass->up_at_end;
+  // A pass already up when the tracker searched it begins, for the tracker, at that search: the
+  // title and the track show it whole, from when it rose (issue 47).
+  std::optional<orbit::Pass> pass = n.pass;
+  if (pass && pass->up_at_start && !always_up)
+    if (const auto whole = s.tracker.pass_at(n.db_index, n.obs.time);
+        whole && !whole->up_at_start && whole->aos <= n.obs.time && n.obs.time <= whole->los)
+      pass = whole;
   g.title = n.name + (always_up ? "  always up"
-                      : n.pass  ? "  pass " + format_time(n.pass->aos) + "-" +
-                                     (n.pass->up_at_end ? std::string("...") : format_time(n.pass->los))
+                      : pass    ? "  pass " + aos_text(pass->aos, n.obs.time) + "-" +
+                                     (pass->up_at_end ? std::string("...") : format_time(pass->los))
                                 : "");
-  if (n.pass) {
-    const double minutes = orbit::minutes_between(n.pass->aos, n.pass->los);
-    for (const auto& o : s.tracker.pass_track(n.db_index, *n.pass, std::clamp(static_cast<int>(minutes * 2), 2, 240)))
+  if (pass) {
+    const double minutes = orbit::minutes_between(pass->aos, pass->los);
+    for (const auto& o : s.tracker.pass_track(n.db_index, *pass, std::clamp(static_cast<int>(minutes * 2), 2, 240)))
       g.pass_track.push_back({o.look.az_deg, o.look.el_deg});
   }
   if (n.obs.ok()) {
@@ -178,8 +196,10 @@ std::string elements_age_line(Services& s, int db_index) {
   return line;
 }
 
-// A key typed under the live display, other than Q and the end of the input: E, Y, U, D, L, +, -, 0.
-void realtime_key(term::Terminal& t, Services& s, int k) {
+// A key typed under the live display, other than Q and the end of the input: E, Y, U, D, L, +, -, 0,
+// and the typed tuning S, R, T (menus/realtime_tuning.h).
+// `said`: what the typed tuning keys said (the full screen keeps it in the live block).
+void realtime_key(term::Terminal& t, Services& s, int k, std::string& said) {
   switch (k) {
     case term::kTimeout: break;
     case 'e':
@@ -220,10 +240,18 @@ void realtime_key(term::Terminal& t, Services& s, int k) {
     case '+':
     case '-':
     case '0':
-      s.station.adjust_correction(k == '+' ? 1 : k == '-' ? -1 : 0);
-      save_or_report(t, s);  // the correction is remembered for this satellite and mode
-      if (!t.full_screen()) t.line("Frequency offset " + std::string(s.station.tuner().rit_hz() > 0 ? "+" : "") +
-                                   std::to_string(s.station.tuner().rit_hz()) + " Hz");
+      // The correction is remembered for this satellite and mode (StationOps::tune_offsets).
+      said = realtime_step_offset(t, s, k == '+' ? 1 : k == '-' ? -1 : 0);
+      break;
+    case 's':
+    case 'S':
+      said = realtime_type_spot(t, s);
+      break;
+    case 'r':
+    case 'R':
+    case 't':
+    case 'T':
+      said = realtime_type_offset(t, s, k == 't' || k == 'T');
       break;
     default: break;
   }
@@ -247,11 +275,13 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
   t.line("============ Realtime Tracking [" + format_date(start) + "] ============");
   t.line("'E' Toggle rotor control  'Y' RTC zero adjust  'Q' Return to main menu");
   t.line("'+/-/0' Doppler compensation  'U' next uplink channel  'D' dial follow on/off");
+  t.line("'S' type the spot  'R'/'T' type the RX/TX offset  'L' log a QSO");
   std::optional<int> shown;
   bool was_in_range = false;       // the shown satellite was AOS on the last update
   LinkNotices notices;             // full screen has the status line instead
   std::string coverage_said;       // serial terminal: the coverage note last printed
   std::string radio_shown;         // serial terminal: the radio line last printed, without "sent"
+  std::string said;                // full screen: what the last tuning key said, under the radio line
   for (;;) {
     s.station.tick();  // fresh numbers at once, not a second late
     if (!t.full_screen())
@@ -287,7 +317,8 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
       // A pass the antenna cannot follow whole (limits, a split travel): how much it follows.
       const std::optional<std::string> coverage = s.station.coverage_note(f->db_index);
       if (t.full_screen()) {
-        t.live({row, coverage.value_or(""), control_line(s), radio_line(s)});
+        // Five lines always: the last, what a tuning key said (or blank), does not move the pictures.
+        t.live({row, coverage.value_or(""), control_line(s), radio_line(s), said});
         // The pictures on every update, as the table: the satellite's @ and the antenna's X are the
         // numbers of the row above. (Drawn only on clock seconds divisible by 5, they stood still
         // under --clock-rate 10, whose updates step 10 s at a time: issue 30 item 8.)
@@ -323,7 +354,8 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
       if (t.full_screen()) t.clear();
       return RealtimeExit::quit;
     }
-    realtime_key(t, s, k);
+    if (k != term::kTimeout) said.clear();   // said until the next key
+    realtime_key(t, s, k, said);
   }
 }
 

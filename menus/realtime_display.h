@@ -52,7 +52,7 @@ enum class RealtimeExit { quit, followed_changed };
 
 // Shows the tracker's followed satellite live until Q (or, with exit_on_change, until the tracker
 // follows another satellite or none, or the one shown goes LOS: multiple tracking's realtime display
-// lasts while its satellite is AOS). Handles E, Y, + / - / 0. `marker` is shown before the name
+// lasts while its satellite is AOS). Handles E, Y, + / - / 0, U, D, L, S, R, T. `marker` is shown before the name
 // ('*' single, '!' multiple normal, '&' multiple priority).
 RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, bool exit_on_change = false);
 
@@ -61,9 +61,14 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
 //                       deg     deg       Km  rng  UTC
 //     2.!AO-27       133.20   -1.52   3012.4  AOS  AOS now
 // list number, marker (or a space), name (10 characters), azimuth, elevation, range, "AOS" while
-// in range (elevation >= -2.0 deg), then "AOS now", the next AOS time (HH:MM:SS; the tracker looks
-// a day ahead), "none in 24h", or "no position" when the elements cannot be propagated.
+// in range (elevation >= -2.0 deg), then "AOS now" ("AOS now (12:09:09, max 45.2)" when n's pass is
+// the whole pass in progress, from its real AOS), the next AOS time (HH:MM:SS; the tracker looks
+// a day ahead; with its date, 2026/05/22 03:04:05, when that is not the UTC day of n's time),
+// "none in 24h", or "no position" when the elements cannot be propagated.
 std::string format_multi_row(const tracker::SatNow& n, char marker);
+// An AOS time as the menus' lists show it (UTC): "15:02:07" on the day of `now`, else with its date,
+// "2026/05/22 03:04:05".
+std::string aos_text(orbit::UtcTime aos, orbit::UtcTime now);
 inline constexpr const char* kMultiHeader1 = " No. Satellite    Azim.   Elev.    Range  In   Next AOS";
 inline constexpr const char* kMultiHeader2 = "                    deg     deg       Km  rng  UTC";
 

@@ -5,7 +5,8 @@
 namespace tb::menus {
 
 tracker::OpResult with_confirmation(term::Terminal& t, tracker::StationLoop& station,
-                                    const std::function<tracker::OpResult(tracker::StationOps&)>& op) {
+                                    const std::function<tracker::OpResult(tracker::StationOps&)>& op,
+                                    bool show_refusal) {
   tracker::StationOps ops(station);
   tracker::OpResult r = op(ops);
   if (r.confirm) {
@@ -16,7 +17,7 @@ tracker::OpResult with_confirmation(term::Terminal& t, tracker::StationLoop& sta
     tracker::StationOps confirmed(station, tracker::Requester::menus(), true);
     r = op(confirmed);
   }
-  if (!r.ok()) t.line(*r.refusal);
+  if (!r.ok() && show_refusal) t.line(*r.refusal);
   return r;
 }
 

@@ -33,6 +33,7 @@ bool ends_with(const std::string& s, const char* tail) {
 // one can select or search).
 struct Label {
   double x, y, size;
+  double width;   // cairo's advance: the SVG text is held to it (textLength), as it was placed
   double r, g, b;
   std::string text;
 };
@@ -48,14 +49,32 @@ void show_text(cairo_t* cr, double x, double y, const std::string& s) {
   cairo_get_font_matrix(cr, &font);
   double r = 0, g = 0, b = 0, a = 1;
   cairo_pattern_get_rgba(cairo_get_source(cr), &r, &g, &b, &a);
-  svg_labels->push_back({x, y, font.yy, r, g, b, s});
+  cairo_text_extents_t ext;
+  cairo_text_extents(cr, s.c_str(), &ext);
+  svg_labels->push_back({x, y, font.yy, ext.x_advance, r, g, b, s});
 }
 
-void text_at(cairo_t* cr, double x, double y, const std::string& s, double size, bool centre = false) {
+// The box of `s` written from baseline (x, y) at `size`: its advance wide, the line's height
+// (0.8 of the size above the baseline, 0.25 below, whatever the glyphs) high.
+LabelBox text_box(cairo_t* cr, double x, double y, const std::string& s, double size) {
+  cairo_text_extents_t ext;
+  cairo_text_extents(cr, s.c_str(), &ext);
+  return {x, y - 0.8 * size, ext.x_advance, 1.05 * size};
+}
+
+bool clear_of(const std::vector<LabelBox>& placed, const LabelBox& b) {
+  return std::none_of(placed.begin(), placed.end(), [&](const LabelBox& p) { return labels_touch(p, b); });
+}
+
+// Writes `s` (centred on x, or from it); its box joins `placed` when given.
+void text_at(cairo_t* cr, double x, double y, const std::string& s, double size, bool centre = false,
+             std::vector<LabelBox>* placed = nullptr) {
   cairo_set_font_size(cr, size);
   cairo_text_extents_t ext;
   cairo_text_extents(cr, s.c_str(), &ext);
-  show_text(cr, centre ? x - ext.width / 2 - ext.x_bearing : x, y, s);
+  const double from = centre ? x - ext.width / 2 - ext.x_bearing : x;
+  show_text(cr, from, y, s);
+  if (placed) placed->push_back(text_box(cr, from, y, s, size));
 }
 
 std::string xml_escaped(const std::string& s) {
@@ -84,9 +103,11 @@ std::optional<std::string> add_svg_labels(const std::string& path, const std::ve
   if (end == std::string::npos) return "'" + path + "': cairo wrote no </svg>";
   std::string words = "<g font-family=\"sans-serif\">\n";
   for (const Label& l : labels) {
-    char head[200];
-    std::snprintf(head, sizeof head, "<text x=\"%.2f\" y=\"%.2f\" font-size=\"%.1f\" fill=\"rgb(%d,%d,%d)\">", l.x, l.y,
-                  l.size, static_cast<int>(l.r * 255 + 0.5), static_cast<int>(l.g * 255 + 0.5),
+    char head[256];
+    std::snprintf(head, sizeof head,
+                  "<text x=\"%.2f\" y=\"%.2f\" font-size=\"%.1f\" textLength=\"%.2f\" lengthAdjust=\"spacingAndGlyphs\" "
+                  "fill=\"rgb(%d,%d,%d)\">",
+                  l.x, l.y, l.size, l.width, static_cast<int>(l.r * 255 + 0.5), static_cast<int>(l.g * 255 + 0.5),
                   static_cast<int>(l.b * 255 + 0.5));
     words += head + xml_escaped(l.text) + "</text>\n";
   }
@@ -129,7 +150,7 @@ void draw_unreachable(cairo_t* cr, const rotator::PassPlan& plan) {
 }
 
 // Elevation rings every 30 degrees, the horizon heavier; compass lines and letters.
-void draw_grid(cairo_t* cr) {
+void draw_grid(cairo_t* cr, std::vector<LabelBox>& placed) {
   const double c = kPlotCentre, R = kPlotRadius;
   cairo_set_source_rgb(cr, 0.55, 0.55, 0.55);
   for (int el = 0; el < 90; el += 30) {
@@ -137,7 +158,7 @@ void draw_grid(cairo_t* cr) {
     cairo_new_path(cr);  // no line from the last label's end to the ring
     cairo_arc(cr, c, c, R * (90.0 - el) / 90.0, 0, 2 * std::numbers::pi);
     cairo_stroke(cr);
-    if (el > 0) text_at(cr, c + 3, c - R * (90.0 - el) / 90.0 - 3, std::to_string(el) + "\xc2\xb0", 11);
+    if (el > 0) text_at(cr, c + 3, c - R * (90.0 - el) / 90.0 - 3, std::to_string(el) + "\xc2\xb0", 11, false, &placed);
   }
   cairo_set_line_width(cr, 1.0);
   cairo_new_path(cr);
@@ -147,10 +168,10 @@ void draw_grid(cairo_t* cr) {
   cairo_line_to(cr, c, c + R);
   cairo_stroke(cr);
   cairo_set_source_rgb(cr, 0, 0, 0);
-  text_at(cr, c, c - R - 8, "N", 16, true);
-  text_at(cr, c, c + R + 22, "S", 16, true);
-  text_at(cr, c + R + 14, c + 6, "E", 16, true);
-  text_at(cr, c - R - 14, c + 6, "W", 16, true);
+  text_at(cr, c, c - R - 8, "N", 16, true, &placed);
+  text_at(cr, c, c + R + 22, "S", 16, true, &placed);
+  text_at(cr, c + R + 14, c + 6, "E", 16, true, &placed);
+  text_at(cr, c - R - 14, c + 6, "W", 16, true, &placed);
 }
 
 // Where the antenna cannot follow: red over the track.
@@ -172,12 +193,14 @@ void draw_lost(cairo_t* cr, const PassPicture& p) {
 
 }  // namespace
 
+bool labels_touch(const LabelBox& a, const LabelBox& b) {
+  const double g = kLabelGap;
+  return a.x < b.x + b.w + g && b.x < a.x + a.w + g && a.y < b.y + b.h && b.y < a.y + a.h;
+}
+
 LabelBox place_label(const std::vector<LabelBox>& placed, LabelBox want) {
-  auto overlaps = [](const LabelBox& a, const LabelBox& b) {
-    return a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h;
-  };
   for (int tries = 0; tries < 16; ++tries) {
-    const auto hit = std::find_if(placed.begin(), placed.end(), [&](const LabelBox& p) { return overlaps(p, want); });
+    const auto hit = std::find_if(placed.begin(), placed.end(), [&](const LabelBox& p) { return labels_touch(p, want); });
     if (hit == placed.end()) break;
     want.y = hit->y + hit->h;   // just below the one it would cover
   }
@@ -196,16 +219,16 @@ void mark(cairo_t* cr, double az, double el, const std::string& label, std::vect
   cairo_fill(cr);
   const double dx = x > c ? -8.0 : 8.0;
   cairo_set_font_size(cr, 12);
-  cairo_text_extents_t ext;
-  cairo_text_extents(cr, label.c_str(), &ext);
   const double base = y + (y > c ? 16 : -8);
-  const LabelBox box = place_label(placed, {dx < 0 ? x + dx - ext.width : x + dx, base - 12.0, ext.width, 14.0});
+  LabelBox want = text_box(cr, x + dx, base, label, 12);
+  if (dx < 0) want.x -= want.w;
+  const LabelBox box = place_label(placed, want);
   placed.push_back(box);
-  show_text(cr, box.x, box.y + 12.0, label);
+  show_text(cr, box.x, box.y + 0.8 * 12, label);
 }
 
 // Azimuth ticks on the horizon every 10 degrees (longer every 30, numbered between the compass letters).
-void draw_azimuth_ticks(cairo_t* cr) {
+void draw_azimuth_ticks(cairo_t* cr, std::vector<LabelBox>& placed) {
   const double c = kPlotCentre, R = kPlotRadius;
   cairo_set_source_rgb(cr, 0.35, 0.35, 0.35);
   cairo_set_line_width(cr, 1.0);
@@ -219,13 +242,14 @@ void draw_azimuth_ticks(cairo_t* cr) {
   for (int az = 30; az < 360; az += 30) {
     if (az % 90 == 0) continue;  // N, E, S, W are written
     const double sx = std::sin(az * kDeg), sy = -std::cos(az * kDeg);
-    text_at(cr, c + (R + 22) * sx, c + (R + 22) * sy + 4, std::to_string(az), 10, true);
+    text_at(cr, c + (R + 22) * sx, c + (R + 22) * sy + 4, std::to_string(az), 10, true, &placed);
   }
 }
 
 // The satellite's time along its track: a tick across it every minute, the minute written every
-// other one (every 5 for a long pass), and an arrow the way it moves at the middle of the pass.
-void draw_time_ticks(cairo_t* cr, const PassPicture& p) {
+// other one (every 5 for a long pass) where it covers no other word, and an arrow the way it moves
+// at the middle of the pass.
+void draw_time_ticks(cairo_t* cr, const PassPicture& p, std::vector<LabelBox>& placed) {
   if (p.track.size() < 2) return;
   const double minutes = orbit::minutes_between(p.track.front().time, p.track.back().time);
   const int label_every = minutes > 20 ? 5 : 2;
@@ -248,7 +272,11 @@ void draw_time_ticks(cairo_t* cr, const PassPicture& p) {
     cairo_line_to(cr, x1 + nx, y1 + ny);
     cairo_stroke(cr);
     const auto minute = std::chrono::duration_cast<std::chrono::minutes>(m1.time_since_epoch()).count() % 60;
-    if (minute % label_every == 0) text_at(cr, x1 + nx * 1.6 + 2, y1 + ny * 1.6 + 4, orbit::format_iso8601(m1, 0).substr(11, 5), 10);
+    if (minute % label_every != 0) continue;
+    const std::string hm = orbit::format_iso8601(m1, 0).substr(11, 5);
+    cairo_set_font_size(cr, 10);
+    if (clear_of(placed, text_box(cr, x1 + nx * 1.6 + 2, y1 + ny * 1.6 + 4, hm, 10)))
+      text_at(cr, x1 + nx * 1.6 + 2, y1 + ny * 1.6 + 4, hm, 10, false, &placed);
   }
   // The arrow: at the middle sample, pointing along the track.
   const std::size_t mid = p.track.size() / 2;
@@ -265,13 +293,42 @@ void draw_time_ticks(cairo_t* cr, const PassPicture& p) {
   cairo_fill(cr);
 }
 
+// The title, the station and elements line, and the legend.
+void draw_words(cairo_t* cr, const PassPicture& p, std::vector<LabelBox>& placed) {
+  const orbit::Pass& ps = p.pass;
+  cairo_set_source_rgb(cr, 0, 0, 0);
+  char head[160];
+  std::snprintf(head, sizeof head, "%s  %s UTC  max el %.1f\xc2\xb0", p.title.c_str(),
+                orbit::format_iso8601(ps.aos, 0).substr(0, 10).c_str(), ps.max_el_deg);
+  text_at(cr, 10, 20, head, 14, false, &placed);
+  // Where from and how old the elements are: a picture kept without its command line says both.
+  // On two lines: on one they ran under the compass N.
+  double y = 38;
+  for (const std::string* line : {&p.station, &p.element_age})
+    if (!line->empty()) {
+      text_at(cr, 10, y, *line, 11, false, &placed);
+      y += 14;
+    }
+  std::string legend = "blue: satellite";
+  if (p.plan) {
+    legend += "   orange: antenna";
+    if (p.plan->flip) legend += " (over the top)";
+    if (!p.plan->coverage.full()) legend += "   red: antenna cannot follow";
+  }
+  text_at(cr, 10, kPlotSize - 10, legend, 12, false, &placed);
+}
+
 void draw(cairo_t* cr, const PassPicture& p) {
   cairo_set_source_rgb(cr, 1, 1, 1);
   cairo_paint(cr);
   cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
   if (p.plan) draw_unreachable(cr, *p.plan);
-  draw_grid(cr);
-  draw_azimuth_ticks(cr);
+  // Every word's box: the minute labels skip a place taken, AOS/TCA/LOS move clear (issue 47:
+  // TCA's time was written over a minute label and the compass letters on a low pass).
+  std::vector<LabelBox> placed;
+  draw_grid(cr, placed);
+  draw_azimuth_ticks(cr, placed);
+  draw_words(cr, p, placed);
 
   std::vector<std::pair<double, double>> track;
   for (const auto& t : p.track) track.emplace_back(t.az_deg, std::max(t.el_deg, -2.0));
@@ -295,32 +352,14 @@ void draw(cairo_t* cr, const PassPicture& p) {
   polyline(cr, track);
   cairo_stroke(cr);
   if (p.plan) draw_lost(cr, p);
-  draw_time_ticks(cr, p);
-  // AOS, TCA, LOS: a dot and the time.
+  // AOS, TCA, LOS: a dot and the time, placed before the minute labels, which give way.
   const orbit::Pass& ps = p.pass;
-  std::vector<LabelBox> placed;
   mark(cr, ps.aos_az_deg, -2.0, "AOS " + hms(ps.aos), placed);
   mark(cr, ps.tca_az_deg, ps.max_el_deg, "TCA " + hms(ps.tca), placed);
   mark(cr, ps.los_az_deg, -2.0, "LOS " + hms(ps.los), placed);
-
-  // Title and legend.
-  cairo_set_source_rgb(cr, 0, 0, 0);
-  char head[160];
-  std::snprintf(head, sizeof head, "%s  %s UTC  max el %.1f\xc2\xb0", p.title.c_str(),
-                orbit::format_iso8601(ps.aos, 0).substr(0, 10).c_str(), ps.max_el_deg);
-  text_at(cr, 10, 20, head, 14);
-  // Where from and how old the elements are: a picture kept without its command line says both.
-  std::string sub = p.station;
-  if (!p.element_age.empty()) sub += (sub.empty() ? "" : "   ") + p.element_age;
-  if (!sub.empty()) text_at(cr, 10, 38, sub, 11);
-  std::string legend = "blue: satellite";
-  if (p.plan) {
-    legend += "   orange: antenna";
-    if (p.plan->flip) legend += " (over the top)";
-    if (!p.plan->coverage.full()) legend += "   red: antenna cannot follow";
-  }
-  text_at(cr, 10, kPlotSize - 10, legend, 12);
+  draw_time_ticks(cr, p, placed);
 }
+
 
 }  // namespace
 

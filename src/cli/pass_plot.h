@@ -31,19 +31,24 @@ inline constexpr double kPlotCentre = 320; // x and y of the zenith
 // Pixel position of az/el on the plot (elevations below 0 lie outside the horizon circle).
 void plot_position(double az_deg, double el_deg, double& x, double& y);
 
-// A label's box (x, y its top left; pixels). place_label: where `want` goes so that it overlaps
-// none of `placed`: moved down by its own height until it is clear (AOS, TCA and LOS of a short
-// pass near the horizon would otherwise be written over each other).
+// A label's box (x, y its top left; pixels). place_label: where `want` goes so that it touches
+// none of `placed` (labels_touch): moved down by its own height until it is clear (AOS, TCA and
+// LOS of a short pass near the horizon would otherwise be written over each other).
 struct LabelBox {
   double x = 0, y = 0, w = 0, h = 0;
 };
+// Words side by side keep this far apart (pixels), or they read as one ("TCA 10:49:50 10:50").
+inline constexpr double kLabelGap = 3.0;
+// Whether a and b overlap, or stand closer than kLabelGap side by side.
+bool labels_touch(const LabelBox& a, const LabelBox& b);
 LabelBox place_label(const std::vector<LabelBox>& placed, LabelBox want);
 
 // The reason a --plot name cannot be written (it must end .png or .svg, any case); nothing when it can.
 std::optional<std::string> plot_name_problem(const std::string& path);
 
 // Writes the picture to `path` (.png or .svg); the reason when it cannot. In SVG the words are
-// <text> elements (selectable, searchable), not glyph outlines.
+// <text> elements (selectable, searchable), not glyph outlines, each held to the width cairo measured
+// when it was placed (textLength), so that labels kept apart stay apart in any viewer's font.
 std::optional<std::string> write_pass_plot(const PassPicture& p, const std::string& path);
 
 // Samples a pass every `step_s` seconds from AOS to LOS (LOS included).

@@ -22,16 +22,17 @@
 namespace tb::app {
 namespace {
 
-nlohmann::json pass_json(const std::optional<orbit::Pass>& p) {
+nlohmann::json pass_json(const std::optional<orbit::Pass>& p, orbit::UtcTime now) {
   if (!p) return nullptr;
   // A satellite still up where the search ended (geostationary) has no LOS to tell: null, and
   // always_up when it was up at the start too. A "pass" of the -2 deg rule whose maximum stays under
-  // the horizon never rises: said (rises false) rather than passed off as a pass.
+  // the horizon never rises: said (rises false) rather than passed off as a pass. In progress: up
+  // now, whether the search began inside it or it is the whole pass (whole_pass below).
   return {{"aos", orbit::format_iso8601(p->aos)},
           {"tca", orbit::format_iso8601(p->tca)},
           {"los", p->up_at_end ? nlohmann::json(nullptr) : nlohmann::json(orbit::format_iso8601(p->los))},
           {"max_el_deg", p->max_el_deg},
-          {"in_progress", p->up_at_start},
+          {"in_progress", p->up_at_start || (p->aos <= now && now <= p->los)},
           {"always_up", p->up_at_start && p->up_at_end},
           {"rises", p->max_el_deg >= 0.0}};
 }
@@ -177,6 +178,17 @@ nlohmann::json radio_json(StationApp& app) {
 }
 
 // The tracking list: each satellite now, its element age and its next pass (the tracker's search).
+// A pass in progress as a list shows it (issue 47): from when it rose, with the whole pass's
+// maximum. The tracker's pass of a satellite already up when it was searched begins at that search
+// (aos = then, the maximum what was left of it): the pass around now is searched from before.
+std::optional<orbit::Pass> whole_pass(StationApp& app, int db_index, const std::optional<orbit::Pass>& p,
+                                      orbit::UtcTime now) {
+  if (!p || !p->up_at_start || p->up_at_end) return p;
+  const auto whole = app.tracker().pass_at(db_index, now);
+  if (whole && !whole->up_at_start && !whole->up_at_end && whole->aos <= now && now <= whole->los) return whole;
+  return p;
+}
+
 nlohmann::json tracking_list_json(StationApp& app, orbit::UtcTime now) {
   nlohmann::json list = nlohmann::json::array();
   const store::Database& db = app.model().db;
@@ -199,7 +211,7 @@ nlohmann::json tracking_list_json(StationApp& app, orbit::UtcTime now) {
     }
     if (const auto obs = app.tracker().observe(i, now); obs && obs->obs.ok())
       e["now"] = {{"az_deg", obs->obs.look.az_deg}, {"el_deg", obs->obs.look.el_deg}, {"in_range", obs->in_range}};
-    e["next_pass"] = pass_json(pass);
+    e["next_pass"] = pass_json(whole_pass(app, i, pass, now), now);
     list.push_back(std::move(e));
   }
   return list;
@@ -265,7 +277,7 @@ nlohmann::json station_status(StationApp& app, const StatusContext& cx) {
   for (const auto& c : tr.candidates()) {
     nlohmann::json s{{"name", c.name}, {"list_number", c.list_number}, {"in_range", c.in_range}};
     if (c.obs.ok()) s["az_deg"] = c.obs.look.az_deg, s["el_deg"] = c.obs.look.el_deg;
-    s["pass"] = pass_json(c.pass);
+    s["pass"] = pass_json(whole_pass(app, c.db_index, c.pass, now), now);
     sats.push_back(std::move(s));
   }
   tracking["satellites"] = std::move(sats);

@@ -225,14 +225,6 @@ void StationLoop::set_uplink_radio(std::unique_ptr<radio::RadioDriver> uplink) {
   tone_sent_ = tone > 0;
 }
 
-void StationLoop::adjust_correction(int direction) {
-  if (direction > 0) tuner_.rit_up();
-  else if (direction < 0) tuner_.rit_down();
-  else tuner_.rit_zero();
-  // The correction found for this satellite and mode is kept for its next pass (0 forgets it).
-  model_.radio.corrections = tuner_.config().corrections;
-}
-
 void StationLoop::set_tone(int tenths_hz) {
   tuner_.set_tone(tenths_hz);
   if (tenths_hz > 0 || tone_sent_) radio_->set_ctcss_tone(tenths_hz);

@@ -125,9 +125,6 @@ class StationLoop {
   // again. The downlink radio stays; everything is sent again at the next tick.
   void set_uplink_radio(std::unique_ptr<radio::RadioDriver> uplink);
   radio::Tuner& tuner() { return tuner_; }
-  // The realtime + / - / 0 keys (direction +1, -1, 0): the Tuner's RIT, remembered in the model as
-  // the correction for the satellite and mode (the caller saves the model).
-  void adjust_correction(int direction);
   // The database satellite the radio is tuned for (the followed one since its first tick), if any.
   std::optional<int> tuned() const { return tuned_; }
   // The tuned satellite's uplink CTCSS tone, sent now (tenths of Hz, 0 off); the caller stores it.

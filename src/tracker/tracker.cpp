@@ -131,14 +131,23 @@ std::optional<orbit::Pass> Tracker::pass_at(int db_index, orbit::UtcTime t) cons
   orbit::PassOptions po;
   po.precision_s = 1.0;
   // From half an hour before, so that a pass in progress at t is found from its AOS (a low orbit's
-  // pass is shorter); one that ended before t is passed over.
-  orbit::UtcTime from = orbit::add_minutes(t, -30.0);
-  for (int k = 0; k < 8; ++k) {
-    auto p = orbit::next_pass(sgp4, model_.station.observer(), from, kPassSearchDays, po);
-    if (!p || p->los >= t) return p;
-    from = orbit::add_minutes(p->los, 1.0 / 60.0);
-  }
-  return std::nullopt;
+  // pass is shorter); one that ended before t is passed over. A pass still up at the start of that
+  // search (a high orbit's, hours long) is searched again from 6 hours and then a day before; one
+  // up even then (geostationary) is left as the half-hour search found it.
+  const auto search = [&](double back_minutes) -> std::optional<orbit::Pass> {
+    orbit::UtcTime from = orbit::add_minutes(t, -back_minutes);
+    for (int k = 0; k < 32; ++k) {
+      auto p = orbit::next_pass(sgp4, model_.station.observer(), from, kPassSearchDays, po);
+      if (!p || p->los >= t) return p;
+      from = orbit::add_minutes(p->los, 1.0 / 60.0);
+    }
+    return std::nullopt;
+  };
+  const std::optional<orbit::Pass> near = search(30.0);
+  if (!near || !near->up_at_start || near->up_at_end) return near;
+  for (const double back : {360.0, 1440.0})
+    if (auto p = search(back); p && !p->up_at_start) return p;
+  return near;
 }
 
 const SatNow* Tracker::followed() const {

@@ -371,10 +371,15 @@ json Api::sky() {
     return j;
   }
   // A pass already up when tracking began: drawn from its real AOS (searched once per pass).
+  // The same pass when its LOS agrees to the searches' precision (each found to about a second from
+  // a different start: equal to the nanosecond, they never were, and the sky began where tracking did).
+  const auto same_los = [](const orbit::Pass& a, const orbit::Pass& b) {
+    return std::abs(orbit::minutes_between(a.los, b.los)) * 60.0 < 5.0;
+  };
   if (f->pass->up_at_start &&
-      !(real_pass_ && real_pass_->first == f->db_index && real_pass_->second.los == f->pass->los)) {
+      !(real_pass_ && real_pass_->first == f->db_index && same_los(real_pass_->second, *f->pass))) {
     const auto real = tr.pass_at(f->db_index, tr.last_tick_time());
-    real_pass_ = std::make_pair(f->db_index, real && real->los == f->pass->los ? *real : *f->pass);
+    real_pass_ = std::make_pair(f->db_index, real && same_los(*real, *f->pass) ? *real : *f->pass);
   }
   const orbit::Pass& pass = f->pass->up_at_start ? real_pass_->second : *f->pass;
   json p = pass_json(pass);

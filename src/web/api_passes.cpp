@@ -98,7 +98,7 @@ std::optional<Response> plan(tracker::StationLoop& station, const std::string& t
   }
   if (chosen.size() > kMaxPlanSatellites)
     return refuse(400, "passes: at most 15 satellites at once; " + std::to_string(chosen.size()) + " given");
-  out.from = station.tracker().last_tick_time();
+  out.from = station.now();   // the station clock: with tracking off the tracker has not ticked
   const orbit::UtcTime stop = orbit::add_minutes(out.from, out.hours * 60.0);
   orbit::PassOptions options;
   options.min_max_elevation_deg = std::max(out.min_el, 1e-9);   // passes that rise, at least
@@ -107,8 +107,21 @@ std::optional<Response> plan(tracker::StationLoop& station, const std::string& t
     const orbit::Sgp4* sgp4 = station.tracker().propagator(i);
     if (!sgp4) continue;   // no usable orbit: nothing to plan
     const std::string& name = m.db.satellites[static_cast<std::size_t>(i)].name();
-    const auto found = out.with ? orbit::mutual_passes(*sgp4, here, *out.with, out.from, stop, options)
-                                : orbit::find_passes(*sgp4, here, out.from, stop, options);
+    const auto search = [&](orbit::UtcTime start) {
+      std::vector<orbit::Pass> f = out.with ? orbit::mutual_passes(*sgp4, here, *out.with, start, stop, options)
+                                            : orbit::find_passes(*sgp4, here, start, stop, options);
+      std::erase_if(f, [&](const orbit::Pass& p) { return p.los < out.from; });
+      return f;
+    };
+    // A pass in progress is planned whole (issue 47): its real AOS and the whole pass's maximum
+    // (also against min_el), searched from half an hour before, or 6 hours or a day for a long one.
+    // One up even then (geostationary) is planned from now, as before.
+    std::vector<orbit::Pass> found;
+    for (const double back : {30.0, 360.0, 1440.0}) {
+      found = search(orbit::add_minutes(out.from, -back));
+      if (found.empty() || !found.front().up_at_start) break;
+    }
+    if (!found.empty() && found.front().up_at_start) found = search(out.from);
     for (const orbit::Pass& p : found) {
       out.passes.push_back({name, p});
       out.db_index.push_back(i);
@@ -157,7 +170,7 @@ Response Api::passes(const std::string& target) {
                     {"aos_az_deg", pass.aos_az_deg},
                     {"tca_az_deg", pass.tca_az_deg},
                     {"los_az_deg", pass.los_az_deg},
-                    {"in_progress", pass.up_at_start},
+                    {"in_progress", pass.up_at_start || (pass.aos <= p.from && p.from <= pass.los)},
                     {"overlaps", std::move(overlaps)},
                     {"track", std::move(track)}});
   }

@@ -4,14 +4,17 @@ dial up and the uplink dial down by 5 kHz (the inverting transponder's rule); an
 the page survives a restart; the planner lists tonight's SO-50/AO-91/RS-44/ISS passes above 20 deg
 as the API does, and one is tracked from it; every touch target is at least 44 CSS px high; nothing
 scrolls sideways at 320, 390 or 1280 px; the night theme is remembered; a stopped station greys the
-page within 5 s. With TRAKBOX_SCREENSHOT_DIR=DIR it writes web-phone.png and web-phone-dark.png there
+page within 5 s; the tracking list shows a pass in progress from when it rose with the whole
+pass's maximum, and an AOS on another local day with its date. With TRAKBOX_SCREENSHOT_DIR=DIR it writes web-phone.png and web-phone-dark.png there
 (docs/)."""
+import datetime
+import json
 import os
 import sys
 import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import SOURCE, check, poll, run_test  # noqa: E402
+from _tbharness import BIN, SOURCE, check, poll, run_test, sh  # noqa: E402
 from _web import WebStation  # noqa: E402
 from web_browser import browser, console_errors, no_horizontal_scroll, text  # noqa: E402
 
@@ -55,8 +58,11 @@ def passband(d, w):
           f"the spot shown: {text(d, 'tune-spot-down')} / {text(d, 'tune-spot-up')}")
     d.execute_script("document.getElementById('tune-step').value = '5000'")
     click(d, "pb-up")
-    t1 = poll("the spot moved +5 kHz", lambda: (lambda t: t if t.get("downlink_spot_hz") == 435645000 else None)(
-        tuning(w)), 10)
+    # The spot is in the status at once; the dials once the next tick has sent them (a dial that has
+    # moved more than any second's Doppler: the 5 kHz is measured below).
+    t1 = poll("the spot moved +5 kHz and the dials with it", lambda: (lambda t: t if t.get("downlink_spot_hz") == 435645000
+              and abs(t["downlink_dial_hz"] - t0["downlink_dial_hz"]) > 1000
+              and abs(t["uplink_dial_hz"] - t0["uplink_dial_hz"]) > 1000 else None)(tuning(w)), 10)
     dd, du = t1["downlink_dial_hz"] - t0["downlink_dial_hz"], t1["uplink_dial_hz"] - t0["uplink_dial_hz"]
     check(t1["uplink_spot_hz"] == 145960000, f"uplink spot by the rule: {t1['uplink_spot_hz']}")
     check(abs(dd - 5000) < 500 and abs(du + 5000) < 200, f"dials {dd:+} Hz down, {du:+} Hz up")
@@ -94,6 +100,63 @@ def track_from_planner(d, w, items, passes):
     poll(f"{passes[k]['satellite']} followed", lambda: w.status()["tracking"]["followed"] == passes[k]["satellite"], 10)
 
 
+def tracking_list_times(w, url):
+    """The tracking list in the browser's local time (issue 47), at UTC-11 where the station's
+    10:57 UTC is 23:57 on May 20: RS-44, passing, shows when it rose (no date: that day) and the
+    whole pass's maximum as `trakbox passes` finds them from before it rose, "up now"; a pass that
+    rises after local midnight carries its date."""
+    code, out, err = sh(BIN, "passes", "--state", w.state, "--sat", "RS-44", "--start", "2026-05-21T10:00:00Z",
+                        "--hours", "2", "--json")
+    check(code == 0, f"passes: {code} {err}")
+    cli = next(p for p in json.loads(out) if p["aos_utc"] <= CLOCK <= p["los_utc"])
+    aos = datetime.datetime.fromisoformat(cli["aos_utc"].replace("Z", "+00:00"))
+    d = browser(390, 844)
+    try:
+        d.execute_cdp_cmd("Emulation.setTimezoneOverride", {"timezoneId": "Pacific/Pago_Pago"})
+        d.get(url)
+        poll("the page live", lambda: text(d, "link") == "live", 20)
+
+        def cells(name):
+            rows = d.find_elements("css selector", f'tr[data-name="{name}"]')
+            return [td.text for td in rows[0].find_elements("tag name", "td")] if rows else None
+        row = poll("RS-44's row", lambda: (lambda c: c if c and c[2] not in ("", "-") else None)(cells("RS-44")), 10)
+        shown = datetime.datetime.strptime(row[2], "%I:%M:%S %p" if row[2].endswith("M") else "%H:%M:%S")
+        local = aos - datetime.timedelta(hours=11)
+        off = abs((shown.hour * 3600 + shown.minute * 60 + shown.second)
+                  - (local.hour * 3600 + local.minute * 60 + local.second))
+        check(off <= 2, f"RS-44's AOS {row[2]} vs {cli['aos_utc']} (local {local:%H:%M:%S})")
+        check(row[3] == f"{cli['max_el_deg']:.0f}°", f"RS-44's whole-pass maximum {row[3]} vs {cli['max_el_deg']}")
+        check(row[4] == "up now", f"RS-44 marked in progress: {row[4]}")
+        check("up" in rows_class(d, "RS-44"), "RS-44's row has the in-progress class")
+        later = [e["name"] for e in w.status()["tracking_list"]
+                 if e["next_pass"] and not e["next_pass"]["in_progress"] and e["next_pass"]["aos"] >= "2026-05-21T11:00"]
+        check(later, "a pass after local midnight in the list")
+        for name in later:
+            c = cells(name)
+            check(c and ("May 21" in c[2] or "21 May" in c[2]), f"{name}'s AOS carries its date: {c}")
+        print(f"tracking list: RS-44 up since {row[2]} local (UTC {cli['aos_utc']}), max {row[3]}; "
+              f"{len(later)} later passes dated, e.g. {cells(later[0])[2]}")
+    finally:
+        d.quit()
+
+
+def rows_class(d, name):
+    return d.find_element("css selector", f'tr[data-name="{name}"]').get_attribute("class") or ""
+
+
+def sky_words_apart(d):
+    """No two words of the sky plot (compass letters, AOS/TCA/LOS) overlap on the screen."""
+    bad = d.execute_script("""
+      const t = [...document.querySelectorAll('#sky text')].map(e => [e.textContent, e.getBoundingClientRect()])
+        .filter(([, r]) => r.width > 0);
+      const out = [];
+      t.forEach(([a, r], i) => t.slice(i + 1).forEach(([b, s]) => {
+        if (r.left < s.right && s.left < r.right && r.top < s.bottom && s.top < r.bottom) out.push(a + ' / ' + b);
+      }));
+      return out;""")
+    check(not bad, f"sky plot words overlap: {bad}")
+
+
 def _alert(d):
     try:
         return d.switch_to.alert
@@ -113,7 +176,10 @@ def phone(w, url, dark, shots):
         small = small_targets(d)
         check(not small, f"targets under 44 px: {small}")
         if not dark:
+            # RS-44 is followed after passband(): its pass from the real AOS by the compass N.
             passband(d, w)
+            poll("the sky's pass from its AOS", lambda: "AOS" in d.find_element("id", "sky").text, 10)
+            sky_words_apart(d)
             items, passes = planner(d, w)
             small = small_targets(d)
             check(not small, f"targets under 44 px with the planner and tuning shown: {small}")
@@ -168,6 +234,7 @@ def main():
     w = WebStation("--elements-url", "file://" + os.path.join(os.path.abspath(SOURCE), "data", "amateur.tle"), clock=CLOCK)
     try:
         url = f"http://127.0.0.1:{w.port}/"
+        tracking_list_times(w, url)
         phone(w, url, False, shots)
         phone(w, url, True, shots)
         desktop_night_and_stop(w, url)

@@ -63,18 +63,24 @@ function drawSky(sky) {
   });
   if (run.length > 1) lost.appendChild(el("polyline", { points: points(run) }));
   // AOS and LOS at the ends of the track drawn (a pass up when tracking began starts where it was);
-  // a label that would sit on another's moves down a line (20 px text in the 640 viewBox).
+  // a label that would sit on another's, or on a compass letter, moves a line towards the centre
+  // (20 px text in the 640 viewBox; "AOS 10:46:57" is about 150 wide). [left, right, baseline].
   const first = p.track[0], last = p.track[p.track.length - 1];
-  const placed = [];
+  const W = 150, LINE = 28;   // a line of 20 px text with its box (about 23 px) and a gap
+  const placed = [[C - 12, C + 12, C - R - 12], [C - 12, C + 12, C + R + 30],
+                  [C + R + 10, C + R + 34, C + 8], [C - R - 34, C - R - 10, C + 8]];
   for (const [name, t, az, e] of [["AOS", p.aos, first ? first[0] : p.aos_az_deg, first ? first[1] : 0],
                                   ["TCA", p.tca, p.tca_az_deg, p.max_el_deg],
                                   ["LOS", p.los, last ? last[0] : p.los_az_deg, last ? last[1] : 0]]) {
     const [x, y] = xy(az, e);
     marks.appendChild(el("circle", { cx: x, cy: y, r: 5 }));
     const lx = x + (x > C ? -10 : 10);
+    const left = x > C ? lx - W : lx, right = x > C ? lx : lx + W;
     let ly = y + (y > C ? 22 : -10);
-    for (let hit; (hit = placed.find(([px, py]) => Math.abs(px - lx) < 150 && Math.abs(py - ly) < 22));) ly = hit[1] + 22;
-    placed.push([lx, ly]);
+    const step = ly > C ? -LINE : LINE;
+    for (let k = 0, hit; k < 8 && (hit = placed.find(([a, b, py]) => a < right && left < b && Math.abs(py - ly) < LINE)); ++k)
+      ly = hit[2] + step;
+    placed.push([left, right, ly]);
     marks.appendChild(el("text", { x: lx, y: ly, "text-anchor": x > C ? "end" : "start" }, name + " " + hhmm(t)));
   }
 }
@@ -97,6 +103,16 @@ function countdown(iso, now) {
   return (h ? h + "h" : "") + String(m).padStart(h ? 2 : 1, "0") + "m" + String(r).padStart(2, "0") + "s";
 }
 
+// An AOS in the browser's local time; with its date when that is not the station clock's day
+// (local too): "19:12:28", "Thu 22 May 03:04:05".
+function aosText(iso, now) {
+  if (!iso) return "-";
+  const d = new Date(iso), n = now ? new Date(now) : null;
+  const t = d.toLocaleTimeString([], { hour: "2-digit", minute: "2-digit", second: "2-digit" });
+  const today = n && d.getFullYear() === n.getFullYear() && d.getMonth() === n.getMonth() && d.getDate() === n.getDate();
+  return today ? t : d.toLocaleDateString([], { weekday: "short", day: "numeric", month: "short" }) + " " + t;
+}
+
 // The rows are updated in place (a row rebuilt every second would swallow a tap made across a tick).
 function drawList(st) {
   const body = $("list").tBodies[0];
@@ -113,11 +129,13 @@ function drawList(st) {
     }
     tr.className = st.tracking && st.tracking.followed === e.name ? "tracked" : "";
     // No pass in the day searched (a satellite that never comes up here: "none", in "> 24 h") and one
-    // that never sets (geostationary: "always up") are said, not shown as a blank.
+    // that never sets (geostationary: "always up") are said, not shown as a blank. A pass in progress
+    // shows when it rose and the whole pass's maximum (the status gives the whole pass), "up now".
     const np = e.next_pass;
     const when = !np ? ["none", "", "> 24 h"]
                : np.always_up ? ["always up", fixed(np.max_el_deg, 0) + "°", "up"]
-               : [hhmm(np.aos), fixed(np.max_el_deg, 0) + "°", np.in_progress ? "up" : countdown(np.aos, st.time)];
+               : [aosText(np.aos, st.time), fixed(np.max_el_deg, 0) + "°", np.in_progress ? "up now" : countdown(np.aos, st.time)];
+    if (np && np.in_progress && !np.always_up) tr.classList.add("up");
     const cells = [e.number, e.name, ...when, fixed(e.element_age_days, 1) + " d"];
     cells.forEach((c, i) => {
       const td = tr.cells[i];

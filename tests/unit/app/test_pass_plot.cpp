@@ -142,7 +142,11 @@ TEST_CASE("pass plot: the SVG's words are <text> (selectable), with the station,
   std::filesystem::remove(path);
   CHECK(svg.find("glyph") == std::string::npos);  // no outlines of letters
   CHECK(svg.find(">ISS &lt;A&amp;B&gt;  2026-05-21 UTC  max el ") != std::string::npos);
-  CHECK(svg.find(">station 27.3910 N 128.6570 E 50 m   elements age 0.4 days at AOS</text>") != std::string::npos);
+  // Two lines (on one they ran under the compass N).
+  CHECK(svg.find(" y=\"38.00\" font-size=\"11.0\"") != std::string::npos);
+  CHECK(svg.find(">station 27.3910 N 128.6570 E 50 m</text>") != std::string::npos);
+  CHECK(svg.find(" y=\"52.00\" font-size=\"11.0\"") != std::string::npos);
+  CHECK(svg.find(">elements age 0.4 days at AOS</text>") != std::string::npos);
   for (const char* word : {">N</text>", ">E</text>", ">S</text>", ">W</text>", ">30</text>", ">330</text>", ">AOS "})
     CHECK_MESSAGE(svg.find(word) != std::string::npos, word);
   // A minute label every other minute along the track: the first even minute after AOS.
@@ -202,4 +206,9 @@ TEST_CASE("plot labels: a label that would cover another moves just below it, as
   CHECK(c.y == 228);
   // Beside them (no horizontal overlap): stays.
   CHECK(place_label(placed, {300, 206, 50, 14}).y == 206);
+  // Side by side closer than kLabelGap (3 px) touches: "TCA 10:49:50" and a minute label 1 px
+  // after it read as one.
+  CHECK(tb::app::labels_touch({100, 200, 80, 14}, {181, 200, 30, 14}));
+  CHECK_FALSE(tb::app::labels_touch({100, 200, 80, 14}, {183, 200, 30, 14}));
+  CHECK_FALSE(tb::app::labels_touch({100, 200, 80, 14}, {100, 214, 30, 14}));   // the line below
 }

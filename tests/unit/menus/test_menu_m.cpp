@@ -325,12 +325,33 @@ TEST_CASE("The multi table row") {
   n.obs.look = {133.2, -1.52, 3012.4, 0.0};
   n.in_range = true;
   CHECK(menus::format_multi_row(n, '!') == "  2.!AO-27       133.20   -1.52   3012.4  AOS  AOS now");
+  {
+    // Its whole pass in progress: when it rose and the whole pass's maximum, within 80 columns.
+    tracker::SatNow up = n;
+    orbit::Pass whole;
+    whole.aos = from_civil(2026, 5, 21, 13, 31, 2);
+    whole.los = from_civil(2026, 5, 21, 13, 45, 40);
+    whole.max_el_deg = 45.24;
+    up.pass = whole;
+    const std::string row = menus::format_multi_row(up, '!');
+    CHECK(row == "  2.!AO-27       133.20   -1.52   3012.4  AOS  AOS now (13:31:02, max 45.2)");
+    CHECK(row.size() < 80);
+    up.pass->up_at_start = true;   // the rest of it from a search inside it: no AOS to tell
+    CHECK(menus::format_multi_row(up, '!') == "  2.!AO-27       133.20   -1.52   3012.4  AOS  AOS now");
+  }
   n.in_range = false;
   n.obs.look.el_deg = -20.0;
   orbit::Pass p;
   p.aos = from_civil(2026, 5, 21, 15, 2, 7);
   n.pass = p;
   CHECK(menus::format_multi_row(n, ' ') == "  2. AO-27       133.20  -20.00   3012.4       15:02:07");
+  // An AOS on another UTC day than the row's time carries its date (issue 47).
+  n.pass->aos = from_civil(2026, 5, 22, 0, 4, 5);
+  CHECK(menus::format_multi_row(n, ' ') == "  2. AO-27       133.20  -20.00   3012.4       2026/05/22 00:04:05");
+  CHECK(menus::aos_text(from_civil(2026, 5, 21, 23, 59, 59), from_civil(2026, 5, 21, 0, 0, 0)) == "23:59:59");
+  CHECK(menus::aos_text(from_civil(2026, 6, 1, 0, 0, 0), from_civil(2026, 5, 31, 23, 59, 59)) == "2026/06/01 00:00:00");
+  CHECK(menus::format_multi_row(n, ' ').size() <= 79);
+  n.pass->aos = p.aos;
   n.pass.reset();
   CHECK(menus::format_multi_row(n, '&') == "  2.&AO-27       133.20  -20.00   3012.4       none in 24h");
   // The headers line up with the row's columns.

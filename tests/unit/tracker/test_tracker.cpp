@@ -174,6 +174,30 @@ TEST_CASE("The clock set back (menu 5): the pass shown is the one then, not the 
   CHECK(std::abs(orbit::minutes_between(t.followed()->pass->aos, first.aos)) * 60.0 < 1.0);
 }
 
+TEST_CASE("pass_at: a pass in progress whole, from its real AOS with the whole pass's maximum (issue 47)") {
+  const store::Model m = shipped(station::RotorStart::south, 27.391, 128.657, 50.0);
+  const orbit::Sgp4 sgp4(m.db.satellites[static_cast<std::size_t>(*m.db.find("ISS"))].elements);
+  const auto start = orbit::from_civil(2026, 5, 21, 0, 0, 0);
+  orbit::PassOptions po;
+  po.precision_s = 1.0;
+  std::optional<orbit::Pass> first;
+  for (const auto& p : orbit::find_passes(sgp4, m.station.observer(), start, orbit::add_minutes(start, 2 * 1440.0), po))
+    if (!first && p.max_el_deg > 20.0) first = p;
+  REQUIRE(first);
+  // Tracking begins a minute after culmination: the tracker's pass begins then, its maximum what is left.
+  IssAlone late(orbit::add_minutes(first->tca, 1.0));
+  late.t.tick();
+  REQUIRE(late.t.followed()->pass);
+  CHECK(late.t.followed()->pass->up_at_start);
+  CHECK(late.t.followed()->pass->max_el_deg < first->max_el_deg - 0.5);
+  const auto whole = late.t.pass_at(*late.iss, late.clock.now());
+  REQUIRE(whole);
+  CHECK_FALSE(whole->up_at_start);
+  CHECK(std::abs(orbit::minutes_between(whole->aos, first->aos)) * 60.0 < 1.0);
+  CHECK(std::abs(orbit::minutes_between(whole->los, first->los)) * 60.0 < 1.0);
+  CHECK(whole->max_el_deg == doctest::Approx(first->max_el_deg).epsilon(0.001));
+}
+
 namespace {
 // An ISS pass whose track crosses north, seen from Tucson.
 orbit::Pass north_crossing_pass(const store::Model& m, int iss) {

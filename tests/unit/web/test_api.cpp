@@ -152,8 +152,8 @@ TEST_CASE("web: passes of a satellite, checked against the pass search; bad hour
   const auto i = w.model.db.find("ISS");
   orbit::PassOptions rising;   // only passes that rise: a maximum of -0.4 deg is none to plan for
   rising.min_max_elevation_deg = 1e-9;
-  const auto found = orbit::find_passes(*w.tracker.propagator(*i), w.model.station.observer(), w.tracker.last_tick_time(),
-                                        orbit::add_minutes(w.tracker.last_tick_time(), 720.0), rising);
+  const auto found = orbit::find_passes(*w.tracker.propagator(*i), w.model.station.observer(), w.station->now(),
+                                        orbit::add_minutes(w.station->now(), 720.0), rising);
   REQUIRE(j["passes"].size() == found.size());
   REQUIRE_FALSE(found.empty());
   CHECK(j["passes"][0]["aos"] == orbit::format_iso8601(found[0].aos));
@@ -162,6 +162,37 @@ TEST_CASE("web: passes of a satellite, checked against the pass search; bad hour
   CHECK(Web::error_of(w.get("/api/v1/passes?sat=NOPE")) == "unknown satellite 'NOPE'");
   CHECK(w.get("/api/v1/passes?sat=%zz").status == 400);
   CHECK(w.get("/api/v1/satellites").status == 200);
+}
+
+TEST_CASE("web: a pass in progress is planned whole, from its real AOS with its whole maximum (issue 47)") {
+  Web w;
+  w.run(0.2);
+  const auto i = w.model.db.find("ISS");
+  REQUIRE(i);
+  const orbit::UtcTime t0 = w.station->now();
+  orbit::PassOptions rising;
+  rising.min_max_elevation_deg = 1e-9;
+  const auto found = orbit::find_passes(*w.tracker.propagator(*i), w.model.station.observer(), t0,
+                                        orbit::add_minutes(t0, 720.0), rising);
+  REQUIRE_FALSE(found.empty());
+  const orbit::Pass first = found.front();
+  REQUIRE_FALSE(first.up_at_start);
+  // A minute after its culmination: planned from its AOS, its maximum the whole pass's.
+  w.now = orbit::add_minutes(first.tca, 1.0);
+  w.run(0.2);
+  const json j = json::parse(w.get("/api/v1/passes?sat=ISS&hours=2").body);
+  REQUIRE_FALSE(j["passes"].empty());
+  const json& p = j["passes"][0];
+  CHECK(p["in_progress"] == true);
+  CHECK(p["aos"] == orbit::format_iso8601(first.aos));
+  CHECK(p["los"] == orbit::format_iso8601(first.los));
+  CHECK(p["max_el_deg"].get<double>() == doctest::Approx(first.max_el_deg).epsilon(1e-6));
+  // Above its remaining maximum but below the whole pass's: still planned.
+  char q[80];
+  std::snprintf(q, sizeof q, "/api/v1/passes?sat=ISS&hours=2&min_el=%.1f", first.max_el_deg - 0.05);
+  const json high = json::parse(w.get(q).body);
+  REQUIRE_FALSE(high["passes"].empty());
+  CHECK(high["passes"][0]["aos"] == orbit::format_iso8601(first.aos));
 }
 
 TEST_CASE("web: with a secret, changes need the bearer or a session with the page's Origin") {

@@ -38,8 +38,13 @@ struct Planner : testing::StationFixture {
     o.min_max_elevation_deg = min_el;
     const auto i = model.db.find(name);
     REQUIRE(i.has_value());
-    const orbit::UtcTime from = tracker.last_tick_time();
-    return orbit::find_passes(*tracker.propagator(*i), model.station.observer(), from, orbit::add_minutes(from, hours * 60), o);
+    // The passes up at some time of [from, from + hours), each whole (a low orbit's pass is shorter
+    // than the half hour searched before): the planner's passes (issue 47).
+    const orbit::UtcTime from = station->now();
+    auto found = orbit::find_passes(*tracker.propagator(*i), model.station.observer(), orbit::add_minutes(from, -30.0),
+                                    orbit::add_minutes(from, hours * 60), o);
+    std::erase_if(found, [&](const orbit::Pass& p) { return p.los < from; });
+    return found;
   }
   web::Access access;
   std::unique_ptr<web::Api> api;
