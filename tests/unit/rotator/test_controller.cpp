@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "fixture.h"  // Rig
+#include "rotator/calibration.h"
 #include "rotator/controller.h"
 #include "rotator/simulated.h"
 
