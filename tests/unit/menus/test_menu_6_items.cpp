@@ -12,6 +12,7 @@
 #include "menus/6_configuration.h"
 #include "rotator/adc_model.h"
 #include "store/station_file.h"
+#include "store/station_file_model.h"
 #include "support/manual_samples.h"
 
 using namespace tb;
