@@ -19,13 +19,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "menus/term/terminal.h"
-
-namespace boost::asio {
-class io_context;
-}
-namespace spdlog {
-class logger;
-}
+#include "util/loop_fwd.h"
 
 namespace tb::app {
 
