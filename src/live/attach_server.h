@@ -23,8 +23,6 @@
 
 namespace tb::app {
 
-class MuxTerminal;
-
 // The keys of an attached terminal.
 inline constexpr int kDetachKey = 0x1d;    // Ctrl-] (Ctrl-C detaches too)
 inline constexpr int kTakeOverKey = 0x14;  // Ctrl-T
@@ -79,11 +77,9 @@ class AttachServer {
   const std::string& path() const;
 
  private:
-  friend class MuxTerminal;
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
-
 
 // Input of an attached client: bytes, and 0xFF 'W' ROWS COLS (two bytes each, big-endian) for a
 // window size; 0xFF 0xFF is a 0xFF byte.
