@@ -14,6 +14,7 @@
 #include <cctype>
 
 #include "menus/6_configuration.h"
+#include "rotator/calibration.h"
 #include "rotator/controller.h"
 #include "store/model.h"
 #include "tracker/operations.h"

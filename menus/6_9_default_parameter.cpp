@@ -6,6 +6,7 @@
 #include "store/model.h"
 #include "rotator/split_travel.h"
 #include "store/station_file.h"
+#include "store/station_file_model.h"
 #include "tracker/station_loop.h"
 
 namespace tb::menus {

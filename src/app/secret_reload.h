@@ -7,9 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace spdlog {
-class logger;
-}
+#include "util/loop_fwd.h"
 
 namespace tb::app {
 

@@ -19,13 +19,10 @@
 #include "netctl/server.h"
 #include "satrak/server.h"
 #include "satrak/unit.h"
+#include "util/loop_fwd.h"
 #include "web/access.h"
 #include "web/api.h"
 #include "web/server.h"
-
-namespace spdlog {
-class logger;
-}
 
 namespace tb::app {
 

@@ -50,12 +50,7 @@ void skip_blanks(std::string_view& s) {
 
 std::string num(double v) { return text::exact_number(v); }
 
-Reply error(std::string text) {
-  Reply r;
-  r.ok = false;
-  r.lines.push_back("ERROR " + std::move(text));
-  return r;
-}
+constexpr auto error = &Reply::error;  // "ERROR ..."
 
 }  // namespace
 

@@ -23,6 +23,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "radio/config.h"
@@ -41,6 +42,9 @@ struct Reply {
   std::vector<std::string> lines;  // without line ends
   bool ok = true;                  // false: refused, lines holds the one "ERROR ..." line
   bool quit = false;               // Q: leave host mode
+
+  // A refusal: the one line "ERROR " + text.
+  static Reply error(std::string text) { return Reply{{"ERROR " + std::move(text)}, false}; }
 };
 
 // The pieces of a command line, parsed (for the interpreter and for tests).

@@ -20,12 +20,7 @@ namespace {
 
 std::string signed_text(long long v) { return (v >= 0 ? "+" : "") + std::to_string(v); }
 
-Reply error(std::string text) {
-  Reply r;
-  r.ok = false;
-  r.lines.push_back("ERROR " + std::move(text));
-  return r;
-}
+constexpr auto error = &Reply::error;  // "ERROR ..."
 
 }  // namespace
 

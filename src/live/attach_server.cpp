@@ -1,8 +1,6 @@
 #include "live/attach_server.h"
 
-#include <fcntl.h>
 #include <poll.h>
-#include <pwd.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -28,9 +26,9 @@
 #include <spdlog/spdlog.h>
 
 #include "live/attach_internal.h"
+#include "live/attach_member.h"
 #include "live/station_socket.h"
 #include "menus/term/curses_terminal.h"
-#include "menus/term/line_terminal.h"
 #include "util/backoff.h"
 #include "util/safe_text.h"
 
@@ -45,121 +43,91 @@ constexpr std::size_t kTranscriptLimit = 16 * 1024;
 constexpr int kReplayLines = 30;
 constexpr int kMaxRows = 100, kMaxCols = 250;  // a screen's refresh stays far below the pipe's size
 
-// Plain lines into an outbox (the attached client's line mode): a LineTerminal's output rules.
-class LineSink final : public term::LineOutput {
- public:
-  LineSink(std::function<void(std::string_view)> out, bool crlf) : LineOutput(crlf), out_(std::move(out)) {}
-  void flush() override {}
-  bool closed() const override { return false; }
-
- protected:
-  int next_key(std::optional<term::Duration>) override { return term::kEndOfInput; }
-  void emit(std::string_view bytes) override { out_(bytes); }
-
- private:
-  std::function<void(std::string_view)> out_;
-};
-
-// Who is at the other end: the user of the peer's credentials and the terminal it says it has.
-std::string peer_name(int fd, const std::string& tty) {
-  ucred cred{};
-  socklen_t len = sizeof cred;
-  std::string user = "?";
-  if (::getsockopt(fd, SOL_SOCKET, SO_PEERCRED, &cred, &len) == 0) {
-    std::array<char, 4096> buf{};
-    passwd pw{};
-    passwd* found = nullptr;
-    if (::getpwuid_r(cred.uid, &pw, buf.data(), buf.size(), &found) == 0 && found) user = found->pw_name;
-    else user = "uid " + std::to_string(cred.uid);
-  }
-  std::string t = tty;
-  if (t.rfind("/dev/", 0) == 0) t.erase(0, 5);
-  return t.empty() ? user : user + " " + t;
-}
-
-// A curses screen on a pipe this side drains, kept for the next client of its terminal type
-// (curses_terminal.h: screens are never deleted).
-struct ScreenSlot {
-  std::string type;
-  ::screen* screen = nullptr;
-  FILE* out = nullptr;
-  FILE* in = nullptr;
-  int pipe_rd = -1;
-};
-
-struct Member {
-  int id = 0;
-  std::string who;
-  std::shared_ptr<Outbox> out;
-  std::unique_ptr<term::Terminal> screen;
-  term::CursesTerminal* curses = nullptr;  // screen, when full screen
-  ScreenSlot slot;                         // its curses screen and the pipe of its output
-  std::vector<ScreenSlot>* pool = nullptr; // where the slot goes back
-  FrameDecoder frames;
-  std::deque<int> keys;
-  std::array<char, 4096> rbuf{};
-  bool gone = false;
-  bool permanent = false;  // the serial port of --tty: no detaching, and a lost port is only logged
-  bool input_ended = false;  // a script's input ended: it detaches once the menus took its keys
-  std::string farewell = "\r\n[detached from trakbox: the station goes on]\r\n";  // the session's last words
-  std::string told;  // the keyboard note last given to a line client
-  std::chrono::steady_clock::time_point told_at{};
-
-  // What the curses screen wrote, to the client.
-  void drain() {
-    if (slot.pipe_rd < 0) return;
-    std::fflush(slot.out);
-    std::array<char, 16384> buf{};
-    for (;;) {
-      const ssize_t n = ::read(slot.pipe_rd, buf.data(), buf.size());
-      if (n <= 0) break;
-      if (!out->send(std::string_view(buf.data(), static_cast<std::size_t>(n)))) break;
-    }
-  }
-  ~Member() {
-    screen.reset();  // endwin: the client's terminal is given back as it was
-    drain();
-    if (slot.screen && pool) {
-      // Whatever the client did not take is not for the next one.
-      std::array<char, 16384> buf{};
-      while (::read(slot.pipe_rd, buf.data(), buf.size()) > 0) {
-      }
-      pool->push_back(slot);
-    }
-    if (!out->closed) {
-      out->send(farewell);
-      out->finish();
-    }
-  }
-};
-
 }  // namespace
 
-// The menus' terminal (see the header).
-class MuxTerminal final : public term::Terminal {
- public:
-  explicit MuxTerminal(AttachServer::Impl& s) : s_(s) {}
-  void write(std::string_view text) override;
-  void bell() override;
-  void clear() override;
-  void flush() override;
-  void live(const std::vector<std::string>& lines) override;
-  void end_live() override;
-  void status(std::string_view text) override;
-  void graphics(const term::Graphics& g) override;
-  bool full_screen() const override;
-  int columns() const override;
-  int rows() const override;
-  bool closed() const override { return false; }
-
- protected:
-  int next_key(std::optional<term::Duration> timeout) override;
-
- private:
-  AttachServer::Impl& s_;
-};
-
 struct AttachServer::Impl {
+  // The menus' terminal (see the header): what they write to every attached client's screen (and
+  // kept for a client that comes later), their keys from the client that has the keyboard.
+  class Mux final : public term::Terminal {
+   public:
+    explicit Mux(Impl& s) : s_(s) {}
+    void write(std::string_view text) override {
+      s_.transcript.append(text);
+      if (s_.transcript.size() > kTranscriptLimit) s_.transcript.erase(0, s_.transcript.size() - kTranscriptLimit / 2);
+      s_.each([&](term::Terminal& t, Member&) { t.write(text); });
+    }
+    void bell() override {
+      s_.each([](term::Terminal& t, Member&) { t.bell(); });
+    }
+    void clear() override {
+      s_.transcript.clear();
+      s_.live_block.clear();
+      s_.each([](term::Terminal& t, Member&) { t.clear(); });
+    }
+    void flush() override {
+      s_.each([](term::Terminal& t, Member&) { t.flush(); });
+    }
+    void live(const std::vector<std::string>& lines) override {
+      s_.live_block = lines;
+      s_.each([&](term::Terminal& t, Member&) { t.live(lines); });
+    }
+    void end_live() override {
+      // The block stays on the screen as text above what follows.
+      for (const auto& l : s_.live_block) s_.transcript.append(l).append("\n");
+      s_.live_block.clear();
+      s_.each([](term::Terminal& t, Member&) { t.end_live(); });
+    }
+    // The curses screens' status line, behind each client's note of who has the keyboard.
+    void status(std::string_view text) override {
+      s_.status_text.assign(text);
+      s_.each([&](term::Terminal& t, Member& m) {
+        if (m.curses) t.status(s_.keyboard_note(m) + s_.status_text);
+      });
+    }
+    void graphics(const term::Graphics& g) override {
+      s_.each([&](term::Terminal& t, Member&) { t.graphics(g); });
+    }
+    // The shape of the screen of the client with the keyboard (a line client's, 80 x 24 for none).
+    bool full_screen() const override {
+      Member* h = s_.holder();
+      return h && h->curses;
+    }
+    int columns() const override {
+      Member* h = s_.holder();
+      return h ? h->screen->columns() : 80;
+    }
+    int rows() const override {
+      Member* h = s_.holder();
+      return h ? h->screen->rows() : 24;
+    }
+    bool closed() const override { return false; }
+
+   protected:
+    int next_key(std::optional<term::Duration> timeout) override {
+      flush();
+      const auto deadline = timeout ? std::optional(std::chrono::steady_clock::now() + *timeout) : std::nullopt;
+      for (;;) {
+        if (Member* h = s_.holder(); h && !h->keys.empty()) {
+          const int k = h->keys.front();
+          h->keys.pop_front();
+          return k;
+        } else if (h && h->input_ended) {
+          s_.gone(*h, "");  // every key it sent was taken, and the menus answered
+        }
+        std::optional<term::Duration> left;  // the wait returns after any work: a client's keys come so
+        if (deadline) {
+          const auto now = std::chrono::steady_clock::now();
+          if (now >= *deadline) return term::kTimeout;
+          left = *deadline - now;
+        }
+        s_.wait(-1, left);
+      }
+    }
+
+   private:
+    Impl& s_;
+  };
+
   Impl(asio::io_context& io, term::WaitReadable wait, AttachServerOptions o, spdlog::logger& log)
       : io(io), wait(std::move(wait)), opt(std::move(o)), log(log), acceptor(io), retry(io), mux(*this) {}
 
@@ -172,9 +140,8 @@ struct AttachServer::Impl {
   util::AcceptBackoff backoff;
   std::size_t greeting = 0;      // connections that have not said what they want yet
   bool refusing = false;         // a cap refuses newcomers (logged once a run)
-  MuxTerminal mux;
-  std::vector<ScreenSlot> pool;  // before the members: they give their screens back to it
-  std::size_t screen_types = 0;  // curses screens made (never deleted: curses_terminal.h)
+  Mux mux;
+  ScreenPool pool;               // before the members: they give their screens back to it
   SocketId made{};               // the socket file this server made
   std::vector<std::unique_ptr<Member>> members;
   std::vector<std::shared_ptr<Outbox>> subscribers;
@@ -402,11 +369,8 @@ struct AttachServer::Impl {
     const std::string& term_type = hello->term;
     const int rows = static_cast<int>(std::clamp<long long>(hello->rows, 5, kMaxRows));
     const int cols = static_cast<int>(std::clamp<long long>(hello->cols, 20, kMaxCols));
-    if (hello->full_screen && !term_type.empty()) open_screen(*m, term_type, rows, cols);
-    if (!m->screen) {
-      Member* raw = m.get();
-      m->screen = std::make_unique<LineSink>([raw](std::string_view s) { raw->out->send(s); }, hello->crlf);
-    }
+    if (!hello->full_screen || term_type.empty() || !m->open_screen(pool, term_type, rows, cols, log))
+      m->open_lines(hello->crlf);
     log.info("attach: {} attached ({})", m->who, m->curses ? "full screen " + term_type : std::string("lines"));
     Member& ref = *m;
     members.push_back(std::move(m));
@@ -428,52 +392,12 @@ struct AttachServer::Impl {
     m->out = out;
     m->who = who;
     m->permanent = true;
-    Member* raw = m.get();
-    m->screen = std::make_unique<LineSink>([raw](std::string_view s) { raw->out->send(s); }, true);
+    m->open_lines(true);
     log.info("attach: the menus on {} too", who);
     Member& ref = *m;
     members.push_back(std::move(m));
     replay(ref);
     read(ref);
-  }
-
-  // A curses screen of the client's type (one kept from an earlier client, else a new one on a
-  // pipe this side drains into the client's outbox).
-  void open_screen(Member& m, const std::string& term_type, int rows, int cols) {
-    ScreenSlot slot;
-    if (const auto kept = std::find_if(pool.begin(), pool.end(), [&](const ScreenSlot& s) { return s.type == term_type; });
-        kept != pool.end()) {
-      slot = *kept;
-      pool.erase(kept);
-    } else {
-      if (screen_types >= kMaxScreenTypes) {
-        log.info("attach: {} terminal types have screens already: '{}' gets plain lines", kMaxScreenTypes, term_type);
-        return;
-      }
-      int p[2];
-      if (::pipe2(p, O_CLOEXEC) != 0) return;
-      ::fcntl(p[1], F_SETPIPE_SZ, 1 << 20);
-      ::fcntl(p[0], F_SETFL, O_NONBLOCK);
-      slot.type = term_type;
-      slot.out = ::fdopen(p[1], "w");
-      slot.in = std::fopen("/dev/null", "r");
-      slot.pipe_rd = p[0];
-      slot.screen = (slot.out && slot.in) ? term::new_screen(term_type, slot.out, slot.in) : nullptr;
-      if (!slot.screen) {
-        if (slot.out) std::fclose(slot.out);
-        else ::close(p[1]);
-        if (slot.in) std::fclose(slot.in);
-        ::close(p[0]);
-        log.info("attach: terminal type '{}' unknown here: plain lines", term_type);
-        return;
-      }
-      ++screen_types;
-    }
-    m.slot = slot;
-    m.pool = &pool;
-    auto c = std::make_unique<term::CursesTerminal>(slot.screen, rows, cols);
-    m.curses = c.get();
-    m.screen = std::move(c);
   }
 
   void read(Member& m) {
@@ -540,74 +464,6 @@ struct AttachServer::Impl {
     }
   }
 };
-
-void MuxTerminal::write(std::string_view text) {
-  s_.transcript.append(text);
-  if (s_.transcript.size() > kTranscriptLimit) s_.transcript.erase(0, s_.transcript.size() - kTranscriptLimit / 2);
-  s_.each([&](term::Terminal& t, Member&) { t.write(text); });
-}
-void MuxTerminal::bell() {
-  s_.each([](term::Terminal& t, Member&) { t.bell(); });
-}
-void MuxTerminal::clear() {
-  s_.transcript.clear();
-  s_.live_block.clear();
-  s_.each([](term::Terminal& t, Member&) { t.clear(); });
-}
-void MuxTerminal::flush() {
-  s_.each([](term::Terminal& t, Member&) { t.flush(); });
-}
-void MuxTerminal::live(const std::vector<std::string>& lines) {
-  s_.live_block = lines;
-  s_.each([&](term::Terminal& t, Member&) { t.live(lines); });
-}
-void MuxTerminal::end_live() {
-  // The block stays on the screen as text above what follows.
-  for (const auto& l : s_.live_block) s_.transcript.append(l).append("\n");
-  s_.live_block.clear();
-  s_.each([](term::Terminal& t, Member&) { t.end_live(); });
-}
-void MuxTerminal::status(std::string_view text) {
-  s_.status_text.assign(text);
-  s_.each([&](term::Terminal& t, Member& m) {
-    if (m.curses) t.status(s_.keyboard_note(m) + s_.status_text);
-  });
-}
-void MuxTerminal::graphics(const term::Graphics& g) {
-  s_.each([&](term::Terminal& t, Member&) { t.graphics(g); });
-}
-bool MuxTerminal::full_screen() const {
-  Member* h = s_.holder();
-  return h && h->curses;
-}
-int MuxTerminal::columns() const {
-  Member* h = s_.holder();
-  return h ? h->screen->columns() : 80;
-}
-int MuxTerminal::rows() const {
-  Member* h = s_.holder();
-  return h ? h->screen->rows() : 24;
-}
-int MuxTerminal::next_key(std::optional<term::Duration> timeout) {
-  flush();
-  const auto deadline = timeout ? std::optional(std::chrono::steady_clock::now() + *timeout) : std::nullopt;
-  for (;;) {
-    if (Member* h = s_.holder(); h && !h->keys.empty()) {
-      const int k = h->keys.front();
-      h->keys.pop_front();
-      return k;
-    } else if (h && h->input_ended) {
-      s_.gone(*h, "");  // every key it sent was taken, and the menus answered
-    }
-    std::optional<term::Duration> left;  // the wait returns after any work: a client's keys come so
-    if (deadline) {
-      const auto now = std::chrono::steady_clock::now();
-      if (now >= *deadline) return term::kTimeout;
-      left = *deadline - now;
-    }
-    s_.wait(-1, left);
-  }
-}
 
 AttachServer::AttachServer(asio::io_context& io, term::WaitReadable wait, AttachServerOptions options,
                            spdlog::logger& log)

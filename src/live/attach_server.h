@@ -19,17 +19,9 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "menus/term/terminal.h"
-
-namespace boost::asio {
-class io_context;
-}
-namespace spdlog {
-class logger;
-}
+#include "util/loop_fwd.h"
 
 namespace tb::app {
-
-class MuxTerminal;
 
 // The keys of an attached terminal.
 inline constexpr int kDetachKey = 0x1d;    // Ctrl-] (Ctrl-C detaches too)
@@ -85,11 +77,9 @@ class AttachServer {
   const std::string& path() const;
 
  private:
-  friend class MuxTerminal;
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
-
 
 // Input of an attached client: bytes, and 0xFF 'W' ROWS COLS (two bytes each, big-endian) for a
 // window size; 0xFF 0xFF is a 0xFF byte.

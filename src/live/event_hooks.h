@@ -13,12 +13,8 @@
 #include <string>
 #include <vector>
 
-namespace boost::asio {
-class io_context;
-}
-namespace spdlog {
-class logger;
-}
+#include "util/loop_fwd.h"
+
 namespace tb::tracker {
 struct Event;
 }

@@ -10,12 +10,8 @@
 #include <optional>
 #include <string>
 
-namespace boost::asio {
-class io_context;
-}
-namespace spdlog {
-class logger;
-}
+#include "util/loop_fwd.h"
+
 namespace tb::tracker {
 class StationLoop;
 }
@@ -29,7 +25,6 @@ class SatnogsPoll {
   ~SatnogsPoll();
   SatnogsPoll(const SatnogsPoll&) = delete;
   SatnogsPoll& operator=(const SatnogsPoll&) = delete;
-
 
  private:
   struct Impl;

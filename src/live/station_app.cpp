@@ -27,6 +27,7 @@
 #include "store/database.h"
 #include "store/refresh.h"
 #include "store/station_file.h"
+#include "store/station_file_model.h"
 #include "tracker/elements_refresh.h"
 #include "tracker/events.h"
 #include "tracker/station_loop.h"

@@ -14,13 +14,8 @@
 #include "menus/term/terminal.h"
 #include "store/model.h"
 #include "store/state_file.h"
+#include "util/loop_fwd.h"
 
-namespace boost::asio {
-class io_context;
-}
-namespace spdlog {
-class logger;
-}
 namespace tb::gps {
 class Monitor;
 }

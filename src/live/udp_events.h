@@ -11,13 +11,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "util/host_port.h"
-
-namespace boost::asio {
-class io_context;
-}
-namespace spdlog {
-class logger;
-}
+#include "util/loop_fwd.h"
 
 namespace tb::app {
 

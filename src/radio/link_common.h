@@ -1,6 +1,6 @@
 // What the serial CAT links of every family share (internal to src/radio): the write slack, the
 // tone's text, the refusal of a tone a radio cannot set, a rig's serial settings at a configured
-// speed.
+// speed, and the names they use (each link's file says `using namespace link;`).
 #pragma once
 #include <chrono>
 #include <string>
@@ -9,6 +9,9 @@
 #include "radio/worker.h"
 
 namespace tb::radio::link {
+
+using Action = LinkError::Action;
+using Clock = std::chrono::steady_clock;
 
 // A write may take its time on the wire plus this.
 inline constexpr std::chrono::milliseconds kWriteSlack{1000};

@@ -210,25 +210,4 @@ class Controller {
   orbit::UtcTime sent_at_{};
 };
 
-// Menu 6-1: record the raw counts with the antenna fully CCW at the horizon, then fully CW and
-// straight up; the result is the new ADC span.
-class SpanCalibration {
- public:
-  void record_min(Counts raw) { min_ = raw; }
-  void record_max(Counts raw) { max_ = raw; }
-  bool complete() const { return min_ && max_; }
-  // The spans, or an error saying what is wrong (a point missing, the readings not rising).
-  struct Result {
-    std::optional<AxisSpan> az, el;
-    std::string error;
-    bool ok() const { return error.empty(); }
-  };
-  Result result() const;
-  // c with the measured spans, when result() is ok; c unchanged otherwise.
-  RotatorConfig apply(RotatorConfig c) const;
-
- private:
-  std::optional<Counts> min_, max_;
-};
-
 }  // namespace tb::rotator

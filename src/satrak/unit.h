@@ -36,10 +36,7 @@
 #include "station/clock.h"
 #include "store/model.h"
 #include "tracker/station_loop.h"
-
-namespace boost::asio {
-class io_context;
-}
+#include "util/loop_fwd.h"
 
 namespace tb::satrak {
 

@@ -13,6 +13,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "util/format.h"
 #include "util/json_limits.h"
 
 namespace tb::store {
@@ -35,11 +36,7 @@ std::uint32_t crc32(std::string_view bytes) {
 
 namespace {
 
-std::string hex32(std::uint32_t v) {
-  char buf[9];
-  std::snprintf(buf, sizeof buf, "%08x", v);
-  return buf;
-}
+std::string hex32(std::uint32_t v) { return text::printf_string("%08x", v); }
 
 }  // namespace
 

@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdio>
 #include <iterator>
-#include <tuple>
 
 #include "radio/freqmode.h"
 #include "rotator/adc_model.h"
@@ -59,24 +58,6 @@ const LineShape& shape_of(bool later, int number) {
 }
 
 constexpr int kBauds[] = {1200, 2400, 4800, 9600, 19200};
-
-// The later firmware's name of the configured rig (line 4).
-std::string rig_name(const radio::RadioConfig& rc) {
-  using radio::RigModel;
-  switch (rc.rig) {
-    case radio::Rig::icom: return "ICOM";
-    case radio::Rig::kenwood: return rc.rig_model == RigModel::kenwood_711 ? "KENWOOD711" : "KENWOOD";
-    case radio::Rig::yaesu:
-      switch (rc.rig_model) {
-        case RigModel::yaesu_847: return rc.ft736_wide_fm ? "YAESUw847" : "YAESU_847";
-        case RigModel::yaesu_736: return rc.ft736_wide_fm ? "YAESUw736" : "YAESU_736";
-        case RigModel::yaesu_other: return "YAESU_o";
-        default: return "YAESU";  // the wide-FM filter of a YAESU without a model stays in the state
-      }
-    case radio::Rig::none: break;
-  }
-  return "NONE";
-}
 
 using text::upper;
 std::optional<double> to_double(std::string_view s) { return text::parse_double(s); }
@@ -581,103 +562,6 @@ StationFileParse parse_station_file(std::string_view text) {
   r.problems = std::move(p.problems);
   if (r.problems.empty()) r.file = p.f;
   return r;
-}
-
-std::vector<std::string> apply_station_file(const StationFile& f, Model& m) {
-  // What the lines carry, line by line; the rest of each configuration keeps its value.
-  Model next = m;
-  station::StationConfig& st = next.station;
-  const station::StationConfig& fs = f.station;
-  std::tie(st.callsign, st.lat_deg, st.lon_deg, st.height_m, st.rotor_start) =
-      std::tie(fs.callsign, fs.lat_deg, fs.lon_deg, fs.height_m, fs.rotor_start);
-  if (f.com_baud_given) st.com_baud = fs.com_baud;
-  rotator::RotatorConfig& r = next.rotator;
-  const rotator::RotatorConfig& fr = f.rotator;
-  std::tie(r.az_span, r.el_span) = std::tie(fr.az_span, fr.el_span);
-  // Flip mode says what the elevation span means (0..180 rather than 0..90), so it goes with the
-  // span: a 1994 file's span is 0..90, whatever was set before.
-  r.el_flip_allowed = f.later_firmware && fr.el_flip_allowed;
-  std::tie(r.az_dead_band, r.el_dead_band, r.az_skew, r.el_skew) =
-      std::tie(fr.az_dead_band, fr.el_dead_band, fr.az_skew, fr.el_skew);
-  std::tie(r.parking_enabled, r.parking, r.limits_enabled, r.az_limit_min, r.az_limit_max, r.el_limit_min,
-           r.el_limit_max) = std::tie(fr.parking_enabled, fr.parking, fr.limits_enabled, fr.az_limit_min,
-                                      fr.az_limit_max, fr.el_limit_min, fr.el_limit_max);
-  radio::RadioConfig& rc = next.radio;
-  const radio::RadioConfig& frc = f.radio;
-  std::tie(rc.rig, rc.rig_model, rc.cat_policy, rc.icom_rx_address, rc.icom_tx_address) =
-      std::tie(frc.rig, frc.rig_model, frc.cat_policy, frc.icom_rx_address, frc.icom_tx_address);
-  if (f.wide_fm_given) rc.ft736_wide_fm = frc.ft736_wide_fm;
-  if (f.cat_baud_given) rc.cat_baud = frc.cat_baud;
-  if (f.later_firmware) {
-    r.stall_s = fr.stall_s;
-    rc.mic_click.park_pulse_width_digit = frc.mic_click.park_pulse_width_digit;
-    rc.mic_click.park_pulse_interval_digit = frc.mic_click.park_pulse_interval_digit;
-    rc.parking = frc.parking;
-    next.pass_events = f.pass_events;
-    next.rotator_error_detection = f.rotator_error_detection;
-  }
-  auto problems = rotator::validate(r);
-  if (problems.empty()) m = std::move(next);
-  return problems;
-}
-
-std::string write_station_file(const Model& m) {
-  const auto& st = m.station;
-  const auto& r = m.rotator;
-  const auto& rc = m.radio;
-  char buf[512];
-  std::string out;
-  std::snprintf(buf, sizeof buf, "1 %s %.3f %.3f %g %s\n", st.callsign.c_str(), st.lat_deg, st.lon_deg, st.height_m,
-                st.rotor_start == station::RotorStart::north ? "N" : "S");
-  out += buf;
-  std::snprintf(buf, sizeof buf, "2 %d %d %d %d\n", r.az_span.min, r.az_span.max, r.el_span.min, r.el_span.max);
-  out += buf;
-  std::snprintf(buf, sizeof buf, "3 %d %d %d %d\n", r.az_dead_band, r.el_dead_band, r.az_skew, r.el_skew);
-  out += buf;
-  std::snprintf(buf, sizeof buf, "4 %s %s %02X %02X\n", radio::to_string(rc.rig),
-                rc.cat_policy == radio::CatPolicy::full_orbit ? "F" : "A", rc.icom_rx_address, rc.icom_tx_address);
-  out += buf;
-  std::snprintf(buf, sizeof buf, "5 %d %g %g %d %g %g %g %g\n", r.parking_enabled ? 1 : 0, r.parking.az, r.parking.el,
-                r.limits_enabled ? 1 : 0, r.az_limit_min, r.az_limit_max, r.el_limit_min, r.el_limit_max);
-  out += buf;
-  return out;
-}
-
-std::string write_station_file_later(const Model& m) {
-  const auto& st = m.station;
-  const auto& r = m.rotator;
-  const auto& rc = m.radio;
-  char buf[512];
-  std::string out = "; STATION.DAT of the later TrakBox firmware, written by trakbox\n";
-  std::snprintf(buf, sizeof buf, "1 %s %.3f %.3f %g %s %d\n", st.callsign.c_str(), st.lat_deg, st.lon_deg,
-                st.height_m, st.rotor_start == station::RotorStart::north ? "N" : "S", st.com_baud);
-  out += buf;
-  std::snprintf(buf, sizeof buf, "2 %d %d %d %d%s\n", r.az_span.min, r.az_span.max, r.el_span.min, r.el_span.max,
-                r.el_flip_allowed ? " F" : "");
-  out += buf;
-  std::snprintf(buf, sizeof buf, "3 %d %d %d %d\n", r.az_dead_band, r.el_dead_band, r.az_skew, r.el_skew);
-  out += buf;
-  out += "4 " + rig_name(rc) + (rc.cat_policy == radio::CatPolicy::full_orbit ? " FULL" : " AOS");
-  const int baud = radio::effective_cat_baud(rc);
-  std::snprintf(buf, sizeof buf, " %02X %02X %d\n", rc.icom_rx_address, rc.icom_tx_address, baud > 0 ? baud : 9600);
-  out += buf;
-  std::string park = r.parking_enabled ? "1" : "0";
-  if (rc.mic_click.park_pulse_width_digit >= 0) {
-    park += std::to_string(rc.mic_click.park_pulse_width_digit);
-    if (rc.mic_click.park_pulse_interval_digit >= 0) park += std::to_string(rc.mic_click.park_pulse_interval_digit);
-  }
-  std::snprintf(buf, sizeof buf, "5 %s %g %g %g %g %g\n", park.c_str(), r.parking.az, r.parking.el,
-                m.pass_events.rotor_start_el_deg, m.pass_events.output_on_el_deg, m.pass_events.output_off_el_deg);
-  out += buf;
-  out += std::string("6 ") + (rc.parking.enabled ? "1" : "0") + (m.rotator_error_detection ? "1" : "0") + " " +
-         radio::format_mhz(rc.parking.rx_hz) + " " + radio::format_mhz(rc.parking.tx_hz) + " " +
-         text::lower(radio::to_string(rc.parking.rx_mode)) + " " + text::lower(radio::to_string(rc.parking.tx_mode));
-  std::snprintf(buf, sizeof buf, " %g\n", r.stall_s);
-  out += buf;
-  std::snprintf(buf, sizeof buf, "7 %d %g %g %g %g\n", r.limits_enabled ? 1 : 0, r.az_limit_min, r.az_limit_max,
-                r.el_limit_min, r.el_limit_max);
-  out += buf;
-  return out;
 }
 
 }  // namespace tb::store

@@ -30,8 +30,8 @@
 // The form is told by line 5 (7 items: later, 9: 1994), or else by lines numbered 6 or 7.
 //
 // The parser reads the whole text and reports every problem with its line and field, what it found
-// and what was expected; it applies nothing. apply_station_file() commits to a model only when the
-// result is a valid configuration as a whole.
+// and what was expected; it applies nothing. apply_station_file() (station_file_model.h) commits to a
+// model only when the result is a valid configuration as a whole.
 #pragma once
 #include <cstdint>
 #include <optional>
@@ -87,17 +87,5 @@ StationFileParse parse_station_file(std::string_view text);
 
 // The name of item `field` of line `line` ("callsign", "Icom RX address", ...).
 std::string station_file_item_name(int line, int field, bool later_firmware = false);
-
-// Applies the file to the model (station, rotator span/dead band/skew/parking/limits, radio rig,
-// F/A and Icom addresses; from a later-firmware file also what its extra items set, above) when
-// the resulting rotator configuration passes rotator::validate; returns its complaints otherwise,
-// and then the model is unchanged. What the file does not carry (presets, Doppler corrections,
-// the mic-click ADC values, the database; the bauds when not given) is left as it is.
-std::vector<std::string> apply_station_file(const StationFile& f, Model& m);
-
-// The model's values as a station file (five lines, each ending in "\n"): what parse reads back.
-std::string write_station_file(const Model& m);
-// The same in the later firmware's seven-line form (a `;` comment first), with every item it has.
-std::string write_station_file_later(const Model& m);
 
 }  // namespace tb::store

@@ -1,6 +1,6 @@
 #pragma once
 // printf into a std::string, of any length: the one copy (the element writers, the orbit
-// subcommands' CSV and JSON).
+// subcommands' CSV and JSON, the state file's checksum, the Icom addresses).
 #include <cstdarg>
 #include <cstdio>
 #include <string>

@@ -19,10 +19,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "util/cidr.h"
-
-namespace boost::asio {
-class io_context;
-}
+#include "util/loop_fwd.h"
 
 namespace tb::web {
 

@@ -4,6 +4,7 @@
 // what write_station_file_later makes of an applied later-firmware (seven-line) file.
 #include "fuzz_station.h"
 #include "store/station_file.h"
+#include "store/station_file_model.h"
 
 using namespace tb;
 

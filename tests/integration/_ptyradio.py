@@ -13,7 +13,7 @@ import time
 import tty
 from datetime import datetime, timedelta, timezone
 
-from _tbharness import BIN, SerialPair, check, poll as poll_every, reap, satellite_track
+from _tbharness import BIN, SerialPair, check, leave_and_read_log, poll as poll_every, reap, satellite_track
 
 C = 299792.458
 # The knob-rest delay the Tuner waits before moving the other link (issue 28b) is allowed on top of
@@ -102,10 +102,7 @@ def so50_doppler_goes_on(get_down, get_up, clock_now):
 
 def leave(tb, state):
     """trakbox's input ends: it must leave cleanly. Returns its log."""
-    tb.stdin.close()
-    check(tb.wait(20) == 0, "trakbox leaves cleanly when input ends")
-    with open(os.path.join(state, "trakbox.log")) as f:
-        return f.read()
+    return leave_and_read_log(tb, state)
 
 
 def on_pass(which, make_rig, model, test, uplink_model=None):

@@ -11,6 +11,7 @@ import socket
 import subprocess
 import tempfile
 import termios
+import threading
 import time
 import tty
 
@@ -46,6 +47,13 @@ def skip(message):
         raise SystemExit(1)
     print(f"SKIPPED: {message}")
     raise SystemExit(SKIP)
+
+
+def need(*tools):
+    """skip() unless every one of `tools` is on PATH (the message names those missing)."""
+    missing = [t for t in tools if not shutil.which(t)]
+    if missing:
+        skip(" and ".join(missing) + " not installed")
 
 
 class SerialPair:
@@ -176,6 +184,19 @@ def poll(what, pred, seconds, every=0.2):
     check(False, f"timed out waiting for {what}")
 
 
+class OutputLines(threading.Thread):
+    """A process's standard output (text), line by line as it comes, in `lines`."""
+
+    def __init__(self, proc):
+        super().__init__(daemon=True)
+        self.proc, self.lines = proc, []
+        self.start()
+
+    def run(self):
+        for line in self.proc.stdout:
+            self.lines.append(line)
+
+
 def free_port():
     import socket
     with socket.socket() as s:
@@ -233,6 +254,16 @@ def stop_and_read_log(proc, state):
     return read_log(state)
 
 
+def leave_and_read_log(proc, state, procs=None):
+    """Ends a trakbox running plain lines on a pipe as its operator would (the end of its input),
+    checks that it left with 0, takes it off `procs` and returns its trakbox.log."""
+    proc.stdin.close()
+    check(proc.wait(20) == 0, "trakbox leaves cleanly")
+    if procs is not None:
+        procs.remove(proc)
+    return read_log(state)
+
+
 def start_line_trakbox(state, start, *args):
     """trakbox on the serial-line front end (its stdin a pipe, stdout discarded, stderr kept) with
     the state directory `state`, the clock starting at `start` (a datetime), the Satrak port
@@ -285,9 +316,9 @@ def run_test(main, name=None):
 
 
 # ---------------------------------------------------------------------------------------------
-# Walking the manual's transcripts: the state document, test data in the manual's upload formats,
-# and the full-screen front end in tmux. One walkthrough is written once against the small `UI`
-# interface below and run on both front ends (LineUI over a serial line, ScreenUI in tmux).
+# Walking the manual's transcripts: the state document and test data in the manual's upload
+# formats. One walkthrough is written once against the small `UI` interface of _tbui.py and run on
+# both front ends (LineUI over a serial line, ScreenUI in tmux).
 
 def load_state(path):
     """The model part ("data") of a trakbox state document."""
@@ -328,246 +359,6 @@ def tle_to_amsat(name, l1, l2):
     total = sum(int(c) for ln in lines for c in ln if c.isdigit())
     total += sum(ln.count("-") + 2 * ln.count("+") for ln in lines)
     return "\n".join(lines + [f"Checksum:              {total}"]) + "\n"
-
-
-class LineUI:
-    """A walkthrough's view of the serial line: keys out, the transcript in.
-
-    prompt(rx) waits for the next prompt and returns the transcript from the previous prompt on
-    (that prompt, the answer echoed, what followed, and this prompt), with CR LF read as LF."""
-
-    full_screen = False
-
-    def __init__(self, terminal):
-        self.t = terminal
-        self._last = 0
-
-    def send(self, keys, pace=0.0):
-        self.t.send(keys, pace)
-
-    def prompt(self, rx, timeout=10.0):
-        m = self.t.expect(rx, timeout)
-        out = self.t.transcript[self._last:m.end()].replace("\r\n", "\n")
-        self._last = m.start()
-        return out
-
-    def wait(self, rx, timeout=10.0, after=None):
-        """A live display: the transcript up to the next text matching rx (`after` is for screens:
-        a stream has nothing old to skip)."""
-        return self.prompt(rx, timeout)
-
-    def upload(self, text, eof=True, timeout=10.0):
-        """An ASCII upload a line at a time, as the manual asks of a terminal program; each line
-        must come back echoed before the next is sent. Then Ctrl-Z."""
-        for ln in text.splitlines():
-            self.t.send(ln + "\r")
-            self.t.expect(re.escape(ln) + r"\r\n", timeout)
-        if eof:
-            self.t.send("\x1a")
-
-
-class ScreenUI:
-    """A walkthrough's view of the full-screen front end in tmux (its own tmux server on a socket in
-    a temporary folder, so parallel tests never share sessions): keys with send-keys, the screen
-    with capture-pane.
-
-    prompt(rx) waits until the screen has changed since the last keys and the text left of the
-    cursor matches rx (the prompt trakbox waits at); it returns the whole screen."""
-
-    full_screen = True
-
-    def __init__(self, argv, cols=100, rows=40, env=None):
-        self.socket_dir = tempfile.mkdtemp(prefix="trakbox-tmux-")
-        self.socket = os.path.join(self.socket_dir, "tmux")
-        self.session = "walk"
-        self.rows = rows
-        envs = " ".join(f"{k}={_shq(v)}" for k, v in (env or {}).items())
-        cmd = (f"env TERM=xterm {envs} " + " ".join(_shq(a) for a in argv) +
-               "; echo EXITED $?; sleep 120")
-        r = self._tmux("new-session", "-d", "-s", self.session, "-x", str(cols), "-y", str(rows), "sh", "-c", cmd)
-        check(r.returncode == 0, f"tmux new-session: {r.stderr}")
-        self._before = None
-
-    def _tmux(self, *args):
-        return subprocess.run(["tmux", "-S", self.socket, "-f", "/dev/null", *args], capture_output=True,
-                              text=True, timeout=10)
-
-    def snapshot(self):
-        """(screen text, cursor x, cursor y) read in one tmux command."""
-        r = self._tmux("capture-pane", "-p", "-t", self.session, ";", "display-message", "-p", "-t",
-                       self.session, "#{cursor_x},#{cursor_y}")
-        text, _, cursor = r.stdout.rstrip("\n").rpartition("\n")
-        try:
-            x, y = (int(v) for v in cursor.split(","))
-        except ValueError:
-            x, y = 0, 0
-        return text, x, y
-
-    def screen(self):
-        return self.snapshot()[0]
-
-    def _text_area(self, snap):
-        """The snapshot without the status line (the bottom row, which changes every second)."""
-        text, x, y = snap
-        return "\n".join(text.split("\n")[:self.rows - 1]), x, y
-
-    def send(self, keys, pace=0.0):
-        """Keys as the line front end takes them: '\\r' is Enter, '\\x1a' Ctrl-Z, '\\x03' Ctrl-C."""
-        self._before = self._text_area(self.snapshot())
-        chunk = ""
-        for c in keys:
-            special = {"\r": "Enter", "\x1a": "C-z", "\x03": "C-c", "\x7f": "BSpace"}.get(c)
-            if special:
-                if chunk:
-                    self._tmux("send-keys", "-t", self.session, "-l", "--", chunk)
-                    chunk = ""
-                self._tmux("send-keys", "-t", self.session, special)
-            else:
-                chunk += c
-        if chunk:
-            self._tmux("send-keys", "-t", self.session, "-l", "--", chunk)
-        if pace:
-            time.sleep(pace * len(keys))
-
-    def prompt(self, rx, timeout=10.0):
-        """Waits until trakbox waits at rx: the text area changed since the last keys, the text left
-        of the cursor (or the line above, when the cursor starts a line) matches rx, and the screen
-        holds still for a moment (not half-way through printing)."""
-        deadline = time.time() + timeout
-        pattern = re.compile(rx + r"\s*$")
-        last, seen = None, 0.0
-        while True:
-            snap = self.snapshot()
-            area = self._text_area(snap)
-            text, x, y = area
-            rows = text.split("\n")
-            if x > 0 or y == 0:
-                at_cursor = rows[y].ljust(x)[:x] if y < len(rows) else ""  # the blanks it typed too
-            else:
-                at_cursor = rows[y - 1] if y - 1 < len(rows) else ""
-            if area != self._before and pattern.search(at_cursor):
-                if area != last:
-                    last, seen = area, time.time()
-                elif time.time() - seen >= 0.06:
-                    self._before = area
-                    return snap[0]
-            else:
-                last = None
-            if time.time() > deadline:
-                raise Failure(f"screen never waited at {rx!r}; cursor at ({x},{y}) after {at_cursor!r}; "
-                              f"it shows:\n{snap[0]}")
-            time.sleep(0.02)
-
-    def wait(self, rx, timeout=10.0, after=None):
-        """Waits until rx matches on the screen (a live display), below the last line containing
-        `after` when given (what is above it is older); returns the screen."""
-        return self.wait_match(rx, timeout, after).string
-
-    def wait_match(self, rx, timeout=10.0, after=None):
-        deadline = time.time() + timeout
-        while True:
-            text = self.screen()
-            start = text.rfind(after) if after else 0
-            m = re.compile(rx, re.M).search(text, max(start, 0)) if start >= 0 else None
-            if m:
-                return m
-            if time.time() > deadline:
-                raise Failure(f"screen never showed {rx!r}; it shows:\n{text}")
-            time.sleep(0.03)
-
-    def upload(self, text, eof=True, timeout=10.0):
-        """The upload a line at a time (a terminal program's ASCII send), then Ctrl-Z."""
-        for ln in text.splitlines():
-            self.send(ln + "\r")
-            self.wait(re.escape(ln), timeout)
-        if eof:
-            self.send("\x1a")
-
-    def terminal_modes(self):
-        """tmux's view of the terminal's modes: {'alternate_on': '0'|'1', 'cursor_flag': ..., ...}."""
-        keys = ("alternate_on", "cursor_flag", "insert_flag", "keypad_cursor_flag", "keypad_flag")
-        r = self._tmux("display-message", "-p", "-t", self.session, ",".join("#{%s}" % k for k in keys))
-        return dict(zip(keys, r.stdout.strip().split(",")))
-
-    def exited(self, timeout=15.0):
-        """The exit status once trakbox has left (the session's shell prints it)."""
-        m = self.wait_match(r"EXITED (\d+)", timeout)
-        return int(m.group(1))
-
-    def close(self):
-        """Ends trakbox if it still runs (Ctrl-C: it saves first), then the tmux server."""
-        try:
-            if "EXITED" not in self.screen():
-                self._tmux("send-keys", "-t", self.session, "C-c")
-                self.exited(timeout=10)
-        except (Failure, subprocess.TimeoutExpired):
-            pass
-        finally:
-            self._tmux("kill-server")
-            shutil.rmtree(self.socket_dir, ignore_errors=True)
-
-
-def _shq(s):
-    import shlex
-    return shlex.quote(str(s))
-
-
-class SerialSession:
-    """trakbox --tty on one end of a socat pty pair at 9600 bps, a LineUI on the other."""
-
-    def __init__(self, extra=(), state_dir=None, clock=CLOCK, baud=9600):
-        self.pair = SerialPair()
-        self.fd = None
-        self.tb = None
-        try:
-            self.tb = Trakbox(["--tty", self.pair.trakbox_side, "--baud", str(baud), "--clock", clock, *extra],
-                              state_dir=state_dir)
-            self.fd = os.open(self.pair.terminal_side, os.O_RDWR | os.O_NOCTTY)
-            self.term = Terminal(self.fd)
-            self.ui = LineUI(self.term)
-        except BaseException:
-            self.close()
-            raise
-
-    @property
-    def state_file(self):
-        return self.tb.state_file
-
-    def stop(self):
-        """SIGTERM: trakbox saves and leaves; returns its exit status."""
-        return self.tb.stop()
-
-    def close(self):
-        if self.fd is not None:
-            os.close(self.fd)
-            self.fd = None
-        if self.tb:
-            self.tb.cleanup()
-        self.pair.close()
-
-
-class ScreenSession:
-    """trakbox full screen in a 100x40 tmux pane (its own tmux server), a ScreenUI on it."""
-
-    def __init__(self, extra=(), state_dir=None, clock=CLOCK, cols=100, rows=40):
-        self.own_state = state_dir is None
-        self.state_dir = state_dir or tempfile.mkdtemp(prefix="trakbox-walk-")
-        argv = [BIN, "--state", self.state_dir, "--clock", clock, "--satrak-port", "0", *extra]
-        self.ui = ScreenUI(argv, cols, rows)
-
-    @property
-    def state_file(self):
-        return os.path.join(self.state_dir, "trakbox-state.json")
-
-    def stop(self):
-        """Ctrl-C, the full screen's way out: trakbox saves and leaves; returns its exit status."""
-        self.ui.send("\x03")
-        return self.ui.exited()
-
-    def close(self):
-        self.ui.close()
-        if self.own_state:
-            shutil.rmtree(self.state_dir, ignore_errors=True)
 
 
 def in_temp_dir(prefix, body):
@@ -637,6 +428,40 @@ class Satrak:
         self.s.close()
 
 
+
+
+def read_until_closed(s, enough=None):
+    """What socket `s` sends until the peer closes it, its timeout passes, it fails, or
+    enough(what came) says so."""
+    got = b""
+    try:
+        while True:
+            b = s.recv(65536)
+            if not b:
+                break
+            got += b
+            if enough and enough(got):
+                break
+    except OSError:  # a timeout or a reset: what came is the answer
+        pass
+    return got
+
+
+def socket_lines(s):
+    """The lines socket `s` sends (bytes, without their LF), each as it comes, until the peer closes
+    it or it fails (a responder's loop: `for line in socket_lines(c): ... c.sendall(reply)`)."""
+    buf = b""
+    try:
+        while True:
+            data = s.recv(4096)
+            if not data:
+                return
+            buf += data
+            while b"\n" in buf:
+                line, buf = buf.split(b"\n", 1)
+                yield line
+    except OSError:
+        return
 
 
 def tcp_exchange(port, data, until, source="127.0.0.1", limit=10):

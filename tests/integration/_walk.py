@@ -14,8 +14,9 @@ import subprocess
 import sys
 import time
 
-from _tbharness import (BIN, SOURCE, Failure, ScreenSession, SerialSession, check, factory_state, load_state,
-                        read_tle, run_test, tle_to_amsat)
+from _tbharness import (BIN, SOURCE, Failure, check, factory_state, load_state, read_tle, run_test,  # noqa: E402
+                        tle_to_amsat)
+from _tbui import ScreenSession, SerialSession  # noqa: E402
 
 MAIN = r"Select \[1-8,S,M\]:"
 UPDATE = r" Select:"              # the UPDATE MENU and the Configuration Menu prompt

@@ -18,8 +18,9 @@ import time
 import zlib
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import (SOURCE, BIN, CLOCK, ScreenUI, Terminal, check, free_port, load_state, reap,  # noqa: E402
-                        run_test, skip, tcp_exchange, wait_listening)
+from _tbharness import (SOURCE, BIN, CLOCK, Terminal, check, free_port, load_state, reap, run_test,  # noqa: E402
+                        skip, tcp_exchange, wait_listening)
+from _tbui import ScreenUI  # noqa: E402
 
 # A fresh state refreshes from CelesTrak (issue 30), which the tests cannot reach: a failed refresh
 # is a problem `status` reports (exit 1). The station's own shipped file is a source that works.

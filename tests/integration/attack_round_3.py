@@ -26,8 +26,8 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import (BIN, CLOCK, SOURCE, Satrak, check, frame, free_port, read_log, reap, run_test,  # noqa: E402
-                        tcp_exchange, wait_listening)
+from _tbharness import (BIN, CLOCK, SOURCE, Satrak, check, frame, free_port, read_log, read_until_closed,  # noqa: E402
+                        reap, run_test, tcp_exchange, wait_listening)
 
 LOCAL_ELEMENTS = "file://" + os.path.join(SOURCE, "data", "amateur.tle")
 
@@ -38,15 +38,7 @@ def ask(path, line, wait=5.0):
     s.settimeout(wait)
     s.connect(path)
     s.sendall(line)
-    got = b""
-    try:
-        while True:
-            b = s.recv(65536)
-            if not b:
-                break
-            got += b
-    except socket.timeout:
-        pass
+    got = read_until_closed(s)
     s.close()
     return got
 

@@ -28,7 +28,7 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import SOURCE, check, run_test  # noqa: E402
+from _tbharness import SOURCE, check, read_until_closed, run_test  # noqa: E402
 from _web import WebSocket, WebStation  # noqa: E402
 
 LOCAL_ELEMENTS = "file://" + os.path.join(SOURCE, "data", "amateur.tle")
@@ -53,7 +53,6 @@ def raw(port, data, wait=6.0, stream=None):
     """Sends `data` (and then what `stream` yields, until the server stops taking it) on one
     connection; the status of the answer (0 when none) and its bytes."""
     s = socket.create_connection(("127.0.0.1", port), timeout=wait)
-    got = b""
     try:
         s.sendall(data)
         if stream:
@@ -65,16 +64,7 @@ def raw(port, data, wait=6.0, stream=None):
         s.shutdown(socket.SHUT_WR)
     except OSError:
         pass
-    try:
-        while True:
-            b = s.recv(65536)
-            if not b:
-                break
-            got += b
-            if b"\r\n\r\n" in got and len(got) > 4096:
-                break
-    except OSError:
-        pass
+    got = read_until_closed(s, lambda got: b"\r\n\r\n" in got and len(got) > 4096)
     s.close()
     m = re.match(rb"HTTP/1\.[01] (\d{3})", got)
     return (int(m.group(1)) if m else 0), got

@@ -5,7 +5,8 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, CLOCK, ScreenUI, check, in_temp_dir, run_test  # noqa: E402
+from _tbharness import BIN, CLOCK, check, in_temp_dir, run_test  # noqa: E402
+from _tbui import ScreenUI  # noqa: E402
 
 PROMPT = r"Select \[1-8,S,M\]:"
 
@@ -20,10 +21,7 @@ def walk(tmp):
         said = f"No shipped elements in {nowhere} (amateur.tle): the database is empty."
         check("".join(said.split()) in flat, f"the path tried is not on the screen:\n{screen}")
         check("--dataDIR" in flat, f"nor how to name another:\n{screen}")
-        ui.send("Q")
-        ui.prompt(r"leave trakbox\? \[Y/N\]")
-        ui.send("Y")
-        check(ui.exited() == 0, "Y leaves with 0")
+        ui.leave()
     finally:
         ui.close()
 

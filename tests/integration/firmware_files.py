@@ -12,7 +12,8 @@ import tempfile
 
 sys.path.insert(0, os.path.dirname(__file__))
 import _walk as w  # noqa: E402
-from _tbharness import BIN, CLOCK, SOURCE, SerialSession, check, load_state, run_test  # noqa: E402
+from _tbharness import BIN, CLOCK, SOURCE, check, load_state, run_test  # noqa: E402
+from _tbui import SerialSession  # noqa: E402
 
 FW = os.path.join(SOURCE, "tests", "data", "firmware")
 

@@ -10,7 +10,8 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, ScreenUI, check, in_temp_dir, load_state, run_test  # noqa: E402
+from _tbharness import BIN, check, in_temp_dir, load_state, run_test  # noqa: E402
+from _tbui import ScreenUI  # noqa: E402
 
 NO_NET = {k: "socks5h://127.0.0.1:9" for k in ("all_proxy", "ALL_PROXY", "http_proxy", "https_proxy", "HTTPS_PROXY")}
 URL = "https://celestrak.org/NORAD/elements/gp.php?GROUP=amateur&FORMAT=json"

@@ -9,7 +9,8 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, CLOCK, ScreenUI, check, load_state, run_test  # noqa: E402
+from _tbharness import BIN, CLOCK, check, load_state, run_test  # noqa: E402
+from _tbui import ScreenUI  # noqa: E402
 
 PROMPT = r"Select \[1-8,S,M\]:"
 
@@ -33,10 +34,7 @@ def main():
             screen = ui.prompt(r"leave trakbox\? \[Y/N\]")
             ui.send("N")
             ui.prompt(PROMPT)
-            ui.send("Q")
-            ui.prompt(r"leave trakbox\? \[Y/N\]")
-            ui.send("Y")
-            check(ui.exited() == 0, "Y did not leave with status 0")
+            ui.leave()
         finally:
             ui.close()
         drivers = load_state(os.path.join(state, "trakbox-state.json"))["drivers"]

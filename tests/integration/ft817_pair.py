@@ -9,13 +9,12 @@ SO-50: FM on both, the 67.0 Hz tone (06 70 06 70 0B, then the encoder 4A ... 0A)
 only, and the Doppler.
 """
 import os
-import shutil
 import sys
 
 sys.path.insert(0, os.path.dirname(__file__))
 from _ft847 import FT847  # noqa: E402
 from _ptyradio import RS44_PASS, SO50_PASS, leave, listen, on_doppler, rs44_knob_turn, so50_doppler_goes_on, on_pass, tuned  # noqa: E402
-from _tbharness import check, run_test, skip  # noqa: E402
+from _tbharness import check, need, run_test  # noqa: E402
 
 
 def ft817(path):
@@ -47,8 +46,7 @@ def so50(rigs, tb, state, clock_now):
 
 
 def main():
-    if not shutil.which("socat"):
-        skip("socat not installed")
+    need("socat")
     on_pass(RS44_PASS, ft817, "ft817", rs44, uplink_model="ft817")
     on_pass(SO50_PASS, ft817, "ft817", so50, uplink_model="ft817")
 

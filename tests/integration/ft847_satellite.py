@@ -11,13 +11,12 @@ SO-50 (2026-05-21 14:10 UTC): its 67.0 Hz tone (code 3F) and the encoder on SAT 
 and the Doppler. Every wait polls with a deadline.
 """
 import os
-import shutil
 import sys
 
 sys.path.insert(0, os.path.dirname(__file__))
 from _ft847 import FT847  # noqa: E402
 from _ptyradio import RS44_PASS, SO50_PASS, leave, listen, on_doppler, poll, rs44_knob_turn, so50_doppler_goes_on, on_pass, tuned  # noqa: E402
-from _tbharness import check, run_test, skip  # noqa: E402
+from _tbharness import check, need, run_test  # noqa: E402
 
 
 def rs44(rig, tb, state, clock_now):
@@ -51,8 +50,7 @@ def so50(rig, tb, state, clock_now):
 
 
 def main():
-    if not shutil.which("socat"):
-        skip("socat not installed")
+    need("socat")
     on_pass(RS44_PASS, FT847, "ft847", rs44)
     on_pass(SO50_PASS, FT847, "ft847", so50)
 

@@ -12,14 +12,13 @@ refuses (FA): the refusal is reported and the Doppler goes on. Then RS-44 again 
 Every wait polls for its condition with a deadline.
 """
 import os
-import shutil
 import sys
 import time
 
 sys.path.insert(0, os.path.dirname(__file__))
 from _ic9700 import IC9700  # noqa: E402
 from _ptyradio import RS44_PASS, SO50_PASS, leave, listen, on_doppler, rs44_knob_turn, so50_doppler_goes_on, on_pass, tuned  # noqa: E402
-from _tbharness import check, run_test, skip  # noqa: E402
+from _tbharness import check, need, run_test  # noqa: E402
 
 
 def on_ic9700(which, test, refuse_tone=False, echo=False):
@@ -66,8 +65,7 @@ def so50(rig, tb, state, clock_now):
 
 
 def main():
-    if not shutil.which("socat"):
-        skip("socat not installed")
+    need("socat")
     on_ic9700(RS44_PASS, rs44)
     on_ic9700(SO50_PASS, so50, refuse_tone=True)
     # The same radio on a CI-V bus (CI-V USB Echo Back ON): every frame echoed first.

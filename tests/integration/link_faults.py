@@ -27,8 +27,8 @@ import threading
 import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import (BIN, CLOCK, Failure, Satrak, check, free_port, hamlib_dummy, reap, run_test, sh,  # noqa: E402
-                        skip, tcp_exchange)
+from _tbharness import (BIN, CLOCK, Failure, Satrak, check, free_port, hamlib_dummy, poll, reap, run_test,  # noqa: E402
+                        sh, skip, tcp_exchange)
 
 # CPU trakbox may spend over an outage of OUTAGE_S seconds: its one-second tick and the polls of
 # this script cost a few tens of milliseconds; a loop spinning on a dead link costs the whole time.
@@ -37,15 +37,7 @@ OUTAGE_CPU_S = 0.6
 
 
 def wait_for(what, cond, timeout):
-    """Polls cond() until it returns something true (returned), or fails after `timeout` s."""
-    deadline = time.time() + timeout
-    while True:
-        got = cond()
-        if got:
-            return got
-        if time.time() > deadline:
-            raise Failure(f"timed out after {timeout:.0f} s waiting for {what}")
-        time.sleep(0.1)
+    return poll(what, cond, timeout, every=0.1)
 
 
 def cpu_seconds(pid):

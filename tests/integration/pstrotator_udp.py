@@ -23,7 +23,7 @@ import threading
 import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, SOURCE, check, free_port, poll, reap, run_test, wait_listening  # noqa: E402
+from _tbharness import BIN, SOURCE, check, free_port, leave_and_read_log, poll, reap, run_test, wait_listening  # noqa: E402
 
 
 def udp_pair_port():
@@ -88,11 +88,7 @@ def client_aims_trakbox(procs):
         time.sleep(0.3)
         srv = next(s for s in status(state)["servers"] if s["name"] == "pstrotator")
         check(srv["taken"] == 5 and srv["refused_not_allowed"] == 0, f"5 datagrams taken: {srv}")
-        tb.stdin.close()
-        check(tb.wait(20) == 0, "trakbox leaves cleanly")
-        procs.remove(tb)
-        with open(os.path.join(state, "trakbox.log")) as f:
-            log = f.read()
+        log = leave_and_read_log(tb, state, procs)
         check("pstrotator: a datagram from 127.0.0.1 refused" in log, "the refusal is logged")
         print(f"pstrotator_udp server: aimed to 173/25 (status {az:.1f}/{el:.1f}), AZ? {got_az!r}, EL? {got_el!r}, "
               f"3 bad datagrams refused and counted, {srv}")
@@ -179,11 +175,7 @@ def trakbox_aims_box(procs):
         sent = (told("AZIMUTH", 120.0), told("ELEVATION", 30.0))
         poll("the box's position read back on its way",
              lambda: box.az > 20 and abs((position(state)[0] or -99) - box.az) < 8, 15)
-        tb.stdin.close()
-        check(tb.wait(20) == 0, "trakbox leaves cleanly")
-        procs.remove(tb)
-        with open(os.path.join(state, "trakbox.log")) as f:
-            log = f.read()
+        log = leave_and_read_log(tb, state, procs)
         check("rotator: connected to PstRotator 127.0.0.1:" in log, "connected once the box answered")
         asks = sum(1 for g in box.got if g == "<PST>AZ?</PST>")
         print(f"pstrotator_udp client: rotctld P 120 30 -> the box got {sent[0]} and {sent[1]}; "

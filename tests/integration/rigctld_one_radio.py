@@ -28,7 +28,8 @@ import time
 from datetime import datetime, timezone
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, Failure, check, free_port, hamlib_dummy, poll, reap, run_test, sh, skip, wait_listening  # noqa: E402
+from _tbharness import (BIN, Failure, check, free_port, hamlib_dummy, need, poll, reap, run_test, sh,  # noqa: E402
+                        socket_lines, wait_listening)
 
 
 
@@ -78,29 +79,22 @@ class Relay:
             client.close()
 
         threading.Thread(target=back, daemon=True).start()
-        buf = b""
         try:
-            while True:
-                data = client.recv(4096)
-                if not data:
-                    break
-                buf += data
-                while b"\n" in buf:
-                    line, buf = buf.split(b"\n", 1)
-                    text = line.decode(errors="replace")
+            for line in socket_lines(client):
+                text = line.decode(errors="replace")
+                with self.lock:
+                    self.traffic.append((time.time(), len(line) + 1, 0))
+                    self.commands.append((time.time(), text))
+                word = text.split(" ")[0]
+                if self.tone_rprt is not None and word in ("C", "\\set_ctcss_tone"):
+                    reply = f"RPRT {self.tone_rprt}\n".encode()
                     with self.lock:
-                        self.traffic.append((time.time(), len(line) + 1, 0))
-                        self.commands.append((time.time(), text))
-                    word = text.split(" ")[0]
-                    if self.tone_rprt is not None and word in ("C", "\\set_ctcss_tone"):
-                        reply = f"RPRT {self.tone_rprt}\n".encode()
-                        with self.lock:
-                            self.traffic.append((time.time(), 0, len(reply)))
-                        client.sendall(reply)
-                        continue
-                    if self.one_vfo and word in ("I", "i", "X"):
-                        text = {"I": "F", "i": "f", "X": "M"}[word] + text[1:]
-                    up.sendall(text.encode() + b"\n")
+                        self.traffic.append((time.time(), 0, len(reply)))
+                    client.sendall(reply)
+                    continue
+                if self.one_vfo and word in ("I", "i", "X"):
+                    text = {"I": "F", "i": "f", "X": "M"}[word] + text[1:]
+                up.sendall(text.encode() + b"\n")
         except OSError:
             pass
         up.close()
@@ -313,8 +307,7 @@ def rs44_satellite_mode(procs, rig_port):
 
 
 def main():
-    if not shutil.which("rigctld") or not shutil.which("rigctl"):
-        skip("rigctld/rigctl (Hamlib) not installed")
+    need("rigctld", "rigctl")
     procs = []
     try:
         for case in (rs44_dial_follow, so50_tone_refused, rs44_one_vfo_radio, rs44_satellite_mode):

@@ -31,7 +31,8 @@ import time
 from datetime import datetime, timedelta
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, SOURCE, check, poll, reap, run_test, satellite_track, sh  # noqa: E402
+from _tbharness import (BIN, SOURCE, check, leave_and_read_log, poll, reap, run_test, satellite_track, sh,  # noqa: E402
+                        socket_lines)
 
 RATE = 40
 SPOT = 436_795_000           # SO-50's downlink
@@ -66,16 +67,23 @@ class Gqrx:
             except OSError:
                 return
             with self.lock:
-                if self.client:   # GQRX keeps one client: the one before goes
-                    try:
-                        self.client.shutdown(socket.SHUT_RDWR)
-                    except OSError:
-                        pass
-                    self.client.close()
-                self.client = c
                 self.connections += 1
                 n = self.connections
-            threading.Thread(target=self._serve, args=(c, n), daemon=True).start()
+                self._admit(c)
+            self._start(c, n)
+
+    def _admit(self, c):
+        """GQRX keeps one client: the one before goes."""
+        if self.client:
+            try:
+                self.client.shutdown(socket.SHUT_RDWR)
+            except OSError:
+                pass
+            self.client.close()
+        self.client = c
+
+    def _start(self, c, n):
+        threading.Thread(target=self._serve, args=(c, n), daemon=True).start()
 
     def answer(self, line):
         words = line.split()
@@ -99,20 +107,13 @@ class Gqrx:
         return "RPRT 1"
 
     def _serve(self, c, n):
-        buf = b""
         try:
-            while True:
-                data = c.recv(4096)
-                if not data:
-                    break
-                buf += data
-                while b"\n" in buf:
-                    raw, buf = buf.split(b"\n", 1)
-                    line = raw.decode(errors="replace").strip()
-                    with self.lock:
-                        self.commands.append((time.time(), line, n))
-                        reply = self.answer(line)
-                    c.sendall(reply.encode() + b"\n")
+            for raw in socket_lines(c):
+                line = raw.decode(errors="replace").strip()
+                with self.lock:
+                    self.commands.append((time.time(), line, n))
+                    reply = self.answer(line)
+                c.sendall(reply.encode() + b"\n")
         except OSError:
             pass
 
@@ -131,17 +132,12 @@ class Sdrpp(Gqrx):
     """SDR++'s rigctl server: one client at a time (the next is served only when the one before has
     gone), `M` wants its passband, `v` is "VFO"."""
 
-    def _accept(self):
-        while True:
-            try:
-                c, _ = self.sock.accept()
-            except OSError:
-                return
-            with self.lock:
-                self.connections += 1
-                n = self.connections
-            self._serve(c, n)   # here: nobody else is served meanwhile
-            c.close()
+    def _admit(self, c):
+        pass
+
+    def _start(self, c, n):
+        self._serve(c, n)   # here, in the accepting thread: nobody else is served meanwhile
+        c.close()
 
     def answer(self, line):
         words = line.split()
@@ -182,10 +178,7 @@ def sdrpp_held_by_another():
         # Its answer read and said before trakbox is told to leave (the reply may still be on its way).
         poll("trakbox to say SDR++ answers", lambda: "radio SDR++ at 127.0.0.1:" in open(log_path).read() and
              ": connected" in open(log_path).read(), 10)
-        tb.stdin.close()
-        check(tb.wait(20) == 0, "trakbox leaves cleanly")
-        procs.remove(tb)
-        log = open(log_path).read()
+        log = leave_and_read_log(tb, state, procs)
         said = log.count("another program may hold SDR++'s remote control")
         check(said == 1, f"said once while held ({said})")
         check("radio SDR++ at 127.0.0.1:" in log and ": connected" in log, "connected once served")
@@ -296,11 +289,7 @@ def main():
         check(rig.connections == before + 1, f"trakbox did not knock the other program off: {rig.connections - before} connections")
         other.close()
         poll("trakbox back on GQRX", lambda: rig.connections >= before + 2, 15)
-        tb.stdin.close()
-        check(tb.wait(20) == 0, "trakbox leaves cleanly")
-        procs.remove(tb)
-        with open(os.path.join(state, "trakbox.log")) as f:
-            log = f.read()
+        log = leave_and_read_log(tb, state, procs)
         held = log.count("another program holds GQRX's remote control")
         check(held == 1, f"the log says once that another program holds GQRX ({held})")
         pass_log = log.split("another program holds")[0]

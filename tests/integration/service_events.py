@@ -12,12 +12,11 @@ import shutil
 import subprocess
 import sys
 import tempfile
-import threading
 import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import (BIN, CLOCK, SOURCE, check, free_port, load_state, reap, run_test,  # noqa: E402
-                        sh, tcp_exchange, wait_listening)
+from _tbharness import (BIN, CLOCK, SOURCE, OutputLines, check, free_port, load_state, reap,  # noqa: E402
+                        run_test, sh, tcp_exchange, wait_listening)
 
 # A fresh state refreshes from CelesTrak (issue 30), which the tests cannot reach: a failed refresh
 # is a problem `status` reports (exit 1). The station's own shipped file is a source that works.
@@ -40,18 +39,6 @@ def wrap(d):
 def status(state, *extra):
     r = subprocess.run([BIN, "status", "--state", state, *extra], capture_output=True, text=True, timeout=30)
     return r.returncode, r.stdout, r.stderr
-
-
-class Lines(threading.Thread):
-    """A process's standard output, line by line, as it comes."""
-
-    def __init__(self, proc):
-        super().__init__(daemon=True)
-        self.proc, self.lines = proc, []
-
-    def run(self):
-        for line in self.proc.stdout:
-            self.lines.append(line)
 
 
 def check_status(state, svc, rot, rig):
@@ -131,8 +118,7 @@ def main():
         wait_listening(rig, "rigctld", proc=svc)
         ev = subprocess.Popen([BIN, "events", "--state", state], stdout=subprocess.PIPE, text=True)
         procs.append(ev)
-        lines = Lines(ev)
-        lines.start()
+        lines = OutputLines(ev)
 
         check_status(state, svc, rot, rig)
 

@@ -10,7 +10,6 @@ silent hands the antenna back after --handback seconds of station time (30 s at 
 The hand-back times are printed."""
 import json
 import os
-import shutil
 import socket
 import subprocess
 import sys
@@ -18,7 +17,7 @@ import threading
 import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, Failure, check, free_port, run_test, skip, wait_listening  # noqa: E402
+from _tbharness import BIN, OutputLines, check, free_port, need, poll, run_test, wait_listening  # noqa: E402
 from _web import WebStation  # noqa: E402
 
 RATE = 10
@@ -26,29 +25,14 @@ HANDBACK = 30  # station seconds: 3 s of real time at RATE
 START = "2026-05-21T12:09:40Z"  # ISS is up (AOS 12:09:10 at the factory station), LOS 12:15:37
 
 
-class Lines(threading.Thread):
-    def __init__(self, proc):
-        super().__init__(daemon=True)
-        self.proc, self.lines = proc, []
-
-    def run(self):
-        for line in self.proc.stdout:
-            self.lines.append(line)
-
-    def control(self):
-        return [json.loads(l) for l in self.lines if '"control"' in l and json.loads(l).get("event") == "control"]
+def control_events(lines):
+    return [json.loads(l) for l in lines.lines if '"control"' in l and json.loads(l).get("event") == "control"]
 
 
 def wait_for(what, pred, seconds):
-    end = time.time() + seconds
+    """What pred() gave, and how long it took to give it."""
     start = time.time()
-    while True:
-        v = pred()
-        if v:
-            return v, time.time() - start
-        if time.time() > end:
-            raise Failure(f"{what} within {seconds} s")
-        time.sleep(0.1)
+    return poll(what, pred, seconds, every=0.1), time.time() - start
 
 
 def wrap(d):
@@ -56,8 +40,7 @@ def wrap(d):
 
 
 def main():
-    if not shutil.which("rotctl"):
-        skip("rotctl (Hamlib) is not installed")
+    need("rotctl")
     rot, rig = free_port(), free_port()
     web = WebStation("--rotctld-port", str(rot), "--rigctld-port", str(rig), "--handback", str(HANDBACK),
                      clock=START, rate=str(RATE))
@@ -65,8 +48,7 @@ def main():
     try:
         wait_listening(rot, "rotctld", proc=web.proc)
         ev = subprocess.Popen([BIN, "events", "--state", web.state], stdout=subprocess.PIPE, text=True)
-        lines = Lines(ev)
-        lines.start()
+        lines = OutputLines(ev)
         code, got = web.post("/api/v1/track", {"satellite": "ISS"})
         check(code == 200, f"track ISS: {code} {got}")
         s, _ = wait_for("ISS followed", lambda: (lambda s: s if s["tracking"]["followed"] == "ISS" else None)(web.status()), 10)
@@ -160,7 +142,7 @@ def main():
         wait_for("the radio back to tracking", lambda: web.status()["control"]["radio"]["kind"] == "tracking", 5)
 
         time.sleep(0.5)
-        kinds = [(e["resource"], e["from"]["kind"], e["to"]["kind"]) for e in lines.control()]
+        kinds = [(e["resource"], e["from"]["kind"], e["to"]["kind"]) for e in control_events(lines)]
         for want in [("antenna", "tracking", "rotctld"), ("antenna", "rotctld", "tracking"),
                      ("radio", "tracking", "rigctld"), ("radio", "rigctld", "tracking")]:
             check(want in kinds, f"a control event {want}: {kinds}")

@@ -14,10 +14,9 @@ import os
 import socket
 import sys
 import threading
-import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import Failure, check, free_port, run_test, wait_listening  # noqa: E402
+from _tbharness import check, free_port, poll, run_test, wait_listening  # noqa: E402
 from _web import WebStation  # noqa: E402
 
 RATE = 10
@@ -62,14 +61,7 @@ class Jobs(http.server.BaseHTTPRequestHandler):
 
 
 def wait_for(what, pred, seconds):
-    end = time.time() + seconds
-    while True:
-        v = pred()
-        if v:
-            return v
-        if time.time() > end:
-            raise Failure(f"{what} within {seconds} s")
-        time.sleep(0.1)
+    return poll(what, pred, seconds, every=0.1)
 
 
 def kind_is(web, resource, kind):

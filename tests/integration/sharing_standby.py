@@ -9,10 +9,9 @@ import os
 import socket
 import subprocess
 import sys
-import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, Failure, check, free_port, run_test, wait_listening  # noqa: E402
+from _tbharness import BIN, check, free_port, poll, run_test, wait_listening  # noqa: E402
 from _web import WebStation  # noqa: E402
 
 RATE = 10
@@ -39,14 +38,7 @@ def when(s):
 
 
 def wait_for(what, pred, seconds):
-    end = time.time() + seconds
-    while True:
-        v = pred()
-        if v:
-            return v
-        if time.time() > end:
-            raise Failure(f"{what} within {seconds} s")
-        time.sleep(0.1)
+    return poll(what, pred, seconds, every=0.1)
 
 
 def main():

@@ -12,12 +12,11 @@ SO-50 (2026-05-21 14:10 UTC, near its culmination) with its 67.0 Hz tone, which 
 refuses (?;): the refusal is reported and the Doppler goes on. Every wait polls with a deadline.
 """
 import os
-import shutil
 import sys
 
 sys.path.insert(0, os.path.dirname(__file__))
 from _ptyradio import RS44_PASS, SO50_PASS, leave, listen, on_doppler, poll, rs44_knob_turn, so50_doppler_goes_on, on_pass, tuned  # noqa: E402
-from _tbharness import check, run_test, skip  # noqa: E402
+from _tbharness import check, need, run_test  # noqa: E402
 from _ts2000 import TS2000  # noqa: E402
 
 
@@ -61,8 +60,7 @@ def so50(rig, tb, state, clock_now):
 
 
 def main():
-    if not shutil.which("socat"):
-        skip("socat not installed")
+    need("socat")
     # VFO A on a memory channel, as an operator may leave it: trakbox goes to VFO first.
     def on_memory(path):
         rig = TS2000(path)

@@ -2,12 +2,12 @@
 wrapping mid-word; keys typed meanwhile still reach the prompt that waits (none lost, none sent
 elsewhere), and the screen is drawn again once the terminal is large enough."""
 import os
-import shutil
 import sys
 import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, CLOCK, ScreenUI, check, in_temp_dir, load_state, run_test, skip  # noqa: E402
+from _tbharness import BIN, CLOCK, check, in_temp_dir, load_state, need, run_test  # noqa: E402
+from _tbui import ScreenUI  # noqa: E402
 
 PROMPT = r"Select \[1-8,S,M\]:"
 
@@ -29,18 +29,14 @@ def walk(state):
         check("terminal too small" not in screen, f"the message is gone once it fits:\n{screen}")
         ui.send("\x1b")  # Esc leaves menu 4 unchanged
         ui.prompt(PROMPT)
-        ui.send("Q")
-        ui.prompt(r"leave trakbox\? \[Y/N\]")
-        ui.send("Y")
-        check(ui.exited() == 0, "Y leaves with 0")
+        ui.leave()
     finally:
         ui.close()
     check(load_state(os.path.join(state, "trakbox-state.json"))["station"]["callsign"] == "NOCALL", "nothing changed")
 
 
 def main():
-    if not shutil.which("tmux"):
-        skip("tmux is not installed")
+    need("tmux")
     in_temp_dir("trakbox-small-", walk)
 
 

@@ -29,20 +29,19 @@ inline orbit::Elements make_elements(std::string name, int catalog_number, int e
                                      double ndot_over_2, double bstar, double inclination_deg, double raan_deg,
                                      double eccentricity, double arg_perigee_deg, double mean_anomaly_deg,
                                      double mean_motion_rev_per_day) {
-  orbit::Elements e;
-  e.name = std::move(name);
-  e.catalog_number = catalog_number;
-  e.epoch_year = epoch_year;
-  e.epoch_day = epoch_day;
-  e.ndot_over_2 = ndot_over_2;
-  e.bstar = bstar;
-  e.inclination_deg = inclination_deg;
-  e.raan_deg = raan_deg;
-  e.eccentricity = eccentricity;
-  e.arg_perigee_deg = arg_perigee_deg;
-  e.mean_anomaly_deg = mean_anomaly_deg;
-  e.mean_motion_rev_per_day = mean_motion_rev_per_day;
-  return e;
+  return orbit::Elements{.name = std::move(name),
+                         .catalog_number = catalog_number,
+                         .international_designator = {},
+                         .epoch_year = epoch_year,
+                         .epoch_day = epoch_day,
+                         .ndot_over_2 = ndot_over_2,
+                         .bstar = bstar,
+                         .inclination_deg = inclination_deg,
+                         .raan_deg = raan_deg,
+                         .eccentricity = eccentricity,
+                         .arg_perigee_deg = arg_perigee_deg,
+                         .mean_anomaly_deg = mean_anomaly_deg,
+                         .mean_motion_rev_per_day = mean_motion_rev_per_day};
 }
 
 // ISS (ZARYA): near earth, drag terms active.

@@ -2,28 +2,19 @@
 
 #include <spdlog/spdlog.h>
 
-#include <cstdio>
 #include <thread>
 #include <utility>
 
 #include "radio/link_common.h"
+#include "util/format.h"
 
 namespace tb::radio {
 
-using Action = LinkError::Action;
-using Clock = std::chrono::steady_clock;
-using link::at_baud;
-using link::kWriteSlack;
-using link::refuse_tone;
-using link::tone_text;
+using namespace link;  // Action, Clock and the helpers every family shares
 
 namespace {
 
-std::string hexaddr(std::uint8_t a) {
-  char buf[8];
-  std::snprintf(buf, sizeof buf, "%02Xh", a);
-  return buf;
-}
+std::string hexaddr(std::uint8_t a) { return text::printf_string("%02Xh", a); }
 
 }  // namespace
 

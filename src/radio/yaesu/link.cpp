@@ -9,12 +9,7 @@
 
 namespace tb::radio {
 
-using Action = LinkError::Action;
-using Clock = std::chrono::steady_clock;
-using link::at_baud;
-using link::kWriteSlack;
-using link::refuse_tone;
-using link::tone_text;
+using namespace link;  // Action, Clock and the helpers every family shares
 
 YaesuOptions YaesuOptions::from(const RadioConfig& c) {
   YaesuOptions o;

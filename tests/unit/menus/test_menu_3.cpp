@@ -519,35 +519,6 @@ TEST_CASE("Menu 3-1 with an empty tracking list offers the whole database") {
   CHECK(has(f.term.output(), "Satellite (AO-123) updated."));
 }
 
-// ---------------------------------------------------------------------------------------------
-// 3-5 Refresh (trakbox's own)
-
-TEST_CASE("3-5 adds and deletes element sources, sets the interval, and refuses what cannot be used") {
-  testing::MenuFixture f(
-      "A\rceletrak.tle\r"                                                       // not a URL: refused
-      "A\rhttps://celestrak.org/NORAD/elements/gp.php?GROUP=amateur&FORMAT=json\r"
-      "A\r/srv/elements/extra.tle\r"
-      "I\r1\r6\r"                                                               // 1 h refused, then 6
-      "D\r3\rD\r1\r"                                                            // 3 is not listed; delete 1
-      "R\rQ\r");
-  menus::menu_3_5_refresh(f.term, *f.services);
-  const std::string& out = f.term.output();
-  CHECK(has(out, "======= ELEMENT REFRESH =======\n No element source: the database is refreshed only by hand (3-3).\n"
-                 " Every 12.0 hours (at least 2).\n"));
-  CHECK(has(out, "  Not added: 'celetrak.tle' is neither an http(s)://, ftp(s):// or file:/// URL nor an absolute file name"));
-  CHECK(has(out, "  1 is out of range: expected 2 to 720"));
-  CHECK(has(out, "  '3': enter a number from 1 to 2"));
-  CHECK(has(out, " 1. /srv/elements/extra.tle\n Every 6.0 hours (at least 2).\n"));
-  const store::RefreshSettings& r = f.model.refresh;
-  REQUIRE(r.sources.size() == 1);
-  CHECK(r.sources[0].url == "/srv/elements/extra.tle");
-  CHECK(r.interval_hours == 6.0);
-  // What was saved reads back the same.
-  const auto back = store::model_from_json(store::to_json(f.model));
-  CHECK(back.refresh.sources.size() == 1);
-  CHECK(back.refresh.interval_hours == 6.0);
-}
-
 TEST_CASE("Menu 3-3: O takes OMM in every encoding (numbers beyond a TLE's too), and refuses NASA text for it") {
   for (const char* file : {"n800123456.json", "n800123456-spacetrack.json", "n800123456.xml", "n800123456.csv",
                            "n800123456.kvn"}) {
@@ -572,79 +543,4 @@ TEST_CASE("Menu 3-3: O takes OMM in every encoding (numbers beyond a TLE's too),
   CHECK(has(f.term.output(), "expected OMM (JSON, XML, CSV or KVN); answer N or A for NASA or AMSAT text"));
   CHECK(has(f.term.output(), "the stored database is unchanged"));
   CHECK(db_json(f.model) == before);
-}
-
-TEST_CASE("3-5 S takes the SatNOGS transmitters from a file into the records the operator left empty") {
-  const std::string list =
-      (std::filesystem::temp_directory_path() / ("trakbox-satnogs-" + std::to_string(::getpid()) + ".json")).string();
-  {
-    std::ofstream out(list);
-    out << R"([{"description":"Mode U/V linear","alive":true,"status":"active","type":"Transponder",
-               "uplink_low":145935000,"uplink_high":145995000,"downlink_low":435610000,"downlink_high":435670000,
-               "mode":"SSB","invert":true,"norad_cat_id":44909},
-              {"description":"FM voice","alive":true,"status":"active","type":"Transceiver",
-               "uplink_low":145990000,"downlink_low":437800000,"mode":"FM","invert":false,"norad_cat_id":25544}])";
-  }
-  testing::MenuFixture f;
-  const int rs44 = *f.model.db.find("RS-44");
-  f.model.db.satellites[static_cast<std::size_t>(rs44)].radio = {};  // the operator has nothing for RS-44
-  const radio::SatelliteRadio iss_before = f.model.db.satellites[static_cast<std::size_t>(*f.model.db.find("ISS"))].radio;
-  f.term.feed("S\r" + list + "\rN\rQ\r");
-  menus::menu_3_5_refresh(f.term, *f.services);
-  const std::string& out = f.term.output();
-  CHECK(has(out, "  RS-44: downlink 435.640 USB, uplink 145.965 LSB (inverting transponder) (Mode U/V linear)\n"));
-  CHECK(has(out, "  ISS: your own record kept\n"));
-  const radio::SatelliteRadio& r = f.model.db.satellites[static_cast<std::size_t>(rs44)].radio;
-  CHECK(r.downlink_hz == 435'640'000);
-  CHECK(r.uplink_mode == radio::Mode::lsb);
-  CHECK(f.model.db.satellites[static_cast<std::size_t>(*f.model.db.find("ISS"))].radio == iss_before);
-  CHECK(f.saves > 0);
-  std::filesystem::remove(list);
-
-  testing::MenuFixture g;
-  const std::string before = db_json(g.model);
-  g.term.feed("S\r/nonexistent/transmitters.json\rY\rQ\r");
-  menus::menu_3_5_refresh(g.term, *g.services);
-  CHECK(has(g.term.output(), "  Nothing changed: cannot read /nonexistent/transmitters.json\n"));
-  CHECK(db_json(g.model) == before);
-}
-
-TEST_CASE("3-5 says a refresh running again together with the last one's failure (issue 39)") {
-  testing::MenuFixture f;
-  // The refresh posts its results to the loop: here a queue the test runs by hand.
-  std::mutex mu;
-  std::vector<std::function<void()>> posted;
-  tracker::ElementsRefresh refresh(
-      f.model,
-      [&](std::function<void()> fn) {
-        std::lock_guard<std::mutex> lock(mu);
-        posted.push_back(std::move(fn));
-      },
-      [] {});
-  f.station->set_refresh(&refresh);
-  f.model.refresh.sources = {store::RefreshSource{"file:///nonexistent/trakbox/amateur.tle", "", ""}};
-  auto run_posted = [&] {
-    for (int i = 0; i < 500; ++i) {
-      std::vector<std::function<void()>> due;
-      {
-        std::lock_guard<std::mutex> lock(mu);
-        due.swap(posted);
-      }
-      for (auto& fn : due) fn();
-      if (!refresh.running()) return;
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
-    FAIL("the refresh did not finish");
-  };
-  REQUIRE_FALSE(refresh.refresh_now(1'800'000'000));
-  run_posted();
-  REQUIRE(refresh.last_failed());
-  REQUIRE_FALSE(refresh.refresh_now(1'800'000'100));
-  REQUIRE(refresh.running());
-  f.term.feed("Q\r");
-  menus::menu_3_5_refresh(f.term, *f.services);
-  CHECK(has(f.term.output(), " Refresh: running now; the last one FAILED "));
-  CHECK_FALSE(has(f.term.output(), "Last refresh: running now"));
-  run_posted();
-  f.station->set_refresh(nullptr);
 }

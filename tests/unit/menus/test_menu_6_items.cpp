@@ -12,6 +12,7 @@
 #include "menus/6_configuration.h"
 #include "rotator/adc_model.h"
 #include "store/station_file.h"
+#include "store/station_file_model.h"
 #include "support/manual_samples.h"
 
 using namespace tb;
@@ -34,14 +35,12 @@ struct Pots {
   rotator::RotatorPosition start;
 };
 void run_6_1(testing::MenuFixture& f, const Pots& pots, int timeouts) {
-  rotator::SimulatedRotatorParams p;
-  p.az_counts_at_ccw = pots.az_ccw;
-  p.az_counts_at_cw = pots.az_cw;
-  p.el_counts_at_0 = pots.el_0;
-  p.el_counts_at_90 = pots.el_90;
-  p.el_max_deg = pots.el_max;
-  p.start = pots.start;
-  rebuild(f, p);
+  rebuild(f, rotator::SimulatedRotatorParams{.el_max_deg = pots.el_max,
+                                             .az_counts_at_ccw = pots.az_ccw,
+                                             .az_counts_at_cw = pots.az_cw,
+                                             .el_counts_at_0 = pots.el_0,
+                                             .el_counts_at_90 = pots.el_90,
+                                             .start = pots.start});
   f.station->set_rotor_control(true);
   f.term.timeouts_before_key = timeouts;
   menus::menu_6_configuration(f.term, *f.services);

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "radio/cat.h"
+#include "radio/factory.h"
 #include "support.h"
 
 namespace tbtest {
@@ -319,6 +320,25 @@ class Ts2000 final : public CommandResponder {
   std::map<char, Hz> hz_;
   std::map<char, std::string> mode_, tone_;
   std::map<char, bool> on_;
+};
+
+// Two FT-817s, each on a pty pair of its own, as one station's radios: --radio ft817:... for the
+// downlink, --uplink-radio ft818:... for the uplink (ok() false without socat).
+struct Ft817Pair {
+  PtyPair a, b;
+  std::optional<Yaesu5> down, up;
+  MakeRadio made;
+
+  explicit Ft817Pair(const DriverTiming& timing) {
+    if (!a.ok() || !b.ok()) return;
+    down.emplace(a.test_side());
+    up.emplace(b.test_side());
+    const auto down_spec = parse_radio_spec("ft817:" + a.radio_side());
+    const auto up_spec = parse_radio_spec("ft818:" + b.radio_side(), "--uplink-radio");
+    made = make_radios(*down_spec.spec, *up_spec.spec, RadioConfig{}, timing);
+  }
+  bool ok() const { return made.driver != nullptr; }
+  RadioDriver& radio() { return *made.driver; }
 };
 
 }  // namespace tbtest

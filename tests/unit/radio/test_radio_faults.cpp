@@ -281,14 +281,10 @@ TEST_CASE("The uplink radio of a pair names the link that turned: uplink dial tu
           doctest::skip(tb::testing::skip_without({"socat"}))) {
   tb::testing::require_tools({"socat"});
   LogCapture log;
-  PtyPair a, b;
-  REQUIRE((a.ok() && b.ok()));
-  Yaesu5 down(a.test_side()), up(b.test_side());
-  auto down_spec = parse_radio_spec("ft817:" + a.radio_side());
-  auto up_spec = parse_radio_spec("ft818:" + b.radio_side(), "--uplink-radio");
-  auto made = make_radios(*down_spec.spec, *up_spec.spec, RadioConfig{}, timing());
-  REQUIRE(made.driver);
-  RadioDriver& radio = *made.driver;
+  tbtest::Ft817Pair pair(timing());
+  REQUIRE(pair.ok());
+  Yaesu5& up = *pair.up;
+  RadioDriver& radio = pair.radio();
   radio.set_frequency(Link::downlink, 435'643'780);
   radio.set_frequency(Link::uplink, 145'963'730);
   REQUIRE(radio.wait_idle(10000ms));

@@ -305,15 +305,10 @@ TEST_CASE("FT-847: CAT on, satellite mode, SAT RX / SAT TX opcodes, read-back, C
 
 TEST_CASE("FT-817 pair: each radio one link on its VFO, read-back, tone on the uplink radio" * doctest::skip(tb::testing::skip_without({"socat"}))) {
   tb::testing::require_tools({"socat"});
-  PtyPair a, b;
-  REQUIRE(a.ok());
-  REQUIRE(b.ok());
-  Yaesu5 down(a.test_side()), up(b.test_side());
-  auto down_spec = parse_radio_spec("ft817:" + a.radio_side());
-  auto up_spec = parse_radio_spec("ft818:" + b.radio_side(), "--uplink-radio");
-  auto made = make_radios(*down_spec.spec, *up_spec.spec, RadioConfig{}, timing());
-  REQUIRE(made.driver);
-  RadioDriver& radio = *made.driver;
+  tbtest::Ft817Pair pair(timing());
+  REQUIRE(pair.ok());
+  Yaesu5 &down = *pair.down, &up = *pair.up;
+  RadioDriver& radio = pair.radio();
   radio.set_mode(Link::downlink, Mode::usb);
   radio.set_frequency(Link::downlink, 435'643'780);
   radio.set_mode(Link::uplink, Mode::lsb);

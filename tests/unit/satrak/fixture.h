@@ -25,6 +25,8 @@
 
 namespace satrak_test {
 using namespace tb;
+using namespace std::chrono_literals;
+using satrak::Error;
 namespace fs = std::filesystem;
 
 // The unit logs every decision; the tests check them through the protocol instead.
@@ -165,5 +167,26 @@ struct Acu {
   int saves = 0;
   std::optional<std::string> save_error;  // what the next saves report (nullopt: they succeed)
 };
+
+// The scripted sessions' start (an ISS pass over the Tucson station follows within the hour).
+inline const orbit::UtcTime kT0 = orbit::from_civil(2026, 5, 21, 12, 0, 0);
+
+// A refusal as the unit answers it: "HEAD,ERR,CODE".
+inline std::string err(std::string head, satrak::Error e) { return satrak::reply_error(head, e); }
+
+// A time as TIME? and START_STOP_TIME? give it: H,M,S,D,Mo,Y.
+inline std::string civil(orbit::UtcTime t) {
+  const auto c = orbit::to_civil(t);
+  return std::to_string(c.hour) + "," + std::to_string(c.minute) + "," + std::to_string(static_cast<int>(c.second)) + "," +
+         std::to_string(c.day) + "," + std::to_string(c.month) + "," + std::to_string(c.year);
+}
+
+inline orbit::UtcTime whole_seconds(orbit::UtcTime t) { return std::chrono::floor<std::chrono::seconds>(t); }
+
+// Where the ISS is from the model's station at t.
+inline orbit::Observation iss_at(const store::Model& m, orbit::UtcTime t) {
+  static const orbit::Sgp4 sgp4(iss_elements());
+  return orbit::observe(sgp4, m.station.observer(), t);
+}
 
 }  // namespace satrak_test

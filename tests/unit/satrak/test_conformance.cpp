@@ -12,10 +12,6 @@ using namespace satrak_test;
 using namespace std::chrono_literals;
 using tb::satrak::Error;
 
-namespace {
-const orbit::UtcTime kT0 = orbit::from_civil(2026, 5, 21, 12, 0, 0);
-}  // namespace
-
 TEST_CASE("ANGLE_SETTINGS sensor counts: the document's 16 bits scaled to the 10-bit ADC") {
   using tb::satrak::adc_from_sensor;
   using tb::satrak::sensor_from_adc;

@@ -12,8 +12,6 @@ using namespace std::chrono_literals;
 
 namespace {
 
-const orbit::UtcTime kT0 = orbit::from_civil(2026, 5, 21, 12, 0, 0);
-
 constexpr const char* kPython = "/usr/bin/python3";
 
 const char* kHttpServer = R"(

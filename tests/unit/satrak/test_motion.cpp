@@ -6,7 +6,6 @@ using namespace satrak_test;
 using namespace std::chrono_literals;
 
 namespace {
-const orbit::UtcTime kT0 = orbit::from_civil(2026, 5, 21, 12, 0, 0);
 constexpr double kAzCount = 360.0 / 1023.0, kElCount = 90.0 / 511.0;
 
 // GOTO and wait until at rest; returns the reading (X2, X3).

@@ -16,8 +16,6 @@ using namespace std::chrono_literals;
 
 namespace {
 
-const orbit::UtcTime kT0 = orbit::from_civil(2026, 5, 21, 12, 0, 0);
-
 // The station and the Satrak server on one io_context run by a thread; the RTC advances `rate` times
 // as fast as the wall clock (a tick every 50 ms of wall time) on that thread only.
 struct Live {

@@ -7,6 +7,7 @@
 #include "rotator/adc_model.h"
 #include "store/model.h"
 #include "store/station_file.h"
+#include "store/station_file_model.h"
 #include "station_file_problems.h"
 #include "support/manual_samples.h"
 
