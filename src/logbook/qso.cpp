@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 
+#include "util/civil_date.h"
 #include "util/text.h"
 
 namespace tb::logbook {
@@ -177,25 +178,13 @@ std::string adif_mode(std::string_view radio_mode) {
   return m;
 }
 
-std::int64_t days_from_civil(int y, unsigned m, unsigned d) {
-  y -= m <= 2;
-  const std::int64_t era = (y >= 0 ? y : y - 399) / 400;
-  const unsigned yoe = static_cast<unsigned>(y - era * 400);
-  const unsigned doy = (153 * (m + (m > 2 ? -3 : 9)) + 2) / 5 + d - 1;
-  const unsigned doe = yoe * 365 + yoe / 4 - yoe / 100 + doy;
-  return era * 146097 + static_cast<std::int64_t>(doe) - 719468;
-}
+std::int64_t days_from_civil(int y, unsigned m, unsigned d) { return civil::days_from_civil(y, m, d); }
 
 void civil_from_days(std::int64_t z, int& y, unsigned& m, unsigned& d) {
-  z += 719468;
-  const std::int64_t era = (z >= 0 ? z : z - 146096) / 146097;
-  const unsigned doe = static_cast<unsigned>(z - era * 146097);
-  const unsigned yoe = (doe - doe / 1460 + doe / 36524 - doe / 146096) / 365;
-  const unsigned doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
-  const unsigned mp = (5 * doy + 2) / 153;
-  d = doy - (153 * mp + 2) / 5 + 1;
-  m = mp < 10 ? mp + 3 : mp - 9;
-  y = static_cast<int>(static_cast<std::int64_t>(yoe) + era * 400 + (m <= 2));
+  const civil::Date c = civil::civil_from_days(z);
+  y = static_cast<int>(c.y);
+  m = c.m;
+  d = c.d;
 }
 
 std::string utc_text(std::int64_t t) {

@@ -12,6 +12,41 @@ import time
 from _tbharness import BIN, CLOCK, Failure, SerialPair, Terminal, Trakbox, check
 
 
+class TmuxPane:
+    """One tmux session's pane as the tests drive it by hand: keys with send-keys, the screen read
+    with capture-pane, a pattern waited for (ScreenUI is the menus' own driver over the same)."""
+
+    def __init__(self, session):
+        self.session = session
+
+    def tmux(self, *args):
+        return subprocess.run(["tmux", *args], capture_output=True, text=True, timeout=10)
+
+    def screen(self):
+        return self.tmux("capture-pane", "-t", self.session, "-p").stdout
+
+    def wait_for(self, pattern, timeout=10.0):
+        deadline = time.time() + timeout
+        while True:
+            s = self.screen()
+            if re.search(pattern, s):
+                return s
+            if time.time() > deadline:
+                raise Failure(f"screen never showed {pattern!r}; it shows:\n{s}")
+            time.sleep(0.2)
+
+    def keys(self, *k):
+        self.tmux("send-keys", "-t", self.session, *k)
+
+    def start(self, command, cols=100, rows=34):
+        """A new session (an old one of the same name ended first) running `command` under sh, with
+        its exit status printed and the pane kept for a minute so the screen can still be read."""
+        self.tmux("kill-session", "-t", self.session)
+        r = self.tmux("new-session", "-d", "-s", self.session, "-x", str(cols), "-y", str(rows), "env", "TERM=xterm",
+                      "sh", "-c", f"{command}; echo EXITED $?; sleep 60")
+        check(r.returncode == 0, f"tmux: {r.stderr}")
+
+
 class LineUI:
     """A walkthrough's view of the serial line: keys out, the transcript in.
 

@@ -6,46 +6,24 @@ import json
 import os
 import re
 import shutil
-import subprocess
 import sys
 import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import BIN, CLOCK, Failure, check, run_test  # noqa: E402
+from _tbui import TmuxPane  # noqa: E402
+from _tbharness import BIN, CLOCK, check, run_test  # noqa: E402
 
 SESSION = f"trakbox-it-{os.getpid()}"
 
 
-def tmux(*args):
-    return subprocess.run(["tmux", *args], capture_output=True, text=True, timeout=10)
-
-
-def screen():
-    return tmux("capture-pane", "-t", SESSION, "-p").stdout
-
-
-def wait_for(pattern, timeout=10.0):
-    deadline = time.time() + timeout
-    while True:
-        s = screen()
-        if re.search(pattern, s):
-            return s
-        if time.time() > deadline:
-            raise Failure(f"screen never showed {pattern!r}; it shows:\n{s}")
-        time.sleep(0.2)
-
-
-def keys(*k):
-    tmux("send-keys", "-t", SESSION, *k)
+pane = TmuxPane(SESSION)
+tmux, screen, wait_for, keys = pane.tmux, pane.screen, pane.wait_for, pane.keys
 
 
 def main():
     state = tempfile.mkdtemp(prefix="trakbox-ui-")
-    tmux("kill-session", "-t", SESSION)
-    cmd = f"{BIN} --state {state} --clock {CLOCK} --satrak-port 0; echo EXITED $?; sleep 60"
-    r = tmux("new-session", "-d", "-s", SESSION, "-x", "100", "-y", "34", "env", "TERM=xterm", "sh", "-c", cmd)
-    check(r.returncode == 0, f"tmux: {r.stderr}")
+    pane.start(f"{BIN} --state {state} --clock {CLOCK} --satrak-port 0")
     try:
         wait_for(r"Select \[1-8,S,M\]:")
         s = wait_for(r"UTC \| .* \| Rotor SIM OFF")

@@ -2,7 +2,12 @@
 // tracker and station loop on the simulated rotator and radio, and a scripted terminal whose waits
 // advance the clock and tick the station (as the event loop would).
 #pragma once
+#include <doctest/doctest.h>
+
+#include <initializer_list>
 #include <memory>
+#include <string>
+#include <string_view>
 
 #include "menus/menus.h"
 #include "menus/term/script_terminal.h"
@@ -35,5 +40,20 @@ struct MenuFixture : StationFixture {
   term::ScriptTerminal term;
   int saves = 0;
 };
+
+// What a menu printed: whether it holds `what`, and how many times (overlapping ones too).
+inline bool has(const std::string& text, std::string_view what) { return text.find(what) != std::string::npos; }
+inline std::size_t count(const std::string& text, std::string_view what) {
+  std::size_t n = 0;
+  for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
+  return n;
+}
+// Each of `parts` is in what the menu printed (a check each, the part named when it fails).
+inline void check_shows(const std::string& text, std::initializer_list<std::string_view> parts) {
+  for (const std::string_view part : parts) {
+    CAPTURE(part);
+    CHECK(has(text, part));
+  }
+}
 
 }  // namespace tb::testing

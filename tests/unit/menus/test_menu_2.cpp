@@ -11,6 +11,7 @@
 #include "orbit/passes.h"
 
 using namespace tb;
+using testing::count;
 
 namespace {
 
@@ -19,12 +20,6 @@ std::vector<std::string> lines_of(const std::string& text) {
   std::istringstream in(text);
   for (std::string l; std::getline(in, l);) out.push_back(l);
   return out;
-}
-
-std::size_t count(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
-  return n;
 }
 
 // Table rows: lines that start with a date.

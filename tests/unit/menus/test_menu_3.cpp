@@ -19,16 +19,11 @@
 #include "radio/freqmode.h"
 
 using namespace tb;
+using testing::check_shows;
+using testing::has;
+using testing::count;
 
 namespace {
-
-std::size_t count(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
-  return n;
-}
-
-bool has(const std::string& text, const std::string& what) { return text.find(what) != std::string::npos; }
 
 // '\n' line ends to CR LF, as a terminal program sends them.
 std::string crlf(const std::string& text) {
@@ -299,19 +294,21 @@ TEST_CASE("Menu 3-3: the manual's transcript — the shipped NASA file and freq/
   f.term.feed("3\rY\rN" + crlf(tle) + "\x1a" + crlf(fm) + "\x1a" + "Q\r");
   menus::menu_3_update_elements(f.term, *f.services);
   const std::string& out = f.term.output();
-  CHECK(has(out, " Select: 3\nStored data in memory will be lost.\nAre you sure ? [Y/N] ? Y\n"));
-  CHECK(has(out, "File format NASA/AMSAT (N/A) : N\nUpload Kepeledata file. (EOF:ctrl+Z)\n"));
-  // Echoed as received, line by line.
-  CHECK(has(out, "AO-07\n1 07530U 74089B   26141.31992461 -.00000054  00000-0 -48931-4 0  9992\n"));
-  CHECK(has(out, "NASA>#1 AO-07\nNASA>#2 AO-27\nNASA>#3 FO-29\nNASA>#4 ISS\n"));
-  CHECK(has(out, "NASA>#20 TEVEL2-1\n20 satellite(s) accepted, 0 record(s) skipped.\n"));
-  CHECK(has(out, "Upload freq/mode data file. (EOF:ctrl+Z)\nAO-07 145.950 432.150 usb lsb cat no "
-                 "down=145.925-145.975 up=432.125-432.175 inv=y\n"));
-  CHECK(has(out, "Satellite (AO-07) updated and selected as # 1\n"));
-  CHECK(has(out, "Satellite (QO-100) updated and selected as # 10\n"));
-  CHECK(has(out, "Satellite (IO-117) updated and selected as # 14\n"));
-  CHECK(has(out, "     *** Satellite database ***\n 1.*AO-07"));
-  CHECK(has(out, "Tracking stopped"));
+  check_shows(out, {
+      " Select: 3\nStored data in memory will be lost.\nAre you sure ? [Y/N] ? Y\n",
+      "File format NASA/AMSAT (N/A) : N\nUpload Kepeledata file. (EOF:ctrl+Z)\n",
+      // Echoed as received, line by line.
+      "AO-07\n1 07530U 74089B   26141.31992461 -.00000054  00000-0 -48931-4 0  9992\n",
+      "NASA>#1 AO-07\nNASA>#2 AO-27\nNASA>#3 FO-29\nNASA>#4 ISS\n",
+      "NASA>#20 TEVEL2-1\n20 satellite(s) accepted, 0 record(s) skipped.\n",
+      "Upload freq/mode data file. (EOF:ctrl+Z)\nAO-07 145.950 432.150 usb lsb cat no "
+      "down=145.925-145.975 up=432.125-432.175 inv=y\n",
+      "Satellite (AO-07) updated and selected as # 1\n",
+      "Satellite (QO-100) updated and selected as # 10\n",
+      "Satellite (IO-117) updated and selected as # 14\n",
+      "     *** Satellite database ***\n 1.*AO-07",
+      "Tracking stopped",
+  });
   CHECK(count(out, "UPDATE MENU") == 2);  // the menu-3 list again
   CHECK(db_json(f.model) == shipped);
   CHECK(f.tracker.mode() == tracker::Mode::off);

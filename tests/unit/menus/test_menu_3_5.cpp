@@ -20,10 +20,10 @@
 #include "radio/freqmode.h"
 
 using namespace tb;
+using testing::check_shows;
+using testing::has;
 
 namespace {
-
-bool has(const std::string& text, const std::string& what) { return text.find(what) != std::string::npos; }
 
 std::string db_json(const store::Model& m) { return store::to_json(m)["db"].dump(); }
 
@@ -39,12 +39,14 @@ TEST_CASE("3-5 adds and deletes element sources, sets the interval, and refuses 
       "R\rQ\r");
   menus::menu_3_5_refresh(f.term, *f.services);
   const std::string& out = f.term.output();
-  CHECK(has(out, "======= ELEMENT REFRESH =======\n No element source: the database is refreshed only by hand (3-3).\n"
-                 " Every 12.0 hours (at least 2).\n"));
-  CHECK(has(out, "  Not added: 'celetrak.tle' is neither an http(s)://, ftp(s):// or file:/// URL nor an absolute file name"));
-  CHECK(has(out, "  1 is out of range: expected 2 to 720"));
-  CHECK(has(out, "  '3': enter a number from 1 to 2"));
-  CHECK(has(out, " 1. /srv/elements/extra.tle\n Every 6.0 hours (at least 2).\n"));
+  check_shows(out, {
+      "======= ELEMENT REFRESH =======\n No element source: the database is refreshed only by hand (3-3).\n"
+      " Every 12.0 hours (at least 2).\n",
+      "  Not added: 'celetrak.tle' is neither an http(s)://, ftp(s):// or file:/// URL nor an absolute file name",
+      "  1 is out of range: expected 2 to 720",
+      "  '3': enter a number from 1 to 2",
+      " 1. /srv/elements/extra.tle\n Every 6.0 hours (at least 2).\n",
+  });
   const store::RefreshSettings& r = f.model.refresh;
   REQUIRE(r.sources.size() == 1);
   CHECK(r.sources[0].url == "/srv/elements/extra.tle");

@@ -16,10 +16,9 @@
 #include "support/manual_samples.h"
 
 using namespace tb;
+using testing::has;
 
 namespace {
-
-bool has(const std::string& out, std::string_view text) { return out.find(text) != std::string::npos; }
 
 // Rebuilds the fixture's station around a simulated rotator with these mechanics.
 void rebuild(testing::MenuFixture& f, rotator::SimulatedRotatorParams p) {

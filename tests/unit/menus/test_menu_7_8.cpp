@@ -7,10 +7,9 @@
 #include "rotator/adc_model.h"
 
 using namespace tb;
+using testing::has;
 
 namespace {
-
-bool has(const std::string& out, std::string_view text) { return out.find(text) != std::string::npos; }
 
 using testing::kAzTol;
 using testing::kElTol;

@@ -13,6 +13,7 @@
 #include "orbit/passes.h"
 
 using namespace tb;
+using testing::count;
 using orbit::from_civil;
 
 namespace {
@@ -33,12 +34,6 @@ orbit::Pass pass_at(const testing::MenuFixture& f, int number, orbit::UtcTime t)
     if (p.aos <= t && t <= p.los) return p;
   FAIL("list entry #" << number << " is not up at " << orbit::format_iso8601(t));
   return {};
-}
-
-std::size_t count(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
-  return n;
 }
 
 // Changes of the AOS satellite while the tracker ticks once a second over [from, to].

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <optional>
+#include <utility>
 
 #include "fixture.h"
 #include "menus/realtime_display.h"
@@ -37,35 +39,47 @@ struct Rs44 : testing::MenuFixture {
 }  // namespace
 
 TEST_CASE("parse_spot_hz: MHz with up to 6 decimals, whole Hz, or whole MHz under 1 000 000; nothing else") {
-  CHECK(menus::parse_spot_hz("435.645") == 435'645'000);
-  CHECK(menus::parse_spot_hz("435.645001") == 435'645'001);
-  CHECK(menus::parse_spot_hz("435.") == 435'000'000);
-  CHECK(menus::parse_spot_hz("435645000") == 435'645'000);
-  CHECK(menus::parse_spot_hz("10489.750") == 10'489'750'000);
-  CHECK(menus::parse_spot_hz("437") == 437'000'000);          // under 1 000 000: MHz
-  CHECK(menus::parse_spot_hz("999999") == 999'999'000'000);
-  CHECK(menus::parse_spot_hz("1000000") == 1'000'000);        // Hz from there on
-  CHECK_FALSE(menus::parse_spot_hz("435.6450001"));   // below 1 Hz
-  CHECK_FALSE(menus::parse_spot_hz("-435.645"));
-  CHECK_FALSE(menus::parse_spot_hz("+435.645"));
-  CHECK_FALSE(menus::parse_spot_hz("4.35e8"));
-  CHECK_FALSE(menus::parse_spot_hz("435 645"));
-  CHECK_FALSE(menus::parse_spot_hz(".645"));
-  CHECK_FALSE(menus::parse_spot_hz("0"));
-  CHECK_FALSE(menus::parse_spot_hz(""));
-  CHECK_FALSE(menus::parse_spot_hz("abc"));
+  const std::pair<const char*, std::optional<long long>> cases[] = {
+      {"435.645", 435'645'000},
+      {"435.645001", 435'645'001},
+      {"435.", 435'000'000},
+      {"435645000", 435'645'000},
+      {"10489.750", 10'489'750'000},
+      {"437", 437'000'000},  // under 1 000 000: MHz
+      {"999999", 999'999'000'000},
+      {"1000000", 1'000'000},  // Hz from there on
+      {"435.6450001", std::nullopt},  // below 1 Hz
+      {"-435.645", std::nullopt},
+      {"+435.645", std::nullopt},
+      {"4.35e8", std::nullopt},
+      {"435 645", std::nullopt},
+      {".645", std::nullopt},
+      {"0", std::nullopt},
+      {"", std::nullopt},
+      {"abc", std::nullopt},
+  };
+  for (const auto& [text, hz] : cases) {
+    CAPTURE(text);
+    CHECK(menus::parse_spot_hz(text) == hz);
+  }
 }
 
 TEST_CASE("parse_offset_hz: a signed whole number of Hz") {
-  CHECK(menus::parse_offset_hz("-300") == -300);
-  CHECK(menus::parse_offset_hz("+120") == 120);
-  CHECK(menus::parse_offset_hz("120") == 120);
-  CHECK(menus::parse_offset_hz("0") == 0);
-  CHECK_FALSE(menus::parse_offset_hz("12.5"));
-  CHECK_FALSE(menus::parse_offset_hz("+-1"));
-  CHECK_FALSE(menus::parse_offset_hz("-"));
-  CHECK_FALSE(menus::parse_offset_hz("1e3"));
-  CHECK_FALSE(menus::parse_offset_hz("1234567890"));
+  const std::pair<const char*, std::optional<long long>> cases[] = {
+      {"-300", -300},
+      {"+120", 120},
+      {"120", 120},
+      {"0", 0},
+      {"12.5", std::nullopt},
+      {"+-1", std::nullopt},
+      {"-", std::nullopt},
+      {"1e3", std::nullopt},
+      {"1234567890", std::nullopt},
+  };
+  for (const auto& [text, hz] : cases) {
+    CAPTURE(text);
+    CHECK(menus::parse_offset_hz(text) == hz);
+  }
 }
 
 TEST_CASE("Menu 1: S typed moves RS-44's passband +5 kHz; the dials follow by the transponder's rule") {

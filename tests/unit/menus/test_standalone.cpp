@@ -8,16 +8,11 @@
 #include "menus/standalone.h"
 
 using namespace tb;
+using testing::count;
 using namespace tb::menus;
 using orbit::from_civil;
 
 namespace {
-
-std::size_t count(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
-  return n;
-}
 
 bool no_terminal_mode() {
   FAIL("terminal mode was not asked for");
