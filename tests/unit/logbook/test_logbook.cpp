@@ -25,7 +25,7 @@ struct TempBook {
 };
 
 // The shared sample without its id (the logbook gives one).
-Qso rs44() {
+Qso unsaved_rs44() {
   Qso q = tb::testing::rs44_qso();
   q.id = 0;
   return q;
@@ -38,7 +38,7 @@ TEST_CASE("A QSO is stored with every field, survives reopening, and the schema 
   {
     auto book = Logbook::open(t.path(), err);
     REQUIRE_MESSAGE(book, err);
-    const Added a = book->add(rs44());
+    const Added a = book->add(unsaved_rs44());
     REQUIRE_MESSAGE(a.ok(), a.error);
     CHECK(a.id == 1);
   }
@@ -46,7 +46,7 @@ TEST_CASE("A QSO is stored with every field, survives reopening, and the schema 
   REQUIRE(book);
   const auto q = book->get(1);
   REQUIRE(q);
-  Qso want = rs44();
+  Qso want = unsaved_rs44();
   want.id = 1;
   want.band = "2m";
   want.band_rx = "70cm";
@@ -61,7 +61,7 @@ TEST_CASE("A bad record is refused naming the field and nothing is stored") {
   std::string err;
   auto book = Logbook::open(t.path(), err);
   REQUIRE(book);
-  Qso q = rs44();
+  Qso q = unsaved_rs44();
   q.grid = "FN3";
   const Added a = book->add(q);
   CHECK_FALSE(a.ok());
@@ -74,8 +74,8 @@ TEST_CASE("An edit keeps the previous version; delete is a mark with a version o
   std::string err;
   auto book = Logbook::open(t.path(), err);
   REQUIRE(book);
-  REQUIRE(book->add(rs44()).ok());
-  Qso changed = rs44();
+  REQUIRE(book->add(unsaved_rs44()).ok());
+  Qso changed = unsaved_rs44();
   changed.grid = "FN42";
   changed.source = Source::cli;  // the source of a record stays the one it was made by
   REQUIRE(book->edit(1, changed).ok());
@@ -95,7 +95,7 @@ TEST_CASE("An edit keeps the previous version; delete is a mark with a version o
   CHECK(book->list(0, true)[0].deleted);
   CHECK(book->versions(1).size() == 2);
   CHECK(book->remove(1).error == "id: no QSO 1 in the log");
-  CHECK(book->edit(7, rs44()).error == "id: no QSO 7 in the log");
+  CHECK(book->edit(7, unsaved_rs44()).error == "id: no QSO 7 in the log");
 }
 
 TEST_CASE("Import stores all or nothing and recognises duplicates") {
@@ -103,15 +103,15 @@ TEST_CASE("Import stores all or nothing and recognises duplicates") {
   std::string err;
   auto book = Logbook::open(t.path(), err);
   REQUIRE(book);
-  REQUIRE(book->add(rs44()).ok());
-  Qso other = rs44();
+  REQUIRE(book->add(unsaved_rs44()).ok());
+  Qso other = unsaved_rs44();
   other.call = "K1JT";
-  Qso bad = rs44();
+  Qso bad = unsaved_rs44();
   bad.call = "K1 JT";
   const Imported refused = book->import({other, bad});
   CHECK(refused.error == "record 2: call: 'K1 JT' is not a callsign (letters, digits and '/' only)");
   CHECK(book->count() == 1);
-  const Imported r = book->import({rs44(), other, other});
+  const Imported r = book->import({unsaved_rs44(), other, other});
   CHECK(r.error.empty());
   CHECK(r.added == 1);
   CHECK(r.duplicates == 2);
@@ -124,7 +124,7 @@ TEST_CASE("The upload queue is on disk: it is there after reopening until marked
   {
     auto book = Logbook::open(t.path(), err);
     REQUIRE(book);
-    REQUIRE(book->add(rs44(), true).ok());
+    REQUIRE(book->add(unsaved_rs44(), true).ok());
     book->upload_failed(1, 1796161520, "logger: connection refused");
   }
   auto book = Logbook::open(t.path(), err);
@@ -159,7 +159,7 @@ TEST_CASE("The cost of one insert with synchronous=FULL (one transaction, fsync 
   const auto t0 = std::chrono::steady_clock::now();
   constexpr int kN = 20;
   for (int i = 0; i < kN; ++i) {
-    Qso q = rs44();
+    Qso q = unsaved_rs44();
     q.time_on += i;
     REQUIRE(book->add(q).ok());
   }

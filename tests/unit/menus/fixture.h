@@ -11,6 +11,9 @@
 
 #include "menus/menus.h"
 #include "menus/term/script_terminal.h"
+#include <nlohmann/json.hpp>
+
+#include "store/model.h"
 #include "support/sim_station.h"
 
 namespace tb::testing {
@@ -48,6 +51,9 @@ inline std::size_t count(const std::string& text, std::string_view what) {
   for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
   return n;
 }
+// The database part of the model as stored (JSON text), to compare a database before and after.
+inline std::string db_json(const store::Model& m) { return store::to_json(m)["db"].dump(); }
+
 // Each of `parts` is in what the menu printed (a check each, the part named when it fails).
 inline void check_shows(const std::string& text, std::initializer_list<std::string_view> parts) {
   for (const std::string_view part : parts) {

@@ -20,6 +20,7 @@
 
 using namespace tb;
 using testing::check_shows;
+using testing::db_json;
 using testing::has;
 using testing::count;
 
@@ -52,7 +53,6 @@ std::string amsat_text(const store::Database& db, const std::vector<std::string>
   return out + "/EX\n";
 }
 
-std::string db_json(const store::Model& m) { return store::to_json(m)["db"].dump(); }
 
 // Enter on each of the 20 lines of 3-1.
 std::string enters(int n) { return std::string(static_cast<std::size_t>(n), '\r'); }

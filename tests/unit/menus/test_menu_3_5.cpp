@@ -21,11 +21,11 @@
 
 using namespace tb;
 using testing::check_shows;
+using testing::db_json;
 using testing::has;
 
 namespace {
 
-std::string db_json(const store::Model& m) { return store::to_json(m)["db"].dump(); }
 
 }  // namespace
 

@@ -16,7 +16,7 @@ namespace {
 
 using Fixture = testing::MenuFixture;
 
-struct Script {
+struct LimitScript {
   std::string name;
   std::string keys;
   std::vector<std::string> shown = {};
@@ -27,7 +27,7 @@ struct Script {
 }  // namespace
 
 TEST_CASE("Menus 6-4 and 6-9 with limits that split the travel") {
-  const std::vector<Script> scripts = {
+  const std::vector<LimitScript> scripts = {
       {.name = "6-4 with limits that split the travel, as barriers: the warning says what is reachable",
        .keys = "4\rN" "Y\r10\r350\r\r\rQ\r",
        .shown = {"Limits split the travel: with the rotor stop at 180.0 (South start) the\n"
@@ -65,7 +65,7 @@ TEST_CASE("Menus 6-4 and 6-9 with limits that split the travel") {
        }},
 
   };
-  for (const Script& s : scripts) {
+  for (const LimitScript& s : scripts) {
     DOCTEST_SUBCASE(s.name.c_str()) {
       Fixture f(s.keys);
       menus::menu_6_configuration(f.term, *f.services);

@@ -9,8 +9,14 @@
 #include "orbit/observe.h"
 #include "orbit/pass_tools.h"
 #include "support/gpredict_sets.h"
+#include "pass_places.h"
 
 using namespace tb::orbit;
+
+using tb::testing::kDarmstadt;
+using tb::testing::kDay0;
+using tb::testing::kDay1;
+using tb::testing::kSydney;
 
 namespace {
 
@@ -24,11 +30,7 @@ const Elements& iss() {
   return e;
 }
 
-const Observer kDarmstadt{49.8706, 8.6494, 140.0};
 const Observer kMunich{48.1375, 11.5755, 520.0};   // JN58td
-const Observer kSydney{-33.8688, 151.2093, 50.0};
-const UtcTime kDay0 = from_civil(2018, 1, 21);
-const UtcTime kDay1 = from_civil(2018, 1, 22);
 
 }  // namespace
 

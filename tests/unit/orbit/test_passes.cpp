@@ -10,8 +10,14 @@
 #include "orbit/elements.h"
 #include "orbit/passes.h"
 #include "support/gpredict_sets.h"
+#include "pass_places.h"
 
 using namespace tb::orbit;
+
+using tb::testing::kDarmstadt;
+using tb::testing::kDay0;
+using tb::testing::kDay1;
+using tb::testing::kSydney;
 
 namespace {
 
@@ -32,12 +38,8 @@ const Elements& set(int catalog_number) {
 }
 
 const Observer kTucson{32.2226, -110.9747, 800.0};
-const Observer kDarmstadt{49.8706, 8.6494, 140.0};
-const Observer kSydney{-33.8688, 151.2093, 50.0};
 const Observer kTromso{69.6496, 18.9560, 100.0};
 
-const UtcTime kDay0 = from_civil(2018, 1, 21);
-const UtcTime kDay1 = from_civil(2018, 1, 22);
 double since0(UtcTime t) { return minutes_between(kDay0, t) * 60.0; }
 
 // --- Skyfield reference -----------------------------------------------------------------------------

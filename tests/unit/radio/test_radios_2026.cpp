@@ -37,11 +37,11 @@ using tbtest::Yaesu5;
 
 namespace {
 
-const WorkerTiming kFast{20ms, 100ms, 50ms};
+const WorkerTiming kFastWorker{20ms, 100ms, 50ms};
 
-DriverTiming timing() {
+DriverTiming patient_timing() {
   DriverTiming t;
-  t.worker = kFast;
+  t.worker = kFastWorker;
   t.yaesu_byte_gap = 1ms;
   t.icom_echo_margin = 1000ms;   // patient: a loaded machine is no collision
   t.icom_reply_timeout = 1000ms;
@@ -93,7 +93,7 @@ TEST_CASE("IC-9700, echo on and off: satellite mode, Main down / Sub up, read-ba
     PtyPair pair;
     REQUIRE(pair.ok());
     Ic9700 rig(pair.test_side(), echo);
-    auto made = make_radio("ic9700:" + pair.radio_side(), RadioConfig{}, timing());
+    auto made = make_radio("ic9700:" + pair.radio_side(), RadioConfig{}, patient_timing());
     REQUIRE(made.driver);
     RadioDriver& radio = *made.driver;
 
@@ -194,7 +194,7 @@ TEST_CASE("IC-9700: a refused tone and a refused satellite mode are reported; Do
   Ic9700 rig(pair.test_side(), false);
   rig.refuse_tone = true;
   rig.refuse_satmode = true;
-  auto made = make_radio("ic9700:" + pair.radio_side(), RadioConfig{}, timing());
+  auto made = make_radio("ic9700:" + pair.radio_side(), RadioConfig{}, patient_timing());
   RadioDriver& radio = *made.driver;
   so50_first_update(radio);
   CHECK(radio.status().failures >= 1);   // the tone's NG was reported
@@ -226,7 +226,7 @@ TEST_CASE("IC-9100 and IC-910H: their addresses and satellite-mode commands, Mai
     PtyPair pair;
     REQUIRE(pair.ok());
     Ic9700 rig(pair.test_side(), true, c.address);   // a CI-V bus: with the echo
-    auto made = make_radio(std::string(c.spec) + pair.radio_side(), RadioConfig{}, timing());
+    auto made = make_radio(std::string(c.spec) + pair.radio_side(), RadioConfig{}, patient_timing());
     rs44_first_update(*made.driver);
     CHECK(hex_all(rig.frames()) == c.first);
     CHECK(rig.frequency(icom::Band::sub) == 435'643'780);
@@ -236,7 +236,7 @@ TEST_CASE("IC-9100 and IC-910H: their addresses and satellite-mode commands, Mai
   PtyPair pair;
   REQUIRE(pair.ok());
   Ic9700 rig(pair.test_side(), false, 0x7C);
-  auto made = make_radio("ic9100:" + pair.radio_side() + ":maindown", RadioConfig{}, timing());
+  auto made = make_radio("ic9100:" + pair.radio_side() + ":maindown", RadioConfig{}, patient_timing());
   rs44_first_update(*made.driver);
   CHECK(rig.frequency(icom::Band::main) == 435'643'780);
   CHECK(rig.frequency(icom::Band::sub) == 145'963'730);
@@ -247,7 +247,7 @@ TEST_CASE("A model without a CTCSS encoder refuses a tone with a message, never 
   PtyPair pair;
   REQUIRE(pair.ok());
   PtyEnd peer(pair.test_side());
-  auto made = make_radio("ic910h:" + pair.radio_side(), RadioConfig{}, timing());
+  auto made = make_radio("ic910h:" + pair.radio_side(), RadioConfig{}, patient_timing());
   made.driver->set_ctcss_tone(670);
   // A limit of the radio, learnt once: in the status's limits and the log, never a fault or a failure.
   REQUIRE(eventually([&] { return !made.driver->status().limits.empty(); }));
@@ -256,7 +256,7 @@ TEST_CASE("A model without a CTCSS encoder refuses a tone with a message, never 
   CHECK(made.driver->status().failures == 0);
   // The families of menu 6-7 neither: a tone is refused with the same message, never dropped silently.
   for (const char* spec : {"kenwood:", "yaesu:", "icom:"}) {
-    auto fam = make_radio(std::string(spec) + pair.radio_side(), RadioConfig{}, timing());
+    auto fam = make_radio(std::string(spec) + pair.radio_side(), RadioConfig{}, patient_timing());
     fam.driver->set_ctcss_tone(885);
     REQUIRE(eventually([&] { return fam.driver->status().limits.ends_with(": no CTCSS"); }));
   }
@@ -267,7 +267,7 @@ TEST_CASE("FT-847: CAT on, satellite mode, SAT RX / SAT TX opcodes, read-back, C
   PtyPair pair;
   REQUIRE(pair.ok());
   Yaesu5 rig(pair.test_side());
-  auto made = make_radio("ft847:" + pair.radio_side(), RadioConfig{}, timing());
+  auto made = make_radio("ft847:" + pair.radio_side(), RadioConfig{}, patient_timing());
   RadioDriver& radio = *made.driver;
   rs44_first_update(radio);
   REQUIRE(eventually([&] { return rig.commands().size() >= 6; }));
@@ -305,7 +305,7 @@ TEST_CASE("FT-847: CAT on, satellite mode, SAT RX / SAT TX opcodes, read-back, C
 
 TEST_CASE("FT-817 pair: each radio one link on its VFO, read-back, tone on the uplink radio" * doctest::skip(tb::testing::skip_without({"socat"}))) {
   tb::testing::require_tools({"socat"});
-  tbtest::Ft817Pair pair(timing());
+  tbtest::Ft817Pair pair(patient_timing());
   REQUIRE(pair.ok());
   Yaesu5 &down = *pair.down, &up = *pair.up;
   RadioDriver& radio = pair.radio();
@@ -333,7 +333,7 @@ TEST_CASE("An FT-817 alone refuses the uplink with a message" * doctest::skip(tb
   PtyPair pair;
   REQUIRE(pair.ok());
   Yaesu5 rig(pair.test_side());
-  auto made = make_radio("ft817:" + pair.radio_side(), RadioConfig{}, timing());
+  auto made = make_radio("ft817:" + pair.radio_side(), RadioConfig{}, patient_timing());
   made.driver->set_frequency(Link::uplink, 145'900'000);
   REQUIRE(made.driver->wait_idle(10000ms));
   CHECK(made.driver->status().limits == made.driver->describe() + ": no uplink");
@@ -347,7 +347,7 @@ TEST_CASE("TS-2000: satellite mode SA, Main down (FA) / Sub up (FB), modes with 
   PtyPair pair;
   REQUIRE(pair.ok());
   Ts2000 rig(pair.test_side());   // found as SatPC32 leaves it: SA0010000
-  auto made = make_radio("ts2000:" + pair.radio_side(), RadioConfig{}, timing());
+  auto made = make_radio("ts2000:" + pair.radio_side(), RadioConfig{}, patient_timing());
   RadioDriver& radio = *made.driver;
   rs44_first_update(radio);
   REQUIRE(eventually([&] { return rig.commands().size() >= 10; }));
@@ -385,7 +385,7 @@ TEST_CASE("TS-2000: VFO A in memory mode first goes to VFO; an SO-50 tone on Sub
   PtyPair pair;
   REQUIRE(pair.ok());
   Ts2000 rig(pair.test_side(), "0010110", '2');   // TRACE and REV on, VFO A on a memory
-  auto made = make_radio("ts2000:" + pair.radio_side(), RadioConfig{}, timing());
+  auto made = make_radio("ts2000:" + pair.radio_side(), RadioConfig{}, patient_timing());
   RadioDriver& radio = *made.driver;
   so50_first_update(radio);
   REQUIRE(eventually([&] { return rig.commands().size() >= 16; }));
@@ -407,7 +407,7 @@ TEST_CASE("TS-2000: VFO A in memory mode first goes to VFO; an SO-50 tone on Sub
   REQUIRE(pair2.ok());
   Ts2000 refusing(pair2.test_side());
   refusing.refuse_tone = true;
-  auto made2 = make_radio("ts2000:" + pair2.radio_side(), RadioConfig{}, timing());
+  auto made2 = make_radio("ts2000:" + pair2.radio_side(), RadioConfig{}, patient_timing());
   made2.driver->set_frequency(Link::downlink, 436'795'000);
   made2.driver->set_frequency(Link::uplink, 145'850'000);
   made2.driver->set_ctcss_tone(670);
@@ -430,7 +430,7 @@ TEST_CASE("TS-2000: Hamlib's simulator answers SA0; and takes no SA: reported on
   REQUIRE(pair.ok());
   Ts2000 rig(pair.test_side());
   rig.hamlib_sim = true;
-  auto made = make_radio("ts2000:" + pair.radio_side(), RadioConfig{}, timing());
+  auto made = make_radio("ts2000:" + pair.radio_side(), RadioConfig{}, patient_timing());
   RadioDriver& radio = *made.driver;
   rs44_first_update(radio);
   radio.set_ctcss_tone(670);
@@ -448,9 +448,9 @@ TEST_CASE("TS-2000: Hamlib's simulator answers SA0; and takes no SA: reported on
 }
 
 TEST_CASE("TS-2000 :mainup is refused: its satellite mode is driven Main down / Sub up only") {
-  auto made = make_radio("ts2000:/dev/null:mainup", RadioConfig{}, timing());
+  auto made = make_radio("ts2000:/dev/null:mainup", RadioConfig{}, patient_timing());
   CHECK(made.driver == nullptr);
   CHECK(made.error == "--radio \"ts2000:/dev/null:mainup\": \"mainup\": the Kenwood TS-2000's satellite mode is "
                       "driven with the downlink on Main (FA) and the uplink on Sub (FB) only");
-  CHECK(make_radio("ts2000:/dev/null:maindown", RadioConfig{}, timing()).driver != nullptr);
+  CHECK(make_radio("ts2000:/dev/null:maindown", RadioConfig{}, patient_timing()).driver != nullptr);
 }

@@ -12,6 +12,10 @@
 
 namespace rotator_test {
 
+// Degrees per ADC count of the default span (360 deg over 1023 counts in azimuth, 90 over 511 in
+// elevation): what one count of the model moves.
+inline constexpr double kAzCount = 360.0 / 1023.0, kElCount = 90.0 / 511.0;
+
 struct Rig {
   tb::station::ManualClock clock;
   tb::rotator::SimulatedRotator* sim = nullptr;

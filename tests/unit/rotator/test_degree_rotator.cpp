@@ -8,11 +8,14 @@
 #include <vector>
 
 #include "rotator/controller.h"
+#include "fixture.h"
 
 using namespace tb::rotator;
 using namespace std::chrono_literals;
 using tb::orbit::from_civil;
 using tb::station::RotorStart;
+using rotator_test::kAzCount;
+using rotator_test::kElCount;
 
 namespace {
 
@@ -34,11 +37,11 @@ class FakeDegrees final : public DegreeRotator {
   Range az_range() override { return range; }
 };
 
-struct Rig {
+struct DegreeRig {
   FakeDegrees* rot = nullptr;
   std::unique_ptr<Controller> ctl;
   tb::orbit::UtcTime now = from_civil(2026, 4, 1, 12);
-  explicit Rig(RotatorConfig c = {}, RotorStart start = RotorStart::north) {
+  explicit DegreeRig(RotatorConfig c = {}, RotorStart start = RotorStart::north) {
     spdlog::set_level(spdlog::level::off);
     auto f = std::make_unique<FakeDegrees>();
     rot = f.get();
@@ -50,12 +53,11 @@ struct Rig {
   }
 };
 
-constexpr double kAzCount = 360.0 / 1023, kElCount = 90.0 / 511;
 
 }  // namespace
 
 TEST_CASE("A degree rotator is sent its target once, and nothing inside the dead band") {
-  Rig rig;
+  DegreeRig rig;
   rig.tick();
   CHECK(rig.ctl->status().has_position);
   CHECK(rig.ctl->raw_counts() == Counts{0, 0});
@@ -87,7 +89,7 @@ TEST_CASE("A degree rotator is sent its target once, and nothing inside the dead
 }
 
 TEST_CASE("While it moves, a target creeping inside the dead band of the last command sends nothing new") {
-  Rig rig;
+  DegreeRig rig;
   rig.tick();
   rig.ctl->set_target(AzEl{90.0, 45.0});
   rig.tick();
@@ -111,7 +113,7 @@ TEST_CASE("Skew means the same counts on a degree rotator") {
   RotatorConfig c;
   c.az_skew = 10;  // 3.52 deg
   c.el_skew = -2;  // -0.35 deg
-  Rig rig(c);
+  DegreeRig rig(c);
   rig.rot->pos = {90.0, 45.0};
   rig.tick();
   CHECK(rig.ctl->status().az.deg == doctest::Approx(90.0 + 10 * kAzCount));
@@ -125,7 +127,7 @@ TEST_CASE("Skew means the same counts on a degree rotator") {
 }
 
 TEST_CASE("Rotor start South on a rotator counting -180..180") {
-  Rig rig({}, RotorStart::south);
+  DegreeRig rig({}, RotorStart::south);
   rig.rot->range = {-180.0, 180.0};
   rig.rot->pos = {-90.0, 0.0};  // west
   rig.tick();
@@ -142,7 +144,7 @@ TEST_CASE("Rotor start South on a rotator counting -180..180") {
 }
 
 TEST_CASE("An unchanged target is sent again while the rotator idles off target") {
-  Rig rig;
+  DegreeRig rig;
   rig.ctl->set_target(AzEl{50.0, 10.0});
   rig.tick();
   CHECK(rig.rot->sent.size() == 1);
@@ -156,7 +158,7 @@ TEST_CASE("An unchanged target is sent again while the rotator idles off target"
 }
 
 TEST_CASE("A degree rotator fault: nothing sent, position invalid, target resent on recovery") {
-  Rig rig;
+  DegreeRig rig;
   rig.ctl->set_target(AzEl{50.0, 10.0});
   rig.tick();
   CHECK(rig.rot->sent.size() == 1);
@@ -174,7 +176,7 @@ TEST_CASE("A degree rotator fault: nothing sent, position invalid, target resent
 }
 
 TEST_CASE("Keyboard control and stop on a degree rotator") {
-  Rig rig;
+  DegreeRig rig;
   rig.rot->pos = {100.0, 20.0};
   rig.tick();
   rig.ctl->manual_key('6');

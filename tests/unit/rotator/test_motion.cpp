@@ -12,10 +12,11 @@
 using namespace tb::rotator;
 using namespace std::chrono_literals;
 using tb::station::RotorStart;
+using rotator_test::kAzCount;
+using rotator_test::kElCount;
 using rotator_test::Rig;
 
 namespace {
-constexpr double kAzCount = 360.0 / 1023.0, kElCount = 90.0 / 511.0;
 
 // A rig whose simulated rotator is the one the configuration describes (friction included).
 Rig matching_rig(RotatorPosition at, RotatorConfig c = {}) {
