@@ -172,7 +172,10 @@ def desktop(url):
         for r in rows:
             cells = [c.text for c in r.find_elements("tag name", "td")]
             aos, when = cells[2], cells[4]
-            check(re.fullmatch(r"\d\d:\d\d:\d\d|always up|none", aos) and (aos != "none" or when == "> 24 h"),
+            # The AOS in the browser's local time as its locale writes it ("07:49:04 PM" in en-US),
+            # with the date ("Thu, May 21 ...") when it is not the station clock's day.
+            local = r"(?:\w{3}, (?:\w{3} \d{1,2}|\d{1,2} \w{3}) )?\d\d:\d\d:\d\d(?: [AP]M)?"
+            check(re.fullmatch(local + r"|always up|none", aos) and (aos != "none" or when == "> 24 h"),
                   f"{r.get_attribute('data-name')}: the AOS cell says {aos!r}, in {when!r}")
             said[aos if not aos[0].isdigit() else "a time"] = said.get(aos if not aos[0].isdigit() else "a time", 0) + 1
         print(f"tracking list: {said}")
