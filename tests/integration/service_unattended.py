@@ -119,6 +119,9 @@ def main():
         p = service(state)
         procs.append(p)
         started(state, p)
+        # The socket answers from before the first tick: the choice is followed from that tick on.
+        poll("AO-91 followed after the second restart",
+             lambda: (lambda x: x if x and x["tracking"]["followed"] == "AO-91" else None)(status(state)), 20)
         samples = []
         deadline = time.time() + 90
         while time.time() < deadline:
