@@ -379,6 +379,11 @@ def hooks(state, scratch):
         while not os.path.exists(started) and time.time() < deadline:
             time.sleep(0.1)
         check(os.path.exists(started), "the elements hook ran")
+        # The background sleep is forked before the echo but may exec after it: looked for a moment
+        # (well inside the hook's 2 s limit).
+        deadline = time.time() + 1.5
+        while not orphans(orphan) and time.time() < deadline:
+            time.sleep(0.05)
         check(orphans(orphan), "the hook left its background sleep (the repro)")
         time.sleep(3.5)
         check(not orphans(orphan), f"killed at the hook's 2 s limit: {orphans(orphan)}")
