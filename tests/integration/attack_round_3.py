@@ -26,8 +26,8 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import (BIN, CLOCK, SOURCE, Satrak, check, frame, free_port, read_log, read_until_closed,  # noqa: E402
-                        reap, run_test, tcp_exchange, wait_listening)
+from _tbharness import (BIN, CLOCK, SOURCE, Satrak, check, frame, free_port, poll, read_log,  # noqa: E402
+                        read_until_closed, reap, run_test, tcp_exchange, wait_listening)
 
 LOCAL_ELEMENTS = "file://" + os.path.join(SOURCE, "data", "amateur.tle")
 
@@ -381,10 +381,7 @@ def hooks(state, scratch):
         check(os.path.exists(started), "the elements hook ran")
         # The background sleep is forked before the echo but may exec after it: looked for a moment
         # (well inside the hook's 2 s limit).
-        deadline = time.time() + 1.5
-        while not orphans(orphan) and time.time() < deadline:
-            time.sleep(0.05)
-        check(orphans(orphan), "the hook left its background sleep (the repro)")
+        poll("the hook's background sleep (the repro)", lambda: orphans(orphan), 1.5, every=0.05)
         time.sleep(3.5)
         check(not orphans(orphan), f"killed at the hook's 2 s limit: {orphans(orphan)}")
         p.terminate()
