@@ -78,6 +78,12 @@ def choose_in_menu_1(state):
         os.close(master)
 
 
+def ao91_followed(state, when):
+    """The status document once the station follows AO-91 (the socket answers before the first tick)."""
+    return poll(f"AO-91 followed {when}",
+                lambda: (lambda x: x if x and x["tracking"]["followed"] == "AO-91" else None)(status(state)), 20)
+
+
 def main():
     state = tempfile.mkdtemp(prefix="trakbox-unattended-")
     procs = []
@@ -109,8 +115,7 @@ def main():
         # 2. A restart, nobody attached: AO-91, rotor control still on.
         p = service(state)
         procs.append(p)
-        s = poll("AO-91 followed after the first restart",
-                 lambda: (lambda x: x if x and x["tracking"]["followed"] == "AO-91" else None)(status(state)), 20)
+        s = ao91_followed(state, "after the first restart")
         check(s["tracking"]["mode"] == "single", f"tracked alone: {s['tracking']}")
         check(s["antenna"]["rotor_control"] is True, "rotor control kept")
         check("service: tracking AO-91, as last chosen" in stop(p), "the journal names the choice")
@@ -120,8 +125,7 @@ def main():
         procs.append(p)
         started(state, p)
         # The socket answers from before the first tick: the choice is followed from that tick on.
-        poll("AO-91 followed after the second restart",
-             lambda: (lambda x: x if x and x["tracking"]["followed"] == "AO-91" else None)(status(state)), 20)
+        ao91_followed(state, "after the second restart")
         samples = []
         deadline = time.time() + 90
         while time.time() < deadline:
