@@ -8,21 +8,18 @@ import subprocess
 
 from _tbharness import BIN, check, read_tle, tle_to_amsat  # noqa: E402
 from _walk_steps import (DATA, FACTORY_STATION, MAIN, SCROLL, UPDATE, answer, az_diff, must,
-                         must_not, since)  # noqa: E402
+                         must_not, since, step)  # noqa: E402
 
 
 def walk_menu_2(ui, page_rows):
-    ui.send("2\r")
-    out = ui.prompt(r"Select :")
-    must(out, r"\*\*\* Tracking object satellite \*\*\*", "menu 2 lists the tracking list")
+    out = step(ui, "2\r", r"Select :", r"\*\*\* Tracking object satellite \*\*\*", "menu 2 lists the tracking list")
     must(out, r" 1\.\*AO-07\s+2\. AO-27\s+3\. FO-29\s+4\. ISS", "menu 2's list, '*' on the last chosen")
     ui.send("4\r")  # the ISS
     start = r"2026/05/21 12:\d\d:\d\d Starting Day/Time \? \[YY/MM/DD HH:MM:SS\] Day of the Year \[T\] >"
     ui.prompt(start)
     # The manual's own answer (564.17270) is no day of a year: refused with the reason, asked again.
-    ui.send("564.17270\r")
-    out = ui.prompt(start)
-    must(out, r"day 564\.17270 is not in 2026: expected 1 to 365\.99999", "a day of the year beyond the year")
+    out = step(ui, "564.17270\r", start,
+               r"day 564\.17270 is not in 2026: expected 1 to 365\.99999", "a day of the year beyond the year")
     # [T]: the day of the year with its fraction; .631285 of day 141 is 15:09:03 on 21 May.
     ui.send("141.631285\r")
     answer(ui, r"Time Step Min \[1\]:", "60\r", "step minutes")
@@ -94,12 +91,9 @@ AO73_FIELDS = [  # label, value shown, prompt, answer ("" = Enter keeps it)
 
 
 def walk_menu_3_1(ui):
-    ui.send("3\r")
-    out = ui.prompt(UPDATE)
-    must(out, r"======= UPDATE MENU =======\s*\n1\. EDIT: View/Edit satellite Element by hand", "the UPDATE MENU")
-    ui.send("1\r")
-    out = ui.prompt(r"Select :")
-    must(out, r"\*\*\* Select object satellite \*\*\*", "3-1's title")
+    out = step(ui, "3\r", UPDATE,
+               r"======= UPDATE MENU =======\s*\n1\. EDIT: View/Edit satellite Element by hand", "the UPDATE MENU")
+    out = step(ui, "1\r", r"Select :", r"\*\*\* Select object satellite \*\*\*", "3-1's title")
     must(out, r" 1\.\*AO-07 .* 4\. ISS\s*\n 5\. SO-50 .* 7\. AO-73", "3-1 lists the tracking list")
     check(re.search(r"1[5-9]\. |20\. ", out) is None,
           "3-1 numbers the tracking list (the manual's up to 15), not the whole database")
@@ -146,33 +140,26 @@ def walk_menu_3_2(ui, picks, names):
     out = ui.prompt(r"Select :")
     must(out, r" 1\. AO-07\s+2\. AO-27", "3-2 lists the database without a mark")
     for k, n in enumerate(picks, 1):
-        ui.send(f"{n}\r")
-        out = ui.prompt(r"Select :")
-        must(out, rf"Satellite \({re.escape(names[n - 1])}\) selected as #{k}\n", f"pick {k}")
+        out = step(ui, f"{n}\r", r"Select :",
+                   rf"Satellite \({re.escape(names[n - 1])}\) selected as #{k}\n", f"pick {k}")
         must(out, rf"(^|\s){n}\.\*{re.escape(names[n - 1])}", "'*' on the satellite just selected")
-    ui.send(f"{picks[0]}\r")
-    out = ui.prompt(r"Select :")
-    must(out, rf"Satellite \({re.escape(names[picks[0] - 1])}\) is already selected as #1", "no duplicates")
-    ui.send("99\r")
-    out = ui.prompt(r"Select :")
-    must(out, rf"Enter 1 to {len(names)}, or Q \(or Enter\) to finish", "a number outside the list")
-    ui.send("\r")
-    out = ui.prompt(UPDATE)
-    must(out, rf"Tracking list: {len(picks)} satellite\(s\) selected\.", "3-2 ends with Enter")
+    out = step(ui, f"{picks[0]}\r", r"Select :",
+               rf"Satellite \({re.escape(names[picks[0] - 1])}\) is already selected as #1", "no duplicates")
+    out = step(ui, "99\r", r"Select :",
+               rf"Enter 1 to {len(names)}, or Q \(or Enter\) to finish", "a number outside the list")
+    out = step(ui, "\r", UPDATE, rf"Tracking list: {len(picks)} satellite\(s\) selected\.", "3-2 ends with Enter")
 
 
 def walk_menu_3_4(ui, count, listed):
     ui.send("4\r")
     q = r"How many satellites configure for multi tracking mode \? \(2-5\) "
     ui.prompt(q)
-    ui.send("6\r")
-    out = ui.prompt(q)
-    must(out, r"'6': enter a number from 2 to 5", "3-4 takes 2 to 5")
-    ui.send(f"{count}\r")
-    out = ui.prompt(UPDATE)
-    must(out, rf"The first {count} satellites of the tracking list will be multi-tracked\.", "3-4's answer")
+    out = step(ui, "6\r", q, r"'6': enter a number from 2 to 5", "3-4 takes 2 to 5")
+    out = step(ui, f"{count}\r", UPDATE,
+               rf"The first {count} satellites of the tracking list will be multi-tracked\.", "3-4's answer")
     if listed >= count:
-        must_not(since(out, "How many satellites"), r"Note: the tracking list holds", "no note: the list is long enough")
+        must_not(since(out, "How many satellites"), r"Note: the tracking list holds",
+                 "no note: the list is long enough")
 
 
 # ---------------------------------------------------------------------------------------------
@@ -188,9 +175,7 @@ AO-07 145.950 432.150 usb lsb mic ma
 
 
 def start_upload(ui, fmt):
-    ui.send("3\r")
-    out = ui.prompt(r"Are you sure \? \[Y/N\] \? ")
-    must(out, r"Stored data in memory will be lost\.\n", "3-3 warns first")
+    step(ui, "3\r", r"Are you sure \? \[Y/N\] \? ", r"Stored data in memory will be lost\.\n", "3-3 warns first")
     ui.send("Y\r")  # the manual's transcript: "? Y <ENTER>"; the Enter is not a format
     ui.prompt(r"File format NASA/AMSAT \(N/A\) : ")
     ui.send(fmt)
@@ -242,9 +227,7 @@ def walk_upload_failures(ui):
     must(out, r"No AMSAT element set found in the upload: the stored database is unchanged\.", "wrong format")
     # Ctrl-Z alone.
     start_upload(ui, "N")
-    ui.send("\x1a")
-    out = ui.prompt(UPDATE, timeout=20)
-    must(out, r"0 satellite\(s\) accepted, 0 record\(s\) skipped\.", "an empty upload")
+    out = step(ui, "\x1a", UPDATE, r"0 satellite\(s\) accepted, 0 record\(s\) skipped\.", "an empty upload", timeout=20)
     must(out, r"the stored database is unchanged\.", "an empty upload keeps the database")
 
 

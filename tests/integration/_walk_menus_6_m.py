@@ -6,7 +6,7 @@ import time
 
 from _tbharness import check  # noqa: E402
 from _walk_steps import (DATA, DIRECT, MAIN, PRESET, UPDATE, answer, az_diff, last_match,
-                         monitor_positions, must, must_not, since)  # noqa: E402
+                         monitor_positions, must, must_not, since, step)  # noqa: E402
 from _walk_menus_2_3 import walk_menu_3_2, walk_menu_3_4  # noqa: E402
 
 
@@ -62,9 +62,8 @@ def wait_arrived(ui, prompt_rx, az, el, timeout=30.0):
 def open_direct(ui, key, what):
     """6-6 and menu 8 (key "6" in the Configuration Menu, "8" in the main menu) open the same
     sub-menu: its three choices, then its prompt."""
-    ui.send(key + "\r")
-    out = ui.prompt(DIRECT)
-    must(out, r"1\.Direct rotor control from key board\.\n2\.Enter direction value\.\n3\.Preset Control\.", what)
+    step(ui, key + "\r", DIRECT,
+         r"1\.Direct rotor control from key board\.\n2\.Enter direction value\.\n3\.Preset Control\.", what)
 
 
 PRESETS = [(125, 15), (90, 22), (0, 45), (270, 10), (165, 0)]
@@ -83,9 +82,7 @@ def walk_6_6(ui):
     answer(ui, r"Elevation: 0\.0 ", "20\r", "6-6-2")
     wait_arrived(ui, DIRECT, 210, 20)
 
-    ui.send("3\r")
-    out = ui.prompt(PRESET)
-    must(out, r"^ 1:0\.0/0\.0 2:0\.0/0\.0 3:0\.0/0\.0 4:0\.0/0\.0 5:0\.0/0\.0$", "the five presets")
+    out = step(ui, "3\r", PRESET, r"^ 1:0\.0/0\.0 2:0\.0/0\.0 3:0\.0/0\.0 4:0\.0/0\.0 5:0\.0/0\.0$", "the five presets")
     ui.send("S\r")
     for n, (az, el) in enumerate(PRESETS, 1):
         answer(ui, rf" Preset position {n} Az: 0\.0 ", f"{az}\r", "preset az")
@@ -182,26 +179,21 @@ def walk_menu_8(ui):
 
 
 def walk_menu_7(ui):
-    ui.send("7\r")
-    out = ui.prompt(r"TrakBox>>")
-    must(out, r"TrakBox host mode\.\nCommand:MUxxx,MDxxx,FUxxx,FDxxx,AZxxx_ELxx,Sxxx,Q,\?A,\?\n", "the banner")
-    ui.send("AZ120 EL30\r")
-    out = ui.prompt(r"TrakBox>>")
-    must(out, r"^TrakBox>>AZ120 EL30\nTrakBox>>$", "AZ120 EL30 is answered by the prompt alone")
+    out = step(ui, "7\r", r"TrakBox>>",
+               r"TrakBox host mode\.\nCommand:MUxxx,MDxxx,FUxxx,FDxxx,AZxxx_ELxx,Sxxx,Q,\?A,\?\n", "the banner")
+    out = step(ui, "AZ120 EL30\r", r"TrakBox>>",
+               r"^TrakBox>>AZ120 EL30\nTrakBox>>$", "AZ120 EL30 is answered by the prompt alone")
     ui.send("?A\r")
     out = ui.prompt(r"TrakBox>>")
     first = last_match(out, r"\?A\nAZ(\d{1,3}\.\d) EL(\d{1,2}\.\d)\n", "?A: where the antenna points").groups()
-    ui.send("?\r")
-    out = ui.prompt(r"TrakBox>>")
-    must(out, r"AZxxx ELxxx\s+point the antenna", "? lists the commands")
+    out = step(ui, "?\r", r"TrakBox>>", r"AZxxx ELxxx\s+point the antenna", "? lists the commands")
     must(out, r"Q\s+quit to the main menu", "? lists Q")
     ui.send("XY12\r")
     out = ui.prompt(r"TrakBox>>")
     must(out, r"ERROR unknown command 'XY12': expected AZxxx ELxxx, MUxxx, MDxxx, FUxxx, FDxxx, Sxxx, \?A, \? or Q",
          "a bad command")
-    ui.send("AZ400 EL10\r")
-    out = ui.prompt(r"TrakBox>>")
-    must(out, r"ERROR AZ/EL: azimuth 400 out of range: expected 0 to 360", "a bad azimuth")
+    out = step(ui, "AZ400 EL10\r", r"TrakBox>>",
+               r"ERROR AZ/EL: azimuth 400 out of range: expected 0 to 360", "a bad azimuth")
     # The antenna is on its way to 120/30: ?A reads where it is now.
     deadline = time.time() + 10
     while True:
@@ -213,9 +205,8 @@ def walk_menu_7(ui):
         check(time.time() < deadline, f"the antenna never moved after AZ120 EL30: ?A {now}")
         time.sleep(0.5)
     check(float(now[1]) > float(first[1]), f"climbing towards EL30: {first} -> {now}")
-    ui.send("AZ120 EL75\r")
-    out = ui.prompt(r"TrakBox>>")
-    must(out, r"LIMIT AZ120\.0 EL60\.0", "the 6-4 elevation limit holds in host mode")
+    out = step(ui, "AZ120 EL75\r", r"TrakBox>>",
+               r"LIMIT AZ120\.0 EL60\.0", "the 6-4 elevation limit holds in host mode")
     ui.send("Q\r")
     ui.prompt(MAIN)
 
@@ -243,9 +234,7 @@ BAD_STATION = """1 WA7GXD 32.259 -110.778 842 S
 
 
 def start_6_9(ui):
-    ui.send("9\r")
-    out = ui.prompt(r"Are you sure \? \[Y/N\] \? ")
-    must(out, r"Stored data in memory will be lost\.\n", "6-9 warns")
+    step(ui, "9\r", r"Are you sure \? \[Y/N\] \? ", r"Stored data in memory will be lost\.\n", "6-9 warns")
     ui.send("Y")
     ui.prompt(r"Configure your station elements by uploading data file \? \[Y/N\] ")
     ui.send("Y")
@@ -292,9 +281,9 @@ def start_m(ui, mode_key, marker, marked=1, choose="\r"):
     """M in mode_key's mode; the LCD list shows `marker` on entry `marked`; `choose` answers it."""
     ui.send("M\r")
     ui.prompt(r"Normal or Priority mode \? \[N/P\] \(Enter = [NP]\) ")
-    ui.send(mode_key if mode_key == "\r" else mode_key + "\r")  # "N <ENTER>": one answer (issue 18)
-    out = ui.prompt(r"Select :")
-    must(out, r"\*\*\* LCD display satellite \*\*\*", "M asks for the LCD satellite")
+    # "N <ENTER>": one answer (issue 18)
+    out = step(ui, mode_key if mode_key == "\r" else mode_key + "\r", r"Select :",
+               r"\*\*\* LCD display satellite \*\*\*", "M asks for the LCD satellite")
     rows = r"\s+".join(rf"{n}\.{re.escape(marker) if n == marked else ' '}{name}"
                        for n, name in ((1, "ISS"), (2, "AO-27"), (3, "FO-29")))
     must(out, rf" {rows}\s*$", f"the three, '{marker}' on #{marked}")
@@ -312,9 +301,7 @@ def walk_menu_m(ui, names):
     ui.prompt(MAIN)
 
     # S: single tracking marks the last satellite chosen (in 3-2, FO-29) with '*'.
-    ui.send("S\r")
-    out = ui.prompt(r"Select :")
-    must(out, r" 1\. ISS\s+2\. AO-27\s+3\.\*FO-29\s*$", "single tracking's '*'")
+    out = step(ui, "S\r", r"Select :", r" 1\. ISS\s+2\. AO-27\s+3\.\*FO-29\s*$", "single tracking's '*'")
     ui.send("Q\r")
     ui.prompt(MAIN)
 

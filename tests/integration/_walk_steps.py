@@ -1,5 +1,5 @@
 """The walkthroughs' shared steps (_walk.py): the menus' prompts, the checks of what the terminal
-showed, answering a prompt, reading positions off the monitor."""
+showed, answering a prompt, a step of keys, prompt and check, reading positions off the monitor."""
 import os
 import re
 
@@ -38,6 +38,15 @@ def answer(ui, label_rx, keys, what, timeout=10.0):
     except Failure as e:
         raise Failure(f"{what}: {e}") from None
     ui.send(keys)
+    return out
+
+
+def step(ui, keys, prompt_rx, rx, what, timeout=10.0):
+    """Types keys, waits for the next prompt, and what the terminal showed meanwhile must hold rx.
+    Returns what it showed."""
+    ui.send(keys)
+    out = ui.prompt(prompt_rx, timeout)
+    must(out, rx, what)
     return out
 
 
