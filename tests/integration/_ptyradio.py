@@ -100,6 +100,14 @@ def so50_doppler_goes_on(get_down, get_up, clock_now):
     return (first_down, *on_doppler("SO-50", get_down, get_up, clock_now, 1000))
 
 
+def so50_on_fm(get_down, get_up, where, modes, clock_now):
+    """SO-50 on a pair of links: both on its spots, FM on both (modes() gives the two links' mode
+    bytes, downlink first), and the Doppler goes on. Returns what so50_doppler_goes_on does."""
+    tuned("SO-50", get_down, get_up, where)
+    check(modes() == (0x08, 0x08), f"FM on {where[0]} and {where[1]}: {modes()}")
+    return so50_doppler_goes_on(get_down, get_up, clock_now)
+
+
 def leave(tb, state):
     """trakbox's input ends: it must leave cleanly. Returns its log."""
     return leave_and_read_log(tb, state)

@@ -13,7 +13,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(__file__))
 from _ft847 import FT847  # noqa: E402
-from _ptyradio import RS44_PASS, SO50_PASS, leave, listen, on_doppler, rs44_knob_turn, so50_doppler_goes_on, on_pass, tuned  # noqa: E402
+from _ptyradio import RS44_PASS, SO50_PASS, leave, listen, on_doppler, rs44_knob_turn, so50_on_fm, on_pass, tuned  # noqa: E402
 from _tbharness import check, need, run_test  # noqa: E402
 
 
@@ -36,11 +36,10 @@ def rs44(rigs, tb, state, clock_now):
 
 def so50(rigs, tb, state, clock_now):
     down, up = rigs
-    tuned("SO-50", lambda: down.get("main"), lambda: up.get("main"), ("the first FT-817", "the second"))
+    first_down, d, u = so50_on_fm(lambda: down.get("main"), lambda: up.get("main"), ("the first FT-817", "the second"),
+                                  lambda: (down.mode.get("main"), up.mode.get("main")), clock_now)
     check("06 70 06 70 0B" in up.sent() and up.encoder.get("main"), f"67.0 Hz on the uplink radio: {up.sent()[:8]}")
     check(not any(c.endswith(("0B", "0A")) for c in down.sent()), f"no tone on the downlink radio: {down.sent()[:8]}")
-    check(down.mode.get("main") == 0x08 and up.mode.get("main") == 0x08, f"FM on both: {down.mode} {up.mode}")
-    first_down, d, u = so50_doppler_goes_on(lambda: down.get("main"), lambda: up.get("main"), clock_now)
     leave(tb, state)
     print(f"ft817 pair SO-50: tone on the uplink radio; Doppler {first_down} -> {d} down, {u} up")
 

@@ -15,7 +15,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(__file__))
 from _ft847 import FT847  # noqa: E402
-from _ptyradio import RS44_PASS, SO50_PASS, leave, listen, on_doppler, poll, rs44_knob_turn, so50_doppler_goes_on, on_pass, tuned  # noqa: E402
+from _ptyradio import RS44_PASS, SO50_PASS, leave, listen, on_doppler, poll, rs44_knob_turn, so50_on_fm, on_pass, tuned  # noqa: E402
 from _tbharness import check, need, run_test  # noqa: E402
 
 
@@ -41,10 +41,9 @@ def rs44(rig, tb, state, clock_now):
 
 
 def so50(rig, tb, state, clock_now):
-    tuned("SO-50", lambda: rig.get("rx"), lambda: rig.get("tx"), ("SAT RX", "SAT TX"))
+    first_down, d, u = so50_on_fm(lambda: rig.get("rx"), lambda: rig.get("tx"), ("SAT RX", "SAT TX"),
+                                  lambda: (rig.mode.get("rx"), rig.mode.get("tx")), clock_now)
     check("3F 00 00 00 2B" in rig.sent() and rig.encoder.get("tx"), f"67.0 Hz (3F) on SAT TX, encoder on: {rig.sent()[:12]}")
-    check(rig.mode.get("rx") == 0x08 and rig.mode.get("tx") == 0x08, f"FM on SAT RX and SAT TX: {rig.mode}")
-    first_down, d, u = so50_doppler_goes_on(lambda: rig.get("rx"), lambda: rig.get("tx"), clock_now)
     leave(tb, state)
     print(f"ft847 SO-50: tone 3F on SAT TX; Doppler {first_down} -> {d} on SAT RX, {u} on SAT TX")
 
