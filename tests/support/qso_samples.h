@@ -2,29 +2,39 @@
 // SSB QSO from the page and an ISS FM QSO from host mode, with every field set (the values of
 // docs/logbook.md's example record).
 #pragma once
+#include <cstdint>
+
 #include "logbook/qso.h"
 
 namespace tb::testing {
 
-inline logbook::Qso rs44_qso() {
+// The satellite and its link; both samples are 2 m up and 70 cm down, from DM42.
+inline logbook::Qso on_satellite(std::int64_t time_on, const char* sat, const char* lotw, int norad, const char* mode,
+                                 std::int64_t uplink_hz, std::int64_t downlink_hz) {
   logbook::Qso q;
+  q.time_on = time_on;
+  q.sat_name = sat;
+  q.lotw_name = lotw;
+  q.norad = norad;
+  q.mode = mode;
+  q.band = "2m";
+  q.uplink_hz = uplink_hz;
+  q.band_rx = "70cm";
+  q.downlink_hz = downlink_hz;
+  q.my_grid = "DM42";
+  return q;
+}
+
+// 2026-12-01 21:44:20 UTC (Python calendar.timegm), every field set.
+inline logbook::Qso rs44_qso() {
+  logbook::Qso q = on_satellite(1796161460, "RS-44", "RS-44", 44909, "SSB", 145'965'000, 435'640'000);
   q.id = 1;
   q.call = "W1AW";
   q.grid = "FN31";
   q.rst_sent = "59";
   q.rst_rcvd = "57";
-  q.time_on = 1796161460;  // 2026-12-01 21:44:20 UTC (Python calendar.timegm)
-  q.sat_name = "RS-44";
-  q.lotw_name = "RS-44";
-  q.norad = 44909;
-  q.mode = "SSB";
-  q.uplink_hz = 145'965'000;
-  q.downlink_hz = 435'640'000;
   q.uplink_tuned_hz = 145'962'310;
   q.downlink_tuned_hz = 435'648'070;
-  q.band = "2m";
-  q.band_rx = "70cm";
-  q.my_grid = "DM42";
   q.station_call = "WA7GXD";
   q.power_w = 2.5;
   q.note = "first <RS-44> QSO";
@@ -32,21 +42,12 @@ inline logbook::Qso rs44_qso() {
   return q;
 }
 
+// Six minutes later, from host mode: no reports, no tuned frequencies, no note.
 inline logbook::Qso iss_qso() {
-  logbook::Qso q;
+  logbook::Qso q = on_satellite(1796161800, "ISS", "ARISS", 25544, "FM", 145'990'000, 437'800'000);
   q.id = 2;
   q.call = "K1JT";
   q.grid = "FN20xr";
-  q.time_on = 1796161800;
-  q.sat_name = "ISS";
-  q.lotw_name = "ARISS";
-  q.norad = 25544;
-  q.mode = "FM";
-  q.uplink_hz = 145'990'000;
-  q.downlink_hz = 437'800'000;
-  q.band = "2m";
-  q.band_rx = "70cm";
-  q.my_grid = "DM42";
   q.source = logbook::Source::host;
   return q;
 }
