@@ -14,10 +14,7 @@
 
 using namespace tb::orbit;
 
-using tb::testing::kDarmstadt;
-using tb::testing::kDay0;
-using tb::testing::kDay1;
-using tb::testing::kSydney;
+using namespace tb::testing::pass_places;
 
 namespace {
 
