@@ -101,6 +101,8 @@ std::vector<Event> PassEventSource::step(orbit::UtcTime now) {
   // --event-min-el: a pass that never rises that high (one that only grazes the -2 deg rule) is
   // no pass to announce: no AOS, so no LOS and no hook (issue 39).
   po.min_max_elevation_deg = model_.event_min_el_deg;
+  const bool set_back = last_step_ && now < *last_step_;
+  last_step_ = now;
   for (const int i : model_.db.selected) {
     if (i < 0 || i >= static_cast<int>(model_.db.satellites.size())) continue;
     const orbit::Elements& el = model_.db.satellites[static_cast<std::size_t>(i)].elements;
@@ -114,10 +116,16 @@ std::vector<Event> PassEventSource::step(orbit::UtcTime now) {
       w.pass.reset();
       w.search_again = {};
     }
-    // The clock set back past the pass being watched (menu 5): what comes next is new.
-    if (w.pass && now + lead_ < w.pass->aos - std::chrono::hours(1) && !w.aos_fired) w.pass.reset();
+    // The clock set back (menu 5, a Satrak TIME=): the pass watched may no longer be the next, and
+    // a search that found nothing may find something now. A pass already told stays (its LOS is
+    // still to come).
+    if (set_back && !w.aos_fired) {
+      w.pass.reset();
+      w.search_again = {};
+    }
     if (!w.pass && now >= w.search_again) {
       if (const orbit::Sgp4* sgp4 = tracker_.propagator(i)) {
+        ++searches_;
         w.pass = orbit::next_pass(*sgp4, model_.station.observer(), now, 2.0, po);
         if (!w.pass) w.search_again = now + std::chrono::minutes(60);
       }

@@ -57,6 +57,7 @@ class PassEventSource {
       : model_(model), tracker_(tracker), lead_(lead) {}
   // The AOS and LOS events due at `now` (each once per pass).
   std::vector<Event> step(orbit::UtcTime now);
+  std::size_t searches() const { return searches_; }  // pass searches so far (each is costly)
 
  private:
   struct Watch {
@@ -72,6 +73,8 @@ class PassEventSource {
   const Tracker& tracker_;
   std::chrono::seconds lead_;
   std::map<int, Watch> watches_;  // by catalog number
+  std::optional<orbit::UtcTime> last_step_;  // the clock going back is a set-back
+  std::size_t searches_ = 0;
 };
 
 }  // namespace tb::tracker

@@ -149,6 +149,34 @@ TEST_CASE("--event-min-el: no AOS and no LOS for a pass whose maximum stays unde
   }
 }
 
+TEST_CASE("a pass hours ahead is searched once, not at every step") {
+  // AO-07's next pass after 12:08:30 is hours away; ISS's is a minute away. A minute of steps
+  // searches each once (the station ticks every second: a search a tick was 8 searches a second
+  // for the shipped list).
+  Run r({"AO-07", "ISS"});
+  tracker::PassEventSource source(r.model, r.tracker);
+  r.step(source, at(12, 9, 30));
+  CHECK(source.searches() == 2);
+  CHECK(r.find("aos", "ISS"));
+  CHECK_FALSE(r.find("aos", "AO-07"));
+}
+
+TEST_CASE("the clock set back: the passes not yet told are searched again, and told again") {
+  Run r({"ISS"});
+  tracker::PassEventSource source(r.model, r.tracker);
+  r.step(source, at(12, 20, 0));
+  REQUIRE(r.find("los", "ISS"));
+  const std::size_t searched = source.searches();
+  r.events.clear();
+  r.clock.set(at(12, 8, 30));  // menu 5: back before the ISS pass
+  r.step(source, at(12, 20, 0));
+  CHECK(source.searches() > searched);
+  const auto* aos = r.find("aos", "ISS");
+  REQUIRE(aos);
+  CHECK(std::abs(seconds_between(aos->time, at(12, 9, 10.1))) <= 1.5);
+  CHECK(r.find("los", "ISS"));
+}
+
 TEST_CASE("an event's JSON line and environment") {
   tracker::Event e;
   e.kind = "link-lost";
