@@ -30,6 +30,7 @@
 #include "store/station_file_model.h"
 #include "tracker/elements_refresh.h"
 #include "tracker/events.h"
+#include "tracker/pass_memo.h"
 #include "tracker/station_loop.h"
 #include "util/files.h"
 
@@ -182,6 +183,7 @@ struct StationApp::Impl {
   tracker::Tracker tracker;
   std::unique_ptr<tracker::StationLoop> station;
   std::unique_ptr<tracker::ElementsRefresh> refresh;
+  tracker::PassMemo next_passes;
   term::Terminal* terminal = nullptr;
   satrak::Unit* satrak = nullptr;
   nlohmann::json satrak_saved;  // kept as loaded when the Satrak server is off
@@ -264,6 +266,7 @@ store::Model& StationApp::model() { return impl_->model; }
 tracker::Tracker& StationApp::tracker() { return impl_->tracker; }
 tracker::StationLoop& StationApp::station() { return *impl_->station; }
 tracker::ElementsRefresh& StationApp::refresh() { return *impl_->refresh; }
+tracker::PassMemo& StationApp::next_passes() { return impl_->next_passes; }
 boost::asio::io_context& StationApp::io() { return impl_->io; }
 spdlog::logger& StationApp::log() { return *impl_->log; }
 void StationApp::set_terminal(term::Terminal* t) { impl_->terminal = t; }

@@ -34,6 +34,7 @@ class RealTimeClock;
 namespace tb::tracker {
 struct Event;
 class ElementsRefresh;
+class PassMemo;
 class StationLoop;
 class Tracker;
 }
@@ -56,6 +57,7 @@ class StationApp {
   tracker::Tracker& tracker();
   tracker::StationLoop& station();
   tracker::ElementsRefresh& refresh();  // the scheduled element refresh (polled on every tick)
+  tracker::PassMemo& next_passes();     // the status documents' next passes, each searched once
   boost::asio::io_context& io();
   spdlog::logger& log();
 

@@ -17,6 +17,7 @@
 #include "station/station.h"
 #include "tracker/elements_refresh.h"
 #include "tracker/log_json.h"
+#include "tracker/pass_memo.h"
 #include "tracker/station_loop.h"
 
 namespace tb::app {
@@ -202,16 +203,21 @@ nlohmann::json tracking_list_json(StationApp& app, orbit::UtcTime now) {
                      {"catalog_number", sat.elements.catalog_number},
                      {"element_age_days", age.days},
                      {"elements_stale", age.stale()}};
-    std::optional<orbit::Pass> pass;
-    for (const auto& c : app.tracker().candidates())
-      if (c.db_index == i) pass = c.pass;
-    if (!pass) {
-      if (const orbit::Sgp4* sgp4 = app.tracker().propagator(i))
-        pass = orbit::next_pass(*sgp4, app.model().station.observer(), now, 1.0);
-    }
+    // The tracker's pass when it follows this satellite, else one searched; whole when the search
+    // began inside it. Kept (next_passes) until it sets: this runs for every push to the page.
+    const auto pass = app.next_passes().get(sat.elements, now, [&app, i, now]() -> std::optional<orbit::Pass> {
+      std::optional<orbit::Pass> p;
+      for (const auto& c : app.tracker().candidates())
+        if (c.db_index == i) p = c.pass;
+      if (!p) {
+        if (const orbit::Sgp4* sgp4 = app.tracker().propagator(i))
+          p = orbit::next_pass(*sgp4, app.model().station.observer(), now, 1.0);
+      }
+      return whole_pass(app, i, p, now);
+    });
     if (const auto obs = app.tracker().observe(i, now); obs && obs->obs.ok())
       e["now"] = {{"az_deg", obs->obs.look.az_deg}, {"el_deg", obs->obs.look.el_deg}, {"in_range", obs->in_range}};
-    e["next_pass"] = pass_json(whole_pass(app, i, pass, now), now);
+    e["next_pass"] = pass_json(pass, now);
     list.push_back(std::move(e));
   }
   return list;
