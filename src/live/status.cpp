@@ -193,6 +193,7 @@ std::optional<orbit::Pass> whole_pass(StationApp& app, int db_index, const std::
 nlohmann::json tracking_list_json(StationApp& app, orbit::UtcTime now) {
   nlohmann::json list = nlohmann::json::array();
   const store::Database& db = app.model().db;
+  const orbit::Observer where = app.model().station.observer();
   for (std::size_t k = 0; k < db.selected.size(); ++k) {
     const int i = db.selected[k];
     if (i < 0 || i >= static_cast<int>(db.satellites.size())) continue;
@@ -204,17 +205,19 @@ nlohmann::json tracking_list_json(StationApp& app, orbit::UtcTime now) {
                      {"element_age_days", age.days},
                      {"elements_stale", age.stale()}};
     // The tracker's pass when it follows this satellite, else one searched; whole when the search
-    // began inside it. Kept (next_passes) until it sets: this runs for every push to the page.
-    const auto pass = app.next_passes().get(sat.elements, now, [&app, i, now]() -> std::optional<orbit::Pass> {
+    // began inside it. Kept (next_passes) until it sets or the station moves: this runs for every
+    // push to the page.
+    const auto search = [&app, i, now, &where]() -> std::optional<orbit::Pass> {
       std::optional<orbit::Pass> p;
       for (const auto& c : app.tracker().candidates())
         if (c.db_index == i) p = c.pass;
       if (!p) {
         if (const orbit::Sgp4* sgp4 = app.tracker().propagator(i))
-          p = orbit::next_pass(*sgp4, app.model().station.observer(), now, 1.0);
+          p = orbit::next_pass(*sgp4, where, now, 1.0);
       }
       return whole_pass(app, i, p, now);
-    });
+    };
+    const auto pass = app.next_passes().get(sat.elements, where, now, search);
     if (const auto obs = app.tracker().observe(i, now); obs && obs->obs.ok())
       e["now"] = {{"az_deg", obs->obs.look.az_deg}, {"el_deg", obs->obs.look.el_deg}, {"in_range", obs->in_range}};
     e["next_pass"] = pass_json(pass, now);
