@@ -251,7 +251,9 @@ void menu_3_1_edit(term::Terminal& t, Services& s) {
 
   // Every line was answered: store the satellite.
   const orbit::Sgp4Error at_epoch = orbit::error_at_epoch(e);
-  s.model.db.satellites[index] = std::move(sat);
+  if (!commit(t, s, store::bit(store::Area::elements) | store::bit(store::Area::radio_entries), "menu 3-1",
+              [&](store::Model& m) { m.db.satellites[index] = sat; }))
+    return;
   t.line("Satellite (" + s.model.db.satellites[index].name() + ") updated.");
   if (at_epoch != orbit::Sgp4Error::none)
     t.line(std::string("Warning: SGP4 finds no orbit in these elements: ") + orbit::describe(at_epoch));

@@ -128,11 +128,11 @@ void menu_3_3_upload(term::Terminal& t, Services& s) {
     return;
   }
   const bool was_tracking = s.tracker.mode() != tracker::Mode::off;
-  s.model.db = std::move(up.database);
   // Database numbers now mean other satellites: nothing may be followed by its old number.
   s.tracker.stop();
-  s.station.reconfigure();
-  save_or_report(t, s);
+  if (!commit(t, s, store::bit(store::Area::elements) | store::bit(store::Area::radio_entries) | store::bit(store::Area::tracking_list), "menu 3-3 elements",
+              [&](store::Model& m) { m.db = std::move(up.database); }))
+    return;
   if (was_tracking) t.line("Tracking stopped: the database changed (choose a satellite again with 1, S or M).");
 
   // ---- step 2: the freq/mode file (Ctrl-Z alone: none) ----
@@ -155,9 +155,8 @@ void menu_3_3_upload(term::Terminal& t, Services& s) {
     if (applied.updated.empty())
       t.line("No freq/mode record applied: the tracking list is the first " + std::to_string(db.selected.size()) +
              " satellite(s) of the database.");
-    s.model.db = std::move(db);
-    s.station.reconfigure();
-    save_or_report(t, s);
+    (void)commit(t, s, store::bit(store::Area::radio_entries) | store::bit(store::Area::tracking_list),
+                 "menu 3-3 freq/mode", [&](store::Model& m) { m.db = std::move(db); });
   }
 
   // ---- the new database ----

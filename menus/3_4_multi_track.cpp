@@ -7,7 +7,7 @@
 namespace tb::menus {
 
 void menu_3_4_multi_track(term::Terminal& t, Services& s) {
-  auto& db = s.model.db;
+  const auto& db = s.model.db;
   for (;;) {
     t.write("How many satellites configure for multi tracking mode ? (2-5) ");
     t.flush();
@@ -23,12 +23,13 @@ void menu_3_4_multi_track(term::Terminal& t, Services& s) {
       t.line("  '" + a + "': enter a number from 2 to 5");
       continue;
     }
-    db.multi_count = static_cast<int>(*n);
+    if (!commit(t, s, store::bit(store::Area::tracking_list), "menu 3-4",
+                [&](store::Model& m) { m.db.multi_count = static_cast<int>(*n); }))
+      return;
     t.line("The first " + std::to_string(db.multi_count) + " satellites of the tracking list will be multi-tracked.");
     if (static_cast<int>(db.selected.size()) < db.multi_count)
       t.line("Note: the tracking list holds " + std::to_string(db.selected.size()) +
              " satellite(s); select more with menu 3-2.");
-    save_or_report(t, s);
     return;
   }
 }

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "menus/menus.h"
+#include "store/settings.h"
 #include "download/download.h"
 #include "store/model.h"
 #include "store/refresh.h"
@@ -56,16 +57,18 @@ void add_source(term::Terminal& t, Services& s) {
   t.flush();
   const std::string url = text::trimmed(read_line(t, store::kRefreshMaxUrl + 10));
   if (url.empty()) return;
-  if (const auto why = store::add_refresh_source(s.model.refresh, url)) {
+  store::RefreshSettings next = s.model.refresh;
+  if (const auto why = store::add_refresh_source(next, url)) {
     t.line("  Not added: " + *why);
     return;
   }
+  if (!commit(t, s, store::bit(store::Area::other), "menu 3-5 source", [&](store::Model& m) { m.refresh = next; }))
+    return;
   t.line("  Added. Sets of the database's satellites (by catalog number) will be taken from it.");
-  save_or_report(t, s);
 }
 
 void delete_source(term::Terminal& t, Services& s) {
-  auto& sources = s.model.refresh.sources;
+  const auto& sources = s.model.refresh.sources;
   if (sources.empty()) return;
   t.write("Delete which (1-" + std::to_string(sources.size()) + ")? ");
   t.flush();
@@ -75,16 +78,16 @@ void delete_source(term::Terminal& t, Services& s) {
     if (!a.empty()) t.line("  '" + a + "': enter a number from 1 to " + std::to_string(sources.size()));
     return;
   }
-  sources.erase(sources.begin() + (*n - 1));
-  save_or_report(t, s);
+  (void)commit(t, s, store::bit(store::Area::other), "menu 3-5 source",
+               [&](store::Model& m) { m.refresh.sources.erase(m.refresh.sources.begin() + (*n - 1)); });
 }
 
 void set_interval(term::Terminal& t, Services& s) {
   char shown[32];
   std::snprintf(shown, sizeof shown, "%.1f", s.model.refresh.interval_hours);
-  s.model.refresh.interval_hours = edit_number(t, "Hours between refreshes (2-720)", s.model.refresh.interval_hours,
-                                               shown, store::kRefreshMinHours, store::kRefreshMaxHours);
-  save_or_report(t, s);
+  const store::Bounds b = store::bounds("refresh.interval_hours");
+  const double hours = edit_number(t, "Hours between refreshes (2-720)", s.model.refresh.interval_hours, shown, b.lo, b.hi);
+  (void)s.station.owner().set("refresh.interval_hours", hours, store::Origin::menus);
 }
 
 void refresh_now(term::Terminal& t, Services& s) {
@@ -154,9 +157,7 @@ void satnogs(term::Terminal& t, Services& s) {
   t.line("  " + std::to_string(r.updated.size()) + " updated, " + std::to_string(r.kept.size()) + " kept, " +
          std::to_string(r.without_transmitter) + " without an active transmitter.");
   if (r.updated.empty()) return;
-  s.model.db = std::move(db);
-  s.station.reconfigure();
-  save_or_report(t, s);
+  (void)commit(t, s, store::bit(store::Area::radio_entries), "SatNOGS import", [&](store::Model& m) { m.db = std::move(db); });
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include "gps/monitor.h"
 #include "menus/menus.h"
+#include "store/settings.h"
 #include "menus/term/line_terminal.h"
 #include "store/model.h"
 #include "tracker/station_loop.h"
@@ -75,7 +76,8 @@ void edit_station_elements(term::Terminal& t, Services& s) {
                std::abs(st.lon_deg), st.lon_deg < 0 ? 'W' : 'E'));
   }
   st.lon_deg = edit_degrees(t, "Longitude [deg]   ", st.lon_deg, 'E', 'W', 180.0);
-  st.height_m = edit_number(t, "Height    [m]     ", st.height_m, fmt("%.3f", st.height_m), -500.0, 9000.0);
+  const store::Bounds height = store::bounds("station.height_m");  // the settings table's range
+  st.height_m = edit_number(t, "Height    [m]     ", st.height_m, fmt("%.3f", st.height_m), height.lo, height.hi);
   t.line("  Rotor start: where the azimuth rotator's stop is (turn it fully counter-clockwise and read its");
   t.line("  dial): N for a stop at north (a GS-232 reporting 0-360 or 0-450, a SPID), S for one at south");
   const std::string rs = edit_text(t, "Rotor start [N/S] ", station::to_string(st.rotor_start),
@@ -102,21 +104,27 @@ void edit_station_elements(term::Terminal& t, Services& s) {
                                            return std::nullopt;
                                          });
     gs.follow = std::toupper(static_cast<unsigned char>(follow[0])) == 'Y';
-    gs.threshold_m = edit_number(t, "GPS threshold [m] ", gs.threshold_m, fmt("%.0f", gs.threshold_m),
-                                 station::kGpsThresholdMinM, station::kGpsThresholdMaxM);
+    const store::Bounds b = store::bounds("gps.threshold_m");
+    gs.threshold_m = edit_number(t, "GPS threshold [m] ", gs.threshold_m, fmt("%.0f", gs.threshold_m), b.lo, b.hi);
   }
   if (st.lat_deg != s.model.station.lat_deg || st.lon_deg != s.model.station.lon_deg ||
       st.height_m != s.model.station.height_m) {
     gs.position_from_gps = false;  // typed in
     gs.position_time.reset();
   }
-  s.model.station = st;
-  s.model.gps = gs;
-  s.station.reconfigure();  // the rotor start changes how the antenna's travel maps to the compass
+  // Through the one door: the station reconfigures (the rotor start changes how the antenna's
+  // travel maps to the compass; the pass cache searches the new place's passes) and saves.
+  if (!commit(t, s, store::bit(store::Area::position) | store::bit(store::Area::station) |
+                        store::bit(store::Area::rotator) | store::bit(store::Area::gps),
+              "menu 4", [&](store::Model& m) {
+                m.station = st;
+                m.gps = gs;
+              }))
+    return;
   s.station.apply_gps_position();  // following: the confirmed fix, now
-  if (const auto err = s.save()) {
+  if (const auto& failed = s.station.save_failure()) {
     t.bell();
-    t.line("State not saved: " + *err);
+    t.line("State not saved: " + *failed);
     return;
   }
   // Said, not silent (issue 30): what was stored, in words an operator checks at a glance.

@@ -26,8 +26,7 @@ void menu_5_realtime_clock(term::Terminal& t, Services& s) {
     if (k == term::kEndOfInput) throw InputClosed{};
     if (k == 'y' || k == 'Y') {
       s.clock.zero_seconds();
-      s.model.clock_offset = s.clock.offset();
-      save_or_report(t, s);
+      (void)commit(t, s, store::bit(store::Area::other), "clock offset", [&](store::Model& m) { m.clock_offset = s.clock.offset(); });
       t.line("Present Time:UTC " + format_date(s.clock.now()) + " " + format_time(s.clock.now()));
       return;
     }
@@ -39,8 +38,7 @@ void menu_5_realtime_clock(term::Terminal& t, Services& s) {
       }
       s.clock.set_offset(s.clock.offset() +
                          std::chrono::microseconds(std::llround(*g->clock_error_s() * 1e6)));
-      s.model.clock_offset = s.clock.offset();
-      save_or_report(t, s);
+      (void)commit(t, s, store::bit(store::Area::other), "clock offset", [&](store::Model& m) { m.clock_offset = s.clock.offset(); });
       t.line("Present Time:UTC " + format_date(s.clock.now()) + " " + format_time(s.clock.now()) + " (from GPS)");
       return;
     }
@@ -70,10 +68,10 @@ void menu_5_realtime_clock(term::Terminal& t, Services& s) {
     if (k == term::kEnter) break;
   }
   s.clock.set(target);  // the moment Enter was pressed
-  s.model.clock_offset = s.clock.offset();
+  (void)commit(t, s, store::bit(store::Area::other), "clock offset",
+               [&](store::Model& m) { m.clock_offset = s.clock.offset(); });
   t.line();
   t.line("Present Time:UTC " + format_date(s.clock.now()) + " " + format_time(s.clock.now()));
-  save_or_report(t, s);
 }
 
 }  // namespace tb::menus

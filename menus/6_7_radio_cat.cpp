@@ -17,6 +17,7 @@
 #include "radio/factory.h"
 #include "radio/registry.h"
 #include "store/model.h"
+#include "store/settings.h"
 #include "tracker/station_loop.h"
 
 namespace tb::menus {
@@ -45,6 +46,24 @@ std::uint8_t ask_address(term::Terminal& t, const char* which, std::uint8_t curr
   }
 }
 
+// Operating practice: how long the knob must rest before the other link moves, and the least
+// Doppler change sent per mode, each in the settings table's range. Applied at once.
+void edit_practice(term::Terminal& t, Services& s, radio::RadioConfig& c) {
+  radio::RadioConfig r = s.model.radio;
+  const store::Bounds rest = store::bounds("radio.dial_rest_ms"), ssb = store::bounds("radio.doppler_step_ssb_hz"),
+                      fm = store::bounds("radio.doppler_step_fm_hz");
+  r.dial_rest_ms = static_cast<int>(cfg::ask_number(t, "Knob rest before the other link moves, ms (0-10000) ? ",
+                                                    r.dial_rest_ms, rest.lo, rest.hi, true));
+  r.doppler_step_ssb_hz = static_cast<radio::Hz>(cfg::ask_number(
+      t, "Least Doppler change sent, SSB/CW, Hz (10-1000) ? ", static_cast<double>(r.doppler_step_ssb_hz), ssb.lo, ssb.hi, true));
+  r.doppler_step_fm_hz = static_cast<radio::Hz>(cfg::ask_number(
+      t, "Least Doppler change sent, FM, Hz (10-10000) ? ", static_cast<double>(r.doppler_step_fm_hz), fm.lo, fm.hi, true));
+  if (!commit(t, s, store::bit(store::Area::radio), "menu 6-7 practice", [&](store::Model& m) { m.radio = r; })) return;
+  c.dial_rest_ms = r.dial_rest_ms;
+  c.doppler_step_ssb_hz = r.doppler_step_ssb_hz;
+  c.doppler_step_fm_hz = r.doppler_step_fm_hz;
+}
+
 }  // namespace
 
 void menu_6_7_radio_cat(term::Terminal& t, Services& s) {
@@ -65,25 +84,14 @@ void menu_6_7_radio_cat(term::Terminal& t, Services& s) {
   while (!rig) {
     const char k = cfg::ask_choice(t, "CAT Rig KENWOOD,YAESU,ICOM [K/Y/I] ? ", "KYINDULP");
     if (k == 'P') {
-      // Operating practice: how long the knob must rest before the other link moves, and the least
-      // Doppler change sent per mode. Applied at once.
-      radio::RadioConfig& r = s.model.radio;
-      r.dial_rest_ms = static_cast<int>(cfg::ask_number(t, "Knob rest before the other link moves, ms (0-10000) ? ",
-                                                        r.dial_rest_ms, 0, 10000, true));
-      r.doppler_step_ssb_hz = static_cast<radio::Hz>(cfg::ask_number(
-          t, "Least Doppler change sent, SSB/CW, Hz (10-1000) ? ", static_cast<double>(r.doppler_step_ssb_hz), 10, 1000, true));
-      r.doppler_step_fm_hz = static_cast<radio::Hz>(cfg::ask_number(
-          t, "Least Doppler change sent, FM, Hz (10-10000) ? ", static_cast<double>(r.doppler_step_fm_hz), 10, 10000, true));
-      c.dial_rest_ms = r.dial_rest_ms;
-      c.doppler_step_ssb_hz = r.doppler_step_ssb_hz;
-      c.doppler_step_fm_hz = r.doppler_step_fm_hz;
-      s.station.tuner().set_config(s.model.radio);
-      save_or_report(t, s);
+      edit_practice(t, s, c);
       extras();
     } else if (k == 'D') {
-      s.model.radio.dial_follow = c.dial_follow = !s.model.radio.dial_follow;
-      s.station.tuner().set_config(s.model.radio);
-      save_or_report(t, s);
+      if (commit(t, s, store::bit(store::Area::radio), std::string(tracker::kDialFollowEdit),
+                 [&](store::Model& m) { m.radio.dial_follow = !m.radio.dial_follow; })) {
+        c.dial_follow = s.model.radio.dial_follow;
+        s.station.tuner().set_config(s.model.radio);
+      }
       extras();
     } else if (k == 'L') {   // the radio registry, as trakbox --radio list prints it
       std::string list = radio::radio_list_text();
@@ -106,10 +114,12 @@ void menu_6_7_radio_cat(term::Terminal& t, Services& s) {
         if (!next.empty() && !made.driver) {
           t.line("  " + made.error);
         } else {
-          s.model.radio.uplink_radio = c.uplink_radio = next;
-          s.station.set_uplink_radio(std::move(made.driver));
-          save_or_report(t, s);
-          t.line("Radio: " + s.station.radio().describe());
+          if (commit(t, s, store::bit(store::Area::radio), "uplink radio",
+                     [&](store::Model& m) { m.radio.uplink_radio = next; })) {
+            c.uplink_radio = next;
+            s.station.set_uplink_radio(std::move(made.driver));
+            t.line("Radio: " + s.station.radio().describe());
+          }
         }
       }
       extras();
@@ -139,9 +149,7 @@ void menu_6_7_radio_cat(term::Terminal& t, Services& s) {
   c.cat_policy = cfg::ask_choice(t, "Select Full orbit or AOS CAT control ? [F/A] ", "FA") == 'F'
                      ? radio::CatPolicy::full_orbit
                      : radio::CatPolicy::aos_only;
-  s.model.radio = c;
-  s.station.reconfigure();
-  save_or_report(t, s);
+  if (!commit(t, s, store::bit(store::Area::radio), "menu 6-7", [&](store::Model& m) { m.radio = c; })) return;
   t.line("Radio: " + s.station.radio().describe());
   if (c.rig != before.rig || c.icom_rx_address != before.icom_rx_address ||
       c.icom_tx_address != before.icom_tx_address || c.ft736_wide_fm != before.ft736_wide_fm)

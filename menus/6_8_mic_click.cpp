@@ -65,9 +65,7 @@ void menu_6_8_mic_click(term::Terminal& t, Services& s) {
   c.polarity = cfg::ask_choice(t, "Polarity of step pulse, Normal/Reverse? [N/R] ", "NR") == 'R'
                    ? radio::PulsePolarity::reverse
                    : radio::PulsePolarity::normal;
-  s.model.radio.mic_click = c;
-  s.station.reconfigure();
-  save_or_report(t, s);
+  (void)commit(t, s, store::bit(store::Area::radio), "menu 6-8", [&](store::Model& m) { m.radio.mic_click = c; });
 }
 
 }  // namespace tb::menus

@@ -15,11 +15,12 @@ void menu_6_9_default_parameter(term::Terminal& t, Services& s) {
   t.line("Stored data in memory will be lost.");
   if (!ask_yes_no(t, "Are you sure ? [Y/N] ? ")) return;
   s.station.stop_antenna();  // tracking stops: the satellites it follows are about to go
-  const auto clock_offset = s.model.clock_offset;
-  s.model = store::factory_defaults();
-  s.model.clock_offset = clock_offset;
-  s.station.reconfigure();
-  save_or_report(t, s);
+  if (!commit(t, s, store::kAllAreas, "menu 6-9 defaults", [](store::Model& m) {
+        const auto clock_offset = m.clock_offset;
+        m = store::factory_defaults();
+        m.clock_offset = clock_offset;
+      }))
+    return;
   t.bell();
   if (!ask_yes_no(t, "Configure your station elements by uploading data file ? [Y/N] ")) return;
   t.line("Upload Station info data file (EOF:ctrl-Z)");
@@ -32,15 +33,15 @@ void menu_6_9_default_parameter(term::Terminal& t, Services& s) {
   const store::StationFileParse parsed = store::parse_station_file(text);
   std::vector<std::string> problems;
   for (const auto& p : parsed.problems) problems.push_back(p.message());
-  if (parsed.ok()) problems = store::apply_station_file(*parsed.file, s.model);
+  store::Model next = s.model;
+  if (parsed.ok()) problems = store::apply_station_file(*parsed.file, next);
   if (!problems.empty()) {
     t.bell();
     for (const auto& p : problems) t.line("  " + p);
     t.line("Station file not applied: every parameter is at its default.");
     return;
   }
-  s.station.reconfigure();
-  save_or_report(t, s);
+  if (!commit(t, s, store::kAllAreas, "menu 6-9 station file", [&](store::Model& m) { m = next; })) return;
   t.line("Station file loaded. Verify it with 6-0 (Display all configured value).");
   if (const auto w = rotator::split_travel_warning(s.model.rotator, s.model.station.rotor_start))
     for (const auto& line : cfg::wrap_words(*w)) t.line(line);

@@ -269,10 +269,9 @@ bool commit_rotator(term::Terminal& t, Services& s, const rotator::RotatorConfig
     t.line("Not changed.");
     return false;
   }
-  s.model.rotator = next;
-  s.station.reconfigure();
-  save_or_report(t, s);
-  return true;
+  // Through the one door: the whole model checked as the next start reads it, the rotator
+  // reconfigured by the station, saved.
+  return commit(t, s, store::bit(store::Area::rotator), "rotator settings", [&](store::Model& m) { m.rotator = next; });
 }
 
 void take_rotor_control(term::Terminal& t, Services& s) {

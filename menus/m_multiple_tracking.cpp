@@ -90,7 +90,9 @@ void menu_m_multiple_tracking(term::Terminal& t, Services& s) {
   const auto pick = choose_satellite(t, "     *** LCD display satellite ***", multi_names, marked, marker);
   if (!pick) return;
 
-  s.model.db.marked = *pick;
+  if (!commit(t, s, store::bit(store::Area::tracking_list), "LCD satellite",
+              [&](store::Model& m) { m.db.marked = *pick; }))
+    return;
   const int lcd_db_index = s.model.db.selected[static_cast<std::size_t>(*pick)];
   const bool prio = *priority;
   if (!with_confirmation(t, s.station, [prio](tracker::StationOps& o) { return o.track_multi(prio); }).ok())

@@ -8,14 +8,16 @@
 #include "menus/common.h"
 #include "menus/term/terminal.h"
 
+#include "store/owner.h"
+
 namespace tb::station { class RealTimeClock; }
-namespace tb::store { struct Model; }
 namespace tb::tracker { class Tracker; class StationLoop; }
 
 namespace tb::menus {
 
 struct Services {
-  store::Model& model;
+  // What is stored, read only: a menu changes it through commit() (the model's one door).
+  const store::Model& model;
   station::RealTimeClock& clock;
   tracker::Tracker& tracker;
   tracker::StationLoop& station;  // the rotator, the radio, rotor control
@@ -28,6 +30,13 @@ struct Services {
   // which detaches the operator and leaves trakbox running.
   std::function<bool(term::Terminal&)> leave;
 };
+
+// The stored model changed through its one door (store/owner.h): `change` applied to a copy,
+// checked whole as the state reader will check it, kept, announced (the station reconfigures what
+// depends on it) and saved. A refusal is said on the terminal with the reader's sentence and
+// nothing changes: false.
+bool commit(term::Terminal& t, Services& s, store::Areas areas, std::string what,
+            const std::function<void(store::Model&)>& change);
 
 // Asks "leave trakbox? [Y/N]"; true for Y (trakbox then saves and exits).
 bool leave_trakbox(term::Terminal& t);

@@ -212,8 +212,7 @@ void realtime_key(term::Terminal& t, Services& s, int k, std::string& said) {
     case 'y':
     case 'Y':
       s.clock.zero_seconds();
-      s.model.clock_offset = s.clock.offset();
-      save_or_report(t, s);
+      (void)commit(t, s, store::bit(store::Area::other), "clock offset", [&](store::Model& m) { m.clock_offset = s.clock.offset(); });
       break;
     case 'u':
     case 'U':
@@ -228,9 +227,9 @@ void realtime_key(term::Terminal& t, Services& s, int k, std::string& said) {
     case 'd':
     case 'D':
       // Dial follow on linear transponders: the spot reached so far stays.
-      s.model.radio.dial_follow = !s.model.radio.dial_follow;
-      s.station.tuner().set_config(s.model.radio);
-      save_or_report(t, s);
+      if (commit(t, s, store::bit(store::Area::radio), std::string(tracker::kDialFollowEdit),
+                 [&](store::Model& m) { m.radio.dial_follow = !m.radio.dial_follow; }))
+        s.station.tuner().set_config(s.model.radio);
       if (!t.full_screen()) t.line(s.model.radio.dial_follow ? "Dial follow ON" : "Dial follow OFF");
       break;
     case 'l':

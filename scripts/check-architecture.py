@@ -9,12 +9,21 @@ not checked here: CMake's target_link_libraries says what links. Every folder mu
 The folders' dependencies must also form no cycle (src/app over src/cli over src/live, ...): a
 cycle is named with the include that closes it. Exits 1 naming each folder and each dependency on
 which the two disagree; run by CTest (`architecture_table`).
+
+And the one door (issue 55): only the model's owner writes the station's store::Model. Outside
+src/store (the owner, the state reader and the pure transforms of a model value), no file may hold
+a writable Model: no `Model&` that is not const, except the parameter of a change handed to the
+owner (`owner.edit(..., [&](store::Model& m) { ... })`, a lambda's `](store::Model& m)`, or the
+type of such a change, `function<void(store::Model&)>`). Each
+breach is named with its line. `--writers` lists the files that hold a writable Model and exits 0
+(for a before/after count).
 """
 import os
 import re
 import sys
 
-ROOT = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), ".."))
+ARGS = [a for a in sys.argv[1:] if not a.startswith("--")]
+ROOT = os.path.abspath(ARGS[0] if ARGS else os.path.join(os.path.dirname(__file__), ".."))
 DOC = os.path.join(ROOT, "docs", "ARCHITECTURE.md")
 EXTERNAL = {"nlohmann-json", "pugixml", "libcurl", "libgps", "ncurses", "boost.asio", "spdlog", "hamlib", "libsqlite3", "nothing", "—", "-", ""}
 
@@ -100,7 +109,41 @@ def cycles(code):
     return out
 
 
+WRITABLE = re.compile(r"(?<![\w:])(?:store::)?Model\s*&(?!&)")
+LAMBDA_PARAM = re.compile(r"(?:\]\s*|void)\(\s*(?:store::)?Model\s*&")
+
+
+def model_writers():
+    """[(file, line number, text)] of writable Model references outside src/store."""
+    out = []
+    for top in ("src", "menus"):
+        for dirpath, _, files in os.walk(os.path.join(ROOT, top)):
+            rel_dir = os.path.relpath(dirpath, ROOT)
+            if rel_dir == "src/store" or rel_dir.startswith("src/store/"):
+                continue
+            for f in sorted(files):
+                if not f.endswith((".cpp", ".h")):
+                    continue
+                with open(os.path.join(dirpath, f), encoding="utf-8") as fh:
+                    for n, line in enumerate(fh, 1):
+                        code = line.split("//")[0]
+                        for m in WRITABLE.finditer(code):
+                            before = code[:m.start()]
+                            if re.search(r"\bconst\s+$", before):
+                                continue
+                            if LAMBDA_PARAM.search(code[max(0, m.start() - 12):m.end()]):
+                                continue
+                            out.append((os.path.join(rel_dir, f), n, line.strip()))
+    return out
+
+
 def main():
+    if "--writers" in sys.argv:
+        files = sorted({f for f, _, _ in model_writers()})
+        for f in files:
+            print(f)
+        print(f"{len(files)} file(s) outside src/store hold a writable store::Model")
+        return 0
     mods = modules()
     code = derived(mods)
     doc = documented(mods)
@@ -117,12 +160,14 @@ def main():
         for name in sorted((doc[short] & shorts) - set(found)):
             problems.append(f"{folder}: the table says it depends on {name}, but no file in it includes {name}/")
     problems += [f"folders include one another: {c}" for c in cycles(code)]
+    problems += [f"{f}:{n}: a writable store::Model outside its owner (store/owner.h): {t}"
+                 for f, n, t in model_writers()]
     if problems:
         print("docs/ARCHITECTURE.md's module table disagrees with the includes:")
         for p in problems:
             print("  " + p)
         return 1
-    print(f"module table matches the includes of {len(code)} folders")
+    print(f"module table matches the includes of {len(code)} folders; only the owner writes the model")
     return 0
 
 

@@ -74,7 +74,8 @@ int main(int argc, char** argv) {
     if (command == "events") return run_events(rest);
     if (command == "log") return run_log(rest);
     if (command == "standby" || command == "reserve") return run_station_command(command, rest);
-    std::fprintf(stderr, "trakbox: %s: unknown command; expected propagate, schedule, passes, next, elements, host, satrak, attach, status, events, log, standby or reserve (see trakbox --help)\n",
+    if (command == "settings") return run_settings(rest);
+    std::fprintf(stderr, "trakbox: %s: unknown command; expected propagate, schedule, passes, next, elements, host, satrak, attach, status, events, log, settings, standby or reserve (see trakbox --help)\n",
                  command.c_str());
     return kExitUsage;
   }

@@ -6,12 +6,13 @@
 #include <vector>
 
 #include "cli/tracker_config.h"
-#include "store/model.h"
+#include "store/owner.h"
 
 namespace tb::app {
 
 // Stores the drivers c names, or puts the stored ones into c. The lines to tell the operator go to
 // `said`; a stored spec this trakbox cannot use is the error returned.
-std::optional<std::string> apply_stored_drivers(TrackerConfig& c, store::Model& m, std::vector<std::string>& said);
+std::optional<std::string> apply_stored_drivers(TrackerConfig& c, store::ModelOwner& owner,
+                                                std::vector<std::string>& said);
 
 }  // namespace tb::app

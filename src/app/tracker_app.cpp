@@ -151,11 +151,6 @@ Startup load_state(store::StateFile& file, const TrackerConfig& c, spdlog::logge
 std::optional<std::string> build_station(StationApp& app, const TrackerConfig& c) {
   if (c.clock_start) app.clock().start_at(*c.clock_start, c.clock_rate.value_or(1.0));
   else if (c.clock_rate) app.clock().start_at(station::system_now(), *c.clock_rate);
-  if (c.dial_rest_ms) app.model().radio.dial_rest_ms = *c.dial_rest_ms;
-  if (c.doppler_steps) {
-    app.model().radio.doppler_step_ssb_hz = c.doppler_steps->first;
-    app.model().radio.doppler_step_fm_hz = c.doppler_steps->second;
-  }
   radio::MakeRadio made = radio::make_radios(c.radio, c.uplink_radio, app.model().radio);
   if (!made.driver) return "--radio: " + made.error;
   std::unique_ptr<rotator::RotatorDriver> rot =
@@ -332,72 +327,86 @@ std::optional<std::string> open_udp_events(StationApp& app, const TrackerConfig&
   return std::nullopt;
 }
 
-// What the command line sets over the stored state: --cross-limit-sector, the drivers
-// (stored_drivers.h; what that says goes to the log and where the operator sees it) and the GPS.
-std::optional<std::string> apply_command_line(TrackerConfig& c, Startup& startup, spdlog::logger& log) {
-  if (c.cross_limit_sector) startup.model.rotator.cross_limit_sector = *c.cross_limit_sector;
-  if (c.station) {   // typed in, as menu 4 would: the GPS's position no longer stands for it
-    startup.model.station.lat_deg = c.station->lat_deg;
-    startup.model.station.lon_deg = c.station->lon_deg;
-    startup.model.station.height_m = c.station->height_m;
-    startup.model.gps.position_from_gps = false;
+// What the command line sets over the stored state, through the model's one door (store/owner.h):
+// each option checked as the state reader will check it at the next start (a value refused there
+// is refused here, naming the option and the range), then stored. The drivers (stored_drivers.h;
+// what that says goes to the log and where the operator sees it) and the GPS too.
+std::optional<std::string> apply_command_line(TrackerConfig& c, store::ModelOwner& owner, Startup& startup,
+                                              spdlog::logger& log) {
+  using store::Origin;
+  std::optional<std::string> refused;
+  auto set = [&](const char* option, const char* key, const store::ModelOwner::Value& v) {
+    if (refused) return;
+    const store::EditResult r = owner.set(key, v, Origin::command_line);
+    if (!r.ok()) refused = std::string("--") + option + ": " + *r.refusal;
+  };
+  if (c.cross_limit_sector) set("cross-limit-sector", "rotator.cross_limit_sector", *c.cross_limit_sector);
+  if (c.station) {  // typed in, as menu 4 would: the GPS's position no longer stands for it
+    const store::EditResult r =
+        owner.set_position(c.station->lat_deg, c.station->lon_deg,
+                           c.station->height_m.value_or(owner.model().station.height_m), Origin::command_line);
+    if (!r.ok() && !refused) refused = "--station: " + *r.refusal;
   }
-  if (c.az_travel_deg) {
-    // Checked with the stored rotator settings before anything is kept (limits, parking, span).
-    rotator::RotatorConfig next = startup.model.rotator;
-    next.az_travel_deg = *c.az_travel_deg;
-    if (const auto problems = rotator::validate(next); !problems.empty()) return "--az-travel: " + problems.front();
-    startup.model.rotator = next;
+  if (c.az_travel_deg) set("az-travel", "rotator.az_travel_deg", *c.az_travel_deg);
+  if (c.event_min_el_deg) set("event-min-el", "event_min_el_deg", *c.event_min_el_deg);
+  if (c.handback_s) set("handback", "sharing.handback_s", static_cast<long long>(*c.handback_s));
+  if (c.exclusive) set("exclusive", "sharing.exclusive", c.exclusive->empty() ? std::string("none") : *c.exclusive);
+  if (c.satnogs_station) set("satnogs-station", "sharing.satnogs_station", static_cast<long long>(*c.satnogs_station));
+  if (c.satnogs_url) set("satnogs-url", "sharing.satnogs_url", *c.satnogs_url);
+  if (c.logger) set("logger", "logger.spec", *c.logger);
+  if (c.logger_key_file) set("logger-key-file", "logger.key_file", *c.logger_key_file);
+  if (c.logger_station_id) set("logger-station-id", "logger.station_id", static_cast<long long>(*c.logger_station_id));
+  if (c.dial_rest_ms) set("dial-rest", "radio.dial_rest_ms", static_cast<long long>(*c.dial_rest_ms));
+  if (c.doppler_steps) {
+    set("doppler-step", "radio.doppler_step_ssb_hz", static_cast<long long>(c.doppler_steps->first));
+    set("doppler-step", "radio.doppler_step_fm_hz", static_cast<long long>(c.doppler_steps->second));
   }
-  if (c.event_min_el_deg) startup.model.event_min_el_deg = *c.event_min_el_deg;
-  if (c.handback_s) startup.model.sharing.handback_s = *c.handback_s;
-  if (c.exclusive) startup.model.sharing.exclusive = *c.exclusive;
-  if (c.satnogs_station) startup.model.sharing.satnogs_station = *c.satnogs_station;
-  if (c.satnogs_url) startup.model.sharing.satnogs_url = *c.satnogs_url;
-  if (c.logger) startup.model.logger.spec = *c.logger;
-  if (c.logger_key_file) startup.model.logger.key_file = *c.logger_key_file;
-  if (c.logger_station_id) startup.model.logger.station_id = *c.logger_station_id;
+  if (c.gps_source) set("gps", "gps.source", *c.gps_source);
+  if (c.gps_follow) set("gps-follow", "gps.follow", *c.gps_follow);
+  if (c.gps_threshold_m) set("gps-threshold", "gps.threshold_m", *c.gps_threshold_m);
+  if (c.elements_refresh_hours) set("elements-refresh-hours", "refresh.interval_hours", *c.elements_refresh_hours);
+  if (c.rotor_control) set("rotor-control", "rotor_control", *c.rotor_control);
+  if (refused) return refused;
   std::vector<std::string> said;
-  if (c.rotor_control) {
-    startup.model.rotor_control = *c.rotor_control;
+  if (c.rotor_control)
     said.push_back(*c.rotor_control ? "rotor control on (--rotor-control, stored): the antenna follows the satellite "
                                       "tracked"
                                     : "rotor control off (--rotor-control, stored): the antenna stays where it is");
-  }
-  if (auto err = apply_stored_drivers(c, startup.model, said)) return err;
+  if (auto err = apply_stored_drivers(c, owner, said)) return err;
   for (const auto& line : said) {
     log.info("{}", line);
     if (c.service) continue;
     if (c.front_end == FrontEnd::host) std::fprintf(stderr, "trakbox: %s\n", line.c_str());
     else startup.drivers_said.push_back(line);
   }
-  if (c.gps_source) startup.model.gps.source = *c.gps_source;
   if (c.udp_events) {
-    startup.model.udp_events.clear();
-    for (const UdpTarget& t : *c.udp_events) startup.model.udp_events.push_back(inet::host_port_text(t));
+    std::vector<std::string> targets;
+    for (const UdpTarget& t : *c.udp_events) targets.push_back(inet::host_port_text(t));
+    const store::EditResult r = owner.edit(store::bit(store::Area::other), "udp_events", Origin::command_line,
+                                           [&](store::Model& m) { m.udp_events = targets; });
+    if (!r.ok()) return "--udp-events: " + *r.refusal;
   }
-  if (c.gps_follow) startup.model.gps.follow = *c.gps_follow;
-  if (c.gps_threshold_m) startup.model.gps.threshold_m = *c.gps_threshold_m;
+  if (!c.elements_urls.empty()) {
+    // --elements-url replaces the stored sources (keeping the validators of a URL that stays).
+    std::vector<store::RefreshSource> sources;
+    for (const std::string& url : c.elements_urls) {
+      store::RefreshSource src{url, "", ""};
+      for (const auto& old : owner.model().refresh.sources)
+        if (old.url == url) src = old;
+      sources.push_back(src);
+    }
+    const store::EditResult r = owner.edit(store::bit(store::Area::other), "refresh sources", Origin::command_line,
+                                           [&](store::Model& m) { m.refresh.sources = sources; });
+    if (!r.ok()) return "--elements-url: " + *r.refusal;
+  }
   return std::nullopt;
 }
 
 }  // namespace
 
-// The element refresh of the command line: --elements-url replaces the stored sources (keeping the
-// validators of a URL that stays), --elements-refresh-hours the interval.
+// The element refresh's bound of one download (its sources and interval are stored settings,
+// set by apply_command_line).
 void configure_refresh(StationApp& app, const TrackerConfig& c) {
-  store::RefreshSettings& r = app.model().refresh;
-  if (!c.elements_urls.empty()) {
-    std::vector<store::RefreshSource> sources;
-    for (const std::string& url : c.elements_urls) {
-      store::RefreshSource src{url, "", ""};
-      for (const auto& old : r.sources)
-        if (old.url == url) src = old;
-      sources.push_back(src);
-    }
-    r.sources = std::move(sources);
-  }
-  if (c.elements_refresh_hours) r.interval_hours = *c.elements_refresh_hours;
   app.refresh().set_timeout(std::chrono::seconds(c.elements_timeout_s));
 }
 
@@ -417,7 +426,9 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   auto log = open_log(c);
   store::StateFile file(c.state_dir);
   Startup startup = load_state(file, c, *log);
-  if (auto err = apply_command_line(c, startup, *log)) return usage_error(*err);
+  store::ModelOwner owner(std::move(startup.model),
+                          startup.fresh || startup.ram_lost ? store::Origin::defaults : store::Origin::state);
+  if (auto err = apply_command_line(c, owner, startup, *log)) return usage_error(*err);
 
   // "trakbox stopped" is the log's last line: written after the station, its drivers' workers and
   // the servers are gone, whose last words (a link closing) came after it before (issue 30).
@@ -428,7 +439,7 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
       if (started) log->info("trakbox stopped");
     }
   } stopped_line{log};
-  StationApp app(startup.model, file, log);
+  StationApp app(std::move(owner), file, log);
   if (auto err = build_station(app, c)) return usage_error(*err);
   const std::unique_ptr<tracker::Logging> logging = open_logging(app, c.state_dir, c.data_dir);
   configure_refresh(app, c);

@@ -12,6 +12,8 @@ int run_status(const std::vector<std::string>& args);
 int run_events(const std::vector<std::string>& args);
 // `trakbox standby on|off`, `trakbox reserve START END [NOTE]` (live/station_command.h).
 int run_station_command(const std::string& command, const std::vector<std::string>& args);
+// `trakbox settings [set KEY VALUE | reset KEY]` (settings_client.cpp; store/settings.h).
+int run_settings(const std::vector<std::string>& args);
 // `trakbox log ...` (log_client.cpp): through the socket, or the state's logbook when nothing runs.
 int run_log(const std::vector<std::string>& args);
 // This terminal attached to the station at socket_path (also what a second `trakbox` on a state

@@ -8,68 +8,20 @@
 #include "cli/tracker_config.h"
 #include "station/station.h"
 #include "store/model.h"
+#include "store/settings.h"
 #include "store/state_file.h"
 #include "util/text.h"
 
 namespace tb::app {
-namespace {
-
-// The value with the hemisphere's sign, and whether a letter was written.
-std::optional<double> signed_degrees(std::string_view item, char pos, char neg, bool& letter) {
-  const std::string_view t = text::trim(item);
-  letter = !t.empty() && (std::toupper(static_cast<unsigned char>(t.back())) == pos ||
-                          std::toupper(static_cast<unsigned char>(t.back())) == neg);
-  return station::parse_hemisphere_degrees(t, pos, neg);
-}
-
-bool is_locator(std::string_view s) { return maidenhead_centre(s).has_value(); }
-
-}  // namespace
 
 std::optional<orbit::Observer> maidenhead_centre(std::string_view loc) { return station::maidenhead_centre(loc); }
 
 Parsed<orbit::Observer> parse_station_text(std::string_view text) {
-  const std::string expected =
-      "LAT,LON[,HEIGHT_M] in degrees (+ north, + east, or 48.85N,2.35E; W and S for west and south) "
-      "or a Maidenhead locator (JN18du[,HEIGHT_M])";
+  // The one reading of a typed position (store/settings.h), which host mode's QTH shares.
+  const store::ParsedPosition p = store::parse_position(text);
   Parsed<orbit::Observer> r;
-  auto fail = [&](std::string why) {
-    r.error = why.empty() ? "expected " + expected + ", found '" + std::string(text) + "'"
-                          : why + " in '" + std::string(text) + "'; expected " + expected;
-    return r;
-  };
-  const std::vector<std::string_view> items = text::split(text, ',');
-  auto height = [&](std::string_view item) -> std::optional<double> {
-    const auto h = text::parse_double(text::trim(item));
-    if (!h || *h < -1000.0 || *h > 100000.0) return std::nullopt;
-    return h;
-  };
-  if (!items.empty() && is_locator(text::trim(items[0]))) {
-    if (items.size() > 2) return fail("");
-    orbit::Observer o = *maidenhead_centre(text::trim(items[0]));
-    if (items.size() == 2) {
-      const auto h = height(items[1]);
-      if (!h) return fail("the height must be metres -1000..100000");
-      o.height_m = *h;
-    }
-    r.value = o;
-    return r;
-  }
-  if (items.size() < 2 || items.size() > 3) return fail("");
-  bool lat_letter = false, lon_letter = false;
-  const auto lat = signed_degrees(items[0], 'N', 'S', lat_letter);
-  const auto lon = signed_degrees(items[1], 'E', 'W', lon_letter);
-  if (!lat) return fail("the latitude is not a number of degrees (N or S may follow)");
-  if (!lon) return fail("the longitude is not a number of degrees (E or W may follow)");
-  if (*lat < -90.0 || *lat > 90.0) return fail("the latitude is outside -90..90");
-  if (*lon < -180.0 || *lon > 360.0 || (lon_letter && *lon > 180.0)) return fail("the longitude is outside -180..360");
-  orbit::Observer o{*lat, *lon > 180.0 ? *lon - 360.0 : *lon, 0.0};
-  if (items.size() == 3) {
-    const auto h = height(items[2]);
-    if (!h) return fail("the height must be metres -1000..100000");
-    o.height_m = *h;
-  }
-  r.value = o;
+  if (!p.ok()) r.error = p.error;
+  else r.value = orbit::Observer{p.lat_deg, p.lon_deg, p.height_m.value_or(0.0)};
   return r;
 }
 

@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include <nlohmann/json.hpp>
+
 #include "live/build_info.h"
 #include "cli/cli_defaults.h"
 #include "satrak/rotator_registry.h"
@@ -15,6 +17,7 @@
 #include "menus/term/line_terminal.h"
 #include "store/model.h"
 #include "store/refresh.h"
+#include "store/settings.h"
 #include "store/state_file.h"
 #include "util/safe_text.h"
 #include "util/secret.h"
@@ -67,18 +70,18 @@ std::vector<OptionSpec> tracker_option_specs() {
       {"http-public-view", "", "with --http-secret-file: anyone allowed may view the page; changes still need the "
                                "secret"},
       {"http-host", "NAME", "a name the web page answers to in the Host header beyond IP addresses and localhost "
-                            "(the station's name on the LAN, or behind a proxy; repeatable)", true},
+                            "(the station's name on the LAN, or behind a proxy)", true},
       {"listen", "ADDR", "address the host, rotctld, rigctld and web servers listen on (default 127.0.0.1)"},
       {"rotctld-secret-file", "FILE", "rotctld clients must first send \\password with the secret on this file's "
                                       "first line (never on the command line)"},
       {"rigctld-secret-file", "FILE", "rigctld clients must first send \\password with the secret in FILE"},
       {"host-secret-file", "FILE", "host-mode clients must first send PASS with the secret in FILE"},
       {"auth-timeout", "S", "seconds a client of a port with a secret has to give it, 1 to 600 (default 10)"},
-      {"allow", "CIDR", "only clients in this address range may connect to any TCP endpoint (repeatable; "
+      {"allow", "CIDR", "only clients in this address range may connect to any TCP endpoint ("
                         "e.g. 192.168.1.0/24, 2001:db8::/32, 10.0.0.5); others are refused", true},
       {"guess-exempt", "CIDR", "wrong secrets from this address range are slowed but never lock it out (a trusted "
-                               "station behind a shared address; repeatable)", true},
-      {"elements-url", "URL", "refresh the menu-3 database from this URL or file (repeatable; e.g. CelesTrak's "
+                               "station behind a shared address)", true},
+      {"elements-url", "URL", "refresh the menu-3 database from this URL or file (e.g. CelesTrak's "
                               "gp.php?GROUP=amateur&FORMAT=json): sets of the same catalog number are updated. "
                               "Replaces the sources stored by menu 3-5", true},
       {"elements-refresh-hours", "H", "hours between element refreshes, 2 to 720 (default 12, or as stored)"},
@@ -118,7 +121,7 @@ std::vector<OptionSpec> tracker_option_specs() {
                                      "elements, link-lost, link-back, save-failed, control; the event is in its environment "
                                      "(TRAKBOX_EVENT, TRAKBOX_SATELLITE, TRAKBOX_AOS, ...; docs/service.md)", true},
       {"udp-events", "HOST:PORT", "send each event as one JSON datagram (the fields of trakbox events) to HOST:PORT, "
-                                  "e.g. 192.168.1.20:9000 (repeatable; stored, so later starts send there too; none: "
+                                  "e.g. 192.168.1.20:9000 (stored, so later starts send there too; none: "
                                   "no more)", true},
       {"hook-timeout", "S", "seconds an --on-event command may run before it is killed, 1 to 3600 (default 60)"},
       {"event-lead", "S", "the AOS event comes S seconds before AOS, 0 to 3600 (default 0)"},
@@ -175,6 +178,26 @@ std::optional<std::string> set_radio_spec(TrackerConfig& c, const std::string& t
 
 namespace {
 
+// A stored setting given on the command line, read and refused by the settings table's rule and
+// sentence (store/settings.h): "--event-min-el: event_min_el_deg: 91 is outside -2 .. 90 deg".
+std::optional<nlohmann::json> stored_option(const ParsedOptions& o, OptionReader& r, const char* name,
+                                            std::string_view key) {
+  const auto v = o.value(name);
+  if (!v) return std::nullopt;
+  const store::ParsedSetting p = store::parse_setting(*store::find_setting(key), *v);
+  if (!p.value) {
+    r.fail(OptionReader::option_label(name), p.error);
+    return std::nullopt;
+  }
+  return p.value;
+}
+template <typename T>
+std::optional<T> stored_value(const ParsedOptions& o, OptionReader& r, const char* name, std::string_view key) {
+  const auto v = stored_option(o, r, name, key);
+  if (!v) return std::nullopt;
+  return v->get<T>();
+}
+
 // The device specs, checked before anything starts.
 void read_devices(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
   c.rotator_text = o.value("rotator");
@@ -228,8 +251,7 @@ void read_refresh(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
     if (const auto why = store::add_refresh_source(probe, url)) r.fail("--elements-url", *why);
     else c.elements_urls.push_back(url);
   }
-  if (const auto h = r.number("elements-refresh-hours", false, "hours, 2 to 720",
-                              Range{store::kRefreshMinHours, store::kRefreshMaxHours}))
+  if (const auto h = stored_value<double>(o, r, "elements-refresh-hours", "refresh.interval_hours"))
     c.elements_refresh_hours = *h;
   if (const auto v = r.integer("elements-timeout", false, "seconds, 1 to 600", Range{1, 600}))
     c.elements_timeout_s = static_cast<int>(*v);
@@ -239,14 +261,9 @@ void read_refresh(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
 // --handback, --exclusive, --satnogs-station, --satnogs-url (issue 44, docs/sharing.md); --logger,
 // --logger-key-file, --logger-station-id (issue 45, docs/logbook.md).
 void read_sharing(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
-  if (const auto h = r.integer("handback", false, "seconds, 0 to 86400", Range{0, 86400}))
-    c.handback_s = static_cast<int>(*h);
-  if (const auto v = r.integer("satnogs-station", false, "a station id, 0 to 1000000000", Range{0, 1000000000}))
-    c.satnogs_station = static_cast<int>(*v);
-  if (const auto u = o.value("satnogs-url")) {
-    if (u->rfind("http://", 0) == 0 || u->rfind("https://", 0) == 0) c.satnogs_url = *u;
-    else r.fail("--satnogs-url", "expected an http:// or https:// URL; found '" + *u + "'");
-  }
+  c.handback_s = stored_value<int>(o, r, "handback", "sharing.handback_s");
+  c.satnogs_station = stored_value<int>(o, r, "satnogs-station", "sharing.satnogs_station");
+  c.satnogs_url = stored_value<std::string>(o, r, "satnogs-url", "sharing.satnogs_url");
   if (const auto l = o.value("logger")) {
     const logbook::LoggerSpecParse p = logbook::parse_logger_spec(*l);
     if (!p.error.empty()) r.fail("--logger", p.error.substr(std::string_view("--logger: ").size()));
@@ -256,12 +273,8 @@ void read_sharing(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
     if (f->empty()) r.fail("--logger-key-file", "a file is expected");
     else c.logger_key_file = std::filesystem::absolute(*f).lexically_normal().string();
   }
-  if (const auto v = r.integer("logger-station-id", false, "a station profile id, 1 to 1000000000", Range{1, 1000000000}))
-    c.logger_station_id = static_cast<int>(*v);
-  if (const auto x = o.value("exclusive")) {
-    if (*x == "rotctld" || *x == "rigctld" || *x == "satrak" || *x == "none") c.exclusive = *x == "none" ? "" : *x;
-    else r.fail("--exclusive", "expected rotctld, rigctld, satrak or none; found '" + *x + "'");
-  }
+  c.logger_station_id = stored_value<int>(o, r, "logger-station-id", "logger.station_id");
+  if (const auto x = stored_value<std::string>(o, r, "exclusive", "sharing.exclusive")) c.exclusive = *x == "none" ? "" : *x;
 }
 
 void read_gps(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
@@ -271,12 +284,8 @@ void read_gps(const ParsedOptions& o, OptionReader& r, TrackerConfig& c) {
     else if (const auto e = gps::parse_gps_spec(*g, why)) c.gps_source = e->text();
     else r.fail("--gps", why);
   }
-  if (const auto f = o.value("gps-follow")) {
-    if (*f == "yes" || *f == "no") c.gps_follow = *f == "yes";
-    else r.fail("--gps-follow", "expected yes or no; found '" + *f + "'");
-  }
-  c.gps_threshold_m = r.number("gps-threshold", false, "metres, 1 to 100000",
-                               Range{station::kGpsThresholdMinM, station::kGpsThresholdMaxM});
+  c.gps_follow = stored_value<bool>(o, r, "gps-follow", "gps.follow");
+  c.gps_threshold_m = stored_value<double>(o, r, "gps-threshold", "gps.threshold_m");
 }
 
 // --doppler-step SSB,FM: two whole numbers of Hz, each within what the state file takes.
@@ -284,16 +293,18 @@ void read_doppler_steps(const ParsedOptions& o, OptionReader& r, TrackerConfig& 
   const auto v = o.value("doppler-step");
   if (!v) return;
   const auto comma = v->find(',');
-  auto hz = [](const std::string& t, long long lo, long long hi) -> std::optional<long long> {
-    char* end = nullptr;
-    const long long n = t.empty() ? 0 : std::strtoll(t.c_str(), &end, 10);
-    if (t.empty() || *end != '\0' || n < lo || n > hi) return std::nullopt;
-    return n;
-  };
-  const auto ssb = comma == std::string::npos ? std::nullopt : hz(v->substr(0, comma), 10, 1000);
-  const auto fm = comma == std::string::npos ? std::nullopt : hz(v->substr(comma + 1), 10, 10000);
-  if (ssb && fm) c.doppler_steps = std::pair<radio::Hz, radio::Hz>{*ssb, *fm};
-  else r.fail("--doppler-step", "\"" + *v + "\": expected SSB,FM in Hz, SSB/CW 10 to 1000 and FM 10 to 10000, e.g. 20,100");
+  if (comma == std::string::npos) {
+    r.fail("--doppler-step", "\"" + *v + "\": expected SSB,FM in Hz, e.g. 20,100 (" +
+                                 store::range_text(*store::find_setting("radio.doppler_step_ssb_hz")) + " and " +
+                                 store::range_text(*store::find_setting("radio.doppler_step_fm_hz")) + ")");
+    return;
+  }
+  // Each by the table's rule: "--doppler-step: radio.doppler_step_fm_hz: 5 is outside 10 .. 10000 Hz".
+  const store::ParsedSetting ssb = store::parse_setting(*store::find_setting("radio.doppler_step_ssb_hz"), v->substr(0, comma));
+  const store::ParsedSetting fm = store::parse_setting(*store::find_setting("radio.doppler_step_fm_hz"), v->substr(comma + 1));
+  if (!ssb.value) r.fail("--doppler-step", ssb.error);
+  else if (!fm.value) r.fail("--doppler-step", fm.error);
+  else c.doppler_steps = std::pair<radio::Hz, radio::Hz>{ssb.value->get<radio::Hz>(), fm.value->get<radio::Hz>()};
 }
 
 // --allow ADDRESS[/PREFIX]...: who may connect to the servers.
@@ -376,7 +387,11 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
   const ParsedOptions& o = parsed.options;
   if (o.has("help"))
     return ConfigOutcome::text("usage: trakbox [options]                 the TrakBox menus on the simulated station\n"
-                     "       trakbox propagate|schedule|passes ...   non-interactive orbit commands (--help each)\n\n" +
+                     "       trakbox propagate|schedule|passes|next|elements ...   orbit commands (--help each)\n"
+                     "       trakbox attach|status|events ...   the running station (--help each)\n"
+                     "       trakbox settings [set KEY VALUE | reset KEY]   every stored setting (--help)\n"
+                     "       trakbox standby on|off, trakbox reserve START END [NOTE], trakbox log ...\n"
+                     "       trakbox host, trakbox satrak HOST:PORT CMD   host mode; a Satrak ACU's client\n\n" +
                      describe_options(specs));
   if (o.has("version")) return ConfigOutcome::text(std::string("trakbox ") + kVersion + "\n");
   if (!o.positional().empty()) return ConfigOutcome::refuse("unexpected argument '" + o.positional().front() + "'");
@@ -394,8 +409,7 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
   // ticks every 100 ms of simulated time, at least every few ms of wall time: docs/rotator.md).
   c.clock_rate = r.number("clock-rate", false, "a rate > 0 and at most 200 (1 is real time; 200 is the fastest "
                           "the tracker and the simulated rotator follow)", Range{0.0, station::kMaxClockRate, true});
-  if (const auto v = r.integer("dial-rest", false, "milliseconds, 0 to 10000", Range{0, 10000}))
-    c.dial_rest_ms = static_cast<int>(*v);
+  c.dial_rest_ms = stored_value<int>(o, r, "dial-rest", "radio.dial_rest_ms");
   read_doppler_steps(o, r, c);
   if (const auto v = r.integer("tick-ms", false, "milliseconds, 100 to 1000", Range{100, 1000}))
     c.tick_ms = static_cast<int>(*v);
@@ -419,22 +433,15 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
     if (!c.clock_start) r.fail("--clock", "expected an ISO 8601 UTC time like 2026-05-21T12:00:00Z; found '" + *t + "'");
   }
   read_devices(o, r, c);
-  if (const auto x = o.value("cross-limit-sector")) {
-    if (*x == "yes" || *x == "no") c.cross_limit_sector = *x == "yes";
-    else r.fail("--cross-limit-sector", "expected yes or no; found '" + *x + "'");
-  }
+  c.cross_limit_sector = stored_value<bool>(o, r, "cross-limit-sector", "rotator.cross_limit_sector");
   if (const auto x = o.value("station")) {
-    const Parsed<orbit::Observer> p = parse_station_text(*x);
-    if (p.value) c.station = TrackerConfig::Position{p.value->lat_deg, p.value->lon_deg, p.value->height_m};
+    const store::ParsedPosition p = store::parse_position(*x);
+    if (p.ok()) c.station = TrackerConfig::Position{p.lat_deg, p.lon_deg, p.height_m};
     else r.fail("--station", p.error);
   }
-  c.az_travel_deg = r.number("az-travel", false, "degrees, 360 to 720",
-                             Range{rotator::limits::kTravelMinDeg, rotator::limits::kTravelMaxDeg});
-  if (const auto x = o.value("rotor-control")) {
-    if (*x == "on" || *x == "off") c.rotor_control = *x == "on";
-    else r.fail("--rotor-control", "expected on or off; found '" + *x + "'");
-  }
-  c.event_min_el_deg = r.number("event-min-el", false, "degrees, -2 to 90", Range{-2.0, 90.0});
+  c.az_travel_deg = stored_value<double>(o, r, "az-travel", "rotator.az_travel_deg");
+  c.rotor_control = stored_value<bool>(o, r, "rotor-control", "rotor_control");
+  c.event_min_el_deg = stored_value<double>(o, r, "event-min-el", "event_min_el_deg");
   read_sharing(o, r, c);
   read_gps(o, r, c);
   if (const auto l = o.value("log-level")) {

@@ -88,7 +88,8 @@ struct TrackerConfig {
   std::optional<bool> cross_limit_sector;
   // --station LAT,LON[,HEIGHT_M]|LOCATOR: the station's position (menu 4's), stored when given.
   struct Position {
-    double lat_deg = 0.0, lon_deg = 0.0, height_m = 0.0;
+    double lat_deg = 0.0, lon_deg = 0.0;
+    std::optional<double> height_m;  // none typed: the stored height stays (as host mode's QTH)
   };
   std::optional<Position> station;
   // --az-travel DEG: the rotator's azimuth travel from its stop (RotatorConfig::az_travel_deg: 450

@@ -180,6 +180,7 @@ std::vector<std::string> Interpreter::help() {
 Reply Interpreter::execute(std::string_view line) {
   const std::string_view s = text::trim(line, text::kWhitespace);
   if (s.empty()) return {};
+  line_ = std::string(s);
   const std::string u = upper(s);
   if (u == "Q") {
     Reply r;
@@ -257,6 +258,7 @@ Reply Interpreter::mode(std::string_view cmd, std::string_view arg) {
   if (!m || *m == radio::Mode::none)
     return error(std::string(cmd) + ": '" + std::string(a) + "' is not a radio mode: expected FM, LSB, USB or CW, e.g. " +
                  std::string(cmd) + "FM");
+  if (auto no = ask_radio(cmd)) return *no;
   station_.tracker().stop();
   station_.radio().set_mode(cmd == "MU" ? radio::Link::uplink : radio::Link::downlink, *m);
   return radio_outcome(cmd);
@@ -280,6 +282,7 @@ Reply Interpreter::frequency(std::string_view cmd, std::string_view arg) {
                  " MHz, which no radio here tunes: expected 1 MHz to 6 GHz in 10 Hz units, e.g. " + std::string(cmd) +
                  "14595000 for 145.950 MHz");
   }
+  if (auto no = ask_radio(cmd)) return *no;
   station_.tracker().stop();
   station_.radio().set_frequency(cmd == "FU" ? radio::Link::uplink : radio::Link::downlink, *hz);
   return radio_outcome(cmd);
@@ -289,9 +292,17 @@ Reply Interpreter::raw(std::string_view arg) {
   if (arg.empty()) return error("S: nothing to send: expected the string after S, e.g. STX;");
   const auto bytes = unescape(arg);
   if (!bytes) return error("S: a bad escape in '" + std::string(arg) + "': expected \\xHH (two hex digits) or \\\\");
+  if (auto no = ask_radio("S")) return *no;
   station_.tracker().stop();
   station_.radio().send_raw(*bytes);
   return radio_outcome("S");
+}
+
+std::optional<Reply> Interpreter::ask_radio(std::string_view cmd) {
+  const tracker::OpResult done = ops(!unconfirmed_.empty() && unconfirmed_ == line_).take_radio();
+  unconfirmed_ = done.confirm ? line_ : std::string();
+  if (done.ok()) return std::nullopt;
+  return error(std::string(cmd) + ": " + *done.refusal + (done.confirm ? " (send it again to confirm)" : ""));
 }
 
 Reply Interpreter::radio_outcome(std::string_view cmd) {

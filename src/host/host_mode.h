@@ -89,6 +89,11 @@ class Interpreter {
   Reply refresh_status();
   Reply control();
   Reply radio_outcome(std::string_view cmd);
+  // The radio asked for as menu 1's keys ask (tracker/control.h): refused in standby; when an
+  // outside client (rigctld) holds it, done when the same command comes again at once. Nothing when
+  // granted (host mode then holds the radio, and status says so).
+  std::optional<Reply> ask_radio(std::string_view cmd);
+  std::string line_;  // the command line being executed (its repetition is the confirmation)
   // trakbox's tuning commands (host_tuning.cpp): PB passband spot, OR/OT offsets, CT tone, ?T.
   std::optional<Reply> tuning(std::string_view upper_line, std::string_view line);
   Reply station(std::string_view arg);   // QTH

@@ -11,6 +11,7 @@
 #include "radio/doppler.h"
 #include "station/station.h"
 #include "store/model.h"
+#include "store/settings.h"
 #include "tracker/station_loop.h"
 #include "util/text.h"
 
@@ -59,29 +60,13 @@ std::optional<Reply> Interpreter::tuning(std::string_view u, std::string_view li
   return Reply{};
 }
 
-// QTH JN58td | QTH LAT,LON[,HEIGHT_M]: the station's position, as menu 4 sets it.
+// QTH JN58td | QTH LAT,LON[,HEIGHT_M]: the station's position, as menu 4 sets it, read as --station
+// reads it (store::parse_position: one reading); without a height the stored one stays.
 Reply Interpreter::station(std::string_view arg) {
-  const std::string a = text::trimmed(arg);
-  const char* expected = "QTH: expected a Maidenhead locator (QTH JN58td) or LAT,LON[,HEIGHT_M] in degrees and metres";
-  double lat = 0.0, lon = 0.0, height = station_.model().station.height_m;
-  if (const auto o = station::maidenhead_centre(a)) {
-    lat = o->lat_deg;
-    lon = o->lon_deg;
-    height = 0.0;
-  } else {
-    const auto parts = text::split(a, ',');
-    if (parts.size() < 2 || parts.size() > 3) return error(expected);
-    const auto la = text::parse_double(text::trim(parts[0], text::kWhitespace));
-    const auto lo = text::parse_double(text::trim(parts[1], text::kWhitespace));
-    const auto h = parts.size() == 3 ? text::parse_double(text::trim(parts[2], text::kWhitespace)) : std::optional(height);
-    if (!la || !lo || !h) return error(expected);
-    lat = *la;
-    lon = *lo;
-    height = *h;
-  }
-  const tracker::OpResult done = ops().set_station(lat, lon, height);
+  const store::ParsedPosition p = store::parse_position(text::trimmed(arg));
+  if (!p.ok()) return error("QTH: " + p.error);
+  const tracker::OpResult done = ops().set_station(p.lat_deg, p.lon_deg, p.height_m.value_or(station_.model().station.height_m));
   if (!done.ok()) return error("QTH: " + *done.refusal);
-  if (done.model_changed) station_.save_settings();
   return Reply{{"QTH " + done.note.substr(done.note.find(' ') + 1)}, true, false};
 }
 

@@ -87,9 +87,9 @@ store::Model defaults_with_data(const std::string& data_dir, std::vector<std::st
 }
 
 struct StationApp::Impl {
-  Impl(store::Model model, store::StateFile file, std::shared_ptr<spdlog::logger> log)
-      : model(std::move(model)), file(std::move(file)), log(std::move(log)), tracker(this->model, clock) {
-    clock.set_offset(this->model.clock_offset);
+  Impl(store::ModelOwner initial, store::StateFile file, std::shared_ptr<spdlog::logger> log)
+      : owner(std::move(initial)), file(std::move(file)), log(std::move(log)), tracker(owner.model(), clock) {
+    clock.set_offset(model.clock_offset);
   }
 
   // SIGTERM, SIGINT and SIGHUP end the wait of the front end (Shutdown).
@@ -176,14 +176,14 @@ struct StationApp::Impl {
   int last_signal = 0;
   bool unattended = false;
   std::function<void()> on_hangup;
-  store::Model model;
+  store::ModelOwner owner;                     // the one writer of the model (store/owner.h)
+  const store::Model& model = owner.model();  // everyone here reads it
   store::StateFile file;
   std::shared_ptr<spdlog::logger> log;
   station::RealTimeClock clock;
   tracker::Tracker tracker;
   std::unique_ptr<tracker::StationLoop> station;
   std::unique_ptr<tracker::ElementsRefresh> refresh;
-  tracker::PassMemo next_passes;
   term::Terminal* terminal = nullptr;
   satrak::Unit* satrak = nullptr;
   nlohmann::json satrak_saved;  // kept as loaded when the Satrak server is off
@@ -240,33 +240,32 @@ void StationApp::set_events(std::function<void(const tracker::Event&)> sink, std
 std::optional<std::chrono::system_clock::time_point> StationApp::last_saved() const { return impl_->last_saved; }
 
 
-void StationApp::Impl::on_gps_report(const gps::Report& r, StationApp& app) {
+void StationApp::Impl::on_gps_report(const gps::Report& r, StationApp&) {
   const std::string before = gps->status_word();
   log_notes(gps->on_report(r, clock.now()));
   if (station && station->apply_gps_position()) {
     const auto& st = model.station;
     log->info("GPS: the station is now at {:.6f} {:.6f} {:.1f} m (fix of {})", st.lat_deg, st.lon_deg, st.height_m,
               model.gps.position_time ? orbit::format_iso8601(*model.gps.position_time) : std::string("?"));
-    app.save();
   }
   if (gps->status_word() != before) show_status();
 }
 
-StationApp::StationApp(store::Model model, store::StateFile file, std::shared_ptr<spdlog::logger> log)
-    : impl_(std::make_unique<Impl>(std::move(model), std::move(file), std::move(log))) {
+StationApp::StationApp(store::ModelOwner owner, store::StateFile file, std::shared_ptr<spdlog::logger> log)
+    : impl_(std::make_unique<Impl>(std::move(owner), std::move(file), std::move(log))) {
   impl_->refresh = std::make_unique<tracker::ElementsRefresh>(
-      impl_->model, [this](std::function<void()> f) { asio::post(impl_->io, std::move(f)); },
+      impl_->owner, [this](std::function<void()> f) { asio::post(impl_->io, std::move(f)); },
       [this] { save(); });
   impl_->refresh->set_station_clock(&impl_->clock);
 }
 StationApp::~StationApp() = default;
 
 station::RealTimeClock& StationApp::clock() { return impl_->clock; }
-store::Model& StationApp::model() { return impl_->model; }
+const store::Model& StationApp::model() const { return impl_->model; }
+store::ModelOwner& StationApp::owner() { return impl_->owner; }
 tracker::Tracker& StationApp::tracker() { return impl_->tracker; }
 tracker::StationLoop& StationApp::station() { return *impl_->station; }
 tracker::ElementsRefresh& StationApp::refresh() { return *impl_->refresh; }
-tracker::PassMemo& StationApp::next_passes() { return impl_->next_passes; }
 boost::asio::io_context& StationApp::io() { return impl_->io; }
 spdlog::logger& StationApp::log() { return *impl_->log; }
 void StationApp::set_terminal(term::Terminal* t) { impl_->terminal = t; }
@@ -279,9 +278,9 @@ void StationApp::build_station(std::unique_ptr<rotator::RotatorDriver> rot, std:
   opt.clock_rate = m.clock.rate();
   auto controller =
       std::make_unique<rotator::Controller>(m.model.rotator, m.model.station.rotor_start, std::move(rot), opt);
-  m.station = std::make_unique<tracker::StationLoop>(m.model, m.clock, m.tracker, std::move(controller), std::move(rad));
+  m.station = std::make_unique<tracker::StationLoop>(m.owner, m.clock, m.tracker, std::move(controller), std::move(rad));
   m.station->set_refresh(m.refresh.get());
-  // Rotor control and the choice of what to track are saved when they change, by whoever.
+  // Every change of the model, by whoever (the owner announces it to the station), is saved.
   m.station->on_settings_changed([this] { save(); });
   // Each change of who holds the antenna or the radio is an event (hooks, UDP, the stream; issue 44).
   m.station->on_control([&m](const tracker::Change& c) {
@@ -380,9 +379,9 @@ bool StationApp::wait_readable(int fd, std::optional<term::Duration> timeout) {
 
 std::optional<std::string> StationApp::save() {
   Impl& m = *impl_;
-  m.model.clock_offset = m.clock.offset();
   std::string err;
   nlohmann::json doc = store::to_json(m.model);
+  doc["clock_offset_us"] = m.clock.offset().count();  // the clock as it runs (menu 5, TIME=, GPS)
   if (m.satrak) doc["satrak"] = satrak::to_json(m.satrak->settings());
   else if (!m.satrak_saved.is_null()) doc["satrak"] = m.satrak_saved;
   if (!m.file.save(doc, err)) {
@@ -485,19 +484,29 @@ bool StationApp::Impl::reread_data(const std::string& data_dir) {
     return false;
   }
   // As the scheduled refresh does: newer sets of the same catalog numbers, the database's names kept.
-  const store::RefreshReport report = store::apply_refresh(model.db, parsed.sets);
-  log->info("SIGHUP: {} element set(s) updated from {} ({})", report.updated.size(), path, report.summary());
   const std::string fm_path = freqmode_file(data_dir);
   const auto fm = radio::parse_freqmode(read_text(fm_path));
   for (const auto& problem : fm.problems) log->warn("SIGHUP: {}: {}", fm_path, problem.message());
+  store::Database db = model.db;
+  const store::RefreshReport report = store::apply_refresh(db, parsed.sets);
+  log->info("SIGHUP: {} element set(s) updated from {} ({})", report.updated.size(), path, report.summary());
+  std::size_t radio_entries = 0;
   if (!fm.records.empty()) {
-    store::Database db = model.db;
     const store::FreqModeUpload up = store::apply_freqmode(db, fm.records);
     db.selected = model.db.selected;
     db.marked = model.db.marked;
-    model.db = std::move(db);
-    log->info("SIGHUP: radio entries of {} satellite(s) read from {}", up.updated.size(), fm_path);
+    radio_entries = up.updated.size();
   }
+  // One edit through the owner: stored, announced (the station tunes the radio afresh to the new
+  // radio entries, the pass cache searches the new elements), saved.
+  const store::EditResult r = owner.replace_database(
+      std::move(db), store::bit(store::Area::elements) | store::bit(store::Area::radio_entries), "SIGHUP data",
+      store::Origin::signal);
+  if (!r.ok()) {
+    log->warn("SIGHUP: {} and {} not used: {}", path, fm_path, *r.refusal);
+    return false;
+  }
+  if (radio_entries) log->info("SIGHUP: radio entries of {} satellite(s) read from {}", radio_entries, fm_path);
   return true;
 }
 

@@ -13,6 +13,7 @@
 
 #include "menus/term/terminal.h"
 #include "store/model.h"
+#include "store/owner.h"
 #include "store/state_file.h"
 #include "util/loop_fwd.h"
 
@@ -34,7 +35,6 @@ class RealTimeClock;
 namespace tb::tracker {
 struct Event;
 class ElementsRefresh;
-class PassMemo;
 class StationLoop;
 class Tracker;
 }
@@ -47,17 +47,19 @@ struct Shutdown {};
 
 class StationApp {
  public:
-  StationApp(store::Model model, store::StateFile file, std::shared_ptr<spdlog::logger> log);
+  // The station on the model `owner` keeps (store/owner.h), saved in `file`.
+  StationApp(store::ModelOwner owner, store::StateFile file, std::shared_ptr<spdlog::logger> log);
   ~StationApp();
   StationApp(const StationApp&) = delete;
   StationApp& operator=(const StationApp&) = delete;
 
   station::RealTimeClock& clock();
-  store::Model& model();
+  const store::Model& model() const;
+  // The one door of the model (store/owner.h): every change goes through it, and is saved.
+  store::ModelOwner& owner();
   tracker::Tracker& tracker();
   tracker::StationLoop& station();
   tracker::ElementsRefresh& refresh();  // the scheduled element refresh (polled on every tick)
-  tracker::PassMemo& next_passes();     // the status documents' next passes, each searched once
   boost::asio::io_context& io();
   spdlog::logger& log();
 

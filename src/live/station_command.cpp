@@ -2,6 +2,9 @@
 
 #include "live/station_app.h"
 #include "orbit/time.h"
+#include "store/owner.h"
+#include "store/settings.h"
+#include "tracker/station_loop.h"
 #include "tracker/operations.h"
 #include "util/safe_text.h"
 #include "util/text.h"
@@ -9,14 +12,47 @@
 namespace tb::app {
 
 bool is_station_command(const std::string& line) {
-  return line.rfind("standby", 0) == 0 || line.rfind("reserve", 0) == 0;
+  return line.rfind("standby", 0) == 0 || line.rfind("reserve", 0) == 0 || line.rfind("settings", 0) == 0;
 }
+
+namespace {
+
+// `trakbox settings`: the list as JSON (one line); `settings set KEY VALUE` and `settings reset
+// KEY` through the model's one door, which checks, stores and announces (the station reconfigures
+// and saves before the answer).
+std::string settings_command(StationApp& app, const std::vector<std::string>& w) {
+  store::ModelOwner& owner = app.owner();
+  if (w.size() == 1) {
+    return store::settings_document(owner.model(), [&owner](std::string_view key) {
+             return std::string(store::to_string(owner.origin_of(key)));
+           }).dump();
+  }
+  store::EditResult r;
+  if (w.size() >= 4 && w[1] == "set") {
+    std::string value;
+    for (std::size_t i = 3; i < w.size(); ++i) value += (value.empty() ? "" : " ") + w[i];
+    r = owner.set_typed(w[2], value, store::Origin::socket);
+  } else if (w.size() == 3 && w[1] == "reset") {
+    r = owner.reset(w[2], store::Origin::socket);
+  } else {
+    return "refused: expected settings, settings set KEY VALUE or settings reset KEY";
+  }
+  if (!r.ok()) return "refused: " + *r.refusal;
+  const store::Setting* s = store::find_setting(w[2]);
+  const std::string now = w[2] + " = " + store::shown(*s, s->get(owner.model()));
+  if (!r.changed) return "ok: " + now + " (unchanged)";
+  if (const auto& failed = app.station().save_failure()) return "ok: " + now + " (NOT SAVED: " + *failed + ")";
+  return "ok: " + now;
+}
+
+}  // namespace
 
 std::string run_station_command(StationApp& app, const std::string& line) {
   std::vector<std::string> w;
   for (const std::string_view piece : text::split(line, ' '))
     if (!piece.empty()) w.emplace_back(piece);
   if (w.empty()) return "refused: nothing asked";
+  if (w[0] == "settings") return settings_command(app, w);
   tracker::StationOps ops(app.station(), tracker::Requester::menus(), true);
   tracker::OpResult r;
   if (w.size() == 2 && w[0] == "standby" && (w[1] == "on" || w[1] == "off")) {

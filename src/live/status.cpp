@@ -217,7 +217,7 @@ nlohmann::json tracking_list_json(StationApp& app, orbit::UtcTime now) {
       }
       return whole_pass(app, i, p, now);
     };
-    const auto pass = app.next_passes().get(sat.elements, where, now, search);
+    const auto pass = app.tracker().passes().get(sat.elements, where, now, search, "status");
     if (const auto obs = app.tracker().observe(i, now); obs && obs->obs.ok())
       e["now"] = {{"az_deg", obs->obs.look.az_deg}, {"el_deg", obs->obs.look.el_deg}, {"in_range", obs->in_range}};
     e["next_pass"] = pass_json(pass, now);

@@ -94,9 +94,9 @@ std::vector<std::string> PstHandler::handle(std::string_view datagram, const std
   }
   ++stats_.taken;
   if (!aim) return replies;
-  // As rotctld's set_pos: rotor control on, then StationOps::go_to, the one place this server moves
-  // the antenna.
-  if (!station_.rotor_control()) ops.rotor_control(true);
+  // As rotctld's set_pos: StationOps::go_to, the one place this server moves the antenna; it asks
+  // the controller of record first and switches rotor control on only when the move is granted
+  // (refused in standby, nothing is switched or stored).
   const double az = az_.value_or(status.has_position ? status.az.deg : 0.0);
   const double el = el_.value_or(status.has_position ? status.el.deg : 0.0);
   if (const tracker::OpResult r = ops.go_to(az, el); !r.ok()) {

@@ -48,6 +48,8 @@ class Session : public std::enable_shared_from_this<Session> {
   // How long the client has sent nothing.
   std::chrono::steady_clock::duration silent() const { return std::chrono::steady_clock::now() - last_heard_; }
   const std::string& peer() const { return peer_; }
+  // Who holds the antenna while this connection's commands drive it: "satrak 127.0.0.1:50123".
+  std::string label() const { return "satrak " + peer_; }
   const std::string& address() const { return address_; }
 
   void start() {
@@ -59,6 +61,8 @@ class Session : public std::enable_shared_from_this<Session> {
     if (closed_) return;
     closed_ = true;
     spdlog::info("satrak: client {} disconnected", peer_);
+    // Its hold of the antenna ends with it (tracker/control.h), as a rotctld client's does.
+    if (auto s = state_.lock()) s->unit.client_left(label());
     boost::system::error_code ec;
     socket_.shutdown(tcp::socket::shutdown_both, ec);
     socket_.close(ec);
@@ -100,7 +104,7 @@ class Session : public std::enable_shared_from_this<Session> {
     for (const Decoded& d : events_) {
       if (d.kind == Decoded::Kind::overlong) spdlog::warn("satrak: client {}: line longer than {} bytes discarded", peer_, decoder_.max_line());
       ++state->stats.frames;
-      std::string reply = state->unit.handle(d);
+      std::string reply = state->unit.handle(d, label());
       if (spdlog::should_log(spdlog::level::debug)) {  // --log-level debug: what a client asked, what it got
         std::string asked = redact_payload(d.payload.substr(0, 200));
         for (char& c : asked)

@@ -21,7 +21,7 @@ struct Unit::Timer {
   boost::asio::steady_timer t;
 };
 
-Unit::Unit(boost::asio::io_context& io, tracker::StationLoop& station, store::Model& model,
+Unit::Unit(boost::asio::io_context& io, tracker::StationLoop& station, const store::Model& model,
            station::RealTimeClock& clock, Settings settings, UnitOptions options, UnitHooks hooks)
     : io_(io),
       station_(station),
@@ -32,7 +32,7 @@ Unit::Unit(boost::asio::io_context& io, tracker::StationLoop& station, store::Mo
       hooks_(std::move(hooks)),
       timer_(std::make_unique<Timer>(io)) {
   // GPS mode is the station's (menu 4, --gps-follow); a state written before it was, kept it here.
-  model_.gps.follow = model_.gps.follow || s_.gps_auto;
+  if (s_.gps_auto && !model_.gps.follow) (void)station_.owner().set("gps.follow", true, store::Origin::satrak);
   s_.gps_auto = model_.gps.follow;
   position_generation_seen_ = station_.position_generation();
   std::error_code ec;
@@ -72,6 +72,11 @@ void Unit::stop() {
   timer_->t.cancel();
 }
 
+void Unit::store_clock_offset() {
+  (void)station_.owner().edit(store::bit(store::Area::other), "clock offset", store::Origin::satrak,
+                              [this](store::Model& m) { m.clock_offset = clock_.offset(); });
+}
+
 void Unit::changed() {
   if (!hooks_.save) return;
   if (auto err = hooks_.save()) {
@@ -97,9 +102,9 @@ std::string guess_head(std::string_view payload) {
 }
 }  // namespace
 
-std::string Unit::handle(const Decoded& d) {
+std::string Unit::handle(const Decoded& d, std::string_view client) {
   switch (d.kind) {
-    case Decoded::Kind::frame: return handle(std::string_view(d.payload));
+    case Decoded::Kind::frame: return handle(std::string_view(d.payload), client);
     case Decoded::Kind::bad_checksum: return reply_error(guess_head(d.payload), Error::bad_checksum);
     // Here the word is echoed only when the line reads as a command: garbage is not a word.
     case Decoded::Kind::malformed:
@@ -112,7 +117,8 @@ std::string Unit::handle(const Decoded& d) {
   return reply_error("", Error::internal);
 }
 
-std::string Unit::handle(std::string_view payload) {
+std::string Unit::handle(std::string_view payload, std::string_view client) {
+  client_ = client;
   const auto c = parse_payload(payload);
   if (!c) return reply_error(guess_head(payload), Error::unknown_command);
   return dispatch(*c);
@@ -152,7 +158,7 @@ std::string Unit::dispatch(const Command& c) {
     if (c.word != e.word) continue;
     if ((c.kind == Kind::query && !e.query) || (c.kind == Kind::request && !e.request)) break;
     save_failed_ = false;
-    station_.control().heard("satrak", station_.now());  // a Satrak client that speaks keeps its hold
+    station_.control().heard(client_, station_.now());  // a Satrak client that speaks keeps its hold
     Reply reply = (this->*e.fn)(c);
     // A setting that could not be stored is not acknowledged: it holds until the next start only.
     if (save_failed_ && reply == reply_ok(c.head())) return reply_error(c.head(), Error::internal);
@@ -168,11 +174,34 @@ void Unit::take_control() {
   if (!model_.rotor_control) tracker::StationOps(station_).rotor_control(true);
 }
 
-void Unit::take_antenna() {
+std::optional<std::string> Unit::take_antenna() {
+  // The controller of record first (tracker/control.h): in standby and under another kind's
+  // --exclusive hold nothing moves, and the station's tracking goes on.
+  tracker::Control::Answer a =
+      station_.control().request(tracker::Resource::antenna, {tracker::HolderKind::satrak, client_}, station_.now());
+  station_.apply(a.changes);
+  if (!a.granted) {
+    const std::string why = a.refusal.value_or("the antenna is held");
+    spdlog::info("satrak: {}: refused: {}", client_, why);
+    return why;
+  }
+  // The Satrak client holds the antenna: status, the page and events say so.
   if (station_.tracker().mode() != tracker::Mode::off) station_.tracker().stop();
-  // The Satrak client holds the antenna (tracker/control.h): status, the page and events say so.
-  station_.apply(station_.control().request(tracker::Resource::antenna, {tracker::HolderKind::satrak, "satrak"},
-                                            station_.now()).changes);
+  holder_ = client_;
+  return std::nullopt;
+}
+
+void Unit::client_left(std::string_view client) {
+  station_.apply(station_.control().left(client, station_.now()));
+  if (holder_ != client) return;
+  // Its hold ended with it: whatever it was doing stops, and what held before drives again.
+  if (tracking_) stop_tracking(false);
+  if (owner_ != Owner::none) {
+    station_.rotator().stop();
+    release();
+  }
+  holder_.clear();
+  station_.antenna_changed();
 }
 
 void Unit::command(RotatorPosition p, rotator::Controller::Approach how) {
@@ -196,20 +225,15 @@ RotatorPosition Unit::current_position() const {
 
 void Unit::check_takeover() {
   if (owner_ == Owner::none) return;
-  bool lost = station_.tracker().mode() != tracker::Mode::off;
-  const auto& st = station_.rotator().status();
-  if (!lost) {
-    if (commanded_)
-      lost = st.mode != rotator::ControlMode::target || !st.target ||
-             std::abs(st.target->az_travel - commanded_->az_travel) > 0.01 || std::abs(st.target->el - commanded_->el) > 0.01;
-    else if (owner_ == Owner::move)
-      lost = st.mode != rotator::ControlMode::manual;  // MOVE jogs: keyboard-control mode
-    else
-      lost = st.mode != rotator::ControlMode::idle;
-  }
+  // The controller of record says who holds the antenna: a Satrak client's hold ends when another
+  // takes it (the operator, another client), when it is handed back (silence, standby), not by
+  // guessing from the rotator's target.
+  const tracker::Holder& h = station_.control().holder(tracker::Resource::antenna);
+  // (Inside a SatNOGS window the label names the window and the client: "... (satrak ADDR:PORT)".)
+  const bool lost = h.kind != tracker::HolderKind::satrak || holder_.empty() || h.label.find(holder_) == std::string::npos;
   if (!lost) return;
-  spdlog::info("satrak: the antenna was taken over by the station; Satrak {} stopped",
-               tracking_ ? "tracking" : "motion");
+  spdlog::info("satrak: the antenna is {}'s now; Satrak {} stopped", h.label, tracking_ ? "tracking" : "motion");
+  holder_.clear();
   if (tracking_) {
     tracking_ = false;
     auto_started_ = false;

@@ -83,7 +83,7 @@ enum class TrackStatus : int { not_in_track_time = 0, in_track_time = 1, complet
 
 class Unit {
  public:
-  Unit(boost::asio::io_context& io, tracker::StationLoop& station, store::Model& model,
+  Unit(boost::asio::io_context& io, tracker::StationLoop& station, const store::Model& model,
        station::RealTimeClock& clock, Settings settings, UnitOptions options, UnitHooks hooks = {});
   ~Unit();
   Unit(const Unit&) = delete;
@@ -93,11 +93,15 @@ class Unit {
   void start();
   void stop();
 
-  // One payload in, the reply payload out; the command is applied at once.
-  std::string handle(std::string_view payload);
+  // One payload in, the reply payload out; the command is applied at once. `client` names the
+  // connection that sent it ("satrak 127.0.0.1:50123"): the holder of record while its commands
+  // drive the antenna (tracker/control.h).
+  std::string handle(std::string_view payload, std::string_view client = "satrak");
   // A decoder result: a frame is handled; a bad checksum, malformed or overlong line is answered
   // with its error (and the command word when it can be read) and never acted on.
-  std::string handle(const Decoded& d);
+  std::string handle(const Decoded& d, std::string_view client = "satrak");
+  // That client disconnected: what it held is handed back, as rotctld's clients' holds are.
+  void client_left(std::string_view client);
 
   // The periodic check (start() runs it; tests may call it directly after moving the clock).
   void tick();
@@ -147,7 +151,10 @@ class Unit {
   // A command that moves the antenna takes control (rotor control on), as the operator pressing
   // E would: a remote client has no other way to do it.
   void take_control();
-  void take_antenna();                      // stops the station's Tracker when it runs
+  // Asks the controller of record for the antenna for this client (tracker/control.h): refused in
+  // standby and while another kind holds it under --exclusive (the reason, logged). Granted, the
+  // station's Tracker stops and the client holds the antenna.
+  std::optional<std::string> take_antenna();
   // Set a target and remember it as Satrak's.
   void command(rotator::RotatorPosition p,
                rotator::Controller::Approach how = rotator::Controller::Approach::dead_band);
@@ -159,7 +166,7 @@ class Unit {
   double min_el() const;
 
   // Tracking.
-  void start_tracking();
+  bool start_tracking();  // false: the antenna was refused (standby, --exclusive)
   void stop_tracking(bool fault);
   void track(orbit::UtcTime now);
   void update_window(orbit::UtcTime now);
@@ -195,13 +202,17 @@ class Unit {
   double active_period_days() const;
 
   void changed();  // settings or model changed: persist
+  // The station's clock offset stored (TIME=, RTC_REUPDATE=, GPS time).
+  void store_clock_offset();
   // RTC_REUPDATE= and SETTINGS X1: the RTC's offset from the receiver's last report (false: no fix).
   bool update_rtc_from_gps();
 
   boost::asio::io_context& io_;
   tracker::StationLoop& station_;
-  store::Model& model_;
+  const store::Model& model_;  // station_.model(): changed only through station_.owner()
   station::RealTimeClock& clock_;
+  std::string client_ = "satrak";  // the connection whose command is being handled
+  std::string holder_;             // the connection whose commands drive the antenna, if any
   Settings s_;
   UnitOptions opt_;
   UnitHooks hooks_;
@@ -229,12 +240,7 @@ class Unit {
   std::optional<orbit::Elements> elements_;
   std::unique_ptr<orbit::Sgp4> sgp4_;
   std::uint64_t pointing_generation_ = 0;
-  struct PassCache {
-    std::optional<orbit::Pass> pass;
-    orbit::UtcTime searched_at{};
-    orbit::UtcTime valid_until{};  // no need to search again before this (when no pass was found)
-    bool valid = false;
-  } pass_cache_;
+  std::optional<orbit::Pass> pass_;  // the last pass_at's, from the station's pass cache
   struct PlanCache {
     orbit::UtcTime aos{};
     std::uint64_t generation = 0;

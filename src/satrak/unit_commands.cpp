@@ -36,10 +36,10 @@ Unit::Reply Unit::cmd_move(const Command& c) {
     return reply_ok(c.head());
   }
   if (refused_while_tracking(c)) return reply_error(c.head(), Error::not_allowed, kTrackingReason);
-  take_control();
   const auto& st = station_.rotator().status();
   if (!st.has_position) return reply_error(c.head(), Error::not_allowed, kNoPositionReason);
-  take_antenna();
+  if (const auto no = take_antenna()) return reply_error(c.head(), Error::not_allowed, *no);
+  take_control();
   rotator::Controller& rot = station_.rotator();
   const rotator::RotatorConfig& cfg = rot.config();
   Move m;
@@ -77,11 +77,11 @@ Unit::Reply Unit::cmd_step(const Command& c) {
   const double y = r.number(1, -kMaxStepDeg, kMaxStepDeg);
   if (!r.ok()) return reply_error(c.head(), r.error());
   if (refused_while_tracking(c)) return reply_error(c.head(), Error::not_allowed, kTrackingReason);
-  take_control();
   const auto& st = station_.rotator().status();
   if (!st.has_position && !st.target) return reply_error(c.head(), Error::not_allowed, kNoPositionReason);
   RotatorPosition p = current_position();
-  take_antenna();
+  if (const auto no = take_antenna()) return reply_error(c.head(), Error::not_allowed, *no);
+  take_control();
   move_.reset();
   p.az_travel += x;
   if (y != 0.0) p.el = std::max(p.el + y, min_el());
@@ -100,12 +100,12 @@ Unit::Reply Unit::cmd_goto(const Command& c) {
   const double el = el_none ? 0.0 : r.number(1, -90.0, 180.0);
   if (!r.ok()) return reply_error(c.head(), r.error());
   if (refused_while_tracking(c)) return reply_error(c.head(), Error::not_allowed, kTrackingReason);
-  take_control();
   const auto& st = station_.rotator().status();
   if ((az_none || el_none) && !st.has_position && !st.target)
     return reply_error(c.head(), Error::not_allowed, kNoPositionReason);
   const RotatorPosition base = current_position();
-  take_antenna();
+  if (const auto no = take_antenna()) return reply_error(c.head(), Error::not_allowed, *no);
+  take_control();
   move_.reset();
   RotatorPosition p = base;
   if (!az_none) {
@@ -172,8 +172,7 @@ Unit::Reply Unit::cmd_time(const Command& c) {
   if (c.fields.size() == 7) t += std::chrono::milliseconds(r.integer(6, 0, 999));
   if (!r.ok()) return reply_error(c.head(), r.error());
   clock_.set(t);
-  model_.clock_offset = clock_.offset();
-  pass_cache_ = {};
+  store_clock_offset();
   last_file_check_ = {};
   spdlog::info("satrak: clock set to {}", orbit::format_iso8601(t, 3));
   changed();
@@ -253,10 +252,8 @@ Unit::Reply Unit::cmd_settings(const Command& c) {
   const bool pointing = n.time_offset_ms != s_.time_offset_ms || n.az_offset_deg != s_.az_offset_deg ||
                         n.el_offset_deg != s_.el_offset_deg || n.min_elevation_deg != s_.min_elevation_deg ||
                         n.north_offset_deg != s_.north_offset_deg || n.el_threshold_deg != s_.el_threshold_deg;
-  const bool threshold = n.el_threshold_deg != s_.el_threshold_deg;
   const bool source = n.source != s_.source;
   s_ = n;
-  if (threshold) pass_cache_ = {};
   if (pointing) pointing_changed();
   if (source) {
     ++download_generation_;
@@ -329,12 +326,13 @@ Unit::Reply Unit::cmd_angle_settings(const Command& c) {
   cfg.az_skew = static_cast<int>(az_skew);
   cfg.el_skew = static_cast<int>(el_skew);
   if (!rotator::validate(cfg).empty()) return reply_error(c.head(), Error::out_of_range);
-  model_.rotator = cfg;
+  const store::EditResult kept = station_.owner().edit(store::bit(store::Area::rotator), "angle references",
+                                                       store::Origin::satrak, [&](store::Model& mm) { mm.rotator = cfg; });
+  if (!kept.ok()) return reply_error(c.head(), Error::out_of_range);
   s_.az_sensor_ref = static_cast<int>(sx);
   s_.el_sensor_ref = static_cast<int>(sy);
   s_.az_angle_ref = c.fields[2];
   s_.el_angle_ref = c.fields[4];
-  station_.reconfigure();
   if (commanded_) commanded_ = station_.rotator().status().target;
   pointing_changed();
   spdlog::info("satrak: angle references set: skew {} / {} counts", cfg.az_skew, cfg.el_skew);
@@ -374,6 +372,9 @@ Unit::Reply Unit::cmd_track(const Command& c) {
     stop_tracking(false);
     return reply_ok(c.head());
   }
+  // Asked first: in standby or under another client's --exclusive hold neither the antenna nor
+  // the radio follows a Satrak TRACK.
+  if (const auto no = take_antenna()) return reply_error(c.head(), Error::not_allowed, *no);
   take_control();
   if (!sgp4_ && active_satellite().empty() && s_.source == TleSource::file) {
     // No SATELLITE= yet (the document's example on a fresh unit): the station's database and its
@@ -390,7 +391,7 @@ Unit::Reply Unit::cmd_track(const Command& c) {
     return reply_error(c.head(), Error::satellite_not_found);
   }
   spdlog::info("satrak: tracking {}", elements_->label());
-  start_tracking();
+  if (!start_tracking()) return reply_error(c.head(), Error::not_allowed, "THE ANTENNA IS HELD");
   return reply_ok(c.head());
 }
 
@@ -424,8 +425,7 @@ bool Unit::update_rtc_from_gps() {
   if (!g || !g->filter().fixed() || g->link() != gps::Link::receiving || !g->clock_error_s()) return false;
   const auto error = std::chrono::microseconds(std::llround(*g->clock_error_s() * 1e6));
   clock_.set_offset(clock_.offset() + error);
-  model_.clock_offset = clock_.offset();
-  pass_cache_ = {};
+  store_clock_offset();
   last_file_check_ = {};
   rtc_from_gps_ = true;
   spdlog::info("satrak: clock set from GPS time ({:+.3f} s)", *g->clock_error_s());
@@ -457,27 +457,30 @@ Unit::Reply Unit::cmd_gps_settings(const Command& c) {
     if (!lon) r.fail(coordinate_error(c.fields[2], "EW"));
   }
   if (!r.ok()) return reply_error(c.head(), r.error());
+  // Both checked before either is kept: the position by the settings table (the same rule as menu 4,
+  // --station, host QTH and the page).
+  if (lat || lon) {
+    const auto& st = model_.station;
+    const store::EditResult moved =
+        station_.owner().set_position(lat.value_or(st.lat_deg), lon.value_or(st.lon_deg), st.height_m,
+                                      store::Origin::satrak);
+    if (!moved.ok()) return reply_error(c.head(), Error::out_of_range, *moved.refusal);
+  }
   s_.gps_auto = automatic;
-  model_.gps.follow = automatic;  // the same choice as menu 4's: the station follows the receiver
+  // The same choice as menu 4's: the station follows the receiver.
+  (void)station_.owner().set("gps.follow", automatic, store::Origin::satrak);
   // Kept as written for GPS_SETTINGS?. A form the state file would not keep or a reply could not
   // carry (over 40 bytes, a tab between number and letter) reads back in four decimals.
   auto as_written = [](const std::string& f) { return valid_text_field(f, 40) ? f : std::string(); };
   if (lat) s_.gps_lat_text = as_written(c.fields[1]);
   if (lon) s_.gps_lon_text = as_written(c.fields[2]);
   if (lat || lon) {
-    if (lat) model_.station.lat_deg = *lat;
-    if (lon) model_.station.lon_deg = *lon;
-    model_.gps.position_from_gps = false;
-    model_.gps.position_time.reset();
-    station_.reconfigure();
     if (commanded_) commanded_ = station_.rotator().status().target;
-    pass_cache_ = {};
     pointing_changed();
   }
   if (automatic && station_.apply_gps_position()) {  // a confirmed fix is there: the station takes it
     spdlog::info("satrak: GPS_SETTINGS=,1: the station takes the receiver's position");
     if (commanded_) commanded_ = station_.rotator().status().target;
-    pass_cache_ = {};
     pointing_changed();
   }
   changed();

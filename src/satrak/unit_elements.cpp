@@ -126,7 +126,6 @@ void Unit::set_elements(std::optional<orbit::Elements> e) {
     spdlog::warn("satrak: {}: {}", elements_->label(), orbit::describe(sgp4_->init_error()));
     sgp4_.reset();
   }
-  pass_cache_ = {};
   plan_cache_.reset();
 }
 

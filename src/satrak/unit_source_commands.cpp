@@ -212,9 +212,10 @@ Unit::Reply Unit::cmd_load_image(const Command& c) {
     release();
   }
   station_.tracker().stop();
-  model_ = std::move(m);
+  const store::EditResult kept = station_.owner().edit(store::kAllAreas, "LOAD_IMAGE", store::Origin::satrak,
+                                                       [&](store::Model& mm) { mm = std::move(m); });
+  if (!kept.ok()) return fail(Error::invalid_file, *kept.refusal);
   s_ = std::move(ns);
-  station_.reconfigure();
   window_started_ = window_prepositioned_ = false;
   tracking_stopped_fault_ = download_failed_ = false;
   ++download_generation_;

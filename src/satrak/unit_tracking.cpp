@@ -24,20 +24,18 @@ std::optional<orbit::Observation> Unit::observe(orbit::UtcTime t) const {
 }
 
 const orbit::Pass* Unit::pass_at(orbit::UtcTime t) {
-  if (!sgp4_) return nullptr;
-  PassCache& c = pass_cache_;
-  if (c.valid && t >= c.searched_at) {
-    if (c.pass && t <= c.pass->los) return &*c.pass;
-    if (!c.pass && t < c.valid_until) return nullptr;
-  }
+  if (!sgp4_ || !elements_) return nullptr;
+  // The station's one pass cache (tracker/pass_memo.h): searched again when the station moves,
+  // these elements change, the threshold changes (part of the key), the pass sets or the clock
+  // goes back; the same rules as the tracker's, the events' and the page's.
   orbit::PassOptions po;
   po.horizon_deg = s_.el_threshold_deg;
   po.precision_s = 1.0;
-  c.pass = orbit::next_pass(*sgp4_, model_.station.observer(), t, kPassSearchDays, po);
-  c.searched_at = t;
-  c.valid_until = c.pass ? c.pass->los : orbit::add_minutes(t, 60.0);
-  c.valid = true;
-  return c.pass ? &*c.pass : nullptr;
+  const orbit::Observer where = model_.station.observer();
+  const orbit::Sgp4& sgp4 = *sgp4_;
+  pass_ = station_.tracker().passes().get(
+      *elements_, where, t, [&] { return orbit::next_pass(sgp4, where, t, kPassSearchDays, po); }, "satrak", po);
+  return pass_ && t <= pass_->los ? &*pass_ : nullptr;
 }
 
 const rotator::PassPlan* Unit::plan_for(const orbit::Pass& p) {
@@ -64,8 +62,8 @@ void Unit::pointing_changed() {
   plan_cache_.reset();
 }
 
-void Unit::start_tracking() {
-  take_antenna();
+bool Unit::start_tracking() {
+  if (take_antenna()) return false;  // standby, or another's exclusive hold: said in the log
   move_.reset();
   tracking_ = true;
   tracking_stopped_fault_ = false;
@@ -74,6 +72,7 @@ void Unit::start_tracking() {
   station_.rotator().stop();
   commanded_.reset();
   track(clock_.now());
+  return true;
 }
 
 void Unit::stop_tracking(bool fault) {
@@ -103,7 +102,7 @@ void Unit::track(orbit::UtcTime now) {
     return;
   }
   // The station keeps the radio on this satellite and names it on the status line.
-  station_.control().heard("satrak", station_.now());  // its TRACK is the client's hold going on
+  station_.control().heard(holder_, station_.now());  // its TRACK is the client's hold going on
   station_.remote_follow(tracker::StationLoop::RemoteFollow{"Satrak", elements_->label(), elements_->catalog_number, *o});
   const orbit::Pass* p = pass_at(t);
   if (o->look.el_deg >= s_.el_threshold_deg) {
@@ -166,7 +165,7 @@ void Unit::update_window(orbit::UtcTime) {
       if (tracking_ || window_started_ || !sgp4_) break;
       if (!window_prepositioned_) {
         window_prepositioned_ = true;
-        take_antenna();
+        if (take_antenna()) break;  // standby, or another's exclusive hold: the antenna stays
         move_.reset();
         station_.rotator().stop();
         commanded_.reset();
@@ -185,8 +184,7 @@ void Unit::update_window(orbit::UtcTime) {
         break;
       }
       spdlog::info("satrak: track window open: tracking {}", elements_->label());
-      start_tracking();
-      auto_started_ = true;
+      auto_started_ = start_tracking();
       break;
     default: break;
   }
@@ -214,8 +212,7 @@ void Unit::tick() {
   const orbit::UtcTime now = clock_.now();
   if (station_.position_generation() != position_generation_seen_) {  // the station moved (GPS, menu 4)
     position_generation_seen_ = station_.position_generation();
-    pass_cache_ = {};
-    plan_cache_.reset();
+    plan_cache_.reset();  // the pass cache searches the new place's pass by itself
   }
   // SETTINGS X1: the RTC follows GPS time by itself when the receiver has a fix and they differ.
   if (s_.rtc_auto_update && station_.gps() && station_.gps()->clock_warned() && update_rtc_from_gps()) changed();

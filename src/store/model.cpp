@@ -9,6 +9,7 @@
 #include "gps/gpsd_client.h"
 #include "radio/factory.h"
 #include "store/json_fields.h"
+#include "store/settings.h"
 #include "util/host_port.h"
 #include "util/safe_text.h"
 
@@ -42,17 +43,10 @@ const char* name_of(E e, const std::pair<E, const char*> (&names)[N]) {
   return names[0].second;
 }
 
-constexpr std::pair<station::RotorStart, const char*> kRotorStart[] = {{station::RotorStart::north, "north"},
-                                                                      {station::RotorStart::south, "south"}};
 constexpr std::pair<radio::Rig, const char*> kRig[] = {{radio::Rig::none, "none"},
                                                        {radio::Rig::kenwood, "kenwood"},
                                                        {radio::Rig::yaesu, "yaesu"},
                                                        {radio::Rig::icom, "icom"}};
-constexpr std::pair<radio::DownlinkCorrection, const char*> kDown[] = {{radio::DownlinkCorrection::off, "off"},
-                                                                       {radio::DownlinkCorrection::on, "on"},
-                                                                       {radio::DownlinkCorrection::reverse, "reverse"}};
-constexpr std::pair<radio::CatPolicy, const char*> kPolicy[] = {{radio::CatPolicy::full_orbit, "full_orbit"},
-                                                                {radio::CatPolicy::aos_only, "aos_only"}};
 constexpr std::pair<radio::PulsePolarity, const char*> kPolarity[] = {{radio::PulsePolarity::normal, "normal"},
                                                                       {radio::PulsePolarity::reverse, "reverse"}};
 constexpr std::pair<radio::IcomBandSelect, const char*> kBand[] = {
@@ -134,7 +128,6 @@ constexpr std::pair<radio::RigModel, const char*> kRigModel[] = {{radio::RigMode
                                                                  {radio::RigModel::yaesu_other, "yaesu_other"},
                                                                  {radio::RigModel::yaesu_847, "yaesu_847"},
                                                                  {radio::RigModel::yaesu_736, "yaesu_736"}};
-constexpr int kBauds[] = {1200, 2400, 4800, 9600, 19200};
 
 json radio_entry_json(const radio::SatelliteRadio& r) {
   json j = {{"downlink_hz", r.downlink_hz},     {"downlink_offset_hz", r.downlink_offset_hz},
@@ -202,128 +195,95 @@ radio::SatelliteRadio radio_entry_from(const json& j, const std::string& w) {
 
 Model factory_defaults() { return Model{}; }
 
+namespace {
+std::string replace_dots(std::string_view key) {
+  std::string p(key);
+  std::replace(p.begin(), p.end(), '.', '/');
+  return p;
+}
+}  // namespace
+
 json to_json(const Model& m) {
   json j;
-  const auto& st = m.station;
-  j["station"] = {{"callsign", st.callsign},
-                  {"lat_deg", st.lat_deg},
-                  {"lon_deg", st.lon_deg},
-                  {"height_m", st.height_m},
-                  {"rotor_start", name_of(st.rotor_start, kRotorStart)},
-                  {"com_baud", st.com_baud}};
+  // Every setting of the table (store/settings.h) in its form (the enums by name), then what the
+  // table does not hold: spans, positions, the database, the choice, the lists.
+  for (const Setting& s : settings()) j[json::json_pointer("/" + replace_dots(s.key))] = s.get(m);
+  j["sharing"]["exclusive"] = m.sharing.exclusive;  // "" for none, as the document always had it
   const auto& r = m.rotator;
   json presets = json::array();
   for (const auto& p : r.presets) presets.push_back(azel(p));
-  j["rotator"] = {{"az_span", {r.az_span.min, r.az_span.max}},
-                  {"el_span", {r.el_span.min, r.el_span.max}},
-                  {"az_travel_deg", r.az_travel_deg},
-                  {"az_dead_band", r.az_dead_band},
-                  {"el_dead_band", r.el_dead_band},
-                  {"az_skew", r.az_skew},
-                  {"el_skew", r.el_skew},
-                  {"parking_enabled", r.parking_enabled},
-                  {"parking", azel(r.parking)},
-                  {"limits_enabled", r.limits_enabled},
-                  {"az_limit_min", r.az_limit_min},
-                  {"az_limit_max", r.az_limit_max},
-                  {"el_limit_min", r.el_limit_min},
-                  {"el_limit_max", r.el_limit_max},
-                  {"cross_limit_sector", r.cross_limit_sector},
-                  {"presets", presets},
-                  {"el_flip_allowed", r.el_flip_allowed},
-                  {"az_rate_deg_s", r.az_rate_deg_s},
-                  {"el_rate_deg_s", r.el_rate_deg_s},
-                  {"coast_s", r.coast_s},
-                  {"stall_s", r.stall_s}};
+  j["rotator"]["az_span"] = {r.az_span.min, r.az_span.max};
+  j["rotator"]["el_span"] = {r.el_span.min, r.el_span.max};
+  j["rotator"]["parking"] = azel(r.parking);
+  j["rotator"]["presets"] = presets;
   const auto& rc = m.radio;
-  j["radio"] = {{"rig", name_of(rc.rig, kRig)},
-                {"icom_rx_address", rc.icom_rx_address},
-                {"icom_tx_address", rc.icom_tx_address},
-                {"icom_band_select", name_of(rc.icom_band_select, kBand)},
-                {"icom_four_byte_frequency", rc.icom_four_byte_frequency},
-                {"uplink_correction", rc.uplink_correction},
-                {"downlink_correction", name_of(rc.downlink_correction, kDown)},
-                {"cat_policy", name_of(rc.cat_policy, kPolicy)},
-                {"ft736_wide_fm", rc.ft736_wide_fm},
-                {"rig_model", name_of(rc.rig_model, kRigModel)},
-                {"cat_baud", rc.cat_baud},
-                {"dial_follow", rc.dial_follow},
-                {"uplink_radio", rc.uplink_radio},
-                {"dial_rest_ms", rc.dial_rest_ms},
-                {"doppler_step_ssb_hz", rc.doppler_step_ssb_hz},
-                {"doppler_step_fm_hz", rc.doppler_step_fm_hz},
-                {"corrections", rc.corrections},
-                {"tx_corrections", rc.tx_corrections},
-                {"parking",
-                 {{"enabled", rc.parking.enabled},
-                  {"rx_hz", rc.parking.rx_hz},
-                  {"tx_hz", rc.parking.tx_hz},
-                  {"rx_mode", name_of(rc.parking.rx_mode, kMode)},
-                  {"tx_mode", name_of(rc.parking.tx_mode, kMode)}}},
-                {"mic_click",
-                 {{"centre_adc", rc.mic_click.centre_adc},
-                  {"reference_adc", rc.mic_click.reference_adc},
-                  {"step_hz", rc.mic_click.step_hz},
-                  {"cat_at_aos", rc.mic_click.cat_at_aos},
-                  {"auto_up_at_aos", rc.mic_click.auto_up_at_aos},
-                  {"polarity", name_of(rc.mic_click.polarity, kPolarity)},
-                  {"park_pulse_width_digit", rc.mic_click.park_pulse_width_digit},
-                  {"park_pulse_interval_digit", rc.mic_click.park_pulse_interval_digit}}}};
+  j["radio"].update({{"rig", name_of(rc.rig, kRig)},
+                     {"icom_rx_address", rc.icom_rx_address},
+                     {"icom_tx_address", rc.icom_tx_address},
+                     {"icom_band_select", name_of(rc.icom_band_select, kBand)},
+                     {"icom_four_byte_frequency", rc.icom_four_byte_frequency},
+                     {"ft736_wide_fm", rc.ft736_wide_fm},
+                     {"rig_model", name_of(rc.rig_model, kRigModel)},
+                     {"corrections", rc.corrections},
+                     {"tx_corrections", rc.tx_corrections},
+                     {"parking",
+                      {{"enabled", rc.parking.enabled},
+                       {"rx_hz", rc.parking.rx_hz},
+                       {"tx_hz", rc.parking.tx_hz},
+                       {"rx_mode", name_of(rc.parking.rx_mode, kMode)},
+                       {"tx_mode", name_of(rc.parking.tx_mode, kMode)}}},
+                     {"mic_click",
+                      {{"centre_adc", rc.mic_click.centre_adc},
+                       {"reference_adc", rc.mic_click.reference_adc},
+                       {"step_hz", rc.mic_click.step_hz},
+                       {"cat_at_aos", rc.mic_click.cat_at_aos},
+                       {"auto_up_at_aos", rc.mic_click.auto_up_at_aos},
+                       {"polarity", name_of(rc.mic_click.polarity, kPolarity)},
+                       {"park_pulse_width_digit", rc.mic_click.park_pulse_width_digit},
+                       {"park_pulse_interval_digit", rc.mic_click.park_pulse_interval_digit}}}});
   json sats = json::array();
   for (const auto& s : m.db.satellites)
     sats.push_back({{"elements", elements_json(s.elements)}, {"radio", radio_entry_json(s.radio)}});
   j["db"] = {{"satellites", sats}, {"selected", m.db.selected}, {"marked", m.db.marked},
              {"multi_count", m.db.multi_count}};
   j["clock_offset_us"] = m.clock_offset.count();
-  j["rotor_control"] = m.rotor_control;
-  j["priority_mode"] = m.priority_mode;
   j["tracking"] = {{"mode", m.tracking.mode == TrackingChoice::Mode::single  ? "single"
                             : m.tracking.mode == TrackingChoice::Mode::multi ? "multi"
                                                                               : "list"},
                    {"catalog_number", m.tracking.catalog_number},
                    {"name", m.tracking.name}};
-  j["event_min_el_deg"] = m.event_min_el_deg;
-  j["refresh"] = to_json(m.refresh);
-  j["pass_events"] = {{"rotor_start_el_deg", m.pass_events.rotor_start_el_deg},
-                      {"output_on_el_deg", m.pass_events.output_on_el_deg},
-                      {"output_off_el_deg", m.pass_events.output_off_el_deg}};
-  j["rotator_error_detection"] = m.rotator_error_detection;
-  j["drivers"] = {{"rotator", m.rotator_driver}, {"radio", m.radio_driver}};
-  j["gps"] = {{"source", m.gps.source},
-              {"follow", m.gps.follow},
-              {"threshold_m", m.gps.threshold_m},
-              {"position_from_gps", m.gps.position_from_gps},
-              {"position_time_us", m.gps.position_time ? json(m.gps.position_time->time_since_epoch().count()) : json()}};
+  j["refresh"].update(to_json(m.refresh));
+  j["gps"]["position_from_gps"] = m.gps.position_from_gps;
+  j["gps"]["position_time_us"] =
+      m.gps.position_time ? json(m.gps.position_time->time_since_epoch().count()) : json();
   j["udp_events"] = m.udp_events;
   json res = json::array();
-  for (const Reservation& r : m.sharing.reservations)
-    res.push_back({{"id", r.id}, {"start_unix", r.start_unix}, {"end_unix", r.end_unix}, {"note", r.note}});
-  j["sharing"] = {{"handback_s", m.sharing.handback_s}, {"exclusive", m.sharing.exclusive},
-                  {"standby", m.sharing.standby}, {"reservations", res},
-                  {"satnogs_station", m.sharing.satnogs_station}, {"satnogs_url", m.sharing.satnogs_url}};
-  j["logger"] = {{"spec", m.logger.spec}, {"key_file", m.logger.key_file}, {"station_id", m.logger.station_id}};
+  for (const Reservation& x : m.sharing.reservations)
+    res.push_back({{"id", x.id}, {"start_unix", x.start_unix}, {"end_unix", x.end_unix}, {"note", x.note}});
+  j["sharing"]["reservations"] = res;
   return j;
 }
 
 namespace {
 
-// The parts of the document, each validated as it is read (store/json_fields.h: a problem throws,
-// naming the field).
-station::StationConfig station_from(const json& j) {
-  station::StationConfig st;
-  const std::string w = "station";
-  const json& s = field(j, "", "station");
-  st.callsign = text(s, w, "callsign", 10);
-  st.lat_deg = num(s, w, "lat_deg", -90, 90);
-  st.lon_deg = num(s, w, "lon_deg", -180, 180);
-  st.height_m = num(s, w, "height_m", -500, 9000);
-  st.rotor_start = named(s, w, "rotor_start", kRotorStart);
-  st.com_baud = static_cast<int>(integer(s, w, "com_baud", 1200, 19200));
-  return st;
+// A setting of the table (store/settings.h) read from its parent object with the table's rule and
+// sentence, put into the model; take_if: only when present (fields added after the first format).
+void take(Model& m, const json& parent, std::string_view key) { find_setting(key)->put(m, read_setting(parent, key)); }
+void take_if(Model& m, const json& parent, std::string_view key) {
+  if (parent.is_object() && parent.contains(std::string(key.substr(key.rfind('.') + 1)))) take(m, parent, key);
 }
 
-rotator::RotatorConfig rotator_from(const json& j) {
-  rotator::RotatorConfig c;
+// The parts of the document, each validated as it is read (store/json_fields.h: a problem throws,
+// naming the field).
+void station_from(const json& j, Model& m) {
+  const json& s = field(j, "", "station");
+  for (const char* key : {"station.callsign", "station.lat_deg", "station.lon_deg", "station.height_m",
+                          "station.rotor_start", "station.com_baud"})
+    take(m, s, key);
+}
+
+void rotator_from(const json& j, Model& m) {
+  rotator::RotatorConfig& c = m.rotator;
   const std::string w = "rotator";
   const json& r = field(j, "", "rotator");
   auto span = [&](const char* key) {
@@ -334,38 +294,24 @@ rotator::RotatorConfig rotator_from(const json& j) {
   };
   c.az_span = span("az_span");
   c.el_span = span("el_span");
-  c.az_travel_deg = num(r, w, "az_travel_deg", rotator::limits::kTravelMinDeg, rotator::limits::kTravelMaxDeg);
-  auto counts = [&](const char* key, rotator::limits::Counts range) {
-    return static_cast<int>(integer(r, w, key, range.lo, range.hi));
-  };
-  c.az_dead_band = counts("az_dead_band", rotator::limits::kDeadBand);
-  c.el_dead_band = counts("el_dead_band", rotator::limits::kDeadBand);
-  c.az_skew = counts("az_skew", rotator::limits::kSkew);
-  c.el_skew = counts("el_skew", rotator::limits::kSkew);
-  c.parking_enabled = boolean(r, w, "parking_enabled");
+  for (const char* key : {"rotator.az_travel_deg", "rotator.az_dead_band", "rotator.el_dead_band", "rotator.az_skew",
+                          "rotator.el_skew", "rotator.parking_enabled", "rotator.limits_enabled",
+                          "rotator.az_limit_min", "rotator.az_limit_max", "rotator.el_limit_min",
+                          "rotator.el_limit_max", "rotator.el_flip_allowed", "rotator.az_rate_deg_s",
+                          "rotator.el_rate_deg_s", "rotator.coast_s", "rotator.stall_s"})
+    take(m, r, key);
   c.parking = azel_from(field(r, w, "parking"), w + ".parking");
-  c.limits_enabled = boolean(r, w, "limits_enabled");
-  c.az_limit_min = num(r, w, "az_limit_min", -360, 720);
-  c.az_limit_max = num(r, w, "az_limit_max", -360, 720);
-  c.el_limit_min = num(r, w, "el_limit_min", -90, 180);
-  c.el_limit_max = num(r, w, "el_limit_max", -90, 180);
   // Absent in state files written before it: the limits are barriers.
-  if (r.contains("cross_limit_sector")) c.cross_limit_sector = boolean(r, w, "cross_limit_sector");
+  take_if(m, r, "rotator.cross_limit_sector");
   const json& p = field(r, w, "presets");
   if (!p.is_array() || p.size() != c.presets.size()) bad(w + ".presets", "expected 5 positions");
   for (std::size_t i = 0; i < c.presets.size(); ++i)
     c.presets[i] = azel_from(p[i], w + ".presets[" + std::to_string(i) + "]");
-  c.el_flip_allowed = boolean(r, w, "el_flip_allowed");
-  c.az_rate_deg_s = num(r, w, "az_rate_deg_s", 0.01, 100);
-  c.el_rate_deg_s = num(r, w, "el_rate_deg_s", 0.01, 100);
-  c.coast_s = num(r, w, "coast_s", 0, 10);
-  c.stall_s = num(r, w, "stall_s", 0.1, 600);
   if (const auto problems = rotator::validate(c); !problems.empty()) bad(w, problems.front());
-  return c;
 }
 
-radio::RadioConfig radio_from(const json& j) {
-  radio::RadioConfig c;
+void radio_from(const json& j, Model& m) {
+  radio::RadioConfig& c = m.radio;
   const std::string w = "radio";
   const json& r = field(j, "", "radio");
   c.rig = named(r, w, "rig", kRig);
@@ -373,9 +319,7 @@ radio::RadioConfig radio_from(const json& j) {
   c.icom_tx_address = static_cast<std::uint8_t>(integer(r, w, "icom_tx_address", 0, 255));
   c.icom_band_select = named(r, w, "icom_band_select", kBand);
   c.icom_four_byte_frequency = boolean(r, w, "icom_four_byte_frequency");
-  c.uplink_correction = boolean(r, w, "uplink_correction");
-  c.downlink_correction = named(r, w, "downlink_correction", kDown);
-  c.cat_policy = named(r, w, "cat_policy", kPolicy);
+  for (const char* key : {"radio.uplink_correction", "radio.downlink_correction", "radio.cat_policy"}) take(m, r, key);
   c.ft736_wide_fm = boolean(r, w, "ft736_wide_fm");
   const std::string wm = w + ".mic_click";
   const json& mc = field(r, w, "mic_click");
@@ -391,25 +335,11 @@ radio::RadioConfig radio_from(const json& j) {
   if (mc.contains("park_pulse_interval_digit"))
     c.mic_click.park_pulse_interval_digit = static_cast<int>(integer(mc, wm, "park_pulse_interval_digit", -1, 9));
   if (r.contains("rig_model")) c.rig_model = named(r, w, "rig_model", kRigModel);
-  if (r.contains("cat_baud")) {
-    c.cat_baud = static_cast<int>(integer(r, w, "cat_baud", 0, 19200));
-    if (c.cat_baud != 0 && std::find(std::begin(kBauds), std::end(kBauds), c.cat_baud) == std::end(kBauds))
-      bad(path(w, "cat_baud"),
-          std::to_string(c.cat_baud) + " is not one of 1200, 2400, 4800, 9600, 19200 (0: the rig's standard)");
-  }
-  // Dial follow and the second radio: absent in state files written before them.
-  if (r.contains("dial_follow")) c.dial_follow = boolean(r, w, "dial_follow");
-  if (r.contains("uplink_radio")) {
-    c.uplink_radio = text(r, w, "uplink_radio", 256);
-    if (!c.uplink_radio.empty()) {
-      const auto spec = radio::parse_radio_spec(c.uplink_radio, "uplink radio");
-      if (!spec.spec) bad(path(w, "uplink_radio"), spec.error);
-    }
-  }
-  // Operating practice: absent in state files written before it.
-  if (r.contains("dial_rest_ms")) c.dial_rest_ms = static_cast<int>(integer(r, w, "dial_rest_ms", 0, 10000));
-  if (r.contains("doppler_step_ssb_hz")) c.doppler_step_ssb_hz = integer(r, w, "doppler_step_ssb_hz", 10, 1000);
-  if (r.contains("doppler_step_fm_hz")) c.doppler_step_fm_hz = integer(r, w, "doppler_step_fm_hz", 10, 10000);
+  // The CAT speed, dial follow, the second radio, the operating practice: absent in state files
+  // written before them.
+  for (const char* key : {"radio.cat_baud", "radio.dial_follow", "radio.uplink_radio", "radio.dial_rest_ms",
+                          "radio.doppler_step_ssb_hz", "radio.doppler_step_fm_hz"})
+    take_if(m, r, key);
   if (r.contains("corrections")) {
     const json& cs = field(r, w, "corrections");
     if (!cs.is_object()) bad(path(w, "corrections"), "expected an object of \"SATELLITE MODE\": Hz");
@@ -431,7 +361,6 @@ radio::RadioConfig radio_from(const json& j) {
     c.parking.rx_mode = named(p, wp, "rx_mode", kMode);
     c.parking.tx_mode = named(p, wp, "tx_mode", kMode);
   }
-  return c;
 }
 
 Database database_from(const json& j) {
@@ -473,32 +402,29 @@ TrackingChoice tracking_from(const json& t) {
   return c;
 }
 
-station::GpsSettings gps_from(const json& g) {
-  station::GpsSettings s;
+void gps_from(const json& g, Model& m) {
+  station::GpsSettings& s = m.gps;
   const std::string w = "gps";
-  s.source = text(g, w, "source", 300);
-  std::string why;
-  if (!s.source.empty() && !gps::parse_gps_spec(s.source, why)) bad(path(w, "source"), why);
-  s.follow = boolean(g, w, "follow");
-  s.threshold_m = num(g, w, "threshold_m", station::kGpsThresholdMinM, station::kGpsThresholdMaxM);
+  for (const char* key : {"gps.source", "gps.follow", "gps.threshold_m"}) take(m, g, key);
   s.position_from_gps = boolean(g, w, "position_from_gps");
   const json& t = field(g, w, "position_time_us");
   if (!t.is_null())
     s.position_time = orbit::UtcTime(std::chrono::microseconds(integer(g, w, "position_time_us", 0, 1LL << 52)));
-  return s;
 }
 
-Sharing sharing_from(const json& j) {
+void sharing_from(const json& j, Model& m) {
   if (!j.is_object()) bad("sharing", "expected an object");
-  Sharing s;
-  s.handback_s = static_cast<int>(integer(j, "sharing", "handback_s", 0, 86400));
-  s.exclusive = text(j, "sharing", "exclusive", 16);
-  if (s.exclusive != "" && s.exclusive != "rotctld" && s.exclusive != "rigctld" && s.exclusive != "satrak")
-    bad("sharing.exclusive", "expected rotctld, rigctld, satrak or \"\"; found '" + s.exclusive + "'");
-  s.standby = boolean(j, "sharing", "standby");
-  if (j.contains("satnogs_station"))
-    s.satnogs_station = static_cast<int>(integer(j, "sharing", "satnogs_station", 0, 1000000000));
-  if (j.contains("satnogs_url")) s.satnogs_url = text(j, "sharing", "satnogs_url", 512);
+  Sharing& s = m.sharing;
+  // The state document writes "" for none, as the table shows "none".
+  if (j.contains("exclusive") && j["exclusive"] == "") {
+    json copy = j;
+    copy["exclusive"] = "none";
+    take(m, copy, "sharing.exclusive");
+  } else {
+    take(m, j, "sharing.exclusive");
+  }
+  for (const char* key : {"sharing.handback_s", "sharing.standby"}) take(m, j, key);
+  for (const char* key : {"sharing.satnogs_station", "sharing.satnogs_url"}) take_if(m, j, key);
   if (j.contains("reservations")) {
     const json& r = j["reservations"];
     if (!r.is_array() || r.size() > kMaxReservations)
@@ -514,7 +440,6 @@ Sharing sharing_from(const json& j) {
       s.reservations.push_back(std::move(x));
     }
   }
-  return s;
 }
 
 std::vector<std::string> udp_events_from(const json& u) {
@@ -538,44 +463,43 @@ std::vector<std::string> udp_events_from(const json& u) {
 Model model_from_json(const json& j) {
   if (!j.is_object()) bad("state", "expected an object");
   Model m;
-  m.station = station_from(j);
-  m.rotator = rotator_from(j);
-  m.radio = radio_from(j);
+  station_from(j, m);
+  rotator_from(j, m);
+  radio_from(j, m);
   m.db = database_from(j);
   m.clock_offset = std::chrono::microseconds(integer(j, "", "clock_offset_us", -(100LL * 365 * 86400 * 1000000),
                                                      100LL * 365 * 86400 * 1000000));
-  m.rotor_control = boolean(j, "", "rotor_control");
-  m.priority_mode = boolean(j, "", "priority_mode");
+  take(m, j, "rotor_control");
+  take(m, j, "priority_mode");
   // Absent in state files written before the choice was kept (issue 39): the tracking list's rule.
   if (j.contains("tracking")) m.tracking = tracking_from(j["tracking"]);
-  if (j.contains("event_min_el_deg")) m.event_min_el_deg = num(j, "", "event_min_el_deg", -90, 90);
+  take_if(m, j, "event_min_el_deg");
   // Absent in state files written before the scheduled refresh existed.
   if (j.contains("refresh")) m.refresh = refresh_settings_from_json(j["refresh"], "refresh");
   // Absent in state files written before the later firmware's STATION.DAT was read.
   if (j.contains("pass_events")) {
     const json& p = j["pass_events"];
-    m.pass_events.rotor_start_el_deg = num(p, "pass_events", "rotor_start_el_deg", -90, 90);
-    m.pass_events.output_on_el_deg = num(p, "pass_events", "output_on_el_deg", -90, 90);
-    m.pass_events.output_off_el_deg = num(p, "pass_events", "output_off_el_deg", -90, 90);
+    for (const char* key : {"pass_events.rotor_start_el_deg", "pass_events.output_on_el_deg",
+                            "pass_events.output_off_el_deg"})
+      take(m, p, key);
   }
-  if (j.contains("rotator_error_detection")) m.rotator_error_detection = boolean(j, "", "rotator_error_detection");
+  take_if(m, j, "rotator_error_detection");
   // Absent in state files written before the drivers were remembered (issue 30).
   if (j.contains("drivers")) {
-    m.rotator_driver = text(j["drivers"], "drivers", "rotator", 256);
-    m.radio_driver = text(j["drivers"], "drivers", "radio", 256);
+    take(m, j["drivers"], "drivers.rotator");
+    take(m, j["drivers"], "drivers.radio");
   }
   // Absent in state files written before the GPS receiver existed.
-  if (j.contains("gps")) m.gps = gps_from(j["gps"]);
+  if (j.contains("gps")) gps_from(j["gps"], m);
   // Absent in state files written before --udp-events was stored.
   if (j.contains("udp_events")) m.udp_events = udp_events_from(j["udp_events"]);
   // Absent in state files written before the station was shared (issue 44).
-  if (j.contains("sharing")) m.sharing = sharing_from(j["sharing"]);
+  if (j.contains("sharing")) sharing_from(j["sharing"], m);
   // Absent in state files written before the logger (issue 45).
   if (j.contains("logger")) {
     const json& l = j["logger"];
     if (!l.is_object()) bad("logger", "expected an object");
-    m.logger = {text(l, "logger", "spec", 1024), text(l, "logger", "key_file", 4096),
-                static_cast<int>(integer(l, "logger", "station_id", 0, 1000000000))};
+    for (const char* key : {"logger.spec", "logger.key_file", "logger.station_id"}) take(m, l, key);
   }
   return m;
 }

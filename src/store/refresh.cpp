@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "store/json_fields.h"
+#include "store/settings.h"
 
 namespace tb::store {
 
@@ -133,7 +134,7 @@ json to_json(const RefreshSettings& s) {
 RefreshSettings refresh_settings_from_json(const json& j, const std::string& w) {
   if (!j.is_object()) bad(w, "expected an object");
   RefreshSettings s;
-  s.interval_hours = num(j, w, "interval_hours", kRefreshMinHours, kRefreshMaxHours);
+  s.interval_hours = read_setting(j, "refresh.interval_hours").get<double>();
   s.last_attempt_unix = integer(j, w, "last_attempt_unix", 0, 1LL << 40);
   if (j.contains("last_attempt_failed")) s.last_attempt_failed = boolean(j, w, "last_attempt_failed");   // (since 2026-11)
   const json& list = field(j, w, "sources");

@@ -10,6 +10,7 @@
 #include "radio/freqmode.h"
 #include "rotator/adc_model.h"
 #include "store/model.h"
+#include "store/settings.h"
 #include "util/text.h"
 
 namespace tb::store {
@@ -251,14 +252,24 @@ class Parser {
           problem(phys, field, std::string(s), "a callsign of 1 to 10 letters, digits, / or -");
         break;
       }
-      case 3: degrees(phys, field, s, -90.0, 90.0, f.station.lat_deg, ok); break;
-      case 4: degrees(phys, field, s, -180.0, 180.0, f.station.lon_deg, ok); break;
+      // The ranges of the settings table (store/settings.h), as every reader of them takes them.
+      case 3: {
+        const Bounds b = bounds("station.lat_deg");
+        degrees(phys, field, s, b.lo, b.hi, f.station.lat_deg, ok);
+        break;
+      }
+      case 4: {
+        const Bounds b = bounds("station.lon_deg");
+        degrees(phys, field, s, b.lo, b.hi, f.station.lon_deg, ok);
+        break;
+      }
       case 5: {
         const auto v = to_double(s);
-        if (v && *v >= -500.0 && *v <= 9000.0)
+        const store::Setting& h = *find_setting("station.height_m");
+        if (v && !refusal(h, nlohmann::json(*v)))
           f.station.height_m = *v;
         else
-          problem(phys, field, std::string(s), "metres above sea level, -500 to 9000");
+          problem(phys, field, std::string(s), "metres above sea level, " + range_text(h));
         break;
       }
       case 6: {

@@ -82,6 +82,17 @@ Control::Answer Control::request(Resource r, const Requester& who, orbit::UtcTim
       a.granted = true;
       return a;
     }
+    // The operator took it back from an outside client: it stays the operator's (trakbox's tracking)
+    // until --handback (30 s when 0) has passed since the operator's last action (issue 60).
+    if (s.operator_took) {
+      const auto guard = std::chrono::seconds(settings_.handback_s > 0 ? settings_.handback_s : kOperatorGuardS);
+      if (now - *s.operator_took < guard)
+        return Answer{false, "the operator took " + what + " back; outside clients may move it again " +
+                                 std::to_string(std::chrono::duration_cast<std::chrono::seconds>(
+                                                    guard - (now - *s.operator_took)).count()) +
+                                 " s after the operator's last action", {}, {}};
+      s.operator_took.reset();
+    }
     if (settings_.exclusive && !s.client.empty() && is_outside(h.kind) && h.kind != HolderKind::satnogs &&
         *settings_.exclusive == h.kind)
       return Answer{false, h.label + " holds " + what + " (--exclusive " + std::string(kind_name(h.kind)) + ")", {}, {}};
@@ -109,6 +120,7 @@ Control::Answer Control::request(Resource r, const Requester& who, orbit::UtcTim
     a.confirm = h;
     return a;
   }
+  if (is_operator(who.kind) && (is_outside(h.kind) || s.operator_took)) s.operator_took = now;
   Holder next = to_tracking ? tracking_holder(now) : Holder{who.kind, who.label, now, {}};
   s.before.reset();
   s.client.clear();
@@ -135,9 +147,13 @@ std::vector<Change> Control::tick(orbit::UtcTime now) {
   std::vector<Change> out;
   for (const Resource r : {Resource::antenna, Resource::radio}) {
     Slot& s = slot(r);
-    if (s.client.empty() || settings_.handback_s <= 0) continue;
-    if (now - s.last_heard >= std::chrono::seconds(settings_.handback_s))
-      if (auto c = hand_back(r, now, s.client + " silent " + std::to_string(settings_.handback_s) + " s"))
+    // A connectionless sender (PstRotator's UDP) never disconnects: its silence ends its hold even
+    // under --handback 0, after kConnectionlessHandbackS (issue 56).
+    const bool connectionless = s.now.kind == HolderKind::pstrotator;
+    const int after = settings_.handback_s > 0 ? settings_.handback_s : connectionless ? kConnectionlessHandbackS : 0;
+    if (s.client.empty() || after <= 0) continue;
+    if (now - s.last_heard >= std::chrono::seconds(after))
+      if (auto c = hand_back(r, now, s.client + " silent " + std::to_string(after) + " s"))
         out.push_back(std::move(*c));
   }
   for (Change& c : windows_tick(now)) out.push_back(std::move(c));
@@ -147,8 +163,19 @@ std::vector<Change> Control::tick(orbit::UtcTime now) {
 std::vector<Change> Control::windows_tick(orbit::UtcTime now) {
   std::vector<Change> out;
   const Window* w = window_at(now);
+  // The window that took a resource is no longer booked (a SatNOGS job cancelled or deleted, a
+  // reservation removed): its hold ends now, not at its old end.
+  auto cancelled = [this](const std::string& yielded) {
+    if (yielded.empty()) return false;
+    for (const Window& x : windows_)
+      if (x.id + x.kind == yielded) return false;
+    return true;
+  };
   for (const Resource r : {Resource::antenna, Resource::radio}) {
     Slot& s = slot(r);
+    if (s.client.empty() && s.now.until && *s.now.until > now && cancelled(s.yielded))
+      if (auto c = hand_back(r, now, "its window was cancelled")) out.push_back(std::move(*c));
+    if (s.before && s.before->until && cancelled(s.yielded)) s.before.reset();
     // A window's own hold (no client) ends with it; a client's under it ends by its own rules.
     if (s.client.empty() && s.now.until && *s.now.until <= now)
       if (auto c = hand_back(r, now, "the reservation ended")) out.push_back(std::move(*c));

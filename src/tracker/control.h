@@ -77,6 +77,13 @@ struct Window {
   std::string note;
 };
 
+// A connectionless client (PstRotator over UDP) has no disconnect: its silence ends its hold after
+// this many seconds even when --handback is 0 (never by silence for connected clients).
+inline constexpr int kConnectionlessHandbackS = 30;
+// After the operator takes a resource back from an outside client, outside clients are refused for
+// --handback seconds after the operator's last action on it, or this many when --handback is 0.
+inline constexpr int kOperatorGuardS = 30;
+
 struct ControlSettings {
   int handback_s = 30;                          // --handback: 0, never by silence
   std::optional<HolderKind> exclusive;          // --exclusive rotctld|rigctld|satrak (none: nothing)
@@ -127,6 +134,9 @@ class Control {
     std::string client;            // the outside client holding it (its requester label), if one does
     orbit::UtcTime last_heard{};
     std::string yielded;           // the reservation whose window took it from tracking already
+    // The operator took it back from an outside client at this time (or acted on it since): outside
+    // clients are refused until --handback has passed after it (take-back holds, issue 60).
+    std::optional<orbit::UtcTime> operator_took;
   };
   Slot& slot(Resource r) { return r == Resource::antenna ? antenna_ : radio_; }
   std::optional<Change> hand_to(Resource r, Holder h, std::string why);

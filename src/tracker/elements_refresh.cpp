@@ -36,8 +36,8 @@ std::string first_line(const std::string& body) {
 
 }  // namespace
 
-ElementsRefresh::ElementsRefresh(store::Model& model, Post post, std::function<void()> changed)
-    : model_(model), post_(std::move(post)), changed_(std::move(changed)) {}
+ElementsRefresh::ElementsRefresh(store::ModelOwner& owner, Post post, std::function<void()> changed)
+    : owner_(owner), model_(owner.model()), post_(std::move(post)), changed_(std::move(changed)) {}
 
 ElementsRefresh::~ElementsRefresh() = default;
 
@@ -129,7 +129,8 @@ std::string ElementsRefresh::status_word(orbit::UtcTime now) const {
 
 void ElementsRefresh::start(std::int64_t now_unix) {
   if (!downloader_) downloader_ = std::make_unique<download::Downloader>();
-  model_.refresh.last_attempt_unix = now_unix;
+  (void)owner_.edit(store::bit(store::Area::other), "refresh attempt", store::Origin::refresh,
+                    [&](store::Model& m) { m.refresh.last_attempt_unix = now_unix; });  // kept across restarts
   outcomes_.clear();
   pending_ = static_cast<int>(model_.refresh.sources.size());
   for (const store::RefreshSource& src : model_.refresh.sources) {
@@ -150,7 +151,6 @@ void ElementsRefresh::start(std::int64_t now_unix) {
       });
     });
   }
-  changed_();  // the attempt's time is kept across restarts
 }
 
 void ElementsRefresh::finished(const std::string& url, download::DownloadResult r) {
@@ -162,10 +162,11 @@ void ElementsRefresh::complete() {
   std::vector<orbit::Elements> sets;
   std::vector<std::string> failures;
   int not_modified = 0;
+  store::RefreshSettings settings = model_.refresh;
   for (Outcome& o : outcomes_) {
     const download::DownloadResult& r = o.result;
     store::RefreshSource* src = nullptr;
-    for (auto& s : model_.refresh.sources)
+    for (auto& s : settings.sources)
       if (s.url == o.url) src = &s;
     if (!r.ok) {
       failures.push_back(r.error);
@@ -190,14 +191,25 @@ void ElementsRefresh::complete() {
       src->last_modified = r.last_modified;
     }
   }
-  const store::RefreshReport report = store::apply_refresh(model_.db, sets);
+  store::Database db = model_.db;
+  const store::RefreshReport report = store::apply_refresh(db, sets);
   for (const auto& c : report.updated)
     spdlog::info("elements: {} ({}) updated: epoch {} -> {}", c.name, c.catalog_number, orbit::format_iso8601(c.old_epoch),
                  orbit::format_iso8601(c.new_epoch));
   for (const auto& f : failures) spdlog::warn("elements: refresh failed: {}; the last good sets are kept", f);
   last_updated_ = static_cast<int>(report.updated.size());
   last_failed_ = !failures.empty();
-  model_.refresh.last_attempt_failed = last_failed_;   // (saved by changed_(): a retry comes sooner)
+  settings.last_attempt_failed = last_failed_;  // kept: a retry comes sooner
+  const store::EditResult kept = owner_.edit(
+      (report.updated.empty() ? 0 : store::bit(store::Area::elements)) | store::bit(store::Area::other),
+      report.updated.empty() ? "refresh settings" : "elements", store::Origin::refresh, [&](store::Model& m) {
+        m.db = std::move(db);
+        m.refresh = settings;
+      });
+  if (!kept.ok()) {
+    spdlog::warn("elements: the refreshed sets were not stored: {}", *kept.refusal);
+    last_failed_ = true;
+  }
   last_result_ = report.summary();
   if (not_modified) last_result_ += ", " + std::to_string(not_modified) + " source(s) not modified";
   if (!failures.empty()) last_result_ += "; " + std::to_string(failures.size()) + " source(s) failed: " + failures.front();

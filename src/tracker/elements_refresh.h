@@ -20,14 +20,12 @@
 #include <vector>
 
 #include "orbit/time.h"
+#include "store/owner.h"
 
 namespace tb::download {
 class Downloader;
 struct DownloadResult;
 }  // namespace tb::download
-namespace tb::store {
-struct Model;
-}
 namespace tb::station {
 class Clock;
 }
@@ -52,9 +50,10 @@ std::string refresh_status_text(const RefreshState& s);
 class ElementsRefresh {
  public:
   // post: runs a function on the event-loop thread (download results arrive on the worker).
-  // changed: the database or the refresh settings changed (save; the tracker sees new elements).
+  // changed: a refresh ended (the database and the refresh settings are changed through the
+  // model's owner, which saves and announces them; the tracker sees new elements).
   using Post = std::function<void(std::function<void()>)>;
-  ElementsRefresh(store::Model& model, Post post, std::function<void()> changed);
+  ElementsRefresh(store::ModelOwner& owner, Post post, std::function<void()> changed);
   ~ElementsRefresh();
   ElementsRefresh(const ElementsRefresh&) = delete;
   ElementsRefresh& operator=(const ElementsRefresh&) = delete;
@@ -95,7 +94,8 @@ class ElementsRefresh {
   void finished(const std::string& url, download::DownloadResult r);
   void complete();
 
-  store::Model& model_;
+  store::ModelOwner& owner_;
+  const store::Model& model_;
   Post post_;
   std::function<void()> changed_;
   std::unique_ptr<download::Downloader> downloader_;

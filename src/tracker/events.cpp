@@ -101,7 +101,6 @@ std::vector<Event> PassEventSource::step(orbit::UtcTime now) {
   // --event-min-el: a pass that never rises that high (one that only grazes the -2 deg rule) is
   // no pass to announce: no AOS, so no LOS and no hook (issue 39).
   po.min_max_elevation_deg = model_.event_min_el_deg;
-  const bool set_back = last_step_ && now < *last_step_;
   last_step_ = now;
   for (const int i : model_.db.selected) {
     if (i < 0 || i >= static_cast<int>(model_.db.satellites.size())) continue;
@@ -113,21 +112,22 @@ std::vector<Event> PassEventSource::step(orbit::UtcTime now) {
       w.catalog_number = el.catalog_number;
       w.epoch_year = el.epoch_year;
       w.epoch_day = el.epoch_day;
-      w.pass.reset();
-      w.search_again = {};
+      if (!w.aos_fired) w.pass.reset();
     }
-    // The clock set back (menu 5, a Satrak TIME=): the pass watched may no longer be the next, and
-    // a search that found nothing may find something now. A pass already told stays (its LOS is
-    // still to come).
-    if (set_back && !w.aos_fired) {
-      w.pass.reset();
-      w.search_again = {};
-    }
-    if (!w.pass && now >= w.search_again) {
+    // Until its AOS is told, the pass watched is the station's pass cache's (pass_memo.h): another
+    // when the station moves, the elements change or the clock goes back. Once told, it stays to
+    // its LOS (a satellite still up where the search ended gets its next stretch, untold).
+    if (!w.aos_fired || !w.pass) {
       if (const orbit::Sgp4* sgp4 = tracker_.propagator(i)) {
-        ++searches_;
-        w.pass = orbit::next_pass(*sgp4, model_.station.observer(), now, 2.0, po);
-        if (!w.pass) w.search_again = now + std::chrono::minutes(60);
+        const orbit::Observer where = model_.station.observer();
+        w.pass = tracker_.passes().get(
+            el, where, now,
+            [&] {
+              ++searches_;
+              return orbit::next_pass(*sgp4, where, now, 2.0, po);
+            },
+            "events", po);
+        if (w.pass && now > w.pass->los) w.pass.reset();  // told below at its LOS already
       }
     }
     if (w.pass && !w.aos_fired && now >= w.pass->aos - lead_ && now < w.pass->los) {

@@ -65,7 +65,6 @@ class PassEventSource {
     double epoch_day = 0;
     int epoch_year = 0;
     std::optional<orbit::Pass> pass;  // the next (or current) pass
-    orbit::UtcTime search_again{};    // nothing found: when to look again
     bool aos_fired = false;
   };
   Event pass_event(const char* kind, int db_index, const Watch& w, orbit::UtcTime now) const;

@@ -35,6 +35,22 @@ std::string number(double v) { return text::exact_number(v); }
 StationOps::StationOps(StationLoop& station, Requester who, bool confirmed)
     : station_(station), model_(station.model()), who_(std::move(who)), confirmed_(confirmed) {}
 
+store::Origin StationOps::origin() const {
+  switch (who_.kind) {
+    case HolderKind::web: return store::Origin::web;
+    case HolderKind::host: return store::Origin::host;
+    case HolderKind::rotctld: return store::Origin::rotctld;
+    case HolderKind::rigctld: return store::Origin::rigctld;
+    case HolderKind::satrak: return store::Origin::satrak;
+    case HolderKind::pstrotator: return store::Origin::pstrotator;
+    case HolderKind::tracking:
+    case HolderKind::satnogs:
+    case HolderKind::standby: return store::Origin::station;
+    case HolderKind::menus: break;
+  }
+  return store::Origin::menus;
+}
+
 std::optional<OpResult> StationOps::ask(Resource r, bool to_tracking) {
   Control::Answer a = station_.control().request(r, who_, station_.now(), confirmed_, to_tracking);
   station_.apply(a.changes);
@@ -59,16 +75,17 @@ std::optional<int> StationOps::find_satellite(std::string_view name) const {
 }
 
 OpResult StationOps::track(int db_index) {
-  auto& db = model_.db;
+  const auto& db = model_.db;
   if (db_index < 0 || db_index >= static_cast<int>(db.satellites.size()))
     return OpResult::refuse("no satellite " + std::to_string(db_index) + " in the database");
   if (auto no = ask(Resource::antenna, true)) return *no;
   if (auto no = ask(Resource::radio, true)) return *no;
   OpResult r;
-  if (const int n = db.list_number(db_index); n > 0 && db.marked != n - 1) {
-    db.marked = n - 1;
-    r.model_changed = true;
-  }
+  if (const int n = db.list_number(db_index); n > 0 && db.marked != n - 1)
+    r.model_changed = station_.owner()
+                          .edit(store::bit(store::Area::tracking_list), "marked satellite", origin(),
+                                [&](store::Model& m) { m.db.marked = n - 1; })
+                          .changed;
   station_.tracker().track_single(db_index);
   station_.antenna_changed();
   r.note = "tracking " + db.satellites[static_cast<std::size_t>(db_index)].name();
@@ -82,16 +99,13 @@ OpResult StationOps::track(std::string_view name) {
 }
 
 OpResult StationOps::track_multi(bool priority) {
-  auto& db = model_.db;
+  const auto& db = model_.db;
   if (db.selected.size() < static_cast<std::size_t>(store::kMinMultiTrack))
     return OpResult::refuse("multiple tracking needs two or more satellites in the tracking list (menu 3-2)");
   if (auto no = ask(Resource::antenna, true)) return *no;
   if (auto no = ask(Resource::radio, true)) return *no;
   OpResult r;
-  if (model_.priority_mode != priority) {
-    model_.priority_mode = priority;
-    r.model_changed = true;
-  }
+  r.model_changed = station_.owner().set("priority_mode", priority, origin()).changed;
   station_.tracker().track_multi(priority);
   station_.antenna_changed();
   const int n = std::min<int>(db.multi_count, static_cast<int>(db.selected.size()));
@@ -117,7 +131,7 @@ OpResult StationOps::track_list(const std::vector<std::string>& names, bool prio
   if (auto no = ask(Resource::radio, true)) return *no;
   // Validated: the chosen ones first, the rest of the list after them, at most 15; those that no
   // longer fit are named in the note (issue 46: never dropped without a word).
-  auto& db = model_.db;
+  store::Database db = model_.db;
   std::vector<int> list = chosen;
   std::string dropped;
   for (const int i : db.selected) {
@@ -129,6 +143,9 @@ OpResult StationOps::track_list(const std::vector<std::string>& names, bool prio
   db.multi_count = static_cast<int>(chosen.size());
   db.marked = 0;
   db.normalise();
+  const store::EditResult kept = station_.owner().edit(store::bit(store::Area::tracking_list), "tracking list",
+                                                       origin(), [&](store::Model& m) { m.db = db; });
+  if (!kept.ok()) return OpResult::refuse(*kept.refusal);
   OpResult r = track_multi(priority);
   r.model_changed = true;
   if (!dropped.empty())
@@ -202,9 +219,8 @@ OpResult StationOps::take_radio() {
 OpResult StationOps::standby(bool on) {
   if (is_outside(who_.kind)) return OpResult::refuse("standby is the operator's");
   OpResult r;
-  if (model_.sharing.standby != on) r.model_changed = true;
-  model_.sharing.standby = on;
-  if (r.model_changed) station_.save_settings();  // on disk before it is acknowledged
+  // Stored (and so on disk) before it is acknowledged.
+  r.model_changed = station_.owner().set("sharing.standby", on, origin()).changed;
   if (on) {
     station_.apply(station_.control().set_standby(true, station_.now()));
     if (station_.rotator().config().parking_enabled) {
@@ -227,7 +243,7 @@ OpResult StationOps::reserve(orbit::UtcTime start, orbit::UtcTime end, std::stri
   const orbit::UtcTime now = station_.now();
   if (end <= now) return OpResult::refuse("that reservation is over already (" + orbit::format_iso8601(end) + ")");
   if (note.size() > 200) return OpResult::refuse("the note of a reservation takes 200 bytes at most");
-  auto& list = model_.sharing.reservations;
+  const auto& list = model_.sharing.reservations;
   const auto unix_s = [](orbit::UtcTime t) {
     return static_cast<std::int64_t>(std::chrono::duration_cast<std::chrono::seconds>(t.time_since_epoch()).count());
   };
@@ -239,9 +255,9 @@ OpResult StationOps::reserve(orbit::UtcTime start, orbit::UtcTime end, std::stri
   store::Reservation r{"op-" + std::to_string(unix_s(start)), unix_s(start), unix_s(end), std::move(note)};
   kept.push_back(r);
   std::sort(kept.begin(), kept.end(), [](const auto& a, const auto& b) { return a.start_unix < b.start_unix; });
-  list = std::move(kept);
-  station_.sharing_changed();
-  station_.save_settings();
+  const store::EditResult done = station_.owner().edit(store::bit(store::Area::sharing), "reservation", origin(),
+                                                       [&](store::Model& m) { m.sharing.reservations = kept; });
+  if (!done.ok()) return OpResult::refuse(*done.refusal);
   OpResult o;
   o.model_changed = true;
   o.note = "reserved " + orbit::format_iso8601(start) + " to " + orbit::format_iso8601(end) + " (" + r.id + ")";

@@ -6,7 +6,8 @@
 // StationOps holds references only (to the StationLoop and the Model it runs on): make one where it
 // is needed. Every operation validates its input fully before it changes anything; a refusal is a
 // sentence naming what was wrong ("unknown satellite 'ISSS'") and leaves the station as it was.
-// An operation that changed the stored model says so (model_changed): the caller saves.
+// An operation that changes the stored model does it through the model's owner (store/owner.h),
+// which checks, saves and announces it; model_changed says it happened.
 #pragma once
 #include <cstdint>
 #include <optional>
@@ -19,6 +20,7 @@
 
 namespace tb::store {
 struct Model;
+enum class Origin;
 }
 
 namespace tb::tracker {
@@ -100,7 +102,8 @@ class StationOps {
   OpResult tune_offsets(std::optional<std::int64_t> rx_hz, std::optional<std::int64_t> tx_hz);
   OpResult tune_tone(double hz);
   // The station's position (menu 4's; --station, the page, host QTH): latitude -90..90, longitude
-  // -180..180, height -500..9000 m; stored, the geometry redone, GPS no longer its source.
+  // -180..180, height as the settings table takes them (store/settings.h); stored through the
+  // model's owner, the geometry redone, GPS no longer its source.
   OpResult set_station(double lat_deg, double lon_deg, double height_m);
   // The element refresh from the stored sources, now (menu 3-5 R, host RF).
   OpResult refresh_elements(std::int64_t now_unix);
@@ -109,9 +112,11 @@ class StationOps {
   // The controller's answer for `r`, applied: nothing when granted, else the refusal.
   std::optional<OpResult> ask(Resource r, bool to_tracking = false);
   bool outside() const { return is_outside(who_.kind); }
+  // Who asked, as the model's owner records it.
+  store::Origin origin() const;
 
   StationLoop& station_;
-  store::Model& model_;
+  const store::Model& model_;
   Requester who_;
   bool confirmed_ = false;
 };

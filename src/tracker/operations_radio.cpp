@@ -4,8 +4,11 @@
 #include <cstdio>
 #include <string>
 
+#include <fmt/format.h>
+
 #include "radio/doppler.h"
 #include "store/model.h"
+#include "store/owner.h"
 #include "tracker/operations.h"
 #include "tracker/station_loop.h"
 
@@ -56,11 +59,13 @@ OpResult StationOps::tune_offsets(std::optional<std::int64_t> rx_hz, std::option
   radio::Tuner& t = station_.tuner();
   t.set_offsets(rx_hz, tx_hz);
   OpResult r;
-  if (model_.radio.corrections != t.config().corrections || model_.radio.tx_corrections != t.config().tx_corrections) {
-    model_.radio.corrections = t.config().corrections;
-    model_.radio.tx_corrections = t.config().tx_corrections;
-    r.model_changed = true;
-  }
+  r.model_changed = station_.owner()
+                        .edit(store::bit(store::Area::radio), std::string(kCorrectionsEdit), origin(),
+                              [&](store::Model& m) {
+                                m.radio.corrections = t.config().corrections;
+                                m.radio.tx_corrections = t.config().tx_corrections;
+                              })
+                        .changed;
   station_.antenna_changed();
   r.note = "RX offset " + signed_hz(t.rit_hz()) + ", TX offset " + signed_hz(t.xit_hz()) + " (" +
            (t.correction_key().empty() ? std::string("this pass") : t.correction_key()) + ")";
@@ -77,13 +82,14 @@ OpResult StationOps::tune_tone(double hz) {
   }
   if (const auto why = untuned(station_)) return OpResult::refuse(*why);
   if (auto no = ask(Resource::radio, true)) return *no;  // the operator tunes trakbox's own tracking (control.h)
-  auto& sat = model_.db.satellites[static_cast<std::size_t>(*station_.tuned())];
+  const auto i = static_cast<std::size_t>(*station_.tuned());
+  const auto& sat = model_.db.satellites[i];
   const int t = static_cast<int>(tenths);
   OpResult r;
-  if (sat.radio.ctcss_tenths_hz != t) {
-    sat.radio.ctcss_tenths_hz = t;
-    r.model_changed = true;
-  }
+  r.model_changed = station_.owner()
+                        .edit(store::bit(store::Area::radio_entries), std::string(kToneEdit), origin(),
+                              [&](store::Model& m) { m.db.satellites[i].radio.ctcss_tenths_hz = t; })
+                        .changed;
   station_.set_tone(t);
   r.note = sat.name() + (t > 0 ? " tone " + std::to_string(t / 10) + "." + std::to_string(t % 10) + " Hz" : " no tone");
   return r;
@@ -94,31 +100,12 @@ OpResult StationOps::tune_tone(double hz) {
 namespace tb::tracker {
 
 OpResult StationOps::set_station(double lat_deg, double lon_deg, double height_m) {
-  char buf[96];
-  if (!std::isfinite(lat_deg) || lat_deg < -90.0 || lat_deg > 90.0) {
-    std::snprintf(buf, sizeof buf, "latitude %g out of range: expected -90 to 90 degrees", lat_deg);
-    return OpResult::refuse(buf);
-  }
-  if (!std::isfinite(lon_deg) || lon_deg < -180.0 || lon_deg > 180.0) {
-    std::snprintf(buf, sizeof buf, "longitude %g out of range: expected -180 to 180 degrees", lon_deg);
-    return OpResult::refuse(buf);
-  }
-  if (!std::isfinite(height_m) || height_m < -500.0 || height_m > 9000.0) {
-    std::snprintf(buf, sizeof buf, "height %g m out of range: expected -500 to 9000 m", height_m);
-    return OpResult::refuse(buf);
-  }
-  auto& st = model_.station;
+  // Each number by the settings table's rule and sentence (store/settings.h), through the one door.
+  const store::EditResult done = station_.owner().set_position(lat_deg, lon_deg, height_m, origin());
+  if (!done.ok()) return OpResult::refuse(*done.refusal);
   OpResult r;
-  r.model_changed = st.lat_deg != lat_deg || st.lon_deg != lon_deg || st.height_m != height_m;
-  st.lat_deg = lat_deg;
-  st.lon_deg = lon_deg;
-  st.height_m = height_m;
-  model_.gps.position_from_gps = false;   // typed in, as menu 4 would
-  model_.gps.position_time.reset();
-  station_.reconfigure();
-  station_.position_changed();
-  std::snprintf(buf, sizeof buf, "station %.4f, %.4f, %.0f m", lat_deg, lon_deg, height_m);
-  r.note = buf;
+  r.model_changed = done.changed;
+  r.note = fmt::format("station {:.4f}, {:.4f}, {:.0f} m", lat_deg, lon_deg, height_m);
   return r;
 }
 

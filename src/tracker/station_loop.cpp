@@ -11,17 +11,22 @@
 #include <spdlog/spdlog.h>
 
 #include "radio/two_radios.h"
+#include "store/settings.h"
 
 namespace tb::tracker {
 
-StationLoop::StationLoop(store::Model& model, const station::Clock& clock, Tracker& tracker,
+StationLoop::StationLoop(store::ModelOwner& owner, const station::Clock& clock, Tracker& tracker,
                          std::unique_ptr<rotator::Controller> rotator, std::unique_ptr<radio::RadioDriver> radio)
-    : model_(model),
+    : owner_(owner),
+      model_(owner.model()),
       clock_(clock),
       tracker_(tracker),
       rotator_(std::move(rotator)),
       radio_(std::move(radio)),
-      tuner_(model.radio) {
+      tuner_(owner.model().radio) {
+  owner_.listen([this, alive = std::weak_ptr<int>(alive_)](const store::Notice& n) {
+    if (!alive.expired()) on_model_changed(n);
+  });
   rotator_->set_control_enabled(model_.rotor_control);
   rotator_->set_error_detection(model_.rotator_error_detection);
   sharing_changed();
@@ -39,10 +44,37 @@ StationLoop::StationLoop(store::Model& model, const station::Clock& clock, Track
 }
 
 void StationLoop::set_rotor_control(bool on) {
-  const bool changed = model_.rotor_control != on;
-  model_.rotor_control = on;
+  (void)owner_.set("rotor_control", on, store::Origin::station);  // announced: on_model_changed applies it
   rotator_->set_control_enabled(on);
-  if (changed && settings_changed_) settings_changed_();
+  wake();
+}
+
+// What the owner announced, applied to what depends on it: the rotator's and the radio's
+// configuration, the pass plan and the position's generation (whoever caches a pass compares it),
+// the sharing rules; then the state is saved and the loop ticks at once.
+void StationLoop::on_model_changed(const store::Notice& n) {
+  using store::Area;
+  if (n.changes(Area::position)) {
+    planned_.reset();
+    ++position_generation_;
+  }
+  if (n.changes(Area::rotator) || n.changes(Area::control) || n.changes(Area::station)) {
+    planned_.reset();
+    rotator_->set_config(model_.rotator, model_.station.rotor_start);
+    rotator_->set_control_enabled(model_.rotor_control);
+    rotator_->set_error_detection(model_.rotator_error_detection);
+  }
+  // The tuner keeps the corrections it learnt itself; anything else of the radio is sent afresh.
+  if (n.changes(Area::radio) && n.what != kCorrectionsEdit && n.what != kDialFollowEdit) {
+    tuner_.set_config(model_.radio);
+    tuned_.reset();
+  }
+  if (n.changes(Area::elements) || (n.changes(Area::radio_entries) && n.what != kToneEdit)) {
+    find_remote_in_database();
+    tuned_.reset();  // frequencies may have changed: select the satellite again
+  }
+  if (n.changes(Area::sharing)) sharing_changed();
+  if (settings_changed_) settings_changed_();
   wake();
 }
 
@@ -50,10 +82,6 @@ void StationLoop::record_choice() {
   store::TrackingChoice c;
   if (tracker_.mode() == Mode::multi) {
     c.mode = store::TrackingChoice::Mode::multi;
-    if (model_.priority_mode != tracker_.priority()) {
-      model_.priority_mode = tracker_.priority();
-      model_.tracking = {};  // saved below
-    }
   } else if (tracker_.mode() == Mode::single) {
     const int i = tracker_.single_index();
     if (i < 0 || i >= static_cast<int>(model_.db.satellites.size())) return;
@@ -63,9 +91,13 @@ void StationLoop::record_choice() {
   } else {
     return;
   }
-  if (c == model_.tracking) return;
-  model_.tracking = c;
-  if (settings_changed_) settings_changed_();
+  const bool priority = tracker_.mode() == Mode::multi ? tracker_.priority() : model_.priority_mode;
+  if (c == model_.tracking && priority == model_.priority_mode) return;
+  (void)owner_.edit(store::bit(store::Area::control), "tracking choice", store::Origin::station,
+                    [&](store::Model& m) {
+                      m.tracking = c;
+                      m.priority_mode = priority;
+                    });
 }
 
 void StationLoop::reconfigure() {
@@ -96,17 +128,16 @@ bool StationLoop::apply_gps_position() {
   if (!gps_ || !model_.gps.follow) return false;
   const auto& fix = gps_->filter().confirmed();
   if (!fix || !gps_->filter().fixed()) return false;
-  station::StationConfig& st = model_.station;
+  const station::StationConfig& st = model_.station;
   const double moved = gps::distance_m(st.lat_deg, st.lon_deg, fix->lat_deg, fix->lon_deg);
   const double climbed = fix->alt_m ? std::abs(*fix->alt_m - st.height_m) : 0.0;
   if (model_.gps.position_from_gps && moved <= model_.gps.threshold_m && climbed <= model_.gps.threshold_m) return false;
-  st.lat_deg = fix->lat_deg;
-  st.lon_deg = fix->lon_deg;
-  if (fix->alt_m) st.height_m = std::clamp(*fix->alt_m, -500.0, 9000.0);  // the range menu 4 takes
-  model_.gps.position_from_gps = true;
-  model_.gps.position_time = fix->time;
-  reconfigure();
-  return true;
+  // A receiver's height beyond what the station takes is clamped to its range (a fix is not typed).
+  const store::Bounds h = store::bounds("station.height_m");
+  const double height = fix->alt_m ? std::clamp(*fix->alt_m, h.lo, h.hi) : st.height_m;
+  const store::EditResult r = owner_.set_position(fix->lat_deg, fix->lon_deg, height, store::Origin::gps, fix->time);
+  if (!r.ok()) spdlog::warn("gps: the fix {:.5f}, {:.5f} not taken: {}", fix->lat_deg, fix->lon_deg, *r.refusal);
+  return r.changed;
 }
 
 void StationLoop::remote_follow(std::optional<RemoteFollow> f) {
@@ -240,8 +271,14 @@ std::optional<std::chrono::milliseconds> StationLoop::radio_due_in() const {
 
 std::optional<radio::Hz> StationLoop::next_uplink() {
   if (!tuned_) return std::nullopt;
-  radio::SatelliteRadio& r = model_.db.satellites[static_cast<std::size_t>(*tuned_)].radio;
+  const auto i = static_cast<std::size_t>(*tuned_);
+  radio::SatelliteRadio r = model_.db.satellites[i].radio;
   if (!r.next_uplink()) return std::nullopt;
+  // Not announced as the radio entries' change: the tuner moves to the new uplink here, keeping
+  // everything else it has sent.
+  const bool kept = owner_.edit(store::bit(store::Area::other), "alternate uplink", store::Origin::station,
+                                [&](store::Model& m) { m.db.satellites[i].radio = r; }).ok();
+  if (!kept) return std::nullopt;
   tuner_.set_uplink(r.uplink_hz);
   return r.uplink_hz;
 }

@@ -14,17 +14,29 @@
 #include "radio/driver.h"
 #include "rotator/controller.h"
 #include "rotator/pass_plan.h"
+#include "store/owner.h"
 #include "tracker/control.h"
 #include "tracker/tracker.h"
 
 namespace tb::tracker {
+
+// The edit that copies the corrections the tuner learnt (+ / -, dial follow) into the model: the
+// station does not hand them back to the tuner that made them.
+inline constexpr std::string_view kCorrectionsEdit = "radio corrections";
+// Dial follow switched by the realtime display's D key, which hands it to the tuner itself (the
+// spot reached so far stays).
+inline constexpr std::string_view kDialFollowEdit = "dial follow";
+// The tone the station has just sent (StationOps::tune_tone): stored, not sent again.
+inline constexpr std::string_view kToneEdit = "tone";
 
 class ElementsRefresh;
 struct Logging;
 
 class StationLoop {
  public:
-  StationLoop(store::Model& model, const station::Clock& clock, Tracker& tracker,
+  // The station runs on the model its owner keeps (store/owner.h): it reads it, edits it only
+  // through the owner, and follows every change the owner announces (reconfigure, save, wake).
+  StationLoop(store::ModelOwner& owner, const station::Clock& clock, Tracker& tracker,
               std::unique_ptr<rotator::Controller> rotator, std::unique_ptr<radio::RadioDriver> radio);
 
   // Tracker tick, then antenna and radio. Call once a second or faster (next_tick_in says).
@@ -46,9 +58,9 @@ class StationLoop {
   }
   bool doppler() const { return doppler_; }
 
-  // The settings the station itself changes for whoever asked (rotor control; the Tracker's choice
-  // of what to track, recorded in model.tracking): the program saves the state here, so a restart
-  // does what was asked whichever front end asked it.
+  // Every change of the stored model (any front end, through the owner) and the station's own
+  // (rotor control; the Tracker's choice, recorded in model.tracking): the program saves the state
+  // here, so a restart does what was asked whichever front end asked it.
   void on_settings_changed(std::function<void()> f) { settings_changed_ = std::move(f); }
   // Saves now through that hook (standby, a reservation: stored before they are acknowledged).
   void save_settings() {
@@ -133,8 +145,9 @@ class StationLoop {
   std::optional<std::chrono::milliseconds> radio_due_in() const;
   Tracker& tracker() { return tracker_; }
   const Tracker& tracker() const { return tracker_; }
-  store::Model& model() { return model_; }
-  const store::Model& model() const { return model_; }
+  const store::Model& model() const { return owner_.model(); }
+  // The one door of the stored model: named edits, each checked whole, saved and announced.
+  store::ModelOwner& owner() { return owner_; }
 
   // Compass azimuth/elevation the antenna points at now, if known.
   std::optional<rotator::AzEl> antenna() const;
@@ -165,8 +178,8 @@ class StationLoop {
   const station::Clock& clock() const { return clock_; }
   // When the station follows the receiver (model.gps.follow) and its confirmed position is farther
   // than model.gps.threshold_m from the station's (or the position was typed in): the station moves
-  // there (a 2D fix keeps the stored height), the geometry is reconfigured and true is returned (the
-  // caller saves). Jitter within the threshold changes nothing.
+  // there through the owner (a 2D fix keeps the stored height) and true is returned. Jitter within
+  // the threshold changes nothing.
   bool apply_gps_position();
   // Counts the station's moves (menu 4, GPS, GPS_SETTINGS=): whoever caches what depends on the
   // position (the Satrak unit's pass) compares it.
@@ -174,7 +187,8 @@ class StationLoop {
   void position_changed() { ++position_generation_; }
 
  private:
-  store::Model& model_;
+  store::ModelOwner& owner_;
+  const store::Model& model_;  // owner_.model(), read only
   const station::Clock& clock_;
   Tracker& tracker_;
   std::unique_ptr<rotator::Controller> rotator_;
@@ -200,6 +214,7 @@ class StationLoop {
   std::function<void(const Change&)> control_changed_;
   std::shared_ptr<int> alive_ = std::make_shared<int>(0);  // the Tracker's hook checks this
   void record_choice();
+  void on_model_changed(const store::Notice& n);
   void wake() {
     if (wake_) wake_();
   }

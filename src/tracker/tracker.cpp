@@ -52,10 +52,7 @@ Tracker::Cached& Tracker::cached(int db_index) const {
   Cached& c = cache_[db_index];
   if (!c.sgp4 || !same_elements(c.elements, e)) {
     c.elements = e;
-    c.sgp4 = std::make_unique<orbit::Sgp4>(e);
-    c.pass.reset();
-    c.pass_searched_until = {};
-    c.pass_searched_at = {};
+    c.sgp4 = std::make_unique<orbit::Sgp4>(e);  // the pass cache sees the new elements too
   }
   return c;
 }
@@ -79,23 +76,14 @@ SatNow Tracker::compute(int db_index, orbit::UtcTime t, bool with_pass) const {
     s.downlink_doppler_hz =
         orbit::doppler_shift_hz(static_cast<double>(sat.radio.downlink_hz), s.obs.look.range_rate_km_s);
   if (with_pass && s.obs.ok()) {
-    // The clock set back (menu 5, TIME=): what was found from a later time may not be the next
-    // pass any more.
-    const bool went_back = t < c.pass_searched_at;
-    const bool past = !c.pass || t > c.pass->los;
-    // The station moved (menu 4, the GPS receiver): the pass is another.
-    const bool moved = obs.lat_deg != c.pass_observer.lat_deg || obs.lon_deg != c.pass_observer.lon_deg ||
-                       obs.height_m != c.pass_observer.height_m;
-    if (went_back || moved || (past && t >= c.pass_searched_until)) {
-      c.pass_observer = obs;
-      orbit::PassOptions po;
-      po.precision_s = 1.0;
-      c.pass = orbit::next_pass(*c.sgp4, obs, t, kPassSearchDays, po);
-      c.pass_searched_at = t;
-      // Nothing within a day (or a decayed set): do not search again for a while.
-      c.pass_searched_until = c.pass ? t : orbit::add_minutes(t, 60.0);
-    }
-    if (c.pass && t <= c.pass->los) s.pass = c.pass;
+    // The station's one pass cache (pass_memo.h): searched again when the elements change, the
+    // station moves, the pass has set or the clock goes back.
+    orbit::PassOptions po;
+    po.precision_s = 1.0;
+    const orbit::Sgp4& sgp4 = *c.sgp4;
+    const auto pass = passes_.get(
+        sat.elements, obs, t, [&] { return orbit::next_pass(sgp4, obs, t, kPassSearchDays, po); }, "tracker", po);
+    if (pass && t <= pass->los) s.pass = pass;
   }
   return s;
 }

@@ -13,6 +13,7 @@
 #include "orbit/passes.h"
 #include "station/clock.h"
 #include "store/model.h"
+#include "tracker/pass_memo.h"
 
 namespace tb::tracker {
 
@@ -80,6 +81,10 @@ class Tracker {
   std::vector<orbit::Observation> orbit_track(int db_index, orbit::UtcTime from, int intervals) const;
   std::vector<orbit::Observation> pass_track(int db_index, const orbit::Pass& pass, int intervals) const;
 
+  // The station's one cache of the next pass (pass_memo.h), which the tracker's candidates, the
+  // AOS/LOS events, the status document and the Satrak unit share.
+  PassMemo& passes() const { return passes_; }
+
   // How long before AOS the antenna moves to the AOS position.
   static constexpr double kPrepositionMinutes = 5.0;
 
@@ -99,12 +104,9 @@ class Tracker {
   struct Cached {
     orbit::Elements elements;
     std::unique_ptr<orbit::Sgp4> sgp4;
-    std::optional<orbit::Pass> pass;  // cached next/current pass, recomputed after its LOS
-    orbit::UtcTime pass_searched_until{};
-    orbit::UtcTime pass_searched_at{};  // the time the pass was searched from
-    orbit::Observer pass_observer{};    // the station the pass was searched for
   };
   mutable std::map<int, Cached> cache_;
+  mutable PassMemo passes_;
   Cached& cached(int db_index) const;
 };
 

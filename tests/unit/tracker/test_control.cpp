@@ -138,6 +138,51 @@ TEST_CASE("a SatNOGS window: tracking yields at its start, a rotctld client hold
   CHECK(c.holder(Resource::radio).kind == HolderKind::tracking);
 }
 
+TEST_CASE("a SatNOGS job that leaves the calendar ends its hold at once, not at its old end (issue 56)") {
+  Control c;
+  c.set_windows({{"satnogs", "777", at(100), at(700), "ISS", ""}});
+  REQUIRE(c.tick(at(100)).size() == 2);
+  CHECK(c.holder(Resource::antenna).kind == HolderKind::satnogs);
+  c.set_windows({});  // the next poll's answer: the job was cancelled
+  const auto back = c.tick(at(200));
+  REQUIRE(back.size() == 2);
+  CHECK(back[0].why == "its window was cancelled");
+  CHECK(c.holder(Resource::antenna).kind == HolderKind::tracking);
+  CHECK(c.holder(Resource::radio).kind == HolderKind::tracking);
+  CHECK(c.tick(at(201)).empty());
+}
+
+TEST_CASE("a connectionless sender (PstRotator) is handed back by silence even under --handback 0") {
+  Control c({0, std::nullopt});
+  const tracker::Requester pst{HolderKind::pstrotator, "pstrotator 127.0.0.1:12001"};
+  CHECK(c.request(Resource::antenna, pst, at(0)).granted);
+  CHECK(c.tick(at(tracker::kConnectionlessHandbackS - 1)).empty());
+  const auto back = c.tick(at(tracker::kConnectionlessHandbackS));
+  REQUIRE(back.size() == 1);
+  CHECK(c.holder(Resource::antenna).kind == HolderKind::tracking);
+  // A connected client under --handback 0 keeps it until it leaves.
+  CHECK(c.request(Resource::antenna, gpredict, at(100)).granted);
+  CHECK(c.tick(at(100000)).empty());
+  CHECK(c.holder(Resource::antenna).kind == HolderKind::rotctld);
+}
+
+TEST_CASE("take back holds: a client sending P every second is refused until --handback after the operator's last action") {
+  Control c;  // --handback 30
+  CHECK(c.request(Resource::antenna, gpredict, at(0)).granted);
+  CHECK(c.request(Resource::antenna, phone, at(5)).confirm);                  // asked first
+  CHECK(c.request(Resource::antenna, phone, at(6), true, true).granted);      // Take back, confirmed
+  CHECK(c.holder(Resource::antenna).kind == HolderKind::tracking);
+  for (int t = 7; t < 36; ++t) {
+    const auto a = c.request(Resource::antenna, gpredict, at(t));
+    CHECK_FALSE(a.granted);
+    CHECK(a.refusal->find("the operator took the antenna back") == 0);
+  }
+  CHECK(c.holder(Resource::antenna).kind == HolderKind::tracking);
+  CHECK(c.request(Resource::antenna, phone, at(20), false, true).granted);  // the operator acts again
+  CHECK_FALSE(c.request(Resource::antenna, gpredict, at(49)).granted);
+  CHECK(c.request(Resource::antenna, gpredict, at(50)).granted);            // 30 s after the last action
+}
+
 TEST_CASE("kind names round-trip") {
   for (const char* k : {"tracking", "menus", "web", "host", "rotctld", "rigctld", "satrak", "satnogs", "pstrotator", "standby"})
     CHECK(tracker::kind_name(*tracker::kind_named(k)) == k);
