@@ -84,7 +84,7 @@ void menu_6_1_calibration(term::Terminal& t, Services& s) {
         if (!s.station.rotor_control() && c != '5') {
           tracker::StationOps(s.station).rotor_control(true);  // the operator's key to move it: explicit
           m.note("Rotor control switched ON (E key in the realtime display switches it OFF).");
-          if (const auto err = s.save()) m.note("State not saved: " + *err);
+          if (const auto& failed = s.station.save_failure()) m.note("State not saved: " + *failed);
         }
         if (s.station.rotor_control()) s.station.rotator().manual_key(c);
         continue;

@@ -68,6 +68,7 @@ void menu_s_single_tracking(term::Terminal& t, Services& s);
 void menu_m_multiple_tracking(term::Terminal& t, Services& s);
 
 // Saves and reports a failure on the terminal (a failed save never loses the edit in memory).
+// Says so when the last save of the model failed (each change is saved as it is made).
 void save_or_report(term::Terminal& t, Services& s);
 
 }  // namespace tb::menus

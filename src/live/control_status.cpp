@@ -57,6 +57,8 @@ void add_control_status(const tracker::StationLoop& station, nlohmann::json& j) 
     if (rs.target)
       a["target"] = {{"az_deg", station.rotator().model().compass_from_travel(rs.target->az_travel)},
                      {"el_deg", rs.target->el}};
+    else if (rs.has_position)  // arrived and stopped there (a client's P done): it holds where it is
+      a["target"] = {{"az_deg", rs.az.deg}, {"el_deg", rs.el.deg}};
     else
       a["target"] = nullptr;
   }

@@ -78,7 +78,9 @@ EditResult ModelOwner::edit(Areas areas, std::string what, Origin origin, const 
     return r;
   }
   if (after == to_json(model_)) return r;
-  model_ = std::move(copy);
+  // Assigned over the model in place (not moved in), so that the storage of its lists is reused and
+  // a reader's reference into them stays on the same element wherever the list did not grow.
+  model_ = copy;
   r.changed = true;
   for (unsigned a = 0; a < static_cast<unsigned>(Area::count); ++a)
     if (areas & (1u << a)) ++versions_[a];

@@ -171,7 +171,11 @@ const std::array kTable = {
 };
 #undef TB_FIELD
 
-std::string number_text(double v) { return text::exact_number(v); }
+// A number as written: whole numbers without an exponent (100000, not 1e+05), others exactly.
+std::string number_text(double v) {
+  if (std::isfinite(v) && v == std::floor(v) && std::abs(v) < 1e15) return std::to_string(static_cast<long long>(v));
+  return text::exact_number(v);
+}
 
 std::string with_unit(const Setting& s, const std::string& v) {
   return s.unit.empty() ? v : v + " " + std::string(s.unit);
@@ -248,7 +252,11 @@ std::optional<std::string> refusal(const Setting& s, const json& v) {
       if (!v.is_string()) return key + ": expected text";
       const std::string t = v.get<std::string>();
       if (t.size() > s.max_len) return key + ": longer than " + std::to_string(s.max_len) + " characters";
-      if (const auto why = text_rule(s, t)) return key + ": '" + text::visible_bytes(t.substr(0, 60)) + "': " + *why;
+      if (const auto why = text_rule(s, t)) {
+        const std::string shown_value = text::visible_bytes(t.substr(0, 60));
+        // Some rules quote the value themselves ("...; found 'nmea:/dev/ttyUSB0'").
+        return key + ": " + (why->find(shown_value) != std::string::npos ? "" : "'" + shown_value + "': ") + *why;
+      }
       return std::nullopt;
     }
   }

@@ -83,7 +83,7 @@ OpResult StationOps::tune_tone(double hz) {
   if (const auto why = untuned(station_)) return OpResult::refuse(*why);
   if (auto no = ask(Resource::radio, true)) return *no;  // the operator tunes trakbox's own tracking (control.h)
   const auto i = static_cast<std::size_t>(*station_.tuned());
-  const auto& sat = model_.db.satellites[i];
+  const std::string name = model_.db.satellites[i].name();  // (a copy: the edit replaces the record)
   const int t = static_cast<int>(tenths);
   OpResult r;
   r.model_changed = station_.owner()
@@ -91,7 +91,7 @@ OpResult StationOps::tune_tone(double hz) {
                               [&](store::Model& m) { m.db.satellites[i].radio.ctcss_tenths_hz = t; })
                         .changed;
   station_.set_tone(t);
-  r.note = sat.name() + (t > 0 ? " tone " + std::to_string(t / 10) + "." + std::to_string(t % 10) + " Hz" : " no tone");
+  r.note = name + (t > 0 ? " tone " + std::to_string(t / 10) + "." + std::to_string(t % 10) + " Hz" : " no tone");
   return r;
 }
 

@@ -44,9 +44,10 @@ StationLoop::StationLoop(store::ModelOwner& owner, const station::Clock& clock, 
 }
 
 void StationLoop::set_rotor_control(bool on) {
-  (void)owner_.set("rotor_control", on, store::Origin::station);  // announced: on_model_changed applies it
+  // Announced when it changes: on_model_changed applies it, saves and wakes the loop.
+  const bool changed = owner_.set("rotor_control", on, store::Origin::station).changed;
   rotator_->set_control_enabled(on);
-  wake();
+  if (!changed) wake();
 }
 
 // What the owner announced, applied to what depends on it: the rotator's and the radio's

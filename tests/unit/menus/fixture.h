@@ -33,6 +33,9 @@ struct MenuFixture : StationFixture {
   // the model's rotator settings), and the menus' services on it.
   void build(std::optional<rotator::SimulatedRotatorParams> params = std::nullopt) {
     build_station(params);
+    // As the program wires it: every change the model's owner announces is saved.
+    station->on_settings_changed([this] { ++saves; });
+    owner.listen([this](const store::Notice& n) { changes.push_back(n.what); });
     services = std::make_unique<menus::Services>(menus::Services{model, clock, tracker, *station, [this]() -> std::optional<std::string> {
       ++saves;
       return std::nullopt;
@@ -42,6 +45,7 @@ struct MenuFixture : StationFixture {
   std::unique_ptr<menus::Services> services;
   term::ScriptTerminal term;
   int saves = 0;
+  std::vector<std::string> changes;  // what the owner announced, in order (each is saved)
 };
 
 // What a menu printed: whether it holds `what`, and how many times (overlapping ones too).

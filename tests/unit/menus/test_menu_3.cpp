@@ -371,6 +371,7 @@ TEST_CASE("Menu 3-3: an upload cut off before Ctrl-Z, or with nothing usable, le
   const std::string text = nasa_text(f.model.db, {{"AO-07", "AO-07"}, {"ISS", "ISS"}});
   f.term.feed("YN" + crlf(text));  // no Ctrl-Z: the line dropped
   f.tracker.track_single(0);
+  f.saves = 0;  // (the choice of what to track is stored: not the menu's doing)
   CHECK_THROWS_AS(menus::menu_3_3_upload(f.term, *f.services), menus::InputClosed);
   CHECK(has(f.term.output(), "Upload ended before Ctrl-Z: the stored database is unchanged.\n"));
   CHECK(db_json(f.model) == before);

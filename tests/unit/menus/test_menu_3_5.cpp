@@ -98,7 +98,7 @@ TEST_CASE("3-5 says a refresh running again together with the last one's failure
   std::mutex mu;
   std::vector<std::function<void()>> posted;
   tracker::ElementsRefresh refresh(
-      f.model,
+      f.owner,
       [&](std::function<void()> fn) {
         std::lock_guard<std::mutex> lock(mu);
         posted.push_back(std::move(fn));

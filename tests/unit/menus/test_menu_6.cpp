@@ -42,9 +42,14 @@ void run_scripts(const std::vector<Script>& scripts) {
     DOCTEST_SUBCASE(s.name.c_str()) {
       Fixture f(s.keys);
       if (s.setup) s.setup(f);
+      f.saves = 0;  // what the menu saves, not the setting up
+      f.changes.clear();
       const store::Model was = f.model;
       menus::menu_6_configuration(f.term, *f.services);
       for (const std::string& text : s.shown) CHECK_MESSAGE(has(f.term.output(), text), "not shown: " << text);
+      std::string changes;
+      for (const auto& c : f.changes) changes += c + "; ";
+      CAPTURE(changes);
       if (s.saves) CHECK(f.saves == *s.saves);
       if (s.then) s.then(f, was);
     }

@@ -279,13 +279,13 @@ TEST_CASE("Menu 4 with a GPS receiver: where the position came from, following i
   const store::Model& m = w.f.model;
   CHECK(m.gps.follow);
   CHECK(m.gps.threshold_m == 250.0);
-  // Following: the confirmed fix at once, saved once.
+  // Following: the confirmed fix at once; the menu's settings and then the fix, each change stored.
   CHECK(m.station.lat_deg == 41.01);
   CHECK(m.station.lon_deg == 29.17);
   CHECK(m.station.height_m == 120.0);
   CHECK(m.gps.position_from_gps);
   CHECK(m.gps.position_time == orbit::add_seconds(kGpsT0, 2));
-  CHECK(w.f.saves == 1);
+  CHECK(w.f.saves == 2);
   // Menu 4 again: the origin shown.
   WithReceiver again("\r\r\r\r\r\r\r\r");
   again.f.model = m;

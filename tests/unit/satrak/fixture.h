@@ -105,8 +105,8 @@ inline double angle_diff(double a, double b) {
 
 struct Acu {
   explicit Acu(orbit::UtcTime t0, satrak::Settings settings = {}, store::Model m = tucson_model())
-      : base(t0), clock([this] { return base; }), model(std::move(m)), tracker(model, clock) {
-    tb::testing::SimulatedStation sim = tb::testing::simulated_station(model, clock, tracker);
+      : base(t0), clock([this] { return base; }), owner(std::move(m)), tracker(model, clock) {
+    tb::testing::SimulatedStation sim = tb::testing::simulated_station(owner, clock, tracker);
     rot = sim.rotator;
     loop = std::move(sim.loop);
     fs::create_directories(dir.path / "tle");
@@ -158,7 +158,8 @@ struct Acu {
   TempDir dir;
   orbit::UtcTime base;
   station::RealTimeClock clock;
-  store::Model model;
+  store::ModelOwner owner;
+  store::Model& model = tb::testing::setup_model(owner);  // the test's hand on it for setting up
   tracker::Tracker tracker;
   rotator::SimulatedRotator* rot = nullptr;
   std::unique_ptr<tracker::StationLoop> loop;

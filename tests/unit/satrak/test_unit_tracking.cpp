@@ -99,7 +99,12 @@ TEST_CASE("Tracking: SATELLITE= + TRACK=,1 follows the satellite through a pass,
     CHECK(acu.errstatus(6) == "1");
     CHECK(acu.status(1) == "1");
     CHECK(acu.tracker.mode() == tracker::Mode::single);
-    CHECK(acu.cmd("TRACK=,1") == "TRACK=,OK");  // and Satrak may take it back
+    // The operator took it back (tracker/control.h): the Satrak client is refused until --handback
+    // (30 s) has passed since the operator's action, then it may take it again.
+    CHECK(acu.cmd("TRACK=,1").rfind("TRACK=,ERR,8,THE OPERATOR TOOK THE ANTENNA BACK", 0) == 0);
+    CHECK(acu.tracker.mode() == tracker::Mode::single);
+    acu.run(std::chrono::seconds(31));
+    CHECK(acu.cmd("TRACK=,1") == "TRACK=,OK");
     CHECK(acu.tracker.mode() == tracker::Mode::off);
     CHECK(acu.errstatus(6) == "0");
   }

@@ -159,7 +159,7 @@ TEST_CASE("StationOps: a manual element refresh at most once per 10 minutes of s
   std::mutex mu;
   std::vector<std::function<void()>> posted;  // the download's results, run here as the loop would
   tracker::ElementsRefresh refresh(
-      f.model,
+      f.owner,
       [&](std::function<void()> fn) {
         std::lock_guard<std::mutex> lock(mu);
         posted.push_back(std::move(fn));
