@@ -125,7 +125,7 @@ std::string plain(std::string_view s, std::string_view secret, std::size_t most 
     if (c == '<') tag = true;
     else if (c == '>' && tag) { tag = false; blank = true; }
     else if (!tag) {
-      if (static_cast<unsigned char>(c) <= ' ') { blank = true; continue; }
+      if (static_cast<unsigned char>(c) <= ' ' || c == 0x7f) { blank = true; continue; }
       if (blank && !out.empty()) out += ' ';
       blank = false;
       out += c;
@@ -180,8 +180,9 @@ Messages messages_of(const json& j, std::string_view secret) {
     if (t.empty()) continue;
     ++out.count;
     if (text::lower(t).find("dupl") != std::string::npos) ++out.duplicates;
-    out.text += (out.text.empty() ? "" : "; ") + t;
+    if (out.text.size() < 200) out.text += (out.text.empty() ? "" : "; ") + t;
   }
+  if (out.text.size() > 200) out.text = out.text.substr(0, 197) + "...";
   return out;
 }
 

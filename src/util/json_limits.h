@@ -52,22 +52,42 @@ inline bool too_deep(std::string_view text, std::size_t max_depth = kMaxDepth) {
   return nesting_depth(text, max_depth) > max_depth;
 }
 
+// What a refused parse was, for a reader that locates its problems (the OMM reader names the line).
+struct ParseFailure {
+  bool too_deep = false;
+  bool located = false;   // `byte` is where the syntax failed (1-based, as the library counts)
+  std::size_t byte = 0;
+  std::string what;       // the library's words without its prefix ("syntax error while parsing ...")
+};
+
 // `text` parsed as JSON (nlohmann::json or ordered_json: a template so that this header needs no
 // JSON header) after the nesting check. On a refusal the result is discarded (is_discarded()) and
 // `error` one sentence: "nested deeper than 64 levels" or "not JSON (at byte N)". Never throws for
 // the text.
 template <class Json>
-Json parse_bounded(std::string_view text, std::string& error, std::size_t max_depth = kMaxDepth) {
+Json parse_bounded(std::string_view text, std::string& error, std::size_t max_depth = kMaxDepth,
+                   ParseFailure* failure = nullptr) {
   error.clear();
+  ParseFailure f;
   if (too_deep(text, max_depth)) {
+    f.too_deep = true;
     error = "nested deeper than " + std::to_string(max_depth) + " levels";
-    return Json(Json::value_t::discarded);
+  } else {
+    try {
+      return Json::parse(text.begin(), text.end());
+    } catch (const typename Json::parse_error& e) {
+      f.located = true;
+      f.byte = e.byte;
+      f.what = e.what();
+      if (const auto colon = f.what.rfind(": "); colon != std::string::npos) f.what = f.what.substr(colon + 2);
+      error = "not JSON (at byte " + std::to_string(e.byte) + ")";
+    } catch (const typename Json::exception& e) {  // a number beyond double: out_of_range
+      f.what = e.what();
+      if (const auto bracket = f.what.rfind("] "); bracket != std::string::npos) f.what = f.what.substr(bracket + 2);
+      error = "not JSON (" + f.what + ")";
+    }
   }
-  try {
-    return Json::parse(text.begin(), text.end());
-  } catch (const typename Json::parse_error& e) {
-    error = "not JSON (at byte " + std::to_string(e.byte) + ")";
-  }
+  if (failure) *failure = std::move(f);
   return Json(Json::value_t::discarded);
 }
 
