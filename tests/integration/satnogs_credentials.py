@@ -47,7 +47,7 @@ def main():
         ws = WebSocket(web.port)
         live = ws.state()
         ws.close()
-        check(live["satnogs"]["url"] == s["satnogs"]["url"], f"the live feed's satnogs: {live.get('satnogs')}")
+        check(live["status"]["satnogs"]["url"] == s["satnogs"]["url"], f"the live feed's satnogs: {live['status'].get('satnogs')}")
         for where, text in (("status --json", json.dumps(s)), ("status", web.status_text()), ("the live feed", json.dumps(live))):
             check(PASSWORD not in text, f"the password is in {where}")
     finally:
