@@ -17,6 +17,12 @@ owner (`owner.edit(..., [&](store::Model& m) { ... })`, a lambda's `](store::Mod
 type of such a change, `function<void(store::Model&)>`). Each
 breach is named with its line. `--writers` lists the files that hold a writable Model and exits 0
 (for a before/after count).
+
+It also holds the one door for JSON from outside (issue 56): every parse goes through
+json_limits::parse_bounded (src/util/json_limits.h: the nesting bound, then the parse), so a
+`json::parse(` (nlohmann::json, ordered_json, any spelling) or `sax_parse(` anywhere else in src/,
+menus/ or bench/ fails the check, naming the file and line, unless the line is one of JSON_PARSE_ALLOWED below:
+text trakbox wrote itself.
 """
 import os
 import re
@@ -137,6 +143,45 @@ def model_writers():
     return out
 
 
+# (file, a piece of the line): parses of text trakbox wrote itself, each with why it may skip the door.
+JSON_PARSE_ALLOWED = [
+    ("src/util/json_limits.h", "return Json::parse(text.begin(), text.end());"),  # the door itself
+    # the station's own events, kept as the text it wrote for the live feed's replay
+    ("src/web/server.cpp", "events.push_back(nlohmann::json::parse(e, nullptr, false));"),
+    # the state document's data written by dump() a line above, read back to clean its strings
+    ("src/store/state_file.cpp", "nlohmann::json::parse(data.dump(-1, ' ', false, kReplace));"),
+    # the station socket's `log` request (a client of the socket, mode 0600): owned by the
+    # logbook-requests change, which moves it to parse_bounded; listed until then
+    ("src/live/log_requests.cpp", "const json j = json::parse(request, nullptr, false);"),
+]
+JSON_PARSE = re.compile(r"\w*json\s*::\s*(?:parse|sax_parse)\s*\(|\bsax_parse\s*\(", re.IGNORECASE)
+
+
+def json_parse_outside_door():
+    """Each `json::parse(` outside json_limits::parse_bounded and the allowed lines."""
+    out, used = [], set()
+    for top in ("src", "menus", "bench"):
+        for dirpath, _, files in os.walk(os.path.join(ROOT, top)):
+            for f in sorted(files):
+                if not f.endswith((".cpp", ".h")):
+                    continue
+                path = os.path.join(dirpath, f)
+                rel = os.path.relpath(path, ROOT)
+                with open(path, encoding="utf-8") as fh:
+                    for n, line in enumerate(fh, 1):
+                        if not JSON_PARSE.search(line) or line.lstrip().startswith("//"):
+                            continue
+                        allowed = [a for a in JSON_PARSE_ALLOWED if a[0] == rel and a[1] in line]
+                        if allowed:
+                            used.add(allowed[0])
+                            continue
+                        out.append(f"{rel}:{n}: JSON parsed outside json_limits::parse_bounded (src/util/json_limits.h: "
+                                   f"the nesting bound first): {line.strip()[:100]}")
+    out += [f"{a[0]}: JSON_PARSE_ALLOWED lists '{a[1]}', which is no longer there: remove it from "
+            "scripts/check-architecture.py" for a in JSON_PARSE_ALLOWED if a not in used]
+    return out
+
+
 def main():
     if "--writers" in sys.argv:
         files = sorted({f for f, _, _ in model_writers()})
@@ -162,12 +207,20 @@ def main():
     problems += [f"folders include one another: {c}" for c in cycles(code)]
     problems += [f"{f}:{n}: a writable store::Model outside its owner (store/owner.h): {t}"
                  for f, n, t in model_writers()]
+    door = json_parse_outside_door()
+    if door:
+        print("JSON from outside is parsed only through json_limits::parse_bounded:")
+        for p in door:
+            print("  " + p)
     if problems:
         print("docs/ARCHITECTURE.md's module table disagrees with the includes:")
         for p in problems:
             print("  " + p)
         return 1
-    print(f"module table matches the includes of {len(code)} folders; only the owner writes the model")
+    if door:
+        return 1
+    print(f"module table matches the includes of {len(code)} folders; only the owner writes the model; "
+          "JSON parsed through the one door")
     return 0
 
 

@@ -21,6 +21,7 @@
 #include "live/station_socket.h"
 #include "cli/options.h"
 #include "live/status.h"
+#include "util/json_limits.h"
 
 namespace tb::app {
 namespace {
@@ -337,7 +338,8 @@ int run_status(const std::vector<std::string>& args) {
   }
   const auto text = read_to_end(fd);
   ::close(fd);
-  const nlohmann::json doc = text ? nlohmann::json::parse(*text, nullptr, false) : nlohmann::json();
+  std::string why;
+  const nlohmann::json doc = text ? json_limits::parse_bounded<nlohmann::json>(*text, why) : nlohmann::json();
   if (!doc.is_object() || !doc.contains("antenna")) {
     std::fprintf(stderr, "trakbox status: %s: no status from the station%s\n", a->socket.c_str(),
                  text && !text->empty() ? (" (it said: " + text->substr(0, 200) + ")").c_str() : "");

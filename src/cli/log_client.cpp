@@ -14,6 +14,7 @@
 #include "logbook/logbook.h"
 #include "store/state_file.h"
 #include "tracker/elements_refresh.h"
+#include "util/json_limits.h"
 
 namespace tb::app {
 
@@ -155,7 +156,8 @@ int run_log(const std::vector<std::string>& args) {
                 std::to_string(line.size() + 1) + " bytes, more than the " + std::to_string(kMaxRequestBytes) +
                 " (" + std::to_string(kMaxRequestBytes >> 20) + " MiB) the station's socket takes: split the file");
   const auto text = station_request(socket, "log", line, not_running);
-  if (text) return show(action, json::parse(*text, nullptr, false), o);
+  std::string why;
+  if (text) return show(action, json_limits::parse_bounded<json>(*text, why), o);
   if (!not_running) return kExitFailure;
   if (action == "add") return fail("add: no station is running to take the pass from (start trakbox first)");
   if (!std::filesystem::exists(state_dir + "/logbook.sqlite")) return fail(state_dir + ": no logbook.sqlite there");

@@ -79,11 +79,12 @@ constexpr std::size_t kMaxHelloText = 64;  // a terminal type or a tty name
 std::optional<AttachHello> parse_attach_hello(std::string_view text, std::string& error) {
   AttachHello h;
   if (text.find_first_not_of(" \t") == std::string_view::npos) return h;  // a bare "attach"
-  if (json_limits::too_deep(text, 4)) {
+  std::string why;
+  const nlohmann::json j = json_limits::parse_bounded<nlohmann::json>(text, why, 4);
+  if (why.starts_with("nested")) {
     error = "the greeting is nested too deep";
     return std::nullopt;
   }
-  const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
   if (j.is_discarded() || !j.is_object()) {
     error = "the greeting is not a JSON object";
     return std::nullopt;

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/post.hpp>
@@ -19,6 +20,7 @@
 #include "store/model.h"
 #include "tracker/log_ops.h"
 #include "tracker/station_loop.h"
+#include "util/redact.h"
 #include "util/text.h"
 
 namespace tb::app {
@@ -131,8 +133,8 @@ struct LoggerUpload::Impl {
 
   void post_radio(const logbook::RadioState& r, std::int64_t t) {
     send(logbook::radio_url(s.spec), logbook::radio_body(s.key, r), [this, r, t](const download::DownloadResult& res) {
-      const logbook::ReplyVerdict v =
-          res.ok ? logbook::judge_radio_reply(res.status, res.body) : logbook::ReplyVerdict{false, false, res.error};
+      const logbook::ReplyVerdict v = res.ok ? logbook::judge_radio_reply(res.status, res.body, s.key)
+                                             : logbook::ReplyVerdict{false, false, redact::secret(res.error, s.key)};
       if (v.accepted) {
         posted = logbook::RadioPosted{r, t};
         status().last_radio_post = orbit::format_iso8601(station.now());
@@ -150,15 +152,20 @@ struct LoggerUpload::Impl {
   void post_qso(const logbook::Qso& q, int attempts) {
     const std::int64_t id = q.id;
     const std::string who = "QSO " + std::to_string(id) + " (" + q.call + ")";
-    send(logbook::qso_url(s.spec), logbook::qso_body(s.key, s.station_id, q),
-         [this, id, who, attempts](const download::DownloadResult& res) {
-           const logbook::ReplyVerdict v =
-               res.ok ? logbook::judge_qso_reply(res.status, res.body) : logbook::ReplyVerdict{false, false, res.error};
+    std::vector<std::string> changed;  // fields whose '<' or '>' the logger's ADIF parser could not take
+    std::string body = logbook::qso_body(s.key, s.station_id, q, &changed);
+    std::string note;
+    for (const std::string& f : changed) note += (note.empty() ? "" : ", ") + f;
+    if (!note.empty()) note = " ('<' and '>' in " + note + " sent as '(' and ')': the logger's ADIF parser ends a record at <eor>)";
+    send(logbook::qso_url(s.spec), std::move(body),
+         [this, id, who, attempts, note](const download::DownloadResult& res) {
+           const logbook::ReplyVerdict v = res.ok ? logbook::judge_qso_reply(s.spec.kind, res.status, res.body, s.key)
+                                                  : logbook::ReplyVerdict{false, false, redact::secret(res.error, s.key)};
            if (!logging.book) return;
            if (v.accepted) {
              logging.book->upload_done(id);
              status().last_upload = orbit::format_iso8601(station.now());
-             spdlog::info("logger: {} uploaded{}", who, v.duplicate ? " (the logger had it already)" : "");
+             spdlog::info("logger: {} uploaded{}{}", who, v.duplicate ? " (the logger had it already)" : "", note);
              status().problem.reset();
              return;
            }

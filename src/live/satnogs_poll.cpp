@@ -114,6 +114,13 @@ std::unique_ptr<SatnogsPoll> start_satnogs(StationApp& app, std::optional<int> r
   }
   log.info("satnogs: reading the jobs of station {} every {} minutes", sh.satnogs_station,
            tracker::kSatnogsPollSeconds / 60);
+  if (const std::string& u = sh.satnogs_url; u.find('@') != std::string::npos &&
+                                              u.find('@') < u.find_first_of("/?#", u.find("://") + 3)) {
+    const char* why = "--satnogs-url: the user and password in the URL are not used: the jobs are read anonymously "
+                      "(docs/security.md)";
+    log.warn("{}", why);
+    std::fprintf(stderr, "trakbox: WARNING: %s\n", why);
+  }
   return std::make_unique<SatnogsPoll>(app.io(), app.station(),
                                        sh.satnogs_url.empty() ? tracker::kSatnogsNetworkUrl : sh.satnogs_url,
                                        sh.satnogs_station, timeout);

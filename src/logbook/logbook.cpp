@@ -1,5 +1,7 @@
 #include "logbook/logbook.h"
 
+#include <sys/stat.h>
+
 #include <sqlite3.h>
 
 #include <set>
@@ -128,10 +130,25 @@ bool Logbook::migrate(std::string& error) {
 }
 
 std::unique_ptr<Logbook> Logbook::open(const std::string& path, std::string& error) {
+  // A link is never followed (docs/security.md): the file, and its -wal and -shm beside it, would
+  // be written wherever the link points. Looked at first for a clear refusal; SQLITE_OPEN_NOFOLLOW
+  // holds against a link made between the look and the open.
+  constexpr const char* kLink = "is a symbolic link: trakbox does not follow links in its state directory; "
+                                "move the logbook there as a file";
+  for (const char* suffix : {"", "-wal", "-shm"}) {
+    struct stat st {};
+    if (::lstat((path + suffix).c_str(), &st) == 0 && S_ISLNK(st.st_mode)) {
+      error = path + suffix + ": " + kLink;
+      return nullptr;
+    }
+  }
   sqlite3* db = nullptr;
-  if (sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOMUTEX,
+  if (sqlite3_open_v2(path.c_str(), &db,
+                      SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOMUTEX | SQLITE_OPEN_NOFOLLOW,
                       nullptr) != SQLITE_OK) {
-    error = path + ": " + (db ? sqlite3_errmsg(db) : "cannot open");
+    error = path + ": " + (db && sqlite3_extended_errcode(db) == SQLITE_CANTOPEN_SYMLINK ? kLink
+                           : db                                                     ? sqlite3_errmsg(db)
+                                                                                    : "cannot open");
     sqlite3_close(db);
     return nullptr;
   }

@@ -3,18 +3,25 @@
 // endpoints, the radio-state body and when to post it, the QSO body (one ADIF record), how to read
 // the logger's reply, and the retry backoff. No I/O here: live/logger_upload.h sends them.
 //
-// What the replies mean comes from the loggers' own code (application/controllers/Api.php):
-//  - api/qso: Cloudlog answers 201 {"status":"created", ..., "imported_count":N, "messages":[...]}
-//    where N counts the records stored and each refused record leaves a message (a duplicate's
-//    ends in "Duplicate"); Wavelog answers the same 201 but counts the records it read before
-//    storing them and leaves messages [""]. A bad key or station profile is 401 {"status":"failed",
-//    "reason":...}; JSON it cannot decode is {"status":"failed","reason":"wrong JSON"} (status 200).
-//  - api/radio: {"status":"success"}; 401 {"status":"failed","reason":"missing api key"}; Wavelog
-//    404 "missing radio element in payload".
+// What the replies mean comes from the loggers' own code (application/controllers/Api.php), one
+// rule per logger:
+//  - Cloudlog's api/qso: 201 {"status":"created", ..., "imported_count":N, "messages":[...]} where N
+//    counts the records stored and each refused record leaves a message (a duplicate's ends in
+//    "Duplicate").
+//  - Wavelog's api/qso (2.0.5): 201 {"status":"created","adif_count":N,"adif_errors":0,
+//    "messages":[""]} when stored; any record refused is 400 {"status":"abort","adif_count":N,
+//    "adif_errors":E,"messages":["", the refusals]}, a duplicate's "... Duplicate for <call>".
+//  - Both: a bad key or station profile is 401 {"status":"failed","reason":...}; JSON it cannot
+//    decode is {"status":"failed","reason":"wrong JSON"} (status 200).
+//  - api/radio: {"status":"success"} (200, or 201); 401 {"status":"failed","reason":"missing api
+//    key"}; Wavelog 404 "missing radio element in payload".
+// A reply is read under json_limits' nesting bound and its members by reference; any text taken
+// from it has the key redacted before it is cut to a line.
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "logbook/qso.h"
 
@@ -72,19 +79,26 @@ struct RadioPosted {
 // and every kRadioRepostSeconds while tracking; once when tracking ends; never while idle.
 bool radio_post_due(const std::optional<RadioPosted>& last, const RadioState& now_state, std::int64_t now);
 
-// {"key","station_profile_id":"N","type":"adif","string":"<one ADIF record>"}.
-std::string qso_body(std::string_view key, int station_profile_id, const Qso& q);
+// The record as a logger may read it: Cloudlog's and Wavelog's Adif_parser.php split the text on
+// "<eor>" before they read any length, so no text field may hold '<' (nor '>', for symmetry):
+// each becomes '(' or ')'. `changed` gets the ADIF names of the fields that were changed.
+Qso for_logger(Qso q, std::vector<std::string>* changed = nullptr);
+
+// {"key","station_profile_id":"N","type":"adif","string":"<one ADIF record>"}, of for_logger(q).
+std::string qso_body(std::string_view key, int station_profile_id, const Qso& q,
+                     std::vector<std::string>* changed = nullptr);
 
 struct ReplyVerdict {
   bool accepted = false;
-  bool duplicate = false;   // the logger already has the record (Cloudlog's "Duplicate")
-  std::string message;      // why not accepted: the logger's words, one line
+  bool duplicate = false;   // the logger already has the record (its "Duplicate")
+  std::string message;      // why not accepted: the logger's words, one line, `secret` redacted
 };
-// api/qso's reply to one record: accepted only when it says the record was created and imported
-// with no message; a duplicate is accepted (the logger has it: an upload whose answer was lost).
-ReplyVerdict judge_qso_reply(long http_status, std::string_view body);
-// api/radio's reply: accepted on {"status":"success"}.
-ReplyVerdict judge_radio_reply(long http_status, std::string_view body);
+// api/qso's reply to one record, by the rule of `kind`: accepted only when it says the record was
+// stored; a duplicate is accepted (the logger has it: an upload whose answer was lost). `secret`
+// (the key) is redacted from the message.
+ReplyVerdict judge_qso_reply(LoggerKind kind, long http_status, std::string_view body, std::string_view secret = {});
+// api/radio's reply: accepted on {"status":"success"} with a 2xx status.
+ReplyVerdict judge_radio_reply(long http_status, std::string_view body, std::string_view secret = {});
 
 // Seconds to wait after the n-th failure in a row (n >= 1): 30, 60, 120, ... at most 1800.
 std::int64_t upload_backoff_s(int failures);

@@ -39,6 +39,25 @@ const Band* band_at(std::int64_t hz) {
   return nullptr;
 }
 
+// ADIF 3.1.4's Mode enumeration (the MODE field; SUBMODEs such as USB, FT4 or C4FM belong to one).
+constexpr std::array<std::string_view, 46> kModes{
+    "AM",     "ARDOP",  "ATV",   "CHIP",  "CLO",    "CONTESTI", "CW",     "DIGITALVOICE", "DOMINO", "DYNAMIC",
+    "FAX",    "FM",     "FSK441", "FT8",  "HELL",   "ISCAT",    "JT4",    "JT6M",         "JT9",    "JT44",
+    "JT65",   "MFSK",   "MSK144", "MT63", "OLIVIA", "OPERA",    "PAC",    "PAX",          "PKT",    "PSK",
+    "PSK2K",  "Q15",    "QRA64",  "ROS",  "RTTY",   "RTTYM",    "SSB",    "SSTV",         "T10",    "THOR",
+    "THRB",   "TOR",    "V4",     "VOI",  "WINMOR", "WSPR"};
+
+// The mode a well-known SUBMODE belongs to ("" for none), for the refusal's hint.
+std::string_view mode_of_submode(std::string_view m) {
+  for (const std::string_view s : {"FT4", "FST4", "JS8", "Q65", "FSQCALL", "JTMS"})
+    if (m == s) return "MFSK";
+  for (const std::string_view s : {"C4FM", "DMR", "DSTAR", "FREEDV", "M17"})
+    if (m == s) return "DIGITALVOICE";
+  for (const std::string_view s : {"PSK31", "PSK63", "PSK125", "BPSK31", "QPSK31"})
+    if (m == s) return "PSK";
+  return {};
+}
+
 bool printable_ascii(std::string_view s) {
   for (const char c : s)
     if (c < 0x20 || c > 0x7e) return false;
@@ -114,7 +133,7 @@ Qso normalized(Qso q) {
     for (std::size_t i = 0; i < s.size(); ++i) s[i] = (i >= 4 && i < 6) ? text::to_lower(s[i]) : text::to_upper(s[i]);
     *g = s;
   }
-  q.mode = text::upper(text::trim(q.mode, text::kWhitespace));
+  q.mode = adif_mode(q.mode);
   if (q.band.empty()) q.band = band_of(q.uplink_hz);
   if (q.band_rx.empty()) q.band_rx = band_of(q.downlink_hz);
   return q;
@@ -135,6 +154,7 @@ std::optional<std::string> check_qso(const Qso& q) {
   if (q.time_on < 0 || q.time_on > days_from_civil(10000, 1, 1) * 86400)
     return std::string("time_on: not a time between 1970 and 9999");
   if (q.mode == "SAT") return std::string("mode: the emission (FM, SSB, CW), not SAT");
+  if (auto e = check_mode(q.mode)) return e;
   for (const auto& [name, value] : {std::pair<const char*, const std::string*>{"mode", &q.mode},
                                     {"sat_name", &q.sat_name}, {"lotw_name", &q.lotw_name},
                                     {"note", &q.note}}) {
@@ -150,6 +170,21 @@ std::optional<std::string> check_qso(const Qso& q) {
     if (!b->empty() && !band_edges(*b)) return std::string(name) + ": '" + *b + "' is not an ADIF band";
   if (!(q.power_w >= 0 && q.power_w <= 100000)) return std::string("power: 0 to 100000 W");
   return std::nullopt;
+}
+
+bool is_adif_mode(std::string_view mode) {
+  for (const std::string_view m : kModes)
+    if (m == mode) return true;
+  return false;
+}
+
+std::optional<std::string> check_mode(std::string_view mode) {
+  if (mode.empty() || is_adif_mode(mode)) return std::nullopt;
+  const std::string shown = printable_ascii(mode) && mode.size() <= 40 ? std::string(mode) : std::string("that text");
+  const std::string_view parent = mode_of_submode(mode);
+  if (!parent.empty())
+    return "mode: '" + shown + "' is a submode in ADIF; log it as " + std::string(parent);
+  return "mode: '" + shown + "' is not one of ADIF's modes (FM, SSB, CW, AM, FT8, MFSK, PSK, RTTY, SSTV, DIGITALVOICE, ...)";
 }
 
 std::string band_of(std::int64_t hz) {

@@ -39,10 +39,16 @@ std::optional<Source> source_from_name(std::string_view name);
 std::optional<std::string> check_callsign(std::string_view field, std::string_view call);
 std::optional<std::string> check_grid(std::string_view field, std::string_view grid);
 std::optional<std::string> check_rst(std::string_view field, std::string_view rst);
+// The mode against ADIF's Mode enumeration ("" allowed: not known); the refusal names the field
+// ("mode: 'FT4' is a submode in ADIF; log it as MFSK"). What goes to a logger or a file is then
+// one of the names its parser knows (and never text that could end a record).
+bool is_adif_mode(std::string_view mode);
+std::optional<std::string> check_mode(std::string_view mode);
 // The whole record (after normalize): the first problem, naming its field.
 std::optional<std::string> check_qso(const Qso& q);
 
-// Upper-case calls, grids as "FN31pr", bands filled from the frequencies when empty.
+// Upper-case calls, grids as "FN31pr", the mode as adif_mode has it (USB -> SSB), bands filled from
+// the frequencies when empty.
 Qso normalized(Qso q);
 
 // The ADIF band of a frequency ("2m", "70cm", "13cm"); "" outside every amateur band.

@@ -146,27 +146,24 @@ std::string_view without_units(std::string_view v) {
 ParseResult parse_omm_json(std::string_view text, std::string_view file_name) {
   ParseResult r;
   if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
-  if (json_limits::too_deep(text)) {
+  std::string why;
+  json_limits::ParseFailure failed;
+  const nlohmann::json doc = json_limits::parse_bounded<nlohmann::json>(text, why, json_limits::kMaxDepth, &failed);
+  if (failed.too_deep) {
     r.problems.push_back(detail::make_problem(file_name, 1, 0, "JSON", std::string(text.substr(0, 20)),
                                               "JSON nested at most " + std::to_string(json_limits::kMaxDepth) +
                                                   " levels deep (an OMM document has 2)"));
     return r;
   }
-  nlohmann::json doc;
-  try {
-    doc = nlohmann::json::parse(text.begin(), text.end());
-  } catch (const nlohmann::json::parse_error& e) {
-    const std::size_t at = e.byte > 0 ? e.byte - 1 : 0;
-    std::string what = e.what();
-    if (const auto colon = what.rfind(": "); colon != std::string::npos) what = what.substr(colon + 2);
+  if (failed.located) {
+    const std::size_t at = failed.byte > 0 ? failed.byte - 1 : 0;
     r.problems.push_back(detail::make_problem(file_name, detail::line_of_offset(text, at), 0, "JSON",
                                               std::string(text.substr(std::min(at, text.size()), 20)),
-                                              "JSON text (" + what + ")"));
+                                              "JSON text (" + failed.what + ")"));
     return r;
-  } catch (const nlohmann::json::exception& e) {  // e.g. a number beyond double: out_of_range
-    std::string what = e.what();
-    if (const auto colon = what.rfind("] "); colon != std::string::npos) what = what.substr(colon + 2);
-    r.problems.push_back(detail::make_problem(file_name, 0, 0, "JSON", "", "JSON text (" + what + ")"));
+  }
+  if (doc.is_discarded()) {  // e.g. a number beyond double: out_of_range
+    r.problems.push_back(detail::make_problem(file_name, 0, 0, "JSON", "", "JSON text (" + failed.what + ")"));
     return r;
   }
   const std::vector<std::size_t> offsets = json_object_offsets(text);

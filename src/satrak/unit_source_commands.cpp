@@ -187,8 +187,9 @@ Unit::Reply Unit::cmd_load_image(const Command& c) {
   const std::string text = read_small_file(path, too_big);
   if (too_big) return fail(Error::invalid_file, "larger than 4 MiB");
   // The image is a state document: format, checksum, then every field of the data.
-  if (json_limits::too_deep(text)) return fail(Error::invalid_file, "JSON nested too deep");
-  const nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
+  std::string why;
+  const nlohmann::json doc = json_limits::parse_bounded<nlohmann::json>(text, why);
+  if (why.starts_with("nested")) return fail(Error::invalid_file, "JSON nested too deep");
   if (doc.is_discarded() || !doc.is_object()) return fail(Error::invalid_file, "not a JSON document");
   if (doc.value("format", "") != "trakbox-state") return fail(Error::invalid_file, "not a trakbox state document");
   if (!doc.contains("data") || !doc.contains("checksum") || !doc["checksum"].is_string())

@@ -56,12 +56,13 @@ std::string mhz(radio::Hz h) { return radio::format_mhz(h); }
 
 SatnogsImport import_satnogs(Database& db, std::string_view json_text, bool replace) {
   SatnogsImport r;
-  if (json_limits::too_deep(json_text)) {
+  std::string why;
+  const json list = json_limits::parse_bounded<json>(json_text, why);
+  if (why.starts_with("nested")) {
     r.error = "not a SatNOGS transmitter list (JSON nested deeper than " + std::to_string(json_limits::kMaxDepth) +
               " levels)";
     return r;
   }
-  const json list = json::parse(json_text, nullptr, false);
   if (list.is_discarded() || !list.is_array()) {
     r.error = "not a SatNOGS transmitter list (expected a JSON array of transmitters)";
     return r;

@@ -180,13 +180,14 @@ LoadOutcome StateFile::load(bool read_only) const {
 
   // Copying, comparing and dump() recurse once per level of nesting: a document nested deeper than
   // any trakbox writes is refused before it is parsed.
-  if (json_limits::too_deep(text))
+  std::string why;
+  nlohmann::json doc = json_limits::parse_bounded<nlohmann::json>(text, why);
+  if (why.starts_with("nested"))
     return corrupt(file.string() + ": nested more than " + std::to_string(json_limits::kMaxDepth) +
                    " levels deep, which no trakbox state document is");
 
   // Every member is checked for its type before it is read: a document of the wrong shape (say
   // {"format":{}}) is a corrupt file like any other, never an exception.
-  nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
   if (doc.is_discarded() || !doc.is_object()) return corrupt(file.string() + ": not a JSON document");
   const auto format = doc.find("format");
   if (format == doc.end() || !format->is_string() || *format != "trakbox-state")

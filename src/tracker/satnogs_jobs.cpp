@@ -9,8 +9,18 @@
 
 namespace tb::tracker {
 
+// The request is anonymous (a read with the owner's token is the station's heartbeat): a user or
+// password written in --satnogs-url ("http://bob:PW@host") is dropped here, so that it is neither
+// sent (libcurl would make it Basic auth) nor shown (status' and the live feed's satnogs.url are
+// this URL). Issue 56 item 10; docs/security.md.
 std::string satnogs_jobs_url(const std::string& base, int station_id) {
   std::string b = base;
+  if (const auto scheme = b.find("://"); scheme != std::string::npos) {
+    const std::size_t authority = scheme + 3;
+    const std::size_t end = b.find_first_of("/?#", authority);
+    const std::size_t at = b.rfind('@', end == std::string::npos ? std::string::npos : end - 1);
+    if (at != std::string::npos && at >= authority) b.erase(authority, at + 1 - authority);
+  }
   while (!b.empty() && b.back() == '/') b.pop_back();
   return b + "/api/jobs/?ground_station=" + std::to_string(station_id);
 }
@@ -27,11 +37,12 @@ std::optional<std::string> string_of(const nlohmann::json& job, const char* key)
 
 SatnogsJobs parse_satnogs_jobs(const std::string& body, orbit::UtcTime now) {
   SatnogsJobs out;
-  if (json_limits::nesting_depth(body) > json_limits::kMaxDepth) {
+  std::string why;
+  const nlohmann::json j = json_limits::parse_bounded<nlohmann::json>(body, why);
+  if (why.starts_with("nested")) {
     out.error = "the jobs answer is nested too deep";
     return out;
   }
-  const nlohmann::json j = nlohmann::json::parse(body, nullptr, false);
   if (j.is_discarded() || !j.is_array()) {
     out.error = "the jobs answer is not a JSON list";
     return out;

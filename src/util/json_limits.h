@@ -3,7 +3,12 @@
 // settings). nlohmann::json parses without recursion, but copying, comparing and dump() recurse once
 // per level: a document nested 100,000 deep parses and then overflows the stack. Every reader of
 // outside JSON checks the nesting with this scanner (iterative, linear, no allocation) first.
+// The one door is parse_bounded: every parse of text from outside goes through it (a logger's
+// reply, SatNOGS and element answers, web bodies and WebSocket messages, Satrak settings, the
+// attach greeting, the station socket's replies); scripts/check-architecture.py fails on a
+// json::parse anywhere else but the few files it lists (text trakbox wrote itself).
 #include <cstddef>
+#include <string>
 #include <string_view>
 
 namespace tb::json_limits {
@@ -45,6 +50,45 @@ inline std::size_t nesting_depth(std::string_view text, std::size_t stop_after =
 
 inline bool too_deep(std::string_view text, std::size_t max_depth = kMaxDepth) {
   return nesting_depth(text, max_depth) > max_depth;
+}
+
+// What a refused parse was, for a reader that locates its problems (the OMM reader names the line).
+struct ParseFailure {
+  bool too_deep = false;
+  bool located = false;   // `byte` is where the syntax failed (1-based, as the library counts)
+  std::size_t byte = 0;
+  std::string what;       // the library's words without its prefix ("syntax error while parsing ...")
+};
+
+// `text` parsed as JSON (nlohmann::json or ordered_json: a template so that this header needs no
+// JSON header) after the nesting check. On a refusal the result is discarded (is_discarded()) and
+// `error` one sentence: "nested deeper than 64 levels" or "not JSON (at byte N)". Never throws for
+// the text.
+template <class Json>
+Json parse_bounded(std::string_view text, std::string& error, std::size_t max_depth = kMaxDepth,
+                   ParseFailure* failure = nullptr) {
+  error.clear();
+  ParseFailure f;
+  if (too_deep(text, max_depth)) {
+    f.too_deep = true;
+    error = "nested deeper than " + std::to_string(max_depth) + " levels";
+  } else {
+    try {
+      return Json::parse(text.begin(), text.end());
+    } catch (const typename Json::parse_error& e) {
+      f.located = true;
+      f.byte = e.byte;
+      f.what = e.what();
+      if (const auto colon = f.what.rfind(": "); colon != std::string::npos) f.what = f.what.substr(colon + 2);
+      error = "not JSON (at byte " + std::to_string(e.byte) + ")";
+    } catch (const typename Json::exception& e) {  // a number beyond double: out_of_range
+      f.what = e.what();
+      if (const auto bracket = f.what.rfind("] "); bracket != std::string::npos) f.what = f.what.substr(bracket + 2);
+      error = "not JSON (" + f.what + ")";
+    }
+  }
+  if (failure) *failure = std::move(f);
+  return Json(Json::value_t::discarded);
 }
 
 }  // namespace tb::json_limits

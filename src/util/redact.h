@@ -81,6 +81,33 @@ inline std::string password_commands(std::string_view text) {
   return out;
 }
 
+// Every occurrence of a secret trakbox holds (the logger's API key) in `text`, in any case,
+// replaced by <redacted>: for what an outside server's reply quotes back (a 401 naming the key
+// it refused) before it is logged or shown. A secret shorter than 4 characters is no key and is
+// left alone (it would redact ordinary words).
+inline std::string secret(std::string_view text, std::string_view secret_value) {
+  if (secret_value.size() < 4 || text.size() < secret_value.size()) return std::string(text);
+  std::string out;
+  std::size_t from = 0;
+  for (std::size_t i = 0; i + secret_value.size() <= text.size();) {
+    bool same = true;
+    for (std::size_t k = 0; k < secret_value.size() && same; ++k)
+      same = std::tolower(static_cast<unsigned char>(text[i + k])) ==
+             std::tolower(static_cast<unsigned char>(secret_value[k]));
+    if (!same) {
+      ++i;
+      continue;
+    }
+    out.append(text.substr(from, i - from));
+    out.append(kRedacted);
+    i += secret_value.size();
+    from = i;
+  }
+  if (from == 0) return std::string(text);
+  out.append(text.substr(from));
+  return out;
+}
+
 // Both: what a log line or an echoed setting is written as.
 inline std::string text(std::string_view t) { return password_commands(url_credentials(t)); }
 

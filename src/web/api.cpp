@@ -229,8 +229,9 @@ Response Api::route(const Request& r, const Grant& g) {
   if (r.body.size() > kMaxBody) return error(413, "the request body is over 16 kB");
   const std::string type = text::lower(text::trim(r.content_type.substr(0, r.content_type.find(';')), text::kWhitespace));
   if (type != "application/json") return error(415, "the body must be JSON (Content-Type: application/json)");
-  if (json_limits::nesting_depth(r.body) > json_limits::kMaxDepth) return error(400, "the JSON body is nested too deep");
-  const json body = r.body.empty() ? json::object() : json::parse(r.body, nullptr, false);
+  std::string why;
+  const json body = r.body.empty() ? json::object() : json_limits::parse_bounded<json>(r.body, why);
+  if (why.starts_with("nested")) return error(400, "the JSON body is nested too deep");
   if (body.is_discarded()) return error(400, "the body is not valid JSON");
   if (!body.is_object()) return error(400, "the body must be a JSON object");
   if (is_log_path(path)) {
@@ -240,7 +241,7 @@ Response Api::route(const Request& r, const Grant& g) {
   }
   Response res = post(path, body, r.peer);
   // Every change asked from the page, logged with who asked and what came of it.
-  const json reply = json::parse(res.body, nullptr, false);
+  const json reply = json_limits::parse_bounded<json>(res.body, why);
   const std::string said = reply.is_object() ? reply.value("note", reply.value("error", std::string())) : std::string();
   spdlog::info("web: {} {} from {}: {} {}", path, printable(body.dump(-1, ' ', true, json::error_handler_t::replace), 120),
                printable(r.peer, 60), res.status, printable(said, 160));

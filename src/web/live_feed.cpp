@@ -84,8 +84,9 @@ void LiveFeed::forget() {
 }
 
 bool LiveFeed::asks_full(std::string_view message) {
-  if (message.size() > 256 || json_limits::nesting_depth(message) > 2) return false;
-  const json j = json::parse(message, nullptr, false);
+  if (message.size() > 256) return false;
+  std::string why;
+  const json j = json_limits::parse_bounded<json>(message, why, 2);
   if (!j.is_object()) return false;
   const auto type = j.find("type");
   return type != j.end() && type->is_string() && type->get_ref<const std::string&>() == "full";

@@ -9,7 +9,14 @@ page's API and `trakbox log add`); the logger answers 500, then refuses connecti
 `status --json`; the station is killed with SIGKILL and restarted, the logger comes back, and it
 holds every QSO exactly once; a fourth QSO the logger stores but whose answer is lost is sent again,
 answered "Duplicate", and counted done. The key is never in the station's log, its state file or
-status."""
+status.
+Then the same stand-in answers as Wavelog 2.0.5 does (issue 60: 201 with adif_count and adif_errors,
+messages [""]; a duplicate is 400 "abort" with "Duplicate for <call>"), splitting the ADIF string on
+<eor> before anything else as Adif_parser.php does (issue 56 item 11): a first answer 401 quotes the key
+(issue 56 item 9: redacted in status, the log and standard error), a note holding
+"<eor><call:5>EVIL1" arrives as one record, a QSO whose answer is lost is counted done on the
+400 duplicate, the queue drains to 0 with no problem, and after a SIGKILL and a restart nothing is
+sent again."""
 import datetime
 import http.server
 import json
@@ -20,6 +27,7 @@ import stat
 import sys
 import tempfile
 import threading
+import time
 
 sys.path.insert(0, os.path.dirname(__file__))
 from _tbharness import BIN, CLOCK, SOURCE, Failure, check, free_port, poll, read_log, run_test, sh  # noqa: E402
@@ -56,6 +64,8 @@ class Logger:
 
     def __init__(self):
         self.mode = "ok"
+        self.flavour = "cloudlog"  # or "wavelog": how api/qso answers
+        self.records_read = 0      # the records the Wavelog stand-in split the strings into
         self.radio = []      # the radio posts accepted, in order
         self.qsos = []       # the records stored
         self.qso_posts = 0   # every api/qso request that reached the server
@@ -106,6 +116,8 @@ class Handler(http.server.BaseHTTPRequestHandler):
                 return self.reply(401, {"status": "failed", "reason": "station id does not belong to the API key owner."})
             if obj.get("type") != "adif" or not obj.get("string"):
                 return self.reply(200, {"status": "failed", "reason": "not adif"})
+            if LOG.flavour == "wavelog":
+                return self.wavelog_qso(obj)
             rec = adif_fields(obj["string"])
             if not rec.get("call", "").strip():
                 return self.reply(401, {"status": "failed", "reason": "QSO Call is empty."})
@@ -125,6 +137,38 @@ class Handler(http.server.BaseHTTPRequestHandler):
                 return
             return self.reply(201, {"status": "created", "type": "adif", "string": obj["string"],
                                     "imported_count": 1, "messages": []})
+
+    def wavelog_qso(self, obj):
+        """Wavelog 2.0.5's Api.php qso(): the string split on <eor> (any case) into records first,
+        each stored with import_bulk; 201 with adif_count/adif_errors, or 400 "abort" naming each
+        refusal (a duplicate: same call, minute of TIME_ON, band and mode)."""
+        if LOG.mode == "quote-key":
+            return self.reply(401, {"status": "failed", "reason": f"the key '{KEY}' is not valid for this station"})
+        parts = [p for p in re.split(r"(?i)<eor>", obj["string"]) if p.strip()]
+        records = [adif_fields(p) for p in parts]
+        LOG.records_read += len(records)
+        msgs, stored = [""], 0
+        for rec in records:
+            same = [q for q in LOG.qsos if (q["call"], q["qso_date"], q["time_on"][:4], q["band"], q["mode"]) ==
+                    (rec.get("call"), rec.get("qso_date"), rec.get("time_on", "")[:4], rec.get("band"), rec.get("mode"))]
+            if same:
+                msgs.append(f"Date/Time: {rec.get('qso_date')} {rec.get('time_on')} Callsign: {rec.get('call')} "
+                            f"Band: {rec.get('band')} Duplicate for WA7GXD<br>")
+                continue
+            LOG.qsos.append(rec)
+            stored += 1
+        if LOG.mode == "lose-reply" and stored:
+            LOG.mode = "ok"
+            self.send_response(502)
+            self.send_header("Content-Length", "0")
+            self.end_headers()
+            return
+        errors = len(msgs) - 1
+        if errors:
+            return self.reply(400, {"status": "abort", "type": "adif", "string": "", "adif_count": len(records),
+                                    "adif_errors": errors, "messages": msgs})
+        return self.reply(201, {"status": "created", "type": "adif", "string": "", "adif_count": len(records),
+                                "adif_errors": 0, "messages": [""]})
 
     def log_message(self, *a):
         pass
@@ -260,6 +304,78 @@ def main():
     check(keyfile in state, "the key file's path is stored")
     check("logger: QSO 2 (K1JT) uploaded" in log and "logger: QSO 1 (W1AW) uploaded" in log, "uploads are logged")
     print(f"{len(LOG.radio)} radio posts, {LOG.qso_posts} QSO posts for 4 QSOs")
+    wavelog(keyfile_again())
+
+
+def keyfile_again():
+    keydir = tempfile.mkdtemp(prefix="trakbox-logger-key-")
+    keyfile = os.path.join(keydir, "wavelog.key")
+    with open(keyfile, "w") as f:
+        f.write(KEY + "\n")
+    os.chmod(keyfile, stat.S_IRUSR | stat.S_IWUSR)
+    return keyfile
+
+
+def logger_state(w):
+    return w.status()["log"]["logger"]
+
+
+def wavelog(keyfile):
+    """Issue 60 item 1 and issue 56 items 9 and 11 against the Wavelog stand-in."""
+    LOG.__init__()
+    LOG.flavour = "wavelog"
+    LOG.mode = "quote-key"
+    port = free_port()
+    srv = serve(port)
+    w = WebStation("--station", STATION, "--logger", f"wavelog:http://127.0.0.1:{port}", "--logger-key-file",
+                   keyfile, "--logger-station-id", PROFILE, rate=str(RATE))
+    stderr = ""
+    try:
+        status, r = w.post("/api/v1/log", {"call": "DL1ABC", "grid": "JN58", "sat": "ISS",
+                                           "note": "hi <eor><call:5>EVIL1 <eor>"})
+        check(status == 200 and r["ok"], f"Wavelog QSO 1: {status} {r}")
+        st = poll("the 401 quoting the key as a problem", lambda: (lambda s: s if s["log"]["logger"]["problem"] else None)(
+            w.status()), 30)
+        problem = st["log"]["logger"]["problem"]
+        check("HTTP 401: the key '<redacted>' is not valid" in problem and KEY not in json.dumps(st),
+              f"the key redacted in status: {problem}")
+        # A mode that is not ADIF's is refused at entry, naming the field.
+        status, r = w.post("/api/v1/log", {"call": "G0ABC", "sat": "ISS", "mode": "FM<eor>"})
+        check(status != 200 and "mode: " in json.dumps(r), f"a mode outside ADIF's: {status} {r}")
+        LOG.mode = "ok"
+        poll("Wavelog QSO 1 stored and the queue empty",
+             lambda: len(LOG.qsos) == 1 and logger_state(w)["queue"] == 0 and logger_state(w)["problem"] is None, 60)
+        rec = LOG.qsos[0]
+        check(LOG.records_read == 1 and rec["call"] == "DL1ABC" and "EVIL1" not in [q["call"] for q in LOG.qsos] and
+              rec.get("comment") == "hi (eor)(call:5)EVIL1 (eor)", f"one record, the note's '<' sent as '(': {LOG.qsos}")
+        # Stored, the answer lost: the retry meets the 400 duplicate, which is done.
+        LOG.mode = "lose-reply"
+        status, r = w.post("/api/v1/log", {"call": "OK1XYZ", "grid": "JN79", "sat": "ISS"})
+        check(status == 200 and r["ok"], f"Wavelog QSO 3: {status} {r}")
+        poll("the duplicate counted done", lambda: "(OK1XYZ) uploaded (the logger had it already)" in read_log(w.state), 60)
+        st = logger_state(w)
+        check(st["kind"] == "wavelog" and st["queue"] == 0 and st["problem"] is None and
+              not [p for p in w.status()["problems"] if p.startswith("logger:")], f"drained, no problem: {st}")
+        check(sorted(q["call"] for q in LOG.qsos) == ["DL1ABC", "OK1XYZ"], f"each once: {LOG.qsos}")
+        # SIGKILL and a restart: nothing is sent again.
+        posts = LOG.qso_posts
+        w.proc.send_signal(signal.SIGKILL)
+        w.proc.wait(10)
+        stderr += w.proc.stderr.read().decode(errors="replace")
+        w.start()
+        poll("the restarted station's logger", lambda: w.status()["log"].get("logger"), 20)
+        time.sleep(3)  # a minute of the station's clock: its queue looked at 60 times
+        check(LOG.qso_posts == posts and len(LOG.qsos) == 2 and logger_state(w)["queue"] == 0,
+              f"nothing sent after the restart: {LOG.qso_posts - posts} posts, {LOG.qsos}")
+    finally:
+        stderr += w.stop()
+        srv.shutdown()
+        srv.server_close()
+    log = read_log(w.state)
+    check("the key '<redacted>' is not valid" in log, "the 401 is logged, redacted")
+    for where, text in (("the log", log), ("standard error", stderr)):
+        check(KEY not in text, f"the key is in {where}")
+    print(f"wavelog: {LOG.qso_posts} QSO posts, {len(LOG.qsos)} stored, {LOG.records_read} records read")
 
 
 if __name__ == "__main__":

@@ -151,6 +151,39 @@ TEST_CASE("A logbook of a newer schema is refused, not changed") {
   CHECK(err == t.path() + ": its schema version 99 is newer than this trakbox's (1)");
 }
 
+// Issue 56 item 12: logbook.sqlite was opened through a symbolic link, the QSO (and -wal, -shm)
+// written outside the state directory.
+TEST_CASE("A logbook that is a symbolic link (or whose -wal is) is refused, never followed") {
+  TempBook t;
+  const fs::path outside = t.dir / "outside";
+  fs::create_directories(outside);
+  fs::create_symlink(outside / "elsewhere.sqlite", t.path());
+  std::string err;
+  CHECK_FALSE(Logbook::open(t.path(), err));
+  CHECK(err == t.path() + ": is a symbolic link: trakbox does not follow links in its state directory; move the "
+                          "logbook there as a file");
+  CHECK_FALSE(fs::exists(outside / "elsewhere.sqlite"));
+  CHECK_FALSE(fs::exists(outside / "elsewhere.sqlite-wal"));
+  // A link to a logbook that exists is refused the same, and the target is left as it was.
+  fs::remove(t.path());
+  {
+    std::string e;
+    REQUIRE(Logbook::open((outside / "real.sqlite").string(), e));
+  }
+  const auto size = fs::file_size(outside / "real.sqlite");
+  fs::create_symlink(outside / "real.sqlite", t.path());
+  CHECK_FALSE(Logbook::open(t.path(), err));
+  CHECK(err.find("is a symbolic link") != std::string::npos);
+  CHECK(fs::file_size(outside / "real.sqlite") == size);
+  // The file itself, its -wal a link: refused naming the -wal.
+  fs::remove(t.path());
+  fs::create_symlink(outside / "stolen-wal", t.path() + "-wal");
+  CHECK_FALSE(Logbook::open(t.path(), err));
+  CHECK(err == t.path() + "-wal: is a symbolic link: trakbox does not follow links in its state directory; move "
+                          "the logbook there as a file");
+  CHECK_FALSE(fs::exists(outside / "stolen-wal"));
+}
+
 TEST_CASE("The cost of one insert with synchronous=FULL (one transaction, fsync in WAL)") {
   TempBook t;
   std::string err;

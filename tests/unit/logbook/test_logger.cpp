@@ -7,6 +7,10 @@
 #include "logbook/logger.h"
 #include "support/qso_samples.h"
 
+#include <cctype>
+#include <string>
+#include <vector>
+
 using namespace tb::logbook;
 
 TEST_CASE("--logger takes cloudlog:URL, wavelog:URL or none; a refusal names the option and the fault") {
@@ -93,50 +97,148 @@ TEST_CASE("The QSO's body: one ADIF record, no header") {
       "<TX_PWR:3>2.5 <COMMENT:17>first <RS-44> QSO <APP_TRAKBOX_SAT:5>RS-44 <APP_TRAKBOX_NORAD:5>44909 "
       "<APP_TRAKBOX_FREQ_TUNED:9>145962310 <APP_TRAKBOX_FREQ_RX_TUNED:9>435648070 <APP_TRAKBOX_SOURCE:3>web <EOR>\n";
   CHECK(adif_record(q) == record);
-  CHECK(qso_body("k3y", 2, q) == R"({"key":"k3y","station_profile_id":"2","type":"adif","string":")" +
-                                     record.substr(0, record.size() - 1) + R"(\n"})");
+  std::string sent = record.substr(0, record.size() - 1);  // what a logger gets: no '<' or '>' in the note
+  sent.replace(sent.find("first <RS-44> QSO"), 17, "first (RS-44) QSO");
+  CHECK(qso_body("k3y", 2, q) == R"({"key":"k3y","station_profile_id":"2","type":"adif","string":")" + sent +
+                                     R"(\n"})");
 }
 
-TEST_CASE("api/qso's replies as Cloudlog and Wavelog write them") {
-  // Cloudlog, one record stored.
-  CHECK(judge_qso_reply(201, R"({"status":"created","type":"adif","string":"<CALL:4>W1AW <EOR>","imported_count":1,"messages":[]})")
+TEST_CASE("Cloudlog's api/qso replies: imported_count counts the records stored") {
+  const auto cl = LoggerKind::cloudlog;
+  CHECK(judge_qso_reply(cl, 201, R"({"status":"created","type":"adif","string":"<CALL:4>W1AW <EOR>","imported_count":1,"messages":[]})")
             .accepted);
-  // Wavelog: the count of records read, messages [""] (its import's errors are not returned).
-  CHECK(judge_qso_reply(201, R"({"status":"created","type":"adif","string":"","imported_count":1,"messages":[""]})")
-            .accepted);
-  // Cloudlog, the record already there (an upload whose answer was lost): the logger has it.
+  // The record already there (an upload whose answer was lost): the logger has it.
   const auto dup = judge_qso_reply(
-      201, R"({"status":"created","type":"adif","string":"","imported_count":0,"messages":["Date\/Time: 2026-12-01 21:44:20 Callsign: W1AW Band: 2m  Duplicate<br>"]})");
+      cl, 201, R"({"status":"created","type":"adif","string":"","imported_count":0,"messages":["Date\/Time: 2026-12-01 21:44:20 Callsign: W1AW Band: 2m  Duplicate<br>"]})");
   CHECK(dup.accepted);
   CHECK(dup.duplicate);
   CHECK(dup.message == "Date/Time: 2026-12-01 21:44:20 Callsign: W1AW Band: 2m Duplicate");
-  // Cloudlog, refused by the import: a 201 that stored nothing.
+  // Refused by the import: a 201 that stored nothing.
   const auto wrong = judge_qso_reply(
-      201, R"({"status":"created","type":"adif","string":"","imported_count":0,"messages":["Wrong station callsign <b>\"WA7GXD\"<\/b> while importing QSO with W1AW for <b>N0CALL<\/b> : SKIPPED"]})");
+      cl, 201, R"({"status":"created","type":"adif","string":"","imported_count":0,"messages":["Wrong station callsign <b>\"WA7GXD\"<\/b> while importing QSO with W1AW for <b>N0CALL<\/b> : SKIPPED"]})");
   CHECK_FALSE(wrong.accepted);
   CHECK(wrong.message == "Wrong station callsign \"WA7GXD\" while importing QSO with W1AW for N0CALL : SKIPPED");
-  const auto none = judge_qso_reply(201, R"({"status":"created","type":"adif","string":"","imported_count":0,"messages":[]})");
+  const auto none = judge_qso_reply(cl, 201, R"({"status":"created","type":"adif","string":"","imported_count":0,"messages":[]})");
   CHECK_FALSE(none.accepted);
   CHECK(none.message == "the logger stored no record (imported_count 0)");
-  // An old Cloudlog's 201 without a count proves nothing.
-  CHECK(judge_qso_reply(201, R"({"status":"created","type":"adif","string":"x"})").message ==
+  // An old Cloudlog's 201 without a count proves nothing; nor does Wavelog's shape to Cloudlog.
+  CHECK(judge_qso_reply(cl, 201, R"({"status":"created","type":"adif","string":"x"})").message ==
         "HTTP 201 without imported_count: not the logger's API reply");
+  CHECK_FALSE(judge_qso_reply(cl, 201, R"({"status":"created","type":"adif","string":"","adif_count":1,"adif_errors":0,"messages":[""]})")
+                  .accepted);
   // The refusals before any record is read.
-  CHECK(judge_qso_reply(401, R"({"status":"failed","reason":"missing api key"})").message == "HTTP 401: missing api key");
-  CHECK(judge_qso_reply(401, R"({"status":"failed","reason":"station id does not belong to the API key owner."})")
+  CHECK(judge_qso_reply(cl, 401, R"({"status":"failed","reason":"missing api key"})").message == "HTTP 401: missing api key");
+  CHECK(judge_qso_reply(cl, 401, R"({"status":"failed","reason":"station id does not belong to the API key owner."})")
             .message == "HTTP 401: station id does not belong to the API key owner.");
-  CHECK(judge_qso_reply(200, R"({"status":"failed","reason":"wrong JSON"})").message == "HTTP 200: wrong JSON");
-  CHECK(judge_qso_reply(200, "").message == "HTTP 200: an empty reply");
-  CHECK(judge_qso_reply(500, "<html><body>Internal Server Error</body></html>").message ==
+  CHECK(judge_qso_reply(cl, 200, R"({"status":"failed","reason":"wrong JSON"})").message == "HTTP 200: wrong JSON");
+  CHECK(judge_qso_reply(cl, 200, "").message == "HTTP 200: an empty reply");
+  CHECK(judge_qso_reply(cl, 500, "<html><body>Internal Server Error</body></html>").message ==
         "HTTP 500: not the logger's API reply: Internal Server Error");
 }
 
-TEST_CASE("api/radio's replies") {
+// Recorded from Wavelog 2.0.5 (commit 4342ff10, Api.php qso()), PHP's json_encode escaping '/'.
+TEST_CASE("Wavelog's api/qso replies: 201 with adif_errors 0 is stored, a 400 duplicate is done") {
+  const auto wl = LoggerKind::wavelog;
+  const auto stored = judge_qso_reply(
+      wl, 201, R"({"status":"created","type":"adif","string":"","adif_count":1,"adif_errors":0,"messages":[""]})");
+  CHECK(stored.accepted);
+  CHECK_FALSE(stored.duplicate);
+  CHECK(stored.message.empty());
+  const auto dup = judge_qso_reply(
+      wl, 400,
+      R"({"status":"abort","type":"adif","string":"","adif_count":1,"adif_errors":1,"messages":["","Date\/Time: 2026-05-21 23:20:11 Callsign: DL1ABC Band: 2m Duplicate for WA7GXD<br>"]})");
+  CHECK(dup.accepted);
+  CHECK(dup.duplicate);
+  CHECK(dup.message == "Date/Time: 2026-05-21 23:20:11 Callsign: DL1ABC Band: 2m Duplicate for WA7GXD");
+  // A 400 that is not a duplicate (a refused record) is a problem, in the logger's words.
+  const auto bad = judge_qso_reply(
+      wl, 400,
+      R"({"status":"abort","type":"adif","string":"","adif_count":1,"adif_errors":1,"messages":["","Station callsign <b>WA7GXD<\/b> does not match"]})");
+  CHECK_FALSE(bad.accepted);
+  CHECK(bad.message == "HTTP 400: Station callsign WA7GXD does not match");
+  // A duplicate among two refusals of one record is not enough.
+  CHECK_FALSE(judge_qso_reply(wl, 400,
+                              R"({"status":"abort","adif_count":1,"adif_errors":1,"messages":["","x Duplicate for A","other"]})")
+                  .accepted);
+  CHECK(judge_qso_reply(wl, 201, R"({"status":"created","adif_count":0,"adif_errors":0,"messages":[""]})").message ==
+        "the logger read 0 record(s) with 0 error(s)");
+  CHECK(judge_qso_reply(wl, 201, R"({"status":"created","type":"adif","string":""})").message ==
+        "HTTP 201 without adif_count and adif_errors: not Wavelog's API reply");
+  // A Wavelog that answers as Cloudlog did (imported_count) is read by Cloudlog's rule.
+  CHECK(judge_qso_reply(wl, 201, R"({"status":"created","type":"adif","string":"","imported_count":1,"messages":[""]})")
+            .accepted);
+  CHECK(judge_qso_reply(wl, 401, R"({"status":"failed","reason":"missing api key"})").message == "HTTP 401: missing api key");
+  CHECK(judge_qso_reply(wl, 200, R"({"status":"failed","reason":"wrong JSON"})").message == "HTTP 200: wrong JSON");
+}
+
+TEST_CASE("api/radio's replies: success with 200 (Cloudlog) or 201") {
   CHECK(judge_radio_reply(200, R"({"status":"success"})").accepted);
+  CHECK(judge_radio_reply(201, R"({"status":"success"})").accepted);
+  CHECK_FALSE(judge_radio_reply(302, R"({"status":"success"})").accepted);
   CHECK(judge_radio_reply(401, R"({"status":"failed","reason":"missing api key"})").message == "HTTP 401: missing api key");
   CHECK(judge_radio_reply(404, R"({"status":"failed","reason":"missing radio element in payload"})").message ==
         "HTTP 404: missing radio element in payload");
   CHECK_FALSE(judge_radio_reply(200, "").accepted);
+}
+
+// Issue 56 item 1: 201 {"messages":[[[[...]]]]} 100,000 deep (200 kB) ended the station with
+// SIGSEGV (no bound, then a recursive copy of "messages"); a "reason" nested as deep on a 500 too.
+TEST_CASE("A reply nested 100,000 deep is refused by the nesting bound, not a crash") {
+  const std::string deep = std::string(100000, '[') + std::string(100000, ']');
+  for (const auto kind : {LoggerKind::cloudlog, LoggerKind::wavelog}) {
+    const auto v = judge_qso_reply(kind, 201, R"({"status":"created","imported_count":1,"messages":)" + deep + "}");
+    CHECK_FALSE(v.accepted);
+    CHECK(v.message == "HTTP 201: not the logger's API reply: JSON nested deeper than 64 levels");
+  }
+  std::string objects;
+  for (int i = 0; i < 100000; ++i) objects += R"({"a":)";
+  objects += "1" + std::string(100000, '}');
+  CHECK(judge_qso_reply(LoggerKind::cloudlog, 500, R"({"status":"failed","reason":)" + objects + "}").message ==
+        "HTTP 500: not the logger's API reply: JSON nested deeper than 64 levels");
+  CHECK(judge_radio_reply(200, R"({"status":)" + deep + "}").message ==
+        "HTTP 200: not the logger's API reply: JSON nested deeper than 64 levels");
+  // Within the bound, members that are not what they should be are read by reference and refused.
+  CHECK(judge_qso_reply(LoggerKind::cloudlog, 201, R"({"status":"created","imported_count":1,"messages":[[1],{"a":2}]})")
+            .message == "(a message that is not text); (a message that is not text)");
+}
+
+// Issue 56 item 9: a reply quoting the key put it verbatim in trakbox.log, stderr and status.
+TEST_CASE("The key quoted in a reply is redacted, in any case, before the text is cut") {
+  const std::string key = "cl64f0a1b2c3d4e5KEY";
+  const auto v = judge_qso_reply(LoggerKind::cloudlog, 401, R"({"status":"failed","reason":"the key 'cl64f0a1b2c3d4e5KEY' is not valid"})",
+                                 key);
+  CHECK(v.message == "HTTP 401: the key '<redacted>' is not valid");
+  CHECK(judge_radio_reply(401, R"({"status":"failed","reason":"bad key CL64F0A1B2C3D4E5key"})", key).message ==
+        "HTTP 401: bad key <redacted>");
+  // Not JSON, the key at the place where the text is cut: no piece of it stays.
+  const std::string html = "<p>" + std::string(110, 'x') + " " + key + "</p>";
+  const auto h = judge_qso_reply(LoggerKind::wavelog, 403, html, key);
+  CHECK(h.message.find("cl64") == std::string::npos);
+  CHECK(h.message == "HTTP 403: not the logger's API reply: " + std::string(110, 'x') + " <redac...");
+  const auto w = judge_qso_reply(LoggerKind::wavelog, 400,
+                                 R"({"status":"abort","adif_count":1,"adif_errors":1,"messages":["","key cl64f0a1b2c3d4e5KEY refused"]})", key);
+  CHECK(w.message == "HTTP 400: key <redacted> refused");
+}
+
+// Issue 56 item 11: Adif_parser.php splits on <eor> whatever the lengths say, so a note holding
+// "<eor><call:5>EVIL1" made a second record at the logger.
+TEST_CASE("What goes to a logger is one record: no '<' or '>' in any text field") {
+  Qso q = tb::testing::rs44_qso();
+  q.note = "hi <eor><call:5>EVIL1 <eor>";
+  q.sat_name = "RS<44>";
+  std::vector<std::string> changed;
+  const std::string body = qso_body("k", 1, q, &changed);
+  CHECK(changed == std::vector<std::string>{"APP_TRAKBOX_SAT", "COMMENT"});
+  CHECK(body.find("<COMMENT:27>hi (eor)(call:5)EVIL1 (eor) ") != std::string::npos);
+  CHECK(body.find("<APP_TRAKBOX_SAT:6>RS(44) ") != std::string::npos);
+  // Split as the logger's parser splits: one record before the one <EOR>.
+  std::string lower = body;
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  CHECK(lower.find("<eor>") == lower.rfind("<eor>"));
+  CHECK(lower.find("evil1") < lower.find("<eor>"));
+  // The stored QSO keeps what was typed; only what is sent changes.
+  CHECK(for_logger(q).note == "hi (eor)(call:5)EVIL1 (eor)");
+  CHECK(q.note == "hi <eor><call:5>EVIL1 <eor>");
 }
 
 TEST_CASE("The retry backoff: 30 s doubling to 30 minutes") {

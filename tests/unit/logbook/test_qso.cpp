@@ -95,3 +95,24 @@ TEST_CASE("A record's check names the first bad field") {
   CHECK(source_from_name("WEB") == Source::web);
   CHECK_FALSE(source_from_name("sat"));
 }
+
+// Issue 56 item 11: the mode took any text ("<eor>" included) to the logger. ADIF 3.1.4's Mode
+// enumeration (the MODE field's values; USB, FT4, C4FM are SUBMODEs of SSB, MFSK, DIGITALVOICE).
+TEST_CASE("The mode is one of ADIF's modes; a refusal names the field, a submode its mode") {
+  for (const char* m : {"FM", "SSB", "CW", "AM", "FT8", "MFSK", "PSK", "RTTY", "SSTV", "DIGITALVOICE", "PKT", "JT65"})
+    CHECK_MESSAGE(is_adif_mode(m), m);
+  CHECK_FALSE(check_mode(""));
+  CHECK(check_mode("FT4") == "mode: 'FT4' is a submode in ADIF; log it as MFSK");
+  CHECK(check_mode("C4FM") == "mode: 'C4FM' is a submode in ADIF; log it as DIGITALVOICE");
+  CHECK(check_mode("<EOR>") ==
+        "mode: '<EOR>' is not one of ADIF's modes (FM, SSB, CW, AM, FT8, MFSK, PSK, RTTY, SSTV, DIGITALVOICE, ...)");
+  Qso q;
+  q.call = "W1AW";
+  q.mode = "fm<eor><call:5>EVIL1";
+  q = normalized(q);
+  CHECK(check_qso(q) == "mode: 'FM<EOR><CALL:5>EVIL1' is not one of ADIF's modes (FM, SSB, CW, AM, FT8, MFSK, PSK, "
+                        "RTTY, SSTV, DIGITALVOICE, ...)");
+  q.mode = "usb";  // the radio's names are mapped
+  CHECK(normalized(q).mode == "SSB");
+  CHECK_FALSE(check_qso(normalized(q)));
+}

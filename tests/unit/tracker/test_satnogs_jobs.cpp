@@ -22,6 +22,13 @@ TEST_CASE("satnogs: the jobs URL, anonymous and per station") {
   CHECK(tracker::satnogs_jobs_url("https://network.satnogs.org", 42) ==
         "https://network.satnogs.org/api/jobs/?ground_station=42");
   CHECK(tracker::satnogs_jobs_url("http://127.0.0.1:8000/", 5024) == "http://127.0.0.1:8000/api/jobs/?ground_station=5024");
+  // Issue 56 item 10: a user and password in --satnogs-url were sent as Basic auth and shown in
+  // status' satnogs.url. The request is anonymous: they are dropped, neither sent nor shown.
+  CHECK(tracker::satnogs_jobs_url("http://bob:PW@127.0.0.1:8000", 7) == "http://127.0.0.1:8000/api/jobs/?ground_station=7");
+  CHECK(tracker::satnogs_jobs_url("https://bob@network.example/net/", 7) ==
+        "https://network.example/net/api/jobs/?ground_station=7");
+  CHECK(tracker::satnogs_jobs_url("https://a:p@ss@host", 7) == "https://host/api/jobs/?ground_station=7");
+  CHECK(tracker::satnogs_jobs_url("https://host/path@x", 7) == "https://host/path@x/api/jobs/?ground_station=7");
 }
 
 TEST_CASE("satnogs: two jobs become two windows in start order; a job over is dropped") {
