@@ -65,8 +65,8 @@ int through_socket(const std::string& socket, const std::vector<std::string>& wo
   const auto answer = station_request(socket, "settings", request_line(words), not_running);
   if (!answer) return not_running ? kStatusNotRunning : kExitFailure;
   if (words.empty()) {
-    if (json_limits::too_deep(*answer)) return kExitFailure;
-    const nlohmann::json doc = nlohmann::json::parse(*answer, nullptr, false);
+    std::string why;
+    const nlohmann::json doc = json_limits::parse_bounded<nlohmann::json>(*answer, why);
     if (!doc.is_object() || !doc.contains("settings")) {
       std::fprintf(stderr, "trakbox settings: %s: %s\n", socket.c_str(), answer->substr(0, 200).c_str());
       return kExitFailure;
