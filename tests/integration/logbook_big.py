@@ -89,8 +89,9 @@ def settle(pid, seconds=1.5):
     return rss_kb(pid)
 
 
-def measured(what, w, rot, action):
-    """Runs action() under a probe: (its result, the longest stall, RSS before, peak, after)."""
+def measured(what, w, rot, action, peak_limit_kb=RSS_LIMIT_KB):
+    """Runs action() under a probe; checks the longest stall, and the RSS growth at its peak and
+    after (what it took given back). Its result."""
     before = settle(w.proc.pid, 0.5)
     probe = Probe(rot, w.proc.pid)
     t0 = time.monotonic()
@@ -104,7 +105,7 @@ def measured(what, w, rot, action):
     check(probe.answers > 0, f"{what}: rotctld answered")
     check(stall < STALL_LIMIT, f"{what}: the loop stalled {stall:.2f} s (at most {STALL_LIMIT})")
     check(after - before < RSS_LIMIT_KB, f"{what}: VmRSS grew {(after - before) // 1024} MB and stayed")
-    check(probe.peak_kb - before < RSS_LIMIT_KB, f"{what}: VmRSS rose {(probe.peak_kb - before) // 1024} MB")
+    check(probe.peak_kb - before < peak_limit_kb, f"{what}: VmRSS rose {(probe.peak_kb - before) // 1024} MB")
     return result
 
 
@@ -133,9 +134,11 @@ def main():
     w = WebStation("--rotctld-port", str(rot), state=state)
     try:
         wait_listening(rot, "rotctld", within=20, proc=w.proc)
-        # Item 8: the import, through the station's socket.
+        # Item 8: the import, through the station's socket. While it runs the file is held (its 16 MiB
+        # request, the records parsed): bounded by the socket's 16 MiB, given back when it is done.
         code, out, err = measured("import of 100,000 QSOs", w, rot,
-                                  lambda: sh(BIN, "log", "import", adif, "--state", state, timeout=120))
+                                  lambda: sh(BIN, "log", "import", adif, "--state", state, timeout=120),
+                                  peak_limit_kb=256 * 1024)
         check(code == 0 and f"imported {N} QSOs, 0 already in the log" in out, f"import: {code} {out} {err}")
         check(f"{N} QSOs imported (0 already in the log) by trakbox log import" in read_log(state),
               "trakbox.log says the import and who asked")
