@@ -145,7 +145,7 @@ Response log_post(tracker::StationLoop& station, const std::string& path, const 
   };
   const std::string call = body.contains("call") && body["call"].is_string() ? body["call"].get<std::string>() : "";
   if (path == "/api/v1/log") {
-    const std::string what = "logging a QSO with " + text::safe_text(call.substr(0, 20));
+    const std::string what = call.empty() ? std::string("logging a QSO") : "logging a QSO with " + text::safe_text(call.substr(0, 20));
     if (!b) return refused(409, what, why);
     tracker::LogRequest req;
     req.source = logbook::Source::web;
