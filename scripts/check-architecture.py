@@ -150,9 +150,6 @@ JSON_PARSE_ALLOWED = [
     ("src/web/server.cpp", "events.push_back(nlohmann::json::parse(e, nullptr, false));"),
     # the state document's data written by dump() a line above, read back to clean its strings
     ("src/store/state_file.cpp", "nlohmann::json::parse(data.dump(-1, ' ', false, kReplace));"),
-    # the station socket's `log` request (a client of the socket, mode 0600): owned by the
-    # logbook-requests change, which moves it to parse_bounded; listed until then
-    ("src/live/log_requests.cpp", "const json j = json::parse(request, nullptr, false);"),
 ]
 JSON_PARSE = re.compile(r"\w*json\s*::\s*(?:parse|sax_parse)\s*\(|\bsax_parse\s*\(", re.IGNORECASE)
 

@@ -288,7 +288,10 @@ std::unique_ptr<AttachServer> open_socket(StationApp& app, const TrackerConfig& 
     if (*self) cx.attached = (*self)->attached(), cx.keyboard = (*self)->keyboard();
     return station_status(app, cx);
   };
-  o.log = [&app](const std::string& request) { return log_socket_request(app, request); };
+  o.log = [requests = std::make_shared<LogRequests>(app)](const std::string& request,
+                                                        std::function<void(std::string)> reply) {
+    requests->handle(request, std::move(reply));
+  };
   o.is_command = is_station_command;
   o.command = [&app](const std::string& line) { return run_station_command(app, line); };
   try {

@@ -2,6 +2,7 @@
 // no station running, list, export and import open the state directory's logbook themselves.
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <sstream>
 
@@ -19,10 +20,6 @@
 namespace tb::app {
 
 using nlohmann::json;
-
-json log_export(const logbook::Logbook& b, std::int64_t since, std::int64_t now);
-json log_import(logbook::Logbook& b, const std::string& adif);
-json log_list(const logbook::Logbook& b, std::int64_t since);
 
 namespace {
 
@@ -58,32 +55,51 @@ int fail(const std::string& why) {
   return kExitFailure;
 }
 
-// The reply's effect on the terminal; the exit status.
-int show(const std::string& action, const json& r, const ParsedOptions& o) {
-  if (!r.is_object()) return fail("no answer from the station");
-  if (r.contains("error")) return fail(r["error"].get<std::string>());
-  if (action == "add") {
-    const json& q = r["qso"];
-    std::printf("logged %lld %s %s %s %s\n", static_cast<long long>(q.value("id", 0LL)), q.value("call", "").c_str(),
-                q.value("sat_name", "").c_str(), q.value("mode", "").c_str(), q.value("time_on", "").c_str());
-  } else if (action == "list") {
-    for (const auto& q : r["qsos"])
-      std::printf("%4lld  %s  %-10s %-8s %-6s %-4s %s\n", static_cast<long long>(q.value("id", 0LL)),
-                  q.value("time_on", "").c_str(), q.value("call", "").c_str(), q.value("sat_name", "").c_str(),
-                  q.value("grid", "").c_str(), q.value("mode", "").c_str(), q.value("source", "").c_str());
-  } else if (action == "export") {
-    for (const auto& w : r["warnings"]) std::fprintf(stderr, "trakbox log export: WARNING: %s\n", w.get<std::string>().c_str());
-    const std::string adif = r["adif"].get<std::string>();
-    if (const auto file = o.value("adif")) {
-      std::ofstream out(*file, std::ios::binary | std::ios::trunc);
-      if (!(out << adif) || !out.flush()) return fail(*file + ": cannot be written");
-    } else {
-      std::fputs(adif.c_str(), stdout);
-    }
-  } else if (action == "import") {
-    std::printf("imported %lld QSOs, %lld already in the log\n", static_cast<long long>(r.value("added", 0LL)),
-                static_cast<long long>(r.value("duplicates", 0LL)));
+// A request's reply: from the running station, or from the logbook itself; nullopt when the
+// station stopped answering (said on standard error).
+using Ask = std::function<std::optional<json>(const json&)>;
+
+// The reply's effect on the terminal; the exit status. list and export come a page at a time
+// (live/log_requests.h): each page is printed or written as it comes and the next asked with its
+// "next" cursor, so neither the station nor this command holds the whole log.
+int show(const std::string& action, json r, const ParsedOptions& o, const Ask& ask, json request) {
+  std::ofstream file;
+  const auto path = o.value("adif");
+  if (action == "export" && path) {
+    file.open(*path, std::ios::binary | std::ios::trunc);
+    if (!file) return fail(*path + ": cannot be written");
   }
+  for (;;) {
+    if (!r.is_object()) return fail("no answer from the station");
+    if (r.contains("error")) return fail(r["error"].get<std::string>());
+    if (action == "add") {
+      const json& q = r["qso"];
+      std::printf("logged %lld %s %s %s %s\n", static_cast<long long>(q.value("id", 0LL)), q.value("call", "").c_str(),
+                  q.value("sat_name", "").c_str(), q.value("mode", "").c_str(), q.value("time_on", "").c_str());
+    } else if (action == "list") {
+      for (const auto& q : r["qsos"])
+        std::printf("%4lld  %s  %-10s %-8s %-6s %-4s %s\n", static_cast<long long>(q.value("id", 0LL)),
+                    q.value("time_on", "").c_str(), q.value("call", "").c_str(), q.value("sat_name", "").c_str(),
+                    q.value("grid", "").c_str(), q.value("mode", "").c_str(), q.value("source", "").c_str());
+    } else if (action == "export") {
+      for (const auto& w : r["warnings"]) std::fprintf(stderr, "trakbox log export: WARNING: %s\n", w.get<std::string>().c_str());
+      const std::string& adif = r["adif"].get_ref<const std::string&>();
+      if (path) {
+        if (!(file << adif)) return fail(*path + ": cannot be written");
+      } else {
+        std::fputs(adif.c_str(), stdout);
+      }
+    } else if (action == "import") {
+      std::printf("imported %lld QSOs, %lld already in the log\n", static_cast<long long>(r.value("added", 0LL)),
+                  static_cast<long long>(r.value("duplicates", 0LL)));
+    }
+    if ((action != "list" && action != "export") || !r.contains("next") || !r["next"].is_string()) break;
+    request["after"] = r["next"];
+    auto more = ask(request);
+    if (!more) return kExitFailure;
+    r = std::move(*more);
+  }
+  if (path && action == "export" && !file.flush()) return fail(*path + ": cannot be written");
   return kExitOk;
 }
 
@@ -119,15 +135,11 @@ std::optional<json> build_request(const std::string& action, const ParsedOptions
 }
 
 // No station runs: list, export and import on the state directory's logbook itself.
-json direct(const std::string& state_dir, const json& j) {
-  std::string err;
-  auto book = logbook::Logbook::open(state_dir + "/logbook.sqlite", err);
-  if (!book) return {{"error", err}};
+json direct(logbook::Logbook& book, const json& j) {
   const std::string action = j["action"];
-  const std::int64_t since = j.contains("since") ? logbook::parse_utc(j["since"].get<std::string>()).value_or(0) : 0;
-  if (action == "list") return log_list(*book, since);
-  if (action == "export") return log_export(*book, since, tracker::ElementsRefresh::wall_now());
-  return log_import(*book, j["adif"].get<std::string>());
+  if (action == "list") return log_list(book, j);
+  if (action == "export") return log_export(book, j, tracker::ElementsRefresh::wall_now());
+  return log_import(book, j["adif"].get<std::string>());
 }
 
 }  // namespace
@@ -156,13 +168,26 @@ int run_log(const std::vector<std::string>& args) {
                 std::to_string(line.size() + 1) + " bytes, more than the " + std::to_string(kMaxRequestBytes) +
                 " (" + std::to_string(kMaxRequestBytes >> 20) + " MiB) the station's socket takes: split the file");
   const auto text = station_request(socket, "log", line, not_running);
-  std::string why;
-  if (text) return show(action, json_limits::parse_bounded<json>(*text, why), o);
+  if (text) {
+    const Ask ask = [&socket](const json& j) -> std::optional<json> {
+      bool gone = false;
+      const auto t = station_request(socket, "log", "log " + j.dump(-1, ' ', false, json::error_handler_t::replace), gone);
+      if (!t) return std::nullopt;
+      std::string why;
+      return json_limits::parse_bounded<json>(*t, why);
+    };
+    std::string why;
+    return show(action, json_limits::parse_bounded<json>(*text, why), o, ask, *request);
+  }
   if (!not_running) return kExitFailure;
   if (action == "add") return fail("add: no station is running to take the pass from (start trakbox first)");
   if (!std::filesystem::exists(state_dir + "/logbook.sqlite")) return fail(state_dir + ": no logbook.sqlite there");
   std::fprintf(stderr, "trakbox log: no station runs; using %s/logbook.sqlite\n", state_dir.c_str());
-  return show(action, direct(state_dir, *request), o);
+  std::string err;
+  auto book = logbook::Logbook::open(state_dir + "/logbook.sqlite", err);
+  if (!book) return fail(err);
+  const Ask ask = [&book](const json& j) -> std::optional<json> { return direct(*book, j); };
+  return show(action, direct(*book, *request), o, ask, *request);
 }
 
 }  // namespace tb::app

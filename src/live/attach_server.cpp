@@ -307,7 +307,7 @@ struct AttachServer::Impl {
       } else if (line == "events") {
         subscribe(out);
       } else if (line.rfind("log ", 0) == 0 && opt.log) {
-        out->send(opt.log(line.substr(4)) + "\n");
+        opt.log(line.substr(4), [out](std::string reply) { out->send(reply + "\n"); });
       } else if (opt.is_command && opt.is_command(line)) {
         out->send(text::safe_text(opt.command(line)) + "\n");
         out->finish();

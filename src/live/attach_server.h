@@ -41,8 +41,9 @@ inline constexpr std::size_t kMaxScreenTypes = 8;  // terminal types with a kept
 struct AttachServerOptions {
   std::string path;                           // the socket
   std::function<nlohmann::json()> status;     // the status document
-  // "log {json}": the logbook's request (`trakbox log ...`, live/log_requests.h), its JSON reply.
-  std::function<std::string(const std::string&)> log;
+  // "log {json}": the logbook's request (`trakbox log ...`, live/log_requests.h); its JSON reply is
+  // given to the callback, at once or later from the loop (an import runs on a worker thread).
+  std::function<void(const std::string&, std::function<void(std::string)>)> log;
   // `trakbox standby`, `trakbox reserve` (live/station_command.h): the request line in, the answer out.
   std::function<bool(const std::string&)> is_command;
   std::function<std::string(const std::string&)> command;

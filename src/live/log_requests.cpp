@@ -1,18 +1,74 @@
 #include "live/log_requests.h"
 
+#include <malloc.h>
+
+#include <atomic>
+#include <thread>
+
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/post.hpp>
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
 #include "live/build_info.h"
+#include "util/json_limits.h"
 #include "live/station_app.h"
 #include "logbook/adif.h"
+#include "logbook/log_page.h"
 #include "tracker/elements_refresh.h"
 #include "tracker/log_json.h"
+#include "tracker/log_ops.h"
 #include "tracker/station_loop.h"
+#include "util/safe_text.h"
 
 namespace tb::app {
 
 using nlohmann::json;
+
+namespace {
+
+// A request longer than this can only be an import (the others are a line of options).
+constexpr std::size_t kSmallRequest = 64 * 1024;
+
+std::optional<std::int64_t> since_of(const json& j) {
+  const auto it = j.find("since");
+  if (it == j.end() || it->is_null()) return 0;
+  if (!it->is_string()) return std::nullopt;
+  return logbook::parse_utc(it->get<std::string>());
+}
+
+// The page a list or export asks: since, the cursor after which it starts, how many; an error
+// naming the field.
+struct PageAsk {
+  std::int64_t since = 0;
+  logbook::Cursor after;
+  bool first = true;
+  std::size_t limit = kSocketPage;
+  std::string error;
+};
+
+PageAsk page_ask(const json& j) {
+  PageAsk a;
+  const auto since = since_of(j);
+  if (!since) return a.error = "since: expected a UTC date like 2026-12-01", a;
+  a.since = *since;
+  if (const auto it = j.find("after"); it != j.end() && !it->is_null()) {
+    const auto c = it->is_string() ? logbook::parse_cursor(it->get<std::string>()) : std::nullopt;
+    if (!c) return a.error = "after: expected the cursor a page gave as \"next\"", a;
+    a.after = *c;
+    a.first = false;
+  }
+  if (const auto it = j.find("limit"); it != j.end() && !it->is_null()) {
+    if (!it->is_number_unsigned() || it->get<std::size_t>() < 1 || it->get<std::size_t>() > kSocketPage)
+      return a.error = "limit: expected 1 to " + std::to_string(kSocketPage) + " QSOs", a;
+    a.limit = it->get<std::size_t>();
+  }
+  return a;
+}
+
+json next_of(const logbook::Page& p) { return p.next ? json(*p.next) : json(nullptr); }
+
+}  // namespace
 
 std::unique_ptr<tracker::Logging> open_logging(StationApp& app, const std::filesystem::path& state_dir,
                                                const std::string& data_dir) {
@@ -26,73 +82,134 @@ std::unique_ptr<tracker::Logging> open_logging(StationApp& app, const std::files
   return l;
 }
 
-// The socket's requests and the CLI's direct use share these on a logbook.
-json log_export(const logbook::Logbook& b, std::int64_t since, std::int64_t now) {
-  const logbook::AdifExport e = logbook::write_adif(b.list(since), kVersion, now);
-  return {{"ok", true}, {"adif", e.text}, {"warnings", e.warnings}};
+json log_export(const logbook::Logbook& b, const json& request, std::int64_t now) {
+  const PageAsk a = page_ask(request);
+  if (!a.error.empty()) return {{"error", a.error}};
+  const logbook::Page p = logbook::read_page(b, a.since, a.after, a.limit);
+  std::vector<std::string> warnings;
+  std::string text = logbook::adif_page(p.qsos, a.first, kVersion, now, warnings);
+  return {{"ok", true}, {"adif", std::move(text)}, {"warnings", warnings}, {"next", next_of(p)}};
+}
+
+json log_list(const logbook::Logbook& b, const json& request) {
+  const PageAsk a = page_ask(request);
+  if (!a.error.empty()) return {{"error", a.error}};
+  const logbook::Page p = logbook::read_page(b, a.since, a.after, a.limit);
+  json list = json::array();
+  for (const auto& q : p.qsos) list.push_back(tracker::qso_json(q));
+  return {{"ok", true}, {"qsos", std::move(list)}, {"next", next_of(p)}};
 }
 
 json log_import(logbook::Logbook& b, const std::string& adif) {
-  const logbook::AdifRead r = logbook::read_adif(adif);
-  if (!r.ok()) return {{"error", "import: " + r.error + "; nothing was stored"}};
-  const logbook::Imported i = b.import(r.qsos);
+  logbook::Imported i;
+  {
+    logbook::AdifRead r = logbook::read_adif(adif);
+    if (!r.ok()) return {{"error", "import: " + r.error + "; nothing was stored"}};
+    i = b.import(r.qsos);
+  }
   if (!i.error.empty()) return {{"error", "import: " + i.error + "; nothing was stored"}};
   return {{"ok", true}, {"added", i.added}, {"duplicates", i.duplicates}};
 }
 
-json log_list(const logbook::Logbook& b, std::int64_t since) {
-  json list = json::array();
-  for (const auto& q : b.list(since)) list.push_back(tracker::qso_json(q));
-  return {{"ok", true}, {"qsos", std::move(list)}};
+// The import's thread: one at a time; what it found is posted back to the loop.
+struct LogRequests::Worker {
+  std::thread thread;
+  std::atomic<bool> busy{false};
+};
+
+LogRequests::LogRequests(StationApp& app) : app_(app), worker_(std::make_shared<Worker>()) {}
+
+LogRequests::~LogRequests() {
+  if (worker_->thread.joinable()) worker_->thread.join();
 }
 
-namespace {
-
-std::optional<std::int64_t> since_of(const json& j) {
-  const auto it = j.find("since");
-  if (it == j.end() || it->is_null()) return 0;
-  if (!it->is_string()) return std::nullopt;
-  return logbook::parse_utc(it->get<std::string>());
-}
-
-json handle(StationApp& app, const json& j) {
-  if (!j.is_object() || !j.contains("action") || !j["action"].is_string())
-    return {{"error", "expected {\"action\": \"add\"|\"list\"|\"export\"|\"import\", ...}"}};
-  const std::string action = j["action"].get<std::string>();
-  tracker::LogOps ops(app.station());
-  std::string why;
-  logbook::Logbook* b = ops.book(why);
-  if (!b) return {{"error", why}};
-  if (action == "add") {
-    tracker::LogRequest req;
-    req.source = logbook::Source::cli;
-    if (auto e = tracker::log_request_from_json(j, req)) return {{"error", *e}};
-    const tracker::LogResult r = ops.log(req);
-    if (!r.ok()) return {{"error", *r.refusal}};
-    return {{"ok", true}, {"qso", tracker::qso_json(r.qso)}};
-  }
-  const auto since = since_of(j);
-  if (!since) return {{"error", "since: expected a UTC date like 2026-12-01"}};
-  if (action == "list") return log_list(*b, *since);
-  if (action == "export") return log_export(*b, *since, tracker::ElementsRefresh::wall_now());
-  if (action == "import") {
-    if (!j.contains("adif") || !j["adif"].is_string()) return {{"error", "import: the file's text is expected (\"adif\")"}};
-    return log_import(*b, j["adif"].get<std::string>());
-  }
-  return {{"error", "action: '" + action.substr(0, 20) + "' is not add, list, export or import"}};
-}
-
-}  // namespace
-
-std::string log_socket_request(StationApp& app, const std::string& request) {
-  json reply;
+void LogRequests::handle(const std::string& request, std::function<void(std::string)> reply) {
+  const auto answer = [&reply](const json& j) { reply(j.dump(-1, ' ', false, json::error_handler_t::replace)); };
   try {
-    const json j = json::parse(request, nullptr, false);
-    reply = j.is_discarded() ? json{{"error", "the request is not JSON"}} : handle(app, j);
+    if (request.size() > kSmallRequest) return import(request, std::move(reply));
+    std::string why;
+    const json j = json_limits::parse_bounded<json>(request, why);
+    if (j.is_discarded()) return answer({{"error", "the request is not JSON: " + why}});
+    if (!j.is_object() || !j.contains("action") || !j["action"].is_string())
+      return answer({{"error", "expected {\"action\": \"add\"|\"list\"|\"export\"|\"import\", ...}"}});
+    const std::string action = j["action"].get<std::string>();
+    if (action == "import") return import(request, std::move(reply));
+    tracker::LogOps ops(app_.station());
+    std::string why;
+    logbook::Logbook* b = ops.book(why);
+    if (!b) return answer({{"error", why}});
+    if (action == "add") {
+      tracker::LogRequest req;
+      req.source = logbook::Source::cli;
+      const std::string call = j.value("call", json()).is_string() ? text::safe_text(j["call"].get<std::string>().substr(0, 20)) : "";
+      std::optional<std::string> refusal = tracker::log_request_from_json(j, req);
+      tracker::LogResult r;
+      if (!refusal) r = ops.log(req), refusal = r.refusal;
+      if (refusal) {
+        app_.log().warn("socket: logging a QSO with {} refused for trakbox log add: {}", call, *refusal);
+        return answer({{"error", *refusal}});
+      }
+      app_.log().info("socket: QSO {} {} {} {} logged by trakbox log add", r.qso.id, r.qso.call, r.qso.sat_name,
+                      logbook::utc_text(r.qso.time_on));
+      return answer({{"ok", true}, {"qso", tracker::qso_json(r.qso)}});
+    }
+    if (action == "list") return answer(log_list(*b, j));
+    if (action == "export") return answer(log_export(*b, j, tracker::ElementsRefresh::wall_now()));
+    return answer({{"error", "action: '" + text::safe_text(action.substr(0, 20)) + "' is not add, list, export or import"}});
   } catch (const std::exception& e) {
-    reply = {{"error", std::string("the request could not be handled: ") + e.what()}};
+    answer({{"error", std::string("the request could not be handled: ") + e.what()}});
   }
-  return reply.dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
+void LogRequests::import(std::string request, std::function<void(std::string)> reply) {
+  const auto refuse = [this, &reply](const std::string& why) {
+    app_.log().warn("socket: an import refused for trakbox log import: {}", why);
+    reply(json{{"error", why}}.dump(-1, ' ', false, json::error_handler_t::replace));
+  };
+  std::string why;
+  const logbook::Logbook* b = tracker::LogOps(app_.station()).book(why);
+  if (!b) return refuse(why);
+  if (worker_->busy) return refuse("import: another import is under way; nothing was stored (try again when it is done)");
+  const std::string path = b->path();
+  if (worker_->thread.joinable()) worker_->thread.join();  // the last one, done (busy is false)
+  worker_->busy = true;
+  const std::size_t bytes = request.size();
+  app_.log().info("socket: an import of {} bytes started for trakbox log import (on a worker thread)", bytes);
+  auto done = [w = worker_, reply = std::move(reply), &log = app_.log(), bytes](json result) {
+    w->busy = false;
+    if (result.contains("error"))
+      log.warn("socket: an import of {} bytes refused for trakbox log import: {}", bytes, result["error"].get<std::string>());
+    else
+      log.info("socket: {} QSOs imported ({} already in the log) by trakbox log import", result.value("added", 0),
+               result.value("duplicates", 0));
+    reply(result.dump(-1, ' ', false, json::error_handler_t::replace));
+  };
+  worker_->thread = std::thread([req = std::move(request), path, done = std::move(done), &io = app_.io()]() mutable {
+    json result;
+    try {
+      std::string adif;
+      {
+        std::string why;
+        json j = json_limits::parse_bounded<json>(req, why);
+        std::string().swap(req);
+        if (j.is_discarded() || !j.is_object() || j.value("action", json()) != "import")
+          result = {{"error", "only an import may be longer than " + std::to_string(kSmallRequest / 1024) + " kB"}};
+        else if (!j.contains("adif") || !j["adif"].is_string())
+          result = {{"error", "import: the file's text is expected (\"adif\")"}};
+        else
+          adif = std::move(j["adif"].get_ref<std::string&>());
+      }
+      if (result.is_null()) {
+        std::string error;
+        auto book = logbook::Logbook::open(path, error);  // this thread's own connection
+        result = book ? log_import(*book, adif) : json{{"error", "import: " + error + "; nothing was stored"}};
+      }
+    } catch (const std::exception& e) {
+      result = {{"error", std::string("import: ") + e.what() + "; nothing was stored"}};
+    }
+    malloc_trim(0);  // what the file and its records took goes back to the system, not just to the heap
+    boost::asio::post(io, [done = std::move(done), result = std::move(result)]() mutable { done(std::move(result)); });
+  });
 }
 
 }  // namespace tb::app

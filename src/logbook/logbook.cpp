@@ -39,6 +39,7 @@ class Stmt {
     return *this;
   }
   int step() { return s_ ? sqlite3_step(s_) : SQLITE_ERROR; }
+  void reset() { sqlite3_reset(s_); }  // to step it again with new bindings
   std::int64_t i64(int c) const { return sqlite3_column_int64(s_, c); }
   double real(int c) const { return sqlite3_column_double(s_, c); }
   std::string str(int c) const {
@@ -245,6 +246,21 @@ std::vector<Qso> Logbook::list(std::int64_t since, bool with_deleted) const {
   return out;
 }
 
+std::vector<Qso> Logbook::page(std::int64_t since, std::int64_t after_time, std::int64_t after_id,
+                               std::size_t limit) const {
+  Stmt s(db_, std::string("SELECT ") + kColumns +
+                  " FROM qso WHERE time_on >= ?1 AND deleted = 0 AND (time_on, id) > (?2, ?3) ORDER BY time_on, id LIMIT ?4");
+  s.bind(1, since).bind(2, after_time).bind(3, after_id).bind(4, static_cast<std::int64_t>(limit));
+  std::vector<Qso> out;
+  while (s.step() == SQLITE_ROW) out.push_back(read_row(s));
+  return out;
+}
+
+std::string Logbook::path() const {
+  const char* f = sqlite3_db_filename(db_, "main");
+  return f ? std::string(f) : std::string();
+}
+
 std::vector<Qso> Logbook::versions(std::int64_t id) const {
   Stmt s(db_, std::string("SELECT ") + kColumns + " FROM qso_version WHERE id = ?1 ORDER BY version");
   s.bind(1, id);
@@ -287,11 +303,14 @@ Imported Logbook::import(const std::vector<Qso>& qsos) {
   Stmt next(db_, "SELECT COALESCE(MAX(id), 0) FROM qso");
   std::int64_t id = next.step() == SQLITE_ROW ? next.i64(0) : 0;
   bool ok = true;
+  // One statement for all the records: the write transaction (which another connection's writes
+  // wait for: an import runs on a worker thread) is as short as it can be.
+  Stmt ins(db_, kInsert);
   for (Qso& q : fresh) {
     q.id = ++id;
     q.version = 1;
     q.deleted = false;
-    Stmt ins(db_, kInsert);
+    ins.reset();
     ins.bind(1, q.id);
     bind_record(ins, q);
     if (!(ok = ins.step() == SQLITE_DONE)) break;

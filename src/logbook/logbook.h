@@ -54,6 +54,13 @@ class Logbook {
   std::optional<Qso> get(std::int64_t id) const;
   // Records with time_on >= since, oldest first; deleted ones only when asked.
   std::vector<Qso> list(std::int64_t since = 0, bool with_deleted = false) const;
+  // One page of list() (docs/logbook.md, "Paging"): the records with time_on >= since after the
+  // cursor (after_time, after_id) in (time_on, id) order, at most `limit`, deleted ones left out.
+  // The first page has the cursor (INT64_MIN, 0); the next starts after the last record returned.
+  // Each page is one indexed query, so a caller can read the whole log in bounded pieces.
+  std::vector<Qso> page(std::int64_t since, std::int64_t after_time, std::int64_t after_id, std::size_t limit) const;
+  // The database file's path ("" for an in-memory one): a worker thread opens its own connection.
+  std::string path() const;
   std::vector<Qso> versions(std::int64_t id) const;   // the previous versions, oldest first
   std::size_t count() const;                          // not deleted
   std::optional<Qso> last() const;                    // the latest time on, not deleted

@@ -126,16 +126,71 @@ std::optional<std::string> query_param(const std::string& target, const std::str
   return field(std::string_view(target).substr(q + 1), name);
 }
 
+std::optional<std::string> allowed_methods(const std::string& path) {
+  static const std::vector<std::pair<std::string_view, std::string_view>> kEndpoints = {
+      {"/", "GET, HEAD"},
+      {"/login", "GET, HEAD, POST"},
+      {"/logout", "POST"},
+      {"/api/v1/status", "GET, HEAD"},
+      {"/api/v1/satellites", "GET, HEAD"},
+      {"/api/v1/passes", "GET, HEAD"},
+      {"/api/v1/passes.ics", "GET, HEAD"},
+      {"/api/v1/sky", "GET, HEAD"},
+      {"/api/v1/live", "GET"},
+      {"/api/v1/log", "GET, HEAD, POST"},
+      {"/api/v1/log.adi", "GET, HEAD"},
+      {"/api/v1/log/edit", "POST"},
+      {"/api/v1/log/delete", "POST"},
+      {"/api/v1/track", "POST"},
+      {"/api/v1/rotor", "POST"},
+      {"/api/v1/radio", "POST"},
+      {"/api/v1/station", "POST"},
+      {"/api/v1/standby", "POST"},
+      {"/api/v1/control", "POST"},
+      {"/api/v1/reserve", "POST"},
+      {"/api/v1/elements/refresh", "POST"}};
+  for (const auto& [p, methods] : kEndpoints)
+    if (p == path) return std::string(methods);
+  if (find_page_file(path)) return std::string("GET, HEAD");
+  return std::nullopt;
+}
+
+static bool method_in(const std::string& method, const std::string& allow) {
+  for (std::string_view m : text::split(allow, ','))
+    if (text::trim(m, " ") == method) return true;
+  return false;
+}
+
+// The reply's sentence for the log's line of refusals, when the handler left `why` empty (issue 56:
+// a refused QSO was logged with an empty reason): the body's "error".
+static void fill_why(Response& r) {
+  if (r.status < 400 || !r.why.empty() || r.stream) return;
+  std::string unused;
+  const json j = json_limits::parse_bounded<json>(r.body, unused);
+  if (j.is_object() && j.contains("error") && j["error"].is_string()) r.why = j["error"].get<std::string>();
+}
+
 Api::Api(tracker::StationLoop& station, Access& access, ApiHooks hooks)
     : station_(station), access_(access), hooks_(std::move(hooks)) {}
 
 Response Api::handle(const Request& r, std::chrono::steady_clock::time_point now) {
   try {
     const std::string path = target_path(r.target);
+    // Each endpoint its methods (RFC 9110 15.5.6: a 405 names them in Allow); a path that is none, 404.
+    const auto allow = allowed_methods(path);
+    if (!allow)
+      return error(404, (path.rfind("/api/", 0) == 0 ? "no such endpoint: " : "no such page: ") + printable(path, 60));
+    if (!method_in(r.method, *allow)) {
+      Response res = error(405, "method " + printable(r.method, 10) + " not allowed on " + printable(path, 60) + ": " + *allow);
+      res.headers.emplace_back("Allow", *allow);
+      return res;
+    }
     if (path == "/login" && r.method == "POST") return login(r, now);
     const bool changing = r.method == "POST";
     const Grant g = access_.grant(r.peer, r.host, r.origin, r.cookie, r.authorization, changing, now);
-    return route(r, g);
+    Response res = route(r, g);
+    fill_why(res);
+    return res;
   } catch (const std::exception& e) {
     spdlog::warn("web: {} {}: {}", r.method, target_path(r.target).substr(0, 80), e.what());
     return error(400, "the request could not be handled");
@@ -208,15 +263,11 @@ Response Api::route(const Request& r, const Grant& g) {
     if (path == "/api/v1/passes") return passes(r.target);
     if (path == "/api/v1/passes.ics") return passes_ics(r.target);
     if (path == "/api/v1/sky") return ok(sky());
+    if (path == "/api/v1/live") return error(426, "/api/v1/live is a WebSocket (Upgrade: websocket)");
     if (is_log_path(path))
       return log_get(station_, path, r.target, hooks_.wall_now_unix ? hooks_.wall_now_unix() : 0,
                      hooks_.status ? hooks_.status().value("version", std::string()) : std::string());
     return error(404, "no such endpoint: " + printable(path, 60));
-  }
-  if (r.method != "POST") {
-    Response res = error(405, "method " + printable(r.method, 10) + " not allowed: GET, HEAD or POST");
-    res.headers.emplace_back("Allow", "GET, HEAD, POST");  // RFC 9110 15.5.6
-    return res;
   }
   if (path == "/logout") {
     access_.logout(r.cookie);
@@ -235,7 +286,7 @@ Response Api::route(const Request& r, const Grant& g) {
   if (body.is_discarded()) return error(400, "the body is not valid JSON");
   if (!body.is_object()) return error(400, "the body must be a JSON object");
   if (is_log_path(path)) {
-    Response res = log_post(station_, path, body);
+    Response res = log_post(station_, path, body, "web " + printable(r.peer, 60));
     if (res.status == 200 && hooks_.changed) hooks_.changed();
     return res;
   }

@@ -50,7 +50,16 @@ struct Response {
   std::string body;
   std::vector<std::pair<std::string, std::string>> headers;  // beyond the security headers
   std::string why;  // an error's sentence (the body's "error"), for the log's line of refusals
+  // A reply too big to hold whole (the ADIF export of the log): the body is made in pieces as the
+  // client takes them, each bounded, each dropped once written (server.cpp sends it chunked). Each
+  // call gives the next piece, "" at the end; it runs on the loop. `trailers` is asked at the end.
+  std::function<std::string()> stream;
+  std::function<std::vector<std::pair<std::string, std::string>>()> trailers;
 };
+
+// The methods a path takes ("GET, HEAD", "POST", ...: the Allow header of a 405); nullopt for a
+// path that is no endpoint and no page file (404).
+std::optional<std::string> allowed_methods(const std::string& path);
 
 // The headers every response carries.
 std::vector<std::pair<std::string, std::string>> security_headers();

@@ -18,6 +18,24 @@ namespace {
 
 std::string lower_token(std::string_view s) { return text::lower(text::trim(s, " \t")); }
 
+// An absolute-form target's authority and the rest (the path, "/" when empty); a refusal when the
+// scheme is not http(s) or the authority is empty or names a user.
+std::optional<std::pair<int, std::string>> split_absolute(std::string& target, std::string& authority) {
+  const auto scheme_end = target.find("://");
+  const std::string scheme = text::lower(std::string_view(target).substr(0, scheme_end));
+  if (scheme != "http" && scheme != "https")
+    return std::pair{400, "the request target: expected a path, or an http:// URL"};
+  const std::size_t from = scheme_end + 3;
+  const std::size_t end = target.find_first_of("/?#", from);
+  authority = target.substr(from, end == std::string::npos ? std::string::npos : end - from);
+  if (authority.empty() || authority.find('@') != std::string::npos)
+    return std::pair{400, "the request target's authority: expected host[:port]"};
+  std::string rest = end == std::string::npos ? std::string() : target.substr(end);
+  if (rest.empty() || rest.front() != '/') rest.insert(0, "/");
+  target = std::move(rest);
+  return std::nullopt;
+}
+
 }  // namespace
 
 struct RequestReader::Impl {
@@ -26,6 +44,7 @@ struct RequestReader::Impl {
   std::optional<http::request_parser<http::string_body>> parser;
   std::size_t header_used = 0;      // bytes of the request line and headers the parser has taken
   bool header_checked = false;
+  bool continue_due = false;        // Expect: 100-continue, not yet answered
   ReadRequest facts;                // from the header, once checked (trailers never reach it)
   State state = State::more;
   int status = 0;
@@ -39,6 +58,7 @@ struct RequestReader::Impl {
     parser->body_limit(static_cast<std::uint64_t>(limits.body));
     header_used = 0;
     header_checked = false;
+    continue_due = false;
     facts = {};
     state = State::more;
   }
@@ -86,6 +106,7 @@ struct RequestReader::Impl {
     std::vector<std::string> codings;
     int hosts = 0;
     bool websocket = false;
+    std::optional<std::string> expect;
     for (const auto& field : m) {
       const std::string name(field.name_string());
       const std::string value(field.value());
@@ -110,6 +131,8 @@ struct RequestReader::Impl {
         f.request.content_type = value;
       } else if (key == "upgrade") {
         websocket = websocket || text::lower(value).find("websocket") != std::string::npos;
+      } else if (key == "expect") {
+        expect = lower_token(value);
       } else if (key == "x-forwarded-proto" && f.request.forwarded_proto.empty()) {
         f.request.forwarded_proto = value;
       }
@@ -125,6 +148,15 @@ struct RequestReader::Impl {
     }
     f.request.method = std::string(m.method_string());
     f.request.target = std::string(m.target());
+    if (!f.request.target.empty() && f.request.target.front() != '/' && f.request.target.find("://") != std::string::npos) {
+      std::string authority;
+      if (auto r = split_absolute(f.request.target, authority)) return r;
+      f.request.host = authority;  // RFC 9112 3.2.2: the target's authority, not the Host header
+    }
+    if (expect && f.version >= 11) {  // RFC 9110 10.1.1: HTTP/1.0's is ignored
+      if (*expect != "100-continue") return std::pair{417, "Expect: only 100-continue is understood"};
+      continue_due = !parser->is_done();
+    }
     f.keep_alive = m.keep_alive();
     f.head = m.method() == http::verb::head;
     f.upgrade = parser->upgrade() && websocket && m.method() == http::verb::get;
@@ -198,6 +230,13 @@ ReadRequest RequestReader::take() {
   r.request.body = i.parser->release().body();
   i.start();
   return r;
+}
+
+bool RequestReader::take_continue() {
+  Impl& i = *impl_;
+  if (!i.continue_due || i.state != State::more) return false;
+  i.continue_due = false;
+  return true;
 }
 
 int RequestReader::status() const { return impl_->status; }

@@ -14,6 +14,10 @@
 // (`xchunked`, `chunked, identity`, an empty list) 400. A body is never read as the next request:
 // after a refusal the connection is answered and closed. Trailers are read and dropped (they never
 // reach the request's headers). One Host header on HTTP/1.1, never two.
+// An absolute-form target (`GET http://host:port/path HTTP/1.1`, RFC 9112 3.2.2) is taken as its
+// path, its authority as the Host (the Host checks apply to it); another scheme or a user in the
+// authority is 400. `Expect: 100-continue` on HTTP/1.1 is answered with 100 Continue before the body
+// is read (take_continue()); any other expectation is 417.
 #pragma once
 #include <cstddef>
 #include <memory>
@@ -61,6 +65,9 @@ class RequestReader {
   State feed(std::string_view bytes = {});
   // After done: the request; the reader starts the next one with the bytes after it.
   ReadRequest take();
+  // Once per request, when its header asked `Expect: 100-continue` and the body is still to come:
+  // the transport writes "HTTP/1.1 100 Continue" before it reads on.
+  bool take_continue();
   // After refused: the status (400, 413, 414, 431, 501) and a sentence naming the part.
   int status() const;
   const std::string& why() const;

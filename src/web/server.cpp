@@ -11,9 +11,11 @@
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/asio/post.hpp>
 #include <boost/asio/steady_timer.hpp>
+#include <boost/asio/write.hpp>
 #include <boost/beast/core.hpp>
 #include <boost/beast/http.hpp>
 #include <boost/beast/websocket.hpp>
+#include <spdlog/fmt/fmt.h>
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
@@ -201,6 +203,11 @@ struct HttpSession : Conn, std::enable_shared_from_this<HttpSession> {
   std::array<char, 4096> scratch{};  // what one read brings, before the reader takes it
   http::response<http::string_body> res;
   std::size_t drained = 0;
+  // A streamed reply (Response::stream): what makes the next piece, and the piece being written.
+  std::function<std::string()> producer;
+  std::function<std::vector<std::pair<std::string, std::string>>()> trailers;
+  std::string piece;
+  bool chunked = false;
 
   void close() override {
     boost::system::error_code ec;
@@ -217,12 +224,22 @@ struct HttpSession : Conn, std::enable_shared_from_this<HttpSession> {
     if (server->closed) return;
     if (st == RequestReader::State::refused) return refuse_and_close(reader.status(), reader.why());
     if (st == RequestReader::State::done) return on_request(reader.take());
+    if (reader.take_continue()) return send_continue();
     const std::size_t n = std::min(reader.room(), scratch.size());
     stream.async_read_some(asio::buffer(scratch.data(), n), [self = shared_from_this()](boost::system::error_code ec,
                                                                                        std::size_t got) {
       if (self->server->closed) return;
       if (ec) return self->close();  // gone, or too slow: nothing to answer
       self->next(self->reader.feed(std::string_view(self->scratch.data(), got)));
+    });
+  }
+
+  // Expect: 100-continue (RFC 9110 10.1.1): the client waits for this before it sends the body.
+  void send_continue() {
+    static const std::string kContinue = "HTTP/1.1 100 Continue\r\n\r\n";
+    asio::async_write(stream, asio::buffer(kContinue), [self = shared_from_this()](boost::system::error_code ec, std::size_t) {
+      if (ec || self->server->closed) return self->close();
+      self->next(RequestReader::State::more);
     });
   }
 
@@ -246,7 +263,69 @@ struct HttpSession : Conn, std::enable_shared_from_this<HttpSession> {
     }
     const Response out = server->api.handle(in.request, std::chrono::steady_clock::now());
     if (out.status >= 400) server->note_refusal(slot->peer, out.status, out.why);
+    if (out.stream) return write_streamed(out, in.keep_alive, in.head, in.version);
     write(out, in.keep_alive, in.head);
+  }
+
+  // A reply made in pieces (Response::stream): the header, then each piece as the client takes the
+  // one before (chunked on HTTP/1.1, to the close on HTTP/1.0), each dropped once written; a client
+  // that takes none for the request timeout is dropped. HEAD: the header alone.
+  void write_streamed(const Response& out, bool keep_alive, bool head, unsigned version) {
+    chunked = version >= 11;
+    if (!chunked) keep_alive = false;
+    std::string h = fmt::format("HTTP/1.1 {} {}\r\nServer: trakbox\r\nContent-Type: {}\r\n", out.status,
+                                std::string(http::obsolete_reason(http::int_to_status(static_cast<unsigned>(out.status)))),
+                                out.content_type);
+    for (const auto& [k, v] : security_headers()) h += k + ": " + v + "\r\n";
+    for (const auto& [k, v] : out.headers) h += k + ": " + v + "\r\n";
+    h += keep_alive ? "Connection: keep-alive\r\n" : "Connection: close\r\n";
+    if (!head && chunked) {
+      h += "Transfer-Encoding: chunked\r\n";
+      if (out.trailers)
+        for (const auto& [k, v] : out.trailers()) h += "Trailer: " + k + "\r\n";
+    }
+    h += "\r\n";
+    producer = head ? nullptr : out.stream;
+    trailers = out.trailers;
+    piece = std::move(h);
+    send_piece(keep_alive, producer == nullptr);
+  }
+
+  void send_piece(bool keep_alive, bool last) {
+    stream.expires_after(server->o.request_timeout);
+    asio::async_write(stream, asio::buffer(piece), [self = shared_from_this(), keep_alive, last](boost::system::error_code ec,
+                                                                                                std::size_t) {
+      self->piece.clear();
+      self->piece.shrink_to_fit();  // dropped once written
+      if (ec || self->server->closed) return self->close();
+      if (last) {
+        self->producer = nullptr;
+        self->trailers = nullptr;
+        if (!keep_alive) return self->linger();
+        return self->read();
+      }
+      self->next_piece(keep_alive);
+    });
+  }
+
+  void next_piece(bool keep_alive) {
+    std::string body;
+    try {
+      body = producer();
+    } catch (const std::exception& e) {
+      spdlog::error("web: a streamed reply to {} stopped: {}", slot->peer, e.what());
+      return close();  // the client sees the reply cut (no last chunk): never a whole-looking part
+    }
+    if (body.empty()) {
+      if (!chunked) return close();  // HTTP/1.0: the end of the body is the close
+      piece = "0\r\n";
+      if (trailers)
+        for (const auto& [k, v] : trailers()) piece += k + ": " + v + "\r\n";
+      piece += "\r\n";
+      return send_piece(keep_alive, true);
+    }
+    piece = chunked ? fmt::format("{:x}\r\n{}\r\n", body.size(), body) : std::move(body);
+    send_piece(keep_alive, false);
   }
 
   void refuse_and_close(int status, const std::string& sentence) {

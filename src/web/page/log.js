@@ -111,7 +111,8 @@
       tr.appendChild(td);
       body.appendChild(tr);
     }
-    el("log-count").textContent = j.qsos.length + " today, " + j.summary.count + " in the log" +
+    // A day of more than a page (500) shows its first page and says there are more.
+    el("log-count").textContent = j.qsos.length + (j.next ? "+" : "") + " today, " + j.summary.count + " in the log" +
       (j.summary.queue ? ", " + j.summary.queue + " to upload" : "");
   }
 

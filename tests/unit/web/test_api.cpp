@@ -355,3 +355,44 @@ TEST_CASE("web: an outside client holds the antenna: 409 naming it, then confirm
   CHECK(w.model.sharing.reservations[0].note == "EME");
   CHECK(w.model.sharing.reservations[0].start_unix == 1893492000);
 }
+
+TEST_CASE("web: each endpoint its methods: 405 with that endpoint's Allow, 404 for no endpoint (issue 56, item 14)") {
+  Web w;
+  const auto ask = [&w](const std::string& method, const std::string& target) {
+    web::Request r;
+    r.method = method;
+    r.target = target;
+    r.host = "127.0.0.1:8073";
+    r.peer = "127.0.0.1";
+    r.content_type = "application/json";
+    r.body = "{}";
+    return w.api->handle(r, w.t);
+  };
+  const auto allow_of = [](const web::Response& r) {
+    for (const auto& [k, v] : r.headers)
+      if (k == "Allow") return v;
+    return std::string("(none)");
+  };
+  struct Case {
+    const char* method;
+    const char* target;
+    const char* allow;
+  };
+  for (const Case& c : {Case{"POST", "/api/v1/log.adi", "GET, HEAD"}, Case{"DELETE", "/api/v1/status", "GET, HEAD"},
+                        Case{"PUT", "/api/v1/log", "GET, HEAD, POST"}, Case{"GET", "/api/v1/track", "POST"},
+                        Case{"GET", "/api/v1/log/edit", "POST"}, Case{"POST", "/api/v1/sky", "GET, HEAD"},
+                        Case{"POST", "/app.js", "GET, HEAD"}, Case{"GET", "/logout", "POST"},
+                        Case{"OPTIONS", "/api/v1/passes?sat=ISS", "GET, HEAD"}, Case{"POST", "/api/v1/live", "GET"}}) {
+    CAPTURE(c.method);
+    CAPTURE(c.target);
+    const web::Response r = ask(c.method, c.target);
+    CHECK(r.status == 405);
+    CHECK(allow_of(r) == c.allow);
+    CHECK(Web::error_of(r).find(std::string("not allowed on ") + web::target_path(c.target)) != std::string::npos);
+  }
+  CHECK(ask("DELETE", "/api/v1/nothing").status == 404);
+  CHECK(ask("POST", "/nothing.html").status == 404);
+  CHECK(ask("GET", "/api/v1/live").status == 426);  // the WebSocket, asked without the upgrade
+  CHECK(web::allowed_methods("/api/v1/log") == std::optional<std::string>("GET, HEAD, POST"));
+  CHECK(!web::allowed_methods("/api/v1/logs"));
+}

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "logbook/adif.h"
 #include "support/sim_station.h"
 #include "support/temp_logbook.h"
 #include "test_paths.h"
@@ -41,6 +42,22 @@ struct LogWeb : testing::StationFixture, testing::TempLogbook {
     return api->handle(r, std::chrono::steady_clock::time_point(std::chrono::hours(1000)));
   }
 };
+}  // namespace
+
+namespace {
+// A streamed reply's body, its pieces joined (as the server sends them); the largest piece.
+std::pair<std::string, std::size_t> drain(const web::Response& r) {
+  REQUIRE(r.stream);
+  std::string body;
+  std::size_t largest = 0;
+  for (int guard = 0; guard < 100000; ++guard) {
+    const std::string piece = r.stream();
+    if (piece.empty()) break;
+    largest = std::max(largest, piece.size());
+    body += piece;
+  }
+  return {body, largest};
+}
 }  // namespace
 
 TEST_CASE("web: POST /api/v1/log stores the pass's QSO; GET lists it; edit keeps a version; delete marks") {
@@ -98,7 +115,58 @@ TEST_CASE("web: GET /api/v1/log.adi is the ADIF export with TQSL's name and the 
   const auto r = w.request("GET", "/api/v1/log.adi");
   REQUIRE(r.status == 200);
   CHECK(r.content_type == "text/plain; charset=us-ascii");
-  CHECK(r.body.find("<PROGRAMVERSION:3>9.9 <CREATED_TIMESTAMP:15>20261201 214420 <EOH>") != std::string::npos);
-  CHECK(r.body.find("<MODE:3>SSB <BAND:2>2m <FREQ:10>145.965000 <BAND_RX:4>70cm <FREQ_RX:10>435.640000 "
+  const std::string body = drain(r).first;
+  CHECK(body.find("<PROGRAMVERSION:3>9.9 <CREATED_TIMESTAMP:15>20261201 214420 <EOH>") != std::string::npos);
+  CHECK(body.find("<MODE:3>SSB <BAND:2>2m <FREQ:10>145.965000 <BAND_RX:4>70cm <FREQ_RX:10>435.640000 "
                     "<PROP_MODE:3>SAT <SAT_NAME:5>RS-44 <SAT_MODE:3>V/U") != std::string::npos);
+}
+
+TEST_CASE("web: GET /api/v1/log gives a page and the cursor of the next; the ADIF comes in pages (issue 56, item 4)") {
+  LogWeb w;
+  REQUIRE(tracker::StationOps(*w.station).track("RS-44").ok());
+  w.run(1);
+  std::vector<logbook::Qso> many;
+  for (int i = 0; i < 1203; ++i) {
+    tracker::LogRequest ask;
+    ask.call = "K1ABC";
+    logbook::Qso q = tracker::LogOps(*w.station).fill(ask).qso;
+    q.call = "K" + std::to_string(i % 10) + "A" + std::string(1, static_cast<char>('A' + i % 26)) +
+             std::string(1, static_cast<char>('A' + i / 26 % 26));
+    q.time_on += i / 3;  // three at each second: pages end inside a second
+    many.push_back(q);
+  }
+  REQUIRE(w.logging.book->import(many).added == 1203);
+  auto r = w.request("GET", "/api/v1/log");
+  REQUIRE(r.status == 200);
+  json j = json::parse(r.body);
+  CHECK(j["qsos"].size() == 500);  // the default page, not the whole log
+  CHECK(j["limit"] == 500);
+  CHECK(j["summary"]["count"] == 1203);
+  std::vector<std::int64_t> ids;
+  std::size_t pages = 0;
+  std::string target = "/api/v1/log?limit=1000";
+  for (;;) {
+    r = w.request("GET", target);
+    REQUIRE(r.status == 200);
+    j = json::parse(r.body);
+    ++pages;
+    CHECK(j["qsos"].size() <= 1000);
+    for (const auto& q : j["qsos"]) ids.push_back(q["id"].get<std::int64_t>());
+    if (j["next"].is_null()) break;
+    target = "/api/v1/log?limit=1000&after=" + j["next"].get<std::string>();
+  }
+  CHECK(pages == 2);
+  REQUIRE(ids.size() == 1203);
+  for (std::size_t i = 0; i < ids.size(); ++i) CHECK(ids[i] == static_cast<std::int64_t>(i + 1));
+  CHECK(w.request("GET", "/api/v1/log?limit=1001").status == 400);
+  CHECK(w.request("GET", "/api/v1/log?limit=0").status == 400);
+  CHECK(w.request("GET", "/api/v1/log?after=12").status == 400);
+  // The export: the same log in pieces of at most a page, joined equal to write_adif's whole export.
+  r = w.request("GET", "/api/v1/log.adi");
+  REQUIRE(r.status == 200);
+  CHECK(r.body.empty());
+  const auto [adif, largest] = drain(r);
+  CHECK(adif == logbook::write_adif(w.logging.book->list(0), "9.9", 1796161460).text);
+  CHECK(largest < 500 * 1024);
+  CHECK(r.trailers().at(0) == std::pair<std::string, std::string>{"X-Trakbox-Warnings", "0"});
 }

@@ -168,3 +168,41 @@ TEST_CASE("refusals: one line per address a minute, an IPv6 /64 as one, with the
   CHECK(!small.note("192.0.2.4", 401, t0));  // also "(others)": the table does not grow
   CHECK(small.size() == 3);
 }
+
+TEST_CASE("http reader: an absolute-form target is its path, its authority the Host (issue 56, item 15)") {
+  web::RequestReader r;
+  CHECK(feed(r, "GET http://127.0.0.1:8073/api/v1/status?x=1 HTTP/1.1\r\nHost: other.example\r\n\r\n").state == State::done);
+  web::ReadRequest a = r.take();
+  CHECK(a.request.target == "/api/v1/status?x=1");
+  CHECK(a.request.host == "127.0.0.1:8073");  // RFC 9112 3.2.2: the authority, so the Host check sees it
+  CHECK(feed(r, "GET HTTP://evil.example HTTP/1.1\r\nHost: 127.0.0.1:8073\r\n\r\n").state == State::done);
+  a = r.take();
+  CHECK(a.request.target == "/");
+  CHECK(a.request.host == "evil.example");
+  web::RequestReader user;
+  CHECK(feed(user, "GET http://bob@127.0.0.1:8073/ HTTP/1.1\r\nHost: 127.0.0.1:8073\r\n\r\n").state == State::refused);
+  CHECK(user.status() == 400);
+  web::RequestReader ftp;
+  CHECK(feed(ftp, "GET ftp://127.0.0.1:8073/ HTTP/1.1\r\nHost: 127.0.0.1:8073\r\n\r\n").state == State::refused);
+  CHECK(ftp.status() == 400);
+}
+
+TEST_CASE("http reader: Expect: 100-continue asks for the interim answer once; another expectation is 417") {
+  web::RequestReader r;
+  const std::string head = kHead + "Content-Type: application/json\r\nContent-Length: 8\r\nExpect: 100-continue\r\n\r\n";
+  CHECK(feed(r, head).state == State::more);
+  CHECK(r.take_continue());
+  CHECK(!r.take_continue());  // once
+  CHECK(feed(r, "{\"a\":12}").state == State::done);
+  CHECK(r.take().request.body == "{\"a\":12}");
+  // The body sent with the header (the client did not wait): nothing to answer before it.
+  CHECK(feed(r, head + "{\"a\":12}").state == State::done);
+  CHECK(!r.take_continue());
+  r.take();
+  web::RequestReader odd;
+  CHECK(feed(odd, kHead + "Expect: 200-ok\r\nContent-Length: 0\r\n\r\n").state == State::refused);
+  CHECK(odd.status() == 417);
+  web::RequestReader old;  // HTTP/1.0's expectation is ignored (RFC 9110 10.1.1)
+  CHECK(feed(old, "POST /api/v1/rotor HTTP/1.0\r\nExpect: 100-continue\r\nContent-Length: 2\r\n\r\n").state == State::more);
+  CHECK(!old.take_continue());
+}
