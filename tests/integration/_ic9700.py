@@ -43,11 +43,11 @@ def from_bcd_le(b):
 
 
 class IC9700(PtyRadio):
-    def __init__(self, path, echo=False, refuse_tone=False, sat_answer="fb", addr=ADDR, xvtr=True):
+    def __init__(self, path, echo=False, refuse_tone=False, sat_answer="fb", addr=None, xvtr=True):
         self.echo = echo
         # Another CI-V radio with the same commands (IC-905 ACh, IC-7300 94h, IC-7100 88h,
         # IC-706MKIIG 58h); xvtr=False: an IC-905 without its transverter refuses (FA) 10 GHz.
-        self.addr = addr
+        self.own_addr = addr
         self.xvtr = xvtr
         self.refuse_tone = refuse_tone
         # 16 5A answered FB, or as Hamlib's simic9700 does: "data" (the value echoed, not taken)
@@ -61,6 +61,11 @@ class IC9700(PtyRadio):
         self.frames = []          # (time, bytes) of every frame the controller sent
         self.buf = b""
         super().__init__(path)
+
+    @property
+    def addr(self):
+        """The given address, else the module's ADDR as it is at the time (connect_doc.py sets it)."""
+        return ADDR if self.own_addr is None else self.own_addr
 
     def answer(self, ok):
         self.write(bytes([0xFE, 0xFE, CTRL, self.addr, 0xFB if ok else 0xFA, 0xFD]))
