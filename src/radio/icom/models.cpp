@@ -46,13 +46,13 @@ MakeRadio make_icom(const RadioModel& m, const RadioSpec& spec, const RadioConfi
   return {make_icom_radio(spec.device, icom_options(m, spec, config, t, role), t.worker), {}};
 }
 
-constexpr Hz MHz = 1'000'000;
+constexpr Hz MHz = 1000000;
 // The bands each newer row tunes (its receive coverage; the manuals' specifications).
 constexpr HzRange kIc905Bands[] = {{144 * MHz, 148 * MHz},   {420 * MHz, 450 * MHz},     {1240 * MHz, 1300 * MHz},
                                    {2300 * MHz, 2450 * MHz}, {5650 * MHz, 5925 * MHz},   {10000 * MHz, 10500 * MHz}};
-constexpr HzRange kIc7300Bands[] = {{30'000, 74'800'000}};
+constexpr HzRange kIc7300Bands[] = {{30 * MHz / 1000, 748 * MHz / 10}};
 // IC-7100 and IC-706MKIIG: 0.03-199.999 MHz and 400-470 MHz (no 23 cm).
-constexpr HzRange kHfVuBands[] = {{30'000, 199'999'999}, {400 * MHz, 470 * MHz}};
+constexpr HzRange kHfVuBands[] = {{30 * MHz / 1000, 200 * MHz - 1}, {400 * MHz, 470 * MHz}};
 
 }  // namespace
 
@@ -89,7 +89,7 @@ std::span<const RadioModel> icom_rows() {
        .note = "one link: pair it with --uplink-radio", .make = make_icom},
       {.name = "ic905", .label = "Icom IC-905", .form = SpecForm::device_baud, .protocol = Protocol::icom,
        .civ_address = 0xAC, .baud = 115200, .main_link = Link::downlink, .satmode = SatCommand::icom_16_5a,
-       .bands = kIc905Bands, .xvtr_from = 10'000 * MHz,
+       .bands = kIc905Bands, .xvtr_from = 10000 * MHz,
        .caps = {.links = 2, .satellite_mode = true, .reads = true, .ctcss = true, .step_hz = 1},
        .note = "2 m to 5.7 GHz; 10 GHz (6-byte) with :xvtr; Main down, Sub up", .make = make_icom},
       {.name = "ic7300", .label = "Icom IC-7300", .form = SpecForm::device_baud, .protocol = Protocol::icom,

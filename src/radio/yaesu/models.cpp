@@ -39,13 +39,14 @@ MakeRadio make_yaesu_family(const RadioModel& m, const RadioSpec& spec, const Ra
 
 // FT-857/857D and FT-897/897D: 0.1-56, 76-108 (receive), 118-164 and 420-470 MHz (the manuals'
 // specifications): no 23 cm.
+constexpr Hz kKHz = 1000, kMHz = 1000 * kKHz;
 constexpr HzRange kFt857Bands[] = {
-    {100'000, 56'000'000}, {76'000'000, 108'000'000}, {118'000'000, 164'000'000}, {420'000'000, 470'000'000}};
+    {100 * kKHz, 56 * kMHz}, {76 * kMHz, 108 * kMHz}, {118 * kMHz, 164 * kMHz}, {420 * kMHz, 470 * kMHz}};
 
 // The ASCII family: FT-991/991A 0.03-56, 118-164 (receive) and 420-470 MHz; FTX-1 the same bands;
 // FT-710 and FTdx10 0.03-75 MHz (HF, 6 m, 4 m).
-constexpr HzRange kFt991Bands[] = {{30'000, 56'000'000}, {118'000'000, 164'000'000}, {420'000'000, 470'000'000}};
-constexpr HzRange kHf6Bands[] = {{30'000, 75'000'000}};
+constexpr HzRange kFt991Bands[] = {{30 * kKHz, 56 * kMHz}, {118 * kMHz, 164 * kMHz}, {420 * kMHz, 470 * kMHz}};
+constexpr HzRange kHf6Bands[] = {{30 * kKHz, 75 * kMHz}};
 
 MakeRadio make_newcat(const RadioModel& m, const RadioSpec& spec, const RadioConfig&, const DriverTiming& t, RadioRole role) {
   NewcatOptions o;
