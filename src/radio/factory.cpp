@@ -71,6 +71,12 @@ RadioSpecParse parse_radio_spec(std::string_view text, std::string_view option) 
     case SpecForm::device_baud: {
       const std::string usage = "expected " + spec_form(*m) + ", e.g. " + kind + ":/dev/ttyUSB0";
       std::vector<std::string> parts = fields(rest);
+      if (!parts.empty() && parts.back() == "xvtr") {
+        if (m->xvtr_from == 0)
+          return error(quoted + "\"xvtr\": the " + std::string(m->label) + " has no transverter band trakbox drives");
+        spec.transverter = true;
+        parts.pop_back();
+      }
       if (!parts.empty() && (parts.back() == "maindown" || parts.back() == "mainup")) {
         if (m->satmode == SatCommand::kenwood_sa && parts.back() == "mainup")
           return error(quoted + "\"mainup\": the " + std::string(m->label) +

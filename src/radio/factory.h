@@ -2,7 +2,8 @@
 // `trakbox --radio list`):
 //   sim | simulated | (empty)          the simulated radio (default)
 //   MODEL:DEVICE[:BAUD][:maindown|:mainup]   a model of the registry (ic9700, ft847, ts2000 ...)
-//                                      with its defaults (CI-V address, speed, satellite mode)
+//                                      with its defaults (CI-V address, speed, satellite mode);
+//                                      ic905:...[:xvtr] with its 10 GHz transverter
 //   icom:DEVICE                        Icom CI-V, 1200 8N2, addresses from menu 6-7
 //   kenwood:DEVICE                     Kenwood TS-790/711/811, 4800 8N2
 //   yaesu:DEVICE                       Yaesu FT-736, 4800 8N2
@@ -31,6 +32,7 @@ struct RadioSpec {
   std::string name = "sim";        // the registry entry (radio/registry.h): "ic9700", "icom", ...;
                                    // its row says the protocol and everything else
   std::optional<Link> main_link;   // :maindown / :mainup: overrides the model's satellite-mode band
+  bool transverter = false;        // :xvtr: the IC-905's 10 GHz transverter is fitted (RadioModel::xvtr_from)
   std::string device;          // icom/kenwood/yaesu/cat/hamlib
   int model = 0;               // hamlib
   int baud = 0;                // hamlib, registry models (0: the default)

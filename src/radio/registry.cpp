@@ -74,7 +74,8 @@ std::string spec_form(const RadioModel& m) {
     case SpecForm::none: return n;
     case SpecForm::device: return n + ":DEVICE";
     case SpecForm::device_baud:
-      return n + ":DEVICE[:BAUD]" + (m.caps.satellite_mode && m.protocol == Protocol::icom ? "[:maindown|:mainup]" : "");
+      return n + ":DEVICE[:BAUD]" + (m.caps.satellite_mode && m.protocol == Protocol::icom ? "[:maindown|:mainup]" : "") +
+             (m.xvtr_from ? "[:xvtr]" : "");
     case SpecForm::hamlib: return n + ":MODEL:DEVICE[:BAUD][:split|:mainsub]";
     case SpecForm::rigctld: return n + "[:HOST[:PORT]][:split|:mainsub]";
     case SpecForm::receiver: return n + "[:HOST[:PORT]]";

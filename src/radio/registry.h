@@ -40,7 +40,7 @@ enum class SatCommand {
 };
 
 // The protocol a model speaks (its driver).
-enum class Protocol { simulated, icom, kenwood, ft736, ft847, ft817, cat, hamlib, rigctld, receiver };
+enum class Protocol { simulated, icom, kenwood, ft736, ft847, ft817, newcat, cat, hamlib, rigctld, receiver };
 
 struct RadioCaps {
   int links = 1;                 // 2: one radio carries downlink and uplink
@@ -55,6 +55,13 @@ struct RadioCaps {
 // What a radio carries: both links (one radio), or one of two (--uplink-radio): a satellite rig
 // that is one of two is driven as a plain single-link radio on its current band, no satellite mode.
 enum class RadioRole { both, downlink, uplink };
+
+// A stretch of the spectrum a radio tunes, [from, to] in Hz.
+struct HzRange {
+  Hz from = 0;
+  Hz to = 0;
+  bool contains(Hz hz) const { return hz >= from && hz <= to; }
+};
 
 struct RadioModel;
 using RadioFactory = MakeRadio (*)(const RadioModel& model, const RadioSpec& spec, const RadioConfig& config,
@@ -73,6 +80,12 @@ struct RadioModel {
   Link main_link = Link::uplink;
   SatCommand satmode = SatCommand::none;
   bool four_byte_frequency = false;   // IC-820H/821H
+  // The bands the radio tunes (empty: any frequency its CAT format carries). A frequency outside
+  // them is a band it lacks: learnt once (LinkError::Action::lacks, "no 70 cm"), never a fault.
+  std::span<const HzRange> bands{};
+  // IC-905: from here up (its 10 GHz band) frequencies are 6 BCD bytes, and the band is there only
+  // with Icom's transverter, said with `:xvtr` in the spec. 0: no such band.
+  Hz xvtr_from = 0;
   RadioCaps caps;
   int hamlib_model = 0;          // Hamlib's number for the same radio (Hamlib 4.5), 0: none
   int port = 0;                  // a network radio's TCP port unless the spec gives one

@@ -50,6 +50,12 @@ class FT847(PtyRadio):
         if op in (0x4E, 0x8E):
             self.satellite = op == 0x4E
             return
+        if op == 0xBB and self.cat:   # the FT-817 family's EEPROM read (Hamlib asks it): two bytes, zero
+            self.write(b"\x00\x00")
+            return
+        if op in (0xE7, 0xF7) and self.cat:   # RX / TX status: nothing received, PTT off
+            self.write(b"\x00" if op == 0xE7 else b"\x80")
+            return
         vfo, cmd = VFO.get(op & 0xF0), op & 0x0F
         if vfo is None or not self.cat:
             return
@@ -63,6 +69,7 @@ class FT847(PtyRadio):
             self.tone[vfo] = c[0]
         elif cmd == 0x0A:
             self.encoder[vfo] = c[0] == 0x4A
+
 
     def feed(self, chunk):
         self.buf += chunk

@@ -7,7 +7,8 @@ Frames FE FE <to> <from> <cmd> [data] FD; the radio is at A2h, the controller E0
 FB (OK) / FA (NG); 07 D0 / D1 select Main / Sub; 05 / 06 set the selected band's frequency / mode;
 03 answers the selected band's frequency (5 BCD bytes, least significant first), 1C 03 the transmit
 frequency (Sub in satellite mode); 16 5A 01 / 00
-satellite mode; 1B 00 <3 BCD> the tone, 16 42 01 / 00 TONE. With echo (a CI-V bus) each frame comes
+satellite mode; 1B 00 <3 BCD> the tone, 16 42 01 / 00 TONE; 04 the mode, 25 / 26 00|01 the selected
+or unselected VFO's frequency / mode and 0F split (off), as Hamlib asks newer rigs. With echo (a CI-V bus) each frame comes
 back first; without (USB, Echo Back OFF) only the answer. turn() moves a dial as the knob would and
 sends the transceive frame FE FE 00 A2 00 <freq> FD, which does not say which band moved.
 """
@@ -29,6 +30,11 @@ def bcd_le(hz, n=5):
     return bytes(out)
 
 
+def width(hz):
+    """CI-V frequency bytes: 6 on the IC-905's 10 GHz band (12 digits), 5 below."""
+    return 6 if hz >= 10_000_000_000 else 5
+
+
 def from_bcd_le(b):
     v = 0
     for x in reversed(b):
@@ -37,8 +43,12 @@ def from_bcd_le(b):
 
 
 class IC9700(PtyRadio):
-    def __init__(self, path, echo=False, refuse_tone=False, sat_answer="fb"):
+    def __init__(self, path, echo=False, refuse_tone=False, sat_answer="fb", addr=None, xvtr=True):
         self.echo = echo
+        # Another CI-V radio with the same commands (IC-905 ACh, IC-7300 94h, IC-7100 88h,
+        # IC-706MKIIG 58h); xvtr=False: an IC-905 without its transverter refuses (FA) 10 GHz.
+        self.own_addr = addr
+        self.xvtr = xvtr
         self.refuse_tone = refuse_tone
         # 16 5A answered FB, or as Hamlib's simic9700 does: "data" (the value echoed, not taken)
         self.sat_answer = sat_answer
@@ -52,13 +62,18 @@ class IC9700(PtyRadio):
         self.buf = b""
         super().__init__(path)
 
+    @property
+    def addr(self):
+        """The given address, else the module's ADDR as it is at the time (connect_doc.py sets it)."""
+        return ADDR if self.own_addr is None else self.own_addr
+
     def answer(self, ok):
-        self.write(bytes([0xFE, 0xFE, CTRL, ADDR, 0xFB if ok else 0xFA, 0xFD]))
+        self.write(bytes([0xFE, 0xFE, CTRL, self.addr, 0xFB if ok else 0xFA, 0xFD]))
 
     def turn(self, band, delta):
         with self.lock:
             self.hz[band] += delta
-            self.write(bytes([0xFE, 0xFE, 0x00, ADDR, 0x00]) + bcd_le(self.hz[band]) + b"\xfd")
+            self.write(bytes([0xFE, 0xFE, 0x00, self.addr, 0x00]) + bcd_le(self.hz[band], width(self.hz[band])) + b"\xfd")
 
     def power(self, on):
         """Switched off, then on again: a radio switched on comes up out of satellite mode."""
@@ -73,13 +88,16 @@ class IC9700(PtyRadio):
             return
         if self.echo:
             self.write(f)
-        if len(f) < 6 or f[2] != ADDR:
+        if len(f) < 6 or f[2] != self.addr:
             return
         cmd, d = f[4], f[5:-1]
         band = self.selected
-        if cmd == 0x05 and len(d) == 5:
-            self.hz[band] = from_bcd_le(d)
-            self.answer(True)
+        if cmd == 0x05 and len(d) in (5, 6):
+            hz = from_bcd_le(d)
+            ok = len(d) == width(hz) and (self.xvtr or hz < 10_000_000_000)
+            if ok:
+                self.hz[band] = hz
+            self.answer(ok)
         elif cmd == 0x06 and d:
             self.mode[band] = d[0]
             self.answer(True)
@@ -87,12 +105,29 @@ class IC9700(PtyRadio):
             self.selected = "main" if d[0] == 0xD0 else "sub"
             self.answer(True)
         elif cmd == 0x03 and not d:
-            self.write(bytes([0xFE, 0xFE, CTRL, ADDR, 0x03]) + bcd_le(self.hz[band]) + b"\xfd")
+            self.write(bytes([0xFE, 0xFE, CTRL, self.addr, 0x03]) + bcd_le(self.hz[band], width(self.hz[band])) + b"\xfd")
+        elif cmd == 0x04 and not d:   # the selected band's mode and filter (Hamlib asks it before a set)
+            self.write(bytes([0xFE, 0xFE, CTRL, self.addr, 0x04, self.mode[band] or 0x01, 0x01, 0xFD]))
+        elif cmd in (0x25, 0x26) and d and d[0] in (0, 1):   # newer rigs' selected (00) / unselected VFO
+            other = band if d[0] == 0 else ("sub" if band == "main" else "main")
+            if len(d) == 1:
+                value = bcd_le(self.hz[other], width(self.hz[other])) if cmd == 0x25 else bytes([self.mode[other] or 1, 0, 1])
+                self.write(bytes([0xFE, 0xFE, CTRL, self.addr, cmd, d[0]]) + value + b"\xfd")
+            else:
+                if cmd == 0x25:
+                    self.hz[other] = from_bcd_le(d[1:])
+                else:
+                    self.mode[other] = d[1]
+                self.answer(True)
+        elif cmd == 0x1A and d == b"\x06":   # data mode: off
+            self.write(bytes([0xFE, 0xFE, CTRL, self.addr, 0x1A, 0x06, 0x00, 0x00, 0xFD]))
+        elif cmd == 0x0F and not d:   # split: off
+            self.write(bytes([0xFE, 0xFE, CTRL, self.addr, 0x0F, 0x00, 0xFD]))
         elif cmd == 0x1C and d == b"\x03":   # the transmit frequency: Sub in satellite mode
             tx = "sub" if self.satellite else band
-            self.write(bytes([0xFE, 0xFE, CTRL, ADDR, 0x1C, 0x03]) + bcd_le(self.hz[tx]) + b"\xfd")
+            self.write(bytes([0xFE, 0xFE, CTRL, self.addr, 0x1C, 0x03]) + bcd_le(self.hz[tx], width(self.hz[tx])) + b"\xfd")
         elif cmd == 0x16 and len(d) == 2 and d[0] == 0x5A and self.sat_answer == "data":
-            self.write(bytes([0xFE, 0xFE, CTRL, ADDR, 0x16, 0x5A, 0x00, 0xFD]))
+            self.write(bytes([0xFE, 0xFE, CTRL, self.addr, 0x16, 0x5A, 0x00, 0xFD]))
         elif cmd == 0x16 and len(d) == 2 and d[0] == 0x5A:
             self.satellite = d[1] == 1
             self.answer(True)

@@ -16,6 +16,11 @@ Bytes frame(std::uint8_t to, std::uint8_t from, std::uint8_t cmd, std::span<cons
 }
 
 Bytes set_frequency(std::uint8_t to, Hz hz, FrequencyWidth width, std::uint8_t from) {
+  if (width == FrequencyWidth::five_or_six) {
+    require_frequency(hz, pow10(12), "Icom CI-V (IC-905)");
+    const int n = hz >= kSixBytesFrom ? 6 : 5;
+    return frame(to, from, kCmdSetFrequency, bcd_little_endian(static_cast<std::uint64_t>(hz), n));
+  }
   require_frequency(hz, pow10(10), "Icom CI-V");
   const int n = width == FrequencyWidth::five_bytes ? 5 : 4;
   // The 4-byte form carries the low eight digits; the radio knows its own band.
@@ -98,13 +103,13 @@ std::optional<Frame> decode_frame(std::span<const std::uint8_t> b) {
 }
 
 std::optional<Hz> decode_frequency(const Frame& f) {
-  if (f.cmd == 0x1C && f.data.size() == 6 && f.data[0] == 0x03) {
+  if (f.cmd == 0x1C && (f.data.size() == 6 || f.data.size() == 7) && f.data[0] == 0x03) {
     auto v = decode_bcd_little_endian(std::span(f.data).subspan(1));
     if (!v) return std::nullopt;
     return static_cast<Hz>(*v);
   }
   if (f.cmd != kCmdSetFrequency && f.cmd != 0x03 && f.cmd != 0x00) return std::nullopt;
-  if (f.data.size() != 5 && f.data.size() != 4) return std::nullopt;
+  if (f.data.size() < 4 || f.data.size() > 6) return std::nullopt;
   auto v = decode_bcd_little_endian(f.data);
   if (!v) return std::nullopt;
   return static_cast<Hz>(*v);

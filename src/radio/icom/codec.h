@@ -34,7 +34,10 @@ inline constexpr std::uint8_t kIc271 = 0x20, kIc275 = 0x10, kIc375 = 0x12, kIc47
                               kIc475 = 0x14, kIc970 = 0x2E, kIc820 = 0x42, kIc821 = 0x4C,
                               kIc910 = 0x60;
 
-enum class FrequencyWidth { five_bytes, four_bytes };  // 4: IC-820H/821H (no 100 MHz digit)
+// 4: IC-820H/821H (no 100 MHz digit). five_or_six: the IC-905, whose 10 GHz band takes 6 bytes
+// (12 digits, 100 GHz down to 1 Hz) and every band below it 5.
+enum class FrequencyWidth { five_bytes, four_bytes, five_or_six };
+inline constexpr Hz kSixBytesFrom = 10'000'000'000;   // five_or_six: 6 bytes from 10 GHz up
 enum class Band { main, sub };
 enum class Vfo { a, b };
 
@@ -68,7 +71,8 @@ struct Frame {
 };
 // Exactly one complete frame (FE FE ... FD); nullopt otherwise.
 std::optional<Frame> decode_frame(std::span<const std::uint8_t> bytes);
-// The frequency of a 05 (set), 03/00 (read / transceive) or 1C 03 (transmit frequency) frame.
+// The frequency of a 05 (set), 03/00 (read / transceive) or 1C 03 (transmit frequency) frame:
+// 4, 5 or 6 (IC-905, 10 GHz) BCD bytes.
 std::optional<Hz> decode_frequency(const Frame& f);
 std::optional<Mode> decode_mode(const Frame& f);
 

@@ -1,5 +1,6 @@
 #include "radio/icom/link.h"
 
+#include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
 
 #include <thread>
@@ -48,6 +49,7 @@ void IcomLink::open() {
   satellite_asked_ = satellite_on_ = band_refused_ = tx_read_refused_ = silent_ = woke_ = vfo_ab_ = false;
   set_hz_[0].reset();
   set_hz_[1].reset();
+  off_band_[0] = off_band_[1] = xvtr_refused_ = false;
 }
 
 void IcomLink::close() noexcept {
@@ -242,12 +244,37 @@ void IcomLink::select_band(Link l) {
   }
 }
 
+// A band the radio lacks is a limit learnt once, not a fault: the IC-7300 has no 70 cm, the IC-905
+// no 10 GHz without its transverter. Its link is not read while it is there (the dial is elsewhere).
+void IcomLink::require_band(Link l, Hz hz) {
+  bool& off = off_band_[l == Link::downlink ? 0 : 1];
+  off = true;
+  const std::string radio = opt_.model.empty() ? std::string("this Icom radio") : "the " + opt_.model;
+  if (opt_.xvtr_from > 0 && hz >= opt_.xvtr_from && (!opt_.transverter || xvtr_refused_))
+    throw LinkError("no " + band_name(hz),
+                    fmt::format("{} tunes {} only with its transverter ({}): the {} at {} Hz is not sent", radio,
+                                band_name(hz), xvtr_refused_ ? "refused until the next connect" : "--radio ...:xvtr",
+                                to_string(l), hz));
+  link::require_band(radio, opt_.bands, l, hz);
+  off = false;
+}
+
 void IcomLink::set_frequency(Link l, Hz hz) {
   const std::uint8_t to = address(l);
+  require_band(l, hz);
   const Bytes frame = icom::set_frequency(to, hz, opt_.width);
   ensure_satellite_mode();
   select_band(l);
-  transact(frame, expects_reply(to));
+  try {
+    transact(frame, expects_reply(to));
+  } catch (const LinkError& e) {
+    // The IC-905 refuses its 10 GHz band when the transverter is absent or off (FA): a limit.
+    if (e.action != Action::drop || opt_.xvtr_from == 0 || hz < opt_.xvtr_from) throw;
+    off_band_[l == Link::downlink ? 0 : 1] = true;
+    xvtr_refused_ = true;   // not sent again until the next connect
+    throw LinkError("no " + band_name(hz), fmt::format("{}; its transverter is absent or off: the {} band is left alone",
+                                                       e.what(), band_name(hz)));
+  }
   set_hz_[l == Link::downlink ? 0 : 1] = hz;
 }
 
@@ -263,6 +290,8 @@ void IcomLink::set_mode(Link l, Mode mode) {
 Hz IcomLink::read_frequency(Link l) {
   const std::uint8_t to = address(l);
   if (!can_read(l)) return RadioLink::read_frequency(l);
+  if (off_band_[l == Link::downlink ? 0 : 1])   // its frequency was not sent: nothing to follow
+    throw LinkError(Action::drop, std::string(to_string(l)) + " not read: its band is one the radio lacks");
   ensure_satellite_mode();
   const icom::Band band = l == opt_.main_link ? icom::Band::main : icom::Band::sub;   // (not with VFO A/B)
   const bool tx = opt_.satellite_cmd != 0 && l == Link::uplink && opt_.reads_tx_1c03 && selected_ != band &&

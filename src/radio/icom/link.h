@@ -6,7 +6,9 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
+#include "radio/registry.h"
 #include "radio/serial.h"
 #include "radio/worker.h"
 #include "radio/icom/codec.h"
@@ -40,6 +42,12 @@ struct IcomOptions {
   bool reads_tx_1c03 = false;
   bool ctcss = false;            // 1B 00 tone and 16 42 TONE on the uplink's band
   std::string model;             // "IC-9700" in messages ("" for the family form)
+  // The bands the radio tunes (empty: not checked): a frequency outside them is a band it lacks,
+  // learnt once (LinkError::Action::lacks), as is the IC-905's 10 GHz band (from xvtr_from) when
+  // its transverter is not fitted or the radio refuses it.
+  std::vector<HzRange> bands;
+  Hz xvtr_from = 0;
+  bool transverter = false;
   static IcomOptions from(const RadioConfig& c);
 };
 
@@ -73,6 +81,7 @@ class IcomLink final : public RadioLink {
   std::uint8_t address(Link l) const { return l == Link::downlink ? opt_.rx_address : opt_.tx_address; }
   bool expects_reply(std::uint8_t to) const { return opt_.expect_reply && to != icom::kBroadcast; }
   void select_band(Link l);
+  void require_band(Link l, Hz hz);   // throws LinkError(lacks) for a band the radio lacks
   void ensure_satellite_mode();
   void radio_silent();
   std::string who(std::uint8_t to) const;
@@ -90,6 +99,8 @@ class IcomLink final : public RadioLink {
   bool vfo_ab_ = false;                  // 07 D0/D1 refused or not followed: VFO A/B (07 00/01) instead
   bool band_refused_ = false;            // ... and VFO A/B refused too: no select until a connect
   std::optional<Hz> set_hz_[2];          // the frequency each link was last set to (acknowledged)
+  bool off_band_[2] = {false, false};    // each link's last frequency was on a band it lacks (not read)
+  bool xvtr_refused_ = false;            // the IC-905 refused its 10 GHz band (FA): not sent until a connect
   bool tx_read_refused_ = false;         // 1C 03 refused: the uplink read on its band instead
   bool silent_ = false;                  // the last exchange got no answer at all (none since)
   bool woke_ = false;                    // ... and then it answered (for answered_again)

@@ -1,4 +1,5 @@
-// The Icom family: menu 6-7's CI-V form and the IC-9700, IC-9100, IC-910H, IC-821H, IC-275, IC-970, IC-705: the registry's rows of this family (radio/registry.h) and the factories they name.
+// The Icom family: menu 6-7's CI-V form and the IC-9700, IC-9100, IC-910H, IC-821H, IC-275, IC-970, IC-705,
+// IC-905, IC-7300, IC-7100, IC-706MKIIG: the registry's rows of this family (radio/registry.h) and the factories they name.
 #include "radio/factory.h"
 #include "radio/registry.h"
 #include "radio/registry_rows.h"
@@ -25,6 +26,10 @@ IcomOptions icom_options(const RadioModel& m, const RadioSpec& spec, const Radio
     o.reads_tx_1c03 = m.caps.reads_tx_1c03;
     o.ctcss = m.caps.ctcss;
     o.model = std::string(m.label.substr(m.label.find(' ') + 1));
+    o.bands.assign(m.bands.begin(), m.bands.end());
+    o.xvtr_from = m.xvtr_from;
+    o.transverter = spec.transverter;
+    if (m.xvtr_from > 0) o.width = icom::FrequencyWidth::five_or_six;
     if (role == RadioRole::both && m.caps.links == 2) {
       o.main_link = spec.main_link.value_or(m.main_link);
       if (m.satmode == SatCommand::icom_16_5a) o.satellite_cmd = 0x16, o.satellite_sub = 0x5A;
@@ -40,6 +45,14 @@ IcomOptions icom_options(const RadioModel& m, const RadioSpec& spec, const Radio
 MakeRadio make_icom(const RadioModel& m, const RadioSpec& spec, const RadioConfig& config, const DriverTiming& t, RadioRole role) {
   return {make_icom_radio(spec.device, icom_options(m, spec, config, t, role), t.worker), {}};
 }
+
+constexpr Hz MHz = 1000000;
+// The bands each newer row tunes (its receive coverage; the manuals' specifications).
+constexpr HzRange kIc905Bands[] = {{144 * MHz, 148 * MHz},   {420 * MHz, 450 * MHz},     {1240 * MHz, 1300 * MHz},
+                                   {2300 * MHz, 2450 * MHz}, {5650 * MHz, 5925 * MHz},   {10000 * MHz, 10500 * MHz}};
+constexpr HzRange kIc7300Bands[] = {{30 * MHz / 1000, 748 * MHz / 10}};
+// IC-7100 and IC-706MKIIG: 0.03-199.999 MHz and 400-470 MHz (no 23 cm).
+constexpr HzRange kHfVuBands[] = {{30 * MHz / 1000, 200 * MHz - 1}, {400 * MHz, 470 * MHz}};
 
 }  // namespace
 
@@ -74,6 +87,20 @@ std::span<const RadioModel> icom_rows() {
       {.name = "ic705", .label = "Icom IC-705", .form = SpecForm::device_baud, .protocol = Protocol::icom,
        .civ_address = 0xA4, .baud = 19200, .caps = {.reads = true, .ctcss = true, .step_hz = 1}, .hamlib_model = 3085,
        .note = "one link: pair it with --uplink-radio", .make = make_icom},
+      {.name = "ic905", .label = "Icom IC-905", .form = SpecForm::device_baud, .protocol = Protocol::icom,
+       .civ_address = 0xAC, .baud = 115200, .main_link = Link::downlink, .satmode = SatCommand::icom_16_5a,
+       .bands = kIc905Bands, .xvtr_from = 10000 * MHz,
+       .caps = {.links = 2, .satellite_mode = true, .reads = true, .ctcss = true, .step_hz = 1},
+       .note = "2 m to 5.7 GHz; 10 GHz (6-byte) with :xvtr; Main down, Sub up", .make = make_icom},
+      {.name = "ic7300", .label = "Icom IC-7300", .form = SpecForm::device_baud, .protocol = Protocol::icom,
+       .civ_address = 0x94, .baud = 115200, .bands = kIc7300Bands, .caps = {.reads = true, .ctcss = true, .step_hz = 1},
+       .hamlib_model = 3073, .note = "HF/6 m, one link: AO-07 Mode A's 10 m downlink", .make = make_icom},
+      {.name = "ic7100", .label = "Icom IC-7100", .form = SpecForm::device_baud, .protocol = Protocol::icom,
+       .civ_address = 0x88, .baud = 19200, .bands = kHfVuBands, .caps = {.reads = true, .ctcss = true, .step_hz = 1},
+       .hamlib_model = 3070, .note = "HF/6/2 m/70 cm, one link (one VFO per leg)", .make = make_icom},
+      {.name = "ic706mkiig", .label = "Icom IC-706MKIIG", .form = SpecForm::device_baud, .protocol = Protocol::icom,
+       .civ_address = 0x58, .baud = 19200, .bands = kHfVuBands, .caps = {.reads = true, .step_hz = 1},
+       .hamlib_model = 3011, .note = "HF/6/2 m/70 cm, one link; no CTCSS trakbox sets", .make = make_icom},
   };
   return rows;
 }

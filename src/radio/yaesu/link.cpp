@@ -127,6 +127,7 @@ void Ft8xxLink::ensure_satellite_mode() {
 
 void Ft8xxLink::set_frequency(Link l, Hz hz) {
   require(l);
+  require_band("the " + opt_.label, opt_.bands, l, hz);
   const yaesu::Command c = opt_.model == Ft8xxOptions::Model::ft847 ? ft847::set_frequency(target(l), hz)
                                                                     : ft817::set_frequency(hz);
   ensure_satellite_mode();

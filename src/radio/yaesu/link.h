@@ -7,7 +7,9 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
+#include "radio/registry.h"
 #include "radio/serial.h"
 #include "radio/worker.h"
 #include "radio/yaesu/codec.h"
@@ -43,7 +45,8 @@ class YaesuLink final : public RadioLink {
   YaesuOptions opt_;
 };
 
-// Yaesu FT-847 (one radio, both links in its satellite mode) and FT-817/818 (one link each).
+// Yaesu FT-847 (one radio, both links in its satellite mode) and FT-817/818/857/897 (one link each,
+// the FT-817's commands).
 struct Ft8xxOptions {
   enum class Model { ft847, ft817 } model = Model::ft847;
   std::string label = "FT-847";     // "FT-817", "FT-818" in messages
@@ -51,6 +54,7 @@ struct Ft8xxOptions {
   milliseconds reply_timeout{500};  // a read's 5-byte answer
   bool satellite_mode = true;       // FT-847 with both links: satellite mode, RX / TX VFOs
   int baud = 0;                     // 0: 4800
+  std::vector<HzRange> bands;       // the bands it tunes (empty: not checked); outside: a limit learnt
 };
 
 class Ft8xxLink final : public RadioLink {

@@ -38,6 +38,33 @@ TEST_CASE("Icom CI-V: 4-byte frequency variant (IC-820H/821H) drops the 100 MHz 
         "FE FE 42 E0 05 50 34 12 35 FD");
 }
 
+TEST_CASE("Icom CI-V: the IC-905's 6-byte frequencies on its 10 GHz band, 5 bytes below") {
+  constexpr auto six = icom::FrequencyWidth::five_or_six;
+  // Icom's IC-905 CI-V reference: 12 digits, 100 GHz down to 1 Hz, least significant pair first.
+  // 10489.550 MHz = 010 489 550 000 Hz: pairs 00 00 55 89 04 01.
+  CHECK(hex(icom::set_frequency(0xAC, 10'489'550'000, six)) == "FE FE AC E0 05 00 00 55 89 04 01 FD");
+  CHECK(hex(icom::set_frequency(0xAC, 10'000'000'000, six)) == "FE FE AC E0 05 00 00 00 00 00 01 FD");
+  CHECK(hex(icom::set_frequency(0xAC, 10'450'123'456, six)) == "FE FE AC E0 05 56 34 12 50 04 01 FD");
+  // Its bands below 10 GHz keep the 5 bytes every other Icom sends.
+  CHECK(hex(icom::set_frequency(0xAC, 9'999'999'999, six)) == "FE FE AC E0 05 99 99 99 99 99 FD");
+  CHECK(hex(icom::set_frequency(0xAC, 2'400'050'000, six)) == "FE FE AC E0 05 00 00 05 00 24 FD");
+  CHECK(hex(icom::set_frequency(0xAC, 5'760'100'000, six)) == "FE FE AC E0 05 00 00 10 60 57 FD");
+  CHECK(hex(icom::set_frequency(0xAC, 145'950'000, six)) == "FE FE AC E0 05 00 00 95 45 01 FD");
+  CHECK_THROWS_AS(icom::set_frequency(0xAC, 1'000'000'000'000, six), std::invalid_argument);
+  CHECK_THROWS_AS(icom::set_frequency(0xAC, 10'489'550'000), std::invalid_argument);   // 5 bytes cannot carry it
+  // Read back: the radio's 03 answer and 1C 03 with 6 bytes on 10 GHz.
+  auto a = icom::decode_frame(*from_hex("FE FE E0 AC 03 00 00 55 89 04 01 FD"));
+  REQUIRE(a);
+  CHECK(icom::decode_frequency(*a) == 10'489'550'000);
+  auto t = icom::decode_frame(*from_hex("FE FE E0 AC 1C 03 00 50 12 00 24 FD"));
+  REQUIRE(t);
+  CHECK(icom::decode_frequency(*t) == 2'400'125'000);
+  auto t6 = icom::decode_frame(*from_hex("FE FE E0 AC 1C 03 00 00 55 89 04 01 FD"));
+  REQUIRE(t6);
+  CHECK(icom::decode_frequency(*t6) == 10'489'550'000);
+  CHECK_FALSE(icom::decode_frequency(*icom::decode_frame(*from_hex("FE FE E0 AC 03 00 00 55 89 04 01 00 FD"))));
+}
+
 TEST_CASE("Icom CI-V: mode without a filter byte, and the ack") {
   CHECK(hex(*icom::set_mode(icom::kIc275, Mode::usb)) == "FE FE 10 E0 06 01 FD");
   CHECK(hex(*icom::set_mode(icom::kIc275, Mode::lsb)) == "FE FE 10 E0 06 00 FD");

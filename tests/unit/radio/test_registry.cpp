@@ -25,7 +25,8 @@ TEST_CASE("registry: names are unique, every model has a factory and a sane desc
     CHECK(spec_form(m).rfind(std::string(m.name), 0) == 0);
   }
   for (const char* n : {"ic9700", "ic9100", "ic910h", "ic821h", "ic275", "ic970", "ic705", "ts2000", "ts790", "ft847",
-                        "ft817", "ft818", "ft736", "icom", "kenwood", "yaesu", "cat", "hamlib", "rigctld", "sim"})
+                        "ft817", "ft818", "ft736", "ic905", "ic7300", "ic7100", "ic706mkiig", "ft857", "ft897",
+                        "ft991", "ftx1", "ft710", "ftdx10", "icom", "kenwood", "yaesu", "cat", "hamlib", "rigctld", "sim"})
     CHECK_MESSAGE(find_radio_model(n) != nullptr, n);
   CHECK(find_radio_model("simulated") == find_radio_model("sim"));
   CHECK(find_radio_model("IC9700") == find_radio_model("ic9700"));   // any case, as Hamlib names are (issue 47)
@@ -55,7 +56,8 @@ TEST_CASE("registry: the satellite rigs' defaults") {
   CHECK(find_radio_model_by_hamlib(1001) == find_radio_model("ft847"));
   CHECK(find_radio_model_by_hamlib(2) == nullptr);   // rigctld is no radio model
   CHECK(find_radio_model_by_hamlib(1) == nullptr);
-  CHECK(find_radio_model_by_hamlib(3073) == nullptr);
+  CHECK(find_radio_model_by_hamlib(3073) == find_radio_model("ic7300"));
+  CHECK(find_radio_model_by_hamlib(3078) == nullptr);   // the IC-7610: through Hamlib only
 }
 
 TEST_CASE("--radio MODEL:DEVICE[:BAUD]: parsed from the table") {
@@ -158,4 +160,59 @@ TEST_CASE("--radio gqrx / sdrpp: receivers, one link, no tone, their own ports")
   auto made = make_radio("gqrx:127.0.0.1:9", RadioConfig{});
   REQUIRE(made.driver);
   CHECK(made.driver->describe() == "GQRX at 127.0.0.1:9");
+}
+
+TEST_CASE("the rigs of 2026, third round (issue 61): rows, defaults, :xvtr, --radio list in 80 columns") {
+  const RadioModel& ic905 = *find_radio_model("ic905");
+  CHECK(ic905.civ_address == 0xAC);
+  CHECK(ic905.baud == 115200);
+  CHECK(ic905.satmode == SatCommand::icom_16_5a);
+  CHECK(ic905.xvtr_from == 10'000'000'000);
+  CHECK(find_radio_model("ic7300")->civ_address == 0x94);
+  CHECK(find_radio_model("ic7300")->baud == 115200);
+  CHECK(find_radio_model("ic7100")->civ_address == 0x88);
+  CHECK(find_radio_model("ic7100")->baud == 19200);
+  CHECK(find_radio_model("ic706mkiig")->civ_address == 0x58);
+  for (const char* one : {"ic7300", "ic7100", "ic706mkiig", "ft857", "ft897", "ft991", "ftx1", "ft710", "ftdx10"})
+    CHECK_MESSAGE(find_radio_model(one)->caps.links == 1, one);
+  CHECK(find_radio_model("ft857")->protocol == Protocol::ft817);
+  CHECK(find_radio_model("ft897")->baud == 4800);
+  CHECK(find_radio_model("ft991")->protocol == Protocol::newcat);
+  CHECK(find_radio_model_by_hamlib(1022) == find_radio_model("ft857"));
+  CHECK(find_radio_model_by_hamlib(1035) == find_radio_model("ft991"));
+  CHECK(find_radio_model_by_hamlib(3070) == find_radio_model("ic7100"));
+  CHECK(find_radio_model_by_hamlib(3011) == find_radio_model("ic706mkiig"));
+
+  const auto x = parse_radio_spec("ic905:/dev/ttyUSB0:115200:xvtr");
+  REQUIRE(x.spec);
+  CHECK(x.spec->transverter);
+  CHECK(x.spec->baud == 115200);
+  const auto y = parse_radio_spec("ic905:/dev/ttyUSB0:maindown:xvtr");
+  REQUIRE(y.spec);
+  CHECK(y.spec->transverter);
+  CHECK(y.spec->main_link == Link::downlink);
+  CHECK_FALSE(parse_radio_spec("ic905:/dev/ttyUSB0").spec->transverter);
+  CHECK(parse_radio_spec("ic9700:/dev/x:xvtr").error ==
+        "--radio \"ic9700:/dev/x:xvtr\": \"xvtr\": the Icom IC-9700 has no transverter band trakbox drives");
+  CHECK(spec_form(ic905) == "ic905:DEVICE[:BAUD][:maindown|:mainup][:xvtr]");
+
+  RadioConfig cfg;
+  CHECK(make_radio("ic905:/nonexistent/tty", cfg).driver->describe() ==
+        "Icom IC-905 CI-V on /nonexistent/tty (ACh, satellite mode)");
+  CHECK(make_radio("ic7300:/nonexistent/tty", cfg).driver->describe() == "Icom IC-7300 CI-V on /nonexistent/tty (94h)");
+  CHECK(make_radio("ft857:/nonexistent/tty", cfg).driver->describe() == "Yaesu FT-857 CAT on /nonexistent/tty");
+  CHECK(make_radio("ft991:/nonexistent/tty", cfg).driver->describe() == "Yaesu FT-991A CAT on /nonexistent/tty (VFO-A)");
+  const auto up = parse_radio_spec("ft991:/nonexistent/tty");
+  CHECK(make_radio(*up.spec, cfg, {}, RadioRole::uplink).driver->describe() ==
+        "Yaesu FT-991A CAT on /nonexistent/tty (VFO-B)");
+
+  const std::string text = radio_list_text();
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t end = text.find('\n', start);
+    const std::string line = text.substr(start, end - start);
+    CHECK_MESSAGE(line.size() <= 80, line);
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
 }
