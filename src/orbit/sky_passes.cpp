@@ -2,6 +2,7 @@
 // 0.25 deg of elevation a minute), so a 10-minute grid brackets every crossing; a stretch above the
 // horizon shorter than the grid shows as a local maximum of three samples, refined before it is
 // dismissed.
+#include <algorithm>
 #include <cmath>
 
 #include "orbit/geometry.h"

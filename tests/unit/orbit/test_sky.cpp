@@ -218,3 +218,25 @@ TEST_CASE("Body passes: the midnight Sun at Tromso is one pass through the windo
   // 90 - 69.65 + 23.44 = 43.8 deg at the highest.
   CHECK(std::abs(passes[0].max_el_deg - 43.79) < 0.1);
 }
+
+TEST_CASE("Body passes: a stretch above the horizon shorter than the 10-minute grid is found") {
+  // The Moon's culmination at Munich with the horizon put a thousandth of a degree under it: a
+  // pass of a few minutes, between two grid samples, found by refining the local maximum.
+  const Observer munich{48.1458, 11.625, 520.0};
+  const UtcTime from = from_civil(2026, 3, 20, 6, 0), to = from_civil(2026, 3, 20, 19, 0);
+  const auto full = find_body_passes(Body::moon, munich, from, to);
+  REQUIRE(full.size() == 1);
+  PassOptions grazing;
+  grazing.horizon_deg = full[0].max_el_deg - 0.001;
+  const auto brief = find_body_passes(Body::moon, munich, from, to, grazing);
+  REQUIRE(brief.size() == 1);
+  const double minutes = minutes_between(brief[0].aos, brief[0].los);
+  CAPTURE(minutes);
+  CHECK(minutes > 0.5);
+  CHECK(minutes < 10.0);
+  CHECK(std::abs(brief[0].max_el_deg - full[0].max_el_deg) < 1e-5);
+  CHECK(std::abs(minutes_between(brief[0].tca, full[0].tca)) < 0.1);
+  // A thousandth of a degree above the maximum: nothing.
+  grazing.horizon_deg = full[0].max_el_deg + 0.001;
+  CHECK(find_body_passes(Body::moon, munich, from, to, grazing).empty());
+}
