@@ -18,6 +18,7 @@
 #include "orbit/element_age.h"
 #include "orbit/passes.h"
 #include "orbit/sgp4.h"
+#include "orbit/sky.h"
 #include "util/text.h"
 
 namespace tb::app {
@@ -46,7 +47,9 @@ const char* const kNextUsage =
     "AOS (at -2.0 deg, the manual's rule) with its azimuth and the time until it, TCA with the maximum\n"
     "elevation, LOS with its azimuth. A satellite already up shows the pass it is in; one that stays up\n"
     "(geostationary) is 'always up', with no AOS or LOS. SAT is a name (any case) or catalog number of\n"
-    "the database; without SAT, the tracking list (menu 3-2). Nothing within 10 days: 'no pass'.\n\noptions:\n";
+    "the database; without SAT, the tracking list (menu 3-2). Nothing within 10 days: 'no pass'.\n"
+    "SAT may also be SUN or MOON (any case): their next rise (AOS), culmination (TCA) and set (LOS),\n"
+    "of the centre seen from the station, geometric (no refraction); they need no elements.\n\noptions:\n";
 
 struct Row {
   std::string name;
@@ -71,9 +74,11 @@ std::string duration(std::chrono::microseconds d) {
   return b;
 }
 
-std::vector<Row> compute(const std::vector<orbit::Elements>& sats, const orbit::Observer& station, UtcTime from,
-                         const orbit::PassOptions& options) {
+std::vector<Row> compute(const std::vector<orbit::Elements>& sats, const std::vector<orbit::Body>& bodies,
+                         const orbit::Observer& station, UtcTime from, const orbit::PassOptions& options) {
   std::vector<Row> rows;
+  for (const orbit::Body b : bodies)
+    rows.push_back({std::string(orbit::body_name(b)), orbit::next_body_pass(b, station, from, kSearchDays, options), ""});
   for (const orbit::Elements& e : sats) {
     Row r;
     r.name = std::string(text::trim(e.name));
@@ -221,37 +226,46 @@ int run_next(std::vector<std::string> args) {
     options.min_max_elevation_deg = *v;
   if (!in.ok()) return fail(*in.error());
 
+  // SUN and MOON among the names need no elements.
+  std::vector<orbit::Body> bodies;
+  std::vector<std::string> keys;
+  for (const std::string& key : o.positional()) {
+    if (const auto b = orbit::parse_body(key)) bodies.push_back(*b);
+    else keys.push_back(key);
+  }
   // The satellites: named ones from the database (or --elements), else the tracking list.
   std::vector<orbit::Elements> pool;
   std::string from;
-  if (const auto file = o.value("elements")) {
+  if (!bodies.empty() && keys.empty()) {
+    // only bodies: nothing to load
+  } else if (const auto file = o.value("elements")) {
     const orbit::ParseResult parsed = orbit::load_elements_file(*file, checked_options(!o.has("no-checksum")));
     report_problems(parsed.problems, stderr);
     if (parsed.sets.empty()) return fail({"--elements", "no usable element set in '" + *file + "'"});
     pool = parsed.sets;
     from = *file;
   } else {
-    const auto sets = o.positional().empty() ? stored.tracking_list() : stored.database();
+    const auto sets = keys.empty() ? stored.tracking_list() : stored.database();
     if (!sets) return fail({"SAT", "no database: " + stored.error()});
     pool = *sets;
     from = stored.source();
   }
   std::vector<orbit::Elements> sats;
-  for (const std::string& key : o.positional()) {
+  for (const std::string& key : keys) {
     std::string why;
     const auto i = match_sat(pool, key, why);
     if (!i) return fail({key, why});
     sats.push_back(pool[*i]);
   }
   if (o.positional().empty()) sats = pool;
-  if (sats.empty()) return fail({"SAT", "none given and the tracking list is empty (" + from + ")"});
+  if (sats.empty() && bodies.empty()) return fail({"SAT", "none given and the tracking list is empty (" + from + ")"});
   warn_stale_once(sats, start);
   char head[200];
   std::snprintf(head, sizeof head, "station %.4f, %.4f, %.0f m (%s)", station->lat_deg, station->lon_deg,
                 station->height_m, o.value("station") ? "--station" : stored.source().c_str());
   const bool watch = o.has("watch");
   const bool tty = isatty(STDOUT_FILENO) != 0;
-  std::vector<Row> rows = compute(sats, *station, start, options);
+  std::vector<Row> rows = compute(sats, bodies, *station, start, options);
   while (true) {
     const UtcTime now = start + (std::chrono::time_point_cast<std::chrono::microseconds>(std::chrono::system_clock::now()) -
                                  wall_start);
@@ -259,7 +273,7 @@ int run_next(std::vector<std::string> args) {
       // A pass that ended gives way to the next one.
       bool ended = false;
       for (const Row& r : rows) ended = ended || (r.pass && r.pass->los < now);
-      if (ended) rows = compute(sats, *station, now, options);
+      if (ended) rows = compute(sats, bodies, *station, now, options);
       const std::string screen = watch_screen(head, rows, now, tty);
       std::fputs(screen.c_str(), stdout);
       std::fflush(stdout);

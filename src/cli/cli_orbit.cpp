@@ -323,10 +323,27 @@ CommandRun::CommandRun(const Command& c, const std::vector<std::string>& args) :
   if (const auto dir = parsed.value("state")) stored = StoredStation(std::filesystem::path(*dir));
 }
 
+std::vector<std::string> CommandRun::sat_keys() const {
+  std::vector<std::string> keys;
+  for (const std::string& k : parsed.values("sat"))
+    if (!bodies_allowed || !orbit::parse_body(k)) keys.push_back(k);
+  return keys;
+}
+
+std::vector<orbit::Body> CommandRun::bodies() const {
+  std::vector<orbit::Body> found;
+  if (!bodies_allowed) return found;
+  for (const std::string& k : parsed.values("sat"))
+    if (const auto b = orbit::parse_body(k)) found.push_back(*b);
+  return found;
+}
+
 std::optional<int> CommandRun::load_sats(bool allow_all, std::vector<Elements>& sats) {
   if (!in.ok()) return error(*in.error());
+  // Only SUN and MOON asked for: no elements needed.
+  if (!bodies().empty() && sat_keys().empty()) return std::nullopt;
   if (path.empty()) return load_stored(allow_all, sats);
-  const bool named = !parsed.values("sat").empty();
+  const bool named = !sat_keys().empty();
   // With --no-checksum every accepted set's checksum is named: nothing is deferred then.
   const bool verify = !parsed.has("no-checksum");
   const LoadedElements loaded = load_elements(path, verify, named && verify);
@@ -334,14 +351,14 @@ std::optional<int> CommandRun::load_sats(bool allow_all, std::vector<Elements>& 
     report_deferred(loaded, path, false);
     return error(*loaded.error);
   }
-  sats = select_sats(loaded.sets, parsed.values("sat"), allow_all, path, in);
+  sats = select_sats(loaded.sets, sat_keys(), allow_all, path, in);
   report_deferred(loaded, path, in.ok());
   if (!in.ok()) return error(*in.error());
   return std::nullopt;
 }
 
 std::optional<int> CommandRun::load_stored(bool allow_all, std::vector<Elements>& sats) {
-  const auto keys = parsed.values("sat");
+  const auto keys = sat_keys();
   const auto sets = keys.empty() ? stored.tracking_list() : stored.database();
   if (!sets) return error({"ELEMENTS", "missing, and " + stored.error()});
   if (sets->empty()) return error({"ELEMENTS", "missing, and the stored database is empty (" + stored.source() + ")"});

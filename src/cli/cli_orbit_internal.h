@@ -11,6 +11,7 @@
 #include "cli/options.h"
 #include "orbit/elements.h"
 #include "orbit/observe.h"
+#include "orbit/sky.h"
 #include "util/format.h"
 
 namespace tb::app::orbit_cli {
@@ -94,6 +95,12 @@ struct CommandRun {
   // No ELEMENTS: the stored database; without --sat its tracking list (all of it with allow_all,
   // else its first satellite).
   std::optional<int> load_stored(bool allow_all, std::vector<Elements>& sats);
+
+  // The --sat values, less SUN and MOON when the command takes them (bodies_allowed): those are
+  // in `bodies`, in command-line order, and need no elements.
+  std::vector<std::string> sat_keys() const;
+  std::vector<orbit::Body> bodies() const;
+  bool bodies_allowed = false;
 
   const Command& command;
   ParsedOptions parsed;  // --no-checksum is read from here by load_sats

@@ -16,6 +16,7 @@
 #include "orbit/pass_tools.h"
 #include "orbit/passes.h"
 #include "orbit/sgp4.h"
+#include "orbit/sky.h"
 #include "station/station.h"
 #include "rotator/pass_plan.h"
 #include "store/model.h"
@@ -27,7 +28,7 @@ namespace {
 
 const Command kPasses{
     "passes",
-    "[ELEMENTS] [--sat NAME|NUMBER]... [--station LAT,LON[,HEIGHT_M]|LOCATOR]\n"
+    "[ELEMENTS] [--sat NAME|NUMBER|SUN|MOON]... [--station LAT,LON[,HEIGHT_M]|LOCATOR]\n"
     "                      [--start ISO8601|now|+2h] [--hours H] [--min-el DEG] [--state DIR] [--dut1 S]\n"
     "                      [--with LAT,LON|LOCATOR] [--ics FILE] [--csv|--json] [--no-checksum]",
     "Passes over the station between --start and --start + --hours, sorted by AOS: AOS and LOS are\n"
@@ -37,8 +38,12 @@ const Command kPasses{
     "the end stops there (marked < and > in the table). Without ELEMENTS, the stored database (--state)\n"
     "and, without --sat, its tracking list; without --station the stored station; from now for 24 h.\n"
     "Only passes that rise above 0 deg are listed (--min-el raises that). --with a second station (a\n"
-    "QSO partner's grid): only the times both stations have the satellite above -2.0 deg.",
-    {repeatable(kSatOption),
+    "QSO partner's grid): only the times both stations have the satellite above -2.0 deg.\n"
+    "--sat SUN and --sat MOON (any case) list the rises (AOS), culminations (TCA) and sets (LOS) of the\n"
+    "Sun's and the Moon's centre in the same table: topocentric, geometric (no refraction), at -2.0 deg\n"
+    "like passes; they need no elements, and take neither --with nor --plot.",
+    {repeatable({"sat", "NAME|NUMBER|SUN|MOON", "satellite by name (exact, then any case) or catalog number; "
+                                                "SUN or MOON for the body"}),
      kStationOption,
      {"start", "ISO8601|now|+2h", "start of the window, UTC, now (the default), or now plus an amount (+2h)"},
      {"hours", "H", "length of the window in hours (> 0, at most 8784; default 24)"},
@@ -169,11 +174,38 @@ bool check_window(const Elements& e, const orbit::Sgp4& sat, UtcTime start, UtcT
   return false;
 }
 
+// The table form: `header` (the station and window), the element sets' ages, one row a pass.
+void print_table(const std::vector<SatPass>& passes, const std::string& header, const std::vector<Elements>& sats,
+                 UtcTime start, bool bodies) {
+  out(header);
+  if (!sats.empty()) out(elements_ages(sats, start));
+  if (bodies) out("SUN, MOON: the centre of the body seen from the station, geometric (no refraction)\n");
+  out(printf_string("%-24s  %-20s  %-9s  %-9s  %6s  %6s  %6s  %8s\n", "SAT", "AOS (UTC)", "TCA", "LOS", "MAX EL",
+                "AOS AZ", "LOS AZ", "DURATION"));
+  for (const SatPass& s : passes) {
+    const std::string aos = manual_time(s.pass.aos, 0), tca = manual_time(s.pass.tca, 0),
+                      los = manual_time(s.pass.los, 0);
+    const auto dur = std::chrono::duration_cast<std::chrono::seconds>(s.pass.los - s.pass.aos).count();
+    out(printf_string("%-24.24s  %s%c  %s   %s%c  %6.1f  %6.1f  %6.1f  %5lld:%02lld\n", s.sat.c_str(), aos.c_str(),
+                  s.pass.up_at_start ? '<' : ' ', tca.substr(11).c_str(), los.substr(11).c_str(),
+                  s.pass.up_at_end ? '>' : ' ', s.pass.max_el_deg, s.pass.aos_az_deg, s.pass.los_az_deg,
+                  static_cast<long long>(dur / 60), static_cast<long long>(dur % 60)));
+  }
+  if (passes.empty()) out("no passes\n");
+  bool bounded = false;
+  for (const SatPass& s : passes) bounded = bounded || s.pass.up_at_start || s.pass.up_at_end;
+  // A satellite that stays up (geostationary) has neither: its row spans the window, marked.
+  if (bounded)
+    out("< up already at the start of the window (no AOS in it); > still up at its end (no LOS in it)\n");
+}
+
 }  // namespace
 
 int run_passes(std::vector<std::string> args) {
   CommandRun run(kPasses, args);
   if (run.done) return *run.done;
+  run.bodies_allowed = true;
+  const std::vector<orbit::Body> bodies = run.bodies();
   OptionReader& in = run.in;
   const auto station = read_station(in, run.stored);
   const auto start = read_time(in, "start", wall_now());
@@ -194,6 +226,8 @@ int run_passes(std::vector<std::string> args) {
   // cannot be written.
   if (plot)
     if (const auto why = plot_name_problem(*plot)) in.fail("--plot", *why);
+  if (!bodies.empty() && with) in.fail("--with", "takes satellites only, not SUN or MOON");
+  if (!bodies.empty() && plot) in.fail("--plot", "draws satellites' passes only, not SUN's or MOON's");
   std::vector<Elements> sats;
   if (auto done = run.load_sats(true, sats)) return *done;
 
@@ -214,10 +248,17 @@ int run_passes(std::vector<std::string> args) {
                             : orbit::find_passes(sat, *station, *start, stop, options, eo);
     for (const orbit::Pass& p : found) passes.push_back({label, p, set});
   }
+  for (const orbit::Body b : bodies)
+    for (const orbit::Pass& p : orbit::find_body_passes(b, *station, *start, stop, options, eo))
+      passes.push_back({std::string(orbit::body_name(b)), p, 0});
   std::stable_sort(passes.begin(), passes.end(),
                    [](const SatPass& a, const SatPass& b) { return a.pass.aos < b.pass.aos; });
 
   auto iso3 = [](UtcTime t) { return orbit::format_iso8601(t, 3); };
+  const std::string header = printf_string(
+      "station %.4f, %.4f, %.0f m%s  from %s for %g h  AOS/LOS at %.1f deg\n", station->lat_deg, station->lon_deg,
+      station->height_m, run.parsed.has("station") ? "" : (" (" + run.stored.source() + ")").c_str(),
+      orbit::format_iso8601(*start, 0).c_str(), hours, orbit::kAosThresholdDeg);
   switch (format) {
     case OutputFormat::csv:
       out("sat,aos_utc,tca_utc,los_utc,max_el_deg,aos_az_deg,los_az_deg\n");
@@ -238,31 +279,9 @@ int run_passes(std::vector<std::string> args) {
       }
       out("\n]\n");
       break;
-    case OutputFormat::table: {
-      out(printf_string("station %.4f, %.4f, %.0f m%s  from %s for %g h  AOS/LOS at %.1f deg\n", station->lat_deg,
-                    station->lon_deg, station->height_m,
-                    run.parsed.has("station") ? "" : (" (" + run.stored.source() + ")").c_str(),
-                    orbit::format_iso8601(*start, 0).c_str(), hours, orbit::kAosThresholdDeg));
-      out(elements_ages(sats, *start));
-      out(printf_string("%-24s  %-20s  %-9s  %-9s  %6s  %6s  %6s  %8s\n", "SAT", "AOS (UTC)", "TCA", "LOS", "MAX EL",
-                    "AOS AZ", "LOS AZ", "DURATION"));
-      for (const SatPass& s : passes) {
-        const std::string aos = manual_time(s.pass.aos, 0), tca = manual_time(s.pass.tca, 0),
-                          los = manual_time(s.pass.los, 0);
-        const auto dur = std::chrono::duration_cast<std::chrono::seconds>(s.pass.los - s.pass.aos).count();
-        out(printf_string("%-24.24s  %s%c  %s   %s%c  %6.1f  %6.1f  %6.1f  %5lld:%02lld\n", s.sat.c_str(), aos.c_str(),
-                      s.pass.up_at_start ? '<' : ' ', tca.substr(11).c_str(), los.substr(11).c_str(),
-                      s.pass.up_at_end ? '>' : ' ', s.pass.max_el_deg, s.pass.aos_az_deg, s.pass.los_az_deg,
-                      static_cast<long long>(dur / 60), static_cast<long long>(dur % 60)));
-      }
-      if (passes.empty()) out("no passes\n");
-      bool bounded = false;
-      for (const SatPass& s : passes) bounded = bounded || s.pass.up_at_start || s.pass.up_at_end;
-      // A satellite that stays up (geostationary) has neither: its row spans the window, marked.
-      if (bounded)
-        out("< up already at the start of the window (no AOS in it); > still up at its end (no LOS in it)\n");
+    case OutputFormat::table:
+      print_table(passes, header, sats, *start, !bodies.empty());
       break;
-    }
   }
   std::fflush(stdout);
   if (ics && write_ics(*ics, passes, *station, with, format == OutputFormat::table ? stdout : stderr) != kExitOk)
