@@ -127,9 +127,9 @@ void LogRequests::handle(const std::string& request, std::function<void(std::str
   const auto answer = [&reply](const json& j) { reply(j.dump(-1, ' ', false, json::error_handler_t::replace)); };
   try {
     if (request.size() > kSmallRequest) return import(request, std::move(reply));
-    std::string why;
-    const json j = json_limits::parse_bounded<json>(request, why);
-    if (j.is_discarded()) return answer({{"error", "the request is not JSON: " + why}});
+    std::string not_json;
+    const json j = json_limits::parse_bounded<json>(request, not_json);
+    if (j.is_discarded()) return answer({{"error", "the request is not JSON: " + not_json}});
     if (!j.is_object() || !j.contains("action") || !j["action"].is_string())
       return answer({{"error", "expected {\"action\": \"add\"|\"list\"|\"export\"|\"import\", ...}"}});
     const std::string action = j["action"].get<std::string>();

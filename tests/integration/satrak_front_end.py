@@ -2,7 +2,8 @@
 binary: in standby a Satrak GOTO, STEP, MOVE and TRACK are refused with ERR and the antenna stays,
 host mode's FU is refused; under another client's `--exclusive rotctld` hold a Satrak GOTO is
 refused; a Satrak client that holds the antenna is named in status by its connection, and its
-disconnect hands the antenna back at once, as a rotctld client's does."""
+disconnect hands the antenna back at once, as a rotctld client's does. A PstRotator datagram refused
+in standby switches nothing on (rotor control stays off, and stored off)."""
 import json
 import os
 import socket
@@ -52,9 +53,10 @@ def host_line(port, line):
 
 def main():
     state = tempfile.mkdtemp(prefix="trakbox-satrak-door-")
-    sat, rot, host = free_port(), free_port(), free_port()
+    sat, rot, host, pst = free_port(), free_port(), free_port(), free_port()
     p = subprocess.Popen([BIN, "--service", "--state", state, "--satrak-port", str(sat), "--rotctld-port", str(rot),
-                          "--host-port", str(host), "--clock", START, "--clock-rate", "10", "--rotor-control", "on"],
+                          "--host-port", str(host), "--pst-port", str(pst), "--clock", START, "--clock-rate", "10",
+                          "--rotor-control", "off"],
                          stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
     try:
         wait_listening(sat, "Satrak", proc=p)
@@ -62,6 +64,12 @@ def main():
         code, out = cli(state, "standby", "on")
         check(code == 0, f"standby on: {out}")
         poll("standby holds the antenna", lambda: holder(state)["kind"] == "standby", 10)
+        with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as u:
+            u.sendto(b"<PST><AZIMUTH>173.0</AZIMUTH></PST>", ("127.0.0.1", pst))
+        time.sleep(1.0)
+        check(status(state)["antenna"]["rotor_control"] is False, "a PstRotator move refused in standby leaves rotor control off")
+        code, out = cli(state, "settings", "set", "rotor_control", "on")
+        check(code == 0, f"rotor control on through the one door: {out}")
         before = antenna(state)
         s = Satrak(sat)
         for cmd in ("GOTO=,120,35", "STEP=,5,5", "MOVE=,2,1", "TRACK=,1"):

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "station/clock.h"
+#include "store/owner.h"
 #include "support/shipped_model.h"
 #include "tracker/events.h"
 #include "tracker/tracker.h"
@@ -188,4 +189,31 @@ TEST_CASE("an event's JSON line and environment") {
   CHECK(env.front() == std::pair<std::string, std::string>{"TRAKBOX_EVENT", "link-lost"});
   CHECK(env.back().first == "TRAKBOX_EVENT_JSON");
   CHECK(env.back().second == j.dump());
+}
+
+TEST_CASE("the station moves: the next AOS event is the new place's, not the old place's pass (issue 55)") {
+  // Every user of "the next pass" asks the station's one cache (tracker/pass_memo.h), keyed by the
+  // place: after a move through the model's owner the events watch the new place's pass.
+  auto run = [](bool move) {
+    store::ModelOwner owner(testing::shipped_model());
+    const_cast<store::Model&>(owner.model()).db.selected = {index_of(owner.model(), "ISS")};  // the test's list
+    station::ManualClock clock{at(12, 0, 0)};
+    tracker::Tracker tracker{owner.model(), clock};
+    tracker::PassEventSource source(owner.model(), tracker);
+    std::vector<tracker::Event> told;
+    for (; clock.now() <= at(12, 20, 0); clock.set(clock.now() + std::chrono::seconds(1))) {
+      for (auto& e : source.step(clock.now())) told.push_back(std::move(e));
+      if (move && clock.now() == at(12, 0, 1)) {  // to Tucson: ISS is over the other side of the world
+        REQUIRE(owner.set_position(32.259, -110.778, 842.0, store::Origin::web).changed);
+      }
+    }
+    return std::pair{told, source.searches()};
+  };
+  const auto [stay, searched_once] = run(false);
+  REQUIRE(stay.size() == 2);  // the factory station: AOS 12:09:10, LOS 12:15:37 (Skyfield)
+  CHECK(stay[0].kind == "aos");
+  CHECK(std::abs(seconds_between(stay[0].time, at(12, 9, 10.1))) < 1.5);
+  const auto [moved, searched] = run(true);
+  CHECK(moved.empty());  // the old place's AOS is not told
+  CHECK(searched > searched_once);  // searched again for the new place
 }
