@@ -194,12 +194,12 @@ std::optional<std::string> Unit::take_antenna() {
 void Unit::client_left(std::string_view client) {
   station_.apply(station_.control().left(client, station_.now()));
   if (holder_ != client) return;
-  // Its hold ended with it: whatever it was doing stops, and what held before drives again.
-  if (tracking_) stop_tracking(false);
-  if (owner_ != Owner::none) {
-    station_.rotator().stop();
-    release();
-  }
+  // Its hold ended with it, and what held before drives again (trakbox's tracking when it has a
+  // choice). Its tracking and a jog stop (nobody would end them); a GOTO already sent completes, as
+  // a rotctld client's last P does.
+  if (tracking_ || owner_ == Owner::track) stop_tracking(false);
+  if (owner_ == Owner::move) station_.rotator().stop();
+  release();
   holder_.clear();
   station_.antenna_changed();
 }
