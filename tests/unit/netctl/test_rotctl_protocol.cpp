@@ -215,6 +215,11 @@ TEST_CASE("rotctl: P suspends trakbox's tracking (the client holds the antenna);
 
   st.tracker.track_single(*iss);  // the operator's choice: trakbox's tracking holds again
   CHECK(st.station->control().tracking_drives(tracker::Resource::antenna));
+  // A stop is always obeyed, but the operator has just taken the antenna back: the client does not
+  // hold it again until --handback has passed since the operator's action (issue 60).
+  CHECK(ask(p, "\\stop") == "RPRT 0\n");
+  CHECK(st.station->control().tracking_drives(tracker::Resource::antenna));
+  st.now += std::chrono::seconds(31);
   CHECK(ask(p, "\\stop") == "RPRT 0\n");
   CHECK_FALSE(st.station->control().tracking_drives(tracker::Resource::antenna));
   // The client goes: tracking drives the antenna again, what was chosen.
