@@ -153,7 +153,8 @@ void warn_stale_once(const std::vector<orbit::Elements>& sats, UtcTime at) {
     return;
   }
   std::fprintf(stderr, "trakbox next: warning: elements of %zu satellites are %.1f to %.1f days old, past the limit "
-                       "of their orbits: positions are unreliable (refresh them: menu 3-5, --elements)\n",
+                       "of their orbits: positions are unreliable (refresh them: menu 3-5 or trakbox "
+                       "--elements-url URL; or give --elements FILE here)\n",
                names.size(), lo, hi);
 }
 
