@@ -16,6 +16,7 @@ import signal
 import subprocess
 import sys
 import tempfile
+import urllib.error
 import urllib.request
 
 sys.path.insert(0, os.path.dirname(__file__))
@@ -137,6 +138,18 @@ def running_case(state, data):
         r = run("settings", "set", "station.height_m", "12000", "--state", state)
         check(r.returncode != 0 and "station.height_m: 12000 is outside -500 .. 9000 m" in r.stderr.decode(),
               f"the running station refuses with the same sentence: {r.stderr.decode()}")
+        # The page's station endpoint: the same sentence, nothing changed.
+        req = urllib.request.Request(f"http://127.0.0.1:{port}/api/v1/station",
+                                     data=b'{"lat_deg":48.85,"lon_deg":2.35,"height_m":12000}',
+                                     headers={"Content-Type": "application/json"}, method="POST")
+        try:
+            urllib.request.urlopen(req, timeout=10)
+            check(False, "POST /api/v1/station with 12000 m refused")
+        except urllib.error.HTTPError as e:
+            body = e.read().decode()
+            check(e.code in (400, 409) and "station.height_m: 12000 is outside -500 .. 9000 m" in body,
+                  f"the page is refused with the same sentence: {e.code} {body}")
+        check(settings(state)["station.height_m"]["value"] == 50, "and the height is as it was")
         # The radio follows AO-91 (chosen on the page); its freq/mode line edited, then SIGHUP.
         req = urllib.request.Request(f"http://127.0.0.1:{port}/api/v1/track", data=b'{"satellite":"AO-91"}',
                                      headers={"Content-Type": "application/json"}, method="POST")
