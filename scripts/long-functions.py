@@ -17,10 +17,14 @@ def strip(text):
         elif text.startswith('/*', i):
             j = text.find('*/', i + 2); j = n if j < 0 else j + 2
             out.append(re.sub(r'[^\n]', ' ', text[i:j])); i = j
-        elif text.startswith('R"', i):
-            m = re.match(r'R"([^(]*)\(', text[i:])
-            end = text.find(')' + m.group(1) + '"', i) + len(m.group(1)) + 2
+        elif text.startswith('R"', i) and (i == 0 or not (text[i - 1].isalnum() or text[i - 1] == '_')) and \
+                re.match(r'R"([^()\\ ]{0,16})\(', text[i:i + 20]):
+            m = re.match(r'R"([^()\\ ]{0,16})\(', text[i:i + 20])
+            close = text.find(')' + m.group(1) + '"', i)
+            end = n if close < 0 else close + len(m.group(1)) + 2
             out.append(re.sub(r'[^\n]', ' ', text[i:end])); i = end
+        elif c == "'" and i > 0 and (text[i - 1].isalnum()) and i + 1 < n and text[i + 1].isalnum():
+            out.append(c); i += 1  # a digit separator (47'000'000), not a character literal
         elif c in '"\'':
             j = i + 1
             while j < n and text[j] != c:
@@ -29,6 +33,22 @@ def strip(text):
         else:
             out.append(c); i += 1
     return ''.join(out)
+
+QUALIFIER = re.compile(r'(?:\bconst|\bnoexcept|\boverride|\bfinal|\bmutable)$')
+TRAILING_RETURN = re.compile(r'->[\w:<>,*& ]+$')
+
+
+def function_head(h):
+    """Whether a block's head ends as a function's: ')' and then only qualifiers or a trailing return
+    type (stripped one by one: a single regex over a long initializer backtracked for minutes)."""
+    t = h.rstrip()
+    while True:
+        m = QUALIFIER.search(t) or (TRAILING_RETURN.search(t[-200:]) if '->' in t[-200:] else None)
+        if not m:
+            break
+        t = t[:len(t) - (len(t[-200:]) - m.start()) if m.re is TRAILING_RETURN else m.start()].rstrip()
+    return t.endswith(')')
+
 
 def scan(path, limit):
     text = strip(path.read_text(errors='replace'))
@@ -43,8 +63,7 @@ def scan(path, limit):
                 kind = 'b'
             elif re.search(r'\b(namespace|class|struct|union|enum)\b[^()]*$', h) or h.endswith('extern "C"'):
                 kind = 't'
-            elif re.search(r'\)\s*(const|noexcept|override|final|mutable|->\s*[\w:<>,\s*&]+|\s)*$', h) \
-                    and not re.search(r'=\s*$', h):
+            elif function_head(h) and not re.search(r'=\s*$', h):
                 kind = 'f'
             else:
                 kind = 'b'

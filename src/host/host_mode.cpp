@@ -153,28 +153,70 @@ Interpreter::Interpreter(tracker::StationLoop& station) : station_(station) {}
 
 std::vector<std::string> Interpreter::greeting() { return {std::string(kBanner), std::string(kCommandLine)}; }
 
-std::vector<std::string> Interpreter::help() {
-  return {
-      "AZxxx ELxxx  point the antenna, degrees        AZ220 EL45",
-      "MUxxx        uplink mode FM, LSB, USB or CW    MUFM",
-      "MDxxx        downlink mode                     MDUSB",
-      "FUxxxxxxxx   uplink frequency, 10 Hz units     FU14595000 = 145.950 MHz",
-      "FDxxxxxxxx   downlink frequency, 10 Hz units   FD43590000 = 435.900 MHz",
-      "Sxxx         send the string to the radio      STX;   (\\xHH sends byte HH)",
-      "?A           present antenna position          reply AZ220.0 EL45.0",
-      "RF           refresh the elements now          (menu 3-5's sources)",
-      "?R           the last element refresh          reply REFRESH ...",
-      "LOG CALL [GRID] [RST]  log a QSO of this pass  reply LOGGED n CALL SAT TIME",
-      "?C           who holds the antenna and radio   reply CONTROL ANTENNA ... RADIO ...",
-      "STANDBY ON   standby (STANDBY OFF ends it)     nothing moves by itself",
-      "PBxxxxxxxxx  passband: the downlink spot, Hz   PB435640000 (a linear transponder)",
-      "ORxxx OTxxx  RX / TX offset in Hz, kept        OR+120  OT-300  (OR0 OT0 reset)",
-      "CTxx.x       uplink CTCSS tone in Hz, 0 none   CT67.0",
-      "?T           the tuning                        reply TUNE SPOT ... RX ... TX ... TONE ...",
-      "QTHxxx       the station's position            QTH JN58td  or  QTH 48.15,11.58,520",
-      "?            this list",
-      "Q            quit to the main menu",
+// Host mode's commands, one table (issue 55): the manual's and trakbox's own, in the order `?`
+// lists them, each with its help line and what it runs. A line goes to the command whose word it
+// matches (`exact`: the whole line; `prefix`: its start; `word`: the whole line or the word and a
+// blank), the longest word winning ("STANDBY ON" before "S", "?A" before "?").
+const std::vector<Interpreter::Command>& Interpreter::commands() {
+  using M = Command::Match;
+  auto tuned = [](Interpreter& in, std::string_view u, std::string_view s) { return *in.tuning(u, s); };
+  static const std::vector<Command> kCommands = {
+      {"AZ", M::prefix, "AZxxx ELxxx  point the antenna, degrees        AZ220 EL45",
+       [](Interpreter& in, std::string_view, std::string_view s) { return in.az_el(s); }},
+      {"MU", M::prefix, "MUxxx        uplink mode FM, LSB, USB or CW    MUFM",
+       [](Interpreter& in, std::string_view, std::string_view s) { return in.mode("MU", s.substr(2)); }},
+      {"MD", M::prefix, "MDxxx        downlink mode                     MDUSB",
+       [](Interpreter& in, std::string_view, std::string_view s) { return in.mode("MD", s.substr(2)); }},
+      {"FU", M::prefix, "FUxxxxxxxx   uplink frequency, 10 Hz units     FU14595000 = 145.950 MHz",
+       [](Interpreter& in, std::string_view, std::string_view s) { return in.frequency("FU", s.substr(2)); }},
+      {"FD", M::prefix, "FDxxxxxxxx   downlink frequency, 10 Hz units   FD43590000 = 435.900 MHz",
+       [](Interpreter& in, std::string_view, std::string_view s) { return in.frequency("FD", s.substr(2)); }},
+      // The string as typed after the S: only the blanks and CR/LF at the ends of the line are dropped
+      // (\x20 sends a trailing blank).
+      {"S", M::prefix, "Sxxx         send the string to the radio      STX;   (\\xHH sends byte HH)",
+       [](Interpreter& in, std::string_view, std::string_view s) { return in.raw(s.substr(1)); }},
+      {"?A", M::exact, "?A           present antenna position          reply AZ220.0 EL45.0",
+       [](Interpreter& in, std::string_view, std::string_view) { return in.antenna(); }},
+      {"RF", M::exact, "RF           refresh the elements now          (menu 3-5's sources)",
+       [](Interpreter& in, std::string_view, std::string_view) { return in.refresh_now(); }},
+      {"?R", M::exact, "?R           the last element refresh          reply REFRESH ...",
+       [](Interpreter& in, std::string_view, std::string_view) { return in.refresh_status(); }},
+      {"LOG", M::word, "LOG CALL [GRID] [RST]  log a QSO of this pass  reply LOGGED n CALL SAT TIME",
+       [](Interpreter& in, std::string_view, std::string_view s) { return log_command(in.station_, s.substr(3)); }},
+      {"?C", M::exact, "?C           who holds the antenna and radio   reply CONTROL ANTENNA ... RADIO ...",
+       [](Interpreter& in, std::string_view, std::string_view) { return in.control(); }},
+      {"STANDBY ON", M::exact, "STANDBY ON   standby (STANDBY OFF ends it)     nothing moves by itself",
+       [](Interpreter& in, std::string_view, std::string_view) { return in.standby(true); }},
+      {"STANDBY OFF", M::exact, "", [](Interpreter& in, std::string_view, std::string_view) { return in.standby(false); }},
+      {"PB", M::prefix, "PBxxxxxxxxx  passband: the downlink spot, Hz   PB435640000 (a linear transponder)", tuned},
+      {"OR", M::prefix, "ORxxx OTxxx  RX / TX offset in Hz, kept        OR+120  OT-300  (OR0 OT0 reset)", tuned},
+      {"OT", M::prefix, "", tuned},
+      {"CT", M::prefix, "CTxx.x       uplink CTCSS tone in Hz, 0 none   CT67.0", tuned},
+      {"?T", M::exact, "?T           the tuning                        reply TUNE SPOT ... RX ... TX ... TONE ...", tuned},
+      {"QTH", M::prefix, "QTHxxx       the station's position            QTH JN58td  or  QTH 48.15,11.58,520", tuned},
+      {"?", M::exact, "?            this list",
+       [](Interpreter&, std::string_view, std::string_view) { return Reply{help(), true, false}; }},
+      {"Q", M::exact, "Q            quit to the main menu",
+       [](Interpreter&, std::string_view, std::string_view) {
+         Reply r;
+         r.quit = true;
+         return r;
+       }},
   };
+  return kCommands;
+}
+
+std::vector<std::string> Interpreter::help() {
+  std::vector<std::string> lines;
+  for (const Command& c : commands())
+    if (!c.help.empty()) lines.emplace_back(c.help);
+  return lines;
+}
+
+Reply Interpreter::standby(bool on) {
+  const tracker::OpResult done = ops().standby(on);
+  if (!done.ok()) return error("STANDBY: " + *done.refusal);
+  return Reply{{done.note}, true, false};
 }
 
 Reply Interpreter::execute(std::string_view line) {
@@ -182,31 +224,14 @@ Reply Interpreter::execute(std::string_view line) {
   if (s.empty()) return {};
   line_ = std::string(s);
   const std::string u = upper(s);
-  if (u == "Q") {
-    Reply r;
-    r.quit = true;
-    return r;
+  const Command* best = nullptr;
+  for (const Command& c : commands()) {
+    const bool match = c.match == Command::Match::exact    ? u == c.word
+                       : c.match == Command::Match::prefix ? u.rfind(c.word, 0) == 0
+                                                           : u == c.word || u.rfind(std::string(c.word) + " ", 0) == 0;
+    if (match && (!best || c.word.size() > best->word.size())) best = &c;
   }
-  if (u == "?") return Reply{help(), true, false};
-  if (u == "?A") return antenna();
-  if (u == "RF") return refresh_now();
-  if (u == "?R") return refresh_status();
-  if (u == "LOG" || u.rfind("LOG ", 0) == 0) return log_command(station_, s.substr(3));
-  if (u == "?C") return control();
-  if (u == "STANDBY ON" || u == "STANDBY OFF") {  // before S: not a string for the radio
-    const tracker::OpResult done = ops().standby(u == "STANDBY ON");
-    if (!done.ok()) return error("STANDBY: " + *done.refusal);
-    return Reply{{done.note}, true, false};
-  }
-  if (auto t = tuning(u, s)) return *t;
-  if (u.rfind("AZ", 0) == 0) return az_el(s);
-  if (u.rfind("MU", 0) == 0 || u.rfind("MD", 0) == 0) return mode(u.substr(0, 2), s.substr(2));
-  if (u.rfind("FU", 0) == 0 || u.rfind("FD", 0) == 0) return frequency(u.substr(0, 2), s.substr(2));
-  if (u[0] == 'S') {
-    // The string as typed after the S: only the blanks and CR/LF at the ends of the line are dropped
-    // (\x20 sends a trailing blank).
-    return raw(s.substr(1));
-  }
+  if (best) return best->run(*this, u, s);
   std::string shown(s.substr(0, 20));
   if (s.size() > 20) shown += "...";
   return error("unknown command '" + shown + "': expected AZxxx ELxxx, MUxxx, MDxxx, FUxxx, FDxxx, Sxxx, ?A, ? or Q");

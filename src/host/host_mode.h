@@ -20,6 +20,7 @@
 // first, so the host program and the tracker never fight; ?A and ? do not. The rotor control
 // switch (the E key) is respected: with it off AZ/EL is refused. docs/host-mode.md has the details.
 #pragma once
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -80,6 +81,17 @@ class Interpreter {
   Reply execute(std::string_view line);
 
  private:
+  // One command of the table (host_mode.cpp): its word, how a line matches it, its `?` line ("" for
+  // a second form listed with the first) and what it runs.
+  struct Command {
+    enum class Match { exact, prefix, word };
+    std::string_view word;
+    Match match;
+    std::string_view help;
+    std::function<Reply(Interpreter&, std::string_view upper_line, std::string_view line)> run;
+  };
+  static const std::vector<Command>& commands();
+  Reply standby(bool on);
   Reply az_el(std::string_view line);
   Reply mode(std::string_view cmd, std::string_view arg);
   Reply frequency(std::string_view cmd, std::string_view arg);
