@@ -1,4 +1,5 @@
 #include "radio/yaesu/newcat.h"
+#include "radio/kenwood/codec.h"
 
 #include <spdlog/fmt/fmt.h>
 
@@ -34,17 +35,6 @@ std::string set_frequency(Vfo vfo, Hz hz) {
   return fmt::format("{}{:09d};", vfo == Vfo::a ? "FA" : "FB", hz);
 }
 
-std::optional<char> mode_char(Mode mode) {
-  switch (mode) {
-    case Mode::lsb: return '1';
-    case Mode::usb: return '2';
-    case Mode::cw: return '3';
-    case Mode::fm: return '4';
-    case Mode::none: break;
-  }
-  return std::nullopt;
-}
-
 std::optional<Mode> mode_from_char(char c) {
   switch (c) {
     case '1': return Mode::lsb;
@@ -57,7 +47,7 @@ std::optional<Mode> mode_from_char(char c) {
 
 std::optional<std::string> set_mode(char band, Mode mode) {
   if (band != '0' && band != '1') throw std::invalid_argument(fmt::format("Yaesu CAT: MD band '{}' (0 or 1)", band));
-  const auto c = mode_char(mode);
+  const auto c = kenwood::mode_digit(mode);  // the same MD codes as Kenwood's: LSB 1, USB 2, CW 3, FM 4
   if (!c) return std::nullopt;
   return fmt::format("MD{}{};", band, *c);
 }

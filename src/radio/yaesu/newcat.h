@@ -20,7 +20,6 @@ std::string set_frequency(Vfo vfo, Hz hz);
 inline std::string read_frequency(Vfo vfo) { return vfo == Vfo::a ? "FA;" : "FB;"; }
 // MD0 / MD1 (Main / Sub) and the mode's character: LSB 1, USB 2, CW 3 (CW-U), FM 4.
 std::optional<std::string> set_mode(char band, Mode mode);
-std::optional<char> mode_char(Mode mode);
 std::optional<Mode> mode_from_char(char c);   // also CW-L 7 -> cw, FM-N B -> fm
 inline std::string read_mode(char band) { return std::string("MD") + band + ";"; }
 inline std::string identify() { return "ID;"; }
