@@ -37,7 +37,7 @@ std::vector<OptionSpec> log_specs() {
           {"power", "W", "add: the transmitter power"}};
 }
 
-std::string usage() {
+std::string log_usage() {
   return "usage: trakbox log add CALL [GRID] [RST] [--rst-rcvd RST] [--note TEXT] [--sat NAME] [--mode MODE]\n"
          "                      [--time UTC] [--power W]\n"
          "       trakbox log list [--since DATE]\n"
@@ -50,7 +50,7 @@ std::string usage() {
          describe_options(log_specs());
 }
 
-int fail(const std::string& why) {
+int log_fail(const std::string& why) {
   std::fprintf(stderr, "trakbox log: %s\n", why.c_str());
   return kExitFailure;
 }
@@ -67,15 +67,17 @@ int show(const std::string& action, json r, const ParsedOptions& o, const Ask& a
   const auto path = o.value("adif");
   if (action == "export" && path) {
     file.open(*path, std::ios::binary | std::ios::trunc);
-    if (!file) return fail(*path + ": cannot be written");
+    if (!file) return log_fail(*path + ": cannot be written");
   }
   for (;;) {
-    if (!r.is_object()) return fail("no answer from the station");
-    if (r.contains("error")) return fail(r["error"].get<std::string>());
+    if (!r.is_object()) return log_fail("no answer from the station");
+    if (r.contains("error")) return log_fail(r["error"].get<std::string>());
     if (action == "add") {
       const json& q = r["qso"];
       std::printf("logged %lld %s %s %s %s\n", static_cast<long long>(q.value("id", 0LL)), q.value("call", "").c_str(),
                   q.value("sat_name", "").c_str(), q.value("mode", "").c_str(), q.value("time_on", "").c_str());
+      if (r.contains("warning") && r["warning"].is_string())
+        std::fprintf(stderr, "trakbox log add: note: %s\n", r["warning"].get<std::string>().c_str());
     } else if (action == "list") {
       for (const auto& q : r["qsos"])
         std::printf("%4lld  %s  %-10s %-8s %-6s %-4s %s\n", static_cast<long long>(q.value("id", 0LL)),
@@ -85,13 +87,22 @@ int show(const std::string& action, json r, const ParsedOptions& o, const Ask& a
       for (const auto& w : r["warnings"]) std::fprintf(stderr, "trakbox log export: WARNING: %s\n", w.get<std::string>().c_str());
       const std::string& adif = r["adif"].get_ref<const std::string&>();
       if (path) {
-        if (!(file << adif)) return fail(*path + ": cannot be written");
+        if (!(file << adif)) return log_fail(*path + ": cannot be written");
       } else {
         std::fputs(adif.c_str(), stdout);
       }
     } else if (action == "import") {
-      std::printf("imported %lld QSOs, %lld already in the log\n", static_cast<long long>(r.value("added", 0LL)),
+      std::printf("imported %lld QSOs, %lld already in the log", static_cast<long long>(r.value("added", 0LL)),
                   static_cast<long long>(r.value("duplicates", 0LL)));
+      const long long skipped = r.value("skipped", 0LL);
+      if (skipped > 0) std::printf(", %lld records skipped (not satellite QSOs)", skipped);
+      std::printf("\n");
+      if (r.contains("skipped_records") && r["skipped_records"].is_array())
+        for (const auto& k : r["skipped_records"])
+          std::printf("  skipped record %lld %s: %s\n", static_cast<long long>(k.value("record", 0LL)),
+                      k.value("call", "").c_str(), k.value("why", "").c_str());
+      if (skipped > static_cast<long long>(r.value("skipped_records", json::array()).size()))
+        std::printf("  (and %lld more)\n", skipped - static_cast<long long>(r["skipped_records"].size()));
     }
     if ((action != "list" && action != "export") || !r.contains("next") || !r["next"].is_string()) break;
     request["after"] = r["next"];
@@ -99,7 +110,7 @@ int show(const std::string& action, json r, const ParsedOptions& o, const Ask& a
     if (!more) return kExitFailure;
     r = std::move(*more);
   }
-  if (path && action == "export" && !file.flush()) return fail(*path + ": cannot be written");
+  if (path && action == "export" && !file.flush()) return log_fail(*path + ": cannot be written");
   return kExitOk;
 }
 
@@ -146,14 +157,14 @@ json direct(logbook::Logbook& book, const json& j) {
 
 int run_log(const std::vector<std::string>& args) {
   ParseOutcome parsed = parse_options(args, log_specs());
-  if (parsed.error) return std::fprintf(stderr, "trakbox log: %s\n%s", parsed.error->text().c_str(), usage().c_str()), kExitUsage;
+  if (parsed.error) return std::fprintf(stderr, "trakbox log: %s\n%s", parsed.error->text().c_str(), log_usage().c_str()), kExitUsage;
   const ParsedOptions& o = parsed.options;
-  if (o.has("help")) return std::fputs(usage().c_str(), stdout), kExitOk;
+  if (o.has("help")) return std::fputs(log_usage().c_str(), stdout), kExitOk;
   const auto& pos = o.positional();
   const std::string action = pos.empty() ? "" : pos[0];
   if (action != "add" && action != "list" && action != "export" && action != "import")
-    return std::fprintf(stderr, "trakbox log: expected add, list, export or import\n%s", usage().c_str()), kExitUsage;
-  if (o.has("socket") && o.has("state")) return fail("--socket: not with --state");
+    return std::fprintf(stderr, "trakbox log: expected add, list, export or import\n%s", log_usage().c_str()), kExitUsage;
+  if (o.has("socket") && o.has("state")) return log_fail("--socket: not with --state");
   if (const auto s = o.value("since"); s && !logbook::parse_utc(*s))
     return std::fprintf(stderr, "trakbox log: --since: expected a UTC date like 2026-12-01, found '%s'\n", s->c_str()), kExitUsage;
   std::string error;
@@ -164,7 +175,7 @@ int run_log(const std::vector<std::string>& args) {
   bool not_running = false;
   const std::string line = "log " + request->dump(-1, ' ', false, json::error_handler_t::replace);
   if (line.size() + 1 > kMaxRequestBytes)
-    return fail(pos[0] + ": " + (pos.size() > 1 ? pos[1] : std::string("the request")) + " makes a request of " +
+    return log_fail(pos[0] + ": " + (pos.size() > 1 ? pos[1] : std::string("the request")) + " makes a request of " +
                 std::to_string(line.size() + 1) + " bytes, more than the " + std::to_string(kMaxRequestBytes) +
                 " (" + std::to_string(kMaxRequestBytes >> 20) + " MiB) the station's socket takes: split the file");
   const auto text = station_request(socket, "log", line, not_running);
@@ -180,12 +191,12 @@ int run_log(const std::vector<std::string>& args) {
     return show(action, json_limits::parse_bounded<json>(*text, why), o, ask, *request);
   }
   if (!not_running) return kExitFailure;
-  if (action == "add") return fail("add: no station is running to take the pass from (start trakbox first)");
-  if (!std::filesystem::exists(state_dir + "/logbook.sqlite")) return fail(state_dir + ": no logbook.sqlite there");
+  if (action == "add") return log_fail("add: no station is running to take the pass from (start trakbox first)");
+  if (!std::filesystem::exists(state_dir + "/logbook.sqlite")) return log_fail(state_dir + ": no logbook.sqlite there");
   std::fprintf(stderr, "trakbox log: no station runs; using %s/logbook.sqlite\n", state_dir.c_str());
   std::string err;
   auto book = logbook::Logbook::open(state_dir + "/logbook.sqlite", err);
-  if (!book) return fail(err);
+  if (!book) return log_fail(err);
   const Ask ask = [&book](const json& j) -> std::optional<json> { return direct(*book, j); };
   return show(action, direct(*book, *request), o, ask, *request);
 }

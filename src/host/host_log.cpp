@@ -23,9 +23,11 @@ Reply log_command(tracker::StationLoop& station, std::string_view args) {
   }
   const tracker::LogResult r = tracker::LogOps(station).log(req);
   if (!r.ok()) return refuse(*r.refusal);
-  return Reply{{"LOGGED " + std::to_string(r.qso.id) + " " + r.qso.call + " " + r.qso.sat_name + " " +
-                logbook::utc_text(r.qso.time_on)},
-               true, false};
+  Reply done{{"LOGGED " + std::to_string(r.qso.id) + " " + r.qso.call + " " + r.qso.sat_name + " " +
+               logbook::utc_text(r.qso.time_on)},
+              true, false};
+  if (r.warning) done.lines.push_back("NOTE " + *r.warning);
+  return done;
 }
 
 }  // namespace tb::host

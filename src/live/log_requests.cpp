@@ -100,15 +100,23 @@ json log_list(const logbook::Logbook& b, const json& request) {
   return {{"ok", true}, {"qsos", std::move(list)}, {"next", next_of(p)}};
 }
 
+// The records an import left out, the first kMaxSkippedShown of them named.
+json skipped_json(const std::vector<logbook::AdifSkipped>& skipped) {
+  constexpr std::size_t kMaxSkippedShown = 20;
+  json list = json::array();
+  for (std::size_t k = 0; k < skipped.size() && k < kMaxSkippedShown; ++k)
+    list.push_back({{"record", skipped[k].record}, {"call", skipped[k].call}, {"why", skipped[k].why}});
+  return list;
+}
+
 json log_import(logbook::Logbook& b, const std::string& adif) {
   logbook::Imported i;
-  {
-    logbook::AdifRead r = logbook::read_adif(adif);
-    if (!r.ok()) return {{"error", "import: " + r.error + "; nothing was stored"}};
-    i = b.import(r.qsos);
-  }
+  logbook::AdifRead r = logbook::read_adif(adif);
+  if (!r.ok()) return {{"error", "import: " + r.error + "; nothing was stored"}};
+  i = b.import(r.qsos);
   if (!i.error.empty()) return {{"error", "import: " + i.error + "; nothing was stored"}};
-  return {{"ok", true}, {"added", i.added}, {"duplicates", i.duplicates}};
+  return {{"ok", true}, {"added", i.added}, {"duplicates", i.duplicates}, {"skipped", r.skipped.size()},
+          {"skipped_records", skipped_json(r.skipped)}};
 }
 
 // The import's thread: one at a time; what it found is posted back to the loop.
@@ -151,7 +159,9 @@ void LogRequests::handle(const std::string& request, std::function<void(std::str
       }
       app_.log().info("socket: QSO {} {} {} {} logged by trakbox log add", r.qso.id, r.qso.call, r.qso.sat_name,
                       logbook::utc_text(r.qso.time_on));
-      return answer({{"ok", true}, {"qso", tracker::qso_json(r.qso)}});
+      json done{{"ok", true}, {"qso", tracker::qso_json(r.qso)}};
+      if (r.warning) done["warning"] = *r.warning;
+      return answer(done);
     }
     if (action == "list") return answer(log_list(*b, j));
     if (action == "export") return answer(log_export(*b, j, tracker::ElementsRefresh::wall_now()));
@@ -180,8 +190,8 @@ void LogRequests::import(std::string request, std::function<void(std::string)> r
     if (result.contains("error"))
       log.warn("socket: an import of {} bytes refused for trakbox log import: {}", bytes, result["error"].get<std::string>());
     else
-      log.info("socket: {} QSOs imported ({} already in the log) by trakbox log import", result.value("added", 0),
-               result.value("duplicates", 0));
+      log.info("socket: {} QSOs imported ({} already in the log, {} records not satellite QSOs skipped) by trakbox "
+               "log import", result.value("added", 0), result.value("duplicates", 0), result.value("skipped", 0));
     reply(result.dump(-1, ' ', false, json::error_handler_t::replace));
   };
   worker_->thread = std::thread([req = std::move(request), path, done = std::move(done), &io = app_.io()]() mutable {

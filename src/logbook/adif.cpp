@@ -143,6 +143,15 @@ bool printable(std::string_view s) {
   return true;
 }
 
+// Why a record is not a satellite QSO, or nothing when it is one.
+std::optional<std::string> not_satellite(const std::map<std::string, std::string_view>& f) {
+  const auto prop = f.find("PROP_MODE");
+  const std::string mode = prop == f.end() ? std::string{} : text::upper(prop->second);
+  if (!mode.empty() && mode != "SAT") return "PROP_MODE " + mode + ", not SAT";
+  if (mode.empty() && !f.count("SAT_NAME")) return "neither PROP_MODE SAT nor SAT_NAME";
+  return std::nullopt;
+}
+
 // A record's fields into a QSO; the refusal names the field.
 std::string to_qso(const std::map<std::string, std::string_view>& f, Qso& q) {
   const auto get = [&](const char* name) -> std::string_view {
@@ -160,10 +169,7 @@ std::string to_qso(const std::map<std::string, std::string_view>& f, Qso& q) {
   const auto time = parse_time(get("TIME_ON"));
   if (!time) return "TIME_ON: '" + std::string(get("TIME_ON")) + "' is not a time (HHMM or HHMMSS)";
   q.time_on = *date + *time;
-  const std::string prop = text::upper(get("PROP_MODE"));
-  if (!prop.empty() && prop != "SAT") return "PROP_MODE: '" + prop + "': the logbook keeps satellite QSOs (SAT)";
   q.lotw_name = std::string(get("SAT_NAME"));
-  if (prop.empty() && q.lotw_name.empty()) return "PROP_MODE: not a satellite QSO (no PROP_MODE SAT, no SAT_NAME)";
   q.sat_name = f.count("APP_TRAKBOX_SAT") ? std::string(get("APP_TRAKBOX_SAT")) : q.lotw_name;
   q.mode = text::upper(get("MODE"));
   if (q.mode == "SAT") return "MODE: the emission (FM, SSB, CW), not SAT";
@@ -267,6 +273,9 @@ AdifExport write_adif(const std::vector<Qso>& qsos, std::string_view program_ver
                            (q.sat_name.empty() ? std::string("no satellite") : q.sat_name) + "): no LoTW name" +
                            (q.norad > 0 ? " for NORAD " + std::to_string(q.norad) : std::string()) +
                            "; SAT_NAME left out, LoTW will not match it as a satellite QSO");
+    if (q.station_call.empty())
+      r.warnings.push_back("QSO " + std::to_string(q.id) + " (" + q.call + "): no STATION_CALLSIGN (logged before the "
+                           "station's callsign was set); TQSL asks which callsign it was made with");
     write_record(r.text, q);
   }
   return r;
@@ -296,6 +305,14 @@ AdifRead read_adif(std::string_view text_in) {
     if (f.name.empty()) break;
     if (f.name == "EOH") return fail("record " + std::to_string(record), "<EOH> after the header");
     if (f.name == "EOR") {
+      if (auto why = not_satellite(fields)) {
+        const auto call = fields.find("CALL");
+        std::string shown = call == fields.end() || !printable(call->second) ? std::string{} : text::upper(call->second);
+        r.skipped.push_back({record, std::move(shown), std::move(*why)});
+        fields.clear();
+        ++record;
+        continue;
+      }
       Qso q;
       if (std::string e = to_qso(fields, q); !e.empty()) return fail("record " + std::to_string(record), e);
       r.qsos.push_back(std::move(q));

@@ -24,14 +24,24 @@ AdifExport write_adif(const std::vector<Qso>& qsos, std::string_view program_ver
 // logger's api/qso takes for one QSO.
 std::string adif_record(const Qso& q);
 
+// A record that is not a satellite QSO (an HF contact in a general logger's export): left out of
+// the import and reported, not a refusal of the file.
+struct AdifSkipped {
+  std::size_t record = 0;   // counted from 1
+  std::string call;         // as the record gives it ("" when it has none)
+  std::string why;          // "PROP_MODE F2, not SAT"
+};
+
 struct AdifRead {
   std::vector<Qso> qsos;   // source import unless the file says it (APP_TRAKBOX_SOURCE)
+  std::vector<AdifSkipped> skipped;
   std::string error;       // "record 3: TIME_ON: ..." or "header: ..."; no records when set
   bool ok() const { return error.empty(); }
 };
 
-// The whole file or nothing: every refusal names the record (counted from 1) and the field.
-// Field lengths count bytes.
+// The satellite QSOs of a whole file or nothing: every refusal names the record (counted from 1)
+// and the field. Records that are not satellite QSOs (a PROP_MODE other than SAT, or neither
+// PROP_MODE nor SAT_NAME) are skipped and listed, whatever else they hold. Field lengths count bytes.
 AdifRead read_adif(std::string_view text);
 
 // "145.965000" of 145965000 Hz; the MHz text back into Hz (nullopt when not a number of MHz with

@@ -1,5 +1,12 @@
 #include "tracker/log_ops.h"
 
+#include <chrono>
+
+#include <fmt/format.h>
+
+#include "logbook/qso.h"
+#include "orbit/observe.h"
+#include "orbit/sgp4.h"
 #include "station/station.h"
 #include "store/model.h"
 #include "tracker/operations.h"
@@ -20,6 +27,21 @@ logbook::Logbook* LogOps::book(std::string& why) const {
   }
   return logging_->book.get();
 }
+
+namespace {
+
+// A QSO through a satellite that was below the horizon here at its time: stored (the operator may
+// log afterwards, or a partner's grid), but said (issue 60).
+std::optional<std::string> below_horizon(const store::Satellite& sat, const orbit::Observer& here, std::int64_t time_on) {
+  const orbit::Sgp4 prop(sat.elements);
+  const orbit::UtcTime t{std::chrono::seconds(time_on)};
+  const orbit::Observation o = orbit::observe(prop, here, t);
+  if (!o.ok() || o.look.el_deg >= 0.0) return std::nullopt;
+  return fmt::format("{} was below the horizon here ({:.1f} deg) at {} UTC", sat.name(), o.look.el_deg,
+                     logbook::utc_text(time_on).substr(11));
+}
+
+}  // namespace
 
 LogResult LogOps::fill(const LogRequest& r) const {
   LogResult out;
@@ -44,14 +66,14 @@ LogResult LogOps::fill(const LogRequest& r) const {
   const SatNow* followed = station_.tracker().followed();
   if (!r.sat.empty()) {
     db = StationOps(station_).find_satellite(r.sat);
-    if (!db) return {"sat: unknown satellite '" + r.sat + "'", q};
+    if (!db) return {"sat: " + StationOps(station_).unknown_satellite(r.sat), q, std::nullopt};
   } else if (followed) {
     db = followed->db_index;
   } else if (station_.remote_db_index()) {
     db = station_.remote_db_index();
   }
   if (!db || *db < 0 || *db >= static_cast<int>(model.db.satellites.size()))
-    return {std::string("sat: no satellite is tracked; name one"), q};
+    return {std::string("sat: no satellite is tracked; name one"), q, std::nullopt};
   const store::Satellite& sat = model.db.satellites[static_cast<std::size_t>(*db)];
   q.sat_name = sat.name();
   q.norad = sat.elements.catalog_number;
@@ -72,6 +94,7 @@ LogResult LogOps::fill(const LogRequest& r) const {
   q.mode = !r.mode.empty() ? r.mode : m == radio::Mode::none ? std::string() : logbook::adif_mode(radio::to_string(m));
   q = logbook::normalized(std::move(q));
   if (auto e = logbook::check_qso(q)) out.refusal = *e;
+  out.warning = below_horizon(sat, model.station.observer(), q.time_on);
   return out;
 }
 
@@ -80,9 +103,9 @@ LogResult LogOps::log(const LogRequest& r) {
   if (!out.ok()) return out;
   std::string why;
   logbook::Logbook* b = book(why);
-  if (!b) return {why, out.qso};
+  if (!b) return {why, out.qso, std::nullopt};
   const logbook::Added a = b->add(out.qso, logging_->upload);
-  if (!a.ok()) return {a.error, out.qso};
+  if (!a.ok()) return {a.error, out.qso, std::nullopt};
   if (auto stored = b->get(a.id)) out.qso = *stored;
   if (logging_->on_logged) logging_->on_logged();
   return out;

@@ -54,6 +54,9 @@ struct LogRequest {
 struct LogResult {
   std::optional<std::string> refusal;   // nothing stored when set
   logbook::Qso qso;                     // as stored (with its id)
+  // Stored, but worth a word: the satellite was below the station's horizon at the QSO's time
+  // ("SO-50 was below the horizon here (-12.3 deg) at 21:44:20 UTC").
+  std::optional<std::string> warning;
   bool ok() const { return !refusal; }
 };
 

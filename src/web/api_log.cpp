@@ -154,7 +154,9 @@ Response log_post(tracker::StationLoop& station, const std::string& path, const 
     if (!r.ok()) return refused(409, what, *r.refusal);
     spdlog::info("web: QSO {} {} {} {} logged by {}", r.qso.id, r.qso.call, r.qso.sat_name,
                  logbook::utc_text(r.qso.time_on), who);
-    return reply(200, {{"ok", true}, {"qso", tracker::qso_json(r.qso)}});
+    json done{{"ok", true}, {"qso", tracker::qso_json(r.qso)}};
+    if (r.warning) done["warning"] = *r.warning;
+    return reply(200, done);
   }
   const auto id = id_of(body);
   const std::string what = path == "/api/v1/log/edit" ? "editing QSO " : "deleting QSO ";

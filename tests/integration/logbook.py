@@ -109,6 +109,20 @@ def main():
         check(code == 0 and os.path.getsize(out_file) > 0, f"export: {code} {err}")
         code, out, err = sh(BIN, "log", "import", out_file, "--state", state)
         check(code == 0 and "imported 0 QSOs, 2 already in the log" in out, f"import of the export: {code} {out} {err}")
+        # A general logger's export (issue 60, item 6): its HF records are skipped and named, the
+        # satellite one is imported.
+        mixed = os.path.join(state, "mixed.adi")
+        with open(mixed, "w") as f:
+            f.write("exported by a general logger <EOH>\n"
+                    "<CALL:5>DL1AB <QSO_DATE:8>20261201 <TIME_ON:4>1200 <BAND:3>20m <FREQ:6>14.074 <MODE:3>FT8 <EOR>\n"
+                    "<CALL:4>N0HF <QSO_DATE:8>20261201 <TIME_ON:4>1210 <PROP_MODE:2>F2 <MODE:2>CW <EOR>\n"
+                    "<CALL:4>N0SO <QSO_DATE:8>20261201 <TIME_ON:4>2205 <MODE:2>FM <PROP_MODE:3>SAT <SAT_NAME:5>SO-50 <EOR>\n")
+        code, out, err = sh(BIN, "log", "import", mixed, "--state", state)
+        check(code == 0 and "imported 1 QSOs, 0 already in the log, 2 records skipped (not satellite QSOs)" in out
+              and "skipped record 1 DL1AB: neither PROP_MODE SAT nor SAT_NAME" in out
+              and "skipped record 2 N0HF: PROP_MODE F2, not SAT" in out, f"mixed import: {code} {out} {err}")
+        status, r = w.get_json("/api/v1/log")
+        check(len(r["qsos"]) == 3 and any(q["call"] == "N0SO" for q in r["qsos"]), f"the SO-50 QSO stored: {r['qsos']}")
         bad = os.path.join(state, "bad.adi")
         with open(bad, "w") as f:
             f.write("<CALL:4>N0AA <QSO_DATE:8>20261201 <TIME_ON:4>2200 <PROP_MODE:3>SAT <EOR>\n"
@@ -116,7 +130,7 @@ def main():
         code, out, err = sh(BIN, "log", "import", bad, "--state", state)
         check(code != 0 and "record 2: TIME_ON: '2590'" in err and "nothing was stored" in err, f"bad import: {code} {err}")
         status, r = w.get_json("/api/v1/log")
-        check(len(r["qsos"]) == 2, f"nothing stored from the bad file: {r['qsos']}")
+        check(len(r["qsos"]) == 3, f"nothing stored from the bad file: {r['qsos']}")
         # A file past the socket's first 1 MiB goes through (4200 QSOs of 540 bytes); one past its 16 MiB is
         # refused by the client, naming the size and the limit.
         note = "x" * 400

@@ -24,6 +24,14 @@ TEST_CASE("An RS-44 QSO in ADIF 3.1.4: uplink in BAND/FREQ, TQSL's name, the emi
         "<APP_TRAKBOX_FREQ_TUNED:9>145962310 <APP_TRAKBOX_FREQ_RX_TUNED:9>435648070 <APP_TRAKBOX_SOURCE:3>web <EOR>\n");
 }
 
+TEST_CASE("A QSO logged before the station's callsign was set: exported with a warning") {
+  const AdifExport e = write_adif({iss()}, "0.1.0", 0);
+  REQUIRE(e.warnings.size() == 1);
+  CHECK(e.warnings[0] == "QSO 2 (K1JT): no STATION_CALLSIGN (logged before the station's callsign was set); "
+                         "TQSL asks which callsign it was made with");
+  CHECK(e.text.find("STATION_CALLSIGN") == std::string::npos);
+}
+
 TEST_CASE("Export then import is the identity on every field") {
   const AdifExport e = write_adif({rs44(), iss()}, "0.1.0", 0);
   CHECK(e.text.find("<SAT_NAME:5>ARISS") != std::string::npos);
@@ -41,6 +49,7 @@ TEST_CASE("A satellite without a LoTW name: a warning and no SAT_NAME, never a g
   q.sat_name = "CSS";
   q.lotw_name.clear();
   q.norad = 48274;
+  q.station_call = "JA6XYZ";
   const AdifExport e = write_adif({q}, "0.1.0", 0);
   REQUIRE(e.warnings.size() == 1);
   CHECK(e.warnings[0] == "QSO 2 (K1JT, CSS): no LoTW name for NORAD 48274; SAT_NAME left out, LoTW will not match it as a satellite QSO");
@@ -80,8 +89,6 @@ TEST_CASE("Every refusal names the record and the field; nothing is returned fro
         "record 2: TIME_ON: '256000' is not a time (HHMM or HHMMSS)");
   CHECK(err("<CALL:5>W1 AW <QSO_DATE:8>20261201 <TIME_ON:6>214420 <PROP_MODE:3>SAT <EOR>") ==
         "record 2: CALL: 'W1 AW' is not a callsign (letters, digits and '/' only)");
-  CHECK(err("<CALL:4>W1AW <QSO_DATE:8>20261201 <TIME_ON:6>214420 <PROP_MODE:2>ES <EOR>") ==
-        "record 2: PROP_MODE: 'ES': the logbook keeps satellite QSOs (SAT)");
   CHECK(err("<CALL:4>W1AW <QSO_DATE:8>20261201 <TIME_ON:6>214420 <PROP_MODE:3>SAT <MODE:3>SAT <EOR>") ==
         "record 2: MODE: the emission (FM, SSB, CW), not SAT");
   CHECK(err("<CALL:4>W1AW <QSO_DATE:8>20261201 <TIME_ON:6>214420 <PROP_MODE:3>SAT <BAND:4>70cm <FREQ:7>145.990 <EOR>") ==
@@ -94,6 +101,32 @@ TEST_CASE("Every refusal names the record and the field; nothing is returned fro
   CHECK(err("<CALL:4>W1AW <QSO_DATE:8>20261201 <TIME_ON:6>214420 <SAT_NAME:2>\xc3\xa9 <EOR>") ==
         "record 2: SAT_NAME: printable ASCII only (an .adi file's text fields)");
   CHECK(read_adif("a header without its end").error == "header: no <EOH> (a file that does not begin with '<' has a header)");
+}
+
+TEST_CASE("Records that are not satellite QSOs are skipped and listed, the satellite ones kept") {
+  // A general logger's export: an HF QSO (PROP_MODE absent, no SAT_NAME), a sporadic-E one
+  // (PROP_MODE ES, even with a bad time: a skipped record is not judged), and one via RS-44.
+  const AdifRead r = read_adif(
+      "<ADIF_VER:5>3.1.4 <EOH>\n"
+      "<CALL:5>DL1AB <QSO_DATE:8>20261201 <TIME_ON:4>1200 <BAND:3>20m <FREQ:6>14.074 <MODE:3>FT8 <EOR>\n"
+      "<CALL:4>k1jt <QSO_DATE:8>20261201 <TIME_ON:4>9999 <PROP_MODE:2>es <EOR>\n"
+      "<CALL:4>W1AW <QSO_DATE:8>20261201 <TIME_ON:6>214420 <PROP_MODE:3>SAT <SAT_NAME:5>RS-44 <EOR>\n"
+      "<CALL:4>N0CC <QSO_DATE:8>20261201 <TIME_ON:6>214420 <SAT_NAME:5>AO-91 <EOR>\n");
+  REQUIRE(r.ok());
+  REQUIRE(r.qsos.size() == 2);
+  CHECK(r.qsos[0].call == "W1AW");
+  CHECK(r.qsos[1].lotw_name == "AO-91");
+  REQUIRE(r.skipped.size() == 2);
+  CHECK(r.skipped[0].record == 1);
+  CHECK(r.skipped[0].call == "DL1AB");
+  CHECK(r.skipped[0].why == "neither PROP_MODE SAT nor SAT_NAME");
+  CHECK(r.skipped[1].record == 2);
+  CHECK(r.skipped[1].call == "K1JT");
+  CHECK(r.skipped[1].why == "PROP_MODE ES, not SAT");
+  // A satellite record's refusal still refuses the whole file, counted among all the records.
+  const AdifRead bad = read_adif("<CALL:5>DL1AB <EOR>\n<CALL:4>W1AW <QSO_DATE:8>20261301 <TIME_ON:4>1200 <PROP_MODE:3>SAT <EOR>");
+  CHECK(bad.error == "record 2: QSO_DATE: '20261301' is not a date (YYYYMMDD)");
+  CHECK(bad.qsos.empty());
 }
 
 TEST_CASE("The shipped NORAD to LoTW table parses and names RS-44, ISS and GreenCube as TQSL does") {
