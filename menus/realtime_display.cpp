@@ -234,7 +234,7 @@ void realtime_key(term::Terminal& t, Services& s, int k, std::string& said) {
       break;
     case 'l':
     case 'L':
-      realtime_log_qso(t, s);  // a QSO of this pass into the logbook (menus/realtime_log.cpp)
+      said = realtime_log_qso(t, s);  // a QSO of this pass into the logbook (menus/realtime_log.cpp)
       break;
     case '+':
     case '-':

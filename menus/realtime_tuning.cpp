@@ -26,19 +26,6 @@ std::string quoted(std::string_view s) {
   return "'" + out + (s.size() > 20 ? "...'" : "'");
 }
 
-// The prompt, on the full screen's row under the live block cleared first (an earlier, longer
-// prompt and answer stay there until then).
-void prompt(term::Terminal& t, const std::string& text) {
-  if (t.full_screen()) t.write("\r" + std::string(static_cast<std::size_t>(std::max(0, t.columns() - 1)), ' ') + "\r");
-  t.write(text);
-}
-
-// What the key has to say: a serial terminal gets it at once; the full screen in the live block.
-std::string said(term::Terminal& t, std::string text) {
-  if (!t.full_screen()) t.line(text);
-  return text;
-}
-
 // Runs the operation (asking for the radio) and saves what it kept: the note, or the refusal.
 // Nothing when the operator answered N to taking the radio back.
 std::optional<std::string> tune(term::Terminal& t, Services& s,
@@ -82,33 +69,33 @@ std::optional<long long> parse_offset_hz(std::string_view text) {
 }
 
 std::string realtime_type_spot(term::Terminal& t, Services& s) {
-  prompt(t, "Spot (downlink, MHz 435.645 or Hz 435645000) > ");
+  live_prompt(t, "Spot (downlink, MHz 435.645 or Hz 435645000) > ");
   const std::string answer = text::trimmed(read_line(t, 20));
-  if (answer.empty()) return said(t, "Spot unchanged");
+  if (answer.empty()) return live_said(t, "Spot unchanged");
   const auto hz = parse_spot_hz(answer);
   if (!hz)
-    return said(t, "Spot unchanged: " + quoted(answer) +
+    return live_said(t, "Spot unchanged: " + quoted(answer) +
                        " is not a frequency: expected MHz such as 435.645 or Hz such as 435645000");
   bool ok = false;
   const auto r = tune(t, s, [hz](tracker::StationOps& o) { return o.tune_spot(*hz); }, ok);
-  return r ? said(t, *r) : std::string();
+  return r ? live_said(t, *r) : std::string();
 }
 
 std::string realtime_type_offset(term::Terminal& t, Services& s, bool tx) {
   const std::string what = tx ? "TX offset" : "RX offset";
-  prompt(t, what + " (Hz, e.g. -300; 0 resets) > ");
+  live_prompt(t, what + " (Hz, e.g. -300; 0 resets) > ");
   const std::string answer = text::trimmed(read_line(t, 20));
-  if (answer.empty()) return said(t, what + " unchanged");
+  if (answer.empty()) return live_said(t, what + " unchanged");
   const auto hz = parse_offset_hz(answer);
   if (!hz)
-    return said(t, what + " unchanged: " + quoted(answer) + " is not a whole number of Hz: expected -" +
+    return live_said(t, what + " unchanged: " + quoted(answer) + " is not a whole number of Hz: expected -" +
                        std::to_string(radio::kMaxOffsetHz) + " to " + std::to_string(radio::kMaxOffsetHz) + ", e.g. -300");
   const std::optional<long long> v = *hz;
   bool ok = false;
   const auto r = tune(t, s, [v, tx](tracker::StationOps& o) {
     return tx ? o.tune_offsets(std::nullopt, v) : o.tune_offsets(v, std::nullopt);
   }, ok);
-  return r ? said(t, *r) : std::string();
+  return r ? live_said(t, *r) : std::string();
 }
 
 std::string realtime_step_offset(term::Terminal& t, Services& s, int direction) {
@@ -117,10 +104,20 @@ std::string realtime_step_offset(term::Terminal& t, Services& s, int direction) 
   bool ok = false;
   const auto r = tune(t, s, [to](tracker::StationOps& o) { return o.tune_offsets(to, std::nullopt); }, ok);
   if (!r) return "";
-  if (!ok) return said(t, *r);
+  if (!ok) return live_said(t, *r);
   // The manual's RIT: the new offset (the full screen's radio line shows it too; issue 18, item 6).
   const radio::Hz now = s.station.tuner().rit_hz();
-  return said(t, "Frequency offset " + std::string(now > 0 ? "+" : "") + std::to_string(now) + " Hz");
+  return live_said(t, "Frequency offset " + std::string(now > 0 ? "+" : "") + std::to_string(now) + " Hz");
+}
+
+void live_prompt(term::Terminal& t, const std::string& text) {
+  if (t.full_screen()) t.write("\r" + std::string(static_cast<std::size_t>(std::max(0, t.columns() - 1)), ' ') + "\r");
+  t.write(text);
+}
+
+std::string live_said(term::Terminal& t, std::string text) {
+  if (!t.full_screen()) t.line(text);
+  return text;
 }
 
 }  // namespace tb::menus

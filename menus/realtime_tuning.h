@@ -31,6 +31,13 @@ std::optional<long long> parse_spot_hz(std::string_view text);
 // "+120", "-300", "0", "120" -> Hz (whole Hz only); nothing otherwise.
 std::optional<long long> parse_offset_hz(std::string_view text);
 
+// A key's prompt, on the full screen's row under the live block cleared first (an earlier, longer
+// prompt and answer stay there until then).
+void live_prompt(term::Terminal& t, const std::string& text);
+// What a key has to say: a serial terminal gets it as a line at once; the full screen shows the
+// returned text in the live block.
+std::string live_said(term::Terminal& t, std::string text);
+
 // The S, R and T keys at the live display: one prompt, then the change or the refusal.
 std::string realtime_type_spot(term::Terminal& t, Services& s);
 std::string realtime_type_offset(term::Terminal& t, Services& s, bool tx);

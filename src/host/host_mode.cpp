@@ -1,6 +1,7 @@
 #include "host/host_mode.h"
 #include "host/host_log.h"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -151,7 +152,24 @@ std::string format_antenna(double az_deg, double el_deg) {
 
 Interpreter::Interpreter(tracker::StationLoop& station) : station_(station) {}
 
-std::vector<std::string> Interpreter::greeting() { return {std::string(kBanner), std::string(kCommandLine)}; }
+std::vector<std::string> Interpreter::greeting() {
+  // The manual's two lines, then trakbox's own commands from the table (issue 60: the greeting
+  // named none of LOG, PB, OR, OT, CT): a command is the manual's when the manual's line lists its
+  // word (as is, or followed by its argument's x or _).
+  std::vector<std::string> own;
+  const std::string_view manual = kCommandLine.substr(kCommandLine.find(':') + 1);
+  for (const Command& c : commands()) {
+    const std::string_view word = c.word.substr(0, c.word.find(' '));   // "STANDBY ON": STANDBY
+    bool listed = false;
+    for (std::string_view item : text::split(manual, ','))
+      listed = listed || item == word ||
+               (item.rfind(word, 0) == 0 && (item[word.size()] == 'x' || item[word.size()] == '_'));
+    if (!listed && std::find(own.begin(), own.end(), word) == own.end()) own.emplace_back(word);
+  }
+  std::string also = "Also:";
+  for (std::size_t i = 0; i < own.size(); ++i) also += (i ? "," : "") + own[i];
+  return {std::string(kBanner), std::string(kCommandLine), also + " (? explains each)"};
+}
 
 // Host mode's commands, one table (issue 55): the manual's and trakbox's own, in the order `?`
 // lists them, each with its help line and what it runs. A line goes to the command whose word it

@@ -87,6 +87,15 @@ def main():
         _, _, t3 = radio(state)
         check(t3["downlink_spot_hz"] == 435645000 and t3["tx_offset_hz"] == -300, f"nothing changed: {t3}")
 
+        # L in full screen (issue 60, item 5): the answer stays in the live block, as the tuning keys'.
+        keys("L")
+        wait_for(r"Log QSO: CALL \[GRID\] \[RST\] >")
+        keys("W1AW FN31 59", "Enter")
+        wait_for(r"Logged #1 W1AW RS-44 \S+ 10:5\d:\d\d UTC")
+        keys("L")
+        wait_for(r"Log QSO: CALL")
+        keys("W1 AW ZZ", "Enter")
+        wait_for(r"Not logged: ")
         keys("q")
         wait_for(r"Select \[1-8,S,M\]:")
         keys("C-c")
