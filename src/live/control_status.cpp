@@ -47,21 +47,6 @@ void add_control_status(const tracker::StationLoop& station, nlohmann::json& j) 
                     {"jobs", sn->jobs},
                     {"last_poll", sn->last_poll.empty() ? nlohmann::json(nullptr) : nlohmann::json(sn->last_poll)},
                     {"error", sn->error ? nlohmann::json(*sn->error) : nlohmann::json(nullptr)}};
-  // The antenna's target is the holder's: where the antenna was last sent, never a stale decision.
-  const bool held = !c.tracking_drives(tracker::Resource::antenna);
-  if (j.contains("antenna") && (held || station.tracker().mode() == tracker::Mode::off)) {
-    nlohmann::json& a = j["antenna"];
-    const auto& rs = station.rotator().status();
-    // Not a decision of a tracker that no longer decides (issue 44: "park to az 0 el 0" with parking off).
-    a["action"] = held ? "held" : rs.target ? "point" : "hold";
-    if (rs.target)
-      a["target"] = {{"az_deg", station.rotator().model().compass_from_travel(rs.target->az_travel)},
-                     {"el_deg", rs.target->el}};
-    else if (rs.has_position)  // arrived and stopped there (a client's P done): it holds where it is
-      a["target"] = {{"az_deg", rs.az.deg}, {"el_deg", rs.el.deg}};
-    else
-      a["target"] = nullptr;
-  }
   // A link trakbox does not tune now says why, not "confirmed" (the Radio panel shows the state).
   const std::string doppler = doppler_text(station);
   if (j.contains("radios"))

@@ -13,9 +13,8 @@ class StationLoop;
 namespace tb::app {
 
 // Adds "control": {"antenna": {kind, label, since, until}, "radio": {...}}, "standby" and
-// "reservations" to the status document; while someone other than trakbox's tracking holds the
-// antenna (or nothing tracks), antenna.target is where the antenna was last sent (the rotator's
-// commanded target) and antenna.action "held" (or "point"/"hold"); each radio's "doppler" says whether trakbox tunes it now and, if not, why.
+// "reservations" to the status document (antenna.action and antenna.target, whoever holds it, are
+// StationLoop::aim's); each radio's "doppler" says whether trakbox tunes it now and, if not, why.
 void add_control_status(const tracker::StationLoop& station, nlohmann::json& status);
 
 }  // namespace tb::app

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "live/control_status.h"
@@ -15,6 +16,7 @@
 #include "radio/two_radios.h"
 #include "station/clock.h"
 #include "station/station.h"
+#include "store/model.h"
 #include "tracker/elements_refresh.h"
 #include "tracker/log_json.h"
 #include "tracker/pass_memo.h"
@@ -50,15 +52,6 @@ const char* mode_name(tracker::Mode m) {
   }
 }
 
-const char* antenna_action(tracker::Decision::Antenna a) {
-  switch (a) {
-    case tracker::Decision::Antenna::point: return "point";
-    case tracker::Decision::Antenna::preposition: return "preposition";
-    case tracker::Decision::Antenna::park: return "park";
-    default: return "hold";
-  }
-}
-
 const char* link_name(rotator::LinkState s) {
   switch (s) {
     case rotator::LinkState::connecting: return "connecting";
@@ -78,14 +71,13 @@ nlohmann::json antenna_json(StationApp& app) {
                    {"on_target", rs.on_target}};
   if (const auto pos = st.antenna()) a["position"] = {{"az_deg", pos->az}, {"el_deg", pos->el}};
   else a["position"] = nullptr;
-  const tracker::Decision& d = app.tracker().last_decision();
-  // With parking off a "park" decision moves nothing (Controller::park): the antenna holds, and
-  // no parking position (0/0) is shown as wanted.
-  const bool parks = st.rotator().config().parking_enabled;
-  const bool holds = d.antenna == tracker::Decision::Antenna::hold || (d.antenna == tracker::Decision::Antenna::park && !parks);
-  a["action"] = holds ? "hold" : antenna_action(d.antenna);
-  a["target"] = holds ? nlohmann::json(nullptr) : nlohmann::json{{"az_deg", d.az_deg}, {"el_deg", d.el_deg}};
-  a["parking_enabled"] = parks;
+  // The one aim (StationLoop::aim): a client's target while it holds, the position an antenna
+  // holds at (issue 60, item 9: after a rotctld P 200 30, "hold" with no target and the sky's
+  // target drawn at 0/0), never a parking position with parking off.
+  const tracker::StationLoop::Aim aim = st.aim();
+  a["action"] = aim.action;
+  a["target"] = aim.target ? nlohmann::json{{"az_deg", aim.target->az}, {"el_deg", aim.target->el}} : nlohmann::json(nullptr);
+  a["parking_enabled"] = st.rotator().config().parking_enabled;
   a["az_travel_deg"] = st.rotator().config().az_travel_deg;
   return a;
 }
@@ -318,7 +310,26 @@ nlohmann::json station_status(StationApp& app, const StatusContext& cx) {
   const auto problems = status_problems(j);
   j["healthy"] = problems.empty();
   j["problems"] = problems;
+  j["setup"] = setup_needed(app.model());
   return j;
+}
+
+std::vector<std::string> setup_needed(const store::Model& m) {
+  // A first start runs as the factory's station (NOCALL at 27.4 N 128.7 E): said until the operator
+  // sets both, so that passes, Doppler and the log's STATION_CALLSIGN are the operator's own.
+  std::vector<std::string> out;
+  const store::Model factory = store::factory_defaults();
+  if (m.station.callsign.empty() || m.station.callsign == factory.station.callsign)
+    out.push_back("callsign not set (" + (m.station.callsign.empty() ? std::string("none") : m.station.callsign) +
+                  "): QSOs are logged without STATION_CALLSIGN; set it in menu 4, the page's Station card or "
+                  "`trakbox settings set station.callsign CALL`");
+  if (m.station.lat_deg == factory.station.lat_deg && m.station.lon_deg == factory.station.lon_deg &&
+      !m.gps.position_from_gps)
+    out.push_back(fmt::format("station position not set: the factory's {:.3f}, {:.3f} ({}) is used; set it in menu 4, "
+                              "the page's Station card or `trakbox --station LAT,LON[,HEIGHT]`",
+                              m.station.lat_deg, m.station.lon_deg,
+                              station::maidenhead_locator(m.station.lat_deg, m.station.lon_deg)));
+  return out;
 }
 
 std::vector<std::string> status_problems(const nlohmann::json& s) {
@@ -393,6 +404,7 @@ std::string format_status(const nlohmann::json& s) {
   if (const auto st = s.value("station", nlohmann::json()); st.is_object())
     line("  station   " + st.value("callsign", "") + " " + num(st["lat_deg"], 4) + ", " + num(st["lon_deg"], 4) + ", " +
          num(st["height_m"], 0) + " m, " + st.value("locator", ""));
+  for (const auto& n : s.value("setup", nlohmann::json::array())) line("  SETUP     " + n.get<std::string>());
   line("  time      " + s.value("time", "") + (s.value("clock_rate", 1.0) != 1.0 ? " (clock x" + num(s["clock_rate"], 1) + ")" : ""));
   const auto& t = s.at("tracking");
   std::string tracking = "  tracking  " + t.value("mode", "off");
@@ -415,6 +427,11 @@ std::string format_status(const nlohmann::json& s) {
   if (const auto c = s.value("control", nlohmann::json()); c.is_object())
     line("  control   antenna " + c["antenna"].value("label", "") + ", radio " + c["radio"].value("label", "") +
          (s.value("standby", false) ? " (STANDBY)" : ""));
+  // The windows trakbox yields in (`trakbox reserve`, SatNOGS jobs), as --json lists them.
+  for (const auto& w : s.value("reservations", nlohmann::json::array()))
+    line("  reserved  " + w.value("start", "") + " - " + w.value("end", "") + " " + w.value("kind", "") +
+         (w.value("satellite", "").empty() ? std::string() : " " + w.value("satellite", "")) +
+         (w.value("note", "").empty() ? std::string() : " (" + w.value("note", "") + ")"));
   for (const auto& r : s.at("radios"))
     line("  radio     " + r.value("radio", "") + ": downlink " + num(r.value("downlink_hz", nlohmann::json()), 0) +
          " Hz, uplink " + num(r.value("uplink_hz", nlohmann::json()), 0) + " Hz, " +

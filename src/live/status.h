@@ -8,6 +8,8 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "store/model.h"
+
 namespace tb::app {
 
 class StationApp;
@@ -27,6 +29,10 @@ struct StatusContext {
 nlohmann::json station_status(StationApp& app, const StatusContext& context);
 // What is wrong, one line each ("rotator link: fault: no reply"); none when healthy.
 std::vector<std::string> status_problems(const nlohmann::json& status);
+// What a first start leaves to set ("setup" in the status, SETUP lines in its text, the page's
+// Station card open): the factory's callsign, the factory's position. Not problems: the station
+// works meanwhile.
+std::vector<std::string> setup_needed(const store::Model& model);
 // The document as a few lines for a person.
 std::string format_status(const nlohmann::json& status);
 

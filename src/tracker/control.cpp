@@ -147,6 +147,8 @@ std::vector<Change> Control::tick(orbit::UtcTime now) {
   std::vector<Change> out;
   for (const Resource r : {Resource::antenna, Resource::radio}) {
     Slot& s = slot(r);
+    // Held by trakbox's tracking since the station started: the first tick's time, not 1970 (issue 60).
+    if (s.now.since == orbit::UtcTime{}) s.now.since = now;
     // A connectionless sender (PstRotator's UDP) never disconnects: its silence ends its hold even
     // under --handback 0, after kConnectionlessHandbackS (issue 56).
     const bool connectionless = s.now.kind == HolderKind::pstrotator;

@@ -10,6 +10,7 @@
 #include "store/model.h"
 #include "store/owner.h"
 #include "tracker/operations.h"
+#include "util/text.h"
 #include "tracker/station_loop.h"
 
 namespace tb::tracker {
@@ -106,6 +107,15 @@ OpResult StationOps::set_station(double lat_deg, double lon_deg, double height_m
   OpResult r;
   r.model_changed = done.changed;
   r.note = fmt::format("station {:.4f}, {:.4f}, {:.0f} m", lat_deg, lon_deg, height_m);
+  return r;
+}
+
+OpResult StationOps::set_callsign(const std::string& callsign) {
+  const store::EditResult done = station_.owner().set("station.callsign", text::upper(callsign), origin());
+  if (!done.ok()) return OpResult::refuse(*done.refusal);
+  OpResult r;
+  r.model_changed = done.changed;
+  r.note = "callsign " + station_.model().station.callsign;
   return r;
 }
 

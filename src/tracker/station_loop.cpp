@@ -251,6 +251,10 @@ void StationLoop::set_uplink_radio(std::unique_ptr<radio::RadioDriver> uplink) {
   radio_.reset();  // the old uplink radio closes here
   if (uplink) radio_ = std::make_unique<radio::TwoRadios>(std::move(downlink), std::move(uplink));
   else radio_ = std::move(downlink);
+  resend_radio();
+}
+
+void StationLoop::resend_radio() {
   tuner_.resend();   // the spot stays; frequencies and modes go out again, and the tone
   const int tone = tuned_ ? tuner_.satellite().ctcss_tenths_hz : 0;
   if (tone > 0) radio_->set_ctcss_tone(tone);
@@ -302,7 +306,9 @@ void StationLoop::apply(const std::vector<Change>& changes) {
     spdlog::info("control: the {} is held by {} ({}), was {}", resource_name(c.resource), c.to.label, c.why,
                  c.from.label);
     if (c.to.kind == HolderKind::tracking) {
-      if (c.resource == Resource::radio) tuned_.reset();  // select the satellite again: sent afresh
+      // The radio back from a client: the operator's spot, offsets and tone stay (the satellite is
+      // not selected again); frequencies, modes and the tone go out afresh.
+      if (c.resource == Resource::radio) resend_radio();
       else planned_.reset();
       wake();
     }
@@ -401,6 +407,25 @@ std::optional<rotator::AzEl> StationLoop::antenna() const {
   const auto& s = rotator_->status();
   if (!s.has_position) return std::nullopt;
   return rotator::AzEl{s.az.deg, s.el.deg};
+}
+
+StationLoop::Aim StationLoop::aim() const {
+  const rotator::Status& rs = rotator_->status();
+  std::optional<rotator::AzEl> here;
+  if (rs.has_position) here = rotator::AzEl{rs.az.deg, rs.el.deg};
+  std::optional<rotator::AzEl> commanded = here;
+  if (rs.target) commanded = rotator::AzEl{rotator_->model().compass_from_travel(rs.target->az_travel), rs.target->el};
+  if (!control_.tracking_drives(Resource::antenna)) return {commanded, "held"};
+  if (tracker_.mode() == Mode::off) return {commanded, rs.target ? "point" : "hold"};
+  const Decision& d = tracker_.last_decision();
+  switch (d.antenna) {
+    case Decision::Antenna::point: return {rotator::AzEl{d.az_deg, d.el_deg}, "point"};
+    case Decision::Antenna::preposition: return {rotator::AzEl{d.az_deg, d.el_deg}, "preposition"};
+    case Decision::Antenna::park:
+      if (rotator_->config().parking_enabled) return {rotator::AzEl{d.az_deg, d.el_deg}, "park"};
+      return {here, "hold"};   // parking off: Controller::park moves nothing
+    default: return {here, "hold"};
+  }
 }
 
 std::string StationLoop::status_line() const {

@@ -151,6 +151,16 @@ class StationLoop {
 
   // Compass azimuth/elevation the antenna points at now, if known.
   std::optional<rotator::AzEl> antenna() const;
+  // Where the antenna is being sent (compass degrees) and why, the one answer the status and the
+  // page's sky give: trakbox's decision while its tracking drives the antenna ("point",
+  // "preposition", "park"); an outside holder's commanded target ("held": a client's `P`, a Satrak
+  // GOTO, a SatNOGS job); with tracking off the last goto ("point"). An antenna that holds (no
+  // pass, parking off, a client's move done) has its position as its target: it stays there.
+  struct Aim {
+    std::optional<rotator::AzEl> target;
+    const char* action = "hold";   // held, point, preposition, park, hold
+  };
+  Aim aim() const;
   // One line for the full-screen status bar: time, satellite, rotator and radio state, and
   // "STATE NOT SAVED" while the last save failed (memory and disk differ).
   std::string status_line() const;
@@ -187,6 +197,9 @@ class StationLoop {
   void position_changed() { ++position_generation_; }
 
  private:
+  // What was sent is forgotten (the spot, offsets and tone stay): everything goes out again.
+  void resend_radio();
+
   store::ModelOwner& owner_;
   const store::Model& model_;  // owner_.model(), read only
   const station::Clock& clock_;

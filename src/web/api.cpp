@@ -10,6 +10,7 @@
 
 #include "orbit/element_age.h"
 #include "orbit/passes.h"
+#include "station/station.h"
 #include "store/model.h"
 #include "tracker/operations.h"
 #include "tracker/station_loop.h"
@@ -85,15 +86,20 @@ std::optional<std::string> percent_decode(std::string_view s) {
   return out;
 }
 
-// A form or query field of `fields` ("a=1&b=2"); "" when absent, nullopt for a bad escape.
+// A form or query field of `fields` ("a=1&b=2"); "" when absent, nullopt for a bad escape. A field
+// given more than once is every value, joined by commas ("sat=A&sat=B" is "A,B", as "sat=A,B"; a
+// number given twice is then no number, and refused as such): never the first one alone.
 std::optional<std::string> field(std::string_view fields, const std::string& name) {
+  std::optional<std::string> out;
   for (std::string_view part : text::split(fields, '&')) {
     const auto eq = part.find('=');
     const auto key = percent_decode(part.substr(0, eq));
     if (!key || *key != name) continue;
-    return eq == std::string_view::npos ? std::string() : percent_decode(part.substr(eq + 1));
+    const auto value = eq == std::string_view::npos ? std::optional<std::string>("") : percent_decode(part.substr(eq + 1));
+    if (!value) return std::nullopt;
+    out = out ? *out + "," + *value : *value;
   }
-  return std::string();
+  return out ? *out : std::string();
 }
 
 json pass_json(const orbit::Pass& p) {
@@ -406,11 +412,8 @@ json Api::sky() {
   j["antenna_state"] = !rs.link.ok() ? "fault" : moving ? "moving" : parked ? "parked" : rs.on_target ? "on target" : "idle";
   // Where the antenna was last sent by whoever holds it (issue 44): the tracker's decision only while
   // trakbox's tracking drives it, else the rotator's commanded target (a goto, rotctld, Satrak).
-  if (tr.mode() == tracker::Mode::off || !station_.control().tracking_drives(tracker::Resource::antenna))
-    j["target"] = rs.target ? az_el(station_.rotator().model().compass_from_travel(rs.target->az_travel), rs.target->el)
-                            : json(nullptr);
-  else
-    j["target"] = d.antenna == tracker::Decision::Antenna::hold ? json(nullptr) : az_el(d.az_deg, d.el_deg);
+  const tracker::StationLoop::Aim aim = station_.aim();
+  j["target"] = aim.target ? az_el(aim.target->az, aim.target->el) : json(nullptr);
   const tracker::SatNow* f = tr.mode() == tracker::Mode::off ? nullptr : tr.followed();
   if (!f || !f->obs.ok()) {
     j["satellite"] = nullptr;
@@ -472,7 +475,14 @@ json Api::live_document() {
   status["schema"] = kApiSchema;
   status["doppler"] = station_.doppler();
   const auto& st = station_.model().station;
-  status["station"] = {{"lat_deg", st.lat_deg}, {"lon_deg", st.lon_deg}, {"height_m", st.height_m}};
+  // The station as the status gives it (the callsign, the locator), its position always from the model.
+  json& where = status["station"];
+  if (!where.is_object()) where = json::object();
+  where["callsign"] = st.callsign;
+  where["locator"] = station::maidenhead_locator(st.lat_deg, st.lon_deg);
+  where["lat_deg"] = st.lat_deg;
+  where["lon_deg"] = st.lon_deg;
+  where["height_m"] = st.height_m;
   shape_for_live(status);
   return json{{"type", "state"}, {"status", std::move(status)}, {"sky", sky()}};
 }

@@ -5,6 +5,8 @@
 #include <nlohmann/json.hpp>
 
 #include "station/station.h"
+#include "store/settings.h"
+#include "util/text.h"
 
 namespace tb::web {
 
@@ -63,7 +65,35 @@ std::optional<std::string> radio_request(tracker::StationOps& ops, const json& b
 
 std::optional<std::string> station_request(tracker::StationOps& ops, double stored_height_m, const json& b,
                                            tracker::OpResult& done) {
-  const char* expected = "station: expected {\"locator\":\"JN58td\"} or {\"lat_deg\":N,\"lon_deg\":E,\"height_m\":M}";
+  const char* expected = "station: expected {\"locator\":\"JN58td\"} or {\"lat_deg\":N,\"lon_deg\":E,\"height_m\":M}, "
+                         "and or else {\"callsign\":\"W1AW\"}";
+  if (b.contains("callsign") && !b["callsign"].is_string())
+    return "station: \"callsign\" must be text such as \"W1AW\", not " + shown(b["callsign"]);
+  const bool places = b.contains("locator") || b.contains("lat_deg") || b.contains("lon_deg") || b.contains("height_m");
+  if (b.contains("callsign") && !places) {
+    done = ops.set_callsign(b["callsign"].get<std::string>());
+    return std::nullopt;
+  }
+  if (b.contains("callsign")) {
+    // Both: the callsign checked first by its setting's rule, so that a refused one changes nothing;
+    // then the place; the callsign stored once the place was taken.
+    const std::string call_text = text::upper(b["callsign"].get<std::string>());
+    if (auto why = store::refusal(*store::find_setting("station.callsign"), json(call_text))) {
+      done = tracker::OpResult::refuse(*why);
+      return std::nullopt;
+    }
+    json place = b;
+    place.erase("callsign");
+    if (auto bad = station_request(ops, stored_height_m, place, done); bad || !done.ok()) return bad;
+    const tracker::OpResult call = ops.set_callsign(b["callsign"].get<std::string>());
+    if (!call.ok()) {
+      done = call;
+      return std::nullopt;
+    }
+    done.note += ", " + call.note;
+    done.model_changed = done.model_changed || call.model_changed;
+    return std::nullopt;
+  }
   double height = stored_height_m;
   if (b.contains("height_m")) {
     if (!b["height_m"].is_number()) return "station: \"height_m\" must be metres, not " + shown(b["height_m"]);

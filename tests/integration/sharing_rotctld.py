@@ -54,6 +54,8 @@ def main():
         s, _ = wait_for("ISS followed", lambda: (lambda s: s if s["tracking"]["followed"] == "ISS" else None)(web.status()), 10)
         check(s["control"]["antenna"]["kind"] == "tracking" and s["control"]["radio"]["kind"] == "tracking",
               f"trakbox's tracking holds both: {s['control']}")
+        check(s["control"]["radio"]["since"][:10] == s["time"][:10] and s["control"]["antenna"]["since"][:10] == s["time"][:10],
+              f"held since the station started (its clock's day), not 1970: {s['control']}")
         check(s["standby"] is False and s["reservations"] == [], f"standby, reservations: {s['standby']} {s['reservations']}")
 
         # Hamlib's rotctl, one connection, a P every second.

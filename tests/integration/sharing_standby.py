@@ -73,6 +73,8 @@ def main():
         check(len(s["reservations"]) == 1 and s["reservations"][0]["kind"] == "operator" and
               s["reservations"][0]["note"] == "EME test" and s["reservations"][0]["start"] == iso(a),
               f"reservations: {s['reservations']}")
+        shown = web.status_text()
+        check(f"  reserved  {iso(a)} - {iso(b)} operator (EME test)" in shown, f"`trakbox status` lists it:\n{shown}")
 
         # A restart keeps both.
         web.stop()

@@ -4,10 +4,11 @@ moves the downlink dial up and the uplink dial down by 5 kHz (an inverting trans
 each dial, are kept in the state and are in force again after a restart; the tone is set; every
 malformed or refused body says what was wrong and changes nothing."""
 import os
+import socket
 import sys
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _tbharness import check, poll, read_log, run_test  # noqa: E402
+from _tbharness import check, free_port, poll, read_log, run_test  # noqa: E402
 from _web import WebStation  # noqa: E402
 
 RS44_CLOCK = "2026-05-21T10:57:00Z"   # a minute before RS-44's culmination over the factory station
@@ -59,6 +60,32 @@ def rs44_passband():
         w.stop()
 
 
+def spot_survives_a_hold():
+    """Issue 60, item 3: the operator's spot outlives a rigctld client's hold (one `F`, then the
+    client's disconnect hands the radio back): tracking resumes on the chosen spot, not the record's."""
+    rig = free_port()
+    w = WebStation("--rigctld-port", str(rig), clock=RS44_CLOCK)
+    try:
+        w.post("/api/v1/track", {"satellite": "RS-44"})
+        tuning(w, "RS-44")
+        status, r = w.post("/api/v1/radio", {"spot_hz": 435650000})
+        check(status == 200, f"spot 435.650: {status} {r}")
+        poll("the spot at 435.650", lambda: tuning(w, "RS-44")["downlink_spot_hz"] == 435650000, 10)
+        with socket.create_connection(("127.0.0.1", rig), timeout=10) as c:
+            c.sendall(b"F 435658000\n")
+            answer = c.recv(200).decode()
+            check(answer.startswith("RPRT 0"), f"rigctld F: {answer!r}")
+            poll("the radio held by rigctld", lambda: w.status()["control"]["radio"]["kind"] == "rigctld", 10)
+        poll("the radio back to tracking", lambda: w.status()["control"]["radio"]["kind"] == "tracking", 10)
+        t = poll("the spot kept", lambda: (lambda t: t if t["downlink_dial_hz"] and abs(
+            t["downlink_dial_hz"] - 435650000) < 20000 else None)(tuning(w, "RS-44")), 10)
+        check(t["downlink_spot_hz"] == 435650000 and t["uplink_spot_hz"] == 145955000,
+              f"after the hold, the operator's spot (435.650 down, 145.955 up), not the record's: {t}")
+        print(f"after a rigctld hold: spot {t['downlink_spot_hz']} down, {t['uplink_spot_hz']} up")
+    finally:
+        w.stop()
+
+
 def iss_offsets():
     w = WebStation(clock=ISS_CLOCK)
     try:
@@ -90,6 +117,7 @@ def iss_offsets():
 
 def main():
     rs44_passband()
+    spot_survives_a_hold()
     iss_offsets()
 
 
