@@ -28,13 +28,13 @@ constexpr std::size_t kMaxPlanSatellites = 15;   // the tracking list's length
 constexpr double kMaxPlanHours = 72.0;
 constexpr int kTrackPoints = 16;
 
-std::string shown(std::string_view s) {
+std::string passes_shown(std::string_view s) {
   std::string out;
   for (std::size_t i = 0; i < s.size() && i < 40; ++i) out.push_back(s[i] >= 0x20 && s[i] < 0x7f ? s[i] : '?');
   return out;
 }
 
-Response refuse(int status, std::string sentence) {
+Response passes_refuse(int status, std::string sentence) {
   Response r;
   r.status = status;
   r.body = json{{"error", std::move(sentence)}}.dump();
@@ -67,22 +67,22 @@ std::optional<orbit::Observer> second_station(const std::string& text) {
 std::optional<Response> plan(tracker::StationLoop& station, const std::string& target, Planned& out) {
   const auto sat = query_param(target, "sat"), hours = query_param(target, "hours"),
              min_el = query_param(target, "min_el"), with = query_param(target, "with");
-  if (!sat || !hours || !min_el || !with) return refuse(400, "passes: a bad %-escape in the query");
+  if (!sat || !hours || !min_el || !with) return passes_refuse(400, "passes: a bad %-escape in the query");
   if (!hours->empty()) {
     const auto h = text::parse_double(*hours);
     if (!h || !(*h >= 1.0 && *h <= kMaxPlanHours))
-      return refuse(400, "passes: hours '" + shown(*hours) + "': expected 1 to 72");
+      return passes_refuse(400, "passes: hours '" + passes_shown(*hours) + "': expected 1 to 72");
     out.hours = *h;
   }
   if (!min_el->empty()) {
     const auto e = text::parse_double(*min_el);
-    if (!e || !(*e >= 0.0 && *e <= 90.0)) return refuse(400, "passes: min_el '" + shown(*min_el) + "': expected 0 to 90 degrees");
+    if (!e || !(*e >= 0.0 && *e <= 90.0)) return passes_refuse(400, "passes: min_el '" + passes_shown(*min_el) + "': expected 0 to 90 degrees");
     out.min_el = *e;
   }
   if (!with->empty()) {
     out.with = second_station(*with);
     if (!out.with)
-      return refuse(400, "passes: with '" + shown(*with) + "': expected a Maidenhead locator (JN58td) or LAT,LON");
+      return passes_refuse(400, "passes: with '" + passes_shown(*with) + "': expected a Maidenhead locator (JN58td) or LAT,LON");
     out.with_text = *with;
   }
   const store::Model& m = station.model();
@@ -92,12 +92,12 @@ std::optional<Response> plan(tracker::StationLoop& station, const std::string& t
     tracker::StationOps ops(station);
     for (const std::string_view name : text::split(*sat, ',')) {
       const auto i = ops.find_satellite(name);
-      if (!i) return refuse(404, "unknown satellite '" + shown(name) + "'");
+      if (!i) return passes_refuse(404, ops.unknown_satellite(passes_shown(name)));
       if (std::find(chosen.begin(), chosen.end(), *i) == chosen.end()) chosen.push_back(*i);
     }
   }
   if (chosen.size() > kMaxPlanSatellites)
-    return refuse(400, "passes: at most 15 satellites at once; " + std::to_string(chosen.size()) + " given");
+    return passes_refuse(400, "passes: at most 15 satellites at once; " + std::to_string(chosen.size()) + " given");
   out.from = station.now();   // the station clock: with tracking off the tracker has not ticked
   const orbit::UtcTime stop = orbit::add_minutes(out.from, out.hours * 60.0);
   orbit::PassOptions options;

@@ -41,7 +41,12 @@ def endpoints(w):
     check(status == 200 and any(s["name"] == "ISS" for s in sats["satellites"]), "satellites lists ISS")
     status, p = w.get_json("/api/v1/passes?sat=ISS&hours=24")
     check(status == 200 and p["satellite"] == "ISS" and len(p["passes"]) >= 2, f"passes: {p}")
-    for q, want in (("sat=ISS&hours=x", 400), ("sat=ISS&hours=0", 400), ("sat=NOPE&hours=2", 404), ("sat=ISS&hours=73", 400),
+    # A repeated sat= is every one named, as sat=A,B (issue 60: only the first was used).
+    status, both = w.get_json("/api/v1/passes?sat=ISS&sat=SO-50&hours=24")
+    check(status == 200 and {x["satellite"] for x in both["passes"]} == {"ISS", "SO-50"}, f"sat twice: {status} {both}")
+    status, e = w.get_json("/api/v1/passes?sat=RS44")
+    check(status == 404 and e["error"] == "unknown satellite 'RS44'; did you mean RS-44?", f"did you mean: {status} {e}")
+    for q, want in (("sat=ISS&hours=x", 400), ("hours=2&hours=3", 400), ("sat=ISS&hours=0", 400), ("sat=NOPE&hours=2", 404), ("sat=ISS&hours=73", 400),
                     ("min_el=-1", 400), ("with=XX99", 400)):
         status, e = w.get_json("/api/v1/passes?" + q)
         check(status == want and isinstance(e.get("error"), str), f"passes?{q}: {status} {e}")
@@ -76,7 +81,7 @@ def bad_input(w):
         check(status == want and isinstance(e.get("error"), str), f"POST {path} {body}: {status} {e}")
         still_tracking(w, f"POST {path} {body}")
     status, e = w.post("/api/v1/track", {"satellite": "ISSS"})
-    check(e["error"] == "unknown satellite 'ISSS'", f"the sentence: {e}")
+    check(e["error"] == "unknown satellite 'ISSS'; did you mean ISS?", f"the sentence: {e}")
     status, _, _ = w.request("POST", "/api/v1/track", body="{" * 10, headers={"Content-Type": "application/json"})
     check(status == 400, f"malformed JSON: {status}")
     status, _, _ = w.request("POST", "/api/v1/track", body='{"satellite":"ISS"}', headers={"Content-Type": "text/plain"})

@@ -25,6 +25,29 @@ def field(d, label):
     return d.find_element("css selector", f'#log-list input[aria-label="{label}"]')
 
 
+def after_los(d, w):
+    """Issue 60, item 7: with nothing followed (multiple tracking between passes) the card has a
+    satellite field, says to name one, and logs on the satellite named."""
+    status, r = w.post("/api/v1/track", {"list": ["SO-50", "AO-73"]})
+    check(status == 200, f"multiple tracking of SO-50 and AO-73 (neither up): {status} {r}")
+    poll("nothing followed", lambda: w.status()["tracking"]["followed"] is None, 10)
+    sat = d.find_element("id", "log-sat")
+    poll("the field asks for a satellite", lambda: sat.get_attribute("placeholder") == "name the satellite", 10)
+    d.find_element("id", "log-call").send_keys("n0sat")
+    d.find_element("id", "btn-log").click()
+    poll("the refusal without a satellite", lambda: "no satellite is tracked; name one" in d.find_element("id", "log-reply").text, 10)
+    d.find_element("id", "log-call").clear()
+    d.find_element("id", "log-call").send_keys("n0sat")
+    sat.send_keys("SO-50")
+    d.find_element("id", "btn-log").click()
+    poll("logged on SO-50", lambda: "Logged N0SAT on SO-50" in d.find_element("id", "log-reply").text, 10)
+    # SO-50 was not up: stored, and said (issue 60).
+    check("SO-50 was below the horizon here" in d.find_element("id", "log-reply").text,
+          f"the reply says it was not up: {d.find_element('id', 'log-reply').text}")
+    check(any(q["call"] == "N0SAT" and q["sat_name"] == "SO-50" for q in w.get_json("/api/v1/log")[1]["qsos"]),
+          "the QSO stored on SO-50")
+
+
 def main():
     # The element refresh from the shipped file, not the network.
     w = WebStation("--elements-url", "file://" + os.path.join(os.path.abspath(SOURCE), "data", "amateur.tle"),
@@ -68,6 +91,7 @@ def main():
         check((q["call"], q["grid"], q["rst_sent"], q["rst_rcvd"], q["note"], q["version"], q["sat_name"]) ==
               ("K1JT", "FN20xr", "57", "55", "QRP, first ISS", 2, "ISS"), f"the edited QSO: {q}")
         poll("the list shows the edit", lambda: rows_with(d, "K1JT", "FN20xr"), 10)
+        after_los(d, w)
         errors = console_errors(d)
         check(not [e for e in errors if "409" not in e.get("message", "")], f"console errors: {errors}")
     finally:

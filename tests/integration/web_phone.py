@@ -136,8 +136,35 @@ def tracking_list_times(w, url):
             check(c and ("May 21" in c[2] or "21 May" in c[2]), f"{name}'s AOS carries its date: {c}")
         print(f"tracking list: RS-44 up since {row[2]} local (UTC {cli['aos_utc']}), max {row[3]}; "
               f"{len(later)} later passes dated, e.g. {cells(later[0])[2]}")
+        one_zone(d, cli, cells)
     finally:
         d.quit()
+
+
+def one_zone(d, cli, cells):
+    """Issue 60, item 4: every time on the page in one zone, labelled; the zone button switches all of
+    them to UTC, and the choice is kept in the browser across a reload."""
+    def words():
+        return {"clock": text(d, "clock"), "aos": text(d, "list-aos"), "state": text(d, "ant-state"),
+                "sky": [e.text for e in d.find_elements("css selector", "#sky text") if e.text[:3] in ("AOS", "TCA", "LOS")]}
+    w0 = words()
+    check(w0["clock"].endswith(" local") and w0["aos"] == "AOS (local)" and all(t.endswith(" local") for t in w0["sky"]),
+          f"local, and said so: {w0}")
+    check(text(d, "btn-zone") == "Local", f"the zone button: {text(d, 'btn-zone')}")
+    click(d, "btn-zone")
+    for attempt in range(2):
+        w1 = poll("the times in UTC", lambda: (lambda x: x if x["clock"].endswith(" UTC") else None)(words()), 5)
+        check(w1["clock"].startswith("2026-05-21 10:5") and w1["aos"] == "AOS (UTC)" and
+              all(t.endswith(" UTC") for t in w1["sky"]) and "local" not in w1["state"], f"UTC everywhere: {w1}")
+        row = poll("RS-44's row in UTC", lambda: (lambda c: c if c and c[2] not in ("", "-") else None)(cells("RS-44")), 10)
+        shown = datetime.datetime.strptime(row[2], "%I:%M:%S %p" if row[2].endswith("M") else "%H:%M:%S")
+        aos = datetime.datetime.fromisoformat(cli["aos_utc"].replace("Z", "+00:00"))
+        off = abs((shown.hour * 3600 + shown.minute * 60 + shown.second) - (aos.hour * 3600 + aos.minute * 60 + aos.second))
+        check(off <= 2, f"RS-44's AOS in UTC {row[2]} vs {cli['aos_utc']}")
+        if attempt == 0:
+            d.refresh()   # the choice is the browser's: kept across a reload
+            poll("the page live again", lambda: text(d, "link") == "live", 20)
+    print(f"one zone: local {w0['clock']!r} -> UTC {w1['clock']!r}, RS-44 AOS {row[2]} UTC, kept across a reload")
 
 
 def rows_class(d, name):

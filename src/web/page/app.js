@@ -9,12 +9,32 @@ function xy(az, el) {
   const r = R * (90 - el) / 90, a = az * Math.PI / 180;
   return [C + r * Math.sin(a), C - r * Math.cos(a)];
 }
-function fixed(v, d) { return typeof v === "number" ? v.toFixed(d) : "-"; }
+// A number with d decimals; never "-0" (a maximum of -0.3 shown to the degree).
+function fixed(v, d) {
+  if (typeof v !== "number") return "-";
+  const t = v.toFixed(d);
+  return /^-0(\.0*)?$/.test(t) ? t.slice(1) : t;
+}
 function mhz(hz) { return typeof hz === "number" ? (hz / 1e6).toFixed(5) + " MHz" : "-"; }
 function mhz6(hz) { return typeof hz === "number" ? (hz / 1e6).toFixed(6) : "-"; }
 function signedHz(v) { return typeof v === "number" ? (v > 0 ? "+" : "") + Math.round(v) + " Hz" : "-"; }
 function setText(id, t) { const e = $(id); if (e.textContent !== t) e.textContent = t; }
-function hhmm(iso) { return iso ? iso.substring(11, 19) : "-"; }
+// Every time on the page in one zone, labelled: the browser's local time or UTC, as the header's
+// zone button chooses (kept in this browser). The station's clock is UTC whatever is shown.
+let zoneUtc = localStorage.getItem("trakbox-zone") === "utc";
+function zoneOpt(o) { return zoneUtc ? Object.assign({ timeZone: "UTC" }, o) : o; }
+function zoneName() { return zoneUtc ? "UTC" : "local"; }
+function dayKey(d) { return d.toLocaleDateString("en-CA", zoneOpt({})); }
+// "19:12:28" (or "19:12" without seconds) in the page's zone, with the date when it is not the day
+// of `now` there ("Thu 22 May 03:04:05"); no `now`: the time alone.
+function clockText(iso, now, seconds = true) {
+  if (!iso) return "-";
+  const d = new Date(iso);
+  const t = d.toLocaleTimeString([], zoneOpt(seconds ? { hour: "2-digit", minute: "2-digit", second: "2-digit" }
+                                                    : { hour: "2-digit", minute: "2-digit" }));
+  if (!now || dayKey(d) === dayKey(new Date(now))) return t;
+  return d.toLocaleDateString([], zoneOpt({ weekday: "short", day: "numeric", month: "short" })) + " " + t;
+}
 function el(tag, attrs, text) {
   const e = document.createElementNS(SVG, tag);
   for (const k in attrs) e.setAttribute(k, attrs[k]);
@@ -32,12 +52,16 @@ function drawGrid() {
     g.appendChild(el("text", { x, y }, t));
 }
 
+// A mark at its azimuth and elevation; one below the horizon (a satellite not yet risen) is drawn
+// hollow just outside the horizon ring, where it will rise, not on the ring as if it were up.
 function place(id, azel) {
   const e = $(id);
   if (!azel) { e.setAttribute("cx", -99); e.setAttribute("cy", -99); return; }
-  const [x, y] = xy(azel[0], Math.max(azel[1], -2));
+  const below = azel[1] < 0;
+  const [x, y] = xy(azel[0], below ? -8 : azel[1]);
   e.setAttribute("cx", x.toFixed(2));
   e.setAttribute("cy", y.toFixed(2));
+  e.classList.toggle("below", below);
 }
 
 function drawSky(sky) {
@@ -81,7 +105,7 @@ function drawSky(sky) {
     for (let k = 0, hit; k < 8 && (hit = placed.find(([a, b, py]) => a < right && left < b && Math.abs(py - ly) < LINE)); ++k)
       ly = hit[2] + step;
     placed.push([left, right, ly]);
-    marks.appendChild(el("text", { x: lx, y: ly, "text-anchor": x > C ? "end" : "start" }, name + " " + hhmm(t)));
+    marks.appendChild(el("text", { x: lx, y: ly, "text-anchor": x > C ? "end" : "start" }, name + " " + clockText(t, lastStatus && lastStatus.time) + " " + zoneName()));
   }
 }
 
@@ -103,15 +127,6 @@ function countdown(iso, now) {
   return (h ? h + "h" : "") + String(m).padStart(h ? 2 : 1, "0") + "m" + String(r).padStart(2, "0") + "s";
 }
 
-// An AOS in the browser's local time; with its date when that is not the station clock's day
-// (local too): "19:12:28", "Thu 22 May 03:04:05".
-function aosText(iso, now) {
-  if (!iso) return "-";
-  const d = new Date(iso), n = now ? new Date(now) : null;
-  const t = d.toLocaleTimeString([], { hour: "2-digit", minute: "2-digit", second: "2-digit" });
-  const today = n && d.getFullYear() === n.getFullYear() && d.getMonth() === n.getMonth() && d.getDate() === n.getDate();
-  return today ? t : d.toLocaleDateString([], { weekday: "short", day: "numeric", month: "short" }) + " " + t;
-}
 
 // The rows are updated in place (a row rebuilt every second would swallow a tap made across a tick).
 function drawList(st) {
@@ -134,7 +149,7 @@ function drawList(st) {
     const np = e.next_pass;
     const when = !np ? ["none", "", "> 24 h"]
                : np.always_up ? ["always up", fixed(np.max_el_deg, 0) + "°", "up"]
-               : [aosText(np.aos, st.time), fixed(np.max_el_deg, 0) + "°", np.in_progress ? "up now" : countdown(np.aos, st.time)];
+               : [clockText(np.aos, st.time || np.aos), fixed(np.max_el_deg, 0) + "°", np.in_progress ? "up now" : countdown(np.aos, st.time)];
     if (np && np.in_progress && !np.always_up) tr.classList.add("up");
     const cells = [e.number, e.name, ...when, fixed(e.element_age_days, 1) + " d"];
     cells.forEach((c, i) => {
@@ -144,6 +159,30 @@ function drawList(st) {
     });
   });
   while (body.rows.length > list.length) body.deleteRow(-1);
+}
+
+// The Station card: the callsign and place now, what a first start leaves to set (st.setup), open
+// by itself once while something is left; Set goes through POST /api/v1/station (the one door).
+let stationOpened = false;
+function drawStation(st) {
+  const s = st.station || {};
+  setText("station-now", (s.callsign || "") + " " + (s.locator || ""));
+  const setup = st.setup || [];
+  setText("station-setup", setup.join(" · "));
+  $("station-setup").className = setup.length ? "note bad" : "note";
+  if (setup.length && !stationOpened) { $("station-card").open = true; stationOpened = true; }
+}
+function setStation(ev) {
+  ev.preventDefault();
+  const body = {};
+  const call = $("st-call").value.trim();
+  if (call) body.callsign = call;
+  const place = $("st-place").value.trim();
+  const m = place.match(/^(-?\d+(?:\.\d+)?)\s*[, ]\s*(-?\d+(?:\.\d+)?)$/);
+  if (m) { body.lat_deg = Number(m[1]); body.lon_deg = Number(m[2]); } else if (place) body.locator = place;
+  const h = $("st-height").value.trim();
+  if (h) body.height_m = Number(h);
+  post("/api/v1/station", body);
 }
 
 // A tap that would take the antenna and radio off a pass in progress asks first.
@@ -159,7 +198,10 @@ let doppler = true, rotorOn = false;
 function drawStatus(st) {
   lastStatus = st;
   if (typeof planList === "function") planList(st);
-  $("clock").textContent = st.time ? st.time.replace("T", " ").substring(0, 19) + " UTC" : "--";
+  if (typeof logSats === "function") logSats(st);
+  drawStation(st);
+  $("clock").textContent = st.time ? st.time.substring(0, 10) + " " + clockText(st.time) + " " + zoneName() : "--";
+  if (zoneUtc || !st.time) $("clock").textContent = st.time ? st.time.replace("T", " ").substring(0, 19) + " UTC" : "--";
   const probs = st.problems || [];
   $("problems").hidden = probs.length === 0;
   $("problems").replaceChildren(...probs.map((p) => { const li = document.createElement("li"); li.textContent = p; return li; }));
@@ -169,7 +211,7 @@ function drawStatus(st) {
   $("ant-target").textContent = a.target ? fixed(a.target.az_deg, 1) + "° az, " + fixed(a.target.el_deg, 1) + "° el" : "-";
   // When the antenna will move for the coming pass (it pre-positions a few minutes before AOS).
   const mv = lastSky && lastSky.moves;
-  const moves = mv ? "· moves to " + fixed(mv.az_deg, 0) + "° at " + new Date(mv.at).toLocaleTimeString([], { hour12: false }) +
+  const moves = mv ? "· moves to " + fixed(mv.az_deg, 0) + "° at " + clockText(mv.at, st.time) + " " + zoneName() +
                      ", " + mv.lead_min + " min before AOS" : "";
   $("ant-state").textContent = a.link !== "ok" ? "fault: " + (a.link_message || a.link)
     : (moves || "(" + (a.action || "hold") + ")" + (a.parking_enabled === false && a.action === "hold" ? ", parking is off" : "")) +
@@ -273,7 +315,7 @@ function locator(lat, lon) {
 const PROBLEMS = ["link-lost", "save-failed"];
 function addEvent(e, atTop) {
   const li = document.createElement("li");
-  li.textContent = (e.time ? hhmm(e.time) + " " : "") + (e.event || e.kind) + (e.satellite ? " " + e.satellite : "") +
+  li.textContent = (e.time ? clockText(e.time) + " " : "") + (e.event || e.kind) + (e.satellite ? " " + e.satellite : "") +
                    (e.detail ? ": " + e.detail : "");
   if (PROBLEMS.includes(e.event || e.kind)) li.className = "problem";
   const list = $("events");
@@ -314,7 +356,7 @@ function stale() {
   if (isStale && lastHeard) return;
   isStale = true;
   document.body.classList.add("stale");
-  $("link").textContent = lastHeard ? "station not answering since " + new Date(lastHeard).toLocaleTimeString([], { hour12: false })
+  $("link").textContent = lastHeard ? "station not answering since " + clockText(new Date(lastHeard).toISOString()) + " " + zoneName()
                                     : "connecting";
   $("link").className = "bad";
   for (const b of document.querySelectorAll("button:not(.keep), input, select")) b.disabled = true;
@@ -362,6 +404,21 @@ function night(on) {
   localStorage.setItem("trakbox-theme", on ? "night" : "");
 }
 night(localStorage.getItem("trakbox-theme") === "night");
+// The zone button: UTC or local for every time shown, kept in this browser; the shown times redrawn.
+function zone(utc) {
+  zoneUtc = utc;
+  localStorage.setItem("trakbox-zone", utc ? "utc" : "local");
+  $("btn-zone").textContent = utc ? "UTC" : "Local";
+  $("btn-zone").setAttribute("aria-pressed", utc ? "true" : "false");
+  $("list-aos").textContent = "AOS (" + zoneName() + ")";
+  if (lastStatus) drawStatus(lastStatus);
+  if (lastSky) drawSky(lastSky);
+  if (typeof planZone === "function") planZone();
+  if (typeof logZone === "function") logZone();
+}
+zone(zoneUtc);
+$("btn-zone").addEventListener("click", () => zone(!zoneUtc));
+$("station-form").addEventListener("submit", setStation);
 $("btn-night").addEventListener("click", () => night(!document.body.classList.contains("night")));
 stale();
 drawGrid();

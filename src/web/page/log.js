@@ -91,6 +91,27 @@
   }
 
   // Not while a row is being edited (the list is rebuilt), unless Save or Cancel asks.
+  // The list's times in the page's zone (app.js's zone button); the day listed is the station's UTC day.
+  // The satellite field: empty logs on the satellite tracked (shown as its placeholder); with none
+  // tracked (after LOS in multiple tracking) the operator names it, chosen from the tracking list.
+  window.logSats = (st) => {
+    const input = el("log-sat");
+    if (!input) return;
+    const followed = st.tracking && st.tracking.followed;
+    const hint = followed || "name the satellite";
+    if (input.placeholder !== hint) input.placeholder = hint;
+    const names = (st.tracking_list || []).map((e) => e.name).join("\n");
+    const list = el("log-sats");
+    if (list.dataset.names === names) return;
+    list.dataset.names = names;
+    list.replaceChildren(...(st.tracking_list || []).map((e) => { const o = document.createElement("option"); o.value = e.name; return o; }));
+  };
+
+  window.logZone = () => {
+    el("log-zone").textContent = zoneName() === "UTC" ? "UTC" : "Local";
+    refresh(true);
+  };
+
   async function refresh(force) {
     if (!force && document.querySelector("#log-list .log-edit")) return;
     let j;
@@ -100,7 +121,7 @@
     body.textContent = "";
     for (const q of j.qsos.slice().reverse()) {
       const tr = document.createElement("tr");
-      for (const v of [q.time_on.slice(11, 16), q.call, q.sat_name, q.grid, q.mode]) {
+      for (const v of [clockText(q.time_on, null, false), q.call, q.sat_name, q.grid, q.mode]) {
         const td = document.createElement("td");
         td.textContent = v;
         tr.appendChild(td);
@@ -122,11 +143,14 @@
     const grid = el("log-grid").value.trim(), rst = el("log-rst").value.trim();
     if (grid) body.grid = grid;
     if (rst) body.rst_sent = rst;
+    const sat = el("log-sat").value.trim();
+    if (sat) body.sat = sat;   // empty: the satellite tracked (after LOS in multiple tracking: name it)
     say("…");
     try {
       const j = await call("POST", "/api/v1/log", body);
       if (!j) return;
-      say("Logged " + j.qso.call + " on " + j.qso.sat_name + " " + j.qso.mode + " at " + j.qso.time_on.slice(11, 19) + " UTC");
+      say("Logged " + j.qso.call + " on " + j.qso.sat_name + " " + j.qso.mode + " at " + clockText(j.qso.time_on) + " " + zoneName() +
+          (j.warning ? " · " + j.warning : ""), !!j.warning);
       el("log-call").value = "";
       el("log-grid").value = "";
       el("log-call").focus();
@@ -137,6 +161,7 @@
   document.addEventListener("DOMContentLoaded", () => {
     if (!el("log-form")) return;
     el("log-form").addEventListener("submit", logQso);
+    el("log-zone").textContent = zoneName() === "UTC" ? "UTC" : "Local";
     refresh();
     setInterval(refresh, 60000);
   });

@@ -1,6 +1,6 @@
 "use strict";
 // The planner ("Tonight"): GET /api/v1/passes for the chosen satellites (none: the tracking list)
-// above a minimum elevation, each pass in the browser's local time and UTC with its maximum, a small
+// above a minimum elevation, each pass in the page's zone (UTC or local, labelled) with its maximum, a small
 // sky track and the passes it overlaps; one or several chosen and tracked (POST /api/v1/track).
 // Uses app.js's $, post, xy, points, el and confirmLeave.
 let planned = [], chosen = new Set(), planSats = "";
@@ -14,10 +14,15 @@ function planQuery() {
   if (w) q.set("with", w);
   return q.toString();
 }
-function localTime(iso) {
-  const d = new Date(iso);
-  return d.toLocaleDateString([], { weekday: "short", day: "numeric", month: "short" }) + " " +
-         d.toLocaleTimeString([], { hour: "2-digit", minute: "2-digit" });
+// A pass's AOS with its date, in the page's zone (app.js: clockText, the header's zone button).
+function planTime(iso) {
+  return new Date(iso).toLocaleDateString([], zoneOpt({ weekday: "short", day: "numeric", month: "short" })) + " " +
+         clockText(iso, null, false);
+}
+let planNote = "";
+function planZone() {
+  if (planNote) $("plan-note").textContent = planNote + " · times " + zoneName();
+  drawPlan();
 }
 function miniSky(track) {
   const svg = document.createElementNS(SVG, "svg");
@@ -46,9 +51,9 @@ function drawPlan() {
     text.innerHTML = "";
     const b = document.createElement("b");
     b.textContent = p.satellite;
-    text.append(b, " " + localTime(p.aos) + (p.in_progress ? " (up now)" : ""));
+    text.append(b, " " + planTime(p.aos) + (p.in_progress ? " (up now)" : ""));
     const small = document.createElement("small");
-    small.textContent = p.aos.substring(11, 16) + "-" + p.los.substring(11, 16) + " UTC · max " +
+    small.textContent = clockText(p.aos, null, false) + "-" + clockText(p.los, null, false) + " " + zoneName() + " · max " +
                         p.max_el_deg.toFixed(0) + "° · " + mins + " min";
     text.append(document.createElement("br"), small);
     if (over.length) {
@@ -86,10 +91,9 @@ async function plan(ev) {
     planned = j.passes;
     chosen = new Set();
     const n = planned.filter((p) => p.overlaps.length).length;
-    $("plan-note").textContent = planned.length + " passes above " + j.min_el_deg + "° in " + j.hours + " h" +
-      (j.with ? ", both seen from " + j.with : "") + (n ? "; " + n + " overlap another" : "") +
-      " · times local, then UTC";
-    drawPlan();
+    planNote = planned.length + " passes above " + j.min_el_deg + "° in " + j.hours + " h" +
+      (j.with ? ", both seen from " + j.with : "") + (n ? "; " + n + " overlap another" : "");
+    planZone();
   } catch (e) {
     $("plan-note").textContent = "the station does not answer";
   }
