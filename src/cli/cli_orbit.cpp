@@ -24,6 +24,7 @@
 #include "orbit/sgp4.h"
 #include "orbit/state_lines.h"
 #include "util/format.h"
+#include "util/closest.h"
 #include "util/text.h"
 
 namespace tb::app {
@@ -203,7 +204,10 @@ std::optional<std::size_t> match_sat(const std::vector<Elements>& sets, const st
         if (sets[i].catalog_number == *number) hits.push_back(i);
   }
   if (hits.empty()) {
-    why = "no element set named or numbered '" + key + "'; the file holds " + list_choices(sets);
+    std::vector<std::string> names;
+    for (const Elements& e : sets) names.emplace_back(text::trim(e.name));
+    why = "no element set named or numbered '" + key + "'" + text::did_you_mean(key, names) + "; the file holds " +
+          list_choices(sets);
     return std::nullopt;
   }
   // Different satellites under one name (rocket bodies: "SL-8 R/B") need the catalog number;
@@ -346,6 +350,15 @@ std::optional<int> CommandRun::load_sats(bool allow_all, std::vector<Elements>& 
   const bool named = !sat_keys().empty();
   // With --no-checksum every accepted set's checksum is named: nothing is deferred then.
   const bool verify = !parsed.has("no-checksum");
+  // `trakbox passes RS-44`: no file of that name, but a satellite of the stored database is.
+  if (!std::filesystem::exists(path) && path.find('/') == std::string::npos && path.find('.') == std::string::npos)
+    if (const auto sets = stored.database()) {
+      std::vector<std::string> names;
+      for (const Elements& e : *sets) names.emplace_back(text::trim(e.name));
+      if (const auto meant = text::closest_name(path, names))
+        return error({path, "no such element file; to name a satellite of the database: --sat " + *meant +
+                                " (trakbox " + std::string(command.name) + " --sat " + *meant + ")"});
+    }
   const LoadedElements loaded = load_elements(path, verify, named && verify);
   if (loaded.error) {
     report_deferred(loaded, path, false);

@@ -13,6 +13,7 @@
 #include "cli/pass_plot.h"
 #include "util/text.h"
 #include "orbit/element_age.h"
+#include "orbit/observe.h"
 #include "orbit/pass_tools.h"
 #include "orbit/passes.h"
 #include "orbit/sgp4.h"
@@ -64,7 +65,19 @@ struct SatPass {
   std::string sat;
   orbit::Pass pass;
   std::size_t set = 0;  // index into the satellites' sets
+  std::optional<double> there_max_el;  // --with: the partner's highest elevation over the shared time
 };
+
+// The partner's highest elevation over a shared pass (--with), sampled each second: what the other
+// station sees while both see the satellite.
+double there_max_elevation(const orbit::Sgp4& sat, const orbit::Observer& there, const orbit::Pass& p) {
+  double best = -90.0;
+  for (UtcTime t = p.aos; t <= p.los; t += std::chrono::seconds(1)) {
+    const orbit::Observation o = orbit::observe(sat, there, t);
+    if (o.ok()) best = std::max(best, o.look.el_deg);
+  }
+  return best;
+}
 
 // --plot FILE: each pass as a polar plot (pass_plot.h); FILE itself for one pass, FILE-N.EXT for
 // several, each name listed on `said` (standard output after the table; standard error after JSON
@@ -180,16 +193,18 @@ void print_table(const std::vector<SatPass>& passes, const std::string& header, 
   out(header);
   if (!sats.empty()) out(elements_ages(sats, start));
   if (bodies) out("SUN, MOON: the centre of the body seen from the station, geometric (no refraction)\n");
-  out(printf_string("%-24s  %-20s  %-9s  %-9s  %6s  %6s  %6s  %8s\n", "SAT", "AOS (UTC)", "TCA", "LOS", "MAX EL",
-                "AOS AZ", "LOS AZ", "DURATION"));
+  const bool there = !passes.empty() && passes.front().there_max_el;
+  out(printf_string("%-24s  %-20s  %-9s  %-9s  %6s  %6s  %6s  %8s", "SAT", "AOS (UTC)", "TCA", "LOS", "MAX EL",
+                "AOS AZ", "LOS AZ", "DURATION") + (there ? "   THERE" : "") + "\n");
   for (const SatPass& s : passes) {
     const std::string aos = manual_time(s.pass.aos, 0), tca = manual_time(s.pass.tca, 0),
                       los = manual_time(s.pass.los, 0);
     const auto dur = std::chrono::duration_cast<std::chrono::seconds>(s.pass.los - s.pass.aos).count();
-    out(printf_string("%-24.24s  %s%c  %s   %s%c  %6.1f  %6.1f  %6.1f  %5lld:%02lld\n", s.sat.c_str(), aos.c_str(),
+    out(printf_string("%-24.24s  %s%c  %s   %s%c  %6.1f  %6.1f  %6.1f  %5lld:%02lld", s.sat.c_str(), aos.c_str(),
                   s.pass.up_at_start ? '<' : ' ', tca.substr(11).c_str(), los.substr(11).c_str(),
                   s.pass.up_at_end ? '>' : ' ', s.pass.max_el_deg, s.pass.aos_az_deg, s.pass.los_az_deg,
-                  static_cast<long long>(dur / 60), static_cast<long long>(dur % 60)));
+                  static_cast<long long>(dur / 60), static_cast<long long>(dur % 60)) +
+        (s.there_max_el ? printf_string("  %6.1f", *s.there_max_el) : std::string()) + "\n");
   }
   if (passes.empty()) out("no passes\n");
   bool bounded = false;
@@ -246,36 +261,43 @@ int run_passes(std::vector<std::string> args) {
     const std::string label = text::trim(e.name).empty() ? std::to_string(e.catalog_number) : std::string(text::trim(e.name));
     const auto found = with ? orbit::mutual_passes(sat, *station, *with, *start, stop, options)
                             : orbit::find_passes(sat, *station, *start, stop, options, eo);
-    for (const orbit::Pass& p : found) passes.push_back({label, p, set});
+    for (const orbit::Pass& p : found)
+      passes.push_back({label, p, set, with ? std::optional<double>(there_max_elevation(sat, *with, p)) : std::nullopt});
   }
   for (const orbit::Body b : bodies)
     for (const orbit::Pass& p : orbit::find_body_passes(b, *station, *start, stop, options, eo))
-      passes.push_back({std::string(orbit::body_name(b)), p, 0});
+      passes.push_back({std::string(orbit::body_name(b)), p, 0, std::nullopt});
   std::stable_sort(passes.begin(), passes.end(),
                    [](const SatPass& a, const SatPass& b) { return a.pass.aos < b.pass.aos; });
 
   auto iso3 = [](UtcTime t) { return orbit::format_iso8601(t, 3); };
-  const std::string header = printf_string(
+  std::string header = printf_string(
       "station %.4f, %.4f, %.0f m%s  from %s for %g h  AOS/LOS at %.1f deg\n", station->lat_deg, station->lon_deg,
       station->height_m, run.parsed.has("station") ? "" : (" (" + run.stored.source() + ")").c_str(),
       orbit::format_iso8601(*start, 0).c_str(), hours, orbit::kAosThresholdDeg);
+  if (with)
+    header += printf_string("with %.4f, %.4f (%s): only the times both see it; MAX EL is here's, THERE the partner's\n",
+                            with->lat_deg, with->lon_deg,
+                            station::maidenhead_locator(with->lat_deg, with->lon_deg).c_str());
   switch (format) {
     case OutputFormat::csv:
-      out("sat,aos_utc,tca_utc,los_utc,max_el_deg,aos_az_deg,los_az_deg\n");
+      out(std::string("sat,aos_utc,tca_utc,los_utc,max_el_deg,aos_az_deg,los_az_deg") + (with ? ",there_max_el_deg" : "") + "\n");
       for (const SatPass& s : passes)
-        out(printf_string("%s,%s,%s,%s,%.4f,%.4f,%.4f\n", csv_field(s.sat).c_str(), iso3(s.pass.aos).c_str(),
+        out(printf_string("%s,%s,%s,%s,%.4f,%.4f,%.4f", csv_field(s.sat).c_str(), iso3(s.pass.aos).c_str(),
                       iso3(s.pass.tca).c_str(), iso3(s.pass.los).c_str(), s.pass.max_el_deg, s.pass.aos_az_deg,
-                      s.pass.los_az_deg));
+                      s.pass.los_az_deg) +
+            (s.there_max_el ? printf_string(",%.4f", *s.there_max_el) : std::string()) + "\n");
       break;
     case OutputFormat::json:
       out("[");
       for (std::size_t i = 0; i < passes.size(); ++i) {
         const SatPass& s = passes[i];
         out(printf_string("%s\n  {\"sat\": %s, \"aos_utc\": %s, \"tca_utc\": %s, \"los_utc\": %s, \"max_el_deg\": %.4f, "
-                      "\"aos_az_deg\": %.4f, \"los_az_deg\": %.4f}",
+                      "\"aos_az_deg\": %.4f, \"los_az_deg\": %.4f",
                       i ? "," : "", json_string(s.sat).c_str(), json_string(iso3(s.pass.aos)).c_str(),
                       json_string(iso3(s.pass.tca)).c_str(), json_string(iso3(s.pass.los)).c_str(), s.pass.max_el_deg,
-                      s.pass.aos_az_deg, s.pass.los_az_deg));
+                      s.pass.aos_az_deg, s.pass.los_az_deg) +
+            (s.there_max_el ? printf_string(", \"there_max_el_deg\": %.4f", *s.there_max_el) : std::string()) + "}");
       }
       out("\n]\n");
       break;

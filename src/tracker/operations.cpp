@@ -8,6 +8,7 @@
 #include "tracker/elements_refresh.h"
 #include "tracker/station_loop.h"
 #include "util/exact_number.h"
+#include "util/closest.h"
 #include "util/text.h"
 
 namespace tb::tracker {
@@ -16,7 +17,7 @@ namespace {
 
 // A name as a client typed it, fit to quote in a sentence: printable ASCII only (anything else
 // shown as '?'), at most 40 characters.
-std::string quoted(std::string_view name) {
+std::string sat_quoted(std::string_view name) {
   std::string out = "'";
   for (std::size_t i = 0; i < name.size() && i < 40; ++i) {
     const char c = name[i];
@@ -92,9 +93,15 @@ OpResult StationOps::track(int db_index) {
   return r;
 }
 
+std::string StationOps::unknown_satellite(std::string_view name) const {
+  std::vector<std::string> names;
+  for (const auto& s : model_.db.satellites) names.push_back(s.name());
+  return "unknown satellite " + sat_quoted(name) + text::did_you_mean(name, names);
+}
+
 OpResult StationOps::track(std::string_view name) {
   const auto i = find_satellite(name);
-  if (!i) return OpResult::refuse("unknown satellite " + quoted(name));
+  if (!i) return OpResult::refuse(unknown_satellite(name));
   return track(*i);
 }
 
@@ -122,9 +129,9 @@ OpResult StationOps::track_list(const std::vector<std::string>& names, bool prio
   std::vector<int> chosen;
   for (const std::string& name : names) {
     const auto i = find_satellite(name);
-    if (!i) return OpResult::refuse("unknown satellite " + quoted(name));
+    if (!i) return OpResult::refuse(unknown_satellite(name));
     if (std::find(chosen.begin(), chosen.end(), *i) != chosen.end())
-      return OpResult::refuse("satellite " + quoted(name) + " is named twice");
+      return OpResult::refuse("satellite " + sat_quoted(name) + " is named twice");
     chosen.push_back(*i);
   }
   if (auto no = ask(Resource::antenna, true)) return *no;

@@ -53,6 +53,8 @@ class StationOps {
   // The database index of a satellite by name: exact first (the manual's names are case
   // sensitive), else the one whose name matches ignoring case and surrounding blanks.
   std::optional<int> find_satellite(std::string_view name) const;
+  // "unknown satellite 'RS44'; did you mean RS-44?" (util/closest.h), for every front end's refusal.
+  std::string unknown_satellite(std::string_view name) const;
 
   // Single tracking of a database satellite (menu 1; S adds rotor_control(true)). When it is in the
   // tracking list it becomes the marked one ('*').
@@ -105,6 +107,8 @@ class StationOps {
   // -180..180, height as the settings table takes them (store/settings.h); stored through the
   // model's owner, the geometry redone, GPS no longer its source.
   OpResult set_station(double lat_deg, double lon_deg, double height_m);
+  // The station's callsign (menu 4's; the page's Station card), upper case, by the settings table.
+  OpResult set_callsign(const std::string& callsign);
   // The element refresh from the stored sources, now (menu 3-5 R, host RF).
   OpResult refresh_elements(std::int64_t now_unix);
 

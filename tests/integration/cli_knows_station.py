@@ -49,6 +49,13 @@ def run(tmp):
     ok("passes", "--state", state, "--sat", "ISS", "--start", "now", "--hours", "2")
     ok("passes", "--state", state, "--sat", "ISS", "--start", "+2h", "--hours", "2")
 
+    # A satellite's name where the file goes, and a name typed without its hyphen (issue 60).
+    code, out, err = sh(BIN, "passes", "RS-44", "--state", state, "--start", START)
+    check(code != 0 and "no such element file; to name a satellite of the database: --sat RS-44" in err,
+          f"passes RS-44: {code} {err}")
+    code, out, err = sh(BIN, "passes", "--state", state, "--sat", "RS44", "--start", START)
+    check(code != 0 and "no element set named or numbered 'RS44'; did you mean RS-44?" in err, f"--sat RS44: {code} {err}")
+
     # next: one line per satellite, the first pass of `passes` from the same start.
     out, _ = ok("next", "--state", state, "ISS", "--start", START)
     lines = out.strip().split("\n")

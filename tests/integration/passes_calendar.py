@@ -90,8 +90,18 @@ def both_see():
             for loc, (lat, lon) in where.items():
                 alt, _, _ = (sat - wgs84.latlon(lat, lon)).at(ts.from_datetime(t)).altaz()
                 check(alt.degrees > -2.0 - 0.05, f"{loc} sees ISS at {t}: {alt.degrees:.2f} deg")
+        # The partner's maximum over the shared time (issue 60: --with named neither), by Skyfield each second.
+        lat, lon = where[PARTNER]
+        a, b = iso(p["aos_utc"]), iso(p["los_utc"])
+        n = int((b - a).total_seconds())
+        times = ts.from_datetimes([a + datetime.timedelta(seconds=k) for k in range(n + 1)])
+        there = max((sat - wgs84.latlon(lat, lon)).at(times).altaz()[0].degrees)
+        check(abs(p["there_max_el_deg"] - there) < 0.05, f"the partner's maximum {p['there_max_el_deg']} vs Skyfield {there:.3f}")
+    code, out, err = sh(BIN, "passes", TLE, "--sat", "ISS", "--station", HOME, "--with", PARTNER, "--start", START,
+                        "--hours", "24")
+    check(code == 0 and f"with " in out and f"({PARTNER[:4]}" in out and "THERE" in out, f"the table names the partner:\n{out}")
     print(f"passes --with {PARTNER}: {len(shared)} of {len(alone)} ISS passes shared ({both:.0f} of {own:.0f} s), "
-          "both ends checked with Skyfield")
+          "both ends and the partner's maximum checked with Skyfield")
 
 
 def web():

@@ -42,7 +42,7 @@ TEST_CASE("StationOps: track by name, exact or ignoring case; unknown names refu
   const store::Model before = f.model;
   const tracker::OpResult bad = f.ops().track("ISSS");
   REQUIRE_FALSE(bad.ok());
-  CHECK(*bad.refusal == "unknown satellite 'ISSS'");
+  CHECK(*bad.refusal == "unknown satellite 'ISSS'; did you mean ISS?");
   CHECK(f.tracker.followed()->name == "ISS");  // still tracking
   CHECK(f.model.db.selected == before.db.selected);
 

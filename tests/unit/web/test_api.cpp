@@ -113,7 +113,7 @@ TEST_CASE("web: POST track, rotor and radio act through StationOps; bad input is
   CHECK(w.model.rotor_control);
   CHECK(w.saves >= 1);
 
-  CHECK(Web::error_of(w.post("/api/v1/track", R"({"satellite":"ISSS"})")) == "unknown satellite 'ISSS'");
+  CHECK(Web::error_of(w.post("/api/v1/track", R"({"satellite":"ISSS"})")) == "unknown satellite 'ISSS'; did you mean ISS?");
   CHECK(w.post("/api/v1/track", R"({"satellite":"ISSS"})").status == 409);
   CHECK(w.post("/api/v1/track", R"({"satellite":42})").status == 400);
   CHECK(w.post("/api/v1/rotor", R"({"control":"yes"})").status == 400);
