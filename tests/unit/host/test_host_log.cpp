@@ -35,8 +35,11 @@ TEST_CASE("LOG CALL GRID RST logs the pass's QSO: satellite, TQSL's name, mode, 
   s.run(2);  // 2026-05-21 12:00:02 UTC
   const auto r = s.host->execute("LOG w1aw fn31 59");
   REQUIRE(r.ok);
-  REQUIRE(r.lines.size() == 1);
+  REQUIRE(r.lines.size() == 2);
   CHECK(r.lines[0] == "LOGGED 1 W1AW RS-44 2026-05-21 12:00:02");
+  // RS-44 is not up over the station at 12:00 (it rises at 21:25): stored, and said (issue 60).
+  CHECK(r.lines[1].rfind("NOTE RS-44 was below the horizon here (-", 0) == 0);
+  CHECK(r.lines[1].find("deg) at 12:00:02 UTC") != std::string::npos);
   const auto q = s.logging.book->get(1);
   REQUIRE(q);
   CHECK(q->call == "W1AW");

@@ -107,12 +107,12 @@ TEST_CASE("Records that are not satellite QSOs are skipped and listed, the satel
   // A general logger's export: an HF QSO (PROP_MODE absent, no SAT_NAME), a sporadic-E one
   // (PROP_MODE ES, even with a bad time: a skipped record is not judged), and one via RS-44.
   const AdifRead r = read_adif(
-      "<ADIF_VER:5>3.1.4 <EOH>\n"
+      "exported by a general logger <ADIF_VER:5>3.1.4 <EOH>\n"
       "<CALL:5>DL1AB <QSO_DATE:8>20261201 <TIME_ON:4>1200 <BAND:3>20m <FREQ:6>14.074 <MODE:3>FT8 <EOR>\n"
       "<CALL:4>k1jt <QSO_DATE:8>20261201 <TIME_ON:4>9999 <PROP_MODE:2>es <EOR>\n"
       "<CALL:4>W1AW <QSO_DATE:8>20261201 <TIME_ON:6>214420 <PROP_MODE:3>SAT <SAT_NAME:5>RS-44 <EOR>\n"
       "<CALL:4>N0CC <QSO_DATE:8>20261201 <TIME_ON:6>214420 <SAT_NAME:5>AO-91 <EOR>\n");
-  REQUIRE(r.ok());
+  REQUIRE_MESSAGE(r.ok(), r.error);
   REQUIRE(r.qsos.size() == 2);
   CHECK(r.qsos[0].call == "W1AW");
   CHECK(r.qsos[1].lotw_name == "AO-91");

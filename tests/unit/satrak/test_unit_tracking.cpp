@@ -258,3 +258,28 @@ TEST_CASE("START_STOP_TIME= refuses windows that are not windows") {
   CHECK(acu.cmd("TRACK_AUTO_ENABLE=,2") == err("TRACK_AUTO_ENABLE=", Error::out_of_range));
   CHECK(acu.cmd("TRACK_AUTO_ENABLE=") == err("TRACK_AUTO_ENABLE=", Error::parameter_count));
 }
+
+TEST_CASE("After the station moves, the unit's pass is the new place's: it waits at the new rise point (issue 55)") {
+  const store::Model m = tucson_model();
+  const orbit::Pass pass = iss_pass(m, kT0, 30.0, 70.0);
+  Acu acu(orbit::add_minutes(pass.aos, -30.0));
+  REQUIRE(acu.cmd("SATELLITE=,amateur.txt,ISS,1,1") == "SATELLITE=,OK");
+  CHECK(acu.cmd("SETTINGS=,?,?,?,?,600000,?,?,?,?,?,?") == "SETTINGS=,OK");
+  CHECK(acu.cmd("TRACK=,1") == "TRACK=,OK");
+  acu.run(2s);
+  // Half an hour before the pass the station moves 300 km north (a GPS fix, a typed position: the
+  // one door either way); the unit's next pass is searched again from the new place.
+  const orbit::Observer there{35.2, -110.9, 2100.0};
+  REQUIRE(acu.owner.set_position(there.lat_deg, there.lon_deg, there.height_m, store::Origin::gps).ok());
+  const orbit::Sgp4 sgp4(iss_elements());
+  std::optional<orbit::Pass> moved;
+  for (const auto& p : orbit::find_passes(sgp4, there, acu.clock.now(), orbit::add_minutes(pass.aos, 60.0)))
+    if (!p.up_at_start && !moved) moved = p;
+  REQUIRE(moved);
+  REQUIRE(angle_diff(moved->aos_az_deg, pass.aos_az_deg) > 3.0);   // the two rise points differ
+  acu.run_until(orbit::add_minutes(moved->aos, -1.0));
+  REQUIRE(acu.rs().target);
+  CHECK(acu.rs().target->el == doctest::Approx(0.0).epsilon(0.01));
+  CHECK(angle_diff(acu.status_num(2), moved->aos_az_deg) < 2.0);   // the new place's rise point
+  CHECK(angle_diff(acu.status_num(2), pass.aos_az_deg) > 1.0);     // not the old one's
+}

@@ -133,6 +133,7 @@ TEST_CASE("web: GET /api/v1/log gives a page and the cursor of the next; the ADI
     q.call = "K" + std::to_string(i % 10) + "A" + std::string(1, static_cast<char>('A' + i % 26)) +
              std::string(1, static_cast<char>('A' + i / 26 % 26));
     q.time_on += i / 3;  // three at each second: pages end inside a second
+    q.station_call = "JA6ABC";  // the factory's NOCALL would warn once a QSO
     many.push_back(q);
   }
   REQUIRE(w.logging.book->import(many).added == 1203);
