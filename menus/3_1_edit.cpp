@@ -31,7 +31,7 @@ namespace {
 using Accept = std::function<std::optional<std::string>(const std::string&)>;
 using Keep = std::function<std::optional<std::string>()>;
 
-std::string fmt(const char* f, double v) {
+std::string edit_fmt(const char* f, double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, f, v);
   return buf;
@@ -63,7 +63,7 @@ std::optional<double> finite_number(const std::string& a) {
 // A number in [lo, hi] (hi excluded when open).
 void number_field(term::Terminal& t, const char* label, const char* prompt, double& value, const char* shown_format,
                   double lo, double hi, bool open_high, const char* unit) {
-  ask_field(t, label, fmt(shown_format, value), prompt, [&](const std::string& a) -> std::optional<std::string> {
+  ask_field(t, label, edit_fmt(shown_format, value), prompt, [&](const std::string& a) -> std::optional<std::string> {
     const auto v = finite_number(a);
     if (!v) return "'" + a + "' is not a number";
     if (*v < lo || *v > hi || (open_high && *v == hi)) {
@@ -77,7 +77,7 @@ void number_field(term::Terminal& t, const char* label, const char* prompt, doub
   });
 }
 
-int days_in_year(int year) {
+int edit_days_in_year(int year) {
   const bool leap = (year % 4 == 0 && year % 100 != 0) || year % 400 == 0;
   return leap ? 366 : 365;
 }
@@ -133,7 +133,7 @@ void edit_identity(term::Terminal& t, const store::Database& db, std::size_t ind
     return std::nullopt;
   });
 
-  ask_field(t, "Epoch Year Y0", fmt("%02.0f", e.epoch_year % 100), "Y0:",
+  ask_field(t, "Epoch Year Y0", edit_fmt("%02.0f", e.epoch_year % 100), "Y0:",
             [&](const std::string& a) -> std::optional<std::string> {
               const auto y = parse_integer(a);
               if (y && *y >= 0 && *y <= 99) e.epoch_year = orbit::expand_two_digit_year(static_cast<int>(*y));
@@ -143,13 +143,13 @@ void edit_identity(term::Terminal& t, const store::Database& db, std::size_t ind
             });
 
   auto day_error = [&](double day) -> std::optional<std::string> {
-    const int last = days_in_year(e.epoch_year);
+    const int last = edit_days_in_year(e.epoch_year);
     if (day >= 1.0 && day < last + 1.0) return std::nullopt;
-    return fmt("%.8f", day) + " is not a day of " + std::to_string(e.epoch_year) + ": expected 1 to less than " +
+    return edit_fmt("%.8f", day) + " is not a day of " + std::to_string(e.epoch_year) + ": expected 1 to less than " +
            std::to_string(last + 1) + " (day of the year with fraction)";
   };
   ask_field(
-      t, "Epoch Time T0", fmt("%.8f", e.epoch_day), "T0:",
+      t, "Epoch Time T0", edit_fmt("%.8f", e.epoch_day), "T0:",
       [&](const std::string& a) -> std::optional<std::string> {
         const auto v = finite_number(a);
         if (!v) return "'" + a + "' is not a number (day of the year with fraction, such as 45.39066)";
@@ -173,7 +173,7 @@ void edit_identity(term::Terminal& t, const store::Database& db, std::size_t ind
 // The orbit's mean elements, each within its range.
 void edit_orbit(term::Terminal& t, orbit::Elements& e) {
   number_field(t, "Mean Anomaly M0", "M0:", e.mean_anomaly_deg, "%.4f", 0.0, 360.0, true, "deg");
-  ask_field(t, "Mean Motion N0", fmt("%.8f", e.mean_motion_rev_per_day), "N0:",
+  ask_field(t, "Mean Motion N0", edit_fmt("%.8f", e.mean_motion_rev_per_day), "N0:",
             [&](const std::string& a) -> std::optional<std::string> {
               const auto v = finite_number(a);
               if (!v) return "'" + a + "' is not a number";

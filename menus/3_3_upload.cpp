@@ -58,7 +58,7 @@ std::string describe(const orbit::ParseProblem& p) {
   return m;
 }
 
-std::vector<std::string> database_names(const store::Database& db) {
+std::vector<std::string> upload_database_names(const store::Database& db) {
   std::vector<std::string> names;
   for (const auto& sat : db.satellites) names.push_back(sat.name());
   return names;
@@ -161,7 +161,7 @@ void menu_3_3_upload(term::Terminal& t, Services& s) {
 
   // ---- the new database ----
   t.line("     *** Satellite database ***");
-  for (const auto& r : format_satellite_list(database_names(s.model.db), s.model.db.marked_index().value_or(-1)))
+  for (const auto& r : format_satellite_list(upload_database_names(s.model.db), s.model.db.marked_index().value_or(-1)))
     t.line(r);
 }
 

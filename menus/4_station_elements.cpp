@@ -13,7 +13,7 @@
 namespace tb::menus {
 namespace {
 template <class... A>
-std::string fmt(const char* f, A... v) {
+std::string station_fmt(const char* f, A... v) {
   char buf[160];
   std::snprintf(buf, sizeof buf, f, v...);
   return buf;
@@ -27,7 +27,7 @@ namespace {
 double edit_degrees(term::Terminal& t, std::string_view label, double current, char pos, char neg, double limit,
                     std::optional<double>* locator_lon = nullptr) {
   double result = current;
-  edit_text(t, label, fmt("%+.3f", current), [&](const std::string& a) -> std::optional<std::string> {
+  edit_text(t, label, station_fmt("%+.3f", current), [&](const std::string& a) -> std::optional<std::string> {
     if (locator_lon)
       if (const auto centre = station::maidenhead_centre(a)) {
         result = centre->lat_deg;
@@ -37,7 +37,7 @@ double edit_degrees(term::Terminal& t, std::string_view label, double current, c
     const auto v = station::parse_hemisphere_degrees(a, pos, neg);
     if (!v) return "'" + a + "' is not a number of degrees (a sign, or " + std::string(1, pos) + " or " +
                    std::string(1, neg) + " after it)" + (locator_lon ? " nor a locator (JN18du)" : "");
-    if (std::abs(*v) > limit) return a + fmt(" is out of range: expected %g to %g", -limit, limit);
+    if (std::abs(*v) > limit) return a + station_fmt(" is out of range: expected %g to %g", -limit, limit);
     result = *v;
     return std::nullopt;
   });
@@ -72,12 +72,12 @@ void edit_station_elements(term::Terminal& t, Services& s) {
   if (locator_lon) {
     // A locator gives both: its centre; Enter at the longitude keeps it.
     st.lon_deg = *locator_lon;
-    t.line(fmt("  locator: the centre of its square, %.6f %c %.6f %c", std::abs(st.lat_deg), st.lat_deg < 0 ? 'S' : 'N',
+    t.line(station_fmt("  locator: the centre of its square, %.6f %c %.6f %c", std::abs(st.lat_deg), st.lat_deg < 0 ? 'S' : 'N',
                std::abs(st.lon_deg), st.lon_deg < 0 ? 'W' : 'E'));
   }
   st.lon_deg = edit_degrees(t, "Longitude [deg]   ", st.lon_deg, 'E', 'W', 180.0);
   const store::Bounds height = store::bounds("station.height_m");  // the settings table's range
-  st.height_m = edit_number(t, "Height    [m]     ", st.height_m, fmt("%.3f", st.height_m), height.lo, height.hi);
+  st.height_m = edit_number(t, "Height    [m]     ", st.height_m, station_fmt("%.3f", st.height_m), height.lo, height.hi);
   t.line("  Rotor start: where the azimuth rotator's stop is (turn it fully counter-clockwise and read its");
   t.line("  dial): N for a stop at north (a GS-232 reporting 0-360 or 0-450, a SPID), S for one at south");
   const std::string rs = edit_text(t, "Rotor start [N/S] ", station::to_string(st.rotor_start),
@@ -105,7 +105,7 @@ void edit_station_elements(term::Terminal& t, Services& s) {
                                          });
     gs.follow = std::toupper(static_cast<unsigned char>(follow[0])) == 'Y';
     const store::Bounds b = store::bounds("gps.threshold_m");
-    gs.threshold_m = edit_number(t, "GPS threshold [m] ", gs.threshold_m, fmt("%.0f", gs.threshold_m), b.lo, b.hi);
+    gs.threshold_m = edit_number(t, "GPS threshold [m] ", gs.threshold_m, station_fmt("%.0f", gs.threshold_m), b.lo, b.hi);
   }
   if (st.lat_deg != s.model.station.lat_deg || st.lon_deg != s.model.station.lon_deg ||
       st.height_m != s.model.station.height_m) {
@@ -129,7 +129,7 @@ void edit_station_elements(term::Terminal& t, Services& s) {
   }
   // Said, not silent (issue 30): what was stored, in words an operator checks at a glance.
   const station::StationConfig& saved = s.model.station;
-  t.line(fmt("Station saved: %s  %.3f %c  %.3f %c  %.0f m  rotor start %s", saved.callsign.c_str(),
+  t.line(station_fmt("Station saved: %s  %.3f %c  %.3f %c  %.0f m  rotor start %s", saved.callsign.c_str(),
              std::abs(saved.lat_deg), saved.lat_deg < 0 ? 'S' : 'N', std::abs(saved.lon_deg),
              saved.lon_deg < 0 ? 'W' : 'E', saved.height_m, station::to_string(saved.rotor_start)));
 }

@@ -17,8 +17,8 @@ namespace tb::menus {
 
 namespace {
 
-std::string fmt(const char* f, ...) __attribute__((format(printf, 1, 2)));
-std::string fmt(const char* f, ...) {
+std::string config_fmt(const char* f, ...) __attribute__((format(printf, 1, 2)));
+std::string config_fmt(const char* f, ...) {
   char buf[256];
   va_list ap;
   va_start(ap, f);
@@ -27,7 +27,7 @@ std::string fmt(const char* f, ...) {
   return buf;
 }
 
-std::string label(const char* l) { return fmt("%-17s", l); }
+std::string label(const char* l) { return config_fmt("%-17s", l); }
 
 const char* yn(bool b) { return b ? "Y" : "N"; }
 
@@ -86,7 +86,7 @@ void menu_6_configuration(term::Terminal& t, Services& s) {
 // 6-0
 
 std::string span_line(const rotator::RotatorConfig& c) {
-  return fmt("ADC span value AZ:%04d-%04d EL:%04d-%04d", c.az_span.min, c.az_span.max, c.el_span.min, c.el_span.max);
+  return config_fmt("ADC span value AZ:%04d-%04d EL:%04d-%04d", c.az_span.min, c.az_span.max, c.el_span.min, c.el_span.max);
 }
 
 std::vector<std::string> preset_lines(const rotator::RotatorConfig& c) {
@@ -109,12 +109,12 @@ std::vector<std::string> configuration_lines(const store::Model& m) {
   const auto& r = m.rotator;
   const auto& rc = m.radio;
   std::vector<std::string> out;
-  out.push_back(fmt("Callsign:%s  Lat:%s Long:%s Hgt:%s", st.callsign.c_str(), cfg::fmt1(st.lat_deg).c_str(),
+  out.push_back(config_fmt("Callsign:%s  Lat:%s Long:%s Hgt:%s", st.callsign.c_str(), cfg::fmt1(st.lat_deg).c_str(),
                     cfg::fmt1(st.lon_deg).c_str(), cfg::fmt1(st.height_m).c_str()));
   // An overlap rotator's travel (--az-travel) is shown only when it is not the TrakBox's 360.
-  out.push_back(label("ADC span value") + fmt("AZ:%4d - %4d  EL:%4d - %4d", r.az_span.min, r.az_span.max, r.el_span.min,
+  out.push_back(label("ADC span value") + config_fmt("AZ:%4d - %4d  EL:%4d - %4d", r.az_span.min, r.az_span.max, r.el_span.min,
                                               r.el_span.max) +
-                (r.az_travel_deg != 360.0 ? fmt("  travel %.0f deg", r.az_travel_deg) : ""));
+                (r.az_travel_deg != 360.0 ? config_fmt("  travel %.0f deg", r.az_travel_deg) : ""));
   out.push_back(label("Dead band") + "AZ:" + cfg::fmt1(r.az_dead_band) + " EL:" + cfg::fmt1(r.el_dead_band) +
                 "  Skew AZ:" + cfg::fmt1(r.az_skew) + " EL:" + cfg::fmt1(r.el_skew));
   out.push_back(label("Antenna parking") +
@@ -130,19 +130,19 @@ std::vector<std::string> configuration_lines(const store::Model& m) {
                 (preset_lines(r).size() > 1 ? " " + text::trimmed(preset_lines(r).back()) : ""));
   std::string cat = std::string(radio::to_string(rc.rig)) +
                     (rc.cat_policy == radio::CatPolicy::aos_only ? " AOS" : " Full");
-  if (rc.rig == radio::Rig::icom) cat += fmt("  RX:%02XH TX:%02XH", rc.icom_rx_address, rc.icom_tx_address);
+  if (rc.rig == radio::Rig::icom) cat += config_fmt("  RX:%02XH TX:%02XH", rc.icom_rx_address, rc.icom_tx_address);
   if (rc.rig == radio::Rig::yaesu && rc.ft736_wide_fm) cat += "  FT-736 wide FM";
   // The later firmware's STATION.DAT items: shown only when set, so the manual's screen is unchanged.
   if (rc.rig_model != radio::RigModel::generic) cat += std::string("  ") + radio::to_string(rc.rig_model);
-  if (rc.cat_baud > 0) cat += fmt("  %d Bd", rc.cat_baud);
+  if (rc.cat_baud > 0) cat += config_fmt("  %d Bd", rc.cat_baud);
   out.push_back(label("CAT Rig") + cat);
   const char* down = rc.downlink_correction == radio::DownlinkCorrection::on        ? "Y"
                      : rc.downlink_correction == radio::DownlinkCorrection::reverse ? "R"
                                                                                     : "N";
   out.push_back(label("Doppler correct.") + "Up:" + yn(rc.uplink_correction) + " Down:" + down);
   const auto& mc = rc.mic_click;
-  out.push_back(fmt("Step control ADC value Center:%d Reff:%d", mc.centre_adc, mc.reference_adc));
-  out.push_back(label("Frequency step") + fmt("%lld Hz", static_cast<long long>(mc.step_hz)));
+  out.push_back(config_fmt("Step control ADC value Center:%d Reff:%d", mc.centre_adc, mc.reference_adc));
+  out.push_back(label("Frequency step") + config_fmt("%lld Hz", static_cast<long long>(mc.step_hz)));
   out.push_back(label("Mic click at AOS") + "CAT:" + yn(mc.cat_at_aos) + " Up pulse:" + yn(mc.auto_up_at_aos) +
                 " Polarity:" + (mc.polarity == radio::PulsePolarity::normal ? "Normal" : "Reverse"));
   const store::PassEvents& pe = m.pass_events;
@@ -150,10 +150,10 @@ std::vector<std::string> configuration_lines(const store::Model& m) {
   out.push_back(label("Rotor start") + station::to_string(st.rotor_start) +
                 (pe.rotor_start_el_deg != factory.rotor_start_el_deg ? "  above EL:" + cfg::fmt1(pe.rotor_start_el_deg)
                                                                      : ""));
-  out.push_back(label("COM port") + fmt("%d Baud 8-N-1", st.com_baud));
+  out.push_back(label("COM port") + config_fmt("%d Baud 8-N-1", st.com_baud));
   if (rc.parking.enabled) {
     auto link = [](radio::Hz hz, radio::Mode mode) {
-      return (hz > 0 ? fmt("%.3f", static_cast<double>(hz) / 1e6) : std::string("-")) + " " + radio::to_string(mode);
+      return (hz > 0 ? config_fmt("%.3f", static_cast<double>(hz) / 1e6) : std::string("-")) + " " + radio::to_string(mode);
     };
     out.push_back(label("Radio parking") + "On  RX:" + link(rc.parking.rx_hz, rc.parking.rx_mode) +
                   " TX:" + link(rc.parking.tx_hz, rc.parking.tx_mode));
@@ -221,7 +221,7 @@ double ask_number(term::Terminal& t, std::string_view prompt, std::optional<doub
       continue;
     }
     if (*v < lo || *v > hi) {
-      t.line(fmt("  %s is out of range: expected %g to %g", a.c_str(), lo, hi));
+      t.line(config_fmt("  %s is out of range: expected %g to %g", a.c_str(), lo, hi));
       continue;
     }
     return *v;

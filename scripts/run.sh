@@ -11,7 +11,8 @@ dir=build
 if [ -f "$dir/CMakeCache.txt" ]; then
   cmake -S . -B "$dir" >/dev/null
 else
-  cmake -S . -B "$dir" -G Ninja -DTRAKBOX_TESTS=OFF >/dev/null
+  # TRAKBOX_UNITY: the libraries in unity batches, a cold build in about half the CPU (CMakeLists.txt).
+  cmake -S . -B "$dir" -G Ninja -DTRAKBOX_TESTS=OFF -DTRAKBOX_UNITY=ON >/dev/null
 fi
 cmake --build "$dir" -j"$(nproc)" --target trakbox
 exec "$dir/trakbox" "$@"

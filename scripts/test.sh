@@ -16,14 +16,15 @@ jobs=$(nproc)
 start=$SECONDS
 # CMAKE_SKIP_INSTALL_ALL_DEPENDENCY: cpack installs what was built here instead of building `all`
 # (which would compile the unit tests and fuzz replays a second time, unsanitized).
-cmake -S . -B build -G Ninja -DTRAKBOX_WERROR=ON -DTRAKBOX_HARDENING=ON -DTRAKBOX_TESTS=ON \
+# TRAKBOX_UNITY: the program's libraries in unity batches, as scripts/run.sh builds them (CMakeLists.txt).
+cmake -S . -B build -G Ninja -DTRAKBOX_WERROR=ON -DTRAKBOX_HARDENING=ON -DTRAKBOX_TESTS=ON -DTRAKBOX_UNITY=ON \
       -DCMAKE_SKIP_INSTALL_ALL_DEPENDENCY=ON >/dev/null
 mapfile -t bench_targets < <(cmake --build build --target help | sed -n 's/^\(bench_[a-z0-9_]*\):.*/\1/p')
 cmake --build build -j"$jobs" --target trakbox tb_compressed_docs "${bench_targets[@]}"
 echo "== build (trakbox, ${#bench_targets[@]} benchmarks): $((SECONDS - start)) s"
 
 cmake -S . -B build-asan -G Ninja -DTRAKBOX_WERROR=ON -DTRAKBOX_SANITIZE=ON -DTRAKBOX_BENCH=OFF \
-      -DTRAKBOX_UNITY_TESTS=ON -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-g1 >/dev/null
+      -DTRAKBOX_UNITY_TESTS=ON -DTRAKBOX_UNITY=ON -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-g1 >/dev/null
 mapfile -t san_targets < <(cmake --build build-asan --target help | sed -n 's/^\(unit_[a-z0-9_]*\|fuzz_replay_[a-z0-9_]*\):.*/\1/p')
 setsid nice -n 19 cmake --build build-asan -j"$jobs" --target "${san_targets[@]}" >build-asan/build.log 2>&1 &
 san_build=$!

@@ -22,7 +22,7 @@ const std::vector<OptionSpec>& element_specs() {
   return specs;
 }
 
-std::string usage() {
+std::string elements_usage() {
   return "usage: trakbox elements FILE... [--to tle|omm-json|omm-xml|omm-csv|omm-kvn] [--no-checksum]\n"
          "                        [--time ISO8601]\n\n"
          "Reads element files in any format trakbox knows (NASA 2/3-line TLE, AMSAT verbose, gpredict,\n"
@@ -147,7 +147,7 @@ int run_elements(std::vector<std::string> args) {
   if (po.error) return usage_error(*po.error);
   const ParsedOptions& parsed = po.options;
   if (parsed.has("help")) {
-    std::fputs(usage().c_str(), stdout);
+    std::fputs(elements_usage().c_str(), stdout);
     return kExitOk;
   }
   if (parsed.positional().empty()) return usage_error({"FILE", "missing; expected one or more element files"});

@@ -21,7 +21,7 @@ namespace {
 
 std::string signed_text(long long v) { return (v >= 0 ? "+" : "") + std::to_string(v); }
 
-constexpr auto error = &Reply::error;  // "ERROR ..."
+constexpr auto tuning_error = &Reply::error;  // "ERROR ..."
 
 }  // namespace
 
@@ -30,7 +30,7 @@ std::optional<Reply> Interpreter::tuning(std::string_view u, std::string_view li
   const bool ct = u.rfind("CT", 0) == 0;
   if (u == "?T") {
     const radio::Tuner& t = station_.tuner();
-    if (!station_.tuned()) return error("?T: no satellite is tuned: track one first");
+    if (!station_.tuned()) return tuning_error("?T: no satellite is tuned: track one first");
     const int tone = t.satellite().ctcss_tenths_hz;
     return Reply{{"TUNE SPOT " + std::to_string(t.downlink_spot_hz()) + " " + std::to_string(t.uplink_spot_hz()) +
                   " RX " + signed_text(t.rit_hz()) + " TX " + signed_text(t.xit_hz()) + " TONE " +
@@ -44,18 +44,18 @@ std::optional<Reply> Interpreter::tuning(std::string_view u, std::string_view li
   tracker::OpResult done;
   if (ct) {
     const auto hz = text::parse_double(arg);
-    if (!hz) return error("CT: '" + arg.substr(0, 20) + "' is not a tone: expected Hz such as CT67.0, or CT0 for none");
+    if (!hz) return tuning_error("CT: '" + arg.substr(0, 20) + "' is not a tone: expected Hz such as CT67.0, or CT0 for none");
     done = ops().tune_tone(*hz);
   } else {
     const auto hz = text::parse_integer<long long>(arg);
     if (!hz)
-      return error(cmd + ": '" + arg.substr(0, 20) + "' is not a whole number of Hz, e.g. " +
+      return tuning_error(cmd + ": '" + arg.substr(0, 20) + "' is not a whole number of Hz, e.g. " +
                    (pb ? "PB435640000" : cmd + "+120"));
     if (pb) done = ops().tune_spot(*hz);
     else done = ops().tune_offsets(orx ? std::optional<long long>(*hz) : std::nullopt,
                                    otx ? std::optional<long long>(*hz) : std::nullopt);
   }
-  if (!done.ok()) return error(cmd + ": " + *done.refusal);
+  if (!done.ok()) return tuning_error(cmd + ": " + *done.refusal);
   if (done.model_changed) station_.save_settings();   // on disk before the prompt returns
   return Reply{};
 }
@@ -64,9 +64,9 @@ std::optional<Reply> Interpreter::tuning(std::string_view u, std::string_view li
 // reads it (store::parse_position: one reading); without a height the stored one stays.
 Reply Interpreter::station(std::string_view arg) {
   const store::ParsedPosition p = store::parse_position(text::trimmed(arg));
-  if (!p.ok()) return error("QTH: " + p.error);
+  if (!p.ok()) return tuning_error("QTH: " + p.error);
   const tracker::OpResult done = ops().set_station(p.lat_deg, p.lon_deg, p.height_m.value_or(station_.model().station.height_m));
-  if (!done.ok()) return error("QTH: " + *done.refusal);
+  if (!done.ok()) return tuning_error("QTH: " + *done.refusal);
   return Reply{{"QTH " + done.note.substr(done.note.find(' ') + 1)}, true, false};
 }
 

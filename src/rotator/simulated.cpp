@@ -6,7 +6,7 @@
 namespace tb::rotator {
 
 namespace {
-double seconds(orbit::UtcTime from, orbit::UtcTime to) {
+double sim_seconds(orbit::UtcTime from, orbit::UtcTime to) {
   return std::chrono::duration<double>(to - from).count();
 }
 }  // namespace
@@ -66,11 +66,11 @@ void SimulatedRotator::advance_axis(AxisSim& s, orbit::UtcTime to) {
   };
   orbit::UtcTime t = t_;
   if (s.drive != Drive::stop && s.deadline <= to) {
-    step(sign(s.drive) * s.rate, seconds(t, std::max(t, s.deadline)));
+    step(sign(s.drive) * s.rate, sim_seconds(t, std::max(t, s.deadline)));
     t = std::max(t, s.deadline);
     s.drive = Drive::stop;
   }
-  step(sign(s.drive) * s.rate, seconds(t, to));
+  step(sign(s.drive) * s.rate, sim_seconds(t, to));
 }
 
 void SimulatedRotator::advance() {

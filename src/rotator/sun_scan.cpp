@@ -12,7 +12,7 @@
 namespace tb::rotator {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr double kScanDegToRad = std::numbers::pi / 180.0;
 constexpr double kFourLn2 = 4.0 * std::numbers::ln2;
 constexpr double kUsedFraction = 0.1;   // points fitted: excess at least this share of the peak's
 
@@ -52,7 +52,7 @@ std::vector<Point> to_points(std::span<const ScanSample> samples, double& mean_e
   std::vector<Point> pts;
   mean_el = 0.0;
   for (const ScanSample& s : samples) {
-    const double x = std::remainder(s.reading.az - s.body.az, 360.0) * std::cos(s.body.el * kDeg);
+    const double x = std::remainder(s.reading.az - s.body.az, 360.0) * std::cos(s.body.el * kScanDegToRad);
     pts.push_back({x, s.reading.el - s.body.el, to_power(s.level_db)});
     mean_el += s.body.el / static_cast<double>(samples.size());
   }
@@ -102,7 +102,7 @@ ScanPattern scan_pattern(ScanShape shape, double span_deg, double step_deg) {
 }
 
 AzEl scan_target(AzEl body, ScanPoint p) {
-  const double c = std::cos(body.el * kDeg);
+  const double c = std::cos(body.el * kScanDegToRad);
   double az = std::fmod(body.az + (c > 1e-6 ? p.x_deg / c : 0.0), 360.0);
   if (az < 0.0) az += 360.0;
   return {az, body.el + p.y_deg};
@@ -184,7 +184,7 @@ ScanFit fit_scan(std::span<const ScanSample> samples) {
     sq += r * r;
   }
   fit.rms_db = std::sqrt(sq / fit.points_used);
-  const double ce = std::cos(mean_el * kDeg);
+  const double ce = std::cos(mean_el * kScanDegToRad);
   fit.correction.az_deg = -(ce > 1e-6 ? fit.peak_x_deg / ce : 0.0);
   fit.correction.el_deg = -fit.peak_y_deg;
   return fit;

@@ -58,7 +58,7 @@ const LineShape& shape_of(bool later, int number) {
   return later ? kShapesLater[number - 1] : kShapes1994[number - 1];
 }
 
-constexpr int kBauds[] = {1200, 2400, 4800, 9600, 19200};
+constexpr int kStationFileBauds[] = {1200, 2400, 4800, 9600, 19200};
 
 using text::upper;
 std::optional<double> to_double(std::string_view s) { return text::parse_double(s); }
@@ -178,7 +178,7 @@ class Parser {
 
   void baud(int phys, int field, std::string_view s, int& out, bool& given) {
     const auto v = to_int(s);
-    if (v && std::find(std::begin(kBauds), std::end(kBauds), *v) != std::end(kBauds)) {
+    if (v && std::find(std::begin(kStationFileBauds), std::end(kStationFileBauds), *v) != std::end(kStationFileBauds)) {
       out = *v;
       given = true;
     } else {
