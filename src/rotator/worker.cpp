@@ -107,7 +107,10 @@ void WorkerRotator::Shared::run() {
     }
     {
       std::lock_guard lk(m);
+      // The whole first report, as every later one (its motion was dropped: a test saw "stopped"
+      // while the rotator said it was turning, until the next poll).
       if (first.position) pos = first.position;
+      if (first.motion) motion = *first.motion;
       if (first.limits) limits = *first.limits;
       connected = true;
       health.state = LinkState::ok;
