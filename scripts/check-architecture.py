@@ -16,7 +16,7 @@ a writable Model: no `Model&` that is not const, except the parameter of a chang
 owner (`owner.edit(..., [&](store::Model& m) { ... })`, a lambda's `](store::Model& m)`, or the
 type of such a change, `function<void(store::Model&)>`). Each
 breach is named with its line. `--writers` lists the files that hold a writable Model and exits 0
-(for a before/after count).
+(for a before/after count); `--table` prints each folder's derived dependencies.
 
 It also holds the one door for JSON from outside (issue 56): every parse goes through
 json_limits::parse_bounded (src/util/json_limits.h: the nesting bound, then the parse), so a
@@ -180,6 +180,10 @@ def json_parse_outside_door():
 
 
 def main():
+    if "--table" in sys.argv:   # the folders' dependencies as the includes give them (a before/after count)
+        for short, (folder, found) in sorted(derived(modules()).items()):
+            print(f"{folder:14} {len(found):2}  {', '.join(sorted(found)) or 'nothing'}")
+        return 0
     if "--writers" in sys.argv:
         files = sorted({f for f, _, _ in model_writers()})
         for f in files:
