@@ -8,10 +8,10 @@
 #include "cli/cli_elements.h"
 #include "cli/cli_orbit.h"
 #include "cli/options.h"
-#include "satrak/rotator_registry.h"
+#include "rotator/registry.h"
 #include "app/tracker_app.h"
 #include "radio/registry.h"
-#include "satrak/client.h"
+#include "rotator/satrak/client.h"
 
 #include <iostream>
 
@@ -56,7 +56,7 @@ int main(int argc, char** argv) {
     return kExitOk;
   }
   if (args.size() == 2 && args[0] == "--rotator" && args[1] == "list") {
-    std::fputs(rotator_list_text().c_str(), stdout);
+    std::fputs(rotator::rotator_list_text().c_str(), stdout);
     return kExitOk;
   }
   if (!args.empty() && args[0].rfind('-', 0) != 0) {

@@ -154,7 +154,7 @@ std::optional<std::string> build_station(StationApp& app, const TrackerConfig& c
   radio::MakeRadio made = radio::make_radios(c.radio, c.uplink_radio, app.model().radio);
   if (!made.driver) return "--radio: " + made.error;
   std::unique_ptr<rotator::RotatorDriver> rot =
-      make_rotator(c.rotator, {app.clock(), rotator::SimulatedRotatorParams::matching(app.model().rotator)});
+      rotator::make_rotator(c.rotator, {app.clock(), rotator::SimulatedRotatorParams::matching(app.model().rotator)});
   const std::string rot_name = rot->description();
   app.build_station(std::move(rot), std::move(made.driver));
   app.log().info("rotator: {}; radio: {}", rot_name, app.station().radio().describe());

@@ -9,7 +9,7 @@
 
 #include "live/build_info.h"
 #include "cli/cli_defaults.h"
-#include "satrak/rotator_registry.h"
+#include "rotator/registry.h"
 #include "live/station_socket.h"
 #include "gps/gpsd_client.h"
 #include "logbook/logger.h"
@@ -162,8 +162,8 @@ std::optional<spdlog::level::level_enum> log_level_named(const std::string& l) {
 }  // namespace
 
 std::optional<std::string> set_rotator_spec(TrackerConfig& c, const std::string& text) {
-  // One table of rotators (satrak/rotator_registry.h) chooses the parser.
-  RotatorParse rot = parse_rotator(text);
+  // One table of rotators (rotator/registry.h) chooses the parser.
+  rotator::RotatorParse rot = rotator::parse_rotator(text);
   if (!rot.error.empty()) return rot.error;
   c.rotator = rot.choice;
   return std::nullopt;

@@ -16,7 +16,7 @@
 #include "live/udp_events.h"
 #include "orbit/time.h"
 #include "radio/factory.h"
-#include "satrak/rotator_registry.h"
+#include "rotator/registry.h"
 #include "util/cidr.h"
 
 namespace tb::app {
@@ -42,7 +42,7 @@ struct TrackerConfig {
   std::optional<double> clock_rate;
   int tick_ms = 1000;
   // The rotator, as a row of the rotator registry read it (a driver spec or a Satrak ACU).
-  RotatorChoice rotator;
+  rotator::RotatorChoice rotator;
   radio::RadioSpec radio;
   // --uplink-radio: a second radio's spec ("" for none); unset: the stored choice (menu 6-7).
   std::optional<std::string> uplink_radio_text;

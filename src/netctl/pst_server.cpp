@@ -5,7 +5,7 @@
 #include <boost/asio/ip/address.hpp>
 
 #include "rotator/adc_model.h"
-#include "rotator/pstrotator.h"
+#include "rotator/pst/codec.h"
 #include "tracker/operations.h"
 
 namespace tb::netctl {

@@ -1,4 +1,4 @@
-// trakbox aimed over PstRotator's UDP protocol (--pst-port N, rotator/pstrotator.h): a program that
+// trakbox aimed over PstRotator's UDP protocol (--pst-port N, rotator/pst/codec.h): a program that
 // speaks it (PstRotator itself, SatDump, Horus-GUI, a logger) sends <PST><AZIMUTH>..</AZIMUTH></PST>
 // and <PST><ELEVATION>..</ELEVATION></PST> to the port, and is an outside client of the antenna as a
 // rotctld client is: the same StationOps::go_to (stop, park), the rotor control switched on as

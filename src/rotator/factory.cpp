@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "rotator/easycomm_rotator.h"
-#include "rotator/pst_rotator.h"
+#include "rotator/pst/link.h"
 #include "rotator/hamlib.h"
 #include "util/host_port.h"
 #include "util/text.h"

@@ -36,7 +36,7 @@ struct SpecResult {
 };
 
 // Each kind's parser, given the whole --rotator value ("hamlib:603:/dev/ttyUSB0:9600"); the rotator
-// registry (satrak/rotator_registry.h) picks one by the name before the first ':'. The Hamlib model
+// registry (rotator/registry.h) picks one by the name before the first ':'. The Hamlib model
 // must exist.
 SpecResult parse_simulated_spec(std::string_view text);
 SpecResult parse_hamlib_spec(std::string_view text);

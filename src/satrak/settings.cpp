@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "rotator/config.h"
-#include "satrak/commands.h"
+#include "rotator/satrak/commands.h"
 #include "store/json_fields.h"
 
 #include "util/safe_text.h"

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "orbit/time.h"
-#include "satrak/commands.h"
+#include "rotator/satrak/commands.h"
 
 namespace tb::satrak::detail {
 

@@ -12,9 +12,9 @@
 #include "app/tracker_app.h"
 #include "fuzz_station.h"
 #include "radio/factory.h"
-#include "satrak/rotator_registry.h"
+#include "rotator/registry.h"
 #include "rotator/factory.h"
-#include "satrak/client.h"
+#include "rotator/satrak/client.h"
 #include "util/host_port.h"
 
 using namespace tb;
@@ -56,10 +56,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (const auto hp = inet::parse_host_port(a, error, satrak::kDefaultPort)) (void)hp->host;
     else TB_FUZZ_CHECK(!error.empty(), a);
     error.clear();
-    const auto rot = app::parse_rotator(a);
+    const auto rot = rotator::parse_rotator(a);
     if (rot.choice.rotator) {
       const std::string back = rotator::to_string(*rot.choice.rotator);
-      const auto again = app::parse_rotator(back);
+      const auto again = rotator::parse_rotator(back);
       TB_FUZZ_CHECK(again.choice.rotator && *again.choice.rotator == *rot.choice.rotator, a + " -> " + back);
     } else if (!rot.choice.satrak) {
       TB_FUZZ_CHECK(!rot.error.empty(), a);

@@ -7,7 +7,7 @@
 // datagram is counted once (taken or refused).
 #include "fuzz_station.h"
 #include "netctl/pst_server.h"
-#include "rotator/pstrotator.h"
+#include "rotator/pst/codec.h"
 
 using namespace tb;
 

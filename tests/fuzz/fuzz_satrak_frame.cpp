@@ -9,8 +9,8 @@
 #include <cmath>
 
 #include "fuzz_station.h"
-#include "satrak/commands.h"
-#include "satrak/frame.h"
+#include "rotator/satrak/commands.h"
+#include "rotator/satrak/frame.h"
 
 using namespace tb;
 

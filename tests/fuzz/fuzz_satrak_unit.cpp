@@ -14,8 +14,8 @@
 #include <boost/asio/io_context.hpp>
 
 #include "fuzz_station.h"
-#include "satrak/commands.h"
-#include "satrak/frame.h"
+#include "rotator/satrak/commands.h"
+#include "rotator/satrak/frame.h"
 #include "satrak/settings.h"
 #include "satrak/unit.h"
 #include "store/state_file.h"

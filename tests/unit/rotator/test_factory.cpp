@@ -1,5 +1,5 @@
 // The --rotator specs of the rotator module: simulated, hamlib:MODEL:DEVICE[:BAUD], rotctld:HOST[:PORT]
-// (each kind's parser and factory; satrak/rotator_registry.h picks them, tests/unit/app).
+// (each kind's parser and factory; rotator/registry.h picks them, tests/unit/rotator/test_registry.cpp).
 #include <doctest/doctest.h>
 #include <spdlog/spdlog.h>
 

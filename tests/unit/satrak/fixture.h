@@ -17,7 +17,7 @@
 #include "orbit/passes.h"
 #include "radio/simulated.h"
 #include "rotator/simulated.h"
-#include "satrak/commands.h"
+#include "rotator/satrak/commands.h"
 #include "satrak/unit.h"
 #include "support/shipped_model.h"
 #include "support/sim_station.h"

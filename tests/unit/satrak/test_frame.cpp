@@ -2,8 +2,8 @@
 
 #include <random>
 
-#include "satrak/commands.h"
-#include "satrak/frame.h"
+#include "rotator/satrak/commands.h"
+#include "rotator/satrak/frame.h"
 
 using namespace tb::satrak;
 

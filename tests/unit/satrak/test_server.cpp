@@ -8,7 +8,7 @@
 
 #include "fixture.h"
 #include "net.h"
-#include "satrak/client.h"
+#include "rotator/satrak/client.h"
 #include "satrak/server.h"
 
 using namespace satrak_test;

@@ -1,4 +1,4 @@
-#include "satrak/client.h"
+#include "rotator/satrak/client.h"
 
 #include <fcntl.h>
 #include <netdb.h>
@@ -13,7 +13,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "satrak/commands.h"
+#include "rotator/satrak/commands.h"
 #include "util/host_port.h"
 
 namespace tb::satrak {

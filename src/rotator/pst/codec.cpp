@@ -1,4 +1,4 @@
-#include "rotator/pstrotator.h"
+#include "rotator/pst/codec.h"
 
 #include <cstdio>
 

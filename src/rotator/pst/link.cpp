@@ -1,4 +1,4 @@
-#include "rotator/pst_rotator.h"
+#include "rotator/pst/link.h"
 
 #include <arpa/inet.h>
 #include <netdb.h>
@@ -11,7 +11,7 @@
 #include <cstring>
 #include <optional>
 
-#include "rotator/pstrotator.h"
+#include "rotator/pst/codec.h"
 
 namespace tb::rotator {
 

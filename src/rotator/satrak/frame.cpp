@@ -1,4 +1,4 @@
-#include "satrak/frame.h"
+#include "rotator/satrak/frame.h"
 
 namespace tb::satrak {
 

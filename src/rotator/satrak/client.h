@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "rotator/worker.h"
-#include "satrak/frame.h"
+#include "rotator/satrak/frame.h"
 
 namespace tb::satrak {
 

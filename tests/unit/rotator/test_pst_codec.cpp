@@ -1,9 +1,9 @@
-// PstRotator's UDP protocol (rotator/pstrotator.h): the datagrams as PstRotator's own manual (rev.
+// PstRotator's UDP protocol (rotator/pst/codec.h): the datagrams as PstRotator's own manual (rev.
 // 2.9), Hamlib's PSTRotator backend, SatDump's PstRotatorHandler and the CSN S.A.T. scripts write
 // them, both ways.
 #include <doctest/doctest.h>
 
-#include "rotator/pstrotator.h"
+#include "rotator/pst/codec.h"
 
 namespace pst = tb::rotator::pst;
 using Kind = pst::Command::Kind;

@@ -1,4 +1,4 @@
-#include "satrak/commands.h"
+#include "rotator/satrak/commands.h"
 #include "util/text.h"
 
 #include <charconv>
