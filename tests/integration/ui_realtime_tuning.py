@@ -93,7 +93,7 @@ def main():
         wait_for(r"EXITED 0", 15)
         with open(os.path.join(state, "trakbox-state.json")) as f:
             kept = json.load(f)["data"]["radio"]["tx_corrections"]
-        check(kept == {"RS-44 LSB": -300}, f"the TX offset kept in the state for RS-44's uplink mode: {kept}")
+        check(kept == {"RS-44 SSB": -300}, f"the TX offset kept in the state for RS-44's mode SSB: {kept}")
     finally:
         tmux("kill-session", "-t", SESSION)
 

@@ -107,9 +107,9 @@ TEST_CASE("Menu 1: T and R typed set the TX and RX offsets, kept for RS-44 and i
   CHECK(f.station->tuner().rit_hz() == 120);
   CHECK(f.model.radio.tx_corrections.size() == 1);
   CHECK(f.model.radio.tx_corrections.begin()->second == -300);
-  CHECK(f.model.radio.corrections == std::map<std::string, radio::Hz>{{"RS-44 USB", 120}});
+  CHECK(f.model.radio.corrections == std::map<std::string, radio::Hz>{{"RS-44 SSB", 120}});
   CHECK(f.saves >= 3);   // each kept at once
-  CHECK(f.term.output().find("RX offset +120 Hz, TX offset -300 Hz (RS-44 USB)") != std::string::npos);
+  CHECK(f.term.output().find("RX offset +120 Hz, TX offset -300 Hz (RS-44 SSB)") != std::string::npos);
 
   Rs44 g("T0\r");
   g.model.radio.tx_corrections = f.model.radio.tx_corrections;
