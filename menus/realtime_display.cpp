@@ -197,7 +197,7 @@ std::string elements_age_line(Services& s, int db_index) {
 }
 
 // A key typed under the live display, other than Q and the end of the input: E, Y, U, D, L, +, -, 0,
-// and the typed tuning S, R, T (menus/realtime_tuning.h).
+// and the typed tuning S, R, T, M (menus/realtime_tuning.h).
 // `said`: what the typed tuning keys said (the full screen keeps it in the live block).
 void realtime_key(term::Terminal& t, Services& s, int k, std::string& said) {
   switch (k) {
@@ -252,6 +252,10 @@ void realtime_key(term::Terminal& t, Services& s, int k, std::string& said) {
     case 'T':
       said = realtime_type_offset(t, s, k == 't' || k == 'T');
       break;
+    case 'm':
+    case 'M':
+      said = realtime_type_mode(t, s);  // the satellite's mode (issue 59)
+      break;
     default: break;
   }
 }
@@ -274,7 +278,7 @@ RealtimeExit run_realtime_display(term::Terminal& t, Services& s, char marker, b
   t.line("============ Realtime Tracking [" + format_date(start) + "] ============");
   t.line("'E' Toggle rotor control  'Y' RTC zero adjust  'Q' Return to main menu");
   t.line("'+/-/0' Doppler compensation  'U' next uplink channel  'D' dial follow on/off");
-  t.line("'S' type the spot  'R'/'T' type the RX/TX offset  'L' log a QSO");
+  t.line("'S' type the spot  'R'/'T' type the RX/TX offset  'L' log a QSO  'M' mode");
   std::optional<int> shown;
   bool was_in_range = false;       // the shown satellite was AOS on the last update
   LinkNotices notices;             // full screen has the status line instead

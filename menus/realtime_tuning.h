@@ -5,6 +5,8 @@
 //      or Hz (435645000); the uplink follows by the transponder's rule
 //   R  the RX offset in Hz (+120, -300, 0 resets), the correction + / - step by 100 Hz
 //   T  the TX offset in Hz, added to the uplink
+//   M  the satellite's mode (issue 59): its modes listed, one typed (case aside); the radio goes to
+//      its spot (tracker::StationOps::choose_mode, as host mode's MODE and the page's picker)
 // Each goes through tracker::StationOps (tune_spot, tune_offsets), as the page's POST /api/v1/radio
 // and host mode's PB / OR / OT do: the same checks, the same corrections kept per satellite and mode,
 // the radio asked for from the controller of record (a Y/N when an outside client holds it). A
@@ -41,6 +43,7 @@ std::string live_said(term::Terminal& t, std::string text);
 // The S, R and T keys at the live display: one prompt, then the change or the refusal.
 std::string realtime_type_spot(term::Terminal& t, Services& s);
 std::string realtime_type_offset(term::Terminal& t, Services& s, bool tx);
+std::string realtime_type_mode(term::Terminal& t, Services& s);
 // The + / - / 0 keys: the RX offset 100 Hz up, down, or back to 0, through the same operation
 // ("Frequency offset +100 Hz", or the refusal).
 std::string realtime_step_offset(term::Terminal& t, Services& s, int direction);

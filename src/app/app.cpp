@@ -73,9 +73,9 @@ int main(int argc, char** argv) {
     if (command == "status") return run_status(rest);
     if (command == "events") return run_events(rest);
     if (command == "log") return run_log(rest);
-    if (command == "standby" || command == "reserve") return run_station_command(command, rest);
+    if (command == "standby" || command == "reserve" || command == "track") return run_station_command(command, rest);
     if (command == "settings") return run_settings(rest);
-    std::fprintf(stderr, "trakbox: %s: unknown command; expected propagate, schedule, passes, next, elements, host, satrak, attach, status, events, log, settings, standby or reserve (see trakbox --help)\n",
+    std::fprintf(stderr, "trakbox: %s: unknown command; expected propagate, schedule, passes, next, elements, host, satrak, attach, status, events, log, settings, standby, reserve or track (see trakbox --help)\n",
                  command.c_str());
     return kExitUsage;
   }

@@ -35,6 +35,9 @@ std::vector<OptionSpec> client_specs(const std::string& command) {
   };
   if (command == "status") specs.push_back({"json", "", "the whole status document as JSON"});
   if (command == "attach") specs.push_back({"line", "", "plain lines even on a terminal"});
+  if (command == "track")
+    specs.push_back({"mode", "NAME", "in this mode of the satellite (SSB, CW, FT4, FM, APRS ...; docs/radio.md, "
+                                     "\"Modes of a satellite\"): the radio goes to its spot; stored as its default"});
   return specs;
 }
 
@@ -47,6 +50,10 @@ std::string help_text(const std::string& command) {
                                    "outside clients are refused, until standby off. Stored.\n"
                                  : "Reserves the station from START to END (ISO 8601 UTC, e.g. 2026-05-21T12:20:00Z): trakbox's\n"
                                    "tracking yields in that window, as to a SatNOGS observation. Stored.\n") +
+           "\noptions:\n" + describe_options(client_specs(command));
+  if (command == "track")
+    return "usage: trakbox track SAT [--mode NAME] [--socket PATH | --state DIR]\n\n"
+           "The running station tracks SAT alone (menu 1), its radio in the satellite's mode NAME when given.\n"
            "\noptions:\n" + describe_options(client_specs(command));
   if (command == "attach")
     what = "The TrakBox menus of the running station (the service, or a trakbox on another terminal) on this\n"
@@ -359,10 +366,14 @@ int run_station_command(const std::string& command, const std::vector<std::strin
   if (!a) return code;
   if (words.empty()) {
     std::fprintf(stderr, "trakbox %s: %s (see trakbox %s --help)\n", command.c_str(),
-                 command == "standby" ? "expected on or off" : "expected START END [NOTE]", command.c_str());
+                 command == "standby" ? "expected on or off"
+                 : command == "track" ? "expected SAT"
+                                      : "expected START END [NOTE]",
+                 command.c_str());
     return kExitUsage;
   }
   std::string line = command;
+  if (const auto mode = a->options.value("mode")) line += " --mode " + *mode;
   for (const std::string& w : words) line += " " + w;
   bool not_running = false;
   const int fd = connect_station(a->socket, command, not_running);

@@ -391,6 +391,7 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
                      "       trakbox attach|status|events ...   the running station (--help each)\n"
                      "       trakbox settings [set KEY VALUE | reset KEY]   every stored setting (--help)\n"
                      "       trakbox standby on|off, trakbox reserve START END [NOTE], trakbox log ...\n"
+                     "       trakbox track SAT [--mode NAME]   the running station tracks SAT in that mode\n"
                      "       trakbox host, trakbox satrak HOST:PORT CMD   host mode; a Satrak ACU's client\n\n" +
                      describe_options(specs));
   if (o.has("version")) return ConfigOutcome::text(std::string("trakbox ") + kVersion + "\n");

@@ -210,6 +210,8 @@ const std::vector<Interpreter::Command>& Interpreter::commands() {
       {"OR", M::prefix, "ORxxx OTxxx  RX / TX offset in Hz, kept        OR+120  OT-300  (OR0 OT0 reset)", tuned},
       {"OT", M::prefix, "", tuned},
       {"CT", M::prefix, "CTxx.x       uplink CTCSS tone in Hz, 0 none   CT67.0", tuned},
+      {"MODE", M::word, "MODE NAME    the tuned satellite's mode        MODE FT4  (MODE alone lists them)",
+       [](Interpreter& in, std::string_view, std::string_view s) { return in.sat_mode(s.substr(4)); }},
       {"?T", M::exact, "?T           the tuning                        reply TUNE SPOT ... RX ... TX ... TONE ...", tuned},
       {"QTH", M::prefix, "QTHxxx       the station's position            QTH JN58td  or  QTH 48.15,11.58,520", tuned},
       {"?", M::exact, "?            this list",

@@ -109,6 +109,7 @@ class Interpreter {
   // trakbox's tuning commands (host_tuning.cpp): PB passband spot, OR/OT offsets, CT tone, ?T.
   std::optional<Reply> tuning(std::string_view upper_line, std::string_view line);
   Reply station(std::string_view arg);   // QTH
+  Reply sat_mode(std::string_view arg);  // MODE: the tuned satellite's modes, one chosen
 
   tracker::StationLoop& station_;
   // Host mode acts as the operator "host" (tracker/control.h). A move refused because an outside

@@ -70,4 +70,27 @@ Reply Interpreter::station(std::string_view arg) {
   return Reply{{"QTH " + done.note.substr(done.note.find(' ') + 1)}, true, false};
 }
 
+// MODE alone: "MODES RS-44 SSB* CW FT4" (the chosen one starred); MODE NAME chooses one and the
+// radio goes to it: "MODE RS-44 FT4 435611000 145993610" (the mode's downlink and uplink, Hz).
+Reply Interpreter::sat_mode(std::string_view arg) {
+  const std::string name = text::trimmed(arg);
+  const auto tuned = station_.tuned();
+  if (!tuned) return error("MODE: no satellite is tuned: track one first");
+  const store::Satellite& sat = station_.model().db.satellites[static_cast<std::size_t>(*tuned)];
+  if (name.empty()) {
+    std::string line = "MODES " + sat.name();
+    const std::string chosen = store::chosen_mode(sat);
+    for (const auto& m : store::modes_of(sat)) line += " " + m.name + (m.name == chosen ? "*" : "");
+    return Reply{{line}, true, false};
+  }
+  if (auto no = ask_radio("MODE")) return *no;
+  const tracker::OpResult done = ops().choose_mode("", name);
+  if (!done.ok()) return error("MODE: " + *done.refusal);
+  if (done.model_changed) station_.save_settings();  // on disk before the prompt returns
+  const store::Satellite& now = station_.model().db.satellites[static_cast<std::size_t>(*tuned)];
+  return Reply{{"MODE " + now.name() + " " + now.mode + " " + std::to_string(now.radio.downlink_hz) + " " +
+                std::to_string(now.radio.uplink_hz)},
+               true, false};
+}
+
 }  // namespace tb::host

@@ -12,7 +12,8 @@
 namespace tb::app {
 
 bool is_station_command(const std::string& line) {
-  return line.rfind("standby", 0) == 0 || line.rfind("reserve", 0) == 0 || line.rfind("settings", 0) == 0;
+  return line.rfind("standby", 0) == 0 || line.rfind("reserve", 0) == 0 || line.rfind("settings", 0) == 0 ||
+         line.rfind("track ", 0) == 0;
 }
 
 namespace {
@@ -45,6 +46,34 @@ std::string settings_command(StationApp& app, const std::vector<std::string>& w)
   return "ok: " + now;
 }
 
+// `trakbox track SAT [--mode NAME]`, sent as "track [--mode NAME] SAT": single tracking of SAT in
+// that mode (issue 59). The mode is checked before anything changes; then chosen, then tracked, so
+// the radio goes to the mode's spot at once.
+tracker::OpResult track_command(tracker::StationOps& ops, const StationApp& app, const std::vector<std::string>& w) {
+  std::size_t first = 1;
+  std::string mode;
+  if (w.size() >= 4 && w[1] == "--mode") {
+    mode = w[2];
+    first = 3;
+  }
+  std::string sat;
+  for (std::size_t i = first; i < w.size(); ++i) sat += (sat.empty() ? "" : " ") + w[i];
+  if (sat.empty()) return tracker::OpResult::refuse("expected track SAT [--mode NAME]");
+  const auto db = ops.find_satellite(sat);
+  if (!db) return tracker::OpResult::refuse("unknown satellite '" + text::safe_text(sat) + "'");
+  tracker::OpResult chosen;
+  if (!mode.empty()) {
+    const store::Satellite& s = app.model().db.satellites[static_cast<std::size_t>(*db)];
+    chosen = ops.choose_mode(s.name(), mode);
+    if (!chosen.ok()) return chosen;
+  }
+  tracker::OpResult r = ops.track(*db);
+  if (!r.ok()) return r;
+  r.model_changed = r.model_changed || chosen.model_changed;
+  if (!chosen.note.empty()) r.note += (r.note.empty() ? "" : "; ") + chosen.note;
+  return r;
+}
+
 }  // namespace
 
 std::string run_station_command(StationApp& app, const std::string& line) {
@@ -57,6 +86,8 @@ std::string run_station_command(StationApp& app, const std::string& line) {
   tracker::OpResult r;
   if (w.size() == 2 && w[0] == "standby" && (w[1] == "on" || w[1] == "off")) {
     r = ops.standby(w[1] == "on");
+  } else if (w[0] == "track") {
+    r = track_command(ops, app, w);
   } else if (w[0] == "standby") {
     return "refused: expected standby on or standby off";
   } else if (w.size() >= 3 && w[0] == "reserve") {

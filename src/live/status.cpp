@@ -113,7 +113,16 @@ nlohmann::json tuning_json(StationApp& app) {
   const radio::Tuning& now = t.last_tuning();
   const auto band = radio::transponder_of(t.satellite());
   const int tone = t.satellite().ctcss_tenths_hz;
-  return {{"satellite", app.model().db.satellites[static_cast<std::size_t>(*tuned)].name()},
+  const store::Satellite& sat = app.model().db.satellites[static_cast<std::size_t>(*tuned)];
+  nlohmann::json modes = nlohmann::json::array();  // the page's picker: every mode of the satellite
+  for (const auto& m : store::modes_of(sat)) modes.push_back(m.name);
+  const std::string mode = store::chosen_mode(sat);
+  const auto chosen = store::find_mode(sat, mode);
+  const int arm = chosen ? chosen->arm_tone_tenths_hz : 0;  // stored and shown; the operator sends it
+  return {{"satellite", sat.name()},
+          {"mode", mode.empty() ? nlohmann::json(nullptr) : nlohmann::json(mode)},
+          {"modes", modes},
+          {"arm_tone_hz", arm > 0 ? nlohmann::json(arm / 10.0) : nlohmann::json(nullptr)},
           {"downlink_spot_hz", t.satellite().has_downlink() ? nlohmann::json(t.downlink_spot_hz()) : nlohmann::json(nullptr)},
           {"uplink_spot_hz", t.satellite().has_uplink() ? nlohmann::json(t.uplink_spot_hz()) : nlohmann::json(nullptr)},
           {"downlink_doppler_hz", std::lround(now.downlink_doppler_hz)},

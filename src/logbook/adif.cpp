@@ -44,6 +44,7 @@ void write_record(std::string& out, const Qso& q) {
   field(out, "QSO_DATE", date_text(q.time_on));
   field(out, "TIME_ON", time_text(q.time_on));
   field(out, "MODE", q.mode);
+  field(out, "SUBMODE", q.submode);
   field(out, "BAND", q.band);
   if (q.uplink_hz > 0) field(out, "FREQ", mhz_text(q.uplink_hz));
   field(out, "BAND_RX", q.band_rx);
@@ -173,6 +174,7 @@ std::string to_qso(const std::map<std::string, std::string_view>& f, Qso& q) {
   q.sat_name = f.count("APP_TRAKBOX_SAT") ? std::string(get("APP_TRAKBOX_SAT")) : q.lotw_name;
   q.mode = text::upper(get("MODE"));
   if (q.mode == "SAT") return "MODE: the emission (FM, SSB, CW), not SAT";
+  q.submode = text::upper(get("SUBMODE"));
   for (const auto& [name, hz] : {std::pair<const char*, std::int64_t*>{"FREQ", &q.uplink_hz}, {"FREQ_RX", &q.downlink_hz}}) {
     if (get(name).empty()) continue;
     const auto v = parse_mhz_hz(get(name));

@@ -13,7 +13,7 @@ namespace {
 constexpr const char* kColumns =
     "id, version, deleted, call, grid, rst_sent, rst_rcvd, time_on, sat_name, lotw_name, norad, mode, "
     "uplink_hz, downlink_hz, uplink_tuned_hz, downlink_tuned_hz, band, band_rx, my_grid, station_call, "
-    "power_w, note, source";
+    "power_w, note, source, submode";
 
 constexpr const char* kRecordColumns =
     "id INTEGER NOT NULL, version INTEGER NOT NULL, deleted INTEGER NOT NULL DEFAULT 0, "
@@ -22,7 +22,7 @@ constexpr const char* kRecordColumns =
     "mode TEXT NOT NULL, uplink_hz INTEGER NOT NULL, downlink_hz INTEGER NOT NULL, "
     "uplink_tuned_hz INTEGER NOT NULL, downlink_tuned_hz INTEGER NOT NULL, band TEXT NOT NULL, "
     "band_rx TEXT NOT NULL, my_grid TEXT NOT NULL, station_call TEXT NOT NULL, power_w REAL NOT NULL, "
-    "note TEXT NOT NULL, source TEXT NOT NULL";
+    "note TEXT NOT NULL, source TEXT NOT NULL, submode TEXT NOT NULL DEFAULT ''";
 
 // One prepared statement, finalized at the end of its scope.
 class Stmt {
@@ -61,7 +61,8 @@ struct TextColumn {
 constexpr TextColumn kTextColumns[] = {
     {3, &Qso::call},      {4, &Qso::grid},     {5, &Qso::rst_sent}, {6, &Qso::rst_rcvd},
     {8, &Qso::sat_name},  {9, &Qso::lotw_name}, {11, &Qso::mode},    {16, &Qso::band},
-    {17, &Qso::band_rx},  {18, &Qso::my_grid},  {19, &Qso::station_call}, {21, &Qso::note}};
+    {17, &Qso::band_rx},  {18, &Qso::my_grid},  {19, &Qso::station_call}, {21, &Qso::note},
+    {23, &Qso::submode}};
 struct IntColumn {
   int column;
   std::int64_t Qso::*field;
@@ -83,7 +84,7 @@ Qso read_row(const Stmt& s) {
   return q;
 }
 
-// Binds the record's fields from column 2 (version) on as parameters 2..23; parameter 1 is the id.
+// Binds the record's fields from column 2 (version) on as parameters 2..24; parameter 1 is the id.
 void bind_record(Stmt& s, const Qso& q) {
   s.bind(2, std::int64_t{q.version}).bind(3, std::int64_t{q.deleted});
   for (const auto& c : kTextColumns) s.bind(c.column + 1, q.*c.field);
@@ -92,7 +93,7 @@ void bind_record(Stmt& s, const Qso& q) {
 }
 
 const std::string kInsert = std::string("INSERT INTO qso (") + kColumns +
-                            ") VALUES (?1,?2,?3,?4,?5,?6,?7,?8,?9,?10,?11,?12,?13,?14,?15,?16,?17,?18,?19,?20,?21,?22,?23)";
+                            ") VALUES (?1,?2,?3,?4,?5,?6,?7,?8,?9,?10,?11,?12,?13,?14,?15,?16,?17,?18,?19,?20,?21,?22,?23,?24)";
 
 }  // namespace
 
@@ -121,11 +122,20 @@ bool Logbook::migrate(std::string& error) {
         ", PRIMARY KEY (id)); CREATE INDEX qso_time ON qso (time_on); CREATE TABLE qso_version (" +
         kRecordColumns + ", PRIMARY KEY (id, version)); CREATE TABLE upload_queue (qso_id INTEGER PRIMARY KEY, "
         "attempts INTEGER NOT NULL DEFAULT 0, next_try INTEGER NOT NULL DEFAULT 0, last_error TEXT NOT NULL "
-        "DEFAULT ''); PRAGMA user_version = 1; COMMIT;";
+        "DEFAULT ''); PRAGMA user_version = 2; COMMIT;";
     if (!exec(create.c_str(), &error)) {
       exec("ROLLBACK");
       return false;
     }
+    return true;
+  }
+  // Version 1 had no SUBMODE (issue 59: FT4 is MFSK's): its QSOs have none.
+  if (version == 1 &&
+      !exec("BEGIN IMMEDIATE; ALTER TABLE qso ADD COLUMN submode TEXT NOT NULL DEFAULT ''; ALTER TABLE qso_version "
+            "ADD COLUMN submode TEXT NOT NULL DEFAULT ''; PRAGMA user_version = 2; COMMIT;",
+            &error)) {
+    exec("ROLLBACK");
+    return false;
   }
   return true;
 }

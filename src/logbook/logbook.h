@@ -17,7 +17,7 @@ struct sqlite3;
 
 namespace tb::logbook {
 
-inline constexpr int kSchemaVersion = 1;
+inline constexpr int kSchemaVersion = 2;  // 2: submode (issue 59)
 
 struct Added {
   std::int64_t id = 0;   // 0 when refused

@@ -134,6 +134,7 @@ Qso normalized(Qso q) {
     *g = s;
   }
   q.mode = adif_mode(q.mode);
+  q.submode = text::upper(text::trim(q.submode, text::kWhitespace));
   if (q.band.empty()) q.band = band_of(q.uplink_hz);
   if (q.band_rx.empty()) q.band_rx = band_of(q.downlink_hz);
   return q;
@@ -155,8 +156,9 @@ std::optional<std::string> check_qso(const Qso& q) {
     return std::string("time_on: not a time between 1970 and 9999");
   if (q.mode == "SAT") return std::string("mode: the emission (FM, SSB, CW), not SAT");
   if (auto e = check_mode(q.mode)) return e;
+  if (q.submode.size() > 20) return std::string("submode: at most 20 characters");
   for (const auto& [name, value] : {std::pair<const char*, const std::string*>{"mode", &q.mode},
-                                    {"sat_name", &q.sat_name}, {"lotw_name", &q.lotw_name},
+                                    {"submode", &q.submode}, {"sat_name", &q.sat_name}, {"lotw_name", &q.lotw_name},
                                     {"note", &q.note}}) {
     if (!printable_ascii(*value)) return std::string(name) + ": printable ASCII only (ADIF's text fields)";
     if (value->size() > 500) return std::string(name) + ": at most 500 characters";
@@ -169,6 +171,14 @@ std::optional<std::string> check_qso(const Qso& q) {
   for (const auto& [name, b] : {std::pair<const char*, const std::string*>{"band", &q.band}, {"band_rx", &q.band_rx}})
     if (!b->empty() && !band_edges(*b)) return std::string(name) + ": '" + *b + "' is not an ADIF band";
   if (!(q.power_w >= 0 && q.power_w <= 100000)) return std::string("power: 0 to 100000 W");
+  return std::nullopt;
+}
+
+std::optional<std::pair<std::string, std::string>> adif_of_mode_name(std::string_view name) {
+  const std::string u = text::upper(name);
+  if (is_adif_mode(u)) return std::pair{u, std::string()};
+  if (const std::string_view parent = mode_of_submode(u); !parent.empty()) return std::pair{std::string(parent), u};
+  if (u == "APRS") return std::pair{std::string("PKT"), std::string()};
   return std::nullopt;
 }
 

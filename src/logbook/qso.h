@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 
 namespace tb::logbook {
 
@@ -22,6 +23,7 @@ struct Qso {
   std::string lotw_name;        // TQSL's spelling ("RS-44", "ARISS"); "" when not known
   int norad = 0;                // 0 when not known
   std::string mode;             // the emission: FM, SSB, CW, ... (never "SAT")
+  std::string submode;          // ADIF's SUBMODE of it: FT4 (of MFSK), "" for none
   std::int64_t uplink_hz = 0, downlink_hz = 0;              // nominal (the transponder's)
   std::int64_t uplink_tuned_hz = 0, downlink_tuned_hz = 0;  // as tuned (Doppler applied)
   std::string band, band_rx;    // ADIF bands of the uplink and the downlink ("2m", "70cm")
@@ -61,6 +63,10 @@ std::string sat_mode(std::int64_t uplink_hz, std::int64_t downlink_hz);
 // The emission of a radio mode name as ADIF has it: "usb"/"lsb" -> "SSB", "fm" -> "FM",
 // "cw"/"cwr" -> "CW"; other names upper-cased.
 std::string adif_mode(std::string_view radio_mode);
+// A satellite mode's name (store's modes: "FT4", "SSB", "APRS", "Mode-A") as ADIF's MODE and
+// SUBMODE: FT4 -> MFSK / FT4, PSK31 -> PSK / PSK31, FM -> FM / "", APRS -> PKT / ""; nothing for a
+// name that is neither (the radio's link mode says it then).
+std::optional<std::pair<std::string, std::string>> adif_of_mode_name(std::string_view name);
 
 // Days since 1970 of a civil date, and back (Howard Hinnant's algorithms).
 std::int64_t days_from_civil(int y, unsigned m, unsigned d);

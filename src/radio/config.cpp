@@ -80,4 +80,26 @@ bool SatelliteRadio::next_uplink() {
   return true;
 }
 
+std::string mode_name_problem(std::string_view name) {
+  if (name.empty()) return "a mode name is empty";
+  if (name.size() > kMaxModeName) return "a mode name has at most " + std::to_string(kMaxModeName) + " characters";
+  for (const char c : name) {
+    const bool ok = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' ||
+                    c == '+' || c == '/' || c == '.' || c == '_';
+    if (!ok) return "a mode name holds only letters, digits and - + / . _";
+  }
+  return {};
+}
+
+std::string default_mode_name(const SatelliteRadio& r) {
+  switch (r.downlink_mode) {
+    case Mode::usb:
+    case Mode::lsb: return "SSB";
+    case Mode::fm: return "FM";
+    case Mode::cw: return "CW";
+    case Mode::none: break;
+  }
+  return "default";
+}
+
 }  // namespace tb::radio

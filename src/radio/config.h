@@ -73,6 +73,27 @@ struct SatelliteRadio {
   bool operator==(const SatelliteRadio&) const = default;
 };
 
+// A named way of working a satellite (issue 59): RS-44 in "SSB", "CW" and "FT4", the ISS on its "FM"
+// repeater, "APRS" and "SSTV", AO-07 in "Mode-B" and "Mode-A". Each mode is a whole radio entry:
+// its downlink and uplink (or a transponder's passbands with the mode's spot inside them as F1/F2),
+// the modes on each link, NOR/REV (`inverting`), the CTCSS tone; and the tone that arms the
+// repeater before the operating tone (SO-50's 74.4 Hz), stored and shown, sent by the operator.
+// The operator's remembered corrections are kept per satellite and mode name
+// (RadioConfig::corrections, "RS-44 FT4").
+struct SatelliteMode {
+  std::string name;            // 1 to kMaxModeName characters: letters, digits, - + / . _
+  SatelliteRadio radio;
+  int arm_tone_tenths_hz = 0;  // 0: none
+  bool operator==(const SatelliteMode&) const = default;
+};
+inline constexpr std::size_t kMaxModes = 16;
+inline constexpr std::size_t kMaxModeName = 16;
+// Whether text is a mode name as above; "" when it is, else what is wrong with it.
+std::string mode_name_problem(std::string_view name);
+// The name of the one mode a record made before modes existed becomes: "SSB" for a USB or LSB
+// downlink, "FM", "CW", and "default" for a record without a downlink mode.
+std::string default_mode_name(const SatelliteRadio& r);
+
 // Menu 6-7.
 enum class Rig { none, kenwood, yaesu, icom };
 const char* to_string(Rig r);                       // "NONE", "KENWOOD", "YAESU", "ICOM"

@@ -67,7 +67,7 @@ void Tuner::set_config(const RadioConfig& config) {
   resend();
 }
 
-void Tuner::select(const SatelliteRadio& sat, std::string_view name) {
+void Tuner::select(const SatelliteRadio& sat, std::string_view name, std::string_view mode) {
   sat_ = sat;
   rit_hz_ = 0;
   was_aos_.reset();
@@ -80,8 +80,8 @@ void Tuner::select(const SatelliteRadio& sat, std::string_view name) {
   tx_correction_key_.clear();
   xit_hz_ = 0;
   if (name.empty()) return;
-  correction_key_ = std::string(name) + " " + to_string(sat.downlink_mode);
-  tx_correction_key_ = std::string(name) + " " + to_string(sat.uplink_mode);
+  correction_key_ = std::string(name) + " " + (mode.empty() ? std::string(to_string(sat.downlink_mode)) : std::string(mode));
+  tx_correction_key_ = std::string(name) + " " + (mode.empty() ? std::string(to_string(sat.uplink_mode)) : std::string(mode));
   if (const auto it = config_.corrections.find(correction_key_); it != config_.corrections.end()) move_rit(it->second);
   if (const auto it = config_.tx_corrections.find(tx_correction_key_); it != config_.tx_corrections.end())
     xit_hz_ = it->second;

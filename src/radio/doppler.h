@@ -122,8 +122,9 @@ class Tuner {
   const RadioConfig& config() const { return config_; }
 
   // A new satellite: forgets what was sent and the RIT. With its name, the correction remembered for
-  // it and its downlink mode (RadioConfig::corrections) is applied as the RIT at once.
-  void select(const SatelliteRadio& sat, std::string_view name = {});
+  // it and its downlink mode (RadioConfig::corrections) is applied as the RIT at once; with the name
+  // of its mode too (issue 59), both corrections are the mode's ("RS-44 FT4").
+  void select(const SatelliteRadio& sat, std::string_view name = {}, std::string_view mode = {});
   // The key of the correction remembered for the selected satellite ("SO-50 FM"), empty without a name.
   const std::string& correction_key() const { return correction_key_; }
   // Whether the RIT in force came from a remembered correction or was set this pass.

@@ -56,8 +56,9 @@ std::optional<int> parse_tone(std::string_view t) {
 
 // options[k] is field first_field + k of the line.
 template <class Problem>
-void parse_options(const std::vector<std::string_view>& options, int first_field, SatelliteRadio& r,
+void parse_options(const std::vector<std::string_view>& options, int first_field, FreqModeRecord& rec,
                    Problem& problem_at) {
+  SatelliteRadio& r = rec.radio;
   int field = first_field - 1;
   bool bad_band = false;
   auto problem = [&](int, std::string_view found, std::string expected) { problem_at(field, found, std::move(expected)); };
@@ -83,14 +84,35 @@ void parse_options(const std::vector<std::string_view>& options, int first_field
       const auto tone = parse_tone(value);
       if (tone) r.ctcss_tenths_hz = *tone;
       else problem(0, o, "tone=HZ, a CTCSS tone from 60.0 to 300.0 Hz such as tone=67.0");
+    } else if (key == "arm") {
+      const auto tone = parse_tone(value);
+      if (tone) rec.arm_tone_tenths_hz = *tone;
+      else problem(0, o, "arm=HZ, the arming tone from 60.0 to 300.0 Hz such as arm=74.4");
+    } else if (key == "mode") {
+      if (const std::string why = mode_name_problem(value); why.empty()) rec.mode = std::string(value);
+      else problem(0, o, "mode=NAME: " + why);
     } else {
-      problem(0, o, "an option down=LOW-HIGH, up=LOW-HIGH, inv=y|n or tone=HZ");
+      problem(0, o, "an option down=LOW-HIGH, up=LOW-HIGH, inv=y|n, tone=HZ, arm=HZ or mode=NAME");
     }
   }
   const bool any_band = r.downlink_low_hz || r.uplink_low_hz;
   field = first_field;
   if (any_band && !bad_band && !r.has_passbands())
     problem(0, r.downlink_low_hz ? "down=" : "up=", "both down=LOW-HIGH and up=LOW-HIGH for a transponder");
+}
+
+// A satellite once per mode: its name with the mode's, case aside ("" for the line without one).
+// What was expected when the record's name and mode were given on an earlier line; else it is noted.
+std::optional<std::string> given_before(std::map<std::string, int, std::less<>>& seen, const FreqModeRecord& rec) {
+  const std::string key = rec.name + "\n" + lower(rec.mode);
+  const auto it = seen.find(key);
+  if (it == seen.end()) {
+    seen.emplace(key, rec.line);
+    return std::nullopt;
+  }
+  const std::string where = " (it is on line " + std::to_string(it->second) + ")";
+  return rec.mode.empty() ? "a satellite name not already given" + where
+                          : "a mode not already given for " + rec.name + where;
 }
 
 }  // namespace
@@ -219,6 +241,9 @@ std::string format_freqmode_line(const FreqModeRecord& r) {
   if (s.has_passbands() || s.inverting) line += s.inverting ? " inv=y" : " inv=n";
   if (s.ctcss_tenths_hz > 0)
     line += " tone=" + std::to_string(s.ctcss_tenths_hz / 10) + "." + std::to_string(s.ctcss_tenths_hz % 10);
+  if (r.arm_tone_tenths_hz > 0)
+    line += " arm=" + std::to_string(r.arm_tone_tenths_hz / 10) + "." + std::to_string(r.arm_tone_tenths_hz % 10);
+  if (!r.mode.empty()) line += " mode=" + r.mode;
   return line;
 }
 
@@ -274,11 +299,6 @@ FreqModeParse parse_freqmode(std::string_view text) {
     rec.line = line_no;
     rec.name = std::string(fields[0]);
     const std::size_t before = result.problems.size();
-    if (auto it = seen.find(rec.name); it != seen.end())
-      problem(1, fields[0], "a satellite name not already given (it is on line " +
-                                std::to_string(it->second) + ")");
-    else
-      seen.emplace(rec.name, line_no);
 
     if (auto f = parse_frequency_field(fields[1])) {
       rec.radio.downlink_hz = f->rf_hz;
@@ -319,7 +339,8 @@ FreqModeParse parse_freqmode(std::string_view text) {
     auto option_problem = [&](int field, std::string_view found, std::string expected) {
       result.problems.push_back({line_no, field, std::string(found), std::move(expected), true});
     };
-    parse_options(options, static_cast<int>(fields.size()) + 1, rec.radio, option_problem);
+    parse_options(options, static_cast<int>(fields.size()) + 1, rec, option_problem);
+    if (const auto again = given_before(seen, rec)) problem(1, fields[0], *again);
 
     if (result.problems.size() == before) result.records.push_back(std::move(rec));
   }

@@ -26,6 +26,14 @@
 //   SO-50 436.795 145.850 fm fm cat no tone=67.0
 // down=/up= a linear transponder's passbands (MHz, both or neither), inv=y|n whether it inverts,
 // tone= the uplink's CTCSS tone in Hz.
+//
+// A satellite worked in several ways has one line per mode, each naming it (issue 59):
+//   RS-44 435.640 145.965 usb lsb cat no down=435.610-435.670 up=145.935-145.995 inv=y mode=SSB
+//   RS-44 435.611 145.99361 usb usb cat no down=435.610-435.670 up=145.935-145.995 inv=y mode=FT4
+//   SO-50 436.795 145.850 fm fm cat no tone=67.0 arm=74.4 mode=FM
+// mode=NAME (radio::mode_name_problem's rule) the mode's name, arm=HZ the tone that arms the
+// repeater. The first line of a satellite is its default mode. A name given twice with the same
+// mode (or twice without any) is a problem on the later line.
 #pragma once
 #include <optional>
 #include <string>
@@ -40,6 +48,8 @@ struct FreqModeRecord {
   int line = 0;            // 1-based line of the upload it came from (0 when built by hand)
   std::string name;        // exactly as in the kepele data (case-sensitive)
   SatelliteRadio radio;
+  std::string mode;            // mode=NAME; "": the satellite's one mode (radio::default_mode_name)
+  int arm_tone_tenths_hz = 0;  // arm=HZ
   bool operator==(const FreqModeRecord&) const = default;
 };
 
@@ -48,7 +58,7 @@ struct FreqModeProblem {
   int field = 0;           // 1..8, 0 for the line as a whole; an option's place on the line
   std::string found;
   std::string expected;
-  bool option = false;     // one of trakbox's options (down= up= inv= tone=) after the record
+  bool option = false;     // one of trakbox's options (down= up= inv= tone= arm= mode=) after the record
   // "line 3, field 2 (downlink frequency): found "43x.1", expected ..."
   std::string message() const;
 };

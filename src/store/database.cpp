@@ -2,7 +2,50 @@
 
 #include <algorithm>
 
+#include "util/text.h"
+
 namespace tb::store {
+
+std::vector<radio::SatelliteMode> modes_of(const Satellite& s) {
+  std::vector<radio::SatelliteMode> out = s.modes;
+  for (auto& m : out)
+    if (m.name == s.mode) {
+      m.radio = s.radio;
+      return out;
+    }
+  // No chosen mode among them: the record is one of its own (a satellite from before modes).
+  if (s.radio == radio::SatelliteRadio{} && out.empty()) return out;
+  radio::SatelliteMode own{s.mode.empty() ? radio::default_mode_name(s.radio) : s.mode, s.radio, 0};
+  out.insert(out.begin(), std::move(own));
+  return out;
+}
+
+std::string chosen_mode(const Satellite& s) {
+  const auto all = modes_of(s);
+  for (const auto& m : all)
+    if (m.name == s.mode) return m.name;
+  return all.empty() ? std::string() : all.front().name;
+}
+
+std::optional<radio::SatelliteMode> find_mode(const Satellite& s, std::string_view name) {
+  for (auto& m : modes_of(s))
+    if (text::iequals(m.name, name)) return m;
+  return std::nullopt;
+}
+
+void settle_modes(Satellite& s) {
+  s.mode = chosen_mode(s);
+  s.modes = modes_of(s);
+}
+
+bool choose_mode(Satellite& s, std::string_view name) {
+  const auto m = find_mode(s, name);
+  if (!m) return false;
+  settle_modes(s);  // the working record kept in the mode it belongs to
+  s.mode = m->name;
+  s.radio = m->radio;
+  return true;
+}
 
 std::optional<int> Database::find(std::string_view name) const {
   for (std::size_t i = 0; i < satellites.size(); ++i)
@@ -70,7 +113,12 @@ ElementsUpload build_elements_upload(const Database& old, const orbit::ParseResu
       continue;
     }
     // A satellite that was already known keeps its frequencies and modes.
-    if (const auto i = old.find(s.name())) s.radio = old.satellites[static_cast<std::size_t>(*i)].radio;
+    if (const auto i = old.find(s.name())) {
+      const Satellite& was = old.satellites[static_cast<std::size_t>(*i)];
+      s.radio = was.radio;
+      s.modes = was.modes;
+      s.mode = was.mode;
+    }
     up.accepted.push_back(s.name());
     up.database.satellites.push_back(std::move(s));
   }
@@ -82,10 +130,46 @@ ElementsUpload build_elements_upload(const Database& old, const orbit::ParseResu
   return up;
 }
 
+namespace {
+// A record of the freq/mode file as a mode of its satellite; false (and said) when the satellite
+// has that mode already in the file, or too many.
+bool take_mode(std::vector<radio::SatelliteMode>& modes, const radio::FreqModeRecord& r, FreqModeUpload& out) {
+  radio::SatelliteMode m{r.mode.empty() ? radio::default_mode_name(r.radio) : r.mode, r.radio, r.arm_tone_tenths_hz};
+  const auto same = [&](const radio::SatelliteMode& x) { return text::iequals(x.name, m.name); };
+  if (std::any_of(modes.begin(), modes.end(), same)) {
+    out.skipped.push_back("line " + std::to_string(r.line) + ": (" + r.name + ") has mode " + m.name +
+                          " on an earlier line, not taken");
+    return false;
+  }
+  if (modes.size() >= radio::kMaxModes) {
+    out.skipped.push_back("line " + std::to_string(r.line) + ": (" + r.name + ") has " +
+                          std::to_string(radio::kMaxModes) + " modes already, not taken");
+    return false;
+  }
+  modes.push_back(std::move(m));
+  return true;
+}
+
+// The file's modes replace the satellite's; the mode chosen before stays chosen when the file
+// still has it, else the file's first is.
+void set_modes(Satellite& s, std::vector<radio::SatelliteMode> modes) {
+  const std::string was = chosen_mode(s);
+  s.modes = std::move(modes);
+  s.mode = s.modes.front().name;
+  s.radio = s.modes.front().radio;
+  for (const auto& m : s.modes)
+    if (text::iequals(m.name, was)) {
+      s.mode = m.name;
+      s.radio = m.radio;
+    }
+}
+}  // namespace
+
 FreqModeUpload apply_freqmode(Database& db, const std::vector<radio::FreqModeRecord>& records) {
   FreqModeUpload out;
   if (records.empty()) return out;  // the list stays as it was
   std::vector<int> list;
+  std::vector<std::vector<radio::SatelliteMode>> modes(db.satellites.size());  // the file's, by satellite
   for (const auto& r : records) {
     const auto i = db.find(r.name);
     if (!i) {
@@ -93,7 +177,7 @@ FreqModeUpload apply_freqmode(Database& db, const std::vector<radio::FreqModeRec
                             ") in the database, not taken");
       continue;
     }
-    db.satellites[static_cast<std::size_t>(*i)].radio = r.radio;
+    if (!take_mode(modes[static_cast<std::size_t>(*i)], r, out)) continue;
     if (std::find(list.begin(), list.end(), *i) != list.end()) continue;
     if (static_cast<int>(list.size()) >= kMaxSelected) {
       out.skipped.push_back("line " + std::to_string(r.line) + ": (" + r.name +
@@ -103,6 +187,8 @@ FreqModeUpload apply_freqmode(Database& db, const std::vector<radio::FreqModeRec
     list.push_back(*i);
     out.updated.push_back("Satellite (" + r.name + ") updated and selected as # " + std::to_string(list.size()));
   }
+  for (std::size_t i = 0; i < modes.size(); ++i)
+    if (!modes[i].empty()) set_modes(db.satellites[i], std::move(modes[i]));
   if (!list.empty()) {
     db.selected = std::move(list);
     db.marked = 0;

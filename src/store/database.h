@@ -17,11 +17,31 @@ inline constexpr int kMaxSelected = 15;
 inline constexpr int kMinMultiTrack = 2;
 inline constexpr int kMaxMultiTrack = 5;
 
+// A satellite and how it is worked. `radio` is the record of the chosen mode, the one everything
+// that tunes, logs and edits reads and writes (menu 3-1, the freq/mode file, tones, the page);
+// `modes` holds every named mode (issue 59), the chosen one's record as it was when it was last
+// chosen or stored: modes_of() gives them with `radio` in the chosen one's place.
 struct Satellite {
   orbit::Elements elements;
   radio::SatelliteRadio radio;
+  std::vector<radio::SatelliteMode> modes;  // at most radio::kMaxModes, names differ (case aside)
+  std::string mode;                         // the chosen (default) mode's name; "" without modes
   const std::string& name() const { return elements.name; }
 };
+
+// The satellite's modes as stored: `radio` as the chosen one's record. A satellite with a radio
+// record and no modes (a state written before modes, an upload of the 1994 file) has one, named
+// radio::default_mode_name; one without either has none.
+std::vector<radio::SatelliteMode> modes_of(const Satellite& s);
+// The name of the chosen mode as modes_of gives it ("" without modes).
+std::string chosen_mode(const Satellite& s);
+// The mode named `name` (case aside) of modes_of(s), or nothing.
+std::optional<radio::SatelliteMode> find_mode(const Satellite& s, std::string_view name);
+// Chooses the mode named `name` (case aside): the working record is kept in the mode it belongs
+// to, and `radio` becomes the new mode's. False, nothing changed, when there is no such mode.
+bool choose_mode(Satellite& s, std::string_view name);
+// Puts the modes into their stored form: `modes` = modes_of(s), `mode` its chosen one.
+void settle_modes(Satellite& s);
 
 struct Database {
   std::vector<Satellite> satellites;  // database order, at most kMaxDatabase

@@ -12,6 +12,7 @@
 #include "store/settings.h"
 #include "util/host_port.h"
 #include "util/safe_text.h"
+#include "util/text.h"
 
 namespace tb::store {
 using nlohmann::json;
@@ -191,6 +192,48 @@ radio::SatelliteRadio radio_entry_from(const json& j, const std::string& w) {
   return r;
 }
 
+// A satellite: its elements, the chosen mode's record as "radio" (what a trakbox from before modes
+// reads), every mode and the chosen one's name.
+json satellite_json(const Satellite& s) {
+  json modes = json::array();
+  for (const radio::SatelliteMode& m : modes_of(s)) {
+    json mj = {{"name", m.name}, {"radio", radio_entry_json(m.radio)}};
+    if (m.arm_tone_tenths_hz > 0) mj["arm_tone_tenths_hz"] = m.arm_tone_tenths_hz;
+    modes.push_back(std::move(mj));
+  }
+  return {{"elements", elements_json(s.elements)}, {"radio", radio_entry_json(s.radio)}, {"modes", modes},
+          {"mode", chosen_mode(s)}};
+}
+
+// The modes of a satellite (w its path): names valid and different (case aside), at most
+// radio::kMaxModes, the chosen one among them; `radio` becomes the chosen one's record.
+void modes_from(const json& j, const std::string& w, Satellite& s) {
+  const json& ms = field(j, w, "modes");
+  const std::string wm = path(w, "modes");
+  if (!ms.is_array() || ms.size() > radio::kMaxModes)
+    bad(wm, "expected a list of up to " + std::to_string(radio::kMaxModes) + " modes");
+  for (std::size_t k = 0; k < ms.size(); ++k) {
+    const std::string wk = wm + "[" + std::to_string(k) + "]";
+    radio::SatelliteMode m;
+    m.name = text(ms[k], wk, "name", radio::kMaxModeName);
+    if (const std::string why = radio::mode_name_problem(m.name); !why.empty()) bad(path(wk, "name"), why);
+    for (const auto& x : s.modes)
+      if (::tb::text::iequals(x.name, m.name)) bad(path(wk, "name"), "'" + m.name + "' is given twice");
+    m.radio = radio_entry_from(field(ms[k], wk, "radio"), path(wk, "radio"));
+    if (ms[k].contains("arm_tone_tenths_hz"))
+      m.arm_tone_tenths_hz = static_cast<int>(integer(ms[k], wk, "arm_tone_tenths_hz", 0, 3000));
+    s.modes.push_back(std::move(m));
+  }
+  s.mode = text(j, w, "mode", radio::kMaxModeName);
+  for (const auto& m : s.modes)
+    if (m.name == s.mode) {
+      s.radio = m.radio;
+      return;
+    }
+  if (!s.modes.empty() || !s.mode.empty())
+    bad(path(w, "mode"), "'" + s.mode + "' is not one of the satellite's modes");
+}
+
 }  // namespace
 
 Model factory_defaults() { return Model{}; }
@@ -242,8 +285,7 @@ json to_json(const Model& m) {
                        {"park_pulse_width_digit", rc.mic_click.park_pulse_width_digit},
                        {"park_pulse_interval_digit", rc.mic_click.park_pulse_interval_digit}}}});
   json sats = json::array();
-  for (const auto& s : m.db.satellites)
-    sats.push_back({{"elements", elements_json(s.elements)}, {"radio", radio_entry_json(s.radio)}});
+  for (const auto& s : m.db.satellites) sats.push_back(satellite_json(s));
   j["db"] = {{"satellites", sats}, {"selected", m.db.selected}, {"marked", m.db.marked},
              {"multi_count", m.db.multi_count}};
   j["clock_offset_us"] = m.clock_offset.count();
@@ -363,7 +405,7 @@ void radio_from(const json& j, Model& m) {
   }
 }
 
-Database database_from(const json& j) {
+Database database_from(const json& j, std::vector<std::size_t>* migrated) {
   Database db;
   const json& d = field(j, "", "db");
   const json& sats = field(d, "db", "satellites");
@@ -374,6 +416,12 @@ Database database_from(const json& j) {
     Satellite s;
     s.elements = elements_from(field(sats[i], w, "elements"), w + ".elements");
     s.radio = radio_entry_from(field(sats[i], w, "radio"), w + ".radio");
+    if (sats[i].contains("modes")) {
+      modes_from(sats[i], w, s);
+    } else {  // a state from before modes: its one record becomes its one mode
+      settle_modes(s);
+      if (migrated && !s.modes.empty()) migrated->push_back(i);
+    }
     db.satellites.push_back(std::move(s));
   }
   const json& sel = field(d, "db", "selected");
@@ -388,6 +436,22 @@ Database database_from(const json& j) {
   db.multi_count = static_cast<int>(integer(d, "db", "multi_count", kMinMultiTrack, kMaxMultiTrack));
   db.normalise();
   return db;
+}
+
+// A state from before modes kept the operator's corrections per satellite and link mode ("RS-44 USB"
+// for the downlink, "RS-44 LSB" for the uplink); now they are per satellite and mode name
+// ("RS-44 SSB"). Each is copied to its mode's key (the old key stays: nothing is lost).
+void migrate_corrections(Model& m, const std::vector<std::size_t>& migrated) {
+  for (const std::size_t i : migrated) {
+    const Satellite& s = m.db.satellites[i];
+    const std::string now = s.name() + " " + s.mode;
+    if (const auto it = m.radio.corrections.find(s.name() + " " + radio::to_string(s.radio.downlink_mode));
+        it != m.radio.corrections.end())
+      m.radio.corrections.try_emplace(now, it->second);
+    if (const auto it = m.radio.tx_corrections.find(s.name() + " " + radio::to_string(s.radio.uplink_mode));
+        it != m.radio.tx_corrections.end())
+      m.radio.tx_corrections.try_emplace(now, it->second);
+  }
 }
 
 TrackingChoice tracking_from(const json& t) {
@@ -466,7 +530,9 @@ Model model_from_json(const json& j) {
   station_from(j, m);
   rotator_from(j, m);
   radio_from(j, m);
-  m.db = database_from(j);
+  std::vector<std::size_t> migrated;
+  m.db = database_from(j, &migrated);
+  migrate_corrections(m, migrated);
   m.clock_offset = std::chrono::microseconds(integer(j, "", "clock_offset_us", -(100LL * 365 * 86400 * 1000000),
                                                      100LL * 365 * 86400 * 1000000));
   take(m, j, "rotor_control");

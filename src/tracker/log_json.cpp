@@ -58,6 +58,7 @@ json qso_json(const logbook::Qso& q) {
           {"lotw_name", q.lotw_name},
           {"norad", q.norad},
           {"mode", q.mode},
+          {"submode", q.submode},
           {"uplink_hz", q.uplink_hz},
           {"downlink_hz", q.downlink_hz},
           {"uplink_tuned_hz", q.uplink_tuned_hz},

@@ -1,6 +1,7 @@
 #include "tracker/log_ops.h"
 
 #include <chrono>
+#include <tuple>
 
 #include <fmt/format.h>
 
@@ -90,8 +91,13 @@ LogResult LogOps::fill(const LogRequest& r) const {
     q.downlink_tuned_hz = t.last_sent_downlink_hz().value_or(0);
     q.uplink_tuned_hz = t.last_sent_uplink_hz().value_or(0);
   }
+  // The emission: the one given, else the satellite's chosen mode as ADIF names it (FT4: MFSK with
+  // SUBMODE FT4), else the link's radio mode (USB: SSB).
   const radio::Mode m = rec.uplink_mode != radio::Mode::none ? rec.uplink_mode : rec.downlink_mode;
-  q.mode = !r.mode.empty() ? r.mode : m == radio::Mode::none ? std::string() : logbook::adif_mode(radio::to_string(m));
+  const auto named = logbook::adif_of_mode_name(store::chosen_mode(sat));
+  if (!r.mode.empty()) q.mode = r.mode;
+  else if (named) std::tie(q.mode, q.submode) = *named;
+  else q.mode = m == radio::Mode::none ? std::string() : logbook::adif_mode(radio::to_string(m));
   q = logbook::normalized(std::move(q));
   if (auto e = logbook::check_qso(q)) out.refusal = *e;
   out.warning = below_horizon(sat, model.station.observer(), q.time_on);

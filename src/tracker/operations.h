@@ -103,6 +103,12 @@ class StationOps {
   OpResult tune_spot(std::int64_t downlink_hz);
   OpResult tune_offsets(std::optional<std::int64_t> rx_hz, std::optional<std::int64_t> tx_hz);
   OpResult tune_tone(double hz);
+  // A satellite's mode (issue 59: the page's picker, host mode's MODE, `trakbox mode`, the API):
+  // the satellite named ("": the one the radio is tuned for), its mode by name (case aside). The
+  // choice is stored (the satellite's default mode from then on) and, when the radio follows that
+  // satellite, the radio goes to the mode's spot with Doppler, its link modes and tone, and the
+  // operator's corrections of that mode. Refused, naming the modes there are, for a mode it lacks.
+  OpResult choose_mode(std::string_view satellite, std::string_view mode);
   // The station's position (menu 4's; --station, the page, host QTH): latitude -90..90, longitude
   // -180..180, height as the settings table takes them (store/settings.h); stored through the
   // model's owner, the geometry redone, GPS no longer its source.

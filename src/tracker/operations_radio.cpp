@@ -96,6 +96,35 @@ OpResult StationOps::tune_tone(double hz) {
   return r;
 }
 
+OpResult StationOps::choose_mode(std::string_view satellite, std::string_view mode) {
+  std::optional<int> db = satellite.empty() ? station_.tuned() : find_satellite(satellite);
+  if (!db) return OpResult::refuse(satellite.empty() ? std::string("no satellite is tuned: name one")
+                                                     : fmt::format("unknown satellite '{}'", satellite));
+  const auto i = static_cast<std::size_t>(*db);
+  const store::Satellite& sat = model_.db.satellites[i];
+  const auto found = store::find_mode(sat, mode);
+  if (!found) {
+    std::string names;
+    for (const auto& m : store::modes_of(sat)) names += (names.empty() ? "" : ", ") + m.name;
+    return OpResult::refuse(names.empty() ? fmt::format("{} has no modes: its freq/mode record is empty", sat.name())
+                                          : fmt::format("{} has no mode '{}': its modes are {}", sat.name(), mode, names));
+  }
+  const bool tuned = station_.tuned() == db;
+  if (tuned)
+    if (auto no = ask(Resource::radio, true)) return *no;  // the radio is retuned: the operator's rule (control.h)
+  const std::string name = sat.name();  // (a copy: the edit replaces the record)
+  const store::EditResult done = station_.owner().edit(
+      store::bit(store::Area::radio_entries), std::string(kModeEdit), origin(),
+      [&](store::Model& m) { store::choose_mode(m.db.satellites[i], found->name); });
+  if (!done.ok()) return OpResult::refuse(*done.refusal);
+  OpResult r;
+  r.model_changed = done.changed;
+  if (tuned) station_.antenna_changed();  // a tick now: the radio goes to the mode at once
+  const radio::SatelliteRadio& rec = found->radio;
+  r.note = fmt::format("{} {}: {} Hz down, {} Hz up", name, found->name, rec.downlink_hz, rec.uplink_hz);
+  return r;
+}
+
 }  // namespace tb::tracker
 
 namespace tb::tracker {

@@ -160,8 +160,9 @@ void StationLoop::find_remote_in_database() {
 
 void StationLoop::follow_radio(int db_index, const orbit::Observation& obs) {
   if (!tuned_ || *tuned_ != db_index) {
-    const radio::SatelliteRadio& sat = model_.db.satellites[static_cast<std::size_t>(db_index)].radio;
-    tuner_.select(sat, model_.db.satellites[static_cast<std::size_t>(db_index)].name());
+    const store::Satellite& chosen = model_.db.satellites[static_cast<std::size_t>(db_index)];
+    const radio::SatelliteRadio& sat = chosen.radio;
+    tuner_.select(sat, chosen.name(), store::chosen_mode(chosen));
     tuned_ = db_index;
     if (sat.ctcss_tenths_hz > 0 || tone_sent_) radio_->set_ctcss_tone(sat.ctcss_tenths_hz);
     tone_sent_ = sat.ctcss_tenths_hz > 0;

@@ -28,6 +28,8 @@ inline constexpr std::string_view kCorrectionsEdit = "radio corrections";
 inline constexpr std::string_view kDialFollowEdit = "dial follow";
 // The tone the station has just sent (StationOps::tune_tone): stored, not sent again.
 inline constexpr std::string_view kToneEdit = "tone";
+// A satellite's mode chosen (StationOps::choose_mode): its record replaced, the radio tuned afresh.
+inline constexpr std::string_view kModeEdit = "satellite mode";
 
 class ElementsRefresh;
 struct Logging;

@@ -391,6 +391,13 @@ Response Api::satellites() {
            {"elements_stale", age.stale()},
            {"downlink_hz", s.radio.downlink_hz},
            {"uplink_hz", s.radio.uplink_hz}};
+    // Its modes (issue 59): each name with its downlink and uplink, and the chosen one's name.
+    json modes = json::array();
+    for (const auto& mo : store::modes_of(s))
+      modes.push_back({{"name", mo.name}, {"downlink_hz", mo.radio.downlink_hz}, {"uplink_hz", mo.radio.uplink_hz}});
+    const std::string chosen = store::chosen_mode(s);
+    e["modes"] = std::move(modes);
+    e["mode"] = chosen.empty() ? json(nullptr) : json(chosen);
     list.push_back(std::move(e));
   }
   return ok(json{{"satellites", std::move(list)}});

@@ -35,11 +35,18 @@ std::optional<long long> whole_hz(const json& v) {
 std::optional<std::string> radio_request(tracker::StationOps& ops, const json& b, tracker::OpResult& done) {
   const char* expected =
       "radio: expected {\"doppler\":true|false}, {\"spot_hz\":HZ}, {\"rx_offset_hz\":HZ,\"tx_offset_hz\":HZ} or "
-      "{\"tone_hz\":HZ}";
+      "{\"tone_hz\":HZ} or {\"mode\":\"FT4\"[,\"satellite\":\"RS-44\"]}";
   const bool offsets = b.contains("rx_offset_hz") || b.contains("tx_offset_hz");
-  const int groups = b.contains("doppler") + b.contains("spot_hz") + offsets + b.contains("tone_hz");
-  if (groups != 1 || b.size() > (offsets ? 2u : 1u)) return expected;
-  if (b.contains("doppler")) {
+  const bool mode = b.contains("mode");
+  const int groups = b.contains("doppler") + b.contains("spot_hz") + offsets + b.contains("tone_hz") + mode;
+  if (groups != 1 || b.size() > (offsets || mode ? 2u : 1u) || (mode && b.size() == 2 && !b.contains("satellite")))
+    return expected;
+  if (mode) {
+    if (!b["mode"].is_string()) return "radio: \"mode\" must be the name of one of the satellite's modes, not " + shown(b["mode"]);
+    const json sat = b.value("satellite", json(""));
+    if (!sat.is_string()) return "radio: \"satellite\" must be a satellite's name, not " + shown(sat);
+    done = ops.choose_mode(sat.get<std::string>(), b["mode"].get<std::string>());
+  } else if (b.contains("doppler")) {
     if (!b["doppler"].is_boolean()) return "radio: \"doppler\" must be true or false, not " + shown(b["doppler"]);
     done = ops.doppler(b["doppler"].get<bool>());
   } else if (b.contains("spot_hz")) {

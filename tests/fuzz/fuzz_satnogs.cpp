@@ -25,7 +25,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       if (!replace && (was.radio.has_downlink() || was.radio.has_uplink()))
         TB_FUZZ_CHECK(now.radio == was.radio, "the operator's record of " + now.name() + " changed");
       if (now.radio == was.radio) continue;
-      const radio::FreqModeRecord rec{0, now.name(), now.radio};
+      const radio::FreqModeRecord rec{0, now.name(), now.radio, {}, 0};
       const auto back = radio::parse_freqmode(radio::write_freqmode({rec}));
       std::string why = radio::write_freqmode({rec});
       for (const auto& p : back.problems) why += p.message() + "\n";

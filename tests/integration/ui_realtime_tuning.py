@@ -51,7 +51,7 @@ def main():
         check(number, f"RS-44 in the tracking list:\n{s}")
         keys(number.group(1), "Enter")
         s = wait_for(r"\[Satellite:\*RS-44\]")
-        check("'S' type the spot  'R'/'T' type the RX/TX offset" in s, f"the keys are listed:\n{s}")
+        check("'S' type the spot  'R'/'T' type the RX/TX offset  'L' log a QSO  'M' mode" in s, f"the keys are listed:\n{s}")
         d0, u0, t0 = settled(state, "RS-44 tuned", lambda t: t.get("satellite") == "RS-44")
         check(t0["downlink_spot_hz"] == 435640000, f"the record's spot: {t0}")
 
@@ -102,7 +102,7 @@ def main():
         wait_for(r"EXITED 0", 15)
         with open(os.path.join(state, "trakbox-state.json")) as f:
             kept = json.load(f)["data"]["radio"]["tx_corrections"]
-        check(kept == {"RS-44 LSB": -300}, f"the TX offset kept in the state for RS-44's uplink mode: {kept}")
+        check(kept == {"RS-44 SSB": -300}, f"the TX offset kept in the state for RS-44's mode SSB: {kept}")
     finally:
         tmux("kill-session", "-t", SESSION)
 

@@ -265,7 +265,7 @@ def main():
         phone(w, url, False, shots)
         phone(w, url, True, shots)
         desktop_night_and_stop(w, url)
-        # The kept correction itself, after the restart: RS-44 USB +100 Hz in the state.
+        # The kept correction itself, after the restart: RS-44 SSB +100 Hz in the state.
         status, r = w.post("/api/v1/track", {"satellite": "RS-44"})
         t = poll("RS-44 tuned after the restart", lambda: (lambda t: t if t.get("satellite") == "RS-44" else None)(
             tuning(w)), 10)

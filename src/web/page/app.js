@@ -260,6 +260,7 @@ function drawTuning(t) {
   $("tuning").hidden = !t;
   if (!t) return;
   setText("tune-sat", t.satellite);
+  drawModes(t);
   setText("tune-spot-down", mhz6(t.downlink_spot_hz));
   setText("tune-spot-up", mhz6(t.uplink_spot_hz));
   setText("tune-dop-down", t.downlink_spot_hz ? signedHz(t.downlink_doppler_hz) : "-");
@@ -268,7 +269,8 @@ function drawTuning(t) {
   setText("tune-tx", signedHz(t.tx_offset_hz));
   setText("tune-dial-down", mhz6(t.downlink_dial_hz));
   setText("tune-dial-up", mhz6(t.uplink_dial_hz));
-  setText("tune-tone", typeof t.tone_hz === "number" ? t.tone_hz.toFixed(1) + " Hz" : "none");
+  setText("tune-tone", (typeof t.tone_hz === "number" ? t.tone_hz.toFixed(1) + " Hz" : "none") +
+          (typeof t.arm_tone_hz === "number" ? " (arm with " + t.arm_tone_hz.toFixed(1) + " Hz first)" : ""));
   const pb = t.passband;
   $("passband").hidden = !pb;
   if (!pb) return;
@@ -277,6 +279,25 @@ function drawTuning(t) {
   if (document.activeElement !== sl) sl.value = t.downlink_spot_hz;
   setText("pb-range", "down " + mhz6(pb.downlink[0]) + "-" + mhz6(pb.downlink[1]) + ", up " + mhz6(pb.uplink[0]) + "-" +
           mhz6(pb.uplink[1]) + (pb.inverting ? " (inverting)" : ""));
+}
+// The satellite's modes beside its name, the chosen one pressed: one tap chooses another (POST
+// /api/v1/radio {"mode"}); the radio goes to its spot with Doppler, tone and link modes.
+function drawModes(t) {
+  const box = $("tune-modes");
+  const modes = Array.isArray(t.modes) ? t.modes : [];
+  const key = modes.join("\n") + "|" + t.mode;
+  if (box.dataset.key === key) return;
+  box.dataset.key = key;
+  box.replaceChildren();
+  if (modes.length < 2) return;
+  for (const m of modes) {
+    const b = document.createElement("button");
+    b.type = "button";
+    b.textContent = m;
+    b.setAttribute("aria-pressed", m === t.mode ? "true" : "false");
+    b.addEventListener("click", () => post("/api/v1/radio", { mode: m }));
+    box.appendChild(b);
+  }
 }
 function tuneStep() { return Number($("tune-step").value) || 1000; }
 function moveSpot(dir) {

@@ -42,7 +42,7 @@ TEST_CASE("Host mode greets as the manual, with MU for the OCR's ML") {
   CHECK(g[0] == "TrakBox host mode.");
   CHECK(g[1] == "Command:MUxxx,MDxxx,FUxxx,FDxxx,AZxxx_ELxx,Sxxx,Q,?A,?");
   // trakbox's own commands, from the command table (issue 60).
-  CHECK(g[2] == "Also:RF,?R,LOG,?C,STANDBY,PB,OR,OT,CT,?T,QTH (? explains each)");
+  CHECK(g[2] == "Also:RF,?R,LOG,?C,STANDBY,PB,OR,OT,CT,MODE,?T,QTH (? explains each)");
   CHECK(host::kPrompt == "TrakBox>>");
 }
 

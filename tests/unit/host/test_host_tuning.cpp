@@ -19,7 +19,7 @@ TEST_CASE("host PB / OR / OT / CT / ?T on RS-44 a minute before its culmination"
   CHECK(host.execute("PB435645000").ok);
   CHECK(host.execute("OT-250").ok);
   CHECK(host.execute("?T").lines[0] == "TUNE SPOT 435645000 145960000 RX +0 TX -250 TONE 0.0");
-  CHECK(st.model.radio.tx_corrections.at("RS-44 LSB") == -250);
+  CHECK(st.model.radio.tx_corrections.at("RS-44 SSB") == -250);
   CHECK(host.execute("PB435700000").lines[0] ==
         "ERROR PB: spot 435700000 Hz is outside RS-44's downlink passband 435610000-435670000 Hz");
   CHECK(host.execute("PB435.645").lines[0] == "ERROR PB: '435.645' is not a whole number of Hz, e.g. PB435640000");
@@ -28,7 +28,7 @@ TEST_CASE("host PB / OR / OT / CT / ?T on RS-44 a minute before its culmination"
   CHECK(host.execute("?T").lines[0] == "TUNE SPOT 435645000 145960000 RX +0 TX -250 TONE 67.0");
   CHECK(host.execute("CTabc").lines[0] == "ERROR CT: 'abc' is not a tone: expected Hz such as CT67.0, or CT0 for none");
   CHECK(host.execute("OT0").ok);
-  CHECK_FALSE(st.model.radio.tx_corrections.contains("RS-44 LSB"));
+  CHECK_FALSE(st.model.radio.tx_corrections.contains("RS-44 SSB"));
 }
 
 TEST_CASE("host QTH: a locator's centre or LAT,LON[,HEIGHT_M], stored as menu 4 would") {

@@ -1,6 +1,7 @@
 #include <doctest/doctest.h>
 
 #include "logbook/adif.h"
+#include "logbook/qso.h"
 #include "logbook/lotw_names.h"
 #include "support/qso_samples.h"
 
@@ -42,6 +43,32 @@ TEST_CASE("Export then import is the identity on every field") {
   a.id = b.id = 0;  // ids are the logbook's
   CHECK(r.qsos[0] == a);
   CHECK(r.qsos[1] == b);
+}
+
+TEST_CASE("An FT4 QSO: MODE MFSK with SUBMODE FT4, read back as it was (issue 59)") {
+  Qso q = rs44();
+  q.mode = "MFSK";
+  q.submode = "FT4";
+  const std::string rec = adif_record(q);
+  CHECK(rec.find("<MODE:4>MFSK <SUBMODE:3>FT4 <BAND:2>2m") != std::string::npos);
+  const AdifRead r = read_adif(rec);
+  REQUIRE_MESSAGE(r.ok(), r.error);
+  q.id = 0;
+  CHECK(r.qsos.at(0) == q);
+  CHECK(adif_record(rs44()).find("SUBMODE") == std::string::npos);  // none when there is none
+}
+
+TEST_CASE("Satellite mode names as ADIF's MODE and SUBMODE") {
+  using P = std::pair<std::string, std::string>;
+  CHECK(adif_of_mode_name("FT4") == P{"MFSK", "FT4"});
+  CHECK(adif_of_mode_name("ft4") == P{"MFSK", "FT4"});
+  CHECK(adif_of_mode_name("PSK31") == P{"PSK", "PSK31"});
+  CHECK(adif_of_mode_name("SSB") == P{"SSB", ""});
+  CHECK(adif_of_mode_name("FM") == P{"FM", ""});
+  CHECK(adif_of_mode_name("SSTV") == P{"SSTV", ""});
+  CHECK(adif_of_mode_name("APRS") == P{"PKT", ""});
+  CHECK_FALSE(adif_of_mode_name("Mode-A"));
+  CHECK_FALSE(adif_of_mode_name("default"));
 }
 
 TEST_CASE("A satellite without a LoTW name: a warning and no SAT_NAME, never a guessed one") {

@@ -32,7 +32,7 @@ Qso unsaved_rs44() {
 }
 }  // namespace
 
-TEST_CASE("A QSO is stored with every field, survives reopening, and the schema is version 1") {
+TEST_CASE("A QSO is stored with every field, survives reopening, and the schema is version 2") {
   TempBook t;
   std::string err;
   {
@@ -148,7 +148,67 @@ TEST_CASE("A logbook of a newer schema is refused, not changed") {
   CHECK(sqlite3_exec(db, "PRAGMA user_version = 99", nullptr, nullptr, nullptr) == SQLITE_OK);
   sqlite3_close(db);
   CHECK_FALSE(Logbook::open(t.path(), err));
-  CHECK(err == t.path() + ": its schema version 99 is newer than this trakbox's (1)");
+  CHECK(err == t.path() + ": its schema version 99 is newer than this trakbox's (2)");
+}
+
+// Issue 59: version 2 adds SUBMODE (FT4 is MFSK's). A version-1 logbook, made here with version 1's
+// tables, gains the column when opened: its QSOs keep every field with no submode, and new ones
+// (and their edits' kept versions) carry theirs.
+TEST_CASE("A version-1 logbook gains the submode column; its QSOs keep their fields") {
+  TempBook t;
+  const char* v1 =
+      "CREATE TABLE qso (id INTEGER NOT NULL, version INTEGER NOT NULL, deleted INTEGER NOT NULL DEFAULT 0, "
+      "call TEXT NOT NULL, grid TEXT NOT NULL, rst_sent TEXT NOT NULL, rst_rcvd TEXT NOT NULL, "
+      "time_on INTEGER NOT NULL, sat_name TEXT NOT NULL, lotw_name TEXT NOT NULL, norad INTEGER NOT NULL, "
+      "mode TEXT NOT NULL, uplink_hz INTEGER NOT NULL, downlink_hz INTEGER NOT NULL, "
+      "uplink_tuned_hz INTEGER NOT NULL, downlink_tuned_hz INTEGER NOT NULL, band TEXT NOT NULL, "
+      "band_rx TEXT NOT NULL, my_grid TEXT NOT NULL, station_call TEXT NOT NULL, power_w REAL NOT NULL, "
+      "note TEXT NOT NULL, source TEXT NOT NULL, PRIMARY KEY (id)); CREATE INDEX qso_time ON qso (time_on); "
+      "CREATE TABLE qso_version AS SELECT * FROM qso WHERE 0; "
+      "CREATE TABLE upload_queue (qso_id INTEGER PRIMARY KEY, attempts INTEGER NOT NULL DEFAULT 0, "
+      "next_try INTEGER NOT NULL DEFAULT 0, last_error TEXT NOT NULL DEFAULT ''); "
+      "INSERT INTO qso VALUES (1, 1, 0, 'W1AW', 'FN31', '59', '57', 1796161460, 'RS-44', 'RS-44', 44909, 'SSB', "
+      "145965000, 435640000, 145962310, 435648070, '2m', '70cm', '', 'WA7GXD', 2.5, 'first', 'web'); "
+      "PRAGMA user_version = 1;";
+  sqlite3* db = nullptr;
+  REQUIRE(sqlite3_open(t.path().c_str(), &db) == SQLITE_OK);
+  REQUIRE(sqlite3_exec(db, v1, nullptr, nullptr, nullptr) == SQLITE_OK);
+  sqlite3_close(db);
+  std::string err;
+  {
+    auto book = Logbook::open(t.path(), err);
+    REQUIRE_MESSAGE(book, err);
+    const auto old = book->get(1);
+    REQUIRE(old);
+    CHECK(old->call == "W1AW");
+    CHECK(old->mode == "SSB");
+    CHECK(old->submode.empty());
+    CHECK(old->downlink_tuned_hz == 435'648'070);
+    CHECK(old->power_w == 2.5);
+    Qso ft4 = unsaved_rs44();
+    ft4.mode = "MFSK";
+    ft4.submode = "FT4";
+    const Added a = book->add(ft4);
+    REQUIRE_MESSAGE(a.ok(), a.error);
+    ft4.note = "edited";
+    REQUIRE(book->edit(a.id, ft4).ok());
+  }
+  auto book = Logbook::open(t.path(), err);
+  REQUIRE(book);
+  const auto q = book->get(2);
+  REQUIRE(q);
+  CHECK(q->mode == "MFSK");
+  CHECK(q->submode == "FT4");
+  CHECK(q->note == "edited");
+  CHECK(book->versions(2).front().submode == "FT4");
+  sqlite3* check = nullptr;
+  REQUIRE(sqlite3_open(t.path().c_str(), &check) == SQLITE_OK);
+  sqlite3_stmt* v = nullptr;
+  REQUIRE(sqlite3_prepare_v2(check, "PRAGMA user_version", -1, &v, nullptr) == SQLITE_OK);
+  REQUIRE(sqlite3_step(v) == SQLITE_ROW);
+  CHECK(sqlite3_column_int(v, 0) == 2);
+  sqlite3_finalize(v);
+  sqlite3_close(check);
 }
 
 // Issue 56 item 12: logbook.sqlite was opened through a symbolic link, the QSO (and -wal, -shm)

@@ -302,7 +302,7 @@ TEST_CASE("Menu 3-3: the manual's transcript — the shipped NASA file and freq/
       "NASA>#1 AO-07\nNASA>#2 AO-27\nNASA>#3 FO-29\nNASA>#4 ISS\n",
       "NASA>#20 TEVEL2-1\n20 satellite(s) accepted, 0 record(s) skipped.\n",
       "Upload freq/mode data file. (EOF:ctrl+Z)\nAO-07 145.950 432.150 usb lsb cat no "
-      "down=145.925-145.975 up=432.125-432.175 inv=y\n",
+      "down=145.925-145.975 up=432.125-432.175 inv=y mode=Mode-B\n",
       "Satellite (AO-07) updated and selected as # 1\n",
       "Satellite (QO-100) updated and selected as # 10\n",
       "Satellite (IO-117) updated and selected as # 14\n",

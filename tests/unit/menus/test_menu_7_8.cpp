@@ -20,7 +20,7 @@ TEST_CASE("Menu 7 greets as the manual and prompts TrakBox>> after every command
   testing::MenuFixture f("?\rQ\r");
   menus::menu_7_host_mode(f.term, *f.services);
   const std::string& out = f.term.output();
-  CHECK(out.rfind("TrakBox host mode.\nCommand:MUxxx,MDxxx,FUxxx,FDxxx,AZxxx_ELxx,Sxxx,Q,?A,?\nAlso:RF,?R,LOG,?C,STANDBY,PB,OR,OT,CT,?T,QTH (? explains each)\nTrakBox>>?\n", 0) == 0);
+  CHECK(out.rfind("TrakBox host mode.\nCommand:MUxxx,MDxxx,FUxxx,FDxxx,AZxxx_ELxx,Sxxx,Q,?A,?\nAlso:RF,?R,LOG,?C,STANDBY,PB,OR,OT,CT,MODE,?T,QTH (? explains each)\nTrakBox>>?\n", 0) == 0);
   CHECK(has(out, "AZxxx ELxxx  point the antenna, degrees        AZ220 EL45\n"));
   CHECK(has(out, "Q            quit to the main menu\nTrakBox>>Q\n"));
   CHECK(out.substr(out.size() - 2) == "Q\n");  // nothing after Q: back to the main menu

@@ -200,19 +200,19 @@ TEST_CASE("Line mode: the + / - correction is remembered for the satellite and m
   f.term.timeouts_before_key = 1;
   menus::menu_1_realtime_tracking(f.term, *f.services);
   // AO-07 is followed (USB downlink): the correction is kept in the stored radio settings.
-  CHECK(f.model.radio.corrections == std::map<std::string, radio::Hz>{{"AO-07 USB", 200}});
+  CHECK(f.model.radio.corrections == std::map<std::string, radio::Hz>{{"AO-07 Mode-B", 200}});
   CHECK(f.saves >= 2);
   CHECK(contains(radio_lines(f.term.output()),
-                 "Spot D 145.950200 U 432.149800 | dial follow | correction +200 Hz kept for AO-07 USB"));
+                 "Spot D 145.950200 U 432.149800 | dial follow | correction +200 Hz kept for AO-07 Mode-B"));
   // The next time AO-07 is selected the correction is there from the start.
   f.station->reconfigure();
   testing::MenuFixture g("\r0Q");
   g.term.timeouts_before_key = 1;
-  g.model.radio.corrections = {{"AO-07 USB", 200}};
+  g.model.radio.corrections = {{"AO-07 Mode-B", 200}};
   g.station->reconfigure();
   menus::menu_1_realtime_tracking(g.term, *g.services);
   CHECK(contains(radio_lines(g.term.output()),
-                 "Spot D 145.950200 U 432.149800 | dial follow | correction +200 Hz kept for AO-07 USB"));
+                 "Spot D 145.950200 U 432.149800 | dial follow | correction +200 Hz kept for AO-07 Mode-B"));
   CHECK(g.term.output().find("Frequency offset 0 Hz\n") != std::string::npos);
   CHECK(g.model.radio.corrections.empty());   // 0 forgot it
 }

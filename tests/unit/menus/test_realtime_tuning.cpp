@@ -85,7 +85,7 @@ TEST_CASE("parse_offset_hz: a signed whole number of Hz") {
 TEST_CASE("Menu 1: S typed moves RS-44's passband +5 kHz; the dials follow by the transponder's rule") {
   Rs44 f("S435.645\r");
   f.run_menu();
-  CHECK(f.said("'S' type the spot  'R'/'T' type the RX/TX offset  'L' log a QSO"));
+  CHECK(f.said("'S' type the spot  'R'/'T' type the RX/TX offset  'L' log a QSO  'M' mode"));
   CHECK(f.said("Spot (downlink, MHz 435.645 or Hz 435645000) > 435.645"));
   CHECK(f.said("spot 435645000 Hz down, 145960000 Hz up"));
   CHECK(f.station->tuner().downlink_spot_hz() == 435'645'000);
@@ -107,9 +107,9 @@ TEST_CASE("Menu 1: T and R typed set the TX and RX offsets, kept for RS-44 and i
   CHECK(f.station->tuner().rit_hz() == 120);
   CHECK(f.model.radio.tx_corrections.size() == 1);
   CHECK(f.model.radio.tx_corrections.begin()->second == -300);
-  CHECK(f.model.radio.corrections == std::map<std::string, radio::Hz>{{"RS-44 USB", 120}});
+  CHECK(f.model.radio.corrections == std::map<std::string, radio::Hz>{{"RS-44 SSB", 120}});
   CHECK(f.saves >= 3);   // each kept at once
-  CHECK(f.term.output().find("RX offset +120 Hz, TX offset -300 Hz (RS-44 USB)") != std::string::npos);
+  CHECK(f.term.output().find("RX offset +120 Hz, TX offset -300 Hz (RS-44 SSB)") != std::string::npos);
 
   Rs44 g("T0\r");
   g.model.radio.tx_corrections = f.model.radio.tx_corrections;
@@ -130,6 +130,20 @@ TEST_CASE("Menu 1: a typed value out of range or not a number is refused, naming
   CHECK(f.station->tuner().downlink_spot_hz() == 435'640'000);
   CHECK(f.station->tuner().xit_hz() == 0);
   CHECK(f.model.radio.tx_corrections.empty());
+}
+
+TEST_CASE("Menu 1: M lists the satellite's modes and chooses one (issue 59); a mode it lacks is refused") {
+  Rs44 f("Mxyz\rMft4\rM\r");
+  f.run_menu();
+  // The shipped RS-44: SSB (its default) and FT4 (data/freqmode.txt).
+  CHECK(f.said("Mode (SSB FT4) > xyz"));
+  CHECK(f.said("RS-44 has no mode 'xyz': its modes are SSB, FT4"));
+  CHECK(f.said("RS-44 FT4: 435611000 Hz down, 145993610 Hz up"));
+  CHECK(f.said("Mode unchanged"));
+  const auto& rs = f.model.db.satellites[static_cast<std::size_t>(*f.model.db.find("RS-44"))];
+  CHECK(rs.mode == "FT4");
+  CHECK(rs.radio.downlink_hz == 435'611'000);
+  CHECK(f.saves >= 1);
 }
 
 TEST_CASE("Menu 1: FM has no passband to move: S is refused with the reason") {

@@ -332,7 +332,7 @@ TEST_CASE_FIXTURE(ServerCase, "host server: the banner and prompt, menu 7's comm
   REQUIRE(c.ok());
   REQUIRE(c.read_until(ends_with_prompts(1)));
   CHECK(c.received() ==
-        "TrakBox host mode.\r\nCommand:MUxxx,MDxxx,FUxxx,FDxxx,AZxxx_ELxx,Sxxx,Q,?A,?\r\nAlso:RF,?R,LOG,?C,STANDBY,PB,OR,OT,CT,?T,QTH (? explains each)\r\nTrakBox>>");
+        "TrakBox host mode.\r\nCommand:MUxxx,MDxxx,FUxxx,FDxxx,AZxxx_ELxx,Sxxx,Q,?A,?\r\nAlso:RF,?R,LOG,?C,STANDBY,PB,OR,OT,CT,MODE,?T,QTH (? explains each)\r\nTrakBox>>");
 
   // A terminal program sends CR, a script LF, telnet CR LF: one command each, one prompt each.
   CHECK(c.send_all("AZ120 EL30\rFD43580000\nMDUSB\r\n"));

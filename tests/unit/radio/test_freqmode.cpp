@@ -203,7 +203,7 @@ TEST_CASE("Writer: formats MHz exactly and reads back to the same records") {
   CHECK(written == kManualSample);   // the sample is already in canonical form
   auto again = parse_freqmode(written);
   CHECK(again.records == p.records);
-  FreqModeRecord r{0, "X-1", {}};
+  FreqModeRecord r{0, "X-1", {}, {}, 0};
   r.radio.downlink_hz = 10'368'123'456;
   r.radio.downlink_offset_hz = -10'224'000'000;
   r.radio.uplink_mode = Mode::fm;

@@ -24,9 +24,9 @@ orbit::Elements set(int number, const std::string& name, double day, double raan
 
 Database three() {
   Database db;
-  db.satellites.push_back(Satellite{set(25544, "ISS", 141.0), {}});
-  db.satellites.push_back(Satellite{set(7530, "AO-07", 141.0), {}});
-  db.satellites.push_back(Satellite{set(800123456, "NEWSAT", 141.0), {}});
+  db.satellites.push_back(Satellite{set(25544, "ISS", 141.0), {}, {}, {}});
+  db.satellites.push_back(Satellite{set(7530, "AO-07", 141.0), {}, {}, {}});
+  db.satellites.push_back(Satellite{set(800123456, "NEWSAT", 141.0), {}, {}, {}});
   db.selected = {0, 2};
   db.marked = 1;
   return db;

@@ -260,10 +260,13 @@ TEST_CASE("FREQ.DAT's alternative uplinks and ir/kr flag live in the database an
   CHECK(back.db.satellites.size() == m.db.satellites.size());
   for (std::size_t i = 0; i < m.db.satellites.size(); ++i) CHECK(back.db.satellites[i].radio == m.db.satellites[i].radio);
 
-  // Written before these fields: the entries load with no alternatives and no reversal.
+  // Written before these fields (and so before the satellites' modes, issue 59): the entries load
+  // with no alternatives and no reversal.
   for (auto& s : j["db"]["satellites"]) {
     s["radio"].erase("alternate_uplinks_hz");
     s["radio"].erase("reverse");
+    s.erase("modes");
+    s.erase("mode");
   }
   const store::Model old = store::model_from_json(j);
   const radio::SatelliteRadio& o = old.db.satellites[static_cast<std::size_t>(*iss)].radio;
