@@ -56,11 +56,17 @@ void add_control_status(const tracker::StationLoop& station, nlohmann::json& j) 
     a["action"] = held ? "held" : rs.target ? "point" : "hold";
     if (rs.target)
       a["target"] = {{"az_deg", station.rotator().model().compass_from_travel(rs.target->az_travel)},
-                     {"el_deg", rs.target->el}};
+                     {"el_deg", rs.target->el},
+                     {"travel_deg", rs.target->az_travel}};
     else if (rs.has_position)  // arrived and stopped there (a client's P done): it holds where it is
       a["target"] = {{"az_deg", rs.az.deg}, {"el_deg", rs.el.deg}};
     else
       a["target"] = nullptr;
+  }
+  // The pass an outside client's targets are recognised to follow (issue 57).
+  if (j.contains("antenna")) {
+    const std::string follows = station.client_follow_text();
+    j["antenna"]["follows"] = follows.empty() ? nlohmann::json(nullptr) : nlohmann::json(follows);
   }
   // A link trakbox does not tune now says why, not "confirmed" (the Radio panel shows the state).
   const std::string doppler = doppler_text(station);

@@ -76,7 +76,9 @@ nlohmann::json antenna_json(StationApp& app) {
                    {"connects", rs.link.connects},
                    {"message", rs.message},
                    {"on_target", rs.on_target}};
-  if (const auto pos = st.antenna()) a["position"] = {{"az_deg", pos->az}, {"el_deg", pos->el}};
+  // travel_deg: degrees from the rotor stop (which way round, on an overlap rotator).
+  if (const auto pos = st.antenna())
+    a["position"] = {{"az_deg", pos->az}, {"el_deg", pos->el}, {"travel_deg", rs.az.travel}};
   else a["position"] = nullptr;
   const tracker::Decision& d = app.tracker().last_decision();
   // With parking off a "park" decision moves nothing (Controller::park): the antenna holds, and
