@@ -413,6 +413,8 @@ std::string format_status(const nlohmann::json& s) {
   ant += ", " + a.value("action", "hold");
   if (!a.at("target").is_null()) ant += " to az " + num(a["target"]["az_deg"], 1) + " el " + num(a["target"]["el_deg"], 1);
   ant += ", rotor control " + std::string(a.value("rotor_control", false) ? "on" : "off") + ", link " + a.value("link", "");
+  // An outside client's targets recognised as a pass (issue 57): "following rotctld's targets ...".
+  if (const auto f = a.find("follows"); f != a.end() && f->is_string()) ant += ", " + f->get<std::string>();
   line(ant);
   if (const auto c = s.value("control", nlohmann::json()); c.is_object())
     line("  control   antenna " + c["antenna"].value("label", "") + ", radio " + c["radio"].value("label", "") +

@@ -132,6 +132,8 @@ def run(sky, planned, until):
                     az, el = sky.at(t)
                     readings.append((t, pos["travel_deg"], pos["az_deg"], pos["el_deg"], az, el))
                 if st["antenna"].get("follows"):
+                    if not follows:
+                        lines.add(web.status_text())  # `trakbox status`, once
                     follows.add(st["antenna"]["follows"])
                 lines.add(st.get("status_line", ""))
                 time.sleep(0.02)
@@ -183,6 +185,9 @@ def main():
     show("with the plan", j)
     check(FOLLOWS in follows, f"the status document says {FOLLOWS!r}: {follows}")
     check(any(FOLLOWS in l for l in lines), "the status line says it")
+    text_lines = [t for l in lines for t in l.splitlines()]
+    check(any(t.startswith("  antenna   ") and FOLLOWS in t for t in text_lines),
+          "`trakbox status` says it on its antenna line")
     check(f"control: {FOLLOWS} (rotctld 127.0.0.1:" in log, "the log says it")
     check(j["jump"] <= 30.0, f"the travel moves at most 30 deg between readings: {j['jump']:.1f}")
     check(j["target_jump"] <= 30.0, f"no target jumps more than 30 deg of travel: {j['target_jump']:.1f}")
