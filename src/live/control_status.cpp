@@ -47,6 +47,11 @@ void add_control_status(const tracker::StationLoop& station, nlohmann::json& j) 
                     {"jobs", sn->jobs},
                     {"last_poll", sn->last_poll.empty() ? nlohmann::json(nullptr) : nlohmann::json(sn->last_poll)},
                     {"error", sn->error ? nlohmann::json(*sn->error) : nlohmann::json(nullptr)}};
+  // The pass an outside client's targets are recognised to follow (issue 57).
+  if (j.contains("antenna")) {
+    const std::string follows = station.client_follow_text();
+    j["antenna"]["follows"] = follows.empty() ? nlohmann::json(nullptr) : nlohmann::json(follows);
+  }
   // A link trakbox does not tune now says why, not "confirmed" (the Radio panel shows the state).
   const std::string doppler = doppler_text(station);
   if (j.contains("radios"))

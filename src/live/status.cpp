@@ -69,7 +69,9 @@ nlohmann::json antenna_json(StationApp& app) {
                    {"connects", rs.link.connects},
                    {"message", rs.message},
                    {"on_target", rs.on_target}};
-  if (const auto pos = st.antenna()) a["position"] = {{"az_deg", pos->az}, {"el_deg", pos->el}};
+  // travel_deg: degrees from the rotor stop (which way round, on an overlap rotator).
+  if (const auto pos = st.antenna())
+    a["position"] = {{"az_deg", pos->az}, {"el_deg", pos->el}, {"travel_deg", rs.az.travel}};
   else a["position"] = nullptr;
   // The one aim (StationLoop::aim): a client's target while it holds, the position an antenna
   // holds at (issue 60, item 9: after a rotctld P 200 30, "hold" with no target and the sky's
@@ -77,6 +79,8 @@ nlohmann::json antenna_json(StationApp& app) {
   const tracker::StationLoop::Aim aim = st.aim();
   a["action"] = aim.action;
   a["target"] = aim.target ? nlohmann::json{{"az_deg", aim.target->az}, {"el_deg", aim.target->el}} : nlohmann::json(nullptr);
+  // Which way round the rotator was sent (travel from the stop), when it was sent somewhere.
+  if (aim.target && rs.target) a["target"]["travel_deg"] = rs.target->az_travel;
   a["parking_enabled"] = st.rotator().config().parking_enabled;
   a["az_travel_deg"] = st.rotator().config().az_travel_deg;
   return a;
@@ -432,6 +436,8 @@ std::string format_status(const nlohmann::json& s) {
   ant += ", " + a.value("action", "hold");
   if (!a.at("target").is_null()) ant += " to az " + num(a["target"]["az_deg"], 1) + " el " + num(a["target"]["el_deg"], 1);
   ant += ", rotor control " + std::string(a.value("rotor_control", false) ? "on" : "off") + ", link " + a.value("link", "");
+  // An outside client's targets recognised as a pass (issue 57): "following rotctld's targets ...".
+  if (const auto f = a.find("follows"); f != a.end() && f->is_string()) ant += ", " + f->get<std::string>();
   line(ant);
   if (const auto c = s.value("control", nlohmann::json()); c.is_object())
     line("  control   antenna " + c["antenna"].value("label", "") + ", radio " + c["radio"].value("label", "") +

@@ -46,4 +46,13 @@ std::vector<Pass> find_passes(const Sgp4& sat, const Observer& o, UtcTime start,
 std::optional<Pass> next_pass(const Sgp4& sat, const Observer& o, UtcTime from, double max_days = 10.0,
                               const PassOptions& options = {}, const EarthOrientation& eo = {});
 
+class HorizonMask;
+// The passes above a horizon mask (orbit/horizon_mask.h) and options.horizon_deg, whichever is
+// higher at each azimuth: found above the mask's lowest elevation by the search above, then each
+// pass's crossings of the mask refined to options.precision_s from one-second steps. A pass the
+// mask splits gives each piece above it; max_el_deg and tca are the piece's.
+std::vector<Pass> find_passes_masked(const Sgp4& sat, const Observer& o, UtcTime start, UtcTime stop,
+                                     const HorizonMask& mask, const PassOptions& options = {},
+                                     const EarthOrientation& eo = {});
+
 }  // namespace tb::orbit

@@ -113,6 +113,11 @@ Unit::Reply Unit::cmd_goto(const Command& c) {
     p.az_travel = station_.rotator().model().target_for(AzEl{axis_az, 0.0}, st.has_position ? st.az.travel : base.az_travel).az_travel;
   }
   if (!el_none) p.el = std::max(el, min_el());
+  // A GOTO stream that follows a pass goes the pass plan's way round (issue 57); the plan is in the
+  // sky's azimuths, so only with no north offset.
+  if (!az_none && !el_none && s_.north_offset_deg == 0.0)
+    if (const auto planned = station_.client_plan_target(AzEl{rotator::wrap360(az), p.el}, client_, "satrak"))
+      p = *planned;
   command(p, rotator::Controller::Approach::exact);
   station_.antenna_changed();
   owner_ = Owner::go;

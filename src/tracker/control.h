@@ -75,6 +75,9 @@ struct Window {
   orbit::UtcTime start{}, end{};
   std::string satellite;
   std::string note;
+  // A SatNOGS job's own element set (tle1, tle2; tle0 is `satellite`), empty when not given: the
+  // pass its client follows is planned with these, not a refreshed set (issue 57).
+  std::string tle1, tle2;
 };
 
 // A connectionless client (PstRotator over UDP) has no disconnect: its silence ends its hold after

@@ -203,7 +203,8 @@ OpResult StationOps::go_to(double az_deg, double el_deg) {
   // The operator's goto ends tracking; an outside client's suspends it until its hold ends.
   OpResult r = rotor_control(true);
   const rotator::AzEl asked{rotator::wrap360(az_deg), el_deg};
-  const rotator::AzEl got = outside() ? station_.point_held(asked) : station_.point(asked);
+  const rotator::AzEl got =
+      outside() ? station_.point_held(asked, who_.label, kind_name(who_.kind)) : station_.point(asked);
   r.commanded = got;
   r.note = "pointing at " + az_el_text(got.az, got.el);
   if (rotator::azimuth_distance(asked.az, got.az) > 0.05 || std::abs(asked.el - got.el) > 0.05)

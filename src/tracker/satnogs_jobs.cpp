@@ -86,6 +86,12 @@ SatnogsJobs parse_satnogs_jobs(const std::string& body, orbit::UtcTime now) {
     w.end = *t1;
     w.satellite = text::safe_text(tle0->substr(0, 40));
     w.note = text::safe_text(mode->substr(0, 20)) + " " + std::to_string(freq->get<long long>()) + " Hz";
+    // The job's elements, kept as sent (69 characters a line); read when its pass is planned.
+    const auto tle1 = string_of(job, "tle1"), tle2 = string_of(job, "tle2");
+    if (tle1 && tle2) {
+      w.tle1 = text::safe_text(tle1->substr(0, 80));
+      w.tle2 = text::safe_text(tle2->substr(0, 80));
+    }
     out.windows.push_back(std::move(w));
   }
   if (out.error) {

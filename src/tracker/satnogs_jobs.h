@@ -26,7 +26,8 @@ struct SatnogsJobs {
   std::optional<std::string> error;  // the answer was not a list of jobs: why (the windows are empty)
 };
 // Each job needs id (a whole number), start and end (ISO 8601 UTC, end after start), tle0 (the
-// satellite's name), frequency (Hz) and mode; the window's note is "MODE FREQUENCY Hz".
+// satellite's name), frequency (Hz) and mode; the window's note is "MODE FREQUENCY Hz". tle1 and
+// tle2, when both are strings, are kept with the window (the job's own elements).
 SatnogsJobs parse_satnogs_jobs(const std::string& body, orbit::UtcTime now);
 
 }  // namespace tb::tracker

@@ -15,6 +15,7 @@
 #include "rotator/controller.h"
 #include "rotator/pass_plan.h"
 #include "store/owner.h"
+#include "tracker/client_follow.h"
 #include "tracker/control.h"
 #include "tracker/tracker.h"
 
@@ -76,7 +77,18 @@ class StationLoop {
   // The same for whoever holds the antenna (tracker/control.h) without ending the Tracker's choice:
   // it goes on deciding (and tuning the radio while trakbox's tracking holds that), and drives the
   // antenna again when the hold ends.
-  rotator::AzEl point_held(rotator::AzEl compass);
+  // An outside client's target (`client`: its requester label, "rotctld 127.0.0.1:51234"; `kind`:
+  // "rotctld") goes through the plan of the pass its targets are recognised to follow
+  // (client_follow.h): the way round trakbox's own tracking would take; a target matching no pass
+  // goes the way nearest the antenna.
+  rotator::AzEl point_held(rotator::AzEl compass, std::string_view client = {}, std::string_view kind = {});
+  // Where a client's target is driven when it matches a pass (the plan's mapping), nothing when it
+  // matches none. Satrak's GOTO asks here before it commands the rotator itself.
+  std::optional<rotator::RotatorPosition> client_plan_target(rotator::AzEl compass, std::string_view client,
+                                                             std::string_view kind);
+  // "following rotctld's targets on the planned way round for ISS (pass to 14:32)" while a client's
+  // targets are recognised as a pass; "" otherwise.
+  std::string client_follow_text() const;
 
   // Who holds the antenna and the radio (issue 44). The station applies the Tracker's decisions to
   // each only while trakbox's tracking holds it; every change of holder goes through apply().
@@ -244,6 +256,33 @@ class StationLoop {
   };
   std::optional<PlannedPass> planned_;
   const rotator::PassPlan* plan_for(const SatNow& s);
+  // The pass an outside client's targets follow (issue 57), and what the status says of it.
+  ClientPassMatcher client_match_;
+  struct ClientFollow {
+    std::string kind;  // "rotctld"
+    std::string name;  // the satellite
+    orbit::UtcTime los{};
+    bool flip = false;
+  };
+  std::optional<ClientFollow> client_follow_;
+  void end_client_follow(std::string_view why);
+  // The plan of a pass whose samples `look` gives (AOS to LOS), kept as planned_ under (key, AOS).
+  using Look = std::function<std::optional<orbit::Observation>(orbit::UtcTime)>;
+  const rotator::PassPlan* plan_of(int key, const std::string& name, const orbit::Pass& pass, const Look& look);
+  // The SatNOGS job whose window holds, with its own elements (tle0/1/2), planned with them.
+  static constexpr int kJobKey = -2;
+  struct JobOrbit {
+    std::string id;
+    std::unique_ptr<orbit::Sgp4> sgp4;  // nothing when its elements do not read
+  };
+  std::optional<JobOrbit> job_;
+  const orbit::Sgp4* job_orbit(const Window& w);
+  // Before a SatNOGS window whose job carries its elements, with nothing tracked by trakbox: the
+  // antenna goes to the start of that pass's plan, Tracker::kPrepositionMinutes ahead (issue 57).
+  void preposition_for_job(orbit::UtcTime now);
+  std::string prepositioned_;  // the job it went for (said once)
+  // The client's target through the job's pass plan, when it matched the job.
+  std::optional<rotator::RotatorPosition> job_plan_target(const Window& w, SkyTarget target, std::string_view kind);
 
  public:
   // The plan in force, if any (for displays and tests).

@@ -108,9 +108,9 @@ std::vector<orbit::Observation> Tracker::pass_track(int db_index, const orbit::P
   return track(db_index, pass.aos, orbit::minutes_between(pass.aos, pass.los), intervals);
 }
 
-std::optional<SatNow> Tracker::observe(int db_index, orbit::UtcTime t) const {
+std::optional<SatNow> Tracker::observe(int db_index, orbit::UtcTime t, bool with_pass) const {
   if (db_index < 0 || db_index >= static_cast<int>(model_.db.satellites.size())) return std::nullopt;
-  return compute(db_index, t, false);
+  return compute(db_index, t, with_pass);
 }
 
 std::optional<orbit::Pass> Tracker::pass_at(int db_index, orbit::UtcTime t) const {

@@ -69,7 +69,8 @@ class Tracker {
   const Decision& last_decision() const { return decision_; }
 
   // Any satellite of the database, now (for displays that are not the tracked set).
-  std::optional<SatNow> observe(int db_index, orbit::UtcTime t) const;
+  // with_pass: its pass in progress at t or the next, from the pass cache (passes()).
+  std::optional<SatNow> observe(int db_index, orbit::UtcTime t, bool with_pass = false) const;
   // The pass in progress at t (with its real AOS), or the next one within a day, for a display
   // that looks at another time than now (menu 2): searched afresh, the live pass left as it is.
   std::optional<orbit::Pass> pass_at(int db_index, orbit::UtcTime t) const;

@@ -215,7 +215,7 @@ function drawStatus(st) {
                      ", " + mv.lead_min + " min before AOS" : "";
   $("ant-state").textContent = a.link !== "ok" ? "fault: " + (a.link_message || a.link)
     : (moves || "(" + (a.action || "hold") + ")" + (a.parking_enabled === false && a.action === "hold" ? ", parking is off" : "")) +
-      (a.message ? " " + a.message : "");
+      (a.message ? " " + a.message : "") + (a.follows ? " · " + a.follows : "");
   $("btn-park").hidden = a.parking_enabled === false;
   const pass = lastSky && lastSky.pass;
   $("ant-plan").textContent = planText(pass, a);

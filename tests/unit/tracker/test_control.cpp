@@ -117,7 +117,7 @@ TEST_CASE("standby: both held by standby, outside clients refused, the operator 
 
 TEST_CASE("a SatNOGS window: tracking yields at its start, a rotctld client holds under its name, back at its end") {
   Control c;
-  c.set_windows({{"satnogs", "12345678", at(100), at(700), "AO-91", ""}});
+  c.set_windows({{"satnogs", "12345678", at(100), at(700), "AO-91", "", "", ""}});
   CHECK(c.tick(at(99)).empty());
   const auto begin = c.tick(at(100));
   REQUIRE(begin.size() == 2);
@@ -140,7 +140,7 @@ TEST_CASE("a SatNOGS window: tracking yields at its start, a rotctld client hold
 
 TEST_CASE("a SatNOGS job that leaves the calendar ends its hold at once, not at its old end (issue 56)") {
   Control c;
-  c.set_windows({{"satnogs", "777", at(100), at(700), "ISS", ""}});
+  c.set_windows({{"satnogs", "777", at(100), at(700), "ISS", "", "", ""}});
   REQUIRE(c.tick(at(100)).size() == 2);
   CHECK(c.holder(Resource::antenna).kind == HolderKind::satnogs);
   c.set_windows({});  // the next poll's answer: the job was cancelled

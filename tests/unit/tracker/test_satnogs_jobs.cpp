@@ -43,6 +43,10 @@ TEST_CASE("satnogs: two jobs become two windows in start order; a job over is dr
   CHECK(j.windows[0].note == "FM 145960000 Hz");
   CHECK(j.windows[1].id == "12345679");
   CHECK(j.windows[1].note == "AFSK1k2 437800000 Hz");
+  // The job's elements are kept with its window (issue 57: its pass is planned with them).
+  CHECK(j.windows[0].tle1 == "1 43017U ...");
+  CHECK(j.windows[0].tle2 == "2 43017 ...");
+  CHECK(j.windows[1].tle1 == "1 25544U ...");
   const auto later = tracker::parse_satnogs_jobs(kTwoJobs, at(10, 21, 40));
   REQUIRE(later.windows.size() == 1);
   CHECK(later.windows[0].id == "12345679");
