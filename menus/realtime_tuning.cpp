@@ -100,18 +100,18 @@ std::string realtime_type_offset(term::Terminal& t, Services& s, bool tx) {
 
 std::string realtime_type_mode(term::Terminal& t, Services& s) {
   const auto tuned = s.station.tuned();
-  if (!tuned) return said(t, "Mode unchanged: no satellite is tuned");
+  if (!tuned) return live_said(t, "Mode unchanged: no satellite is tuned");
   const store::Satellite& sat = s.model.db.satellites[static_cast<std::size_t>(*tuned)];
   const std::string name = sat.name();  // (a copy: the edit replaces the record)
   std::string names;
   for (const auto& m : store::modes_of(sat)) names += (names.empty() ? "" : " ") + m.name;
-  if (names.empty()) return said(t, "Mode unchanged: " + name + " has no modes");
-  prompt(t, "Mode (" + names + ") > ");
+  if (names.empty()) return live_said(t, "Mode unchanged: " + name + " has no modes");
+  live_prompt(t, "Mode (" + names + ") > ");
   const std::string answer = text::trimmed(read_line(t, 20));
-  if (answer.empty()) return said(t, "Mode unchanged");
+  if (answer.empty()) return live_said(t, "Mode unchanged");
   bool ok = false;
   const auto r = tune(t, s, [&name, &answer](tracker::StationOps& o) { return o.choose_mode(name, answer); }, ok);
-  return r ? said(t, *r) : std::string();
+  return r ? live_said(t, *r) : std::string();
 }
 
 std::string realtime_step_offset(term::Terminal& t, Services& s, int direction) {

@@ -75,7 +75,7 @@ Reply Interpreter::station(std::string_view arg) {
 Reply Interpreter::sat_mode(std::string_view arg) {
   const std::string name = text::trimmed(arg);
   const auto tuned = station_.tuned();
-  if (!tuned) return error("MODE: no satellite is tuned: track one first");
+  if (!tuned) return tuning_error("MODE: no satellite is tuned: track one first");
   const store::Satellite& sat = station_.model().db.satellites[static_cast<std::size_t>(*tuned)];
   if (name.empty()) {
     std::string line = "MODES " + sat.name();
@@ -85,7 +85,7 @@ Reply Interpreter::sat_mode(std::string_view arg) {
   }
   if (auto no = ask_radio("MODE")) return *no;
   const tracker::OpResult done = ops().choose_mode("", name);
-  if (!done.ok()) return error("MODE: " + *done.refusal);
+  if (!done.ok()) return tuning_error("MODE: " + *done.refusal);
   if (done.model_changed) station_.save_settings();  // on disk before the prompt returns
   const store::Satellite& now = station_.model().db.satellites[static_cast<std::size_t>(*tuned)];
   return Reply{{"MODE " + now.name() + " " + now.mode + " " + std::to_string(now.radio.downlink_hz) + " " +
