@@ -1,6 +1,7 @@
 #include "live/station_command.h"
 
 #include "live/station_app.h"
+#include "orbit/sky.h"
 #include "orbit/time.h"
 #include "store/owner.h"
 #include "store/settings.h"
@@ -12,7 +13,8 @@
 namespace tb::app {
 
 bool is_station_command(const std::string& line) {
-  return line.rfind("standby", 0) == 0 || line.rfind("reserve", 0) == 0 || line.rfind("settings", 0) == 0;
+  return line.rfind("standby", 0) == 0 || line.rfind("reserve", 0) == 0 || line.rfind("settings", 0) == 0 ||
+         line.rfind("calibrate", 0) == 0;
 }
 
 namespace {
@@ -45,6 +47,21 @@ std::string settings_command(StationApp& app, const std::vector<std::string>& w)
   return "ok: " + now;
 }
 
+// `trakbox calibrate`: the stored offsets; `calibrate sun|moon`: the rotator's reading now against
+// the body's position; `calibrate undo` (tracker/operations.h). Saved before the answer.
+std::string calibrate_command(StationApp& app, const std::vector<std::string>& w) {
+  tracker::StationOps ops(app.station(), tracker::Requester::menus(), true);
+  if (w.size() == 1) return "ok: " + tracker::calibration_text(app.model().rotator);
+  tracker::OpResult r;
+  if (w.size() == 2 && w[1] == "undo") r = ops.calibrate_undo();
+  else if (const auto body = w.size() == 2 ? orbit::parse_body(w[1]) : std::nullopt) r = ops.calibrate(*body);
+  else return "refused: expected calibrate, calibrate sun, calibrate moon or calibrate undo";
+  if (!r.ok()) return "refused: " + *r.refusal;
+  if (r.model_changed)
+    if (const auto why = app.save()) return "ok: " + r.note + " (NOT SAVED: " + *why + ")";
+  return "ok: " + r.note;
+}
+
 }  // namespace
 
 std::string run_station_command(StationApp& app, const std::string& line) {
@@ -53,6 +70,7 @@ std::string run_station_command(StationApp& app, const std::string& line) {
     if (!piece.empty()) w.emplace_back(piece);
   if (w.empty()) return "refused: nothing asked";
   if (w[0] == "settings") return settings_command(app, w);
+  if (w[0] == "calibrate") return calibrate_command(app, w);
   tracker::StationOps ops(app.station(), tracker::Requester::menus(), true);
   tracker::OpResult r;
   if (w.size() == 2 && w[0] == "standby" && (w[1] == "on" || w[1] == "off")) {

@@ -23,8 +23,13 @@ std::optional<std::string> parse_satrak(std::string_view text, RotatorChoice& ch
   return std::nullopt;
 }
 
-std::unique_ptr<rotator::RotatorDriver> make_simulated(const RotatorChoice&, const RotatorContext& c) {
-  return rotator::make_simulated_rotator(c.clock, c.simulated);
+std::unique_ptr<rotator::RotatorDriver> make_simulated(const RotatorChoice& choice, const RotatorContext& c) {
+  rotator::SimulatedRotatorParams p = c.simulated;
+  if (choice.rotator) {  // simulated:mount=AZ,EL
+    p.mount_az_deg = choice.rotator->mount_az_deg;
+    p.mount_el_deg = choice.rotator->mount_el_deg;
+  }
+  return rotator::make_simulated_rotator(c.clock, p);
 }
 
 std::unique_ptr<rotator::RotatorDriver> make_hamlib(const RotatorChoice& choice, const RotatorContext&) {
