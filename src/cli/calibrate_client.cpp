@@ -3,6 +3,7 @@
 // rotator's reading, its clock; the owner stores the offsets, the controller takes them at once,
 // the state is saved), else on the state file with the reading the operator gives (--reading), as
 // `trakbox settings` does (settings_client.cpp).
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -10,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/attach_client.h"
+#include "cli/calibrate_scan.h"
 #include "cli/options.h"
 #include "cli/tracker_config.h"
 #include "live/state_lock.h"
@@ -29,7 +31,9 @@ namespace {
 const char* kUsage =
     "usage: trakbox calibrate [--state DIR | --socket PATH]\n"
     "       trakbox calibrate sun|moon [--reading AZ,EL [--at TIME]] [--state DIR | --socket PATH]\n"
-    "       trakbox calibrate undo [--state DIR | --socket PATH]\n\n"
+    "       trakbox calibrate undo [--state DIR | --socket PATH]\n"
+    "       trakbox calibrate sun --scan --beam DEG [--shape cross|grid] [--readings N] [--settle S]\n"
+    "                 [--receiver gqrx:HOST:PORT | rigctld:HOST:PORT] [--store] [--state DIR | --socket PATH]\n\n"
     "The sky calibration: peak the antenna by hand on the Sun (its noise) or the Moon (its echo), then\n"
     "say which: trakbox sets the azimuth and elevation offsets so that the rotator's reading equals the\n"
     "body's computed position, and stores them with the time (rotator.az_offset_deg, el_offset_deg).\n"
@@ -39,13 +43,21 @@ const char* kUsage =
     "examples:\n"
     "  trakbox calibrate sun\n"
     "  trakbox calibrate moon --reading 117.5,31.4 --at 2026-03-20T09:00:00Z\n"
-    "  trakbox calibrate undo\n\n"
+    "  trakbox calibrate undo\n"
+    "  trakbox calibrate sun --scan --beam 8 --receiver gqrx:127.0.0.1:7356 --store\n\n"
     "options:\n";
 
 std::vector<OptionSpec> specs() {
   return {{"help", "", "this text"},
           {"reading", "AZ,EL", "the rotator's reading when no station runs (degrees, as it displays them)"},
           {"at", "TIME", "when that reading was taken (ISO 8601 UTC; default now, with menu 5's offset)"},
+          {"scan", "", "sun only: a sun-noise scan finds the peak itself (the running station, a receiver)"},
+          {"beam", "DEG", "--scan: the antenna's -3 dB beamwidth (the scan spans 2 beams in steps of a quarter)"},
+          {"shape", "cross|grid", "--scan: a cross (4 span/step + 1 points, the default) or a grid"},
+          {"readings", "N", "--scan: levels averaged at each point (default 5)"},
+          {"settle", "SECONDS", "--scan: wait after the rotator arrives (default 1)"},
+          {"receiver", "KIND:HOST:PORT", "--scan: gqrx:HOST:PORT (default gqrx:127.0.0.1:7356) or rigctld:HOST:PORT (coarse)"},
+          {"store", "", "--scan: store the offsets found"},
           {"state", "DIR", "the state directory (default: the user's, as trakbox's)"},
           {"socket", "PATH", "the running station's socket (the system service's: " + std::string(kServiceSocket) + ")"},
           {"data", "DIR", "the shipped data a fresh state starts from (default: as trakbox's)"}};
@@ -145,6 +157,38 @@ int on_state_file(const std::filesystem::path& dir, const std::string& data_dir,
   return answer(r, file.path().string());
 }
 
+// --scan's options into a request, or why not.
+std::optional<SunScanRequest> scan_request(const std::string& word, const ParsedOptions& o, std::string& why) {
+  SunScanRequest r;
+  const auto number = [&o](const char* key) { return o.value(key) ? text::parse_double(*o.value(key)) : std::nullopt; };
+  if (word != "sun") why = "--scan: the Sun only (trakbox calibrate sun --scan)";
+  else if (o.has("reading") || o.has("at")) why = "--scan finds the peak itself: no --reading or --at";
+  else if (const auto beam = number("beam"); !beam || !(*beam >= 0.2 && *beam <= 60.0))
+    why = "--scan needs --beam DEG, the antenna's -3 dB beamwidth, 0.2 to 60";
+  else r.beam_deg = *beam;
+  if (!why.empty()) return std::nullopt;
+  if (const auto shape = o.value("shape"); shape && *shape != "cross" && *shape != "grid") {
+    why = "--shape '" + *shape + "': expected cross or grid";
+    return std::nullopt;
+  }
+  r.shape = o.value("shape").value_or("cross") == "grid" ? rotator::ScanShape::grid : rotator::ScanShape::cross;
+  const auto readings = number("readings").value_or(5.0), settle = number("settle").value_or(1.0);
+  if (readings < 1 || readings > 100 || readings != std::floor(readings) || !(settle >= 0.0 && settle <= 60.0)) {
+    why = "--readings 1 to 100, --settle 0 to 60 seconds";
+    return std::nullopt;
+  }
+  r.readings = static_cast<int>(readings);
+  r.settle_s = settle;
+  r.receiver = o.value("receiver").value_or(r.receiver);
+  r.store = o.has("store");
+  return r;
+}
+
+int scan_on(const std::string& socket, SunScanRequest r) {
+  r.socket = socket;
+  return run_sun_scan(r);
+}
+
 }  // namespace
 
 int run_calibrate(const std::vector<std::string>& args) {
@@ -165,7 +209,16 @@ int run_calibrate(const std::vector<std::string>& args) {
     std::fprintf(stderr, "trakbox calibrate: expected sun, moon or undo (see trakbox calibrate --help)\n");
     return kExitUsage;
   }
-  if (const auto socket = o.value("socket")) return through_socket(*socket, word, o);
+  std::optional<SunScanRequest> scan;
+  if (o.has("scan")) {
+    std::string why;
+    scan = scan_request(word, o, why);
+    if (!scan) {
+      std::fprintf(stderr, "trakbox calibrate: %s (see trakbox calibrate --help)\n", why.c_str());
+      return kExitUsage;
+    }
+  }
+  if (const auto socket = o.value("socket")) return scan ? scan_on(*socket, *scan) : through_socket(*socket, word, o);
   const std::filesystem::path dir =
       o.value("state") ? std::filesystem::path(*o.value("state")) : store::default_state_directory();
   LockHolder holder;
@@ -180,7 +233,12 @@ int run_calibrate(const std::vector<std::string>& args) {
     std::fprintf(stderr, "trakbox calibrate: %s\n", lock_error.c_str());
     return kExitFailure;
   }
-  if (!lock) return through_socket(!holder.socket.empty() ? holder.socket : socket_for_state(dir.string()), word, o);
+  const std::string socket = !holder.socket.empty() ? holder.socket : socket_for_state(dir.string());
+  if (!lock) return scan ? scan_on(socket, *scan) : through_socket(socket, word, o);
+  if (scan) {
+    std::fprintf(stderr, "trakbox calibrate: --scan: no station runs on %s; the scan moves its rotator\n", dir.c_str());
+    return kExitFailure;
+  }
   return on_state_file(dir, o.value("data").value_or(default_data_directory()), word, o);
 }
 

@@ -116,6 +116,9 @@ class StationOps {
   // operator has peaked the antenna on the body; the rotator's reading now (or `reading`, when given)
   // against the body's computed position sets the sky calibration's offsets (calibrate_offsets).
   OpResult calibrate(orbit::Body body, std::optional<rotator::AzEl> reading = std::nullopt);
+  // A sun-noise scan's result (`trakbox calibrate sun --scan --store`): the correction it fitted
+  // (true - reading) at time t, stored as calibrate's with the source "sun scan".
+  OpResult calibrate_scan(orbit::UtcTime t, double az_correction_deg, double el_correction_deg);
   // `trakbox calibrate undo`: the offsets before the last calibration back (undo_calibration).
   OpResult calibrate_undo();
 
@@ -139,8 +142,9 @@ class StationOps {
 // body, the ones replaced kept for undo. Refused, with the reason, when the body is below 2 deg, the
 // reading is flipped, or an offset would leave its range; nothing changes then. The note gives the
 // computed position, the reading, the correction and the offsets before and after.
+// `source` names what measured it in the record ("sun scan"); by default the body ("sun", "moon").
 OpResult calibrate_offsets(store::ModelOwner& owner, orbit::Body body, orbit::UtcTime t, rotator::AzEl reading,
-                           store::Origin origin);
+                           store::Origin origin, const std::string& source = "");
 OpResult undo_calibration(store::ModelOwner& owner, store::Origin origin);
 // The stored calibration in a line: "offsets az -2.00 el +1.00 deg from the SUN at 2026-...", or none.
 std::string calibration_text(const rotator::RotatorConfig& c);

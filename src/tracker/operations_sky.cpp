@@ -4,6 +4,7 @@
 #include <spdlog/spdlog.h>
 
 #include "orbit/sky.h"
+#include "rotator/adc_model.h"
 #include "rotator/sky_calibration.h"
 #include "store/model.h"
 #include "store/owner.h"
@@ -36,14 +37,15 @@ std::string calibration_text(const rotator::RotatorConfig& c) {
 }
 
 OpResult calibrate_offsets(store::ModelOwner& owner, orbit::Body body, orbit::UtcTime t, rotator::AzEl reading,
-                           store::Origin origin) {
+                           store::Origin origin, const std::string& source) {
   const store::Model& m = owner.model();
   const orbit::LookAngles look = orbit::body_look(body, m.station.observer(), t);
   const rotator::BodyFix fix = rotator::body_fix(body, t, reading, look);
   if (!fix.ok()) return OpResult::refuse(fix.error);
   const rotator::RotatorConfig before = m.rotator;
   const std::string when = orbit::format_iso8601(t);
-  OpResult r = store_offsets(owner, rotator::offsets_for(before, fix.correction, text::lower(orbit::body_name(body)), when),
+  OpResult r = store_offsets(owner, rotator::offsets_for(before, fix.correction,
+                                                  source.empty() ? text::lower(orbit::body_name(body)) : source, when),
                              "sky calibration", origin);
   if (!r.ok()) return r;
   r.note = fmt::format("{} computed at az {:.2f} el {:.2f}, the rotator read az {:.2f} el {:.2f} at {}: correction "
@@ -75,6 +77,17 @@ OpResult StationOps::calibrate(orbit::Body body, std::optional<rotator::AzEl> re
   // The antenna stays where it was peaked: a direct target (a goto) was in the old readings' terms
   // and would now move it by the correction. Tracking, if on, points afresh at its next tick.
   if (station_.tracker().mode() == Mode::off) station_.rotator().stop();
+  station_.antenna_changed();
+  return r;
+}
+
+OpResult StationOps::calibrate_scan(orbit::UtcTime t, double az_correction_deg, double el_correction_deg) {
+  // The reading that correction belongs to, against the Sun at t: calibrate_offsets finds it again.
+  const orbit::LookAngles sun = orbit::body_look(orbit::Body::sun, model_.station.observer(), t);
+  const rotator::AzEl reading{rotator::wrap360(sun.az_deg - az_correction_deg), sun.el_deg - el_correction_deg};
+  OpResult r = calibrate_offsets(station_.owner(), orbit::Body::sun, t, reading, origin(), "sun scan");
+  if (!r.ok()) return r;
+  spdlog::info("calibrate: sun scan: {}", r.note);
   station_.antenna_changed();
   return r;
 }
