@@ -1,5 +1,5 @@
-// Menu 1: Realtime Tracking. Choose from the tracking list (Enter: the one marked '*'), then the live
-// display. Rotor control stays as it was (E toggles it); tracking goes on after Q.
+// Menu 1: Realtime Tracking. Choose from the tracking list (Enter: the one marked '*'; SUN or MOON
+// for the Sun or the Moon), then the live display. Rotor control stays as it was (E toggles it); tracking goes on after Q.
 #include "menus/realtime_display.h"
 #include "menus/take_back.h"
 #include "store/model.h"
@@ -10,9 +10,11 @@ namespace tb::menus {
 
 namespace {
 std::optional<int> choose_and_track(term::Terminal& t, Services& s) {
-  const auto pick = choose_satellite(t, "     *** Tracking object satellite ***", tracking_list_names(s), s.model.db.marked);
+  std::optional<orbit::Body> body;  // SUN or MOON typed at "Select :" (issue 58)
+  const auto pick =
+      choose_satellite(t, "     *** Tracking object satellite ***", tracking_list_names(s), s.model.db.marked, '*', &body);
   if (!pick) return std::nullopt;
-  const int db_index = s.model.db.selected[static_cast<std::size_t>(*pick)];
+  const int db_index = body ? tracker::target_index(*body) : s.model.db.selected[static_cast<std::size_t>(*pick)];
   // Marks it '*' in the list; asks first when an outside client or a SatNOGS window holds the antenna.
   if (!with_confirmation(t, s.station, [db_index](tracker::StationOps& o) { return o.track(db_index); }).ok())
     return std::nullopt;

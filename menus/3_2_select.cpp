@@ -72,7 +72,8 @@ void menu_3_2_select(term::Terminal& t, Services& s) {
   db.normalise();
   // A satellite followed alone that left the list: stop rather than follow something unlisted.
   const auto followed = s.tracker.last_decision().followed;
-  const bool stop = s.tracker.mode() == tracker::Mode::single && followed && !db.list_number(*followed);
+  const bool stop = s.tracker.mode() == tracker::Mode::single && followed && !tracker::body_target(*followed) &&
+                    !db.list_number(*followed);
   if (!commit(t, s, store::bit(store::Area::tracking_list), "menu 3-2", [&](store::Model& m) { m.db = db; })) return;
   t.line("Tracking list: " + std::to_string(s.model.db.selected.size()) + " satellite(s) selected.");
   if (stop) {

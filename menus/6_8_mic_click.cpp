@@ -15,6 +15,7 @@ int simulated_adc3(const Services& s) {
   if (s.tracker.mode() == tracker::Mode::off) return disc.centre_adc;
   const tracker::SatNow* f = s.tracker.followed();
   if (!f || !f->obs.ok() || f->obs.look.el_deg < 0.0) return disc.centre_adc;  // nothing heard
+  if (tracker::body_target(f->db_index)) return disc.centre_adc;  // the Sun or the Moon: no downlink
   const radio::SatelliteRadio& sat = s.model.db.satellites[static_cast<std::size_t>(f->db_index)].radio;
   if (!sat.has_downlink()) return disc.centre_adc;
   // Where the downlink arrives at the radio: Doppler-shifted RF plus the converter offset (a

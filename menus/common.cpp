@@ -135,7 +135,7 @@ std::vector<std::string> format_satellite_list(const std::vector<std::string>& n
 }
 
 std::optional<int> choose_satellite(term::Terminal& t, std::string_view title, const std::vector<std::string>& names,
-                                    int marked_index, char marker) {
+                                    int marked_index, char marker, std::optional<orbit::Body>* body) {
   if (names.empty()) {
     t.line("No satellite selected: load elements with menu 3-3 and select with 3-2.");
     return std::nullopt;
@@ -160,7 +160,12 @@ std::optional<int> choose_satellite(term::Terminal& t, std::string_view title, c
     if (a == "Q" || a == "q") return std::nullopt;
     const auto n = parse_integer(a);
     if (n && *n >= 1 && *n <= static_cast<long>(names.size())) return static_cast<int>(*n - 1);
-    t.line("  Enter 1 to " + std::to_string(names.size()) + ", Enter for the marked one, or Q");
+    if (const auto b = body ? orbit::parse_body(a) : std::nullopt) {
+      *body = b;
+      return -1;
+    }
+    t.line("  Enter 1 to " + std::to_string(names.size()) + (body ? ", SUN or MOON" : "") +
+           ", Enter for the marked one, or Q");
   }
 }
 

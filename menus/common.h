@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "menus/term/terminal.h"
+#include "orbit/sky.h"
 #include "orbit/time.h"
 #include "util/text.h"   // text::trimmed, the menus' answers as read
 
@@ -64,9 +65,10 @@ std::optional<long> parse_integer(std::string_view text);
 std::vector<std::string> format_satellite_list(const std::vector<std::string>& names, int marked_index,
                                                char marker = '*');
 // Shows the list and asks "Select :"; Enter picks the marked entry. Returns the 0-based index, or
-// nullopt for Q (or an empty list).
+// nullopt for Q (or an empty list). With `body` (menus 1 and S), SUN or MOON (any case) is taken
+// too: *body is set and the index returned is -1 (issue 58).
 std::optional<int> choose_satellite(term::Terminal& t, std::string_view title, const std::vector<std::string>& names,
-                                    int marked_index, char marker = '*');
+                                    int marked_index, char marker = '*', std::optional<orbit::Body>* body = nullptr);
 
 // "1993/07/17" and "04:06:58".
 std::string format_date(orbit::UtcTime t);

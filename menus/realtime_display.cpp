@@ -183,6 +183,7 @@ std::string radio_line(Services& s) {
 // The shown satellite's elements: epoch and age now, and a warning past its orbit's limit
 // (trakbox's line; the manual's display has none).
 std::string elements_age_line(Services& s, int db_index) {
+  if (tracker::body_target(db_index)) return "Geometric position of the centre (no refraction); no radio tuning";
   const orbit::Elements& e = s.model.db.satellites[static_cast<std::size_t>(db_index)].elements;
   const orbit::ElementAge age = orbit::element_age(e, s.clock.now());
   std::string line = "Elements: epoch " + format_date(e.epoch()) + " " + format_time(e.epoch()) + " UTC, age " + age.text();

@@ -35,6 +35,8 @@ std::string usage() {
          "                      1 running with problems, 3 not running\n"
          "  events [--socket PATH|--state DIR]   the running station's events as JSON lines\n"
          "  log add|list|export|import ...   the logbook: a QSO of the pass tracked, ADIF out and in\n"
+         "  calibrate [sun|moon|undo]   the sky calibration: the antenna peaked on the Sun or the Moon\n"
+         "                      sets the rotator's offsets (docs/calibration.md)\n"
          "  host [options]      host mode (menu 7's commands: AZ EL, MU, MD, FU, FD, S, ?A, ?, Q) on\n"
          "                      stdin/stdout for scripts; takes the options above\n" +
          "\n"
@@ -75,7 +77,8 @@ int main(int argc, char** argv) {
     if (command == "log") return run_log(rest);
     if (command == "standby" || command == "reserve" || command == "track") return run_station_command(command, rest);
     if (command == "settings") return run_settings(rest);
-    std::fprintf(stderr, "trakbox: %s: unknown command; expected propagate, schedule, passes, next, elements, host, satrak, attach, status, events, log, settings, standby, reserve or track (see trakbox --help)\n",
+    if (command == "calibrate") return run_calibrate(rest);
+    std::fprintf(stderr, "trakbox: %s: unknown command; expected propagate, schedule, passes, next, elements, host, satrak, attach, status, events, log, settings, calibrate, standby, reserve or track (see trakbox --help)\n",
                  command.c_str());
     return kExitUsage;
   }

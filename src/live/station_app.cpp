@@ -444,7 +444,10 @@ void StationApp::Impl::start_stored_tracking() {
   const store::TrackingChoice& chosen = model.tracking;
   using Choice = store::TrackingChoice::Mode;
   std::optional<int> single;
-  if (chosen.mode == Choice::single) {
+  const auto body = chosen.catalog_number == 0 ? orbit::parse_body(chosen.name) : std::nullopt;
+  if (chosen.mode == Choice::single && body) {
+    single = tracker::target_index(*body);  // the Sun or the Moon (issue 58)
+  } else if (chosen.mode == Choice::single) {
     for (std::size_t i = 0; i < db.satellites.size(); ++i)
       if (db.satellites[i].elements.catalog_number == chosen.catalog_number) single = static_cast<int>(i);
     if (!single)
@@ -454,7 +457,8 @@ void StationApp::Impl::start_stored_tracking() {
   const bool multi = chosen.mode == Choice::multi || (chosen.mode == Choice::list && db.multi_count >= 2);
   if (single) {
     tracker.track_single(*single);
-    log->info("service: tracking {}, as last chosen", db.satellites[static_cast<std::size_t>(*single)].elements.name);
+    log->info("service: tracking {}, as last chosen",
+              body ? chosen.name : db.satellites[static_cast<std::size_t>(*single)].elements.name);
   } else if (db.selected.size() >= 2 && multi) {
     tracker.track_multi(model.priority_mode);
     log->info("service: multiple tracking of the first {} of the tracking list ({} mode)", db.multi_count,

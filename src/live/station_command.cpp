@@ -1,6 +1,9 @@
 #include "live/station_command.h"
 
+#include <fmt/format.h>
+
 #include "live/station_app.h"
+#include "orbit/sky.h"
 #include "orbit/time.h"
 #include "store/owner.h"
 #include "store/settings.h"
@@ -13,7 +16,7 @@ namespace tb::app {
 
 bool is_station_command(const std::string& line) {
   return line.rfind("standby", 0) == 0 || line.rfind("reserve", 0) == 0 || line.rfind("settings", 0) == 0 ||
-         line.rfind("track ", 0) == 0;
+         line.rfind("track ", 0) == 0 || line.rfind("calibrate", 0) == 0;
 }
 
 namespace {
@@ -74,6 +77,44 @@ tracker::OpResult track_command(tracker::StationOps& ops, const StationApp& app,
   return r;
 }
 
+// The sun-noise scan's moves (`trakbox calibrate sun --scan`, cli/calibrate_scan.cpp): a goto as the
+// holder "sun scan", so that anyone else's Stop, move or standby shows as another holder and ends
+// the scan; the answer says where the antenna was sent (inside the limits).
+std::string scan_goto(StationApp& app, const std::vector<std::string>& w) {
+  const auto az = text::parse_double(w[2]), el = text::parse_double(w[3]);
+  if (!az || !el) return "refused: expected calibrate goto AZ EL";
+  tracker::StationOps ops(app.station(), {tracker::HolderKind::menus, "sun scan"}, false);
+  const tracker::OpResult r = ops.go_to(*az, *el);
+  if (!r.ok()) return "refused: " + *r.refusal;
+  return fmt::format("ok: commanded {:.4f} {:.4f}", r.commanded ? r.commanded->az : *az,
+                     r.commanded ? r.commanded->el : *el);
+}
+
+// The scan's result stored: `calibrate store-scan TIME DAZ DEL`.
+tracker::OpResult store_scan(tracker::StationOps& ops, const std::vector<std::string>& w) {
+  const auto t = orbit::parse_iso8601(w[2]);
+  const auto daz = text::parse_double(w[3]), del = text::parse_double(w[4]);
+  if (!t || !daz || !del) return tracker::OpResult::refuse("expected calibrate store-scan TIME DAZ DEL");
+  return ops.calibrate_scan(*t, *daz, *del);
+}
+
+// `trakbox calibrate`: the stored offsets; `calibrate sun|moon`: the rotator's reading now against
+// the body's position; `calibrate undo` (tracker/operations.h). Saved before the answer.
+std::string calibrate_command(StationApp& app, const std::vector<std::string>& w) {
+  tracker::StationOps ops(app.station(), tracker::Requester::menus(), true);
+  if (w.size() == 1) return "ok: " + tracker::calibration_text(app.model().rotator);
+  tracker::OpResult r;
+  if (w.size() == 4 && w[1] == "goto") return scan_goto(app, w);
+  if (w.size() == 5 && w[1] == "store-scan") r = store_scan(ops, w);
+  else if (w.size() == 2 && w[1] == "undo") r = ops.calibrate_undo();
+  else if (const auto body = w.size() == 2 ? orbit::parse_body(w[1]) : std::nullopt) r = ops.calibrate(*body);
+  else return "refused: expected calibrate, calibrate sun, calibrate moon or calibrate undo";
+  if (!r.ok()) return "refused: " + *r.refusal;
+  if (r.model_changed)
+    if (const auto why = app.save()) return "ok: " + r.note + " (NOT SAVED: " + *why + ")";
+  return "ok: " + r.note;
+}
+
 }  // namespace
 
 std::string run_station_command(StationApp& app, const std::string& line) {
@@ -82,6 +123,7 @@ std::string run_station_command(StationApp& app, const std::string& line) {
     if (!piece.empty()) w.emplace_back(piece);
   if (w.empty()) return "refused: nothing asked";
   if (w[0] == "settings") return settings_command(app, w);
+  if (w[0] == "calibrate") return calibrate_command(app, w);
   tracker::StationOps ops(app.station(), tracker::Requester::menus(), true);
   tracker::OpResult r;
   if (w.size() == 2 && w[0] == "standby" && (w[1] == "on" || w[1] == "off")) {

@@ -83,6 +83,11 @@ nlohmann::json antenna_json(StationApp& app) {
   if (aim.target && rs.target) a["target"]["travel_deg"] = rs.target->az_travel;
   a["parking_enabled"] = st.rotator().config().parking_enabled;
   a["az_travel_deg"] = st.rotator().config().az_travel_deg;
+  const rotator::RotatorConfig& rc = app.model().rotator;  // the sky calibration (trakbox calibrate)
+  a["sky_calibration"] = {{"az_offset_deg", rc.az_offset_deg},
+                          {"el_offset_deg", rc.el_offset_deg},
+                          {"source", rc.sky.source},
+                          {"time", rc.sky.time}};
   return a;
 }
 
@@ -195,6 +200,19 @@ std::optional<orbit::Pass> whole_pass(StationApp& app, int db_index, const std::
   return p;
 }
 
+// The Sun or the Moon as a target (issue 58): "body": true; the Moon's range rate and its self-echo
+// Doppler at the radio's downlink frequency (EME: -2 f rdot / c), shown, not applied.
+void add_body(StationApp& app, orbit::Body body, const tracker::SatNow& c, nlohmann::json& s) {
+  s["body"] = true;
+  if (body != orbit::Body::moon) return;
+  s["range_km"] = c.obs.look.range_km;
+  s["range_rate_km_s"] = c.obs.look.range_rate_km_s;
+  const auto hz = app.station().radio().status().downlink_hz;
+  s["echo_doppler_hz"] =
+      hz ? nlohmann::json(orbit::eme_echo_doppler_hz(static_cast<double>(*hz), c.obs.look.range_rate_km_s))
+         : nlohmann::json(nullptr);
+}
+
 nlohmann::json tracking_list_json(StationApp& app, orbit::UtcTime now) {
   nlohmann::json list = nlohmann::json::array();
   const store::Database& db = app.model().db;
@@ -292,6 +310,7 @@ nlohmann::json station_status(StationApp& app, const StatusContext& cx) {
     nlohmann::json s{{"name", c.name}, {"list_number", c.list_number}, {"in_range", c.in_range}};
     if (c.obs.ok()) s["az_deg"] = c.obs.look.az_deg, s["el_deg"] = c.obs.look.el_deg;
     s["pass"] = pass_json(whole_pass(app, c.db_index, c.pass, now), now);
+    if (const auto body = tracker::body_target(c.db_index)) add_body(app, *body, c, s);
     sats.push_back(std::move(s));
   }
   tracking["satellites"] = std::move(sats);

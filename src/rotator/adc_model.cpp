@@ -40,8 +40,12 @@ double azimuth_distance(double a, double b) {
 
 AdcModel::AdcModel(const RotatorConfig& config, station::RotorStart start) : c_(config), start_(start) {}
 
-double AdcModel::corrected(Axis a, double raw) const { return raw + (a == Axis::az ? c_.az_skew : c_.el_skew); }
-double AdcModel::raw(Axis a, double corrected) const { return corrected - (a == Axis::az ? c_.az_skew : c_.el_skew); }
+// The skew in counts, plus the sky calibration's offset in degrees as counts of the axis's span.
+double AdcModel::shift(Axis a) const {
+  return a == Axis::az ? c_.az_skew + c_.az_offset_deg / deg_per_count(a) : c_.el_skew + c_.el_offset_deg / deg_per_count(a);
+}
+double AdcModel::corrected(Axis a, double raw) const { return raw + shift(a); }
+double AdcModel::raw(Axis a, double corrected) const { return corrected - shift(a); }
 
 double AdcModel::deg_per_count(Axis a) const {
   return a == Axis::az ? c_.az_travel_deg / span_width(c_.az_span) : c_.el_top_deg() / span_width(c_.el_span);

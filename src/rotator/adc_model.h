@@ -70,8 +70,10 @@ class AdcModel {
   double start_deg() const { return rotor_start_deg(start_); }
 
   // Skew.
-  double corrected(Axis a, double raw) const;   // raw + skew
-  double raw(Axis a, double corrected) const;   // corrected - skew
+  // Skew and the sky calibration's offsets (RotatorConfig::az_offset_deg, el_offset_deg) together.
+  double shift(Axis a) const;                   // skew + offset, counts
+  double corrected(Axis a, double raw) const;   // raw + shift
+  double raw(Axis a, double corrected) const;   // corrected - shift
   int dead_band(Axis a) const { return a == Axis::az ? c_.az_dead_band : c_.el_dead_band; }
 
   // Scale: degrees of travel per count of this span (the resolution), and its inverse.

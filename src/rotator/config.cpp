@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 #include "rotator/adc_model.h"
 #include "util/exact_number.h"
@@ -42,6 +43,10 @@ std::vector<std::string> validate(const RotatorConfig& c) {
   check_counts("elevation dead band", c.el_dead_band, limits::kDeadBand);
   check_counts("azimuth skew", c.az_skew, limits::kSkew);
   check_counts("elevation skew", c.el_skew, limits::kSkew);
+  for (const auto& [what, v] : {std::pair{"azimuth offset", c.az_offset_deg}, std::pair{"elevation offset", c.el_offset_deg}})
+    if (!(std::abs(v) <= limits::kSkyOffsetMaxDeg))
+      out.push_back(std::string(what) + " " + num(v) + " deg: expected " + num(-limits::kSkyOffsetMaxDeg) + " to " +
+                    num(limits::kSkyOffsetMaxDeg));
   const double el_top = c.el_top_deg();
   auto az_ok = [](double a) { return std::isfinite(a) && a >= 0.0 && a <= 360.0; };
   auto el_ok = [&](double e) { return std::isfinite(e) && e >= 0.0 && e <= el_top; };

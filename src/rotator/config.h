@@ -35,7 +35,21 @@ inline constexpr Counts kDeadBand{0, 100};
 inline constexpr Counts kSkew{-512, 512};
 inline constexpr double kTravelMinDeg = 360.0, kTravelMaxDeg = 720.0;  // azimuth travel from the stop
 inline constexpr double kCoastMaxS = 5.0;
+inline constexpr double kSkyOffsetMaxDeg = 45.0;  // the sky calibration's offsets, either way (trakbox calibrate)
 }  // namespace limits
+
+// The record of the sky calibration's offsets: what measured them ("sun", "moon", "sun scan"; ""
+// none), when (ISO 8601 UTC of the measurement), and the offsets and record before it, which
+// `trakbox calibrate undo` restores (an undo swaps the two, so a second undo redoes).
+struct SkyCalibration {
+  std::string source;
+  std::string time;
+  double previous_az_offset_deg = 0.0;
+  double previous_el_offset_deg = 0.0;
+  std::string previous_source;
+  std::string previous_time;
+  friend bool operator==(const SkyCalibration&, const SkyCalibration&) = default;
+};
 
 // An azimuth/elevation pair in degrees. Azimuth is from north through east.
 struct AzEl {
@@ -109,6 +123,13 @@ struct RotatorConfig {
   // An axis driven this long without its reading changing is stopped and reported stalled (a rotator
   // that cannot reach the calibrated end must not be driven forever: the manual's "smoke" warning).
   double stall_s = 3.0;
+
+  // The sky calibration (`trakbox calibrate sun|moon`, its --scan; docs/calibration.md): degrees
+  // added to the reading on top of the skew, so that the antenna peaked on the Sun or the Moon reads
+  // the body's computed position. The targets are seen through them too (AdcModel::corrected).
+  double az_offset_deg = 0.0;
+  double el_offset_deg = 0.0;
+  SkyCalibration sky;  // what set them, when, and what they replaced
 
   friend bool operator==(const RotatorConfig&, const RotatorConfig&) = default;
 };

@@ -182,6 +182,14 @@ Drive Controller::motion_of(Axis a) const {
   return Drive::stop;
 }
 
+// The corrected readings of an ADC rotator are whole counts plus the shift (skew and the sky
+// calibration's offsets, AdcModel::shift): with a fractional shift a whole-count goal is never read
+// exactly, and a dead band of 0 would hunt for ever. The goal is taken on the readings' lattice.
+double Controller::lattice(Axis a) const {
+  const double f = model_.shift(a);
+  return f - std::round(f);
+}
+
 int Controller::band(Axis a) const {
   const AxisLoop& l = a == Axis::az ? az_ : el_;
   return l.exact ? 0 : model_.dead_band(a);
@@ -342,7 +350,7 @@ void Controller::update_on_target() {
   for (Axis a : kAxes) {
     const AxisStatus& s = axis_status(a);
     const double corr = loop(a).last_reading;
-    if (!s.goal_counts || std::abs(*s.goal_counts - corr) > band(a) || s.motion != Drive::stop)
+    if (!s.goal_counts || std::abs(*s.goal_counts + lattice(a) - corr) > band(a) || s.motion != Drive::stop)
       status_.on_target = false;
   }
 }
@@ -387,7 +395,7 @@ void Controller::tick_adc(AdcRotator& adc, orbit::UtcTime now, double dt) {
     if (s.goal_counts && !l.stalled) {
       AxisLoopInput in;
       in.reading = corr;
-      in.target = *s.goal_counts;
+      in.target = *s.goal_counts + lattice(a);
       in.dead_band = band(a);
       in.range = model_.counts_range(a);
       in.driving = l.cmd;

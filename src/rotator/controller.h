@@ -179,6 +179,7 @@ class Controller {
   void lines_off();
   void note(std::string message, bool warn);
   std::optional<double> goal_counts(Axis a) const;
+  double lattice(Axis a) const;  // the shift's fraction of a count, which every corrected reading has
   void tick_adc(AdcRotator& adc, orbit::UtcTime now, double dt);
   void jog_pulse(AxisLoop& l, AxisCommand& cmd, orbit::UtcTime now, double dt);
   void apply_adc(AdcRotator& adc, Axis a, AxisCommand cmd, int raw, orbit::UtcTime now);

@@ -4,11 +4,15 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <vector>
+
+#include <fmt/format.h>
 
 #include "rotator/easycomm_rotator.h"
 #include "rotator/pst/link.h"
 #include "rotator/hamlib.h"
+#include "util/exact_number.h"
 #include "util/host_port.h"
 #include "util/text.h"
 
@@ -121,13 +125,28 @@ SpecResult parse_pstrotator_spec(std::string_view text) {
 }
 
 SpecResult parse_simulated_spec(std::string_view text) {
-  if (text != "simulated") return fail(text, "simulated takes no parameters");
-  return {RotatorSpec{}, {}};
+  if (text == "simulated") return {RotatorSpec{}, {}};
+  const std::string usage =
+      "expected simulated or simulated:mount=AZ,EL (a mounting error in degrees: the rotator reads that much more "
+      "than where the antenna points), e.g. simulated:mount=2.0,-1.0";
+  constexpr std::string_view kMount = "simulated:mount=";
+  if (text.rfind(kMount, 0) != 0) return fail(text, usage);
+  const auto f = text::split(text.substr(kMount.size()), ',');
+  const auto az = f.size() == 2 ? text::parse_double(f[0]) : std::nullopt;
+  const auto el = f.size() == 2 ? text::parse_double(f[1]) : std::nullopt;
+  if (!az || !el || std::abs(*az) > limits::kSkyOffsetMaxDeg || std::abs(*el) > limits::kSkyOffsetMaxDeg)
+    return fail(text, usage + fmt::format(", each within {:.0f} deg", limits::kSkyOffsetMaxDeg));
+  RotatorSpec s;
+  s.mount_az_deg = *az;
+  s.mount_el_deg = *el;
+  return {s, {}};
 }
 
 std::string to_string(const RotatorSpec& s) {
   switch (s.kind) {
-    case RotatorSpec::Kind::simulated: return "simulated";
+    case RotatorSpec::Kind::simulated:
+      if (s.mount_az_deg == 0.0 && s.mount_el_deg == 0.0) return "simulated";
+      return "simulated:mount=" + text::exact_number(s.mount_az_deg) + "," + text::exact_number(s.mount_el_deg);
     case RotatorSpec::Kind::hamlib:
       return "hamlib:" + std::to_string(s.model) + ":" + s.device + (s.baud ? ":" + std::to_string(s.baud) : "");
     case RotatorSpec::Kind::rotctld: return "rotctld:" + s.host + ":" + std::to_string(s.port);

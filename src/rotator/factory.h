@@ -1,5 +1,6 @@
 // The --rotator option: which rotator trakbox drives.
-//   simulated                        the simulated rotator (the default)
+//   simulated[:mount=AZ,EL]          the simulated rotator (the default); mount: a mounting error, the
+//                                    rotator reading AZ and EL degrees more than where the antenna points
 //   hamlib:MODEL:DEVICE[:BAUD]       any rotator Hamlib drives, e.g. hamlib:603:/dev/ttyUSB0:9600
 //                                    (MODEL is Hamlib's number, `rotctl -l`; the last field is BAUD
 //                                    when it is all digits)
@@ -27,6 +28,8 @@ struct RotatorSpec {
   int baud = 0;         // hamlib, easycomm: serial speed, 0 = the backend's (the protocol's) default
   std::string host;     // rotctld
   int port = 0;         // rotctld
+  double mount_az_deg = 0.0;  // simulated: the mounting error (SimulatedRotatorParams::mount_*)
+  double mount_el_deg = 0.0;
   friend bool operator==(const RotatorSpec&, const RotatorSpec&) = default;
 };
 

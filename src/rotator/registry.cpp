@@ -25,8 +25,13 @@ std::optional<std::string> parse_satrak(std::string_view text, RotatorChoice& ch
   return std::nullopt;
 }
 
-std::unique_ptr<RotatorDriver> make_simulated(const RotatorChoice&, const RotatorContext& c) {
-  return make_simulated_rotator(c.clock, c.simulated);
+std::unique_ptr<RotatorDriver> make_simulated(const RotatorChoice& choice, const RotatorContext& c) {
+  SimulatedRotatorParams p = c.simulated;
+  if (choice.rotator) {  // simulated:mount=AZ,EL
+    p.mount_az_deg = choice.rotator->mount_az_deg;
+    p.mount_el_deg = choice.rotator->mount_el_deg;
+  }
+  return make_simulated_rotator(c.clock, p);
 }
 
 std::unique_ptr<RotatorDriver> make_hamlib(const RotatorChoice& choice, const RotatorContext&) {
@@ -46,7 +51,7 @@ std::unique_ptr<RotatorDriver> make_satrak(const RotatorChoice& choice, const Ro
 }
 
 constexpr RotatorKind kKinds[] = {
-    {.name = "simulated", .form = "simulated", .what = "the simulated rotator (the default)", .link = "none",
+    {.name = "simulated", .form = "simulated[:mount=AZ,EL]", .what = "the simulated rotator (the default)", .link = "none",
      .defaults = "-", .reads = "ADC counts (10 bit)", .parse = parse_driver<parse_simulated_spec>,
      .make = make_simulated},
     {.name = "hamlib", .form = "hamlib:MODEL:DEVICE[:BAUD]", .what = "any rotator Hamlib drives (MODEL: rotctl -l)",

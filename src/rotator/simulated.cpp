@@ -114,8 +114,9 @@ std::optional<Counts> SimulatedRotator::read() {
   advance();
   if (fault_) return std::nullopt;
   auto adc = [](double c) { return std::clamp(static_cast<int>(std::floor(c)), 0, kAdcMaxCount); };
-  const double az = p_.az_counts_at_ccw + az_.x * (p_.az_counts_at_cw - p_.az_counts_at_ccw) / p_.az_travel_deg;
-  const double el = p_.el_counts_at_0 + el_.x * (p_.el_counts_at_90 - p_.el_counts_at_0) / 90.0;
+  const double az_read = az_.x + p_.mount_az_deg, el_read = el_.x + p_.mount_el_deg;
+  const double az = p_.az_counts_at_ccw + az_read * (p_.az_counts_at_cw - p_.az_counts_at_ccw) / p_.az_travel_deg;
+  const double el = p_.el_counts_at_0 + el_read * (p_.el_counts_at_90 - p_.el_counts_at_0) / 90.0;
   return Counts{adc(az), adc(el)};
 }
 

@@ -33,6 +33,10 @@ struct SimulatedRotatorParams {
   // exponentially, for ever). matching() gives kMotorStopFraction, the controller's own figure,
   // so that the controller reports an axis still exactly when it is.
   double stop_fraction = 0.0;
+  // A mounting error (a slipped mast clamp, a pot's zero; `--rotator simulated:mount=AZ,EL`): the
+  // potentiometers read the antenna's position plus these degrees. true_position() is where it points.
+  double mount_az_deg = 0.0;
+  double mount_el_deg = 0.0;
   // Where the antenna is at power-on (azimuth travel from the stop, elevation).
   RotatorPosition start{0.0, 0.0};
 

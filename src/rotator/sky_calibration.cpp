@@ -3,6 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+
+#include <fmt/format.h>
 
 #include "util/format.h"
 
@@ -81,6 +84,49 @@ RotatorConfig SkewChange::undo(RotatorConfig c) const {
   c.az_skew = az_skew_before;
   c.el_skew = el_skew_before;
   return c;
+}
+
+OffsetChange offsets_for(const RotatorConfig& c, const PointingCorrection& correction, const std::string& source,
+                         const std::string& time_iso) {
+  OffsetChange o;
+  o.after = c;
+  const double az = c.az_offset_deg + correction.az_deg, el = c.el_offset_deg + correction.el_deg;
+  for (const auto& [axis, v] : {std::pair{"azimuth", az}, std::pair{"elevation", el}})
+    if (!(std::abs(v) <= limits::kSkyOffsetMaxDeg)) {
+      o.error = fmt::format("the {} offset would be {:+.2f} deg, beyond {:.0f} either way: check the station's "
+                            "position, the clock and that the antenna is on the body",
+                            axis, v, limits::kSkyOffsetMaxDeg);
+      return o;
+    }
+  o.after.az_offset_deg = az;
+  o.after.el_offset_deg = el;
+  SkyCalibration& k = o.after.sky;
+  k.previous_az_offset_deg = c.az_offset_deg;
+  k.previous_el_offset_deg = c.el_offset_deg;
+  k.previous_source = c.sky.source;
+  k.previous_time = c.sky.time;
+  k.source = source;
+  k.time = time_iso;
+  return o;
+}
+
+OffsetChange undo_offsets(const RotatorConfig& c) {
+  OffsetChange o;
+  o.after = c;
+  if (c.sky.source.empty() && c.sky.previous_source.empty()) {
+    o.error = "no sky calibration to undo";
+    return o;
+  }
+  SkyCalibration& k = o.after.sky;
+  o.after.az_offset_deg = c.sky.previous_az_offset_deg;
+  o.after.el_offset_deg = c.sky.previous_el_offset_deg;
+  k.source = c.sky.previous_source;
+  k.time = c.sky.previous_time;
+  k.previous_az_offset_deg = c.az_offset_deg;
+  k.previous_el_offset_deg = c.el_offset_deg;
+  k.previous_source = c.sky.source;
+  k.previous_time = c.sky.time;
+  return o;
 }
 
 }  // namespace tb::rotator

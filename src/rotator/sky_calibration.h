@@ -66,4 +66,19 @@ struct SkewChange {
 // the counts per degree). Refused, naming the axis, when the new skew leaves limits::kSkew.
 SkewChange skew_for(const RotatorConfig& c, const PointingCorrection& correction);
 
+// The sky calibration as degree offsets (RotatorConfig::az_offset_deg, el_offset_deg and its record
+// `sky`; `trakbox calibrate`): exact, where a skew holds whole counts only. The reading had the old
+// offsets in it, so the new ones are the old plus the correction; the record names the source ("sun",
+// "moon", "sun scan") and the time of the measurement (ISO 8601 UTC), and keeps what it replaced.
+struct OffsetChange {
+  RotatorConfig after;  // the whole configuration with the new offsets and record
+  std::string error;    // when not empty, no change: why (an offset would leave its range, nothing to undo)
+  bool ok() const { return error.empty(); }
+};
+OffsetChange offsets_for(const RotatorConfig& c, const PointingCorrection& correction, const std::string& source,
+                         const std::string& time_iso);
+// `calibrate undo`: the previous offsets and record back; the current become the previous, so a
+// second undo redoes. Refused when no calibration was ever stored.
+OffsetChange undo_offsets(const RotatorConfig& c);
+
 }  // namespace tb::rotator

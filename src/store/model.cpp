@@ -8,6 +8,7 @@
 
 #include "gps/gpsd_client.h"
 #include "radio/factory.h"
+#include "orbit/time.h"
 #include "store/json_fields.h"
 #include "store/settings.h"
 #include "util/host_port.h"
@@ -259,6 +260,12 @@ json to_json(const Model& m) {
   j["rotator"]["el_span"] = {r.el_span.min, r.el_span.max};
   j["rotator"]["parking"] = azel(r.parking);
   j["rotator"]["presets"] = presets;
+  j["rotator"]["sky_calibration"] = {{"source", r.sky.source},
+                                     {"time", r.sky.time},
+                                     {"previous_az_offset_deg", r.sky.previous_az_offset_deg},
+                                     {"previous_el_offset_deg", r.sky.previous_el_offset_deg},
+                                     {"previous_source", r.sky.previous_source},
+                                     {"previous_time", r.sky.previous_time}};
   const auto& rc = m.radio;
   j["radio"].update({{"rig", name_of(rc.rig, kRig)},
                      {"icom_rx_address", rc.icom_rx_address},
@@ -324,6 +331,23 @@ void station_from(const json& j, Model& m) {
     take(m, s, key);
 }
 
+rotator::SkyCalibration sky_calibration_from(const json& j, const std::string& w) {
+  rotator::SkyCalibration k;
+  const double most = rotator::limits::kSkyOffsetMaxDeg;
+  k.source = text(j, w, "source", 16);
+  k.time = text(j, w, "time", 32);
+  k.previous_az_offset_deg = num(j, w, "previous_az_offset_deg", -most, most);
+  k.previous_el_offset_deg = num(j, w, "previous_el_offset_deg", -most, most);
+  k.previous_source = text(j, w, "previous_source", 16);
+  k.previous_time = text(j, w, "previous_time", 32);
+  for (const std::string* t : {&k.time, &k.previous_time})
+    if (!t->empty() && !orbit::parse_iso8601(*t)) bad(w + ".time", "'" + *t + "' is not an ISO 8601 UTC time");
+  for (const std::string* src : {&k.source, &k.previous_source})
+    if (!src->empty() && *src != "sun" && *src != "moon" && *src != "sun scan")
+      bad(w + ".source", "'" + *src + "': expected sun, moon, sun scan or nothing");
+  return k;
+}
+
 void rotator_from(const json& j, Model& m) {
   rotator::RotatorConfig& c = m.rotator;
   const std::string w = "rotator";
@@ -345,6 +369,9 @@ void rotator_from(const json& j, Model& m) {
   c.parking = azel_from(field(r, w, "parking"), w + ".parking");
   // Absent in state files written before it: the limits are barriers.
   take_if(m, r, "rotator.cross_limit_sector");
+  // Absent before the sky calibration (issue 58): no offsets, no record.
+  for (const char* key : {"rotator.az_offset_deg", "rotator.el_offset_deg"}) take_if(m, r, key);
+  if (r.contains("sky_calibration")) c.sky = sky_calibration_from(r["sky_calibration"], w + ".sky_calibration");
   const json& p = field(r, w, "presets");
   if (!p.is_array() || p.size() != c.presets.size()) bad(w + ".presets", "expected 5 positions");
   for (std::size_t i = 0; i < c.presets.size(); ++i)

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include <fmt/format.h>
+
 #include "store/model.h"
 #include "tracker/elements_refresh.h"
 #include "tracker/station_loop.h"
@@ -77,6 +79,7 @@ std::optional<int> StationOps::find_satellite(std::string_view name) const {
 
 OpResult StationOps::track(int db_index) {
   const auto& db = model_.db;
+  if (const auto body = body_target(db_index)) return track_body(*body);
   if (db_index < 0 || db_index >= static_cast<int>(db.satellites.size()))
     return OpResult::refuse("no satellite " + std::to_string(db_index) + " in the database");
   if (auto no = ask(Resource::antenna, true)) return *no;
@@ -99,7 +102,20 @@ std::string StationOps::unknown_satellite(std::string_view name) const {
   return "unknown satellite " + sat_quoted(name) + text::did_you_mean(name, names);
 }
 
+OpResult StationOps::track_body(orbit::Body body) {
+  if (auto no = ask(Resource::antenna, true)) return *no;
+  if (auto no = ask(Resource::radio, true)) return *no;
+  station_.tracker().track_single(target_index(body));
+  station_.antenna_changed();
+  OpResult r;
+  r.note = fmt::format("tracking {}", orbit::body_name(body));
+  return r;
+}
+
 OpResult StationOps::track(std::string_view name) {
+  // A satellite of that name first (a database may hold one called SUN); else the Sun or the Moon.
+  if (const auto body = orbit::parse_body(text::trim(name, text::kWhitespace)); body && !find_satellite(name))
+    return track_body(*body);
   const auto i = find_satellite(name);
   if (!i) return OpResult::refuse(unknown_satellite(name));
   return track(*i);

@@ -15,11 +15,13 @@
 #include <string_view>
 #include <vector>
 
+#include "orbit/sky.h"
 #include "rotator/controller.h"
 #include "tracker/control.h"
 
 namespace tb::store {
 struct Model;
+class ModelOwner;
 enum class Origin;
 }
 
@@ -60,6 +62,9 @@ class StationOps {
   // tracking list it becomes the marked one ('*').
   OpResult track(int db_index);
   OpResult track(std::string_view name);
+  // The Sun or the Moon (issue 58; also track(kSunTarget), track("SUN") when no satellite has that
+  // name): the antenna follows its centre through the same limits and pass plan; no radio tuning.
+  OpResult track_body(orbit::Body body);
   // Multiple tracking of the tracking list's first multi_count (menu M), normal or priority.
   OpResult track_multi(bool priority);
   // Multiple tracking of these satellites (2 to 5, by name, no repeats): they move to the front of
@@ -117,6 +122,15 @@ class StationOps {
   OpResult set_callsign(const std::string& callsign);
   // The element refresh from the stored sources, now (menu 3-5 R, host RF).
   OpResult refresh_elements(std::int64_t now_unix);
+  // "This is the Sun" / "this is the Moon" (`trakbox calibrate sun|moon`, the page; issue 58): the
+  // operator has peaked the antenna on the body; the rotator's reading now (or `reading`, when given)
+  // against the body's computed position sets the sky calibration's offsets (calibrate_offsets).
+  OpResult calibrate(orbit::Body body, std::optional<rotator::AzEl> reading = std::nullopt);
+  // A sun-noise scan's result (`trakbox calibrate sun --scan --store`): the correction it fitted
+  // (true - reading) at time t, stored as calibrate's with the source "sun scan".
+  OpResult calibrate_scan(orbit::UtcTime t, double az_correction_deg, double el_correction_deg);
+  // `trakbox calibrate undo`: the offsets before the last calibration back (undo_calibration).
+  OpResult calibrate_undo();
 
  private:
   // The controller's answer for `r`, applied: nothing when granted, else the refusal.
@@ -130,5 +144,19 @@ class StationOps {
   Requester who_;
   bool confirmed_ = false;
 };
+
+// The sky calibration through the model's owner, for a running station (StationOps::calibrate) and
+// for the state file when none runs (`trakbox calibrate` with --reading): the body's topocentric
+// position from the stored station at `t` against `reading`; the offsets become old + (computed -
+// reading) and are stored (Area rotator: the controller takes them at once) with the time and the
+// body, the ones replaced kept for undo. Refused, with the reason, when the body is below 2 deg, the
+// reading is flipped, or an offset would leave its range; nothing changes then. The note gives the
+// computed position, the reading, the correction and the offsets before and after.
+// `source` names what measured it in the record ("sun scan"); by default the body ("sun", "moon").
+OpResult calibrate_offsets(store::ModelOwner& owner, orbit::Body body, orbit::UtcTime t, rotator::AzEl reading,
+                           store::Origin origin, const std::string& source = "");
+OpResult undo_calibration(store::ModelOwner& owner, store::Origin origin);
+// The stored calibration in a line: "offsets az -2.00 el +1.00 deg from the SUN at 2026-...", or none.
+std::string calibration_text(const rotator::RotatorConfig& c);
 
 }  // namespace tb::tracker

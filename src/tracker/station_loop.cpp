@@ -88,10 +88,17 @@ void StationLoop::record_choice() {
     c.mode = store::TrackingChoice::Mode::multi;
   } else if (tracker_.mode() == Mode::single) {
     const int i = tracker_.single_index();
-    if (i < 0 || i >= static_cast<int>(model_.db.satellites.size())) return;
-    c.mode = store::TrackingChoice::Mode::single;
-    c.catalog_number = model_.db.satellites[static_cast<std::size_t>(i)].elements.catalog_number;
-    c.name = model_.db.satellites[static_cast<std::size_t>(i)].name();
+    if (const auto body = body_target(i)) {
+      // A body by its name, catalog number 0 (no satellite has it): start_stored_tracking reads it back.
+      c.mode = store::TrackingChoice::Mode::single;
+      c.name = std::string(orbit::body_name(*body));
+    } else if (i < 0 || i >= static_cast<int>(model_.db.satellites.size())) {
+      return;
+    } else {
+      c.mode = store::TrackingChoice::Mode::single;
+      c.catalog_number = model_.db.satellites[static_cast<std::size_t>(i)].elements.catalog_number;
+      c.name = model_.db.satellites[static_cast<std::size_t>(i)].name();
+    }
   } else {
     return;
   }
@@ -500,7 +507,10 @@ void StationLoop::tick() {
     const Decision d = tracker_.tick();
     const SatNow* followed = tracker_.followed();
     const rotator::PassPlan* plan = nullptr;
-    if (drive_antenna && followed &&
+    // A satellite's pass of minutes is planned against the rotor stop whole; the Sun's or the Moon's
+    // arc of hours is not: it is followed from where it is, and the controller unwinds once where
+    // it crosses the stop (a minute lost in a day), inside the limits as any target.
+    if (drive_antenna && followed && !body_target(followed->db_index) &&
         (d.antenna == Decision::Antenna::point || d.antenna == Decision::Antenna::preposition))
       plan = plan_for(*followed);
     // While someone else holds the antenna the decision is kept, not applied (the hold suspends).
@@ -519,8 +529,10 @@ void StationLoop::tick() {
       case Decision::Antenna::hold:
         break;
     }
-    // The radio follows the satellite being followed.
-    if (const SatNow* f = tracker_.followed(); f && doppler_ && drive_radio) follow_radio(f->db_index, f->obs);
+    // The radio follows the satellite being followed; a body has no radio entry (the Sun's noise
+    // needs no tuning; the Moon's echo Doppler is shown by status, the operator tunes for it).
+    if (const SatNow* f = tracker_.followed(); f && doppler_ && drive_radio && !body_target(f->db_index))
+      follow_radio(f->db_index, f->obs);
   }
   rotator_->tick(now);
 }

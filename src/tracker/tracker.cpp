@@ -17,6 +17,18 @@ constexpr double kPassSearchDays = 1.0;
 
 }  // namespace
 
+std::optional<orbit::Body> body_target(int index) {
+  if (index == kSunTarget) return orbit::Body::sun;
+  if (index == kMoonTarget) return orbit::Body::moon;
+  return std::nullopt;
+}
+
+int target_index(orbit::Body b) { return b == orbit::Body::sun ? kSunTarget : kMoonTarget; }
+
+bool Tracker::known(int index) const {
+  return body_target(index) || (index >= 0 && index < static_cast<int>(model_.db.satellites.size()));
+}
+
 std::optional<std::size_t> choose_multi(const std::vector<bool>& in_range, std::optional<std::size_t> current,
                                         bool priority) {
   if (!priority && current && *current < in_range.size() && in_range[*current]) return current;
@@ -62,7 +74,32 @@ const orbit::Sgp4* Tracker::propagator(int db_index) const {
   return cached(db_index).sgp4.get();
 }
 
+SatNow Tracker::compute_body(orbit::Body b, orbit::UtcTime t, bool with_pass) const {
+  SatNow s;
+  const orbit::Observer obs = model_.station.observer();
+  s.db_index = target_index(b);
+  s.name = std::string(orbit::body_name(b));
+  s.obs.time = t;
+  s.obs.look = orbit::body_look(b, obs, t);
+  s.in_range = s.obs.look.el_deg >= orbit::kAosThresholdDeg;
+  if (with_pass) {
+    // The one pass cache, keyed by an element set that names the body (catalog number = its index)
+    // and never changes: the body's rise and set are searched again when the station moves, the
+    // body has set or the clock goes back.
+    orbit::Elements key;
+    key.catalog_number = s.db_index;
+    key.name = s.name;
+    orbit::PassOptions po;
+    po.precision_s = 1.0;
+    const auto pass = passes_.get(
+        key, obs, t, [&] { return orbit::next_body_pass(b, obs, t, kPassSearchDays + 1.0, po); }, "tracker", po);
+    if (pass && t <= pass->los) s.pass = pass;
+  }
+  return s;
+}
+
 SatNow Tracker::compute(int db_index, orbit::UtcTime t, bool with_pass) const {
+  if (const auto b = body_target(db_index)) return compute_body(*b, t, with_pass);
   SatNow s;
   const auto& sat = model_.db.satellites[static_cast<std::size_t>(db_index)];
   Cached& c = cached(db_index);
@@ -109,15 +146,23 @@ std::vector<orbit::Observation> Tracker::pass_track(int db_index, const orbit::P
 }
 
 std::optional<SatNow> Tracker::observe(int db_index, orbit::UtcTime t, bool with_pass) const {
-  if (db_index < 0 || db_index >= static_cast<int>(model_.db.satellites.size())) return std::nullopt;
+  if (!known(db_index)) return std::nullopt;
   return compute(db_index, t, with_pass);
 }
 
 std::optional<orbit::Pass> Tracker::pass_at(int db_index, orbit::UtcTime t) const {
-  if (db_index < 0 || db_index >= static_cast<int>(model_.db.satellites.size())) return std::nullopt;
-  const orbit::Sgp4& sgp4 = *cached(db_index).sgp4;
   orbit::PassOptions po;
   po.precision_s = 1.0;
+  if (const auto b = body_target(db_index)) {
+    // A body's pass lasts hours: searched from 18 hours before, the one overlapping t kept.
+    const orbit::Observer where = model_.station.observer();
+    for (const orbit::Pass& p : orbit::find_body_passes(*b, where, orbit::add_minutes(t, -18 * 60.0),
+                                                        orbit::add_minutes(t, 42 * 60.0), po))
+      if (p.los >= t) return p;
+    return std::nullopt;
+  }
+  if (db_index < 0 || db_index >= static_cast<int>(model_.db.satellites.size())) return std::nullopt;
+  const orbit::Sgp4& sgp4 = *cached(db_index).sgp4;
   // From half an hour before, so that a pass in progress at t is found from its AOS (a low orbit's
   // pass is shorter); one that ended before t is passed over. A pass still up at the start of that
   // search (a high orbit's, hours long) is searched again from 6 hours and then a day before; one
@@ -152,7 +197,7 @@ Decision Tracker::tick() {
   Decision d;
   const int n_db = static_cast<int>(model_.db.satellites.size());
 
-  if (mode_ == Mode::single && single_ >= 0 && single_ < n_db) {
+  if (mode_ == Mode::single && known(single_)) {
     candidates_.push_back(compute(single_, t, true));
     d.followed = single_;
   } else if (mode_ == Mode::multi) {

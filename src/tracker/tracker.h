@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "orbit/passes.h"
+#include "orbit/sky.h"
 #include "station/clock.h"
 #include "store/model.h"
 #include "tracker/pass_memo.h"
@@ -18,6 +19,15 @@
 namespace tb::tracker {
 
 enum class Mode { off, single, multi };
+
+// The Sun and the Moon as targets (issue 58): indices below every database index (and apart from
+// -1, "none"), taken wherever a database index is by track_single, observe, pass_at and pass_track.
+// Their SatNow has list_number 0, no downlink Doppler, and a pass from orbit::next_body_pass through
+// the one pass cache.
+inline constexpr int kSunTarget = -2;
+inline constexpr int kMoonTarget = -3;
+std::optional<orbit::Body> body_target(int index);
+int target_index(orbit::Body b);
 
 // One satellite, now.
 struct SatNow {
@@ -91,6 +101,8 @@ class Tracker {
 
  private:
   SatNow compute(int db_index, orbit::UtcTime t, bool with_pass) const;
+  SatNow compute_body(orbit::Body b, orbit::UtcTime t, bool with_pass) const;
+  bool known(int index) const;  // a database index or a body's
   std::vector<orbit::Observation> track(int db_index, orbit::UtcTime from, double minutes, int intervals) const;
   const store::Model& model_;
   const station::Clock& clock_;

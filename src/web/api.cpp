@@ -149,6 +149,7 @@ std::optional<std::string> allowed_methods(const std::string& path) {
       {"/api/v1/log/delete", "POST"},
       {"/api/v1/track", "POST"},
       {"/api/v1/rotor", "POST"},
+      {"/api/v1/calibrate", "POST"},
       {"/api/v1/radio", "POST"},
       {"/api/v1/station", "POST"},
       {"/api/v1/standby", "POST"},
@@ -355,6 +356,12 @@ Response Api::post(const std::string& path, const json& b, const std::string& pe
     } else {
       return error(400, "rotor: expected {\"control\":true|false}, {\"action\":\"stop\"|\"park\"} or {\"goto\":{...}}");
     }
+  } else if (path == "/api/v1/calibrate") {
+    // "This is the Sun/Moon" and its undo (issue 58, docs/calibration.md).
+    const std::string body = b.contains("body") && b["body"].is_string() ? b["body"].get<std::string>() : "";
+    if (const auto which = orbit::parse_body(body)) done = ops.calibrate(*which);
+    else if (boolean("undo").value_or(false)) done = ops.calibrate_undo();
+    else return error(400, "calibrate: expected {\"body\":\"sun\"|\"moon\"} or {\"undo\":true}");
   } else if (path == "/api/v1/radio") {
     if (const auto bad = radio_request(ops, b, done)) return error(400, *bad);
   } else if (path == "/api/v1/station") {

@@ -37,4 +37,7 @@ has trakbox elements x.json --to omm-k omm-kvn || fail "--to formats: $(complete
 has trakbox at attach || fail "the attach command"
 has trakbox status --j --json || fail "status --json"
 has trakbox --on-event l 'los=' || fail "--on-event kinds: $(complete_of trakbox --on-event l)"
+has trakbox cal calibrate || fail "the calibrate command"
+has trakbox calibrate m moon || fail "calibrate's words: $(complete_of trakbox calibrate m)"
+has trakbox calibrate sun --re --reading || fail "calibrate --reading"
 echo "bash_completion.sh: passed"

@@ -217,6 +217,9 @@ function drawStatus(st) {
     : (moves || "(" + (a.action || "hold") + ")" + (a.parking_enabled === false && a.action === "hold" ? ", parking is off" : "")) +
       (a.message ? " " + a.message : "") + (a.follows ? " · " + a.follows : "");
   $("btn-park").hidden = a.parking_enabled === false;
+  const k = a.sky_calibration;
+  $("ant-offsets").textContent = !k ? "-" : (k.az_offset_deg >= 0 ? "+" : "") + fixed(k.az_offset_deg, 2) + "° az, " +
+    (k.el_offset_deg >= 0 ? "+" : "") + fixed(k.el_offset_deg, 2) + "° el" + (k.source ? " (" + k.source + ", " + k.time + ")" : "");
   const pass = lastSky && lastSky.pass;
   $("ant-plan").textContent = planText(pass, a);
   rotorOn = !!a.rotor_control;
@@ -447,6 +450,9 @@ wireTuning();
 $("btn-rotor").addEventListener("click", () => post("/api/v1/rotor", { control: !rotorOn }));
 $("btn-stop").addEventListener("click", () => post("/api/v1/rotor", { action: "stop" }));
 $("btn-park").addEventListener("click", () => post("/api/v1/rotor", { action: "park" }));
+$("btn-cal-sun").addEventListener("click", () => post("/api/v1/calibrate", { body: "sun" }));
+$("btn-cal-moon").addEventListener("click", () => post("/api/v1/calibrate", { body: "moon" }));
+$("btn-cal-undo").addEventListener("click", () => post("/api/v1/calibrate", { undo: true }));
 $("btn-doppler").addEventListener("click", () => post("/api/v1/radio", { doppler: !doppler }));
 $("btn-multi").addEventListener("click", chooseMulti);  // control.js: asks which satellites
 $("btn-refresh").addEventListener("click", () => post("/api/v1/elements/refresh", {}));

@@ -56,7 +56,8 @@ TEST_CASE("Bad rotator specs say what is wrong and what is expected") {
     CHECK_FALSE(r.spec);
     return r.error;
   };
-  CHECK(err("simulated:fast") == "bad --rotator 'simulated:fast': simulated takes no parameters");
+  CHECK(err("simulated:fast") == "bad --rotator 'simulated:fast': expected simulated or simulated:mount=AZ,EL (a mounting error in degrees: "
+        "the rotator reads that much more than where the antenna points), e.g. simulated:mount=2.0,-1.0");
   CHECK(err("hamlib") == "bad --rotator 'hamlib': missing MODEL; expected hamlib:MODEL:DEVICE[:BAUD], e.g. hamlib:603:/dev/ttyUSB0:9600");
   CHECK(err("hamlib:nosuch:/dev/ttyUSB0").find("MODEL 'nosuch' is neither a Hamlib rotator model number nor the name "
                                                "of one (see `rotctl -l`)") != std::string::npos);
@@ -123,4 +124,16 @@ TEST_CASE("A Hamlib rotator by its name, as radios are: hamlib:GS-232B is model 
     CHECK(r.spec->device == "/dev/ttyUSB0");
     CHECK(r.spec->baud == 9600);
   }
+}
+
+TEST_CASE("The simulated rotator's mounting error: simulated:mount=AZ,EL, written back as given") {
+  const SpecResult r = parse_simulated_spec("simulated:mount=2.0,-1.0");
+  REQUIRE(r.spec);
+  CHECK(r.spec->kind == RotatorSpec::Kind::simulated);
+  CHECK(r.spec->mount_az_deg == 2.0);
+  CHECK(r.spec->mount_el_deg == -1.0);
+  CHECK(to_string(*r.spec) == "simulated:mount=2,-1");
+  CHECK(to_string(*parse_simulated_spec("simulated").spec) == "simulated");
+  for (const char* bad : {"simulated:mount=2", "simulated:mount=2,x", "simulated:mount=50,0", "simulated:mount="})
+    CHECK(parse_simulated_spec(bad).error.find("each within 45 deg") != std::string::npos);
 }

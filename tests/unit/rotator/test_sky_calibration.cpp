@@ -230,3 +230,50 @@ TEST_CASE("Solar flux between the RSTN frequencies") {
   CHECK_FALSE(solar_flux_at(bad, 1415.0).ok());
   CHECK_FALSE(solar_flux_at({}, 1415.0).ok());
 }
+
+TEST_CASE("Sky offsets: the correction added to the stored offsets, recorded, and undone") {
+  RotatorConfig c;
+  c.az_offset_deg = 0.5;
+  const OffsetChange ch = offsets_for(c, {-2.0, 1.0}, "sun", "2026-03-20T09:00:00Z");
+  REQUIRE(ch.ok());
+  CHECK(ch.after.az_offset_deg == doctest::Approx(-1.5).epsilon(1e-12));
+  CHECK(ch.after.el_offset_deg == doctest::Approx(1.0).epsilon(1e-12));
+  CHECK(ch.after.sky.source == "sun");
+  CHECK(ch.after.sky.time == "2026-03-20T09:00:00Z");
+  CHECK(ch.after.sky.previous_az_offset_deg == 0.5);
+  CHECK(ch.after.sky.previous_source.empty());
+  // Undo: back to c exactly, the undone kept as "previous" (a second undo redoes).
+  const OffsetChange back = undo_offsets(ch.after);
+  REQUIRE(back.ok());
+  CHECK(back.after.az_offset_deg == 0.5);
+  CHECK(back.after.el_offset_deg == 0.0);
+  CHECK(back.after.sky.source.empty());
+  CHECK(back.after.sky.previous_source == "sun");
+  CHECK(undo_offsets(back.after).after == ch.after);
+  // Nothing recorded: nothing to undo; an offset beyond 45 deg is refused, nothing changed.
+  CHECK(undo_offsets(RotatorConfig{}).error == "no sky calibration to undo");
+  const OffsetChange far = offsets_for(c, {0.0, -46.0}, "moon", "2026-03-20T09:00:00Z");
+  CHECK(far.error.find("the elevation offset would be -46.00 deg, beyond 45 either way") == 0);
+  CHECK(far.after == c);
+}
+
+TEST_CASE("Sky offsets: the reading moves by the offset exactly, the skew's whole counts beside it") {
+  RotatorConfig c;
+  const AdcModel plain(c, tb::station::RotorStart::north);
+  c.az_offset_deg = -2.0;
+  c.el_offset_deg = 1.0;
+  c.az_skew = 3;
+  const AdcModel off(c, tb::station::RotorStart::north);
+  for (const double raw : {100.0, 511.0, 900.0}) {
+    CAPTURE(raw);
+    const double skew_deg = 3 * plain.deg_per_count(Axis::az);
+    CHECK(off.az_deg_from_raw(raw) == doctest::Approx(plain.az_deg_from_raw(raw) - 2.0 + skew_deg).epsilon(1e-12));
+    CHECK(off.el_from_counts(off.corrected(Axis::el, raw / 2)) ==
+          doctest::Approx(plain.el_from_counts(plain.corrected(Axis::el, raw / 2)) + 1.0).epsilon(1e-12));
+    CHECK(off.raw(Axis::az, off.corrected(Axis::az, raw)) == doctest::Approx(raw).epsilon(1e-12));
+  }
+  CHECK(validate(c).empty());
+  c.el_offset_deg = 45.5;
+  REQUIRE_FALSE(validate(c).empty());
+  CHECK(validate(c).front() == "elevation offset 45.5 deg: expected -45 to 45");
+}

@@ -182,3 +182,26 @@ TEST_CASE("a listener's own edit is announced after the one in progress") {
   CHECK(order[0] == "station position");
   CHECK(order[1] == "rotor_control");
 }
+
+TEST_CASE("the sky calibration: offsets and their record saved and read back; older files read; bad records refused") {
+  Model m = factory_defaults();
+  m.rotator.az_offset_deg = -2.0;
+  m.rotator.el_offset_deg = 1.0;
+  m.rotator.sky = {"sun", "2026-03-20T09:00:00Z", 0.5, -0.25, "moon", "2026-03-19T21:00:00Z"};
+  const json doc = to_json(m);
+  CHECK(model_from_json(doc).rotator == m.rotator);
+  // A state file from before issue 58: no offsets, no record.
+  json old = doc;
+  old["rotator"].erase("az_offset_deg");
+  old["rotator"].erase("el_offset_deg");
+  old["rotator"].erase("sky_calibration");
+  const Model read = model_from_json(old);
+  CHECK(read.rotator.az_offset_deg == 0.0);
+  CHECK(read.rotator.sky.source.empty());
+  json bad = doc;
+  bad["rotator"]["sky_calibration"]["source"] = "venus";
+  CHECK(reader_refusal(bad) == "rotator.sky_calibration.source: 'venus': expected sun, moon, sun scan or nothing");
+  bad = doc;
+  bad["rotator"]["sky_calibration"]["time"] = "yesterday";
+  CHECK(reader_refusal(bad) == "rotator.sky_calibration.time: 'yesterday' is not an ISO 8601 UTC time");
+}
