@@ -68,7 +68,8 @@ nlohmann::json antenna_json(StationApp& app) {
                    {"link_message", rs.link.message},
                    {"connects", rs.link.connects},
                    {"message", rs.message},
-                   {"on_target", rs.on_target}};
+                   {"on_target", rs.on_target},
+                   {"at_limit", rs.limited}};
   // travel_deg: degrees from the rotor stop (which way round, on an overlap rotator).
   if (const auto pos = st.antenna())
     a["position"] = {{"az_deg", pos->az}, {"el_deg", pos->el}, {"travel_deg", rs.az.travel}};

@@ -107,7 +107,9 @@ RotatorPosition Controller::set_target(AzEl compass, Piece piece) {
 }
 
 RotatorPosition Controller::set_target(RotatorPosition p, Approach how) {
+  const RotatorPosition asked = p;
   p = model_.clamp(p);
+  status_.limited = !(p == asked);
   if (status_.mode != ControlMode::target || !status_.target || !(*status_.target == p)) {
     for (Axis a : kAxes) loop(a).stalled = false;
   }
@@ -155,6 +157,7 @@ void Controller::stop() {
   lines_off();
   status_.mode = ControlMode::idle;
   status_.target.reset();
+  status_.limited = false;
   status_.on_target = false;
   const bool adc = driver_->as_adc() != nullptr;
   for (Axis a : kAxes) {
@@ -200,6 +203,7 @@ void Controller::manual(Axis a, Drive d) {
   if (status_.mode != ControlMode::manual) {
     // Leaving target mode: nothing else keeps moving.
     status_.target.reset();
+    status_.limited = false;
     az_.manual_goal.reset();
     el_.manual_goal.reset();
     for (Axis x : kAxes) {

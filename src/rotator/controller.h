@@ -52,6 +52,9 @@ struct Status {
   ControlMode mode = ControlMode::idle;
   std::optional<RotatorPosition> target;  // clamped target, rotator coordinates
   bool on_target = false;     // mode target, both axes inside the dead band and not moving
+  // The target asked for lay outside the limits and was clamped to them: on target means "as near
+  // as the limits let it", said so (issue 60: "on target" at 0.0 deg with 349.4 wanted).
+  bool limited = false;
   std::string message;        // the latest thing the operator should know ("" when nothing)
 };
 

@@ -416,14 +416,19 @@ json Api::sky() {
   const auto antenna = station_.antenna();
   j["antenna"] = antenna ? az_el(antenna->az, antenna->el) : json(nullptr);
   const tracker::Decision& d = tr.last_decision();
-  // One word for the antenna panel: fault, moving, parked, on target or idle.
+  // One word for the antenna panel: fault, moving, parked, on target (at its limit when the target
+  // was clamped to the limits) or idle.
   const rotator::Status& rs = station_.rotator().status();
   const bool moving = rs.az.moving != rotator::Drive::stop || rs.el.moving != rotator::Drive::stop;
   const bool parked = rs.on_target && station_.rotator().config().parking_enabled && rs.target &&
                       (tr.mode() == tracker::Mode::off || d.antenna == tracker::Decision::Antenna::park) &&
                       antenna && rotator::azimuth_distance(antenna->az, station_.rotator().config().parking.az) < 2.0 &&
                       std::abs(antenna->el - station_.rotator().config().parking.el) < 2.0;
-  j["antenna_state"] = !rs.link.ok() ? "fault" : moving ? "moving" : parked ? "parked" : rs.on_target ? "on target" : "idle";
+  j["antenna_state"] = !rs.link.ok() ? "fault"
+                       : moving       ? "moving"
+                       : parked       ? "parked"
+                       : rs.on_target ? (rs.limited ? "at its limit" : "on target")
+                                      : "idle";
   // Where the antenna was last sent by whoever holds it (issue 44): the tracker's decision only while
   // trakbox's tracking drives it, else the rotator's commanded target (a goto, rotctld, Satrak).
   const tracker::StationLoop::Aim aim = station_.aim();

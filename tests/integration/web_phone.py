@@ -67,6 +67,8 @@ def passband(d, w):
     check(t1["uplink_spot_hz"] == 145960000, f"uplink spot by the rule: {t1['uplink_spot_hz']}")
     check(abs(dd - 5000) < 500 and abs(du + 5000) < 200, f"dials {dd:+} Hz down, {du:+} Hz up")
     poll("the page shows the new spot", lambda: text(d, "tune-spot-down") == "435.645000", 5)
+    # The answer under the tuning buttons that asked, not in the tracking list's panel (issue 60).
+    poll("the tuning card's answer", lambda: text(d, "tune-reply").startswith("spot 435645000 Hz down"), 5)
     print(f"page: RS-44 passband +5 kHz -> downlink dial {dd:+} Hz, uplink dial {du:+} Hz")
     d.execute_script("document.getElementById('tune-step').value = '100'")
     click(d, "rx-up")

@@ -264,7 +264,10 @@ function drawTuning(t) {
   if (!t) return;
   setText("tune-sat", t.satellite);
   drawModes(t);
-  setText("tune-spot-down", mhz6(t.downlink_spot_hz));
+  // An FM satellite's RX offset is the Offset column's, not the spot's (issue 60: shown in both): the
+  // spot of a satellite without a passband is its frequency; a transponder's spot is where it is.
+  setText("tune-spot-down", mhz6(t.passband || typeof t.rx_offset_hz !== "number" ? t.downlink_spot_hz
+                                                                                  : t.downlink_spot_hz - t.rx_offset_hz));
   setText("tune-spot-up", mhz6(t.uplink_spot_hz));
   setText("tune-dop-down", t.downlink_spot_hz ? signedHz(t.downlink_doppler_hz) : "-");
   setText("tune-dop-up", t.uplink_spot_hz ? signedHz(t.uplink_doppler_hz) : "-");
@@ -298,7 +301,7 @@ function drawModes(t) {
     b.type = "button";
     b.textContent = m;
     b.setAttribute("aria-pressed", m === t.mode ? "true" : "false");
-    b.addEventListener("click", () => post("/api/v1/radio", { mode: m }));
+    b.addEventListener("click", () => tune({ mode: m }));
     box.appendChild(b);
   }
 }
@@ -306,11 +309,11 @@ function tuneStep() { return Number($("tune-step").value) || 1000; }
 function moveSpot(dir) {
   if (!tuning || !tuning.passband) return;
   const [lo, hi] = tuning.passband.downlink;
-  post("/api/v1/radio", { spot_hz: Math.min(hi, Math.max(lo, tuning.downlink_spot_hz + dir * tuneStep())) });
+  tune({ spot_hz: Math.min(hi, Math.max(lo, tuning.downlink_spot_hz + dir * tuneStep())) });
 }
 function moveOffset(key, dir) {
   if (!tuning) return;
-  post("/api/v1/radio", { [key + "_offset_hz"]: tuning[key + "_offset_hz"] + dir * tuneStep() });
+  tune({ [key + "_offset_hz"]: tuning[key + "_offset_hz"] + dir * tuneStep() });
 }
 function wireTuning() {
   const step = localStorage.getItem("trakbox-step");
@@ -318,12 +321,12 @@ function wireTuning() {
   $("tune-step").addEventListener("change", () => localStorage.setItem("trakbox-step", $("tune-step").value));
   $("pb-down").addEventListener("click", () => moveSpot(-1));
   $("pb-up").addEventListener("click", () => moveSpot(1));
-  $("pb-slider").addEventListener("change", () => post("/api/v1/radio", { spot_hz: Number($("pb-slider").value) }));
+  $("pb-slider").addEventListener("change", () => tune({ spot_hz: Number($("pb-slider").value) }));
   $("rx-down").addEventListener("click", () => moveOffset("rx", -1));
   $("rx-up").addEventListener("click", () => moveOffset("rx", 1));
   $("tx-down").addEventListener("click", () => moveOffset("tx", -1));
   $("tx-up").addEventListener("click", () => moveOffset("tx", 1));
-  $("btn-offsets-reset").addEventListener("click", () => post("/api/v1/radio", { rx_offset_hz: 0, tx_offset_hz: 0 }));
+  $("btn-offsets-reset").addEventListener("click", () => tune({ rx_offset_hz: 0, tx_offset_hz: 0 }));
 }
 
 function locator(lat, lon) {
@@ -350,18 +353,22 @@ function addEvent(e, atTop) {
   while (list.children.length > 100) list.lastChild.remove();
 }
 
-async function post(path, body) {
-  $("reply").textContent = "…";
+// A change asked of the station; its answer (the note, or why not) is shown under the buttons
+// that asked (`where`: the tuning card's own line for the tuning buttons, issue 60).
+async function post(path, body, where = "reply") {
+  const said = $(where);
+  said.textContent = "…";
   try {
     const res = await fetch(path, { method: "POST", headers: { "Content-Type": "application/json" },
                                     body: JSON.stringify(body), credentials: "same-origin" });
     const j = await res.json();
     if (res.status === 401) { location.href = "/login"; return; }
-    $("reply").textContent = res.ok ? j.note : j.error;
+    said.textContent = res.ok ? j.note : j.error;
   } catch (e) {
-    $("reply").textContent = "the station does not answer";
+    said.textContent = "the station does not answer";
   }
 }
+function tune(body) { return post("/api/v1/radio", body, "tune-reply"); }
 
 // A station that stops answering is shown so: every value greyed, "station not answering since"
 // the time of the last state heard, the buttons disabled, until a state comes again.

@@ -108,10 +108,15 @@ TEST_CASE("Targets are clamped to the limits and the antenna stops there") {
   CHECK(t == RotatorPosition{340.0, 60.0});
   rig.run(120s);
   CHECK(rig.ctl->status().on_target);
+  CHECK(rig.ctl->status().limited);   // on target as near as the limits let it, said so (issue 60)
   CHECK(rig.ctl->status().az.at_high_limit);
   CHECK(rig.ctl->status().el.at_high_limit);
   CHECK(rig.sim->true_position().az_travel <= 340.0 + 3 * 0.352);
   CHECK(rig.sim->true_position().el <= 60.0 + 0.18);
+  rig.ctl->set_target(AzEl{300.0, 30.0});   // inside: no longer limited
+  CHECK_FALSE(rig.ctl->status().limited);
+  rig.ctl->stop();
+  CHECK_FALSE(rig.ctl->status().limited);
 }
 
 TEST_CASE("Park goes to the parking position only when parking is enabled") {
