@@ -70,13 +70,15 @@ std::string help_text(const std::string& command) {
 }
 
 // Connects to the station's socket; -1 with a message naming the path when it cannot.
-int connect_station(const std::string& path, const std::string& command, bool& not_running) {
+int connect_station(const std::string& path, const std::string& command, bool& not_running, bool quiet) {
   not_running = false;
+  // Quiet: the caller only wants to know whether a station answers (`next` asking its clock).
+  std::FILE* said = quiet ? nullptr : stderr;
   const int fd = ::socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
   sockaddr_un addr{};
   addr.sun_family = AF_UNIX;
   if (fd < 0 || path.size() >= sizeof addr.sun_path) {
-    std::fprintf(stderr, "trakbox %s: %s: not a usable socket path\n", command.c_str(), path.c_str());
+    if (said) std::fprintf(said, "trakbox %s: %s: not a usable socket path\n", command.c_str(), path.c_str());
     if (fd >= 0) ::close(fd);
     return -1;
   }
@@ -84,17 +86,18 @@ int connect_station(const std::string& path, const std::string& command, bool& n
   if (::connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0) {
     const int e = errno;
     ::close(fd);
+    if (e == ENOENT || e == ECONNREFUSED) not_running = true;
+    if (!said) return -1;
     if (e == ENOENT || e == ECONNREFUSED) {
-      not_running = true;
-      std::fprintf(stderr, "trakbox %s: no trakbox is running there (%s: %s)\n", command.c_str(), path.c_str(),
+      std::fprintf(said, "trakbox %s: no trakbox is running there (%s: %s)\n", command.c_str(), path.c_str(),
                    e == ENOENT ? "no such socket" : "nothing answers");
     } else if (e == EACCES) {
-      std::fprintf(stderr,
+      std::fprintf(said,
                    "trakbox %s: %s: permission denied (the station's socket is for its user and the trakbox "
                    "group: docs/service.md)\n",
                    command.c_str(), path.c_str());
     } else {
-      std::fprintf(stderr, "trakbox %s: %s: %s\n", command.c_str(), path.c_str(), std::strerror(e));
+      std::fprintf(said, "trakbox %s: %s: %s\n", command.c_str(), path.c_str(), std::strerror(e));
     }
     return -1;
   }
@@ -249,7 +252,7 @@ int attach_session(int fd, bool raw_tty) {
 
 int attach_to(const std::string& socket_path, bool line) {
   bool not_running = false;
-  const int fd = connect_station(socket_path, "attach", not_running);
+  const int fd = connect_station(socket_path, "attach", not_running, false);
   if (fd < 0) return not_running ? kStatusNotRunning : kExitFailure;
   const bool tty = ::isatty(STDIN_FILENO) && ::isatty(STDOUT_FILENO);
   const char* term = std::getenv("TERM");
@@ -304,7 +307,7 @@ int request(const std::string& command, const std::vector<std::string>& args, st
   a = read_args(command, args, code);
   if (!a) return -1;
   bool not_running = false;
-  const int fd = connect_station(a->socket, command, not_running);
+  const int fd = connect_station(a->socket, command, not_running, false);
   code = not_running ? kStatusNotRunning : kExitFailure;
   if (fd < 0) return -1;
   if (!send_all(fd, command + "\n")) {
@@ -316,8 +319,8 @@ int request(const std::string& command, const std::vector<std::string>& args, st
 }
 
 std::optional<std::string> station_request(const std::string& socket, const std::string& command,
-                                           const std::string& line, bool& not_running) {
-  const int fd = connect_station(socket, command, not_running);
+                                           const std::string& line, bool& not_running, bool quiet) {
+  const int fd = connect_station(socket, command, not_running, quiet);
   if (fd < 0) return std::nullopt;
   if (!send_all(fd, line + "\n")) {
     std::fprintf(stderr, "trakbox %s: %s: the station closed the connection\n", command.c_str(), socket.c_str());
@@ -376,7 +379,7 @@ int run_station_command(const std::string& command, const std::vector<std::strin
   if (const auto mode = a->options.value("mode")) line += " --mode " + *mode;
   for (const std::string& w : words) line += " " + w;
   bool not_running = false;
-  const int fd = connect_station(a->socket, command, not_running);
+  const int fd = connect_station(a->socket, command, not_running, false);
   if (fd < 0) return not_running ? kStatusNotRunning : kExitFailure;
   if (!send_all(fd, line + "\n")) {
     ::close(fd);

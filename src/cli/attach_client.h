@@ -24,6 +24,6 @@ int attach_to(const std::string& socket_path, bool line);
 // One request line to the station's socket and everything it answers; nullopt (said on stderr,
 // `not_running` set when nothing runs there) when it cannot be asked.
 std::optional<std::string> station_request(const std::string& socket, const std::string& command,
-                                           const std::string& line, bool& not_running);
+                                           const std::string& line, bool& not_running, bool quiet = false);
 
 }  // namespace tb::app

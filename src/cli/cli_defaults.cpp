@@ -4,7 +4,15 @@
 #include <chrono>
 #include <cmath>
 
+#include <cstdio>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/attach_client.h"
 #include "live/station_app.h"
+#include "live/station_socket.h"
+#include "orbit/time.h"
+#include "util/json_limits.h"
 #include "cli/tracker_config.h"
 #include "station/station.h"
 #include "store/model.h"
@@ -132,6 +140,28 @@ std::optional<std::vector<orbit::Elements>> StoredStation::database() {
 std::optional<std::vector<orbit::Elements>> StoredStation::tracking_list() {
   if (!load()) return std::nullopt;
   return list_;
+}
+
+std::optional<orbit::UtcTime> running_station_time(const std::optional<std::string>& state_dir) {
+  const std::string dir = state_dir ? *state_dir : store::default_state_directory().string();
+  bool not_running = false;
+  const auto text = station_request(socket_for_state(dir), "next", "status", not_running, true);
+  if (!text) return std::nullopt;
+  std::string why;
+  const nlohmann::json doc = json_limits::parse_bounded<nlohmann::json>(*text, why);
+  if (!doc.is_object() || !doc.contains("time") || !doc["time"].is_string()) return std::nullopt;
+  return orbit::parse_iso8601(doc["time"].get<std::string>());
+}
+
+orbit::UtcTime default_start(const std::optional<std::string>& state_dir, const char* command) {
+  const orbit::UtcTime wall = std::chrono::time_point_cast<std::chrono::microseconds>(std::chrono::system_clock::now());
+  const auto t = running_station_time(state_dir);
+  // A station running on a clock of its own (--clock): its time, said (beyond a minute from the wall's).
+  if (!t) return wall;
+  if (std::chrono::abs(*t - wall) > std::chrono::minutes(1))
+    std::fprintf(stderr, "trakbox %s: from the running station's clock, %s (give --start to choose)\n", command,
+                 orbit::format_iso8601(*t, 0).c_str());
+  return *t;
 }
 
 }  // namespace tb::app

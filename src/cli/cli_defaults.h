@@ -35,6 +35,13 @@ Parsed<orbit::Observer> parse_station_text(std::string_view text);
 // The centre of a Maidenhead locator ("JN18du": 48.854167 N, 2.291667 E), height 0.
 std::optional<orbit::Observer> maidenhead_centre(std::string_view locator);
 Parsed<orbit::UtcTime> parse_time_text(std::string_view text, orbit::UtcTime now);
+// The time of a station running on the state directory (--state, else the default), asked quietly
+// through its socket; nothing when none runs. A station started with --clock lives at its own time.
+std::optional<orbit::UtcTime> running_station_time(const std::optional<std::string>& state_dir);
+// The default --start of next, passes and schedule: the running station's time (said on stderr when
+// it is not the wall's), else now (issue 60: they used the system clock beside a --clock station).
+orbit::UtcTime default_start(const std::optional<std::string>& state_dir, const char* command);
+
 Parsed<std::int64_t> parse_frequency_text(std::string_view text);
 
 // The station, database and tracking list of a state directory (--state, else the default the

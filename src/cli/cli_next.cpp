@@ -214,7 +214,7 @@ int run_next(std::vector<std::string> args) {
   } else if (!(station = stored.station())) {
     return fail({"--station", "missing, and " + stored.error()});
   }
-  UtcTime start = wall_start;
+  UtcTime start = o.value("start") ? wall_start : default_start(o.value("state"), "next");
   if (const auto t = o.value("start")) {
     const Parsed<UtcTime> p = parse_time_text(*t, wall_start);
     if (!p.value) return fail({"--start", p.error});

@@ -516,7 +516,7 @@ int run_schedule(std::vector<std::string> args) {
   if (run.done) return *run.done;
   OptionReader& in = run.in;
   const auto station = read_station(in, run.stored);
-  const auto start = read_time(in, "start", wall_now());
+  const auto start = read_time(in, "start", run.parsed.has("start") ? wall_now() : default_start(run.parsed.value("state"), "schedule"));
   // One row a minute unless asked otherwise (issue 39), as menu 2's schedule steps by default.
   const auto step_s = in.number("step", false, "SECONDS, a number > 0 (at most one day)", Range{0.0, 86400.0, true})
                           .value_or(60.0);

@@ -223,7 +223,7 @@ int run_passes(std::vector<std::string> args) {
   const std::vector<orbit::Body> bodies = run.bodies();
   OptionReader& in = run.in;
   const auto station = read_station(in, run.stored);
-  const auto start = read_time(in, "start", wall_now());
+  const auto start = read_time(in, "start", run.parsed.has("start") ? wall_now() : default_start(run.parsed.value("state"), "passes"));
   const auto hours = in.number("hours", false, "H, a number of hours > 0 (at most 8784)", Range{0.0, 8784.0, true})
                          .value_or(24.0);
   const auto min_el = in.number("min-el", false, "DEG, an elevation -90..90", Range{-90.0, 90.0});

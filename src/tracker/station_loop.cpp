@@ -619,17 +619,19 @@ std::string StationLoop::status_line() const {
   if (radio.fault) line += " | RADIO FAULT";
   if (save_failure_) line += " | STATE NOT SAVED";
   if (!notice_.empty()) line += " | " + notice_;
+  // The drivers by name (issue 30): "Rotor SIM ON ...", "Radio hamlib 3081 D ...", before the longer
+  // notes (who holds what, the pass an outside client follows, the GPS, the pass's coverage), so
+  // that 100 to 120 columns keep the antenna and the radio (issue 60: they were cut off there).
+  std::snprintf(buf, sizeof buf, " | Rotor %s %s %s | Radio %s %s", store::driver_label(model_.rotator_driver).c_str(),
+                model_.rotor_control ? "ON " : "OFF", rot.c_str(), store::driver_label(model_.radio_driver).c_str(),
+                rig.c_str());
+  line += buf;
   if (const std::string held = held_text(control_); !held.empty()) line += " | " + held;
   if (const std::string follows = client_follow_text(); !follows.empty()) line += " | " + follows;
   if (gps_)
     if (const std::string w = gps_->status_word(); !w.empty()) line += " | " + w;
   if (const SatNow* f = tracker_.followed(); f && tracker_.mode() != Mode::off)
     if (const auto note = coverage_note(f->db_index)) line += " | " + *note;
-  // The drivers by name (issue 30): "Rotor SIM ON ...", "Radio hamlib 3081 D ...".
-  std::snprintf(buf, sizeof buf, " | Rotor %s %s %s | Radio %s %s", store::driver_label(model_.rotator_driver).c_str(),
-                model_.rotor_control ? "ON " : "OFF", rot.c_str(), store::driver_label(model_.radio_driver).c_str(),
-                rig.c_str());
-  line += buf;
   if (!web_page_url().empty()) line += " | " + web_page_url();
   return line;
 }

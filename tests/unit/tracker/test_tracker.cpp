@@ -361,6 +361,10 @@ TEST_CASE("The status line puts faults first, within 80 columns, before notices 
   f.step(std::chrono::milliseconds(500));
   f.step(std::chrono::milliseconds(500));
   CHECK(f.station->status_line().find("FAULT") == std::string::npos);
+  // Healthy, the antenna and the radio come before the longer notes: within 120 columns (issue 60).
+  f.station->set_notice("");
+  const std::string healthy = f.station->status_line();
+  CHECK_MESSAGE(healthy.substr(0, 120).find("| Radio SIM D ") != std::string::npos, healthy);
 }
 
 namespace {
