@@ -32,7 +32,7 @@ const std::vector<OptionSpec> kNextSpecs{
     {"station", "LAT,LON[,HEIGHT_M]|LOCATOR", "station (as for passes); default the stored station (menu 4)"},
     {"state", "DIR", "the state the menus keep (default as for the menus): station, database, tracking list"},
     {"elements", "FILE", "an element file instead of the stored database"},
-    {"start", "ISO8601|now|+2h", "look from this time (default now)"},
+    {"start", "ISO8601|now|+2h", "look from this time (default: now, or a station running on the state directory: its clock)"},
     {"min-el", "DEG", "only passes whose maximum elevation reaches DEG (default 0: a pass that never rises is no "
                       "pass)"},
     {"watch", "", "redraw every second with the time to AOS or LOS, until interrupted"},

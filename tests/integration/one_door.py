@@ -131,6 +131,12 @@ def running_case(state, data):
                 return None
             return doc if doc.get("running") else None
         poll("the service's status", status, 20)
+        # next and passes without --start look from the running station's clock, not the wall's (issue 60).
+        r = run("next", "ISS", "--state", state)
+        check(r.returncode == 0 and "from the running station's clock, 2026-05-21T12:" in r.stderr.decode()
+              and "from 2026/05/21 12:" in r.stdout.decode(), f"next beside a --clock station: {r.stdout.decode()} {r.stderr.decode()}")
+        r = run("passes", "--sat", "ISS", "--hours", "2", "--state", state)
+        check(r.returncode == 0 and "from 2026-05-21T12:" in r.stdout.decode(), f"passes beside it: {r.stdout.decode()[:300]}")
         r = run("settings", "set", "sharing.handback_s", "45", "--state", state)
         check(r.returncode == 0 and "sharing.handback_s = 45 s" in r.stdout.decode(),
               f"set through the running station: {r.stdout.decode()} {r.stderr.decode()}")
