@@ -100,10 +100,12 @@ std::unique_ptr<RotatorDriver> make_rotator(const RotatorChoice& choice, const R
 }
 
 std::string rotator_list_text() {
-  std::string out = fmt::format("{:<27} {:<7} {:<26} {:<22} {}\n", "rotator spec", "link", "defaults", "reads back",
-                                "rotator");
+  // Two lines a row, within 80 columns: the form and what it is; then its link, the protocol's
+  // defaults and what trakbox reads back from it.
+  std::string out = "rotator spec                 rotator\n";
   for (const RotatorKind& k : kKinds)
-    out += fmt::format("{:<27} {:<7} {:<26} {:<22} {}\n", k.form, k.link, k.defaults, k.reads, k.what);
+    out += fmt::format("{:<28} {}\n{:<28} {}{}; reads back {}\n", k.form, k.what, "", k.link,
+                       k.defaults == "-" ? std::string() : ", " + std::string(k.defaults), k.reads);
   // The controllers most stations own, by Hamlib's number (rotctl -l, Hamlib 4.5) for hamlib:MODEL.
   out += "\nHamlib's numbers (hamlib:MODEL:DEVICE[:BAUD]) of common controllers:\n"
          "  GS-232A 601, GS-232B 603 (az only 611), SPID Rot2Prog 901, Rot1Prog 902,\n"

@@ -63,7 +63,13 @@ TEST_CASE("--rotator: one table for the drivers and a Satrak ACU") {
         "bad --rotator 'pstrotator:192.0.2.20:65535': PORT 65535: its replies come to PORT+1, so at most 65534");
 
   const std::string list = rotator::rotator_list_text();
-  for (const rotator::RotatorKind& k : rotator::rotator_kinds()) CHECK(list.find(std::string(k.form)) != std::string::npos);
+  for (const rotator::RotatorKind& k : rotator::rotator_kinds()) {
+    CHECK(list.find(std::string(k.form)) != std::string::npos);
+    CHECK(list.find(std::string(k.reads)) != std::string::npos);   // each row says what it reads back
+  }
+  std::size_t from = 0;
+  for (std::size_t nl; (nl = list.find('\n', from)) != std::string::npos; from = nl + 1)
+    CHECK_MESSAGE(nl - from <= 80, list.substr(from, nl - from));   // an 80-column terminal
 }
 
 TEST_CASE("--rotator: each row's factory makes its own driver") {
