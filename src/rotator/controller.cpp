@@ -103,7 +103,13 @@ RotatorPosition Controller::set_target(AzEl compass, Piece piece) {
   if (piece == Piece::containing && model_.config().cross_limit_sector)
     if (const auto i = model_.az_piece_for_compass(compass.az)) select_az_piece(*i);
   double current = status_.has_position ? status_.az.travel : (status_.target ? status_.target->az_travel : 0.0);
-  return set_target(model_.target_for(compass, current));
+  const RotatorPosition p = set_target(model_.target_for(compass, current));
+  // Limited when the direction it goes is not the direction asked (a flip over the zenith points
+  // the same way: az + 180, 180 - el).
+  double az = model_.compass_from_travel(p.az_travel), el = p.el;
+  if (el > 90.0) az += 180.0, el = 180.0 - el;
+  status_.limited = status_.limited || azimuth_distance(az, compass.az) > 0.01 || std::abs(el - compass.el) > 0.01;
+  return p;
 }
 
 RotatorPosition Controller::set_target(RotatorPosition p, Approach how) {

@@ -28,12 +28,12 @@ TEST_CASE("--rotator: one table for the drivers and a Satrak ACU") {
   CHECK(rotator::parse_rotator("rotctld:").error.find("missing HOST") != std::string::npos);
   CHECK(rotator::parse_rotator("satrak:").error.find("expected satrak:HOST[:PORT]") != std::string::npos);
   CHECK(rotator::parse_rotator("").error ==
-        "bad --rotator '': unknown rotator ''; expected simulated, hamlib:MODEL:DEVICE[:BAUD], rotctld:HOST[:PORT], "
+        "bad --rotator '': unknown rotator ''; expected simulated[:mount=AZ,EL], hamlib:MODEL:DEVICE[:BAUD], rotctld:HOST[:PORT], "
         "easycomm3:DEVICE[:BAUD], easycomm2:DEVICE[:BAUD], pstrotator:HOST[:PORT], satrak:HOST[:PORT] (trakbox --rotator list)");
   CHECK(rotator::parse_rotator("simulated:fast").error == "bad --rotator 'simulated:fast': expected simulated or simulated:mount=AZ,EL (a mounting error in degrees: "
         "the rotator reads that much more than where the antenna points), e.g. simulated:mount=2.0,-1.0");
   CHECK(rotator::parse_rotator("gs232:/dev/ttyS0").error ==
-        "bad --rotator 'gs232:/dev/ttyS0': unknown rotator 'gs232'; expected simulated, hamlib:MODEL:DEVICE[:BAUD], "
+        "bad --rotator 'gs232:/dev/ttyS0': unknown rotator 'gs232'; expected simulated[:mount=AZ,EL], hamlib:MODEL:DEVICE[:BAUD], "
         "rotctld:HOST[:PORT], easycomm3:DEVICE[:BAUD], easycomm2:DEVICE[:BAUD], pstrotator:HOST[:PORT], satrak:HOST[:PORT] "
         "(trakbox --rotator list)");
   CHECK_FALSE(rotator::parse_rotator("gs232").choice.rotator);
