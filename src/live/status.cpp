@@ -355,11 +355,11 @@ std::vector<std::string> setup_needed(const store::Model& m) {
   if (m.station.callsign.empty() || m.station.callsign == factory.station.callsign)
     out.push_back("callsign not set (" + (m.station.callsign.empty() ? std::string("none") : m.station.callsign) +
                   "): QSOs are logged without STATION_CALLSIGN; set it in menu 4, the page's Station card or "
-                  "`trakbox settings set station.callsign CALL`");
+                  "with trakbox settings set station.callsign CALL");
   if (m.station.lat_deg == factory.station.lat_deg && m.station.lon_deg == factory.station.lon_deg &&
       !m.gps.position_from_gps)
     out.push_back(fmt::format("station position not set: the factory's {:.3f}, {:.3f} ({}) is used; set it in menu 4, "
-                              "the page's Station card or `trakbox --station LAT,LON[,HEIGHT]`",
+                              "the page's Station card or with trakbox --station LAT,LON[,HEIGHT]",
                               m.station.lat_deg, m.station.lon_deg,
                               station::maidenhead_locator(m.station.lat_deg, m.station.lon_deg)));
   return out;
