@@ -18,7 +18,6 @@ error within the allowance (the client's 4-degree step, what the satellite moves
 band). The same stream with HO-113 not in the database (TRAKBOX_DATA without it) goes the nearest way:
 at the crossing a target jumps ~350 degrees of travel and the antenna swings round, pointed away.
 The figures of both runs are printed."""
-import json
 import math
 import os
 import shutil
