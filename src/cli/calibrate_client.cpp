@@ -192,18 +192,10 @@ int scan_on(const std::string& socket, SunScanRequest r) {
 }  // namespace
 
 int run_calibrate(const std::vector<std::string>& args) {
-  std::vector<std::string> words, opts;
-  for (const std::string& a : args) (a.rfind("--", 0) == 0 || !opts.empty() ? opts : words).push_back(a);
-  const ParseOutcome parsed = parse_options(opts, specs());
-  if (parsed.error) {
-    std::fprintf(stderr, "trakbox calibrate: %s (see trakbox calibrate --help)\n", parsed.error->text().c_str());
-    return kExitUsage;
-  }
-  const ParsedOptions& o = parsed.options;
-  if (o.has("help")) {
-    std::fputs((std::string(kUsage) + describe_options(specs())).c_str(), stdout);
-    return kExitOk;
-  }
+  Subcommand sub;
+  if (const auto done = read_subcommand(args, specs(), "calibrate", kUsage, sub)) return *done;
+  const std::vector<std::string>& words = sub.words;
+  const ParsedOptions& o = sub.options;
   const std::string word = words.empty() ? "" : text::lower(words[0]);
   if (words.size() > 1 || (!word.empty() && word != "undo" && !orbit::parse_body(word))) {
     std::fprintf(stderr, "trakbox calibrate: expected sun, moon or undo (see trakbox calibrate --help)\n");

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdio>
 #include <cmath>
 #include <cstdlib>
 
@@ -131,6 +132,24 @@ std::string describe_options(const std::vector<OptionSpec>& specs) {
     text += left + s.help + (s.repeatable ? " (repeatable)" : "") + "\n";
   }
   return text;
+}
+
+std::optional<int> read_subcommand(const std::vector<std::string>& args, const std::vector<OptionSpec>& specs,
+                                   std::string_view name, std::string_view usage, Subcommand& out) {
+  std::vector<std::string> opts;
+  for (const std::string& a : args) (a.rfind("--", 0) == 0 || !opts.empty() ? opts : out.words).push_back(a);
+  ParseOutcome parsed = parse_options(opts, specs);
+  if (parsed.error) {
+    std::fprintf(stderr, "trakbox %.*s: %s (see trakbox %.*s --help)\n", static_cast<int>(name.size()), name.data(),
+                 parsed.error->text().c_str(), static_cast<int>(name.size()), name.data());
+    return kExitUsage;
+  }
+  out.options = std::move(parsed.options);
+  if (out.options.has("help")) {
+    std::fputs((std::string(usage) + describe_options(specs)).c_str(), stdout);
+    return kExitOk;
+  }
+  return std::nullopt;
 }
 
 std::optional<double> to_double(std::string_view text) {

@@ -68,6 +68,17 @@ ParseOutcome parse_options(const std::vector<std::string>& args, const std::vect
 // "  --start MIN          minutes from epoch of the first line" -- one line per option.
 std::string describe_options(const std::vector<OptionSpec>& specs);
 
+// A subcommand's words and options ("trakbox settings set KEY VALUE --state DIR"): the words before
+// the first --option, then the options parsed. read_subcommand returns the exit status when the
+// command is done already: --help printed (`usage` and the options), or a bad option said on
+// stderr as "trakbox NAME: ... (see trakbox NAME --help)".
+struct Subcommand {
+  std::vector<std::string> words;
+  ParsedOptions options;
+};
+std::optional<int> read_subcommand(const std::vector<std::string>& args, const std::vector<OptionSpec>& specs,
+                                   std::string_view name, std::string_view usage, Subcommand& out);
+
 // Strict conversions: the whole text must be the number (no blanks, no trailing junk, finite).
 std::optional<double> to_double(std::string_view text);
 std::optional<std::int64_t> to_int64(std::string_view text);

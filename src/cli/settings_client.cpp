@@ -141,18 +141,10 @@ int on_state_file(const std::filesystem::path& dir, const std::string& data_dir,
 }  // namespace
 
 int run_settings(const std::vector<std::string>& args) {
-  std::vector<std::string> words, opts;
-  for (const std::string& a : args) (a.rfind("--", 0) == 0 || !opts.empty() ? opts : words).push_back(a);
-  const ParseOutcome parsed = parse_options(opts, specs());
-  if (parsed.error) {
-    std::fprintf(stderr, "trakbox settings: %s (see trakbox settings --help)\n", parsed.error->text().c_str());
-    return kExitUsage;
-  }
-  const ParsedOptions& o = parsed.options;
-  if (o.has("help")) {
-    std::fputs((std::string(kUsage) + describe_options(specs())).c_str(), stdout);
-    return kExitOk;
-  }
+  Subcommand sub;
+  if (const auto done = read_subcommand(args, specs(), "settings", kUsage, sub)) return *done;
+  const std::vector<std::string>& words = sub.words;
+  const ParsedOptions& o = sub.options;
   if (!words.empty() && words[0] != "set" && words[0] != "reset") {
     std::fprintf(stderr, "trakbox settings: '%s': expected set or reset (see trakbox settings --help)\n",
                  words[0].c_str());
