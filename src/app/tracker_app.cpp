@@ -352,6 +352,7 @@ std::optional<std::string> apply_command_line(TrackerConfig& c, store::ModelOwne
   }
   if (c.az_travel_deg) set("az-travel", "rotator.az_travel_deg", *c.az_travel_deg);
   if (c.event_min_el_deg) set("event-min-el", "event_min_el_deg", *c.event_min_el_deg);
+  if (c.horizon_mask) set("horizon-mask", "station.horizon_mask", *c.horizon_mask);
   if (c.handback_s) set("handback", "sharing.handback_s", static_cast<long long>(*c.handback_s));
   if (c.exclusive) set("exclusive", "sharing.exclusive", c.exclusive->empty() ? std::string("none") : *c.exclusive);
   if (c.satnogs_station) set("satnogs-station", "sharing.satnogs_station", static_cast<long long>(*c.satnogs_station));

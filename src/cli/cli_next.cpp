@@ -14,6 +14,7 @@
 #include "cli/cli_defaults.h"
 #include "cli/cli_elements.h"
 #include "cli/cli_orbit.h"
+#include "cli/cli_orbit_internal.h"
 #include "cli/options.h"
 #include "orbit/element_age.h"
 #include "orbit/passes.h"
@@ -35,13 +36,16 @@ const std::vector<OptionSpec> kNextSpecs{
     {"start", "ISO8601|now|+2h", "look from this time (default: now, or a station running on the state directory: its clock)"},
     {"min-el", "DEG", "only passes whose maximum elevation reaches DEG (default 0: a pass that never rises is no "
                       "pass)"},
+    {"horizon-mask", "FILE|none", "a horizon mask file (as for passes); default the stored station's when --station "
+                                  "is not given"},
     {"watch", "", "redraw every second with the time to AOS or LOS, until interrupted"},
     no_checksum_option(),
     {"help", "", "show this help"}};
 
 const char* const kNextUsage =
     "usage: trakbox next [SAT...] [--station LAT,LON[,HEIGHT_M]|LOCATOR] [--state DIR] [--elements FILE]\n"
-    "                    [--start ISO8601|now|+2h] [--min-el DEG] [--watch] [--no-checksum]\n"
+    "                    [--start ISO8601|now|+2h] [--min-el DEG] [--horizon-mask FILE|none]\n"
+    "                    [--watch] [--no-checksum]\n"
     "\n"
     "The next pass of each satellite over the station, one line each, soonest first (PREDICT's -p):\n"
     "AOS (at -2.0 deg, the manual's rule) with its azimuth and the time until it, TCA with the maximum\n"
@@ -225,6 +229,7 @@ int run_next(std::vector<std::string> args) {
   options.min_max_elevation_deg = 0.0;  // a pass that never rises above the horizon is no pass
   if (const auto v = in.number("min-el", false, "DEG, an elevation -90..90", Range{-90.0, 90.0}))
     options.min_max_elevation_deg = *v;
+  options.mask = orbit_cli::read_horizon_mask_option(in, o, stored);  // AOS/LOS where the sky is clear
   if (!in.ok()) return fail(*in.error());
 
   // SUN and MOON among the names need no elements.

@@ -19,12 +19,15 @@
 #include "cli/options.h"
 #include "orbit/element_age.h"
 #include "orbit/elements.h"
+#include "orbit/horizon_mask.h"
 #include "orbit/observe.h"
 #include "orbit/sgp4_batch.h"
 #include "orbit/sgp4.h"
 #include "orbit/state_lines.h"
+#include "store/model.h"
 #include "util/format.h"
 #include "util/closest.h"
+#include "util/files.h"
 #include "util/text.h"
 
 namespace tb::app {
@@ -272,6 +275,28 @@ std::optional<orbit::Observer> read_station(OptionReader& in, StoredStation& sto
   const Parsed<orbit::Observer> p = parse_station_text(*text);
   if (!p.value) in.fail("--station", p.error);
   return p.value;
+}
+
+std::shared_ptr<const orbit::HorizonMask> read_horizon_mask_option(OptionReader& in, const ParsedOptions& parsed,
+                                                                   StoredStation& stored) {
+  const auto file = in.text("horizon-mask", false, "");
+  if (!file) {
+    if (parsed.has("station")) return nullptr;
+    const store::Model* m = stored.model();
+    return m ? m->station.mask() : nullptr;
+  }
+  if (*file == "none") return nullptr;
+  const auto content = files::read_whole_file(*file);
+  if (!content) {
+    in.fail("--horizon-mask", "cannot read " + *file);
+    return nullptr;
+  }
+  auto read = orbit::read_horizon_mask(*content, *file);
+  if (!read.mask) {
+    in.fail("--horizon-mask", read.error);
+    return nullptr;
+  }
+  return std::make_shared<const orbit::HorizonMask>(std::move(*read.mask));
 }
 
 std::optional<UtcTime> read_time(OptionReader& in, std::string_view name, UtcTime now) {

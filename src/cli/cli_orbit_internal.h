@@ -1,6 +1,7 @@
 // What the orbit commands share inside src/app: cli_orbit.cpp (propagate, schedule, and the front
 // matter every command has) and cli_passes.cpp (passes). Not for use beyond them.
 #pragma once
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -10,6 +11,7 @@
 #include "cli/cli_elements.h"
 #include "cli/options.h"
 #include "orbit/elements.h"
+#include "orbit/horizon_mask.h"
 #include "orbit/observe.h"
 #include "orbit/sky.h"
 #include "util/format.h"
@@ -53,6 +55,14 @@ inline const OptionSpec kStateOption{"state", "DIR",
                                      "database and tracking list stand in for what is not given"};
 // --station, else the stored station.
 std::optional<orbit::Observer> read_station(OptionReader& in, StoredStation& stored);
+inline const OptionSpec kHorizonMaskOption{
+    "horizon-mask", "FILE|none",
+    "a horizon mask (AZ EL per line, a CSV az,el, or a step list AZ EL ... AZ): AOS and LOS where the sky is "
+    "clear; default the stored station's mask when --station is not given, none otherwise"};
+// --horizon-mask FILE (read, a problem named with its file and line), `none`; else the stored
+// station's mask when --station is not given. Nothing: the plain horizon.
+std::shared_ptr<const orbit::HorizonMask> read_horizon_mask_option(OptionReader& in, const ParsedOptions& parsed,
+                                                                   StoredStation& stored);
 // --NAME as a time (ISO 8601, now, +2h), else now.
 std::optional<UtcTime> read_time(OptionReader& in, std::string_view name, UtcTime now);
 UtcTime wall_now();

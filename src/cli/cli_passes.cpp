@@ -46,6 +46,7 @@ const Command kPasses{
     {repeatable({"sat", "NAME|NUMBER|SUN|MOON", "satellite by name (exact, then any case) or catalog number; "
                                                 "SUN or MOON for the body"}),
      kStationOption,
+     kHorizonMaskOption,
      {"start", "ISO8601|now|+2h", "start of the window, UTC, now (the default), or now plus an amount (+2h)"},
      {"hours", "H", "length of the window in hours (> 0, at most 8784; default 24)"},
      {"min-el", "DEG", "only passes whose maximum elevation reaches DEG (default: those that rise above 0)"},
@@ -227,6 +228,7 @@ int run_passes(std::vector<std::string> args) {
   const auto hours = in.number("hours", false, "H, a number of hours > 0 (at most 8784)", Range{0.0, 8784.0, true})
                          .value_or(24.0);
   const auto min_el = in.number("min-el", false, "DEG, an elevation -90..90", Range{-90.0, 90.0});
+  const auto mask = read_horizon_mask_option(in, run.parsed, run.stored);
   std::optional<orbit::Observer> with;
   if (const auto w = in.text("with", false, "")) {
     const Parsed<orbit::Observer> p = parse_station_text(*w);
@@ -251,6 +253,7 @@ int run_passes(std::vector<std::string> args) {
   options.horizon_deg = orbit::kAosThresholdDeg;
   // Passes that rise (a maximum of -0.4 deg is no pass to plan for), or above --min-el.
   options.min_max_elevation_deg = min_el ? *min_el : 1e-9;
+  if (!with) options.mask = mask;  // a mutual pass is both places' plain horizons
   std::vector<SatPass> passes;
   int status = kExitOk;
   for (std::size_t set = 0; set < sats.size(); ++set) {
@@ -275,6 +278,10 @@ int run_passes(std::vector<std::string> args) {
       "station %.4f, %.4f, %.0f m%s  from %s for %g h  AOS/LOS at %.1f deg\n", station->lat_deg, station->lon_deg,
       station->height_m, run.parsed.has("station") ? "" : (" (" + run.stored.source() + ")").c_str(),
       orbit::format_iso8601(*start, 0).c_str(), hours, orbit::kAosThresholdDeg);
+  if (options.mask) {
+    header.pop_back();
+    header += " and the horizon mask (" + options.mask->describe() + ")\n";
+  }
   if (with)
     header += printf_string("with %.4f, %.4f (%s): only the times both see it; MAX EL is here's, THERE the partner's\n",
                             with->lat_deg, with->lon_deg,

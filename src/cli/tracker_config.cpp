@@ -19,6 +19,8 @@
 #include "store/refresh.h"
 #include "store/settings.h"
 #include "store/state_file.h"
+#include "orbit/horizon_mask.h"
+#include "util/files.h"
 #include "util/safe_text.h"
 #include "util/secret.h"
 
@@ -114,6 +116,9 @@ std::vector<OptionSpec> tracker_option_specs() {
                                  "(stored)"},
       {"event-min-el", "DEG", "no AOS/LOS event nor hook for a pass whose maximum elevation stays under DEG, "
                               "-2 to 90 (factory 0: none for a pass that never rises; stored)"},
+      {"horizon-mask", "FILE|none", "where roofs, trees or hills hide the sky: AZ EL per line (.hrz), a CSV az,el "
+                                    "or a step list AZ EL ... AZ; passes, AOS/LOS and pre-positioning keep above it "
+                                    "(the points are stored, not the file; none removes it)"},
       {"socket", "PATH", "the station's socket for trakbox attach, status and events (default STATE/" +
                              std::string(kSocketFile) + "; the system service's is " + std::string(kServiceSocket) +
                              "), made for the user and group only"},
@@ -167,6 +172,28 @@ std::optional<std::string> set_rotator_spec(TrackerConfig& c, const std::string&
   if (!rot.error.empty()) return rot.error;
   c.rotator = rot.choice;
   return std::nullopt;
+}
+
+// --horizon-mask FILE: the file read and checked whole (a problem named with the file and line), its
+// points as the setting keeps them; `none`: "" (no mask).
+static std::optional<std::string> read_mask_file(const std::string& file, OptionReader& r) {
+  if (file == "none") return std::string();
+  const auto content = files::read_whole_file(file);
+  if (!content) {
+    r.fail("--horizon-mask", "cannot read " + file);
+    return std::nullopt;
+  }
+  const auto read = orbit::read_horizon_mask(*content, file);
+  if (!read.mask) {
+    r.fail("--horizon-mask", read.error);
+    return std::nullopt;
+  }
+  const std::string text = read.mask->text();
+  if (const auto why = store::refusal(*store::find_setting("station.horizon_mask"), text)) {
+    r.fail("--horizon-mask", *why);  // more points than the state keeps
+    return std::nullopt;
+  }
+  return text;
 }
 
 std::optional<std::string> set_radio_spec(TrackerConfig& c, const std::string& text) {
@@ -443,6 +470,7 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
   c.az_travel_deg = stored_value<double>(o, r, "az-travel", "rotator.az_travel_deg");
   c.rotor_control = stored_value<bool>(o, r, "rotor-control", "rotor_control");
   c.event_min_el_deg = stored_value<double>(o, r, "event-min-el", "event_min_el_deg");
+  if (const auto f = o.value("horizon-mask")) c.horizon_mask = read_mask_file(*f, r);
   read_sharing(o, r, c);
   read_gps(o, r, c);
   if (const auto l = o.value("log-level")) {

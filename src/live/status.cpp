@@ -218,6 +218,8 @@ nlohmann::json tracking_list_json(StationApp& app, orbit::UtcTime now) {
   nlohmann::json list = nlohmann::json::array();
   const store::Database& db = app.model().db;
   const orbit::Observer where = app.model().station.observer();
+  orbit::PassOptions po;
+  po.mask = app.model().station.mask();  // AOS/LOS at the horizon mask, as the events and the tracker
   for (std::size_t k = 0; k < db.selected.size(); ++k) {
     const int i = db.selected[k];
     if (i < 0 || i >= static_cast<int>(db.satellites.size())) continue;
@@ -231,17 +233,17 @@ nlohmann::json tracking_list_json(StationApp& app, orbit::UtcTime now) {
     // The tracker's pass when it follows this satellite, else one searched; whole when the search
     // began inside it. Kept (next_passes) until it sets or the station moves: this runs for every
     // push to the page.
-    const auto search = [&app, i, now, &where]() -> std::optional<orbit::Pass> {
+    const auto search = [&app, i, now, &where, &po]() -> std::optional<orbit::Pass> {
       std::optional<orbit::Pass> p;
       for (const auto& c : app.tracker().candidates())
         if (c.db_index == i) p = c.pass;
       if (!p) {
         if (const orbit::Sgp4* sgp4 = app.tracker().propagator(i))
-          p = orbit::next_pass(*sgp4, where, now, 1.0);
+          p = orbit::next_pass(*sgp4, where, now, 1.0, po);
       }
       return whole_pass(app, i, p, now);
     };
-    const auto pass = app.tracker().passes().get(sat.elements, where, now, search, "status");
+    const auto pass = app.tracker().passes().get(sat.elements, where, now, search, "status", po);
     if (const auto obs = app.tracker().observe(i, now); obs && obs->obs.ok())
       e["now"] = {{"az_deg", obs->obs.look.az_deg}, {"el_deg", obs->obs.look.el_deg}, {"in_range", obs->in_range}};
     e["next_pass"] = pass_json(pass, now);
@@ -304,6 +306,14 @@ nlohmann::json station_status(StationApp& app, const StatusContext& cx) {
                   {"height_m", st.height_m},
                   {"locator", station::maidenhead_locator(st.lat_deg, st.lon_deg)},
                   {"position_from_gps", app.model().gps.position_from_gps}};
+  // The horizon mask (issue 57): its points for the page's sky, the file's kind and what it spans.
+  if (const auto mask = st.mask()) {
+    nlohmann::json points = nlohmann::json::array();
+    for (const auto& p : mask->points()) points.push_back({p.az_deg, p.el_deg});
+    j["station"]["horizon_mask"] = {{"kind", mask->kind() == orbit::HorizonMask::Kind::stepped ? "stepped" : "interpolated"},
+                                    {"points", points},
+                                    {"describe", mask->describe()}};
+  }
   tracker::Tracker& tr = app.tracker();
   nlohmann::json tracking{{"mode", mode_name(tr.mode())}, {"priority", tr.priority()}};
   nlohmann::json sats = nlohmann::json::array();
@@ -436,7 +446,8 @@ std::string format_status(const nlohmann::json& s) {
        (s.value("healthy", false) ? "running" : "running, with problems"));
   if (const auto st = s.value("station", nlohmann::json()); st.is_object())
     line("  station   " + st.value("callsign", "") + " " + num(st["lat_deg"], 4) + ", " + num(st["lon_deg"], 4) + ", " +
-         num(st["height_m"], 0) + " m, " + st.value("locator", ""));
+         num(st["height_m"], 0) + " m, " + st.value("locator", "") +
+         (st.contains("horizon_mask") ? ", horizon mask " + st["horizon_mask"].value("describe", "") : ""));
   for (const auto& n : s.value("setup", nlohmann::json::array())) line("  SETUP     " + n.get<std::string>());
   line("  time      " + s.value("time", "") + (s.value("clock_rate", 1.0) != 1.0 ? " (clock x" + num(s["clock_rate"], 1) + ")" : ""));
   const auto& t = s.at("tracking");

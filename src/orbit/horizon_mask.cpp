@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 
 #include "util/exact_number.h"
 #include "util/safe_text.h"
@@ -57,6 +58,31 @@ std::string HorizonMask::describe() const {
   return "interpolated, " + std::to_string(points_.size()) + " points, " + range;
 }
 
+std::string HorizonMask::text() const {
+  std::string out;
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    const bool last_step = kind_ == Kind::stepped && i + 1 == points_.size();
+    if (i > 0) out += kind_ == Kind::stepped ? " " : "; ";
+    out += text::exact_number(points_[i].az_deg);
+    if (!last_step) out += " " + text::exact_number(points_[i].el_deg);
+  }
+  return out;
+}
+
+std::shared_ptr<const HorizonMask> shared_horizon_mask(const std::string& text) {
+  static std::mutex guard;
+  static std::string kept_text;
+  static std::shared_ptr<const HorizonMask> kept;
+  if (text.empty()) return nullptr;
+  const std::lock_guard lock(guard);
+  if (text != kept_text || !kept) {
+    auto r = read_horizon_mask(text);
+    kept = r.mask ? std::make_shared<const HorizonMask>(std::move(*r.mask)) : nullptr;
+    kept_text = text;
+  }
+  return kept;
+}
+
 namespace {
 
 // "NAME line N: ", how every refusal begins.
@@ -110,12 +136,14 @@ std::optional<std::string> check_points(const std::vector<Number>& nums, std::st
 
 }  // namespace
 
-MaskReading read_horizon_mask(std::string_view text, std::string_view name) {
+namespace {
+
+MaskReading read_lines(std::string_view text, std::string_view name, bool joined) {
   MaskReading r;
   std::vector<Number> nums;
   bool stepped = false;
   int n = 0, first_data = 0;
-  for (std::string_view line : text::split(text, '\n')) {
+  for (std::string_view line : text::split(text, joined ? ';' : '\n')) {
     ++n;
     line = text::trim(line.substr(0, line.find('#')), text::kWhitespace);
     if (line.empty()) continue;
@@ -148,6 +176,17 @@ MaskReading read_horizon_mask(std::string_view text, std::string_view name) {
     return r;
   }
   r.mask = HorizonMask(stepped ? HorizonMask::Kind::stepped : HorizonMask::Kind::interpolated, std::move(points));
+  return r;
+}
+
+}  // namespace
+
+MaskReading read_horizon_mask(std::string_view text, std::string_view name) {
+  // One line of pairs joined by ';' (what text() writes, a setting typed in): each pair is named.
+  const bool joined = text.find('\n') == std::string_view::npos && text.find(';') != std::string_view::npos;
+  MaskReading r = read_lines(text, name, joined);
+  const std::string line_word = std::string(name) + " line ";
+  if (joined && r.error.rfind(line_word, 0) == 0) r.error.replace(0, line_word.size(), std::string(name) + " pair ");
   return r;
 }
 

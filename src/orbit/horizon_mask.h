@@ -9,6 +9,7 @@
 // '#' starts a comment; blank lines are skipped. Azimuths 0..360 increasing, elevations -90..90.
 // Pure. docs/rotator.md "Horizon mask".
 #pragma once
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -19,6 +20,7 @@ namespace tb::orbit {
 struct MaskPoint {
   double az_deg = 0.0;
   double el_deg = 0.0;
+  bool operator==(const MaskPoint&) const = default;
 };
 
 class HorizonMask {
@@ -36,6 +38,11 @@ class HorizonMask {
   double max_el() const;
   // "interpolated, 5 points, 0.0..25.0 deg" / "stepped, 4 steps, ...".
   std::string describe() const;
+  // The mask as one line the reader takes back, as the state document keeps it (the setting
+  // station.horizon_mask): "0 5; 214 25; 262 25; 263 5" (interpolated, pairs joined by ';') or the
+  // step list "0 5 214 25 262 5 360" (stepped).
+  std::string text() const;
+  bool operator==(const HorizonMask&) const = default;
 
  private:
   Kind kind_;
@@ -46,7 +53,12 @@ struct MaskReading {
   std::optional<HorizonMask> mask;
   std::string error;  // "line 3: azimuth 400 is outside 0..360"; empty when read
 };
-// The text of a mask file; `name` starts the error ("mask.hrz line 3: ...").
+// The text of a mask file; `name` starts the error ("mask.hrz line 3: ..."). One line without a
+// line break may join its pairs with ';' (the form text() writes; "pair N" then names the place).
 MaskReading read_horizon_mask(std::string_view text, std::string_view name = "horizon mask");
+
+// The mask of a stored text (HorizonMask::text()'s form), shared: the station asks for it at every
+// pass search, and the last text read is kept. Nothing for "" or a text that is no mask.
+std::shared_ptr<const HorizonMask> shared_horizon_mask(const std::string& text);
 
 }  // namespace tb::orbit

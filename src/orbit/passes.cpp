@@ -344,6 +344,7 @@ using detail::Searcher;
 
 std::vector<Pass> find_passes(const Sgp4& sat, const Observer& o, UtcTime start, UtcTime stop,
                               const PassOptions& options, const EarthOrientation& eo, PassSearchStats& stats) {
+  if (options.mask) return detail::masked_passes(sat, o, start, stop, options, eo, stats);
   std::vector<Pass> out;
   Searcher s(sat, o, start, stop, options, eo);
   s.record_tsince(stats.tsince_minutes);
@@ -360,6 +361,7 @@ std::vector<Pass> find_passes(const Sgp4& sat, const Observer& o, UtcTime start,
 
 std::optional<Pass> next_pass(const Sgp4& sat, const Observer& o, UtcTime from, double max_days,
                               const PassOptions& options, const EarthOrientation& eo) {
+  if (options.mask) return detail::masked_next_pass(sat, o, from, max_days, options, eo);
   Searcher s(sat, o, from, add_seconds(from, max_days * kSecondsPerDay), options, eo);
   return s.next();
 }

@@ -1,5 +1,6 @@
 // Pass search: AOS, TCA (time of maximum elevation), LOS.
 #pragma once
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -7,11 +8,19 @@
 
 namespace tb::orbit {
 
+class HorizonMask;
+
 struct PassOptions {
   double horizon_deg = kAosThresholdDeg;  // AOS/LOS are crossings of this elevation
   double min_max_elevation_deg = -90.0;   // drop passes whose maximum stays below this
   double precision_s = 0.1;               // AOS/LOS/TCA to this precision
+  // The station's horizon mask (orbit/horizon_mask.h), when it has one: AOS/LOS are then the
+  // crossings of max(mask(az), horizon_deg) and every search below is the masked one
+  // (find_passes_masked). Nothing: the one scalar horizon.
+  std::shared_ptr<const HorizonMask> mask;
 };
+// The lowest elevation a satellite counts as up at this azimuth under these options.
+double horizon_at(const PassOptions& options, double az_deg);
 
 struct Pass {
   UtcTime aos{}, tca{}, los{};
@@ -46,11 +55,11 @@ std::vector<Pass> find_passes(const Sgp4& sat, const Observer& o, UtcTime start,
 std::optional<Pass> next_pass(const Sgp4& sat, const Observer& o, UtcTime from, double max_days = 10.0,
                               const PassOptions& options = {}, const EarthOrientation& eo = {});
 
-class HorizonMask;
 // The passes above a horizon mask (orbit/horizon_mask.h) and options.horizon_deg, whichever is
 // higher at each azimuth: found above the mask's lowest elevation by the search above, then each
 // pass's crossings of the mask refined to options.precision_s from one-second steps. A pass the
-// mask splits gives each piece above it; max_el_deg and tca are the piece's.
+// mask splits gives each piece above it; max_el_deg and tca are the piece's. find_passes and
+// next_pass do this when options.mask is set.
 std::vector<Pass> find_passes_masked(const Sgp4& sat, const Observer& o, UtcTime start, UtcTime stop,
                                      const HorizonMask& mask, const PassOptions& options = {},
                                      const EarthOrientation& eo = {});

@@ -317,4 +317,10 @@ class Searcher {
   std::vector<double>* trace_ = nullptr;  // PassSearchStats::tsince_minutes
 };
 
+// The masked searches (passes_mask.cpp): find_passes and next_pass with options.mask set.
+std::vector<Pass> masked_passes(const Sgp4& sat, const Observer& o, UtcTime start, UtcTime stop,
+                                const PassOptions& options, const EarthOrientation& eo, PassSearchStats& stats);
+std::optional<Pass> masked_next_pass(const Sgp4& sat, const Observer& o, UtcTime from, double max_days,
+                                     const PassOptions& options, const EarthOrientation& eo);
+
 }  // namespace tb::orbit::detail

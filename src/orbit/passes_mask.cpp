@@ -8,6 +8,7 @@
 #include "orbit/horizon_mask.h"
 #include "orbit/observe.h"
 #include "orbit/passes.h"
+#include "orbit/passes_internal.h"
 
 namespace tb::orbit {
 namespace {
@@ -15,8 +16,7 @@ namespace {
 struct Masked {
   const Sgp4& sat;
   const Observer& o;
-  const HorizonMask& mask;
-  const PassOptions& opt;
+  const PassOptions& opt;  // with the mask
   const EarthOrientation& eo;
 
   // Elevation above the mask at t (nothing when SGP4 fails).
@@ -24,7 +24,7 @@ struct Masked {
     const Observation ob = observe(sat, o, t, eo);
     if (!ob.ok()) return std::nullopt;
     if (seen) *seen = ob;
-    return ob.look.el_deg - std::max(mask.at(ob.look.az_deg), opt.horizon_deg);
+    return ob.look.el_deg - horizon_at(opt, ob.look.az_deg);
   }
   // The crossing between a (on side `up_at_a`) and b, to the precision.
   UtcTime crossing(UtcTime a, UtcTime b, bool up_at_a) const {
@@ -83,22 +83,58 @@ struct Masked {
   }
 };
 
+// The whole passes are searched above the mask's lowest elevation (or the horizon, if higher),
+// with no mask: the fast search's bounds hold for one horizon.
+PassOptions unmasked(const PassOptions& options) {
+  PassOptions base = options;
+  base.mask.reset();
+  base.horizon_deg = std::max(options.horizon_deg, options.mask->min_el());
+  base.min_max_elevation_deg = std::max(options.min_max_elevation_deg, base.horizon_deg);
+  return base;
+}
+
 }  // namespace
 
-std::vector<Pass> find_passes_masked(const Sgp4& sat, const Observer& o, UtcTime start, UtcTime stop,
-                                     const HorizonMask& mask, const PassOptions& options, const EarthOrientation& eo) {
-  PassOptions base = options;
-  base.horizon_deg = std::max(options.horizon_deg, mask.min_el());
-  base.min_max_elevation_deg = std::max(options.min_max_elevation_deg, base.horizon_deg);
-  const Masked m{sat, o, mask, options, eo};
+double horizon_at(const PassOptions& options, double az_deg) {
+  return options.mask ? std::max(options.mask->at(az_deg), options.horizon_deg) : options.horizon_deg;
+}
+
+namespace detail {
+
+std::vector<Pass> masked_passes(const Sgp4& sat, const Observer& o, UtcTime start, UtcTime stop,
+                                const PassOptions& options, const EarthOrientation& eo, PassSearchStats& stats) {
+  const Masked m{sat, o, options, eo};
   std::vector<Pass> out;
-  for (const Pass& whole : find_passes(sat, o, start, stop, base, eo)) {
+  for (const Pass& whole : find_passes(sat, o, start, stop, unmasked(options), eo, stats)) {
     std::vector<Pass> pieces;
     m.split(whole, pieces);
     for (const Pass& p : pieces)
       if (p.max_el_deg >= options.min_max_elevation_deg) out.push_back(p);
   }
   return out;
+}
+
+std::optional<Pass> masked_next_pass(const Sgp4& sat, const Observer& o, UtcTime from, double max_days,
+                                     const PassOptions& options, const EarthOrientation& eo) {
+  const Masked m{sat, o, options, eo};
+  const PassOptions base = unmasked(options);
+  Searcher s(sat, o, from, add_seconds(from, max_days * 86400.0), base, eo);
+  while (const auto whole = s.next()) {
+    std::vector<Pass> pieces;
+    m.split(*whole, pieces);
+    for (const Pass& p : pieces)
+      if (p.max_el_deg >= options.min_max_elevation_deg) return p;
+  }
+  return std::nullopt;
+}
+
+}  // namespace detail
+
+std::vector<Pass> find_passes_masked(const Sgp4& sat, const Observer& o, UtcTime start, UtcTime stop,
+                                     const HorizonMask& mask, const PassOptions& options, const EarthOrientation& eo) {
+  PassOptions po = options;
+  po.mask = std::make_shared<const HorizonMask>(mask);
+  return find_passes(sat, o, start, stop, po, eo);
 }
 
 }  // namespace tb::orbit

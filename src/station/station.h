@@ -4,6 +4,7 @@
 #include <string>
 #include <string_view>
 
+#include "orbit/horizon_mask.h"
 #include "orbit/observe.h"
 
 namespace tb::station {
@@ -20,8 +21,12 @@ struct StationConfig {
   double height_m = 50.0;      // above sea level (taken as above the WGS-84 ellipsoid)
   RotorStart rotor_start = RotorStart::south;
   int com_baud = 9600;         // 1200, 2400, 4800, 9600 (the manual), up to 19200 here
+  // The horizon mask (issue 57; --horizon-mask FILE): HorizonMask::text()'s one line, "" for none.
+  std::string horizon_mask;
 
   orbit::Observer observer() const { return {lat_deg, lon_deg, height_m}; }
+  // The mask to search passes with (PassOptions::mask), nothing when there is none.
+  std::shared_ptr<const orbit::HorizonMask> mask() const { return orbit::shared_horizon_mask(horizon_mask); }
   friend bool operator==(const StationConfig&, const StationConfig&) = default;
 };
 

@@ -329,6 +329,8 @@ void station_from(const json& j, Model& m) {
   for (const char* key : {"station.callsign", "station.lat_deg", "station.lon_deg", "station.height_m",
                           "station.rotor_start", "station.com_baud"})
     take(m, s, key);
+  // Absent before the horizon mask (issue 57): none.
+  take_if(m, s, "station.horizon_mask");
 }
 
 rotator::SkyCalibration sky_calibration_from(const json& j, const std::string& w) {

@@ -10,6 +10,7 @@
 
 #include "gps/gpsd_client.h"
 #include "radio/factory.h"
+#include "orbit/horizon_mask.h"
 #include "station/station.h"
 #include "store/model.h"
 #include "store/refresh.h"
@@ -54,6 +55,13 @@ const std::array kTable = {
             }},
     Setting{"station.com_baud", T::integer, "bps", 1200, 19200, kBauds, 0, "", "4",
             "the serial line's speed for the menus", TB_FIELD(station.com_baud, int)},
+    Setting{"station.horizon_mask", T::text, "", 0, 0, {}, 8000, "--horizon-mask", "4",
+            "where the sky is hidden: AZ EL pairs joined by ';', or a step list AZ EL ... AZ (\"\": none)",
+            [](const Model& m) -> json { return m.station.horizon_mask; },
+            [](Model& m, const json& v) {
+              const auto read = orbit::read_horizon_mask(v.get<std::string>());
+              m.station.horizon_mask = read.mask ? read.mask->text() : "";
+            }},
     Setting{"rotator.az_travel_deg", T::number, "deg", rotator::limits::kTravelMinDeg, rotator::limits::kTravelMaxDeg,
             {}, 0, "--az-travel", "6-1", "azimuth travel from the rotor stop (450 for an overlap rotator)",
             TB_FIELD(rotator.az_travel_deg, double)},
@@ -208,6 +216,8 @@ std::optional<std::string> text_rule(const Setting& s, const std::string& v) {
   } else if (k == "radio.uplink_radio") {
     const auto spec = radio::parse_radio_spec(v, "uplink radio");
     if (!spec.spec) return spec.error;
+  } else if (k == "station.horizon_mask") {
+    if (auto r = orbit::read_horizon_mask(v); !r.mask) return r.error;
   } else if (k == "sharing.satnogs_url") {
     if (v.rfind("http://", 0) != 0 && v.rfind("https://", 0) != 0) return "expected an http:// or https:// URL";
   } else if (k == "logger.spec") {

@@ -98,6 +98,7 @@ std::vector<Event> PassEventSource::step(orbit::UtcTime now) {
   std::map<int, Watch> kept;
   orbit::PassOptions po;
   po.horizon_deg = model_.pass_events.rotor_start_el_deg;
+  po.mask = model_.station.mask();  // AOS and LOS at the horizon mask, where it is higher
   // --event-min-el: a pass that never rises that high (one that only grazes the -2 deg rule) is
   // no pass to announce: no AOS, so no LOS and no hook (issue 39).
   po.min_max_elevation_deg = model_.event_min_el_deg;

@@ -1,5 +1,7 @@
 #include "tracker/pass_memo.h"
 
+#include "orbit/horizon_mask.h"
+
 namespace tb::tracker {
 
 std::optional<orbit::Pass> PassMemo::get(const orbit::Elements& el, const orbit::Observer& where, orbit::UtcTime now,
@@ -17,13 +19,15 @@ std::optional<orbit::Pass> PassMemo::get(const orbit::Elements& el, const orbit:
                                a.ndot_over_2 == el.ndot_over_2;
     const bool same_place = k.where.lat_deg == where.lat_deg && k.where.lon_deg == where.lon_deg &&
                             k.where.height_m == where.height_m;
+    // Another horizon mask (or none now) is another pass.
+    const bool same_mask = k.mask == po.mask || (k.mask && po.mask && *k.mask == *po.mask);
     const bool still_ahead = k.pass ? now <= k.pass->los : now < k.searched_at + kRetry;
-    if (same_elements && same_place && now >= k.searched_at && still_ahead) return k.pass;
+    if (same_elements && same_place && same_mask && now >= k.searched_at && still_ahead) return k.pass;
   }
   ++searches_;
   ++by_use_[std::string(use)];
   if (found == kept_.end() && kept_.size() >= kMaxEntries) kept_.clear();  // satellites long gone: start afresh
-  Entry e{el, where, now, search()};
+  Entry e{el, where, po.mask, now, search()};
   kept_[key] = e;
   return e.pass;
 }

@@ -2,7 +2,8 @@
 // events, the status document (the page, `trakbox status`) and the Satrak unit all ask here, so they
 // agree, and a search (thousands of SGP4 steps) is made once. A kept pass is searched again when
 // the satellite's elements change (a refresh, an edit, another element set), when the station moves
-// (menu 4, the page, host QTH, a GPS fix followed), when it has set, or when the clock goes back
+// (menu 4, the page, host QTH, a GPS fix followed) or its horizon mask changes, when it has set, or
+// when the clock goes back
 // (menu 5, a Satrak TIME=); a search that found nothing is tried again after kRetry.
 //
 // Each user keeps its own entry per satellite (`use`): the events search from the rotor-start
@@ -12,6 +13,7 @@
 #include <cstddef>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -43,6 +45,7 @@ class PassMemo {
   struct Entry {
     orbit::Elements elements;  // as searched: an edit of any orbital field is another orbit
     orbit::Observer where;
+    std::shared_ptr<const orbit::HorizonMask> mask;  // as searched with (PassOptions::mask)
     orbit::UtcTime searched_at{};
     std::optional<orbit::Pass> pass;
   };

@@ -356,33 +356,35 @@ const orbit::Sgp4* StationLoop::job_orbit(const Window& w) {
   return job_->sgp4.get();
 }
 
-void StationLoop::preposition_for_job(orbit::UtcTime now) {
+bool StationLoop::preposition_for_job(orbit::UtcTime now) {
   const Window* next = nullptr;
   for (const Window& w : control_.windows())  // in start order
     if (w.kind == "satnogs" && w.start > now) {
       next = &w;
       break;
     }
-  if (!next || orbit::minutes_between(now, next->start) > Tracker::kPrepositionMinutes) return;
+  if (!next || orbit::minutes_between(now, next->start) > Tracker::kPrepositionMinutes) return false;
   const orbit::Sgp4* job = job_orbit(*next);
-  if (!job) return;
+  if (!job) return false;
   const orbit::Observer here = model_.station.observer();
   orbit::PassOptions po;
   po.precision_s = 1.0;
+  po.mask = model_.station.mask();  // the job's pass above the horizon mask: the plan starts out of it
   const auto pass = tracker_.passes().get(
       job->elements(), here, now, [&] { return orbit::next_pass(*job, here, now, 1.0, po); }, "satnogs job", po);
   // The job's pass: the one its window opens in (a window is its pass, a little inside it).
-  if (!pass || pass->los < next->start || orbit::minutes_between(next->end, pass->aos) > 0.0) return;
+  if (!pass || pass->los < next->start || orbit::minutes_between(next->end, pass->aos) > 0.0) return false;
   const rotator::PassPlan* plan = plan_of(kJobKey, next->satellite, *pass, [&](orbit::UtcTime t) {
     return std::optional<orbit::Observation>(orbit::observe(*job, here, t));
   });
-  if (!plan) return;
+  if (!plan) return false;
   if (prepositioned_ != next->id)
     spdlog::info("antenna: to the start of SatNOGS job {}'s {} pass (travel {:.1f}, el {:.1f}) before its window "
                  "at {}", next->id, next->satellite, plan->aos.az_travel, plan->aos.el,
                  orbit::format_iso8601(next->start));
   prepositioned_ = next->id;
   rotator_->set_target(plan->aos);
+  return true;
 }
 
 std::optional<rotator::RotatorPosition> StationLoop::job_plan_target(const Window& w, SkyTarget target,
@@ -392,6 +394,7 @@ std::optional<rotator::RotatorPosition> StationLoop::job_plan_target(const Windo
   const orbit::UtcTime now = clock_.now();
   orbit::PassOptions po;
   po.precision_s = 1.0;
+  po.mask = model_.station.mask();  // the job's pass above the horizon mask: the plan starts out of it
   // The station's one pass cache, under the job's elements.
   const auto pass = tracker_.passes().get(
       job.elements(), here, now, [&] { return orbit::next_pass(job, here, now, 1.0, po); }, "satnogs job", po);
@@ -499,7 +502,11 @@ void StationLoop::tick() {
   apply(control_.tick(now));
   const bool drive_antenna = control_.tracking_drives(Resource::antenna);
   const bool drive_radio = control_.tracking_drives(Resource::radio);
-  if (drive_antenna && tracker_.mode() == Mode::off) preposition_for_job(now);
+  // A SatNOGS job due within the pre-position time: the antenna goes to its pass's start, whether
+  // trakbox tracks or not, unless trakbox's own satellite is up and followed now (the job takes the
+  // antenna at its window's start all the same).
+  const bool job_first = drive_antenna && (tracker_.mode() == Mode::off || tracker_.last_decision().antenna != Decision::Antenna::point) &&
+                         preposition_for_job(now);
   if (tracker_.mode() != Mode::off) remote_follow(std::nullopt);
   if (doppler_ && remote_ && remote_db_ && static_cast<std::size_t>(*remote_db_) < model_.db.satellites.size())
     follow_radio(*remote_db_, remote_->obs);
@@ -514,14 +521,14 @@ void StationLoop::tick() {
         (d.antenna == Decision::Antenna::point || d.antenna == Decision::Antenna::preposition))
       plan = plan_for(*followed);
     // While someone else holds the antenna the decision is kept, not applied (the hold suspends).
-    switch (drive_antenna ? d.antenna : Decision::Antenna::hold) {
+    switch (drive_antenna && !job_first ? d.antenna : Decision::Antenna::hold) {
       case Decision::Antenna::point:
         if (plan) rotator_->set_target(plan->map(d.az_deg, std::max(0.0, d.el_deg)));
         else rotator_->set_target(rotator::AzEl{d.az_deg, std::max(0.0, d.el_deg)});
         break;
       case Decision::Antenna::preposition:
         if (plan) rotator_->set_target(plan->aos);
-        else rotator_->set_target(rotator::AzEl{d.az_deg, 0.0});
+        else rotator_->set_target(rotator::AzEl{d.az_deg, d.el_deg});
         break;
       case Decision::Antenna::park:
         rotator_->park();  // does nothing when parking is off: the antenna stays where it is

@@ -277,9 +277,10 @@ class StationLoop {
   };
   std::optional<JobOrbit> job_;
   const orbit::Sgp4* job_orbit(const Window& w);
-  // Before a SatNOGS window whose job carries its elements, with nothing tracked by trakbox: the
-  // antenna goes to the start of that pass's plan, Tracker::kPrepositionMinutes ahead (issue 57).
-  void preposition_for_job(orbit::UtcTime now);
+  // Before a SatNOGS window whose job carries its elements, unless trakbox's own satellite is up and
+  // followed: the antenna goes to the start of that pass's plan (above the horizon mask),
+  // Tracker::kPrepositionMinutes ahead (issue 57). Whether it went.
+  bool preposition_for_job(orbit::UtcTime now);
   std::string prepositioned_;  // the job it went for (said once)
   // The client's target through the job's pass plan, when it matched the job.
   std::optional<rotator::RotatorPosition> job_plan_target(const Window& w, SkyTarget target, std::string_view kind);

@@ -108,7 +108,8 @@ SatNow Tracker::compute(int db_index, orbit::UtcTime t, bool with_pass) const {
   s.list_number = model_.db.list_number(db_index);
   s.name = sat.name();
   s.obs = orbit::observe(*c.sgp4, obs, t);
-  s.in_range = s.obs.ok() && s.obs.look.el_deg >= orbit::kAosThresholdDeg;
+  // Up: above the AOS rule and the station's horizon mask there.
+  s.in_range = s.obs.ok() && s.obs.look.el_deg >= horizon_at(s.obs.look.az_deg);
   if (s.obs.ok() && sat.radio.has_downlink())
     s.downlink_doppler_hz =
         orbit::doppler_shift_hz(static_cast<double>(sat.radio.downlink_hz), s.obs.look.range_rate_km_s);
@@ -117,6 +118,7 @@ SatNow Tracker::compute(int db_index, orbit::UtcTime t, bool with_pass) const {
     // station moves, the pass has set or the clock goes back.
     orbit::PassOptions po;
     po.precision_s = 1.0;
+    po.mask = model_.station.mask();
     const orbit::Sgp4& sgp4 = *c.sgp4;
     const auto pass = passes_.get(
         sat.elements, obs, t, [&] { return orbit::next_pass(sgp4, obs, t, kPassSearchDays, po); }, "tracker", po);
@@ -150,6 +152,12 @@ std::optional<SatNow> Tracker::observe(int db_index, orbit::UtcTime t, bool with
   return compute(db_index, t, with_pass);
 }
 
+double Tracker::horizon_at(double az_deg) const {
+  orbit::PassOptions po;
+  po.mask = model_.station.mask();
+  return orbit::horizon_at(po, az_deg);
+}
+
 std::optional<orbit::Pass> Tracker::pass_at(int db_index, orbit::UtcTime t) const {
   orbit::PassOptions po;
   po.precision_s = 1.0;
@@ -176,6 +184,7 @@ std::optional<orbit::Pass> Tracker::pass_at(int db_index, orbit::UtcTime t) cons
     }
     return std::nullopt;
   };
+  po.mask = model_.station.mask();
   const std::optional<orbit::Pass> near = search(30.0);
   if (!near || !near->up_at_start || near->up_at_end) return near;
   for (const double back : {360.0, 1440.0})
@@ -227,7 +236,7 @@ Decision Tracker::tick() {
   // factory -2.0, the AOS rule). Up but below it, the antenna waits where the pass rises while the
   // satellite climbs, and stays where it is once it sets.
   const double rotor_start_el = model_.pass_events.rotor_start_el_deg;
-  if (f && f->in_range && f->obs.look.el_deg >= rotor_start_el) {
+  if (f && f->in_range && f->obs.look.el_deg >= std::max(rotor_start_el, horizon_at(f->obs.look.az_deg))) {
     d.antenna = Decision::Antenna::point;
     d.az_deg = f->obs.look.az_deg;
     d.el_deg = f->obs.look.el_deg;
@@ -235,7 +244,7 @@ Decision Tracker::tick() {
     if (f->pass && t < f->pass->tca) {
       d.antenna = Decision::Antenna::preposition;
       d.az_deg = f->pass->aos_az_deg;
-      d.el_deg = 0.0;
+      d.el_deg = std::max(0.0, horizon_at(d.az_deg));  // never into the horizon mask
     }
   } else {
     // Nobody up: move ahead of time to the soonest AOS among the candidates, else park.
@@ -249,7 +258,7 @@ Decision Tracker::tick() {
     if (next) {
       d.antenna = Decision::Antenna::preposition;
       d.az_deg = next->pass->aos_az_deg;
-      d.el_deg = 0.0;
+      d.el_deg = std::max(0.0, horizon_at(d.az_deg));  // never into the horizon mask
       if (mode_ == Mode::multi) d.followed = next->db_index;
     } else if (mode_ != Mode::off) {
       d.antenna = Decision::Antenna::park;

@@ -84,6 +84,9 @@ class Tracker {
   // The pass in progress at t (with its real AOS), or the next one within a day, for a display
   // that looks at another time than now (menu 2): searched afresh, the live pass left as it is.
   std::optional<orbit::Pass> pass_at(int db_index, orbit::UtcTime t) const;
+  // The lowest elevation a satellite is up at here, at this azimuth: the AOS rule (-2 deg) or the
+  // station's horizon mask where it is higher (issue 57).
+  double horizon_at(double az_deg) const;
   // A propagator for a database entry (cached; rebuilt when its elements change).
   const orbit::Sgp4* propagator(int db_index) const;
   // For the displays' pictures, `intervals` + 1 evenly spaced observations (those SGP4 can

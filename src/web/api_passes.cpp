@@ -102,6 +102,9 @@ std::optional<Response> plan(tracker::StationLoop& station, const std::string& t
   const orbit::UtcTime stop = orbit::add_minutes(out.from, out.hours * 60.0);
   orbit::PassOptions options;
   options.min_max_elevation_deg = std::max(out.min_el, 1e-9);   // passes that rise, at least
+  // AOS and LOS at the station's horizon mask (issue 57); a mutual pass (`with`) is both places'
+  // plain horizons: the other place's mask is not known.
+  if (!out.with) options.mask = m.station.mask();
   const orbit::Observer here = m.station.observer();
   for (const int i : chosen) {
     const orbit::Sgp4* sgp4 = station.tracker().propagator(i);

@@ -64,6 +64,37 @@ function place(id, azel) {
   e.classList.toggle("below", below);
 }
 
+// The station's horizon mask (status station.horizon_mask: its points, interpolated or stepped),
+// shaded between the horizon ring and the mask's elevation, as the station computes it.
+function maskAt(m, az) {
+  const p = m.points;
+  if (m.kind === "stepped") {
+    for (let i = p.length - 2; i >= 0; --i) if (az >= p[i][0] && az < p[i + 1][0]) return p[i][1];
+    return p[p.length - 2][1];
+  }
+  if (p.length === 1) return p[0][1];
+  let k = p.findIndex((q) => q[0] > az);
+  const b = k < 0 ? p[0] : p[k], a = k === 0 ? p[p.length - 1] : k < 0 ? p[p.length - 1] : p[k - 1];
+  let span = b[0] - a[0], off = az - a[0];
+  if (span <= 0) span += 360;
+  if (off < 0) off += 360;
+  return span <= 0 ? a[1] : a[1] + (b[1] - a[1]) * Math.min(1, off / span);
+}
+let maskDrawn = "";
+function drawMask(m) {
+  const key = m ? JSON.stringify(m.points) + m.kind : "";
+  if (key === maskDrawn) return;
+  maskDrawn = key;
+  $("k-mask").hidden = !m;
+  if (!m) { $("mask").setAttribute("points", ""); return; }
+  const edge = [], ring = [];
+  for (let az = 0; az <= 360; az += 1) {
+    edge.push([az, Math.max(0, maskAt(m, az % 360))]);
+    ring.unshift([az, 0]);
+  }
+  $("mask").setAttribute("points", points(edge.concat(ring)));
+}
+
 function drawSky(sky) {
   lastSky = sky;
   $("sat-name").textContent = sky.satellite ? sky.satellite.name : "";
@@ -200,6 +231,7 @@ function drawStatus(st) {
   if (typeof planList === "function") planList(st);
   if (typeof logSats === "function") logSats(st);
   drawStation(st);
+  drawMask(st.station && st.station.horizon_mask);
   $("clock").textContent = st.time ? st.time.substring(0, 10) + " " + clockText(st.time) + " " + zoneName() : "--";
   if (zoneUtc || !st.time) $("clock").textContent = st.time ? st.time.replace("T", " ").substring(0, 19) + " UTC" : "--";
   const probs = st.problems || [];

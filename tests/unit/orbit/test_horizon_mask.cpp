@@ -81,3 +81,27 @@ TEST_CASE("horizon mask: bad files are refused naming the line and what") {
         "m.hrz: no points (AZ EL per line, or a step list AZ EL ... AZ)");
   CHECK(read_horizon_mask("90\n", "fs").error == "fs line 1: a step list needs at least AZ EL AZ");
 }
+
+TEST_CASE("horizon mask: text() is one line the reader takes back (the stored setting's form)") {
+  const auto r = read_horizon_mask("0 5\n214 25\n262 25.5\n263 5\n");
+  REQUIRE(r.mask);
+  CHECK(r.mask->text() == "0 5; 214 25; 262 25.5; 263 5");
+  const auto back = read_horizon_mask(r.mask->text());
+  REQUIRE_MESSAGE(back.mask, back.error);
+  CHECK(*back.mask == *r.mask);
+  const auto s = read_horizon_mask("0 5 214 25 262 5\n360\n");
+  REQUIRE(s.mask);
+  CHECK(s.mask->text() == "0 5 214 25 262 5 360");
+  const auto s_back = read_horizon_mask(s.mask->text());
+  REQUIRE(s_back.mask);
+  CHECK(*s_back.mask == *s.mask);
+  // In the joined form a refusal names the pair.
+  CHECK(read_horizon_mask("0 5; 400 25").error == "horizon mask pair 2: azimuth 400 is outside 0..360");
+  // The shared mask of a stored text: the same object while the text is the same.
+  const auto a = tb::orbit::shared_horizon_mask("0 5; 214 25; 262 25; 263 5");
+  REQUIRE(a);
+  CHECK(a == tb::orbit::shared_horizon_mask("0 5; 214 25; 262 25; 263 5"));
+  CHECK(a->at(230.0) == doctest::Approx(25.0));
+  CHECK_FALSE(tb::orbit::shared_horizon_mask(""));
+  CHECK_FALSE(tb::orbit::shared_horizon_mask("0 5; 400 25"));
+}

@@ -62,3 +62,34 @@ TEST_CASE("masked passes: a mask above the whole pass leaves none; a minimum cul
   po.min_max_elevation_deg = 70.0;  // the pass culminates at 66.6
   CHECK(find_passes_masked(sat, here, from, to, *low.mask, po).empty());
 }
+
+TEST_CASE("masked passes: next_pass and find_passes take the mask from the options (the station's one path)") {
+  const auto sets = parse_nasa(kHo113);
+  const Sgp4 sat(sets.sets[0]);
+  const Observer here{27.391, 128.657, 50.0};
+  const auto mask = read_horizon_mask("0 0 190 25 230 0 360");
+  REQUIRE(mask.mask);
+  PassOptions po;
+  po.horizon_deg = 0.0;
+  po.mask = std::make_shared<const HorizonMask>(*mask.mask);
+  const UtcTime from = from_civil(2026, 5, 21, 3, 20, 0);
+  const auto next = next_pass(sat, here, from, 1.0, po);
+  REQUIRE(next);
+  // The same skyfield crossings as above.
+  CHECK(std::abs(seconds_from(from_civil(2026, 5, 21, 3, 27, 11.394), next->aos)) < 0.5);
+  CHECK(std::abs(seconds_from(from_civil(2026, 5, 21, 3, 37, 20.080), next->los)) < 0.5);
+  const auto found = find_passes(sat, here, from, from_civil(2026, 5, 21, 3, 50, 0), po);
+  REQUIRE(found.size() == 1);
+  CHECK(found[0].los == next->los);
+  // The horizon at an azimuth: the mask where it is higher, the scalar horizon elsewhere.
+  CHECK(horizon_at(po, 210.0) == doctest::Approx(25.0));
+  CHECK(horizon_at(po, 100.0) == doctest::Approx(0.0));
+  po.mask.reset();
+  CHECK(horizon_at(po, 210.0) == doctest::Approx(0.0));
+  // From inside the masked pass (behind nothing yet): the piece left, from then.
+  po.mask = std::make_shared<const HorizonMask>(*mask.mask);
+  const auto inside = next_pass(sat, here, from_civil(2026, 5, 21, 3, 30, 0), 1.0, po);
+  REQUIRE(inside);
+  CHECK(inside->up_at_start);
+  CHECK(std::abs(seconds_from(from_civil(2026, 5, 21, 3, 37, 20.080), inside->los)) < 0.5);
+}
