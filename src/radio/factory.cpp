@@ -100,6 +100,16 @@ RadioSpecParse parse_radio_spec(std::string_view text, std::string_view option) 
       return {spec, {}};
     }
     case SpecForm::receiver: return receiver_spec(*m, rest, quoted, spec);
+    case SpecForm::flex: {
+      // flex[:HOST[:PORT]][:duplex]: ":duplex" last (an IPv6 HOST is in brackets).
+      std::string peer = rest;
+      constexpr std::string_view kDuplex = "duplex";
+      if (peer == kDuplex || (peer.size() > kDuplex.size() && peer.ends_with(":duplex"))) {
+        spec.full_duplex = true;
+        peer.resize(peer == kDuplex ? 0 : peer.size() - kDuplex.size() - 1);
+      }
+      return receiver_spec(*m, peer, quoted, spec);
+    }
     case SpecForm::hamlib:
     case SpecForm::rigctld:
       break;
