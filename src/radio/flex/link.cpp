@@ -82,8 +82,17 @@ void FlexLink::transport(const std::string& what) {
 }
 
 void FlexLink::refused(const std::string& what, const flex::Reply& r, const std::string& lacking) {
-  throw LinkError(lacking, fmt::format("{}: {} refused ({}{}{}); Doppler tuning goes on", describe(), what,
-                                       flex::error_text(r.status), r.data.empty() ? "" : ": ", r.data));
+  throw LinkError(lacking, fmt::format("\"{}\" refused ({}{}{}): {}, said once; Doppler tuning goes on", what,
+                                       flex::error_text(r.status), r.data.empty() ? "" : ": ", r.data, lacking));
+}
+
+void FlexLink::band_refused(Link s, Hz hz, const std::string& cmd, const flex::Reply& r) {
+  Leg& g = leg(s);
+  g.lacks = band_name(hz);
+  throw LinkError("no " + *g.lacks,
+                  fmt::format("the {} at {} Hz refused (\"{}\": {}): no {} on this radio (a transverter for it is "
+                              "not set up in SmartSDR?); the {} is not sent on that band again, Doppler tuning goes on",
+                              to_string(s), hz, cmd, flex::error_text(r.status), *g.lacks, to_string(s)));
 }
 
 Link FlexLink::station(Link l) const {
@@ -143,17 +152,21 @@ void FlexLink::find_slices() {
   const flex::Reply r = ask(flex::list_slices());
   const auto list = r.status == 0 ? flex::decode_slice_list(r.data) : std::nullopt;
   if (!list) return;
-  std::optional<int> tx, rx;
-  for (int s : *list)
+  std::optional<int> tx;
+  std::vector<int> rx;   // the others, in the radio's order
+  for (int s : *list) {
     if (slice_tx_[s] && !tx) tx = s;
-  for (int s : *list)
-    if (s != tx && !rx) rx = s;
-  if (opt_.role == RadioRole::uplink) {
-    leg(Link::uplink).slice = tx ? tx : rx;
-    return;
+    else rx.push_back(s);
   }
-  leg(Link::downlink).slice = rx ? rx : tx;
-  if (opt_.role == RadioRole::both && rx) leg(Link::uplink).slice = tx;
+  const auto rx_at = [&](std::size_t i) { return i < rx.size() ? std::optional<int>(rx[i]) : std::nullopt; };
+  switch (opt_.role) {
+    case RadioRole::uplink: leg(Link::uplink).slice = tx ? tx : rx_at(0); break;
+    case RadioRole::downlink: leg(Link::downlink).slice = rx.empty() ? tx : rx_at(0); break;
+    case RadioRole::both:   // no slice marked tx: the second one becomes the transmit slice
+      leg(Link::downlink).slice = rx_at(0);
+      leg(Link::uplink).slice = tx ? tx : rx_at(1);
+      break;
+  }
 }
 
 void FlexLink::write_all(const std::string& text) {
@@ -250,10 +263,7 @@ void FlexLink::ensure_slice(Link s, Hz hz) {
   const std::string cmd = flex::create(hz, g.mode);
   const flex::Reply r = ask(cmd);
   if (r.status == 0x50000001) refused(cmd, r, "no free slice");
-  if (r.status != 0) {
-    g.lacks = band_name(hz);
-    refused(fmt::format("the {} at {} Hz ({})", to_string(s), hz, cmd), r, "no " + *g.lacks);
-  }
+  if (r.status != 0) band_refused(s, hz, cmd, r);
   const auto index = text::parse_integer<int>(text::trimmed(r.data));
   if (!index) transport("\"" + cmd + "\" answered \"" + r.data + "\", expected the new slice's number");
   g.slice = *index;
@@ -265,17 +275,14 @@ void FlexLink::set_frequency(Link l, Hz hz) {
   Leg& g = leg(s);
   const std::string band = band_name(hz);
   if (g.lacks == band)
-    throw LinkError("no " + band, fmt::format("{}: the radio refused {} for the {}: the {} at {} Hz is not sent",
-                                              describe(), band, to_string(s), to_string(s), hz));
+    throw LinkError("no " + band, fmt::format("the radio refused {} for the {}: the {} at {} Hz is not sent", band,
+                                              to_string(s), to_string(s), hz));
   if (!g.slice) {
     ensure_slice(s, hz);
   } else {
     const std::string cmd = flex::tune(*g.slice, hz);
     const flex::Reply r = ask(cmd);
-    if (r.status != 0) {
-      g.lacks = band;
-      refused(fmt::format("the {} at {} Hz ({})", to_string(s), hz, cmd), r, "no " + band);
-    }
+    if (r.status != 0) band_refused(s, hz, cmd, r);
     slice_hz_[*g.slice] = hz;
   }
   if (g.lacks && *g.lacks != band) g.lacks.reset();   // the band it lacked is not this one
@@ -322,7 +329,7 @@ void FlexLink::send_raw(const std::string& text) {
   std::string cmd = text;
   while (!cmd.empty() && (cmd.back() == '\n' || cmd.back() == '\r')) cmd.pop_back();
   if (const flex::Reply r = ask(cmd); r.status != 0)
-    throw LinkError(Action::drop, fmt::format("{}: \"{}\" refused ({})", describe(), cmd, flex::error_text(r.status)));
+    throw LinkError(Action::drop, fmt::format("\"{}\" refused ({})", cmd, flex::error_text(r.status)));
 }
 
 // Idle: the status lines that came (a turn of the knob) are taken; a closed connection is seen.

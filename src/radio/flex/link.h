@@ -81,6 +81,8 @@ class FlexLink final : public RadioLink {
   void ensure_tx(Link l);
   [[noreturn]] void transport(const std::string& what);
   [[noreturn]] void refused(const std::string& what, const flex::Reply& r, const std::string& lacking);
+  // A frequency refused: the band is a limit of this link ("no 70 cm"), not sent again.
+  [[noreturn]] void band_refused(Link s, Hz hz, const std::string& cmd, const flex::Reply& r);
 
   FlexOptions opt_;
   int fd_ = -1;
