@@ -57,8 +57,9 @@ class Flex:
         self.slices = {n: dict(s) for n, s in slices.items()}
         self.bands, self.duplex, self.handle = bands, duplex, handle
         self.lock = threading.Lock()
-        self.lines = []        # (wall time, "C<seq>|command")
+        self.lines = []        # (wall time, "C<seq>|command", connection number)
         self.client = None
+        self.connections = 0
         self.sock = socket.socket()
         self.sock.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
         self.sock.bind(("127.0.0.1", 0))
@@ -74,8 +75,10 @@ class Flex:
                 return
             with self.lock:
                 self.client = c
+                self.connections += 1
+                n = self.connections
                 self._send(f"V1.4.0.0\nH{self.handle}\nS{self.handle}|radio slices=4 full_duplex_enabled=0")
-            threading.Thread(target=self._serve, args=(c,), daemon=True).start()
+            threading.Thread(target=self._serve, args=(c, n), daemon=True).start()
 
     def _send(self, text):
         try:
@@ -91,12 +94,12 @@ class Flex:
     def tunes(self, hz):
         return any(lo <= hz <= hi for lo, hi in self.bands)
 
-    def _serve(self, c):
+    def _serve(self, c, conn):
         for raw in socket_lines(c):
             line = raw.decode(errors="replace").strip()
             m = re.match(r"C(\d+)\|(.*)$", line)
             with self.lock:
-                self.lines.append((time.time(), line))
+                self.lines.append((time.time(), line, conn))
                 if not m:
                     continue
                 before, status, data, after = self.answer(m.group(2))
@@ -154,9 +157,15 @@ class Flex:
         with self.lock:
             return self.slices.get(n, {}).get("hz", 0)
 
-    def sent(self):
+    def sent(self, conn=None):
         with self.lock:
-            return list(self.lines)
+            return [(t, line) for t, line, c in self.lines if conn in (None, c)]
+
+    def drop(self):
+        """The radio closes trakbox's connection (restarted, the network gone)."""
+        with self.lock:
+            self.client.shutdown(socket.SHUT_RDWR)
+            self.client.close()
 
     def close(self):
         self.sock.close()
@@ -342,6 +351,35 @@ def near_culmination():
         flex.close()
 
 
+def reconnect():
+    """The connection closed mid-pass: trakbox reconnects and takes the slices it had (slice 0 the
+    uplink, tx=1; slice 1, which it created, the downlink): no new slice, both tuned again."""
+    d_spot, u_spot = SPOTS["RS-44"]
+    flex = Flex({0: {"hz": 14_200_000, "mode": "USB", "tx": 1}}, [HF, XVTR_2M, XVTR_70CM])
+    procs = []
+    try:
+        tb, state = start(flex, RS44_PASS[0], RATE)
+        procs.append(tb)
+        poll("RS-44's downlink on a slice of its own", lambda: abs(flex.hz(1) - d_spot) < 12_000, 30, every=0.05)
+        flex.drop()
+        poll("trakbox back on the radio", lambda: any(TUNE.search(line) for _, line in flex.sent(2)), 20, every=0.05)
+        poll("both slices tuned again", lambda: {int(TUNE.search(line).group(1)) for _, line in flex.sent(2)
+                                                 if TUNE.search(line)} == {0, 1}, 20, every=0.05)
+        again = [line[line.index("|") + 1:] for _, line in flex.sent(2)]
+        log = leave_and_read_log(tb, state, procs)
+        check(again[:2] == ["sub slice all", "slice list"], f"the prologue again: {again[:3]}")
+        check(not any(c.startswith("slice create") for c in again), f"no new slice: {again[:6]}")
+        check(sorted(flex.slices) == [0, 1], f"two slices on the radio: {sorted(flex.slices)}")
+        check(abs(flex.hz(0) - u_spot) < 5_000, "the uplink on slice 0")
+        lost = [ln for ln in log.splitlines() if "the connection was closed" in ln]
+        check(lost and "reconnected" in log, f"the loss and the reconnect in the log: {lost}")
+        print(f"flex_satellite reconnect: after the radio closed the connection, {again[:2]}, slices 0 and 1 "
+              f"taken again, no slice created; log: {lost[0].strip()[:160]}")
+    finally:
+        reap(procs)
+        flex.close()
+
+
 def no_70cm():
     """A radio with a 2 m transverter only: the downlink's tune refused, a limit; the uplink tuned."""
     d_spot, u_spot = SPOTS["RS-44"]
@@ -378,6 +416,7 @@ def no_70cm():
 def main():
     whole_pass()
     near_culmination()
+    reconnect()
     no_70cm()
 
 

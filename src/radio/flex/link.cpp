@@ -78,7 +78,7 @@ void FlexLink::close() noexcept {
 
 void FlexLink::transport(const std::string& what) {
   close();
-  throw LinkError(Action::reconnect, describe() + ": " + what);
+  throw LinkError(Action::reconnect, what);
 }
 
 void FlexLink::refused(const std::string& what, const flex::Reply& r, const std::string& lacking) {
@@ -106,7 +106,7 @@ void FlexLink::open() {
   close();
   std::string why;
   fd_ = connect_tcp(opt_.host, opt_.port, opt_.timeout, why);
-  if (fd_ < 0) throw LinkError(Action::reconnect, describe() + ": cannot open: " + why);
+  if (fd_ < 0) throw LinkError(Action::reconnect, "cannot open: " + why);
   slice_hz_.clear();
   slice_tx_.clear();
   for (Leg& g : legs_) {
@@ -140,7 +140,13 @@ void FlexLink::greeting() {
   handle_ = 0;
   bool have_handle = false;
   while (version_.empty() || !have_handle) {
-    const std::string line = read_line();
+    std::string line;
+    try {
+      line = read_line();
+    } catch (const LinkError& e) {
+      throw LinkError(Action::reconnect, std::string(e.what()) + " before the radio's V and H lines: is this the "
+                                                                 "SmartSDR API's port (4992) of a FlexRadio?");
+    }
     if (const auto v = flex::decode_version(line)) version_ = *v;
     else if (const auto h = flex::decode_handle(line)) handle_ = *h, have_handle = true;
     else take(line);
@@ -233,7 +239,7 @@ void FlexLink::take(const std::string& line) {
 }
 
 flex::Reply FlexLink::ask(const std::string& body) {
-  if (fd_ < 0) throw LinkError(Action::reconnect, describe() + " is not open");
+  if (fd_ < 0) throw LinkError(Action::reconnect, "the connection is not open");
   const std::uint32_t seq = ++seq_;
   write_all(flex::command(seq, body));
   while (true) {
@@ -307,11 +313,11 @@ bool FlexLink::can_read(Link l) const {
 Hz FlexLink::read_frequency(Link l) {
   const Link s = station(l);
   const Leg& g = leg(s);
-  if (!g.slice) throw LinkError(Action::drop, describe() + ": the " + to_string(s) + " has no slice yet");
+  if (!g.slice) throw LinkError(Action::drop, std::string("the ") + to_string(s) + " has no slice yet");
   (void)ask(flex::ping());   // what the radio said before its reply is in
   const auto it = slice_hz_.find(*g.slice);
   if (it == slice_hz_.end())
-    throw LinkError(Action::drop, fmt::format("{}: slice {} has said no frequency", describe(), *g.slice));
+    throw LinkError(Action::drop, fmt::format("slice {} has said no frequency", *g.slice));
   return it->second;
 }
 
@@ -334,7 +340,7 @@ void FlexLink::send_raw(const std::string& text) {
 
 // Idle: the status lines that came (a turn of the knob) are taken; a closed connection is seen.
 void FlexLink::check() {
-  if (fd_ < 0) throw LinkError(Action::reconnect, describe() + " is not open");
+  if (fd_ < 0) throw LinkError(Action::reconnect, "the connection is not open");
   while (line_waiting(0)) take(read_line());
 }
 
