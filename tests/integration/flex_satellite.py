@@ -13,6 +13,8 @@ S line from another client's handle): trakbox follows (the uplink moves 10 kHz d
 inverting, and the downlink tracks the new spot). Mid-pass the status is healthy, no limits.
 Then 8 s near culmination at the real rate: the worst tuning error of each link, sampled every
 0.2 s (update lag included), comparable with the other rows of docs/radio.md.
+SO-50 in FM: the 67.0 Hz tone on the transmit slice (`fm_tone_mode=CTCSS_TX fm_tone_value=67.0`).
+After the connection closed mid-pass: the slices taken again, none created.
 Then a radio with a 2 m transverter only: the downlink slice's `slice tune 0 435...` is refused
 (R|50000004|...): a limit ("no 70 cm", in the log and the status's limits, said once, not sent
 again), never a lost link; the uplink is tuned on slice 1 and marked `tx=1`.
@@ -30,7 +32,7 @@ import time
 from datetime import datetime, timedelta, timezone
 
 sys.path.insert(0, os.path.dirname(__file__))
-from _ptyradio import C, RS44_PASS, SPOTS  # noqa: E402
+from _ptyradio import C, RS44_PASS, SO50_PASS, SPOTS  # noqa: E402
 from _rigs2026 import worst_error  # noqa: E402
 from _tbharness import (BIN, SOURCE, check, leave_and_read_log, poll, reap, run_test, satellite_track,  # noqa: E402
                         socket_lines)
@@ -174,13 +176,13 @@ class Flex:
                 self.client.close()
 
 
-def start(flex, at, rate=None, duplex=True):
+def start(flex, at, rate=None, duplex=True, sat=RS44_PASS[1]):
     state = tempfile.mkdtemp(prefix="trakbox-flex-")
     spec = f"flex:127.0.0.1:{flex.port}" + (":duplex" if duplex else "")
     args = [BIN, "--state", state, "--line", "--satrak-port", "0", "--clock", at.strftime("%Y-%m-%dT%H:%M:%SZ"),
             "--radio", spec, "--elements-url", "file://" + os.path.join(SOURCE, "data", "amateur.tle")] + (["--clock-rate", str(rate)] if rate else [])
     tb = subprocess.Popen(args, stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
-    tb.stdin.write(b"S\r" + RS44_PASS[1] + b"\r")   # single tracking of the shipped list's RS-44
+    tb.stdin.write(b"S\r" + sat + b"\r")   # single tracking of the shipped list's RS-44 (12) or SO-50 (5)
     tb.stdin.flush()
     return tb, state
 
@@ -380,6 +382,29 @@ def reconnect():
         flex.close()
 
 
+def so50_tone():
+    """SO-50 in FM: both slices FM, the 67.0 Hz tone on the transmit slice."""
+    d_spot, u_spot = SPOTS["SO-50"]
+    flex = Flex({0: {"hz": 14_200_000, "mode": "USB", "tx": 0}, 1: {"hz": 14_250_000, "mode": "USB", "tx": 1}},
+                [HF, XVTR_2M, XVTR_70CM])
+    procs = []
+    try:
+        tb, state = start(flex, SO50_PASS[0], sat=SO50_PASS[1])
+        procs.append(tb)
+        poll("SO-50's downlink on slice 0", lambda: abs(flex.hz(0) - d_spot) < 12_000, 30, every=0.05)
+        poll("SO-50's uplink on slice 1", lambda: abs(flex.hz(1) - u_spot) < 5_000, 30, every=0.05)
+        tone = "slice set 1 fm_tone_mode=CTCSS_TX fm_tone_value=67.0"
+        poll("the 67.0 Hz tone on the transmit slice", lambda: any(line.endswith("|" + tone) for _, line in flex.sent()), 10)
+        lines = [line[line.index("|") + 1:] for _, line in flex.sent()]
+        leave_and_read_log(tb, state, procs)
+        check("slice set 0 mode=FM" in lines and "slice set 1 mode=FM" in lines, f"FM on both slices: {lines[:8]}")
+        check(not any("fm_tone" in c and not c.startswith("slice set 1 ") for c in lines), "the tone on slice 1 only")
+        print(f"flex_satellite SO-50: {[c for c in lines if 'mode=' in c or 'fm_tone' in c][:3]}")
+    finally:
+        reap(procs)
+        flex.close()
+
+
 def no_70cm():
     """A radio with a 2 m transverter only: the downlink's tune refused, a limit; the uplink tuned."""
     d_spot, u_spot = SPOTS["RS-44"]
@@ -417,6 +442,7 @@ def main():
     whole_pass()
     near_culmination()
     reconnect()
+    so50_tone()
     no_70cm()
 
 
