@@ -46,6 +46,16 @@ RadioSpecParse receiver_spec(const RadioModel& m, const std::string& rest, const
   return {spec, {}};
 }
 
+// flex[:HOST[:PORT]][:duplex]: ":duplex" last (an IPv6 HOST is in brackets), then as a receiver's.
+RadioSpecParse flex_spec(const RadioModel& m, std::string rest, const std::string& quoted, RadioSpec spec) {
+  constexpr std::string_view kDuplex = "duplex";
+  if (rest == kDuplex || (rest.size() > kDuplex.size() && rest.ends_with(":duplex"))) {
+    spec.full_duplex = true;
+    rest.resize(rest == kDuplex ? 0 : rest.size() - kDuplex.size() - 1);
+  }
+  return receiver_spec(m, rest, quoted, std::move(spec));
+}
+
 }  // namespace
 
 RadioSpecParse parse_radio_spec(std::string_view text, std::string_view option) {
@@ -100,6 +110,7 @@ RadioSpecParse parse_radio_spec(std::string_view text, std::string_view option) 
       return {spec, {}};
     }
     case SpecForm::receiver: return receiver_spec(*m, rest, quoted, spec);
+    case SpecForm::flex: return flex_spec(*m, rest, quoted, spec);
     case SpecForm::hamlib:
     case SpecForm::rigctld:
       break;

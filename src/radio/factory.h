@@ -12,6 +12,7 @@
 //                                                 its name (IC-9700, ic9700: rigctl -l)
 //   rigctld[:HOST[:PORT]][:split|:mainsub]        a rigctld daemon (Hamlib NET rigctl, model 2);
 //                                                 HOST defaults to 127.0.0.1, PORT to 4532
+//   flex[:HOST[:PORT]][:duplex]                   a FlexRadio 6000/8000 (SmartSDR TCP API, 4992)
 // Parsing is separate from opening so a bad spec is reported before anything starts; opening
 // never blocks (the drivers connect on their worker thread).
 #pragma once
@@ -37,7 +38,8 @@ struct RadioSpec {
   int model = 0;               // hamlib
   int baud = 0;                // hamlib, registry models (0: the default)
   std::string host;            // rigctld
-  int port = 0;                // rigctld
+  int port = 0;                // rigctld, gqrx, flex
+  bool full_duplex = false;    // flex:...:duplex: SmartSDR's full duplex switched on
   HamlibVfoScheme scheme = HamlibVfoScheme::automatic;
 };
 

@@ -45,7 +45,7 @@ std::span<const RadioModel> radio_models() {
   // In the order --radio list prints: trakbox's own, menu 6-7's rig, then each family's rows.
   static const std::vector<RadioModel> all = [] {
     std::vector<RadioModel> v(std::begin(kOwn), std::end(kOwn));
-    for (auto rows : {icom_rows(), kenwood_rows(), yaesu_rows(), hamlib_rows()}) v.insert(v.end(), rows.begin(), rows.end());
+    for (auto rows : {icom_rows(), kenwood_rows(), yaesu_rows(), flex_rows(), hamlib_rows()}) v.insert(v.end(), rows.begin(), rows.end());
     return v;
   }();
   return all;
@@ -79,6 +79,7 @@ std::string spec_form(const RadioModel& m) {
     case SpecForm::hamlib: return n + ":MODEL:DEVICE[:BAUD][:split|:mainsub]";
     case SpecForm::rigctld: return n + "[:HOST[:PORT]][:split|:mainsub]";
     case SpecForm::receiver: return n + "[:HOST[:PORT]]";
+    case SpecForm::flex: return n + "[:HOST[:PORT]][:duplex]";
   }
   return n;
 }

@@ -27,6 +27,7 @@ enum class SpecForm {
   hamlib,        // hamlib:MODEL:DEVICE[:BAUD][:split|:mainsub]
   rigctld,       // rigctld[:HOST[:PORT]][:split|:mainsub]
   receiver,      // gqrx[:HOST[:PORT]]: a receiver's rigctld-like server (the row's port by default)
+  flex,          // flex[:HOST[:PORT]][:duplex]: the SmartSDR TCP API (the row's port by default)
 };
 
 // Which satellite-mode command a model has.
@@ -40,7 +41,7 @@ enum class SatCommand {
 };
 
 // The protocol a model speaks (its driver).
-enum class Protocol { simulated, icom, kenwood, ft736, ft847, ft817, newcat, cat, hamlib, rigctld, receiver };
+enum class Protocol { simulated, icom, kenwood, ft736, ft847, ft817, newcat, cat, hamlib, rigctld, receiver, flex };
 
 struct RadioCaps {
   int links = 1;                 // 2: one radio carries downlink and uplink

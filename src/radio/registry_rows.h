@@ -1,5 +1,6 @@
 // Each family's rows of the radio registry (internal to src/radio; radio/registry.h is the table):
-// radio/icom/models.cpp, radio/kenwood/models.cpp, radio/yaesu/models.cpp, radio/hamlib/models.cpp.
+// radio/icom/models.cpp, radio/kenwood/models.cpp, radio/yaesu/models.cpp, radio/flex/models.cpp,
+// radio/hamlib/models.cpp.
 #pragma once
 #include <span>
 
@@ -10,6 +11,7 @@ namespace tb::radio {
 std::span<const RadioModel> icom_rows();
 std::span<const RadioModel> kenwood_rows();
 std::span<const RadioModel> yaesu_rows();
+std::span<const RadioModel> flex_rows();
 std::span<const RadioModel> hamlib_rows();
 
 }  // namespace tb::radio

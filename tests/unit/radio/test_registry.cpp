@@ -162,6 +162,41 @@ TEST_CASE("--radio gqrx / sdrpp: receivers, one link, no tone, their own ports")
   CHECK(made.driver->describe() == "GQRX at 127.0.0.1:9");
 }
 
+TEST_CASE("--radio flex: the SmartSDR API on port 4992, :duplex last") {
+  auto f = parse_radio_spec("flex");
+  REQUIRE(f.spec);
+  CHECK(f.spec->host == "127.0.0.1");
+  CHECK(f.spec->port == 4992);
+  CHECK_FALSE(f.spec->full_duplex);
+  f = parse_radio_spec("flex:192.0.2.7");
+  REQUIRE(f.spec);
+  CHECK(f.spec->host == "192.0.2.7");
+  CHECK(f.spec->port == 4992);
+  f = parse_radio_spec("flex:192.0.2.7:5000:duplex");
+  REQUIRE(f.spec);
+  CHECK(f.spec->port == 5000);
+  CHECK(f.spec->full_duplex);
+  f = parse_radio_spec("flex:duplex");
+  REQUIRE(f.spec);
+  CHECK(f.spec->host == "127.0.0.1");
+  CHECK(f.spec->full_duplex);
+  f = parse_radio_spec("flex:[2001:db8::7]:duplex");
+  REQUIRE(f.spec);
+  CHECK(f.spec->host == "[2001:db8::7]");   // as the rigctld spec keeps it
+  CHECK(f.spec->port == 4992);
+  CHECK(f.spec->full_duplex);
+  CHECK(parse_radio_spec("flex:host:99999").error.find("expected flex[:HOST[:PORT]][:duplex]") != std::string::npos);
+  const RadioModel* m = find_radio_model("flex");
+  REQUIRE(m);
+  CHECK(m->caps.links == 2);
+  CHECK(m->caps.reads);
+  CHECK(m->caps.step_hz == 1);
+  CHECK(m->protocol == Protocol::flex);
+  auto made = make_radio("flex:127.0.0.1:9", RadioConfig{});
+  REQUIRE(made.driver);
+  CHECK(made.driver->describe() == "FlexRadio at 127.0.0.1:9");
+}
+
 TEST_CASE("the rigs of 2026, third round (issue 61): rows, defaults, :xvtr, --radio list in 80 columns") {
   const RadioModel& ic905 = *find_radio_model("ic905");
   CHECK(ic905.civ_address == 0xAC);
