@@ -52,6 +52,7 @@ PassGeometry PassGeometry::from(const AdcModel& m, bool may_cross, double start_
     for (int i = 0; i < static_cast<int>(g.pieces.size()); ++i)
       if (i != g.piece && !g.pieces[static_cast<std::size_t>(i)].empty()) g.choices.push_back(i);
   g.start_el = start_el;
+  g.az_rate_deg_s = m.config().az_rate_deg_s;
   return g;
 }
 
@@ -70,6 +71,12 @@ double pointing_error_deg(double az1, double el1, double az2, double el2) {
 RotatorPosition PassPlan::map(double az_deg, double el_deg) const {
   double az = flip ? az_deg + 180.0 : az_deg;
   double el = flip ? 180.0 - el_deg : el_deg;
+  if (over_top) {
+    // The direction in the plane of plane_az nearest the target: elevation 0 towards plane_az,
+    // 90 at the zenith, 180 towards plane_az + 180.
+    az = plane_az;
+    el = std::atan2(std::sin(el_deg * kDeg), std::cos(el_deg * kDeg) * std::cos((az_deg - plane_az) * kDeg)) / kDeg;
+  }
   double t = wrap360(az - rotor_start_deg(geometry.start));
   // Into the window [center - 180, center + 180).
   t += 360.0 * std::floor((window_center + 180.0 - t) / 360.0);
@@ -84,12 +91,16 @@ AzEl PassPlan::pointing_at(double az_deg, double el_deg) const { return pointing
 
 bool PassPlan::lost_at(double az_deg, double el_deg) const {
   const AzEl a = pointing_at(az_deg, el_deg);
+  // Over the top the plan points within its largest error (90 - the maximum elevation) by design.
+  if (over_top) return pointing_error_deg(a.az, a.el, az_deg, std::max(el_deg, 0.0)) > max_error_deg + 0.05;
   return azimuth_distance(a.az, az_deg) > 0.05 && el_deg < 89.5;
 }
 
 namespace {
 PassPlan plan_in_piece(std::span<const TrackPoint> track, const PassGeometry& g,
                        std::optional<double> current_travel);
+PassPlan plan_by_piece(std::span<const TrackPoint> track, const PassGeometry& g, std::optional<double> current_travel,
+                       double rate);
 
 // How much of the pass a plan follows, and the highest elevation among the samples it follows
 // (-1e300 when none).
@@ -103,9 +114,9 @@ Followed followed_by(const PassPlan& plan, std::span<const TrackPoint> track) {
   for (const TrackPoint& s : track) {
     if (s.el_deg < plan.geometry.start_el) continue;
     ++c.samples;
-    const AzEl at = pointing(plan.geometry, plan.map(s.az_deg, s.el_deg));
-    // Followed: the azimuth is reached (near the zenith any azimuth points at the satellite).
-    if (azimuth_distance(at.az, s.az_deg) > 0.05 && s.el_deg < 89.5) continue;
+    // Followed: the azimuth is reached (near the zenith any azimuth points at the satellite), or
+    // over the top, within the plan's error.
+    if (plan.lost_at(s.az_deg, s.el_deg)) continue;
     ++c.followed;
     if (!c.from) c.from = s.time;
     c.to = s.time;
@@ -134,7 +145,95 @@ std::string PassPlan::coverage_text() const {
          " of the pass): it reaches " + piece;
 }
 
+namespace {
+
+// The fastest the pass's azimuth turns between two samples, degrees a second.
+double peak_az_rate(std::span<const TrackPoint> track) {
+  double peak = 0.0;
+  for (std::size_t i = 1; i < track.size(); ++i) {
+    const double dt = orbit::minutes_between(track[i - 1].time, track[i].time) * 60.0;
+    if (dt > 0.0) peak = std::max(peak, std::abs(step(track[i - 1].az_deg, track[i].az_deg)) / dt);
+  }
+  return peak;
+}
+
+// The largest angle between the samples and the vertical plane of azimuth a (either side).
+double off_plane(std::span<const TrackPoint> track, double a) {
+  double worst = 0.0;
+  for (const TrackPoint& s : track) {
+    const double across = std::cos(std::max(s.el_deg, 0.0) * kDeg) * std::sin((s.az_deg - a) * kDeg);
+    worst = std::max(worst, std::abs(std::asin(std::clamp(across, -1.0, 1.0))) / kDeg);
+  }
+  return worst;
+}
+
+// The vertical plane nearest the whole pass (the largest distance from it smallest): a half-degree
+// search round half the circle (a plane is both its azimuths), then a hundredth round the best. The
+// samples near the culmination do not tell it (the azimuth turns there), all of them do.
+double best_plane(std::span<const TrackPoint> track) {
+  double best = 0.0, err = off_plane(track, 0.0);
+  for (double a = 0.5; a < 180.0; a += 0.5)
+    if (const double e = off_plane(track, a); e < err) best = a, err = e;
+  const double around = best;
+  for (double a = around - 0.5; a <= around + 0.5; a += 0.01)
+    if (const double e = off_plane(track, a); e < err) best = a, err = e;
+  return wrap360(best);
+}
+
+// The pass over the top in the vertical plane nearest it (perpendicular to the culmination's
+// azimuth for a pass along a great circle), its elevation starting on the AOS side; the plane's azimuth taken in the travel where it is furthest from the ends (or nearest
+// the antenna). Nothing when the travel cannot hold it.
+std::optional<PassPlan> over_the_top(std::span<const TrackPoint> track, const PassGeometry& g,
+                                     std::optional<double> current_travel) {
+  PassPlan p;
+  p.geometry = g;
+  p.over_top = true;
+  p.plane_az = best_plane(track);
+  if (std::cos((track.front().az_deg - p.plane_az) * kDeg) < 0.0) p.plane_az = wrap360(p.plane_az + 180.0);
+  const double t0 = wrap360(p.plane_az - rotor_start_deg(g.start));
+  std::optional<double> best;
+  for (int k = -1; k <= 2; ++k) {
+    const double t = t0 + 360.0 * k;
+    if (!g.az_travel.empty() && (t < g.az_travel.lo || t > g.az_travel.hi)) continue;
+    const double score = current_travel ? -std::abs(t - *current_travel)
+                                        : std::min(t - g.az_travel.lo, g.az_travel.hi - t);
+    const double kept = !best ? -1e300
+                              : (current_travel ? -std::abs(*best - *current_travel)
+                                                : std::min(*best - g.az_travel.lo, g.az_travel.hi - *best));
+    if (!best || score > kept) best = t;
+  }
+  if (!best) return std::nullopt;
+  p.window_center = *best;
+  double worst = 0.0, sum = 0.0;
+  for (const TrackPoint& s : track) {
+    const AzEl at = pointing(g, p.map(s.az_deg, s.el_deg));
+    const double err = pointing_error_deg(at.az, at.el, s.az_deg, std::max(s.el_deg, 0.0));
+    worst = std::max(worst, err);
+    sum += err;
+  }
+  p.max_error_deg = worst;
+  p.mean_error_deg = sum / static_cast<double>(track.size());
+  p.aos = p.map(track.front().az_deg, track.front().el_deg);
+  return p;
+}
+
+}  // namespace
+
 PassPlan plan_pass(std::span<const TrackPoint> track, const PassGeometry& g, std::optional<double> current_travel) {
+  // A pass whose azimuth outruns the motor near the zenith, on a rotator that can flip: over the top.
+  const double rate = peak_az_rate(track);
+  if (g.flip_allowed && g.az_rate_deg_s > 0.0 && rate > g.az_rate_deg_s && g.choices.size() <= 1)
+    if (auto p = over_the_top(track, g, current_travel)) {
+      p->peak_az_rate_deg_s = rate;
+      p->coverage = followed_by(*p, track).coverage;
+      return *p;
+    }
+  return plan_by_piece(track, g, current_travel, rate);
+}
+
+namespace {
+PassPlan plan_by_piece(std::span<const TrackPoint> track, const PassGeometry& g, std::optional<double> current_travel,
+                       double rate) {
   std::optional<PassPlan> best;
   double best_high = 0.0;
   const std::vector<int> choices = g.choices.empty() ? std::vector<int>{g.piece} : g.choices;
@@ -159,10 +258,10 @@ PassPlan plan_pass(std::span<const TrackPoint> track, const PassGeometry& g, std
       best_high = high;
     }
   }
+  best->peak_az_rate_deg_s = rate;
   return *best;
 }
 
-namespace {
 PassPlan plan_in_piece(std::span<const TrackPoint> track, const PassGeometry& g,
                        std::optional<double> current_travel) {
   PassPlan plain;

@@ -43,6 +43,9 @@ struct PassGeometry {
   std::vector<int> choices;
   // Coverage counts the samples at or above the rotor start elevation (STATION.DAT line 5).
   double start_el = -2.0;
+  // The azimuth motor's full-speed rate (RotatorConfig::az_rate_deg_s; 0: unknown): a pass whose
+  // azimuth turns faster near its culmination is followed over the top when the rotator can flip.
+  double az_rate_deg_s = 0.0;
   // The rotator as the controller's model sees it: limits, span, skew, flip, the piece in force;
   // may_cross: the planner may choose the other piece of a split travel.
   static PassGeometry from(const AdcModel& m, bool may_cross = false, double start_el = -2.0);
@@ -61,6 +64,16 @@ struct PassCoverage {
 struct PassPlan {
   PassGeometry geometry;
   bool flip = false;            // follow the pass over the top
+  // Over the top through the zenith (issue 57): a pass so high that its azimuth turns faster than
+  // the motor near culmination, on a rotator that can flip, is followed in the vertical plane of
+  // azimuth plane_az (perpendicular to the azimuth at culmination, on the AOS side): the azimuth
+  // stays there and the elevation runs 0 -> 180 through the zenith. The pointing error is at most
+  // 90 - the pass's maximum elevation (1.2 deg for an 88.8 deg pass), where following the azimuth
+  // would leave the antenna behind by tens of degrees for half a minute.
+  bool over_top = false;
+  double plane_az = 0.0;
+  // What the plan says about how fast the pass turns: its fastest azimuth rate between samples.
+  double peak_az_rate_deg_s = 0.0;
   double window_center = 0.0;   // travel: each azimuth is taken within +-180 of this
   RotatorPosition aos;          // where to be at AOS
   bool held_at_stop = false;    // part of the pass lies beyond the travel: the antenna waits there

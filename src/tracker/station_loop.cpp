@@ -486,6 +486,11 @@ const rotator::PassPlan* StationLoop::plan_of(int key, const std::string& name, 
   planned_ = PlannedPass{key, pass.aos, rotator::plan_pass(track, g, travel)};
   if (planned_->plan.geometry.piece != rotator_->model().az_piece())
     rotator_->select_az_piece(planned_->plan.geometry.piece);
+  if (const rotator::PassPlan& p = planned_->plan; p.over_top)
+    spdlog::info("tracker: {} pass at {}: over the top in the plane of azimuth {:.1f} (its azimuth turns {:.1f} "
+                 "deg/s near the zenith, the motor {:.1f}): at most {:.1f} deg off",
+                 name, orbit::format_iso8601(pass.aos), p.plane_az, p.peak_az_rate_deg_s, g.az_rate_deg_s,
+                 p.max_error_deg);
   if (!planned_->plan.coverage.full()) {
     const std::string what =
         name + " pass at " + orbit::format_iso8601(pass.aos) + ": " + planned_->plan.coverage_text();

@@ -2,6 +2,7 @@
 #include <doctest/doctest.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -226,4 +227,67 @@ TEST_CASE("Controller and simulated rotator follow a flipped pass without swingi
   }
   CHECK_FALSE(jump);
   CHECK(worst < 3.0);  // within a few dead bands of the satellite all pass long
+}
+
+namespace {
+
+// A pass along a great circle tilted `miss` degrees from the zenith towards the east: from north
+// (AOS, azimuth 0) over the sky to south, its culmination at azimuth 90, elevation 90 - miss. One
+// sample every 5 s over 600 s (ENU vector (sin s sin d, cos s, sin s cos d), s from 0 to 180 deg).
+std::vector<TrackPoint> zenith_pass(double miss) {
+  constexpr double k = std::numbers::pi / 180.0;
+  std::vector<TrackPoint> t;
+  const auto aos = from_civil(2026, 5, 23, 13, 45);
+  for (int i = 0; i <= 120; ++i) {
+    const double s = 1.5 * i * k;
+    const double e = std::sin(s) * std::sin(miss * k), n = std::cos(s), u = std::sin(s) * std::cos(miss * k);
+    TrackPoint p;
+    p.time = aos + std::chrono::seconds(5 * i);
+    p.az_deg = wrap360(std::atan2(e, n) / k);
+    p.el_deg = std::asin(std::clamp(u, -1.0, 1.0)) / k;
+    t.push_back(p);
+  }
+  return t;
+}
+
+}  // namespace
+
+TEST_CASE("A pass through the zenith on a rotator that can flip: over the top in one vertical plane") {
+  const auto track = zenith_pass(1.2);  // culminates at 88.8 deg, azimuth 90
+  const PassGeometry g = geometry(RotorStart::south, true);
+  REQUIRE(g.flip_allowed);
+  REQUIRE(g.az_rate_deg_s == doctest::Approx(6.0));
+  const PassPlan plan = plan_pass(track, g);
+  CHECK(plan.over_top);
+  CHECK_FALSE(plan.flip);
+  CHECK(std::min(plan.plane_az, 360.0 - plan.plane_az) < 0.05);  // north: perpendicular to 90, the AOS side
+  CHECK(plan.peak_az_rate_deg_s > 6.0);
+  // The largest error is at the culmination: the antenna at the zenith, the satellite 1.2 deg off.
+  CHECK(plan.max_error_deg == doctest::Approx(1.2).epsilon(1e-6));
+  CHECK(plan.coverage.full());
+  // The azimuth stays where it is; the elevation runs 0 -> 90 -> 180 without a step.
+  const RotatorPosition first = plan.map(track.front().az_deg, track.front().el_deg);
+  CHECK(first == plan.aos);
+  CHECK(first.el == doctest::Approx(0.0).epsilon(1e-9));
+  RotatorPosition prev = first;
+  for (const TrackPoint& p : track) {
+    const RotatorPosition r = plan.map(p.az_deg, p.el_deg);
+    CHECK(r.az_travel == doctest::Approx(first.az_travel));
+    CHECK(r.el >= prev.el - 1e-9);
+    CHECK(r.el - prev.el < 8.0);
+    prev = r;
+  }
+  CHECK(prev.el == doctest::Approx(180.0).epsilon(1e-6));
+  CHECK_FALSE(plan.lost_at(track[60].az_deg, track[60].el_deg));
+}
+
+TEST_CASE("A pass through the zenith without a flip, or one the motor keeps up with: no over-the-top plan") {
+  const auto track = zenith_pass(1.2);
+  const PassPlan plain = plan_pass(track, geometry(RotorStart::south, false));
+  CHECK_FALSE(plain.over_top);
+  CHECK(plain.peak_az_rate_deg_s > 6.0);
+  // A 60-degree pass: the azimuth turns at most about 1.7 deg/s between 5 s samples.
+  const PassPlan low = plan_pass(zenith_pass(30.0), geometry(RotorStart::south, true));
+  CHECK_FALSE(low.over_top);
+  CHECK(low.peak_az_rate_deg_s < 6.0);
 }
