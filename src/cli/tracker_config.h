@@ -99,6 +99,8 @@ struct TrackerConfig {
   // --event-min-el DEG: no AOS/LOS event for a pass whose maximum stays under it (stored).
   std::optional<bool> rotor_control;
   std::optional<double> event_min_el_deg;
+  std::optional<std::string> record;              // --record: audio, iq or off (radio.record)
+  std::optional<std::string> record_satellites;   // --record-satellites: names, "" every one
   // --handback S and --exclusive KIND (store::Sharing; "" for none), stored (issue 44).
   std::optional<int> handback_s;
   std::optional<std::string> exclusive;
