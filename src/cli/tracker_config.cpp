@@ -123,8 +123,9 @@ std::vector<OptionSpec> tracker_option_specs() {
                              std::string(kSocketFile) + "; the system service's is " + std::string(kServiceSocket) +
                              "), made for the user and group only"},
       {"on-event", "[KIND,...=]CMD", "run CMD (with /bin/sh) on every event, or on the kinds named: aos, los, "
-                                     "recording, elements, link-lost, link-back, save-failed, control; the event is in its environment "
-                                     "(TRAKBOX_EVENT, TRAKBOX_SATELLITE, TRAKBOX_AOS, ...; docs/service.md)", true},
+                                     "recording, elements, link-lost, link-back, save-failed, control; the event is "
+                                     "in its environment (TRAKBOX_EVENT, TRAKBOX_SATELLITE, TRAKBOX_AOS, ...; "
+                                     "docs/service.md)", true},
       {"udp-events", "HOST:PORT", "send each event as one JSON datagram (the fields of trakbox events) to HOST:PORT, "
                                   "e.g. 192.168.1.20:9000 (stored, so later starts send there too; none: "
                                   "no more)", true},
