@@ -17,6 +17,8 @@ the recorder's commands; no failure, no link-lost.
 DSP off: `AOS`, `u RECORD` 0, `U RECORD 1` refused, `u DSP` 0: the event `not started` says "DSP
 off" (and trakbox leaving mid-pass sends `LOS`), the status's limits say "GQRX: ... not recording: DSP off", the station stays healthy
 (failures 0, no fault) and the Doppler `F` frames keep coming.
+`--record iq`: `U IQRECORD 1` read back with `u IQRECORD` (no AOS: that starts the audio recorder),
+`iq` in the status, stopped with `U IQRECORD 0` when trakbox leaves mid-pass.
 """
 import json
 import os
@@ -69,7 +71,7 @@ def iso(s):
     return datetime.fromisoformat(s.replace("Z", "+00:00"))
 
 
-def run(dsp, aos, los, until):
+def run(dsp, aos, los, until, kind="audio"):
     """trakbox single-tracking SO-50 (the shipped list's #5) on the stand-in from 40 s before AOS to
     `until` (station time); returns (stand-in, events as (wall time, JSON), status documents
     sampled mid-pass, `trakbox status` text then, trakbox.log)."""
@@ -81,7 +83,7 @@ def run(dsp, aos, los, until):
     try:
         tb = subprocess.Popen([BIN, "--state", state, "--line", "--satrak-port", "0", "--clock",
                                start.strftime("%Y-%m-%dT%H:%M:%SZ"), "--clock-rate", str(RATE),
-                               "--radio", f"gqrx:127.0.0.1:{rig.port}", "--record", "audio",
+                               "--radio", f"gqrx:127.0.0.1:{rig.port}", "--record", kind,
                                "--elements-url", "file://" + os.path.join(SOURCE, "data", "amateur.tle"),
                                "--on-event", f"aos,los,recording,link-lost=echo \"$(date +%s.%N) $TRAKBOX_EVENT_JSON\" >> {hooks}"],
                               stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
@@ -179,10 +181,26 @@ def dsp_off(aos, los):
           f"failures 0, {later} F frames after the refusal on 1 connection")
 
 
+def iq(aos, los):
+    rig, events, (code, doc), text, log = run(True, aos, los, aos + (los - aos) * 0.6, kind="iq")
+    rec = [e for _, e in events if e["event"] == "recording"]
+    check(len(rec) == 1 and rec[0]["recording"]["state"] == "started" and rec[0]["recording"]["kind"] == "iq" and
+          rec[0]["recording"]["read_back"] and rec[0]["recording"]["file"] is None, f"recording events, iq: {rec}")
+    sent = [line for _, line, _ in rig.commands if "RECORD" in line or line in ("AOS", "LOS")]
+    # Read, start, read back; at the leave, stop and read back. No AOS: that starts the audio recorder.
+    check(sent == ["u IQRECORD", "U IQRECORD 1", "u IQRECORD", "U IQRECORD 0", "u IQRECORD"],
+          f"the IQ recorder's start, read back and stop: {sent}")
+    rj = doc["radios"][0]["recording"]
+    check(code == 0 and doc["healthy"] and rj["state"] == "iq" and rj["read_back"], f"radios[0].recording, iq: {rj}")
+    check(not rig.iq, "the IQ recorder is off after trakbox left")
+    print(f"gqrx_record iq: {', '.join(sent)}")
+
+
 def main():
     aos, los = so50_pass()
     dsp_on(aos, los)
     dsp_off(aos, los)
+    iq(aos, los)
 
 
 if __name__ == "__main__":
