@@ -353,6 +353,8 @@ std::optional<std::string> apply_command_line(TrackerConfig& c, store::ModelOwne
   if (c.az_travel_deg) set("az-travel", "rotator.az_travel_deg", *c.az_travel_deg);
   if (c.event_min_el_deg) set("event-min-el", "event_min_el_deg", *c.event_min_el_deg);
   if (c.horizon_mask) set("horizon-mask", "station.horizon_mask", *c.horizon_mask);
+  if (c.record) set("record", "radio.record", *c.record);
+  if (c.record_satellites) set("record-satellites", "radio.record_satellites", *c.record_satellites);
   if (c.handback_s) set("handback", "sharing.handback_s", static_cast<long long>(*c.handback_s));
   if (c.exclusive) set("exclusive", "sharing.exclusive", c.exclusive->empty() ? std::string("none") : *c.exclusive);
   if (c.satnogs_station) set("satnogs-station", "sharing.satnogs_station", static_cast<long long>(*c.satnogs_station));
@@ -494,7 +496,8 @@ int run_tracker(const std::vector<std::string>& args, FrontEnd front_end) {
   app.start(std::chrono::milliseconds(c.tick_ms));
   // Stored options given on the command line are stored now, not only at the next save.
   if (startup.ram_lost || startup.fresh || c.rotor_control || c.event_min_el_deg || c.az_travel_deg || c.handback_s || c.exclusive ||
-      c.satnogs_station || c.satnogs_url || c.station || c.logger || c.logger_key_file || c.logger_station_id)
+      c.satnogs_station || c.satnogs_url || c.station || c.logger || c.logger_key_file || c.logger_station_id ||
+      c.record || c.record_satellites)
     app.save();
   log->info("trakbox {} started, state {}", kVersion, file.path().string());
   stopped_line.started = true;

@@ -63,7 +63,7 @@ std::string help_text(const std::string& command) {
     what = "What the running station is doing: tracking, antenna, radio, tracking list and next passes, element\n"
            "age, last save, problems. Exit status: 0 running and healthy, 1 running with problems, 3 not running.\n";
   else
-    what = "The running station's events (aos, los, elements, link-lost, link-back, save-failed, control) as JSON\n"
+    what = "The running station's events (aos, los, recording, elements, link-lost, link-back, save-failed, control) as JSON\n"
            "lines, until the station stops. Exit status: 0 when the station ended the stream, 3 not running.\n";
   return "usage: trakbox " + command + " [--socket PATH | --state DIR]" + (command == "status" ? " [--json]" : "") +
          (command == "attach" ? " [--line]" : "") + "\n\n" + what + "\noptions:\n" + describe_options(client_specs(command));

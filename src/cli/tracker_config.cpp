@@ -57,6 +57,11 @@ std::vector<OptionSpec> tracker_option_specs() {
                           "milliseconds, 0 to 10000 (factory 1000; stored)"},
       {"doppler-step", "SSB,FM", "least Doppler change sent to the radio, Hz, for SSB/CW and for FM links, e.g. "
                                  "20,100 (the factory values; stored)"},
+      {"record", "audio|iq|off", "the receiver (--radio gqrx or sdrpp) records each pass of the satellite it is tuned "
+                                 "to, from AOS to LOS, over trakbox's own connection: audio, iq (GQRX with U "
+                                 "IQRECORD) or off (the factory setting; stored; docs/radio.md)"},
+      {"record-satellites", "NAME,...", "--record records only these satellites (names as in the database, "
+                                        "comma-separated); none: every satellite (stored)"},
       {"tick-ms", "MS", "tracking interval in milliseconds, 100 to 1000 (default 1000)"},
       {"satrak-port", "N", "Satrak ACU protocol on TCP port N (default 4001; 0 turns it off)"},
       {"satrak-bind", "ADDR", "address the Satrak server listens on (default 127.0.0.1)"},
@@ -123,8 +128,9 @@ std::vector<OptionSpec> tracker_option_specs() {
                              std::string(kSocketFile) + "; the system service's is " + std::string(kServiceSocket) +
                              "), made for the user and group only"},
       {"on-event", "[KIND,...=]CMD", "run CMD (with /bin/sh) on every event, or on the kinds named: aos, los, "
-                                     "elements, link-lost, link-back, save-failed, control; the event is in its environment "
-                                     "(TRAKBOX_EVENT, TRAKBOX_SATELLITE, TRAKBOX_AOS, ...; docs/service.md)", true},
+                                     "recording, elements, link-lost, link-back, save-failed, control; the event is "
+                                     "in its environment (TRAKBOX_EVENT, TRAKBOX_SATELLITE, TRAKBOX_AOS, ...; "
+                                     "docs/service.md)", true},
       {"udp-events", "HOST:PORT", "send each event as one JSON datagram (the fields of trakbox events) to HOST:PORT, "
                                   "e.g. 192.168.1.20:9000 (stored, so later starts send there too; none: "
                                   "no more)", true},
@@ -471,6 +477,8 @@ ConfigOutcome parse_tracker_config(const std::vector<std::string>& args, FrontEn
   c.rotor_control = stored_value<bool>(o, r, "rotor-control", "rotor_control");
   c.event_min_el_deg = stored_value<double>(o, r, "event-min-el", "event_min_el_deg");
   if (const auto f = o.value("horizon-mask")) c.horizon_mask = read_mask_file(*f, r);
+  c.record = stored_value<std::string>(o, r, "record", "radio.record");
+  c.record_satellites = stored_value<std::string>(o, r, "record-satellites", "radio.record_satellites");
   read_sharing(o, r, c);
   read_gps(o, r, c);
   if (const auto l = o.value("log-level")) {

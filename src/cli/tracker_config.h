@@ -101,6 +101,8 @@ struct TrackerConfig {
   std::optional<double> event_min_el_deg;
   // --horizon-mask FILE|none: the mask's points as station.horizon_mask keeps them ("" none), stored.
   std::optional<std::string> horizon_mask;
+  std::optional<std::string> record;              // --record: audio, iq or off (radio.record)
+  std::optional<std::string> record_satellites;   // --record-satellites: names, "" every one
   // --handback S and --exclusive KIND (store::Sharing; "" for none), stored (issue 44).
   std::optional<int> handback_s;
   std::optional<std::string> exclusive;

@@ -290,6 +290,8 @@ void StationApp::build_station(std::unique_ptr<rotator::RotatorDriver> rot, std:
     e.control = c;
     m.emit(std::move(e));
   });
+  // The receiver's recorder started (or why not) and stopped: `recording` events (--record).
+  m.station->on_recording([&m](const tracker::Event& e) { m.emit(e); });
   m.station->on_wake([&m] {
     if (m.started) m.arm_tick(std::chrono::microseconds(0));
   });

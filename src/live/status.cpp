@@ -169,6 +169,22 @@ void add_links(StationApp& app, const radio::RadioStatus& both, nlohmann::json& 
   out["tuning"] = tuning_json(app);
 }
 
+// The receiver's recorder (--record): what it can record, what it records now as it answered, the
+// pass being recorded (its start, frequency and the receiver's file name) and a start it refused.
+nlohmann::json recording_json(StationApp& app, const radio::RecorderStatus& r) {
+  const auto& pass = app.station().recording();
+  const auto or_null = [](const std::string& t) { return t.empty() ? nlohmann::json(nullptr) : nlohmann::json(t); };
+  return {{"records", or_null(r.can)},
+          {"setting", radio::to_string(app.model().radio.record)},
+          {"state", radio::to_string(r.now)},
+          {"read_back", r.read_back},
+          {"refused", or_null(r.refused)},
+          {"satellite", pass ? nlohmann::json(pass->satellite) : nlohmann::json(nullptr)},
+          {"start", pass ? nlohmann::json(orbit::format_iso8601(pass->start, 0)) : nlohmann::json(nullptr)},
+          {"frequency_hz", pass ? nlohmann::json(pass->frequency_hz) : nlohmann::json(nullptr)},
+          {"file", pass ? or_null(pass->file) : nlohmann::json(nullptr)}};
+}
+
 nlohmann::json radio_json(StationApp& app) {
   radio::RadioDriver& r = app.station().radio();
   const radio::RadioStatus s = r.status();
@@ -186,6 +202,7 @@ nlohmann::json radio_json(StationApp& app) {
           {"pending", s.pending},
           {"limits", s.limits}};
   add_links(app, s, j);
+  j["recording"] = recording_json(app, s.recorder);
   return j;
 }
 
@@ -430,6 +447,22 @@ std::string pass_text(const nlohmann::json& p, const std::string& what, const Nu
   return l;
 }
 
+// ", REC audio SO-50 since 2026-05-21T14:10:02Z, gqrx_20260521_141002_436795000.wav" while the
+// receiver records (read back or not); nothing otherwise (a refusal is among the limits).
+std::string recording_text(const nlohmann::json& radio) {
+  const auto r = radio.value("recording", nlohmann::json());
+  if (!r.is_object() || r.value("state", "off") == "off") return {};
+  const auto str = [&r](const char* k) {
+    const nlohmann::json v = r.value(k, nlohmann::json());
+    return v.is_string() ? v.get<std::string>() : std::string();
+  };
+  std::string t = ", REC " + str("state");
+  if (!str("satellite").empty()) t += " " + str("satellite") + " since " + str("start");
+  if (!str("file").empty()) t += ", " + str("file");
+  if (!r.value("read_back", false)) t += " (not read back)";
+  return t;
+}
+
 }  // namespace
 
 std::string format_status(const nlohmann::json& s) {
@@ -482,7 +515,7 @@ std::string format_status(const nlohmann::json& s) {
     line("  radio     " + r.value("radio", "") + ": downlink " + num(r.value("downlink_hz", nlohmann::json()), 0) +
          " Hz, uplink " + num(r.value("uplink_hz", nlohmann::json()), 0) + " Hz, " +
          (r.value("fault", false) ? "fault: " + r.value("message", "") : std::string("ok")) +
-         (r.value("limits", "").empty() ? std::string() : " (" + r.value("limits", "") + ")"));
+         (r.value("limits", "").empty() ? std::string() : " (" + r.value("limits", "") + ")") + recording_text(r));
   for (const auto& e : s.at("tracking_list")) {
     std::string l = "  list #" + std::to_string(e.value("number", 0)) + "  " + e.value("name", "") + ", elements " +
                     num(e["element_age_days"], 1) + " days old" + (e.value("elements_stale", false) ? " (STALE)" : "");

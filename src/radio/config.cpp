@@ -30,6 +30,15 @@ const char* to_string(DopplerControl d) {
   return d == DopplerControl::mic_click ? "Mic-click" : "CAT";
 }
 
+const char* to_string(Record r) {
+  switch (r) {
+    case Record::audio: return "audio";
+    case Record::iq: return "iq";
+    case Record::off: break;
+  }
+  return "off";
+}
+
 const char* to_string(Rig r) {
   switch (r) {
     case Rig::kenwood: return "KENWOOD";

@@ -110,6 +110,12 @@ int standard_cat_baud(Rig r);
 struct RadioConfig;
 int effective_cat_baud(const RadioConfig& c);
 
+// What the receiver trakbox drives records through a pass (--record, radio.record; docs/radio.md
+// "Recording a pass"): nothing, its audio recorder (GQRX's and SDR++'s AOS/LOS), or its IQ recorder
+// (GQRX's U IQRECORD).
+enum class Record { off, audio, iq };
+const char* to_string(Record r);                    // "off", "audio", "iq"
+
 // Downlink correction Y / N / R. Reverse is for a down-converter with a high-side local
 // oscillator: the Doppler correction is applied in the opposite direction at the radio.
 enum class DownlinkCorrection { off, on, reverse };
@@ -193,6 +199,11 @@ struct RadioConfig {
   // The uplink's (TX) corrections, the same way: "RS-44 USB" -> Hz added to the uplink radio's
   // frequency (the page's and host mode's TX offset), applied when that satellite is next selected.
   std::map<std::string, Hz> tx_corrections;
+  // Recording (--record, --record-satellites): the receiver's recorder is started at AOS (the rotor
+  // start elevation) of the satellite it is tuned to and stopped at LOS. record_satellites names
+  // the satellites recorded, comma-separated ("": every satellite).
+  Record record = Record::off;
+  std::string record_satellites;
 
   bool operator==(const RadioConfig&) const = default;
 };

@@ -22,6 +22,17 @@ const char* to_string(Link l);   // "downlink" / "uplink"
 // The link as an array index (0 downlink, 1 uplink), for per-link state.
 constexpr int link_index(Link l) { return l == Link::downlink ? 0 : 1; }
 
+// A receiver's recorder (--record; docs/radio.md "Recording a pass"), as the receiver answered.
+struct RecorderStatus {
+  std::string receiver;         // "GQRX", "SDR++": whose recorder (its file names are its own)
+  std::string can;              // what it can record: "audio", "audio, iq" ("": no recorder trakbox starts)
+  Record now = Record::off;     // what it records now, as it answered
+  bool read_back = false;       // `now` was read back (GQRX's u RECORD), not taken from an RPRT 0 (SDR++)
+  std::string refused;          // why the last start did not take ("not recording: DSP off"): a limit
+  std::uint64_t answers = 0;    // starts and stops answered (the station sees each new one)
+  bool operator==(const RecorderStatus&) const = default;
+};
+
 struct RadioStatus {
   bool connected = false;        // port / socket open
   bool fault = false;            // the last attempt failed; message says why
@@ -44,6 +55,7 @@ struct RadioStatus {
   // "GQRX: no CTCSS, no uplink" (empty when nothing is lacking). Never a fault.
   std::string limits;
   bool no_uplink = false;        // it carries no uplink: the uplink is not sent (--uplink-radio)
+  RecorderStatus recorder;       // a receiver's recorder
 };
 
 class RadioDriver {
@@ -73,6 +85,9 @@ class RadioDriver {
   virtual void carries_for_station(Link link) { (void)link; }
   // CTCSS tone on the uplink in tenths of Hz (670: 67.0 Hz), 0: off. Ignored where unsupported.
   virtual void set_ctcss_tone(int tenths_hz) { (void)tenths_hz; }
+  // A receiver's recorder: started (audio, iq) or stopped (off) over the radio's own connection;
+  // what it answered comes in status().recorder. Ignored by a radio without one (recorder.can "").
+  virtual void set_recording(Record what) { (void)what; }
   // Host mode "S": bytes to the radio as they are (Icom: the caller supplies the whole frame).
   virtual void send_raw(std::string bytes) = 0;
   virtual RadioStatus status() const = 0;

@@ -51,6 +51,11 @@ struct RadioCaps {
   Hz step_hz = 10;               // the finest frequency step the CAT format carries
   // Icom: 1C 03 reads the transmit frequency in satellite mode without a band select (IC-9700).
   bool reads_tx_1c03 = false;
+  // A receiver's recorder (--record): audio started and stopped with AOS / LOS; IQ where the
+  // receiver has it (GQRX 2.17's U IQRECORD, found by the probe at connect); read back (`u RECORD`).
+  bool records_audio = false;
+  bool records_iq = false;
+  bool reads_recorder = false;
 };
 
 // What a radio carries: both links (one radio), or one of two (--uplink-radio): a satellite rig

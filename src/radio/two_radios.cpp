@@ -32,6 +32,8 @@ void TwoRadios::set_ctcss_tone(int tenths_hz) { up_->set_ctcss_tone(tenths_hz); 
 
 void TwoRadios::send_raw(std::string bytes) { down_->send_raw(std::move(bytes)); }
 
+void TwoRadios::set_recording(Record what) { down_->set_recording(what); }
+
 RadioStatus TwoRadios::status() const {
   const RadioStatus d = down_->status(), u = up_->status();
   RadioStatus s;
@@ -51,6 +53,7 @@ RadioStatus TwoRadios::status() const {
   s.reads_uplink = u.reads_downlink;
   s.downlink_read_hz = d.downlink_read_hz;
   s.uplink_read_hz = u.downlink_read_hz;
+  s.recorder = d.recorder;
   return s;
 }
 

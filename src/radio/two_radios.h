@@ -22,6 +22,7 @@ class TwoRadios final : public RadioDriver {
   std::chrono::milliseconds dial_turn_age(Link link) const override;
   void set_ctcss_tone(int tenths_hz) override;          // to the uplink radio
   void send_raw(std::string bytes) override;            // to the downlink radio (host mode S)
+  void set_recording(Record what) override;             // to the downlink radio (the receiver)
   RadioStatus status() const override;
   bool wait_idle(std::chrono::milliseconds timeout) override;
 

@@ -33,7 +33,8 @@ WorkerRadio::~WorkerRadio() {
 }
 
 void WorkerRadio::enqueue_locked(Job job) {
-  if (job.kind != Job::Kind::raw) {
+  // Raw bytes and the recorder's starts and stops each go (a stop then a start are two commands).
+  if (job.kind != Job::Kind::raw && job.kind != Job::Kind::record) {
     auto same = std::find_if(queue_.begin(), queue_.end(), [&](const Job& j) {
       return j.kind == job.kind && j.link == job.link;
     });
@@ -159,6 +160,17 @@ void WorkerRadio::send_raw(std::string bytes) {
   cv_.notify_all();
 }
 
+void WorkerRadio::set_recording(Record what) {
+  {
+    std::lock_guard lock(mu_);
+    want_record_ = what;
+    Job job{Job::Kind::record, Link::downlink, 0, Mode::none, {}};
+    job.record = what;
+    enqueue_locked(std::move(job));
+  }
+  cv_.notify_all();
+}
+
 RadioStatus WorkerRadio::status() const {
   std::lock_guard lock(mu_);
   RadioStatus s = status_;
@@ -177,7 +189,27 @@ void WorkerRadio::execute(const Job& job) {
     case Job::Kind::mode: link_->set_mode(job.link, job.mode); break;
     case Job::Kind::raw: link_->send_raw(job.raw); break;
     case Job::Kind::tone: link_->set_ctcss_tone(static_cast<int>(job.hz)); break;
+    case Job::Kind::record: record_answer_ = link_->record(job.record); break;
   }
+}
+
+void WorkerRadio::recorded(const Job& job) {
+  RecorderStatus& r = status_.recorder;
+  const bool changed = r.now != record_answer_.now || r.refused != record_answer_.refused;
+  r.now = record_answer_.now;
+  r.read_back = record_answer_.read_back;
+  r.refused = record_answer_.refused;
+  ++r.answers;
+  // Each start and stop is said (a pass has two); the same answer again after a reconnect is not.
+  if (changed || job.record != Record::off) spdlog::info("radio {}: {}", description_, record_answer_.said);
+  show_limits();
+}
+
+void WorkerRadio::show_limits() {
+  std::string limits;
+  for (const std::string& l : lacks_) limits += (limits.empty() ? " " : ", ") + l;
+  if (!status_.recorder.refused.empty()) limits += (limits.empty() ? " " : ", ") + status_.recorder.refused;
+  status_.limits = limits.empty() ? std::string() : link_->name() + ":" + limits;
 }
 
 void WorkerRadio::learn(const LinkError& error) {
@@ -185,9 +217,7 @@ void WorkerRadio::learn(const LinkError& error) {
   if (std::find(lacks_.begin(), lacks_.end(), error.capability) != lacks_.end()) return;
   lacks_.push_back(error.capability);
   spdlog::info("radio {}: {}", description_, error.what());
-  std::string limits = link_->name() + ":";
-  for (std::size_t i = 0; i < lacks_.size(); ++i) limits += (i ? ", " : " ") + lacks_[i];
-  status_.limits = limits;
+  show_limits();
   if (error.capability == "no uplink") status_.no_uplink = true;
 }
 
@@ -334,6 +364,8 @@ bool WorkerRadio::connect(Lock& lock) {
   link_->answered_again();   // everything is sent again below
   next_check_ = std::chrono::steady_clock::now() + timing_.check_every;
   status_.connected = true;
+  status_.recorder.can = link_->records();   // probed at open (GQRX: u ?)
+  status_.recorder.receiver = link_->name();
   note_readable();
   if (!status_.reads_downlink && !status_.reads_uplink && status_.connects == 0)   // said once
     spdlog::info("radio {}: its dial cannot be read back: dial follow will not see a turn of it", description_);
@@ -348,6 +380,14 @@ bool WorkerRadio::connect(Lock& lock) {
   for (Link l : {Link::downlink, Link::uplink}) {
     if (want_mode_[link_index(l)]) enqueue_locked({Job::Kind::mode, l, 0, *want_mode_[link_index(l)], {}});
     if (want_hz_[link_index(l)]) enqueue_locked({Job::Kind::frequency, l, *want_hz_[link_index(l)], Mode::none, {}});
+  }
+  // A recording asked for goes again (the receiver reads first: one already recording is left so).
+  const bool record_queued =
+      std::any_of(queue_.begin(), queue_.end(), [](const Job& j) { return j.kind == Job::Kind::record; });
+  if (want_record_ && *want_record_ != Record::off && !record_queued) {
+    Job job{Job::Kind::record, Link::downlink, 0, Mode::none, {}};
+    job.record = *want_record_;
+    enqueue_locked(std::move(job));
   }
   return true;
 }
@@ -414,6 +454,7 @@ void WorkerRadio::deliver_next(Lock& lock) {
     (job.link == Link::downlink ? status_.downlink_read_hz : status_.uplink_read_hz).reset();
   }
   if (job.kind == Job::Kind::mode) (job.link == Link::downlink ? status_.downlink_mode : status_.uplink_mode) = job.mode;
+  if (job.kind == Job::Kind::record) recorded(job);
 }
 
 void WorkerRadio::job_failed(Lock& lock, Job job, const LinkError& error) {
@@ -438,7 +479,7 @@ void WorkerRadio::job_failed(Lock& lock, Job job, const LinkError& error) {
   // Retry it, unless a newer value for the same thing arrived meanwhile. A command that failed
   // on a working link goes to the back, so one silent radio (an Icom pair: RX radio switched
   // off) does not hold up the commands for the other.
-  const bool superseded = job.kind != Job::Kind::raw &&
+  const bool superseded = job.kind != Job::Kind::raw && job.kind != Job::Kind::record &&
       std::any_of(queue_.begin(), queue_.end(), [&](const Job& j) { return j.kind == job.kind && j.link == job.link; });
   if (superseded) return;
   if (error.action == LinkError::Action::retry) queue_.push_back(std::move(job));

@@ -61,6 +61,19 @@ class RadioLink {
   // True once when the radio answered again after a silence (switched off and on behind a port
   // that stayed): the worker then sends everything again, as after a reconnect.
   virtual bool answered_again() { return false; }
+  // The receiver's recorder (--record), once open: what it can record ("audio", "audio, iq"; ""
+  // none), and a start (audio, iq) or a stop (off), answered with what it records now. A start the
+  // receiver refuses (GQRX with its DSP off) is an answer (`refused`), not an error.
+  struct Recording {
+    Record now = Record::off;
+    bool read_back = false;   // read back from the receiver, not assumed
+    std::string refused;      // "not recording: DSP off"
+    std::string said;         // one line for the log: what was sent and what it answered
+  };
+  virtual std::string records() const { return {}; }
+  virtual Recording record(Record what) {
+    throw LinkError("no recorder", describe() + ": no recorder trakbox can start (" + to_string(what) + " not sent)");
+  }
 };
 
 struct WorkerTiming {
@@ -92,17 +105,19 @@ class WorkerRadio final : public RadioDriver {
   std::chrono::milliseconds dial_turn_age(Link link) const override;
   void set_ctcss_tone(int tenths_hz) override;
   void send_raw(std::string bytes) override;
+  void set_recording(Record what) override;
   RadioStatus status() const override;
   bool wait_idle(std::chrono::milliseconds timeout) override;
 
  private:
   struct Job {
-    enum class Kind { frequency, mode, raw, tone } kind;
+    enum class Kind { frequency, mode, raw, tone, record } kind;
     Link link = Link::downlink;
     Hz hz = 0;                       // frequency; tone: tenths of Hz
     Mode mode = Mode::none;
     std::string raw;
     Hz guard = 0;                    // frequency: dial-follow tolerance, 0 unguarded
+    Record record = Record::off;     // record: the recorder started (audio, iq) or stopped (off)
   };
   using Lock = std::unique_lock<std::mutex>;
   void enqueue_locked(Job job);
@@ -119,6 +134,10 @@ class WorkerRadio final : public RadioDriver {
             std::chrono::milliseconds hold_off = {});
   // A feature the radio lacks (LinkError::Action::lacks): kept in the status, said once.
   void learn(const LinkError& error);
+  // The status's limits: the capabilities learnt missing, then a refused recording.
+  void show_limits();
+  // A recording job's answer (record_answer_, from execute) into the status, said once.
+  void recorded(const Job& job);
   // The radio answered again after a silence (RadioLink::answered_again): whatever it was told is
   // sent again, as after a connect (its link asks for satellite mode again itself).
   void radio_back();
@@ -145,6 +164,8 @@ class WorkerRadio final : public RadioDriver {
   bool stop_ = false;
   std::optional<Hz> want_hz_[2];     // last requested per link (re-sent after a reconnect)
   std::optional<Mode> want_mode_[2];
+  std::optional<Record> want_record_;  // the recorder asked for (asked again after a reconnect)
+  RadioLink::Recording record_answer_; // worker thread: the last recording job's answer
   RadioStatus status_;
   Hz guard_[2] = {0, 0};             // the tolerance of the last guarded frequency per link
   std::optional<Hz> turned_[2];      // a turn of the dial not yet taken

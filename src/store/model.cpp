@@ -409,7 +409,8 @@ void radio_from(const json& j, Model& m) {
   // The CAT speed, dial follow, the second radio, the operating practice: absent in state files
   // written before them.
   for (const char* key : {"radio.cat_baud", "radio.dial_follow", "radio.uplink_radio", "radio.dial_rest_ms",
-                          "radio.doppler_step_ssb_hz", "radio.doppler_step_fm_hz"})
+                          "radio.doppler_step_ssb_hz", "radio.doppler_step_fm_hz", "radio.record",
+                          "radio.record_satellites"})
     take_if(m, r, key);
   if (r.contains("corrections")) {
     const json& cs = field(r, w, "corrections");

@@ -32,6 +32,7 @@ constexpr std::string_view kDownlink[] = {"off", "on", "reverse"};
 constexpr std::string_view kCatPolicy[] = {"full_orbit", "aos_only"};
 constexpr std::string_view kExclusive[] = {"none", "rotctld", "rigctld", "satrak"};
 constexpr std::string_view kBauds[] = {"1200", "2400", "4800", "9600", "19200"};
+constexpr std::string_view kRecord[] = {"off", "audio", "iq"};
 constexpr std::string_view kCatBauds[] = {"0", "1200", "2400", "4800", "9600", "19200"};
 
 // One field of the model, read and written as the state document holds it.
@@ -135,6 +136,15 @@ const std::array kTable = {
             "FM Doppler updates this far apart", TB_FIELD(radio.doppler_step_fm_hz, long long)},
     Setting{"radio.uplink_radio", T::text, "", 0, 0, {}, 256, "--uplink-radio", "6-7",
             "a second radio for the uplink (\"\": one radio)", TB_FIELD(radio.uplink_radio, std::string)},
+    Setting{"radio.record", T::choice, "", 0, 0, kRecord, 0, "--record", "",
+            "the receiver records each pass of the satellite it is tuned to, AOS to LOS (GQRX, SDR++)",
+            [](const Model& m) -> json { return radio::to_string(m.radio.record); },
+            [](Model& m, const json& v) {
+              const auto s = v.get<std::string>();
+              m.radio.record = s == "audio" ? radio::Record::audio : s == "iq" ? radio::Record::iq : radio::Record::off;
+            }},
+    Setting{"radio.record_satellites", T::text, "", 0, 0, {}, 256, "--record-satellites", "",
+            "the satellites recorded, comma-separated (\"\": every one)", TB_FIELD(radio.record_satellites, std::string)},
     Setting{"rotor_control", T::boolean, "", 0, 0, kOnOff, 0, "--rotor-control", "6-R",
             "the antenna follows what is tracked (the E key)", TB_FIELD(rotor_control, bool)},
     Setting{"priority_mode", T::boolean, "", 0, 0, kOnOff, 0, "", "M", "multiple tracking in priority order",
@@ -218,6 +228,9 @@ std::optional<std::string> text_rule(const Setting& s, const std::string& v) {
     if (!spec.spec) return spec.error;
   } else if (k == "station.horizon_mask") {
     if (auto r = orbit::read_horizon_mask(v); !r.mask) return r.error;
+  } else if (k == "radio.record_satellites") {
+    for (const std::string_view name : text::split(v, ','))
+      if (text::trim(name).empty()) return "expected satellite names separated by commas (an empty name found)";
   } else if (k == "sharing.satnogs_url") {
     if (v.rfind("http://", 0) != 0 && v.rfind("https://", 0) != 0) return "expected an http:// or https:// URL";
   } else if (k == "logger.spec") {

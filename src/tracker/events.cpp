@@ -10,9 +10,8 @@
 namespace tb::tracker {
 
 const std::vector<std::string>& event_kinds() {
-  static const std::vector<std::string> kinds{"aos",       "los",         "elements",
-                                                "link-lost", "link-back",   "save-failed",
-                                                "control"};
+  static const std::vector<std::string> kinds{"aos",       "los",       "recording",   "elements",
+                                                "link-lost", "link-back", "save-failed", "control"};
   return kinds;
 }
 
@@ -35,6 +34,16 @@ nlohmann::json to_json(const Event& e) {
     j["los_az_deg"] = e.pass->los_az_deg;
   }
   if (!e.detail.empty()) j["detail"] = e.detail;
+  if (e.recording) {
+    const Event::Recorded& r = *e.recording;
+    j["recording"] = {{"state", r.state},
+                      {"kind", r.kind},
+                      {"start", orbit::format_iso8601(r.start, 0)},
+                      {"frequency_hz", r.frequency_hz},
+                      {"file", r.file.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.file)},
+                      {"read_back", r.read_back},
+                      {"why", r.why.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.why)}};
+  }
   if (e.control) {
     const auto holder = [](const Holder& h) {
       return nlohmann::json{{"kind", kind_name(h.kind)},
@@ -69,6 +78,13 @@ std::vector<std::pair<std::string, std::string>> event_environment(const Event& 
     env.emplace_back("TRAKBOX_MAX_EL_DEG", buf);
   }
   if (!e.detail.empty()) env.emplace_back("TRAKBOX_DETAIL", e.detail);
+  if (e.recording) {
+    env.emplace_back("TRAKBOX_RECORDING", e.recording->state);
+    env.emplace_back("TRAKBOX_RECORDING_KIND", e.recording->kind);
+    env.emplace_back("TRAKBOX_RECORDING_START", orbit::format_iso8601(e.recording->start, 0));
+    env.emplace_back("TRAKBOX_RECORDING_HZ", std::to_string(e.recording->frequency_hz));
+    env.emplace_back("TRAKBOX_RECORDING_FILE", e.recording->file);
+  }
   if (e.control) {
     env.emplace_back("TRAKBOX_RESOURCE", std::string(resource_name(e.control->resource)));
     env.emplace_back("TRAKBOX_HOLDER", std::string(kind_name(e.control->to.kind)));

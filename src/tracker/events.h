@@ -29,7 +29,7 @@ namespace tb::tracker {
 class Tracker;
 
 struct Event {
-  std::string kind;  // aos, los, elements, link-lost, link-back, save-failed, control
+  std::string kind;  // aos, los, recording, elements, link-lost, link-back, save-failed, control
   orbit::UtcTime time{};
   // AOS and LOS: the satellite, its pass and its frequencies (RF at the satellite, 0: none).
   std::string satellite;
@@ -41,6 +41,17 @@ struct Event {
   std::string detail;
   // control: who held the antenna or the radio, who holds it now, and why (tracker/control.h).
   std::optional<Change> control;
+  // recording: the receiver's recorder started (read back or not), not started (why), or stopped.
+  struct Recorded {
+    std::string state;           // "started", "not started", "stopped"
+    std::string kind;            // "audio", "iq"
+    orbit::UtcTime start{};      // when the start was sent (station time)
+    long long frequency_hz = 0;  // the receiver's frequency then
+    std::string file;            // the receiver's file name ("" when trakbox cannot know it)
+    bool read_back = false;      // the receiver said it records (GQRX's u RECORD), not assumed
+    std::string why;             // not started: "not recording: DSP off"
+  };
+  std::optional<Recorded> recording;
 };
 
 // The kinds, in the order the documentation lists them.

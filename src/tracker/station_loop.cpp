@@ -546,6 +546,7 @@ void StationLoop::tick() {
     if (const SatNow* f = tracker_.followed(); f && doppler_ && drive_radio && !body_target(f->db_index))
       follow_radio(f->db_index, f->obs);
   }
+  record_pass(now, drive_radio);
   rotator_->tick(now);
 }
 
@@ -631,6 +632,7 @@ std::string StationLoop::status_line() const {
   if (radio.fault) line += " | RADIO FAULT";
   if (save_failure_) line += " | STATE NOT SAVED";
   if (!notice_.empty()) line += " | " + notice_;
+  if (radio.recorder.now != radio::Record::off) line += " | REC";   // the receiver records the pass
   // The drivers by name (issue 30): "Rotor SIM ON ...", "Radio hamlib 3081 D ...", before the longer
   // notes (who holds what, the pass an outside client follows, the GPS, the pass's coverage), so
   // that 100 to 120 columns keep the antenna and the radio (issue 60: they were cut off there).

@@ -17,6 +17,7 @@
 #include "store/owner.h"
 #include "tracker/client_follow.h"
 #include "tracker/control.h"
+#include "tracker/events.h"
 #include "tracker/tracker.h"
 
 namespace tb::tracker {
@@ -46,6 +47,7 @@ class StationLoop {
   void tick();
   std::chrono::milliseconds next_tick_in() const;
 
+  ~StationLoop();   // a recording in progress is stopped
   StationLoop(const StationLoop&) = delete;
   StationLoop& operator=(const StationLoop&) = delete;
 
@@ -147,6 +149,21 @@ class StationLoop {
   rotator::Controller& rotator() { return *rotator_; }
   const rotator::Controller& rotator() const { return *rotator_; }
   radio::RadioDriver& radio() { return *radio_; }
+  // Recording (--record; docs/radio.md "Recording a pass"): the receiver's recorder is started when
+  // the satellite the receiver is tuned to rises above the rotor start elevation (the AOS of the
+  // pass events) and stopped when it sets, over the radio's own connection. Each start's answer
+  // (read back, or why not) and each stop is a `recording` event, told here.
+  struct PassRecording {
+    int db_index = -1;
+    std::string satellite;
+    radio::Record kind = radio::Record::off;
+    orbit::UtcTime start{};
+    radio::Hz frequency_hz = 0;
+    std::string file;              // the receiver's file name ("" when trakbox cannot know it)
+    bool answered = false;         // the receiver answered the start
+  };
+  const std::optional<PassRecording>& recording() const { return recording_; }
+  void on_recording(std::function<void(const Event&)> f) { recording_event_ = std::move(f); }
   // A second radio for the uplink (menu 6-7's U), or none (nullptr): one radio for both links
   // again. The downlink radio stays; everything is sent again at the next tick.
   void set_uplink_radio(std::unique_ptr<radio::RadioDriver> uplink);
@@ -246,6 +263,13 @@ class StationLoop {
     if (wake_) wake_();
   }
   void follow_radio(int db_index, const orbit::Observation& obs);
+  // Recording: the satellite to record now (tuned, up, chosen by --record-satellites), -1 none.
+  int to_record(bool drive_radio) const;
+  void record_pass(orbit::UtcTime now, bool drive_radio);
+  void recording_told(const char* state, const radio::RecorderStatus& rs, orbit::UtcTime now);
+  std::optional<PassRecording> recording_;
+  std::uint64_t recorder_answers_ = 0;   // the receiver's answers seen
+  std::function<void(const Event&)> recording_event_;
   void find_remote_in_database();
 
   // The plan for the pass being followed (or coming): which way round, flip, where to wait.

@@ -3,7 +3,7 @@ with GQRX 2.15's remote-control answers, through a whole SO-50 pass (FM, 67.0 Hz
 --clock-rate 40, then a second program taking GQRX's one client.
 
 The responder answers what GQRX answers (`f`, `F hz`, `m`, `M mode passband`, `v`, `V VFOA`, `s`,
-`\\dump_state`, `_`, `l`, `l STRENGTH`, `AOS`, `LOS`) and `RPRT 1` (positive, never a Hamlib code)
+`\\dump_state`, `_`, `l`, `l STRENGTH`, `u ?`, `AOS`, `LOS`) and `RPRT 1` (positive, never a Hamlib code)
 to everything else: `\\chk_vfo`, `\\get_vfo_list`, `\\get_powerstat`, `S`, `i`, `I`, `F VFOA hz`, `C`, `t`,
 `T`. It keeps one client: a new connection closes the one before.
 
@@ -44,7 +44,10 @@ class Gqrx:
     """GQRX 2.15's remote control on a free loopback port: one client at a time (a new one closes the
     one before), its answers, every command line kept with its time."""
 
+    # `u ?`: what `u` reads, as GQRX's remote_control.cpp lists it (trakbox asks at connect: the
+    # recorder's capability, docs/radio.md "Recording a pass").
     ANSWERS = {"v": "VFOA", "s": "0\nVFOA", "_": "Gqrx 2.15", "l": "-62.3", "l STRENGTH": "-62.3",
+               "u ?": "RECORD IQRECORD DSP RDS MUTE",
                "\\dump_state": "0\n2\n1\n0.000000 2000000000.000000 0x1ff -1 -1 0x10000003 0x0\n0 0 0 0 0 0 0\n0 0 0 0 0 0 0\n0x1ff 1\n0x1ff 0\n0 0\n0x1e 2400\n0x2 500\n0x1 8000\n0x1 2400\n0x20 15000\n0x20 8000\n0x40 200000\n0 0\n9990\n9990\n10000\n0\n10\n10 20 30\n0xffffffff\n0xffffffff\n0xf7ffffff\n0x83ffffff\n0xffffffff\n0xffffffbf"}
 
     def __init__(self):

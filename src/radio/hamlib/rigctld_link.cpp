@@ -7,10 +7,12 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include "util/sigpipe.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -161,10 +163,105 @@ void RigctldLink::open_receiver() {
   const Reply f = ask("f", 1);
   if (f.rprt != 0 || !parse_hz(f.lines[0]))
     transport("\"f\" answered \"" + (f.rprt != 0 ? rprt_text(f.rprt) : f.lines[0]) + "\", expected a frequency");
+  probe_recorder();
   if (!announced_)
-    spdlog::info("radio {}: a receiver: the downlink only (F / f, no VFO named), no uplink, no tone{}", describe(),
-                 peer_.one_client ? "; it keeps one client" : "");
+    spdlog::info("radio {}: a receiver: the downlink only (F / f, no VFO named), no uplink, no tone{}{}", describe(),
+                 peer_.one_client ? "; it keeps one client" : "",
+                 records().empty() ? "" : "; it records " + records() + " (--record)");
   announced_ = true;
+}
+
+// GQRX says at `u ?` what `u` reads ("RECORD IQRECORD DSP RDS MUTE"); an older one refuses it: its
+// recorder is then started and stopped with AOS / LOS, nothing read back.
+void RigctldLink::probe_recorder() {
+  functions_.clear();
+  if (!peer_.reads_recorder) return;
+  const Reply r = ask("u ?", 1);
+  if (r.rprt != 0) return;
+  std::istringstream words(r.lines[0]);
+  for (std::string w; words >> w;) functions_.push_back(w);
+}
+
+std::string RigctldLink::records() const {
+  if (!peer_.receiver || !peer_.audio_recorder) return {};
+  const bool iq = peer_.iq_recorder && std::find(functions_.begin(), functions_.end(), "IQRECORD") != functions_.end();
+  return iq ? "audio, iq" : "audio";
+}
+
+std::optional<bool> RigctldLink::read_function(const char* name) {
+  if (std::find(functions_.begin(), functions_.end(), name) == functions_.end()) return std::nullopt;
+  const Reply r = ask(std::string("u ") + name, 1);
+  if (r.rprt != 0) return std::nullopt;
+  return r.lines[0] == "1";
+}
+
+RadioLink::Recording RigctldLink::record(Record what) {
+  if (records().empty()) return RadioLink::record(what);
+  return what == Record::off ? stop_recording() : start_recording(what);
+}
+
+// Audio: AOS (GQRX starts its recorder when its DSP runs and a demodulator is chosen), read back,
+// and U RECORD 1 when it did not start. IQ: U IQRECORD 1. A recorder already on is left as it is.
+RadioLink::Recording RigctldLink::start_recording(Record what) {
+  const bool iq = what == Record::iq;
+  const char* fn = iq ? "IQRECORD" : "RECORD";
+  if (iq && records().find("iq") == std::string::npos)
+    return {Record::off, false, "not recording: no IQ recorder",
+            fmt::format("not recording IQ: {} has no IQ recorder (u ? lists no IQRECORD)", peer_.name)};
+  if (read_function(fn).value_or(false)) {
+    started_ = what;
+    return {what, true, {}, fmt::format("recording {}: it was already (u {} reads 1): left as it is", to_string(what), fn)};
+  }
+  std::string sent;
+  const auto send = [&](const std::string& cmd) {
+    const int rprt = ask(cmd, 0).rprt;
+    sent += fmt::format("{}{} -> RPRT {}", sent.empty() ? "" : ", ", cmd, rprt);
+    return rprt;
+  };
+  std::optional<bool> on;
+  if (!iq) {
+    const int rprt = send("AOS");
+    on = read_function(fn);
+    if (!on) {   // nothing to read back (SDR++, an older GQRX): its RPRT is all there is
+      if (rprt != 0) return {Record::off, false, "not recording: AOS refused", "not recording: " + sent};
+      started_ = what;
+      return {what, false, {}, fmt::format("recording audio: {} (not read back: {} records when its recorder is "
+                                           "set up for it)", sent, peer_.name)};
+    }
+  }
+  if (!on.value_or(false)) {
+    send(fmt::format("U {} 1", fn));
+    on = read_function(fn);
+  }
+  if (on.value_or(false)) {
+    started_ = what;
+    return {what, true, {}, fmt::format("recording {}: {}; u {} reads 1", to_string(what), sent, fn)};
+  }
+  // Refused: GQRX records only while its DSP runs (and, for audio, with a demodulator chosen).
+  const std::optional<bool> dsp = read_function("DSP");
+  const std::string why = dsp && !*dsp ? "not recording: DSP off"
+                          : dsp        ? (iq ? "not recording: IQ recorder refused" : "not recording: demodulator off?")
+                                       : "not recording: DSP off?";
+  return {Record::off, on.has_value(), why,
+          fmt::format("{} ({}; u {} reads {}{}): a limit; Doppler tuning goes on", why, sent, fn, on ? "0" : "nothing",
+                      dsp ? fmt::format(", u DSP reads {}", *dsp ? 1 : 0) : std::string())};
+}
+
+// What trakbox started: IQ with U IQRECORD 0; audio with LOS, and U RECORD 0 when it still records.
+RadioLink::Recording RigctldLink::stop_recording() {
+  const bool iq = started_ == Record::iq;
+  const char* fn = iq ? "IQRECORD" : "RECORD";
+  const std::string first = iq ? "U IQRECORD 0" : "LOS";
+  std::string sent = fmt::format("{} -> RPRT {}", first, ask(first, 0).rprt);
+  std::optional<bool> on = read_function(fn);
+  if (on.value_or(false) && !iq) {
+    sent += fmt::format(", U RECORD 0 -> RPRT {}", ask("U RECORD 0", 0).rprt);
+    on = read_function(fn);
+  }
+  started_ = on.value_or(false) ? started_ : Record::off;
+  const Record now = on.value_or(false) ? (iq ? Record::iq : Record::audio) : Record::off;
+  return {now, on.has_value(), now == Record::off ? std::string() : "recorder still on after the stop",
+          fmt::format("recording stopped: {}{}", sent, on ? fmt::format("; u {} reads {}", fn, *on ? 1 : 0) : "")};
 }
 
 void RigctldLink::taken() {

@@ -37,6 +37,12 @@ struct RigctldPeer {
   std::string name = "rigctld";   // "GQRX", "SDR++": the log's and the status's word for it
   bool receiver = false;          // one link (the downlink), no tone, no split, no hand-shake
   bool one_client = false;        // another program's connection takes the peer from trakbox
+  // Its recorder (--record): AOS/LOS start and stop the audio recorder (GQRX, SDR++); GQRX reads it
+  // back (`u RECORD`), says at `u ?` what `u` reads (RECORD IQRECORD DSP ...) and, when IQRECORD is
+  // among them, records IQ (`U IQRECORD 1|0`).
+  bool audio_recorder = false;
+  bool iq_recorder = false;       // when the probe finds it
+  bool reads_recorder = false;    // `u ?` / `u RECORD` answered (GQRX); SDR++ answers only RPRT
 };
 
 class RigctldLink final : public RadioLink {
@@ -56,6 +62,8 @@ class RigctldLink final : public RadioLink {
   Hz read_frequency(Link link) override;
   void set_ctcss_tone(int tenths_hz) override;
   void check() override;
+  std::string records() const override;
+  Recording record(Record what) override;
 
   // How the links are carried once open.
   enum class Carry { split, vfo_ab, main_sub };
@@ -86,6 +94,11 @@ class RigctldLink final : public RadioLink {
   void verify_split(Hz uplink_hz);
 
   void open_receiver();
+  void probe_recorder();                        // GQRX: `u ?` names what `u` reads
+  // GQRX: `u NAME` read as 0 / 1 (nothing when it is not among what `u ?` listed, or refused).
+  std::optional<bool> read_function(const char* name);
+  Recording start_recording(Record what);
+  Recording stop_recording();
   // The peer closed an established connection: a one-client peer taken by another program.
   [[noreturn]] void taken();
 
@@ -107,6 +120,8 @@ class RigctldLink final : public RadioLink {
   std::optional<std::string> uplink_refused_;   // why the uplink cannot be carried
   std::optional<Hz> last_down_;                 // the downlink frequency last set
   bool announced_ = false;                      // the carry chosen was logged (first open)
+  std::vector<std::string> functions_;          // what GQRX's `u ?` listed at open
+  Record started_ = Record::off;                // the recorder trakbox started (stopped at LOS)
 };
 
 }  // namespace tb::radio

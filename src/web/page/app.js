@@ -262,6 +262,10 @@ function drawStatus(st) {
   $("radio-down").textContent = mhz(r.downlink_hz) + (r.downlink_mode ? " " + r.downlink_mode : "");
   $("radio-up").textContent = mhz(r.uplink_hz) + (r.uplink_mode ? " " + r.uplink_mode : "");
   $("radio-state").textContent = r.fault ? "fault: " + r.message : (r.radio || "-") + (r.connected ? ", connected" : "");
+  // The receiver records the pass (--record): a REC badge, its file (or why not) on hover.
+  const rec = r.recording || {};
+  $("radio-rec").hidden = !rec.state || rec.state === "off";
+  $("radio-rec").title = (rec.satellite ? rec.satellite + " " : "") + (rec.file || rec.state || "");
   const lk = r.links || {};
   const linkText = (l) => !l ? "-" : l.state + (l.message ? ": " + l.message : "");
   $("link-down").textContent = linkText(lk.downlink);

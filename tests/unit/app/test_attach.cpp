@@ -74,7 +74,7 @@ TEST_CASE("--on-event: every kind, kinds named, a command with '=' of its own, a
   CHECK(env->kinds.empty());
   CHECK(env->command == "GAIN=3 /usr/local/bin/preamp on");
   CHECK_FALSE(app::parse_event_hook("aso=rec", error));
-  CHECK(error == "unknown event kind in 'aso'; expected aos, los, elements, link-lost, link-back, save-failed, control");
+  CHECK(error == "unknown event kind in 'aso'; expected aos, los, recording, elements, link-lost, link-back, save-failed, control");
   CHECK_FALSE(app::parse_event_hook("los=  ", error));
   CHECK(error == "no command");
 }

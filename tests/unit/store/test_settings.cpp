@@ -138,6 +138,23 @@ TEST_CASE("choices, switches and text: typed forms, refusals naming the choices"
         "no.such: no such setting (trakbox settings lists them)");
 }
 
+TEST_CASE("radio.record and radio.record_satellites (issue 59): typed, kept, refused naming the value") {
+  ModelOwner owner;
+  CHECK(owner.model().radio.record == tb::radio::Record::off);   // the factory setting
+  CHECK(owner.set_typed("radio.record", "Audio", Origin::socket).ok());
+  CHECK(owner.model().radio.record == tb::radio::Record::audio);
+  CHECK(*owner.set_typed("radio.record", "video", Origin::socket).refusal ==
+        "radio.record: 'video' is not one of off, audio or iq");
+  CHECK(owner.model().radio.record == tb::radio::Record::audio);   // kept
+  CHECK(owner.set_typed("radio.record_satellites", "SO-50, ISS", Origin::socket).ok());
+  CHECK(owner.model().radio.record_satellites == "SO-50, ISS");
+  CHECK(*owner.set_typed("radio.record_satellites", "SO-50,,ISS", Origin::socket).refusal ==
+        "radio.record_satellites: 'SO-50,,ISS': expected satellite names separated by commas (an empty name found)");
+  CHECK(owner.model().radio.record_satellites == "SO-50, ISS");
+  CHECK(owner.set_typed("radio.record_satellites", "none", Origin::socket).ok());
+  CHECK(owner.model().radio.record_satellites.empty());
+}
+
 TEST_CASE("the owner announces each change once, with its areas and versions; no change, no notice") {
   ModelOwner owner;
   std::vector<Notice> told;
