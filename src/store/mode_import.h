@@ -16,8 +16,9 @@
 //               uplink_mode, doppler NOR|REV, ctcss, ctcss_arm}].
 //
 // Merge: a list's satellite is matched by catalog number, else by name (case, dashes and leading
-// zeros aside: "AO-7" is "AO-07"); its mode by name (case aside), else by frequency (the downlink in
-// the mode's passband, or within 5 kHz of its downlink with the same radio mode). Each field keeps
+// zeros aside: "AO-7" is "AO-07"); its mode by name (case aside), else by frequency (a transponder's
+// passbands overlapping the mode's, or a downlink within 5 kHz of the mode's in the same radio mode;
+// a spot inside a passband, as RS-44's FT4, is a mode of its own). Each field keeps
 // its source (radio::FieldSource). A field that is empty or came from a list takes the list's
 // value; one from the operator or the freq/mode file is kept and a different value is reported as a
 // conflict ("RS-44 SSB downlink: kept your 435.640 MHz (operator); satnogs says 435.650 MHz") and

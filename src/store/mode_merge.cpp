@@ -74,11 +74,16 @@ bool same_frequency(const radio::SatelliteMode& have, const radio::SatelliteMode
   const radio::SatelliteRadio& h = have.radio;
   const radio::SatelliteRadio& o = offered.radio;
   if (!o.has_downlink()) return false;
-  if (h.has_passbands() && o.downlink_hz >= h.downlink_low_hz && o.downlink_hz <= h.downlink_high_hz) return true;
+  // Transponders by their passbands overlapping (SatNOGS' "Mode A" transponder is AO-07's Mode-A);
+  // a spot inside a passband (RS-44's FT4, a CW beacon) is a mode of its own unless named the same.
+  if (h.has_passbands() || o.has_passbands())
+    return h.has_passbands() && o.has_passbands() && o.downlink_low_hz <= h.downlink_high_hz &&
+           h.downlink_low_hz <= o.downlink_high_hz;
   return std::llabs(h.downlink_hz - o.downlink_hz) <= kSameDownlinkHz && h.downlink_mode == o.downlink_mode;
 }
 
-// The mode of `modes` the offered one is: same name, else same frequency; not one taken already.
+// The mode of `modes` the offered one is: same name, else same frequency (overlapping passbands, or
+// a downlink within 5 kHz in the same radio mode); not one taken already.
 std::optional<std::size_t> find_mode_index(const std::vector<radio::SatelliteMode>& modes, const ListedMode& l,
                                            const std::vector<bool>& taken) {
   for (std::size_t i = 0; i < modes.size(); ++i)

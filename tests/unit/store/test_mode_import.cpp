@@ -215,3 +215,30 @@ TEST_CASE("Formats guessed from the name and the content") {
   CHECK(guess_list_format(kOscarWatch, "satellite_database.json") == ListFormat::oscarwatch);
   CHECK_FALSE(guess_list_format("hello", "notes.txt"));
 }
+
+TEST_CASE("Merge by frequency: transponders by their passbands; a spot inside a passband is a mode of its own") {
+  const auto fm = radio::parse_freqmode(
+      "AO-07 145.950 432.150 usb lsb cat no down=145.925-145.975 up=432.125-432.175 inv=y mode=Mode-B\n"
+      "AO-07 29.450 145.900 usb usb cat no down=29.400-29.500 up=145.850-145.950 inv=n mode=Mode-A\n"
+      "RS-44 435.640 145.965 usb lsb cat no down=435.610-435.670 up=145.935-145.995 inv=y mode=SSB\n");
+  REQUIRE(fm.ok());
+  orbit::Elements ao7, rs44;
+  ao7.name = "AO-07", ao7.catalog_number = 7530;
+  rs44.name = "RS-44", rs44.catalog_number = 44909;
+  Database db = make_database({ao7, rs44}, fm.records);
+  // SatNOGS names both AO-07 transponders "SSB" (the second "SSB-2"): each is the mode whose passbands it overlaps.
+  const char* satnogs = R"([
+   {"uuid":"m1","description":"Mode A transponder","alive":true,"status":"active","type":"Transponder",
+    "uplink_low":145850000,"uplink_high":145950000,"downlink_low":29400000,"downlink_high":29500000,
+    "mode":"USB","invert":false,"norad_cat_id":7530},
+   {"uuid":"m2","description":"Mode B transponder","alive":true,"status":"active","type":"Transponder",
+    "uplink_low":432125000,"uplink_high":432175000,"downlink_low":145925000,"downlink_high":145975000,
+    "mode":"USB","invert":true,"norad_cat_id":7530}])";
+  MergeReport r = merge_modes(db, read_mode_list(ListFormat::satnogs, satnogs, "transmitters.json"), false);
+  CHECK(r.added.empty());
+  CHECK(r.unchanged == 2);
+  // SatPC32's FT4 alone: inside RS-44's SSB passband, but its own mode.
+  r = merge_modes(db, read_mode_list(ListFormat::sqf, "RS-44,435611,145993.61,USB,LSB,REV,0,0,FT4\n", "Doppler.SQF"), false);
+  CHECK(r.added == std::vector<std::string>{"RS-44 FT4: added from satpc32 (435.611 MHz USB, up 145.99361 MHz LSB)"});
+  CHECK(r.conflicts.empty());
+}
