@@ -10,7 +10,8 @@
 //               DOWN_HIGH in Hz, INVERT=true|false, MODE, BAUD); the catalog number is the file's name.
 //   sqf         SatPC32's Doppler.SQF: `name,down kHz,up kHz,down mode,up mode,NOR|REV,down offset,
 //               up offset,comment`, one line per mode (the comment names it).
-//   subtone     SatPC32's SubTone.SQF: `name,tone Hz` per satellite (its FM modes with an uplink).
+//   subtone     SatPC32's SubTone.SQF: `name,tone Hz` per satellite (its FM voice modes: named FM or
+//               FM-2 ..., with an FM uplink; not APRS or packet).
 //   oscarwatch  OscarWatch's satellite_database.json: satellites with name, norad_id,
 //               alternative_names and modes[{type, downlink kHz, uplink kHz, downlink_mode,
 //               uplink_mode, doppler NOR|REV, ctcss, ctcss_arm}].

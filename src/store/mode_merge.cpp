@@ -178,14 +178,19 @@ struct Merger {
     modes.push_back(std::move(m));
   }
 
-  // SubTone.SQF: the tone to each FM mode with an uplink.
+  // SubTone.SQF: the tone to the satellite's FM voice modes (named FM, FM-2 ..., with an FM uplink),
+  // not to its APRS or packet modes.
   bool tones(Satellite& s, std::vector<radio::SatelliteMode>& modes, const ListedMode& l) {
     bool changed = false, any = false;
-    for (auto& m : modes)
-      if (m.radio.uplink_mode == radio::Mode::fm && m.radio.has_uplink()) {
-        any = true;
-        changed = field(s.name() + " " + m.name, m, radio::SatelliteMode(m), l, ModeField::tone) || changed;
-      }
+    for (auto& m : modes) {
+      const bool voice = text::iequals(m.name.substr(0, 2), "FM") && (m.name.size() == 2 || m.name[2] == '-');
+      if (!voice || m.radio.uplink_mode != radio::Mode::fm || !m.radio.has_uplink()) continue;
+      any = true;
+      const std::size_t conflicts = report.conflicts.size();
+      const bool c = field(s.name() + " " + m.name, m, radio::SatelliteMode(m), l, ModeField::tone);
+      if (!c && report.conflicts.size() == conflicts) ++report.unchanged;
+      changed = changed || c;
+    }
     if (!any) report.skipped.push_back(fmt::format("{}: a tone for its FM uplink, but it has no FM mode with an uplink", s.name()));
     return changed;
   }
