@@ -126,7 +126,9 @@ void distinct_names(std::vector<ListedMode>& modes) {
   for (ListedMode& l : modes) {
     const std::string sat = l.catalog > 0 ? std::to_string(l.catalog) : (l.names.empty() ? "" : l.names.front());
     const int n = ++seen[sat + "\n" + text::upper(l.mode.name)];
-    if (n > 1) l.mode.name = l.mode.name.substr(0, radio::kMaxModeName - 3) + "-" + std::to_string(n);
+    if (n == 1) continue;
+    const std::string suffix = "-" + std::to_string(n);
+    l.mode.name = l.mode.name.substr(0, radio::kMaxModeName - suffix.size()) + suffix;
   }
 }
 

@@ -121,6 +121,20 @@ std::string value_shown(ModeField f, const std::string& v) {
   return field_shown(m, f);
 }
 
+// `name`, or when the satellite has a mode of that name (case aside) "NAME-2", "NAME-3" ... cut
+// to fit radio::kMaxModeName.
+std::string unique_name(const std::vector<radio::SatelliteMode>& modes, const std::string& name) {
+  const auto used = [&modes](const std::string& n) {
+    return std::any_of(modes.begin(), modes.end(), [&n](const radio::SatelliteMode& x) { return text::iequals(x.name, n); });
+  };
+  std::string out = name;
+  for (int k = 2; used(out); ++k) {
+    const std::string suffix = "-" + std::to_string(k);
+    out = name.substr(0, radio::kMaxModeName - suffix.size()) + suffix;
+  }
+  return out;
+}
+
 std::string source_shown(const std::string& s) { return s == "freqmode" ? "freq/mode file" : s; }
 
 struct Merger {
@@ -169,8 +183,7 @@ struct Merger {
     }
     radio::SatelliteMode m = l.mode;
     m.sources.clear();
-    for (const auto& x : modes)
-      if (text::iequals(x.name, m.name)) m.name = m.name.substr(0, radio::kMaxModeName - 2) + "-" + std::to_string(modes.size() + 1);
+    m.name = unique_name(modes, m.name);
     mark_sources(m, from);
     std::string what = field_shown(m, ModeField::downlink) + " " + radio::to_string(m.radio.downlink_mode);
     if (m.radio.has_uplink()) what += ", up " + field_shown(m, ModeField::uplink) + " " + radio::to_string(m.radio.uplink_mode);

@@ -242,3 +242,23 @@ TEST_CASE("Merge by frequency: transponders by their passbands; a spot inside a 
   CHECK(r.added == std::vector<std::string>{"RS-44 FT4: added from satpc32 (435.611 MHz USB, up 145.99361 MHz LSB)"});
   CHECK(r.conflicts.empty());
 }
+
+TEST_CASE("Names: a list's modes of one satellite made distinct within 16 characters; at most 16 modes") {
+  std::string list = "[";
+  for (int i = 0; i < 20; ++i)
+    list += std::string(i ? "," : "") + R"({"uuid":"u)" + std::to_string(i) +
+            R"(","description":"telemetry","alive":true,"status":"active","type":"Transmitter","downlink_low":)" +
+            std::to_string(435'000'000 + i * 20'000) + R"(,"mode":"GMSK9k6abcdefghij","norad_cat_id":44909})";
+  list += "]";
+  const ModeList l = read_mode_list(ListFormat::satnogs, list, "transmitters.json");
+  REQUIRE(l.ok());
+  REQUIRE(l.modes.size() == 20);
+  CHECK(l.modes[0].mode.name == "GMSK9k6abcdefghi");   // the modulation cut to 16
+  CHECK(l.modes[1].mode.name == "GMSK9k6abcdefg-2");
+  CHECK(l.modes[19].mode.name == "GMSK9k6abcdef-20");
+  Database db = db_of({{44909, "RS-44"}});
+  const MergeReport r = merge_modes(db, l, false);
+  CHECK(r.added.size() == radio::kMaxModes);
+  CHECK(r.skipped.size() == 4);
+  CHECK(r.skipped[0] == "RS-44 GMSK9k6abcdef-17: not added, the satellite has 16 modes");
+}
