@@ -29,25 +29,26 @@ using json = nlohmann::json;
 
 const char* kUsage =
     "usage: trakbox radio import FILE [--format satnogs|trsp|sqf|subtone|oscarwatch] [--replace]\n"
-    "       trakbox radio diff\n"
+    "       trakbox radio diff [SAT] [--conflicts]\n"
     "each with [--state DIR | --socket PATH]\n\n"
     "import merges the modes of a public list into the satellites' modes: the SatNOGS DB transmitter\n"
     "list (JSON), a Gpredict NNNNN.trsp, SatPC32's Doppler.SQF or SubTone.SQF, OscarWatch's\n"
     "satellite_database.json (the format is guessed from the name and content unless given). Values you\n"
     "entered, and those of the freq/mode file, are kept and a different one in the list is reported;\n"
-    "--replace takes the list's. diff lists every mode's values with where each came from and what a\n"
-    "list said otherwise. Through the running station when one runs on the state directory, else in the\n"
-    "state file.\n\n"
+    "--replace takes the list's. diff lists every mode's values (SAT's alone when named) with where each\n"
+    "came from and what a list said otherwise (--conflicts: only those). Through the running station\n"
+    "when one runs on the state directory, else in the state file.\n\n"
     "examples:\n"
     "  trakbox radio import 44909.trsp\n"
     "  trakbox radio import Doppler.SQF\n"
-    "  trakbox radio diff\n\n"
+    "  trakbox radio diff RS-44 --conflicts\n\n"
     "options:\n";
 
 std::vector<OptionSpec> specs() {
   return {{"help", "", "this text"},
           {"format", "NAME", "the list's format: satnogs, trsp, sqf, subtone or oscarwatch (default: guessed)"},
           {"replace", "", "take the list's values over yours and the freq/mode file's"},
+          {"conflicts", "", "diff: only the values a list said otherwise"},
           {"state", "DIR", "the state directory (default: the user's, as trakbox's)"},
           {"socket", "PATH", "the running station's socket (the system service's: " + std::string(kServiceSocket) + ")"},
           {"data", "DIR", "the shipped data a fresh state starts from (default: as trakbox's)"}};
@@ -120,9 +121,13 @@ int on_state_file(const std::filesystem::path& dir, const std::string& data_dir,
 // The request the words make; nullopt (said) when they make none.
 std::optional<json> build_request(const std::vector<std::string>& words, const ParsedOptions& o, int& code) {
   code = kExitUsage;
-  if (words.size() == 1 && words[0] == "diff") return json{{"action", "diff"}};
+  if (!words.empty() && words[0] == "diff" && words.size() <= 2) {
+    json r = {{"action", "diff"}, {"conflicts", o.has("conflicts")}};
+    if (words.size() == 2) r["satellite"] = words[1];
+    return r;
+  }
   if (words.size() != 2 || words[0] != "import") {
-    std::fprintf(stderr, "trakbox radio: expected import FILE or diff (see trakbox radio --help)\n");
+    std::fprintf(stderr, "trakbox radio: expected import FILE or diff [SAT] (see trakbox radio --help)\n");
     return std::nullopt;
   }
   const auto content = files::read_whole_file(words[1]);

@@ -98,7 +98,9 @@ std::vector<std::string> report_lines(const MergeReport& r, const ModeList& list
 
 // `trakbox radio diff`: every mode of every satellite with a value from a list or a conflict, one
 // line per field: "RS-44 SSB downlink 435.640 MHz operator; satnogs says 435.650 MHz".
-std::vector<std::string> diff_lines(const Database& db);
+// `satellite`: that one's only (its name as the database has it); `conflicts`: only the fields a
+// list said otherwise.
+std::vector<std::string> diff_lines(const Database& db, std::string_view satellite = {}, bool conflicts = false);
 
 
 // ---- `trakbox radio import|diff` (cli/radio_client.cpp), on the running station or the state file
@@ -107,7 +109,7 @@ class ModelOwner;
 enum class Origin;
 
 // A request {"action": "import", "file": NAME, "format": "trsp" | absent (guessed), "text": TEXT,
-// "replace": bool} or {"action": "diff"}, done through the model's owner (import: one named edit of
+// "replace": bool} or {"action": "diff"[, "satellite": NAME][, "conflicts": true]}, done through the model's owner (import: one named edit of
 // the radio entries, after the whole file was read). The answer: {"lines": [...], "changed": bool}
 // or {"error": "..."} (nothing changed).
 nlohmann::json radio_request(ModelOwner& owner, const nlohmann::json& request, Origin origin);

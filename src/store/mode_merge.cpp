@@ -350,9 +350,10 @@ std::vector<std::string> report_lines(const MergeReport& r, const ModeList& list
   return out;
 }
 
-std::vector<std::string> diff_lines(const Database& db) {
+std::vector<std::string> diff_lines(const Database& db, std::string_view satellite, bool conflicts) {
   std::vector<std::string> out;
-  for (const Satellite& s : db.satellites)
+  for (const Satellite& s : db.satellites) {
+    if (!satellite.empty() && s.name() != satellite) continue;
     for (const radio::SatelliteMode& m : modes_of(s))
       for (unsigned i = 0; i < kFieldCount; ++i) {
         const ModeField f = field_at(i);
@@ -361,11 +362,12 @@ std::vector<std::string> diff_lines(const Database& db) {
         std::string line = fmt::format("{} {} {} {} ({})", s.name(), m.name, to_string(f), field_shown(m, f),
                                        source_shown(src));
         const auto it = m.sources.find(to_string(f));
-        if (it != m.sources.end() && !it->second.offer_from.empty() && it->second.offer_value != field_value(m, f)) {
-          line += fmt::format("; {} says {}", it->second.offer_from, value_shown(f, it->second.offer_value));
-        }
-        out.push_back(std::move(line));
+        const bool offered =
+            it != m.sources.end() && !it->second.offer_from.empty() && it->second.offer_value != field_value(m, f);
+        if (offered) line += fmt::format("; {} says {}", it->second.offer_from, value_shown(f, it->second.offer_value));
+        if (offered || !conflicts) out.push_back(std::move(line));
       }
+  }
   return out;
 }
 

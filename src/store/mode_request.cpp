@@ -43,7 +43,12 @@ json import_request(ModelOwner& owner, const json& request, Origin origin) {
 
 json radio_request(ModelOwner& owner, const json& request, Origin origin) {
   const std::string action = request.is_object() ? string_field(request, "action") : "";
-  if (action == "diff") return json{{"lines", diff_lines(owner.model().db)}, {"changed", false}};
+  if (action == "diff") {
+    const std::string sat = string_field(request, "satellite");
+    if (!sat.empty() && !owner.model().db.find(sat)) return refusal("no satellite named '" + sat + "' in the database");
+    const bool conflicts = request.contains("conflicts") && request["conflicts"].is_boolean() && request["conflicts"].get<bool>();
+    return json{{"lines", diff_lines(owner.model().db, sat, conflicts)}, {"changed", false}};
+  }
   if (action == "import") return import_request(owner, request, origin);
   return refusal("expected radio import FILE or radio diff");
 }

@@ -162,6 +162,11 @@ def station_case(d, state):
         has(out, "RS-44 SSB downlink 435.650 MHz (operator); satpc32 says 435.640 MHz", "diff shows the conflict")
         has(out, "AO-07 CW downlink 145.970 MHz (oscarwatch)", "diff names OscarWatch")
         check(not re.search(r"ISS \S+ downlink 437\.550", out), "no mode from the inactive transmitter")
+        code, only, err = radio(state, "diff", "RS-44", "--conflicts")
+        check(code == 0 and only.splitlines() == ["RS-44 SSB downlink 435.650 MHz (operator); satpc32 says 435.640 MHz"],
+              f"diff RS-44 --conflicts: the one conflict: {code} {only!r} {err}")
+        code, _, err = radio(state, "diff", "RS-99")
+        check(code == 1 and "no satellite named 'RS-99'" in err, f"diff of an unknown satellite: {code} {err}")
         # --replace takes the list's value.
         out = imported(state, os.path.join(d, "44909.trsp"), "--replace")
         has(out, "RS-44 SSB downlink: 435.640 MHz from gpredict (was 435.650 MHz, operator)", "--replace takes the list's")
