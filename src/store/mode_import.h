@@ -24,7 +24,8 @@
 // value; one from the operator or the freq/mode file is kept and a different value is reported as a
 // conflict ("RS-44 SSB downlink: kept your 435.640 MHz (operator); satnogs says 435.650 MHz") and
 // remembered for `trakbox radio diff`; `replace` takes the list's value over those too. A mode the
-// satellite lacks is added. Values stored before sources existed count as the operator's.
+// satellite lacks is added. What a list does not give (a tone, the uplink of a receive-only entry)
+// is a gap, not "none": the mode's value stays. Values stored before sources existed count as the operator's.
 #pragma once
 #include <optional>
 #include <string>

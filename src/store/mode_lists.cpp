@@ -97,6 +97,12 @@ struct Edges {
   bool linear() const { return down_low > 0 && down_high > down_low && up_low > 0 && up_high > up_low; }
 };
 
+// A list's receive-only entry (a beacon, telemetry) says nothing of the mode's uplink: a gap, not
+// "no uplink" (the FM voice mode it may be named after keeps its uplink, without a conflict).
+unsigned uplink_given(const radio::SatelliteRadio& r) {
+  return r.uplink_hz > 0 ? field_bit(ModeField::uplink) | field_bit(ModeField::uplink_mode) : 0u;
+}
+
 ListedMode from_edges(const Edges& e, std::string_view label, std::string_view modulation, bool transponder) {
   ListedMode l;
   radio::SatelliteRadio& r = l.mode.radio;
@@ -114,8 +120,7 @@ ListedMode from_edges(const Edges& e, std::string_view label, std::string_view m
     r.downlink_mode = satnogs_mode(std::string(modulation));
     r.uplink_mode = r.uplink_hz > 0 ? r.downlink_mode : radio::Mode::none;
   }
-  l.given |= field_bit(ModeField::downlink) | field_bit(ModeField::uplink) | field_bit(ModeField::downlink_mode) |
-             field_bit(ModeField::uplink_mode);
+  l.given |= field_bit(ModeField::downlink) | field_bit(ModeField::downlink_mode) | uplink_given(r);
   l.mode.name = mode_name_for(label, modulation, r.downlink_mode, linear);
   return l;
 }
@@ -294,8 +299,8 @@ void read_sqf(std::string_view text, const std::string& file, ModeList& out) {
                         text::safe_text(field(k))));
     const std::string comment = f.size() > 8 ? field(8) : std::string();  // the mode's name, "Mode A"
     l.mode.name = mode_name_for(comment, comment, r.downlink_mode, false);
-    l.given = field_bit(ModeField::downlink) | field_bit(ModeField::uplink) | field_bit(ModeField::downlink_mode) |
-              field_bit(ModeField::uplink_mode) | field_bit(ModeField::inverting);
+    l.given = field_bit(ModeField::downlink) | field_bit(ModeField::downlink_mode) | uplink_given(r) |
+              field_bit(ModeField::inverting);
     out.modes.push_back(std::move(l));
   });
 }
@@ -365,8 +370,7 @@ ListedMode oscarwatch_mode(const json& o, const std::string& where) {
   r.uplink_hz = json_khz(o, "uplink", where, false).value_or(0);
   r.downlink_mode = json_rig_mode(o, "downlink_mode", where);
   r.uplink_mode = r.uplink_hz > 0 ? json_rig_mode(o, "uplink_mode", where) : radio::Mode::none;
-  l.given = field_bit(ModeField::downlink) | field_bit(ModeField::uplink) | field_bit(ModeField::downlink_mode) |
-            field_bit(ModeField::uplink_mode);
+  l.given = field_bit(ModeField::downlink) | field_bit(ModeField::downlink_mode) | uplink_given(r);
   if (o.contains("doppler") && !o["doppler"].is_null()) {
     const std::string d = o["doppler"].is_string() ? text::upper(o["doppler"].get<std::string>()) : "";
     if (d != "NOR" && d != "REV") bad(where + ".doppler: expected \"NOR\" or \"REV\"");

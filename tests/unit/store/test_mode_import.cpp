@@ -262,3 +262,18 @@ TEST_CASE("Names: a list's modes of one satellite made distinct within 16 charac
   CHECK(r.skipped.size() == 4);
   CHECK(r.skipped[0] == "RS-44 GMSK9k6abcdef-17: not added, the satellite has 16 modes");
 }
+
+TEST_CASE("A receive-only entry is a gap for the uplink, not \"no uplink\"") {
+  const auto fm = radio::parse_freqmode("ISS 437.800 145.990 fm fm cat no tone=67.0 mode=FM\n");
+  REQUIRE(fm.ok());
+  orbit::Elements iss;
+  iss.name = "ISS", iss.catalog_number = 25544;
+  Database db = make_database({iss}, fm.records);
+  // A transmitter whose description names FM, at the repeater's downlink, without an uplink.
+  const MergeReport r = merge_modes(db, read_mode_list(ListFormat::satnogs, R"([{"uuid":"d","description":"FM downlink",
+    "alive":true,"status":"active","type":"Transmitter","downlink_low":437800000,"mode":"FM","norad_cat_id":25544}])",
+                                                       "transmitters.json"), false);
+  CHECK(r.conflicts.empty());
+  CHECK(r.unchanged == 1);
+  CHECK(db.satellites[0].radio.uplink_hz == 145'990'000);
+}
