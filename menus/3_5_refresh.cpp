@@ -152,11 +152,9 @@ void satnogs(term::Terminal& t, Services& s) {
     t.line("  Nothing changed: " + where + ": " + r.error);
     return;
   }
-  for (const auto& line : r.updated) t.line("  " + line);
-  for (const auto& name : r.kept) t.line("  " + name + ": your own record kept");
-  t.line("  " + std::to_string(r.updated.size()) + " updated, " + std::to_string(r.kept.size()) + " kept, " +
-         std::to_string(r.without_transmitter) + " without an active transmitter.");
-  if (r.updated.empty()) return;
+  for (const auto& line : r.lines) t.line("  " + line);
+  t.line("  " + std::to_string(r.without_transmitter) + " of the database's satellites without an active transmitter.");
+  if (!r.report.changed) return;
   (void)commit(t, s, store::bit(store::Area::radio_entries), "SatNOGS import", [&](store::Model& m) { m.db = std::move(db); });
 }
 

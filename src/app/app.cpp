@@ -37,6 +37,8 @@ std::string usage() {
          "  log add|list|export|import ...   the logbook: a QSO of the pass tracked, ADIF out and in\n"
          "  calibrate [sun|moon|undo]   the sky calibration: the antenna peaked on the Sun or the Moon\n"
          "                      sets the rotator's offsets (docs/calibration.md)\n"
+         "  radio import FILE|diff   modes from SatNOGS, Gpredict .trsp, SatPC32 .SQF or OscarWatch\n"
+         "                      merged into the satellites' (yours kept); diff: each value's source\n"
          "  host [options]      host mode (menu 7's commands: AZ EL, MU, MD, FU, FD, S, ?A, ?, Q) on\n"
          "                      stdin/stdout for scripts; takes the options above\n" +
          "\n"
@@ -78,7 +80,8 @@ int main(int argc, char** argv) {
     if (command == "standby" || command == "reserve" || command == "track") return run_station_command(command, rest);
     if (command == "settings") return run_settings(rest);
     if (command == "calibrate") return run_calibrate(rest);
-    std::fprintf(stderr, "trakbox: %s: unknown command; expected propagate, schedule, passes, next, elements, host, satrak, attach, status, events, log, settings, calibrate, standby, reserve or track (see trakbox --help)\n",
+    if (command == "radio") return run_radio(rest);
+    std::fprintf(stderr, "trakbox: %s: unknown command; expected propagate, schedule, passes, next, elements, host, satrak, attach, status, events, log, settings, calibrate, radio, standby, reserve or track (see trakbox --help)\n",
                  command.c_str());
     return kExitUsage;
   }

@@ -14,6 +14,8 @@ int run_events(const std::vector<std::string>& args);
 int run_station_command(const std::string& command, const std::vector<std::string>& args);
 // `trakbox settings [set KEY VALUE | reset KEY]` (settings_client.cpp; store/settings.h).
 int run_settings(const std::vector<std::string>& args);
+// `trakbox radio import FILE | diff` (radio_client.cpp; store/mode_import.h).
+int run_radio(const std::vector<std::string>& args);
 // `trakbox calibrate [sun|moon|undo]` (calibrate_client.cpp; docs/calibration.md).
 int run_calibrate(const std::vector<std::string>& args);
 // `trakbox log ...` (log_client.cpp): through the socket, or the state's logbook when nothing runs.

@@ -1,14 +1,17 @@
 #include "live/station_command.h"
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "live/station_app.h"
 #include "orbit/sky.h"
 #include "orbit/time.h"
+#include "store/mode_import.h"
 #include "store/owner.h"
 #include "store/settings.h"
 #include "tracker/station_loop.h"
 #include "tracker/operations.h"
+#include "util/json_limits.h"
 #include "util/safe_text.h"
 #include "util/text.h"
 
@@ -16,7 +19,7 @@ namespace tb::app {
 
 bool is_station_command(const std::string& line) {
   return line.rfind("standby", 0) == 0 || line.rfind("reserve", 0) == 0 || line.rfind("settings", 0) == 0 ||
-         line.rfind("track ", 0) == 0 || line.rfind("calibrate", 0) == 0;
+         line.rfind("track ", 0) == 0 || line.rfind("calibrate", 0) == 0 || line.rfind("radio ", 0) == 0;
 }
 
 namespace {
@@ -115,9 +118,23 @@ std::string calibrate_command(StationApp& app, const std::vector<std::string>& w
   return "ok: " + r.note;
 }
 
+// `trakbox radio import|diff` (cli/radio_client.cpp): "radio {json}", answered in one JSON line; an
+// import is one named edit of the radio entries (the station re-tunes and saves before the answer).
+std::string radio_command(StationApp& app, const std::string& body) {
+  std::string why;
+  const nlohmann::json request = json_limits::parse_bounded<nlohmann::json>(body, why);
+  if (request.is_discarded()) return nlohmann::json{{"error", "not a radio request: " + why}}.dump();
+  nlohmann::json answer = store::radio_request(app.owner(), request, store::Origin::socket);
+  if (answer.value("changed", false))
+    if (const auto& failed = app.station().save_failure())
+      answer["lines"].push_back("NOT SAVED: " + *failed);
+  return answer.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
 }  // namespace
 
 std::string run_station_command(StationApp& app, const std::string& line) {
+  if (line.rfind("radio ", 0) == 0) return radio_command(app, line.substr(6));
   std::vector<std::string> w;
   for (const std::string_view piece : text::split(line, ' '))
     if (!piece.empty()) w.emplace_back(piece);

@@ -80,10 +80,26 @@ struct SatelliteRadio {
 // repeater before the operating tone (SO-50's 74.4 Hz), stored and shown, sent by the operator.
 // The operator's remembered corrections are kept per satellite and mode name
 // (RadioConfig::corrections, "RS-44 FT4").
+// Where one field of a mode came from (issue 59's imports, store/mode_import.h): the source that
+// gave it ("freqmode", "satnogs", "gpredict", "satpc32", "oscarwatch") and the value it gave, as
+// store::field_value writes it. A field whose value is no longer that one was edited by the operator
+// since. `offer_from`/`offer_value`: a list's value that differed and was not taken (a conflict),
+// kept for `trakbox radio diff`; empty when none.
+struct FieldSource {
+  std::string from;
+  std::string value;
+  std::string offer_from;
+  std::string offer_value;
+  bool operator==(const FieldSource&) const = default;
+};
+
 struct SatelliteMode {
   std::string name;            // 1 to kMaxModeName characters: letters, digits, - + / . _
   SatelliteRadio radio;
   int arm_tone_tenths_hz = 0;  // 0: none
+  // Field name ("downlink", "uplink", "downlink_mode", "uplink_mode", "passbands", "inverting",
+  // "tone", "arm") -> its source; a field not here is the operator's (or empty).
+  std::map<std::string, FieldSource> sources;
   bool operator==(const SatelliteMode&) const = default;
 };
 inline constexpr std::size_t kMaxModes = 16;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "store/mode_import.h"
 #include "util/text.h"
 
 namespace tb::store {
@@ -15,7 +16,7 @@ std::vector<radio::SatelliteMode> modes_of(const Satellite& s) {
     }
   // No chosen mode among them: the record is one of its own (a satellite from before modes).
   if (s.radio == radio::SatelliteRadio{} && out.empty()) return out;
-  radio::SatelliteMode own{s.mode.empty() ? radio::default_mode_name(s.radio) : s.mode, s.radio, 0};
+  radio::SatelliteMode own{s.mode.empty() ? radio::default_mode_name(s.radio) : s.mode, s.radio, 0, {}};
   out.insert(out.begin(), std::move(own));
   return out;
 }
@@ -134,7 +135,8 @@ namespace {
 // A record of the freq/mode file as a mode of its satellite; false (and said) when the satellite
 // has that mode already in the file, or too many.
 bool take_mode(std::vector<radio::SatelliteMode>& modes, const radio::FreqModeRecord& r, FreqModeUpload& out) {
-  radio::SatelliteMode m{r.mode.empty() ? radio::default_mode_name(r.radio) : r.mode, r.radio, r.arm_tone_tenths_hz};
+  radio::SatelliteMode m{r.mode.empty() ? radio::default_mode_name(r.radio) : r.mode, r.radio, r.arm_tone_tenths_hz, {}};
+  mark_sources(m, "freqmode");  // each value the file's, until the operator or a list changes it
   const auto same = [&](const radio::SatelliteMode& x) { return text::iequals(x.name, m.name); };
   if (std::any_of(modes.begin(), modes.end(), same)) {
     out.skipped.push_back("line " + std::to_string(r.line) + ": (" + r.name + ") has mode " + m.name +

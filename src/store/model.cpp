@@ -10,6 +10,7 @@
 #include "radio/factory.h"
 #include "orbit/time.h"
 #include "store/json_fields.h"
+#include "store/mode_import.h"
 #include "store/settings.h"
 #include "util/host_port.h"
 #include "util/safe_text.h"
@@ -193,6 +194,37 @@ radio::SatelliteRadio radio_entry_from(const json& j, const std::string& w) {
   return r;
 }
 
+// {"downlink": {"from": "satnogs", "value": "435640000"[, "offer_from": ..., "offer_value": ...]}, ...}
+json sources_json(const std::map<std::string, radio::FieldSource>& sources) {
+  json j = json::object();
+  for (const auto& [key, s] : sources) {
+    json e = {{"from", s.from}, {"value", s.value}};
+    if (!s.offer_from.empty()) e["offer_from"] = s.offer_from, e["offer_value"] = s.offer_value;
+    j[key] = std::move(e);
+  }
+  return j;
+}
+
+std::map<std::string, radio::FieldSource> sources_from(const json& j, const std::string& w) {
+  if (!j.is_object() || j.size() > static_cast<std::size_t>(ModeField::count))
+    bad(w, "expected an object of fields and their sources");
+  std::map<std::string, radio::FieldSource> out;
+  for (const auto& [key, e] : j.items()) {
+    bool known = false;
+    for (unsigned i = 0; i < static_cast<unsigned>(ModeField::count); ++i)
+      known = known || key == to_string(static_cast<ModeField>(i));
+    const std::string wk = path(w, key.c_str());
+    if (!known) bad(wk, "not a field of a mode (downlink, uplink, downlink_mode, uplink_mode, passbands, inverting, tone, arm)");
+    if (!e.is_object()) bad(wk, "expected {\"from\", \"value\"}");
+    radio::FieldSource s;
+    s.from = text(e, wk, "from", 16);
+    s.value = text(e, wk, "value", 80);
+    if (e.contains("offer_from")) s.offer_from = text(e, wk, "offer_from", 16), s.offer_value = text(e, wk, "offer_value", 80);
+    out.emplace(key, std::move(s));
+  }
+  return out;
+}
+
 // A satellite: its elements, the chosen mode's record as "radio" (what a trakbox from before modes
 // reads), every mode and the chosen one's name.
 json satellite_json(const Satellite& s) {
@@ -200,6 +232,7 @@ json satellite_json(const Satellite& s) {
   for (const radio::SatelliteMode& m : modes_of(s)) {
     json mj = {{"name", m.name}, {"radio", radio_entry_json(m.radio)}};
     if (m.arm_tone_tenths_hz > 0) mj["arm_tone_tenths_hz"] = m.arm_tone_tenths_hz;
+    if (!m.sources.empty()) mj["sources"] = sources_json(m.sources);
     modes.push_back(std::move(mj));
   }
   return {{"elements", elements_json(s.elements)}, {"radio", radio_entry_json(s.radio)}, {"modes", modes},
@@ -223,6 +256,8 @@ void modes_from(const json& j, const std::string& w, Satellite& s) {
     m.radio = radio_entry_from(field(ms[k], wk, "radio"), path(wk, "radio"));
     if (ms[k].contains("arm_tone_tenths_hz"))
       m.arm_tone_tenths_hz = static_cast<int>(integer(ms[k], wk, "arm_tone_tenths_hz", 0, 3000));
+    // Where each field came from (issue 59's imports); absent before them: every value the operator's.
+    if (ms[k].contains("sources")) m.sources = sources_from(ms[k]["sources"], path(wk, "sources"));
     s.modes.push_back(std::move(m));
   }
   s.mode = text(j, w, "mode", radio::kMaxModeName);

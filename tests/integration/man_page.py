@@ -12,7 +12,7 @@ sys.path.insert(0, os.path.dirname(__file__))
 from _tbharness import BIN, SOURCE, check, in_ci, run_test, sh  # noqa: E402
 
 PAGE = os.path.join(SOURCE, "packaging", "trakbox.1")
-COMMANDS = ["host", "propagate", "schedule", "passes", "next", "elements", "satrak", "attach", "status", "events", "log", "calibrate"]
+COMMANDS = ["host", "propagate", "schedule", "passes", "next", "elements", "satrak", "attach", "status", "events", "log", "calibrate", "radio"]
 
 
 def options_of(text):

@@ -1,7 +1,9 @@
 """Menu 3-5's S on the real binary (line mode on a pipe): the SatNOGS transmitter list fetched from
-a loopback HTTP server replaces (answer Y) the freq/mode records of RS-44 (an inverting linear
-transponder: passband centres) and ISS (FM voice); the state file holds them after Q. Keeping the
-operator's own records (answer N) is checked in tests/unit/menus/test_menu_3.cpp.
+a loopback HTTP server is merged (answer Y: the list's values over the freq/mode file's) into the
+modes: RS-44's SSB takes the list's wider passbands (an inverting linear transponder, its spot the
+centre), the ISS's FM agrees with the shipped one; the state file holds them after Q. Keeping the
+operator's own values (answer N) is checked in tests/unit/menus/test_menu_3_5.cpp, and every
+importer in radio_import.py.
 """
 import http.server
 import json
@@ -16,7 +18,7 @@ from _tbharness import BIN, CLOCK, Terminal, check, run_test  # noqa: E402
 
 LIST = [
     {"description": "Mode U/V linear", "alive": True, "status": "active", "type": "Transponder",
-     "uplink_low": 145935000, "uplink_high": 145995000, "downlink_low": 435610000, "downlink_high": 435670000,
+     "uplink_low": 145925000, "uplink_high": 146005000, "downlink_low": 435600000, "downlink_high": 435680000,
      "mode": "SSB", "invert": True, "norad_cat_id": 44909},
     {"description": "FM voice", "alive": True, "status": "active", "type": "Transceiver",
      "uplink_low": 145990000, "downlink_low": 437800000, "mode": "FM", "invert": False, "norad_cat_id": 25544},
@@ -56,8 +58,10 @@ def main():
         send(url + "\r")
         t.expect(r"Replace the records you entered yourself too")
         send("Y\r")
-        m = t.expect(r"(\d+) updated, (\d+) kept, (\d+) without an active transmitter\.", timeout=20)
-        check(m.group(1) == "2", "two satellites updated: " + m.group(0))
+        m = t.expect(r"(\d+) added, (\d+) updated, (\d+) conflicts? \(yours kept\), (\d+) unchanged", timeout=20)
+        check(m.groups() == ("0", "1", "0", "1"), "RS-44's passbands updated, the ISS's FM unchanged: " + m.group(0))
+        check("RS-44 SSB passbands: 435.600-435.680 / 145.925-146.005 MHz from satnogs (was 435.610-435.670 / "
+              "145.935-145.995 MHz, freq/mode file)" in t.transcript, "the update names the old value and its source")
         send("Q\rQ\r")
         t.expect(r"Select \[1-8,S,M\]:")
         p.stdin.close()
@@ -67,7 +71,8 @@ def main():
         radio = {s["elements"]["name"]: s["radio"] for s in db}
         print("satnogs_import: RS-44", radio["RS-44"])
         check(radio["RS-44"]["downlink_hz"] == 435640000 and radio["RS-44"]["uplink_hz"] == 145965000,
-              "RS-44 from the list's passband centres")
+              "RS-44's spot the passband centres")
+        check(radio["RS-44"]["passbands_hz"]["downlink"] == [435600000, 435680000], "RS-44's passbands the list's")
         check(radio["ISS"]["downlink_hz"] == 437800000 and radio["ISS"]["uplink_hz"] == 145990000, "ISS FM voice")
         print("satnogs_import: ok")
     finally:

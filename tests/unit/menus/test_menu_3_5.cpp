@@ -57,7 +57,7 @@ TEST_CASE("3-5 adds and deletes element sources, sets the interval, and refuses 
   CHECK(back.refresh.interval_hours == 6.0);
 }
 
-TEST_CASE("3-5 S takes the SatNOGS transmitters from a file into the records the operator left empty") {
+TEST_CASE("3-5 S merges the SatNOGS transmitters from a file into the modes, filling what the operator left empty") {
   const std::string list =
       (std::filesystem::temp_directory_path() / ("trakbox-satnogs-" + std::to_string(::getpid()) + ".json")).string();
   {
@@ -75,8 +75,11 @@ TEST_CASE("3-5 S takes the SatNOGS transmitters from a file into the records the
   f.term.feed("S\r" + list + "\rN\rQ\r");
   menus::menu_3_5_refresh(f.term, *f.services);
   const std::string& out = f.term.output();
-  CHECK(has(out, "  RS-44: downlink 435.640 USB, uplink 145.965 LSB (inverting transponder) (Mode U/V linear)\n"));
-  CHECK(has(out, "  ISS: your own record kept\n"));
+  // RS-44's chosen mode (SSB) emptied: each field filled from the list; the ISS's FM as shipped agrees.
+  CHECK(has(out, "  RS-44 SSB downlink: 435.640 MHz from satnogs\n"));
+  CHECK(has(out, "  RS-44 SSB passbands: 435.610-435.670 / 145.935-145.995 MHz from satnogs\n"));
+  CHECK(has(out, "  RS-44 SSB inverting: inverting from satnogs\n"));
+  CHECK(has(out, "  0 added, 6 updated, 0 conflicts (yours kept), 1 unchanged; 0 transmitters not alive or not active, not offered\n"));
   const radio::SatelliteRadio& r = f.model.db.satellites[static_cast<std::size_t>(rs44)].radio;
   CHECK(r.downlink_hz == 435'640'000);
   CHECK(r.uplink_mode == radio::Mode::lsb);

@@ -1,6 +1,7 @@
-// The SatNOGS DB transmitter list into the database's freq/mode records (store/satnogs.h). The
-// list is written here with the fields the SatNOGS API documents (norad_cat_id, description,
-// alive, status, type, uplink/downlink low/high in Hz, mode, invert).
+// The SatNOGS DB transmitter list into the database's modes (store/satnogs.h, the one SatNOGS
+// importer, through store/mode_import.h). The list is written here with the fields the SatNOGS API
+// documents (uuid, description, alive, type, uplink/downlink low/high in Hz, mode, invert, baud,
+// norad_cat_id, status).
 #include <doctest/doctest.h>
 
 #include <string>
@@ -41,38 +42,48 @@ const char* kList = R"([
   "invert":false,"baud":null,"norad_cat_id":800123456},
  {"uuid":"f","description":"unknown object","alive":true,"status":"active","type":"Transmitter",
   "uplink_low":null,"uplink_high":null,"downlink_low":437000000,"downlink_high":null,"mode":"FM",
-  "invert":false,"baud":null,"norad_cat_id":null}
+  "invert":false,"baud":null,"norad_cat_id":null},
+ {"uuid":"g","description":"Mode V/U FM, switched off","alive":true,"status":"inactive","type":"Transceiver",
+  "uplink_low":145850000,"uplink_high":null,"downlink_low":436795000,"downlink_high":null,"mode":"FM",
+  "invert":false,"baud":null,"norad_cat_id":25544}
 ])";
 
 }  // namespace
 
-TEST_CASE("SatNOGS: transceivers, inverting transponders, beacons; dead transmitters and other objects ignored") {
+TEST_CASE("SatNOGS: every alive, active transmitter a mode; dead, inactive and other objects not offered") {
   Database db = db_of({{25544, "ISS"}, {44909, "RS-44"}, {7530, "AO-07"}, {800123456, "NEWSAT"}});
   const SatnogsImport r = import_satnogs(db, kList, false);
   REQUIRE(r.ok());
-  CHECK(r.updated == std::vector<std::string>{
-                         "ISS: downlink 437.800 FM, uplink 145.990 FM (FM voice)",
-                         "RS-44: downlink 435.640 USB, uplink 145.965 LSB (inverting transponder) (Mode U/V linear)",
-                         "NEWSAT: downlink 435.790 CW (CW beacon)"});
+  CHECK(r.lines == std::vector<std::string>{
+                       "ISS FM: added from satnogs (437.800 MHz FM, up 145.990 MHz FM)",
+                       "ISS APRS: added from satnogs (145.825 MHz FM)",
+                       "RS-44 SSB: added from satnogs (435.640 MHz USB, up 145.965 MHz LSB)",
+                       "NEWSAT CW: added from satnogs (435.790 MHz CW)",
+                       "4 added, 0 updated, 0 conflicts (yours kept), 0 unchanged; 2 transmitters not alive or "
+                       "not active, not offered"});
   CHECK(r.without_transmitter == 1);  // AO-07: its only transmitter is dead
-  const radio::SatelliteRadio& iss = db.satellites[0].radio;
-  CHECK(iss.downlink_hz == 437'800'000);
-  CHECK(iss.uplink_hz == 145'990'000);
-  CHECK(iss.downlink_mode == radio::Mode::fm);
-  CHECK(iss.uplink_mode == radio::Mode::fm);
+  const Satellite& iss = db.satellites[0];
+  REQUIRE(modes_of(iss).size() == 2);  // FM and APRS; the inactive FM transceiver (uuid g) is not one
+  CHECK(iss.mode == "FM");
+  CHECK(iss.radio.downlink_hz == 437'800'000);
+  CHECK(iss.radio.uplink_hz == 145'990'000);
+  CHECK(iss.radio.downlink_mode == radio::Mode::fm);
+  const auto aprs = find_mode(iss, "APRS");
+  REQUIRE(aprs);
+  CHECK(aprs->radio.downlink_hz == 145'825'000);
+  CHECK(aprs->radio.uplink_mode == radio::Mode::none);
+  CHECK(aprs->sources.at("downlink") == radio::FieldSource{"satnogs", "145825000", "", ""});
   const radio::SatelliteRadio& rs44 = db.satellites[1].radio;
   CHECK(rs44.downlink_hz == 435'640'000);  // the passband's centre
   CHECK(rs44.uplink_hz == 145'965'000);
   CHECK(rs44.uplink_mode == radio::Mode::lsb);
   CHECK(rs44.downlink_mode == radio::Mode::usb);
-  // The passband edges, for dial follow; the ISS's FM transceiver has none.
   CHECK(rs44.downlink_low_hz == 435'610'000);
   CHECK(rs44.downlink_high_hz == 435'670'000);
   CHECK(rs44.uplink_low_hz == 145'935'000);
   CHECK(rs44.uplink_high_hz == 145'995'000);
   CHECK(rs44.inverting);
-  CHECK_FALSE(iss.has_passbands());
-  CHECK_FALSE(db.satellites[2].radio.has_downlink());
+  CHECK(modes_of(db.satellites[2]).empty());
   CHECK(db.satellites[3].radio.uplink_mode == radio::Mode::none);
 }
 
@@ -82,14 +93,10 @@ TEST_CASE("SatNOGS: a transponder with an uplink edge missing has no passbands t
     const char* uplink;  // the entry's uplink fields
     radio::Hz uplink_hz;
     radio::Mode uplink_mode;
-    const char* updated;
   };
-  for (const Case& c : {Case{R"("uplink_low":null,"uplink_high":145995000)", 0, radio::Mode::none,
-                             "RS-44: downlink 435.640 USB (Mode U/V linear)"},
-                        Case{R"("uplink_high":145995000)", 0, radio::Mode::none,
-                             "RS-44: downlink 435.640 USB (Mode U/V linear)"},
-                        Case{R"("uplink_low":145935000,"uplink_high":null)", 145'935'000, radio::Mode::usb,  // the one edge there is
-                             "RS-44: downlink 435.640 USB, uplink 145.935 USB (Mode U/V linear)"}}) {
+  for (const Case& c : {Case{R"("uplink_low":null,"uplink_high":145995000)", 0, radio::Mode::none},
+                        Case{R"("uplink_high":145995000)", 0, radio::Mode::none},
+                        Case{R"("uplink_low":145935000,"uplink_high":null)", 145'935'000, radio::Mode::usb}}) {
     CAPTURE(c.uplink);
     Database db = db_of({{44909, "RS-44"}});
     const std::string list = std::string(R"([{"description":"Mode U/V linear","alive":true,"status":"active",
@@ -105,59 +112,43 @@ TEST_CASE("SatNOGS: a transponder with an uplink edge missing has no passbands t
     CHECK(rs44.downlink_mode == radio::Mode::usb);
     CHECK(rs44.uplink_hz == c.uplink_hz);
     CHECK(rs44.uplink_mode == c.uplink_mode);
-    CHECK(r.updated == std::vector<std::string>{c.updated});
   }
 }
 
-TEST_CASE("SatNOGS: the operator's own records stay unless replace is asked") {
+TEST_CASE("SatNOGS: the operator's values stay and the conflict is said, unless replace is asked") {
   Database db = db_of({{25544, "ISS"}});
-  db.satellites[0].radio.downlink_hz = 145'800'000;
+  db.satellites[0].radio.downlink_hz = 437'805'000;  // the operator's record, from before sources
+  db.satellites[0].radio.uplink_hz = 145'990'000;
+  db.satellites[0].radio.downlink_mode = db.satellites[0].radio.uplink_mode = radio::Mode::fm;
   SatnogsImport r = import_satnogs(db, kList, false);
-  CHECK(r.updated.empty());
-  CHECK(r.kept == std::vector<std::string>{"ISS"});
-  CHECK(db.satellites[0].radio.downlink_hz == 145'800'000);
+  REQUIRE(r.ok());
+  CHECK(r.report.conflicts ==
+        std::vector<std::string>{"ISS FM downlink: kept your 437.805 MHz (operator); satnogs says 437.800 MHz"});
+  CHECK(r.report.added == std::vector<std::string>{"ISS APRS: added from satnogs (145.825 MHz FM)"});
+  CHECK(db.satellites[0].radio.downlink_hz == 437'805'000);
+  // Asked again: the same conflict, said again; nothing else changes.
+  r = import_satnogs(db, kList, false);
+  CHECK(r.report.conflicts.size() == 1);
+  CHECK(r.report.unchanged == 1);  // APRS
   r = import_satnogs(db, kList, true);
-  CHECK(r.updated.size() == 1);
+  CHECK(r.report.updated ==
+        std::vector<std::string>{"ISS FM downlink: 437.800 MHz from satnogs (was 437.805 MHz, operator)"});
   CHECK(db.satellites[0].radio.downlink_hz == 437'800'000);
 }
 
-TEST_CASE("SatNOGS: a text that is not a transmitter list changes nothing and says so") {
+TEST_CASE("SatNOGS: a text that is not a transmitter list changes nothing and says where") {
   Database db = db_of({{25544, "ISS"}});
   CHECK(import_satnogs(db, "No GP data found", false).error ==
-        "not a SatNOGS transmitter list (expected a JSON array of transmitters)");
+        "SatNOGS list: not a SatNOGS transmitter list (expected a JSON array of transmitters)");
   CHECK(import_satnogs(db, "{\"detail\":\"Not found.\"}", false).error ==
-        "not a SatNOGS transmitter list (expected a JSON array of transmitters)");
+        "SatNOGS list: not a SatNOGS transmitter list (expected a JSON array of transmitters)");
   // A bad entry after a good one: nothing is applied.
   CHECK(import_satnogs(db, R"([{"norad_cat_id":25544,"alive":true,"status":"active","downlink_low":437800000},
                                {"description":"no number"}])", false).error ==
-        "transmitter 2: not a transmitter object (no norad_cat_id)");
-  CHECK(import_satnogs(db, R"([{"norad_cat_id":"25544"}])", false).error ==
-        "transmitter 1: norad_cat_id is not a whole number");
-  CHECK_FALSE(db.satellites[0].radio.has_downlink());
-}
-
-TEST_CASE("SatNOGS: a description is shown as printable UTF-8, cut at 80 bytes, whatever was downloaded") {
-  Database db = db_of({{25544, "ISS"}});
-  // An escape sequence (clear screen), a C1 control, an invalid byte, and a paragraph.
-  const std::string list = R"([{"description":"FM\u001b[2J voice\u0085 \u00e9)" + std::string("\xff") + R"( )" +
-                           std::string(100, 'x') + R"(","alive":true,"status":"active","type":"Transceiver",
-    "uplink_low":145990000,"uplink_high":null,"downlink_low":437800000,"downlink_high":null,"mode":"FM",
-    "invert":false,"norad_cat_id":25544}])";
-  const SatnogsImport r = import_satnogs(db, list, false);
-  // An invalid byte makes the list not JSON at all: nothing changes.
-  CHECK_FALSE(r.ok());
-  const std::string valid = R"([{"description":"FM\u001b[2J voice\u0085 \u00e9 )" + std::string(100, 'x') +
-                            R"(","alive":true,"status":"active","type":"Transceiver",
-    "uplink_low":145990000,"uplink_high":null,"downlink_low":437800000,"downlink_high":null,"mode":"FM",
-    "invert":false,"norad_cat_id":25544}])";
-  const SatnogsImport ok = import_satnogs(db, valid, false);
-  REQUIRE(ok.ok());
-  REQUIRE(ok.updated.size() == 1);
-  const std::string& line = ok.updated[0];
-  CHECK(line.find('\x1b') == std::string::npos);
-  CHECK(line.find("\xc2\x85") == std::string::npos);
-  CHECK(line.find("\xc3\xa9") != std::string::npos);   // é is kept
-  CHECK(line.rfind("ISS: downlink 437.800 FM, uplink 145.990 FM (FM", 0) == 0);
-  // 80 bytes kept; the two control characters each became U+FFFD (3 bytes for 1 and 2).
-  CHECK(line.size() == std::string("ISS: downlink 437.800 FM, uplink 145.990 FM ()").size() + 80 + 2 + 1);
+        "SatNOGS list: transmitter 2: not a transmitter object (no norad_cat_id)");
+  CHECK(import_satnogs(db, R"([{"uuid":"x1","norad_cat_id":"25544"}])", false).error ==
+        "SatNOGS list: transmitter 1 (x1), field norad_cat_id: expected a catalog number");
+  CHECK(import_satnogs(db, R"([{"uuid":"x2","norad_cat_id":25544,"downlink_low":"437.8"}])", false).error ==
+        "SatNOGS list: transmitter 1 (x2), field downlink_low: expected a frequency in Hz or null");
+  CHECK(modes_of(db.satellites[0]).empty());
 }
