@@ -27,7 +27,7 @@ namespace {
 
 using json = nlohmann::json;
 
-const char* kUsage =
+const char* kRadioUsage =
     "usage: trakbox radio import FILE [--format satnogs|trsp|sqf|subtone|oscarwatch] [--replace]\n"
     "       trakbox radio diff [SAT] [--conflicts]\n"
     "each with [--state DIR | --socket PATH]\n\n"
@@ -44,7 +44,7 @@ const char* kUsage =
     "  trakbox radio diff RS-44 --conflicts\n\n"
     "options:\n";
 
-std::vector<OptionSpec> specs() {
+std::vector<OptionSpec> radio_specs() {
   return {{"help", "", "this text"},
           {"format", "NAME", "the list's format: satnogs, trsp, sqf, subtone or oscarwatch (default: guessed)"},
           {"replace", "", "take the list's values over yours and the freq/mode file's"},
@@ -146,7 +146,7 @@ std::optional<json> build_request(const std::vector<std::string>& words, const P
 
 int run_radio(const std::vector<std::string>& args) {
   Subcommand sub;
-  if (const auto done = read_subcommand(args, specs(), "radio", kUsage, sub)) return *done;
+  if (const auto done = read_subcommand(args, radio_specs(), "radio", kRadioUsage, sub)) return *done;
   const ParsedOptions& o = sub.options;
   int code = kExitOk;
   const auto request = build_request(sub.words, o, code);

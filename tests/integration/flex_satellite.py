@@ -22,7 +22,6 @@ again), never a lost link; the uplink is tuned on slice 1 and marked `tx=1`.
 import json
 import os
 import re
-import shutil
 import socket
 import subprocess
 import sys

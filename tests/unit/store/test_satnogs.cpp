@@ -13,7 +13,7 @@ using namespace tb::store;
 
 namespace {
 
-Database db_of(std::initializer_list<std::pair<int, const char*>> sats) {
+Database satnogs_db_of(std::initializer_list<std::pair<int, const char*>> sats) {
   Database db;
   for (const auto& [number, name] : sats) {
     Satellite s;
@@ -51,7 +51,7 @@ const char* kList = R"([
 }  // namespace
 
 TEST_CASE("SatNOGS: every alive, active transmitter a mode; dead, inactive and other objects not offered") {
-  Database db = db_of({{25544, "ISS"}, {44909, "RS-44"}, {7530, "AO-07"}, {800123456, "NEWSAT"}});
+  Database db = satnogs_db_of({{25544, "ISS"}, {44909, "RS-44"}, {7530, "AO-07"}, {800123456, "NEWSAT"}});
   const SatnogsImport r = import_satnogs(db, kList, false);
   REQUIRE(r.ok());
   CHECK(r.lines == std::vector<std::string>{
@@ -98,7 +98,7 @@ TEST_CASE("SatNOGS: a transponder with an uplink edge missing has no passbands t
                         Case{R"("uplink_high":145995000)", 0, radio::Mode::none},
                         Case{R"("uplink_low":145935000,"uplink_high":null)", 145'935'000, radio::Mode::usb}}) {
     CAPTURE(c.uplink);
-    Database db = db_of({{44909, "RS-44"}});
+    Database db = satnogs_db_of({{44909, "RS-44"}});
     const std::string list = std::string(R"([{"description":"Mode U/V linear","alive":true,"status":"active",
       "type":"Transponder",)") + c.uplink +
                              R"(,"downlink_low":435610000,"downlink_high":435670000,"mode":"SSB","invert":true,
@@ -116,7 +116,7 @@ TEST_CASE("SatNOGS: a transponder with an uplink edge missing has no passbands t
 }
 
 TEST_CASE("SatNOGS: the operator's values stay and the conflict is said, unless replace is asked") {
-  Database db = db_of({{25544, "ISS"}});
+  Database db = satnogs_db_of({{25544, "ISS"}});
   db.satellites[0].radio.downlink_hz = 437'805'000;  // the operator's record, from before sources
   db.satellites[0].radio.uplink_hz = 145'990'000;
   db.satellites[0].radio.downlink_mode = db.satellites[0].radio.uplink_mode = radio::Mode::fm;
@@ -137,7 +137,7 @@ TEST_CASE("SatNOGS: the operator's values stay and the conflict is said, unless 
 }
 
 TEST_CASE("SatNOGS: a text that is not a transmitter list changes nothing and says where") {
-  Database db = db_of({{25544, "ISS"}});
+  Database db = satnogs_db_of({{25544, "ISS"}});
   CHECK(import_satnogs(db, "No GP data found", false).error ==
         "SatNOGS list: not a SatNOGS transmitter list (expected a JSON array of transmitters)");
   CHECK(import_satnogs(db, "{\"detail\":\"Not found.\"}", false).error ==
