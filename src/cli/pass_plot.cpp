@@ -407,13 +407,9 @@ std::optional<std::string> write_pass_plot(const PassPicture& p, const std::stri
 std::vector<rotator::TrackPoint> sample_pass(const orbit::Sgp4& sat, const orbit::Observer& o, const orbit::Pass& p,
                                              double step_s) {
   std::vector<rotator::TrackPoint> out;
-  const double span = orbit::minutes_between(p.aos, p.los) * 60.0;
-  for (double t = 0.0;; t += step_s) {
-    const double at = std::min(t, span);
-    const orbit::UtcTime when = orbit::add_seconds(p.aos, at);
+  for (const orbit::UtcTime when : rotator::pass_sample_times(p.aos, p.tca, p.los, step_s)) {
     const orbit::Observation ob = orbit::observe(sat, o, when);
     if (ob.ok()) out.push_back({when, ob.look.az_deg, ob.look.el_deg});
-    if (at >= span) break;
   }
   return out;
 }

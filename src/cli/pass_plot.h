@@ -51,7 +51,8 @@ std::optional<std::string> plot_name_problem(const std::string& path);
 // when it was placed (textLength), so that labels kept apart stay apart in any viewer's font.
 std::optional<std::string> write_pass_plot(const PassPicture& p, const std::string& path);
 
-// Samples a pass every `step_s` seconds from AOS to LOS (LOS included).
+// Samples a pass every `step_s` seconds from AOS to LOS (LOS included), and every second near its
+// culmination (rotator::pass_sample_times).
 std::vector<rotator::TrackPoint> sample_pass(const orbit::Sgp4& sat, const orbit::Observer& o, const orbit::Pass& p,
                                              double step_s = 5.0);
 

@@ -87,6 +87,64 @@ RotatorPosition PassPlan::map(double az_deg, double el_deg) const {
   return p;
 }
 
+RotatorPosition PassPlan::map_at(orbit::UtcTime t, double az_deg, double el_deg) const {
+  RotatorPosition p = map(az_deg, el_deg);
+  if (lead.size() < 2 || t < lead.front().time || lead.back().time < t) return p;
+  // The schedule's azimuth at t, linear between its samples.
+  const auto after = std::upper_bound(lead.begin(), lead.end(), t,
+                                      [](orbit::UtcTime x, const LeadPoint& l) { return x < l.time; });
+  if (after == lead.end()) {
+    p.az_travel = lead.back().az_travel;
+  } else {
+    const LeadPoint& a = *(after - 1);
+    const LeadPoint& b = *after;
+    const double span = orbit::minutes_between(a.time, b.time);
+    const double f = span > 0.0 ? orbit::minutes_between(a.time, t) / span : 1.0;
+    p.az_travel = a.az_travel + f * (b.az_travel - a.az_travel);
+  }
+  if (!geometry.az_travel.empty()) p.az_travel = geometry.az_travel.clamp(p.az_travel);
+  return p;
+}
+
+std::string PassPlan::keyhole_text() const {
+  if (lead.size() < 2) return "";
+  auto hms = [](orbit::UtcTime t) {
+    const auto c = orbit::to_civil(t);
+    char b[16];
+    std::snprintf(b, sizeof b, "%02d:%02d:%02d", c.hour, c.minute, static_cast<int>(c.second));
+    return std::string(b);
+  };
+  char b[200];
+  std::snprintf(b, sizeof b, "the azimuth turns ahead of the satellite at %.1f deg/s: at most %.1f deg off (%.1f chasing it)",
+                lead_rate_deg_s, max_error_deg, following_error_deg);
+  return "keyhole " + hms(lead.front().time) + "-" + hms(lead.back().time) + ": " + b;
+}
+
+std::vector<orbit::UtcTime> pass_sample_times(orbit::UtcTime aos, orbit::UtcTime tca, orbit::UtcTime los,
+                                              double coarse_s, double fine_s) {
+  std::vector<orbit::UtcTime> out;
+  const double span = orbit::minutes_between(aos, los) * 60.0;
+  if (!(span > 0.0)) return {aos};
+  const double at_tca = std::clamp(orbit::minutes_between(aos, tca) * 60.0, 0.0, span);
+  const int coarse = std::clamp(static_cast<int>(std::ceil(span / coarse_s)), 2, 600);
+  std::vector<double> s;
+  for (int k = 0; k <= coarse; ++k) s.push_back(span * k / coarse);
+  for (double x = std::ceil(std::max(0.0, at_tca - fine_s)); x <= std::min(span, at_tca + fine_s); x += 1.0) s.push_back(x);
+  std::sort(s.begin(), s.end());
+  // Samples closer than half a second to the one before are the same sample (LOS always stays).
+  double last = -1.0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const bool final_one = i + 1 == s.size();
+    if (!out.empty() && s[i] - last < 0.5) {
+      if (!final_one) continue;
+      out.pop_back();
+    }
+    out.push_back(orbit::add_seconds(aos, s[i]));
+    last = s[i];
+  }
+  return out;
+}
+
 AzEl PassPlan::pointing_at(double az_deg, double el_deg) const { return pointing(geometry, map(az_deg, el_deg)); }
 
 bool PassPlan::lost_at(double az_deg, double el_deg) const {
@@ -111,18 +169,25 @@ struct Followed {
 Followed followed_by(const PassPlan& plan, std::span<const TrackPoint> track) {
   Followed f;
   PassCoverage& c = f.coverage;
-  for (const TrackPoint& s : track) {
+  // The fraction is of the time: each sample stands for half the time to its neighbours (the
+  // samples are denser near the culmination, pass_sample_times).
+  double all = 0.0, on = 0.0;
+  for (std::size_t i = 0; i < track.size(); ++i) {
+    const TrackPoint& s = track[i];
     if (s.el_deg < plan.geometry.start_el) continue;
     ++c.samples;
+    const double w = orbit::minutes_between(track[i ? i - 1 : i].time, track[i + 1 < track.size() ? i + 1 : i].time);
+    all += w;
     // Followed: the azimuth is reached (near the zenith any azimuth points at the satellite), or
     // over the top, within the plan's error.
     if (plan.lost_at(s.az_deg, s.el_deg)) continue;
     ++c.followed;
+    on += w;
     if (!c.from) c.from = s.time;
     c.to = s.time;
     f.highest = std::max(f.highest, s.el_deg);
   }
-  c.fraction = c.samples ? static_cast<double>(c.followed) / c.samples : 1.0;
+  c.fraction = c.followed == c.samples ? 1.0 : all > 0.0 ? on / all : static_cast<double>(c.followed) / c.samples;
   return f;
 }
 }  // namespace
@@ -219,6 +284,87 @@ std::optional<PassPlan> over_the_top(std::span<const TrackPoint> track, const Pa
 
 }  // namespace
 
+namespace {
+
+// The keyhole's schedule for a plan that follows the pass's azimuth (see PassPlan::lead): the
+// azimuth path u (travel degrees at the samples) within the motor's rate r whose largest pointing
+// error is smallest. For a bound E each sample allows the azimuths within E of the satellite at its
+// elevation (any azimuth at the zenith); a path at rate r exists through those windows when the
+// windows reached forward from the first sample never come out empty. E is found by bisection, the
+// path then backward, each sample as near the satellite as the next one's window lets it.
+void add_keyhole(PassPlan& plan, std::span<const TrackPoint> track, const PassGeometry& g) {
+  const std::size_t n = track.size();
+  if (n < 3 || !(g.az_rate_deg_s > 0.0) || plan.over_top) return;
+  const double full = g.az_rate_deg_s, r = 0.9 * full;
+  std::vector<double> u(n), el(n), dt(n, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const RotatorPosition p = plan.map(track[i].az_deg, track[i].el_deg);
+    u[i] = p.az_travel;
+    el[i] = p.el;
+    if (i) dt[i] = orbit::minutes_between(track[i - 1].time, track[i].time) * 60.0;
+  }
+  const auto error_at = [&](std::size_t i, double travel) {
+    const AzEl at = pointing(g, {travel, el[i]});
+    return pointing_error_deg(at.az, at.el, track[i].az_deg, std::max(track[i].el_deg, 0.0));
+  };
+  // Chasing the satellite at the motor's full rate (what a plain follow does).
+  double chase = 0.0, v = u[0];
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i) v += std::clamp(u[i] - v, -full * dt[i], full * dt[i]);
+    chase = std::max(chase, error_at(i, v));
+  }
+  if (chase < 1.0) return;  // the motor keeps up: nothing to plan
+  const double lo_end = g.az_travel.empty() ? -1e300 : g.az_travel.lo;
+  const double hi_end = g.az_travel.empty() ? 1e300 : g.az_travel.hi;
+  std::vector<double> lo(n), hi(n);
+  const auto feasible = [&](double e) {
+    const double s = std::sin(0.5 * e * kDeg);
+    for (std::size_t i = 0; i < n; ++i) {
+      // Azimuth within e of the satellite at elevation el: 2 asin(cos el sin(d/2)) <= e.
+      const double c = std::abs(std::cos(el[i] * kDeg));
+      const double half = s >= c ? 180.0 : 2.0 * std::asin(s / c) / kDeg;
+      double a = std::max(lo_end, u[i] - half), b = std::min(hi_end, u[i] + half);
+      if (i) {
+        a = std::max(a, lo[i - 1] - r * dt[i]);
+        b = std::min(b, hi[i - 1] + r * dt[i]);
+      }
+      if (a > b) return false;
+      lo[i] = a;
+      hi[i] = b;
+    }
+    return true;
+  };
+  double bad = 0.0, good = 180.0;
+  if (!feasible(good)) return;
+  while (good - bad > 0.01) {
+    const double mid = 0.5 * (bad + good);
+    (feasible(mid) ? good : bad) = mid;
+  }
+  feasible(good);
+  std::vector<double> path(n);
+  path[n - 1] = std::clamp(u[n - 1], lo[n - 1], hi[n - 1]);
+  for (std::size_t i = n - 1; i-- > 0;)
+    path[i] = std::clamp(u[i], std::max(lo[i], path[i + 1] - r * dt[i + 1]), std::min(hi[i], path[i + 1] + r * dt[i + 1]));
+  double worst = 0.0;
+  std::size_t first = n, last = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    worst = std::max(worst, error_at(i, path[i]));
+    if (std::abs(path[i] - u[i]) > 1e-6) {
+      first = std::min(first, i);
+      last = i;
+    }
+  }
+  if (first == n || worst > chase - 0.5) return;  // no better than chasing
+  first = first ? first - 1 : 0;
+  last = std::min(n - 1, last + 1);
+  for (std::size_t i = first; i <= last; ++i) plan.lead.push_back({track[i].time, path[i]});
+  plan.following_error_deg = chase;
+  plan.lead_rate_deg_s = r;
+  plan.max_error_deg = std::max(plan.max_error_deg, worst);
+}
+
+}  // namespace
+
 PassPlan plan_pass(std::span<const TrackPoint> track, const PassGeometry& g, std::optional<double> current_travel) {
   // A pass whose azimuth outruns the motor near the zenith, on a rotator that can flip: over the top.
   const double rate = peak_az_rate(track);
@@ -228,7 +374,10 @@ PassPlan plan_pass(std::span<const TrackPoint> track, const PassGeometry& g, std
       p->coverage = followed_by(*p, track).coverage;
       return *p;
     }
-  return plan_by_piece(track, g, current_travel, rate);
+  PassPlan plan = plan_by_piece(track, g, current_travel, rate);
+  // Without the flip, a pass that outruns the motor: the keyhole's lead.
+  if (rate > g.az_rate_deg_s) add_keyhole(plan, track, g);
+  return plan;
 }
 
 namespace {

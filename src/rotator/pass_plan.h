@@ -80,9 +80,29 @@ struct PassPlan {
   double max_error_deg = 0.0;   // largest pointing error over the samples (0 when it all fits)
   double mean_error_deg = 0.0;
   PassCoverage coverage;
+  // The keyhole (issue 57): a pass whose azimuth turns faster near its culmination than the motor,
+  // on a rotator that does not follow it over the top. Chasing the satellite, the antenna falls
+  // behind after the culmination by up to following_error_deg (20 degrees and more for an 88-degree
+  // pass on a 6 deg/s motor). Instead the turn begins before the culmination and runs at the motor's
+  // rate on the schedule `lead` (the azimuth in travel degrees by time), chosen so that the largest
+  // pointing error over the pass, max_error_deg, is the smallest any schedule within the motor's
+  // rate can give. Empty when the motor keeps up (or over the top).
+  struct LeadPoint {
+    orbit::UtcTime time{};
+    double az_travel = 0.0;
+  };
+  std::vector<LeadPoint> lead;
+  double following_error_deg = 0.0;  // the worst error chasing the satellite instead (with a lead)
+  double lead_rate_deg_s = 0.0;      // the rate the schedule assumes: 90 % of the motor's
 
   // A target during the pass, in rotator coordinates for Controller::set_target.
   RotatorPosition map(double az_deg, double el_deg) const;
+  // The same at time t: inside the keyhole the azimuth comes from the lead schedule, not the target.
+  RotatorPosition map_at(orbit::UtcTime t, double az_deg, double el_deg) const;
+  // The keyhole in words, for the log, the page and status; "" without one:
+  //   "keyhole 13:51:18-13:51:49: the azimuth turns ahead of the satellite at 5.4 deg/s: at most 6.2
+  //    deg off (23.1 chasing it)"
+  std::string keyhole_text() const;
   // Where the antenna points (compass az/el) while the satellite is at az/el: map() seen from the
   // sky, the flip undone (for the pass plots).
   AzEl pointing_at(double az_deg, double el_deg) const;
@@ -102,6 +122,12 @@ struct PassPlan {
 // the start elevation, then the one covering its highest sample, then the piece in force.
 PassPlan plan_pass(std::span<const TrackPoint> track, const PassGeometry& g,
                    std::optional<double> current_travel = std::nullopt);
+
+// When to sample a pass for its plan: every coarse_s seconds from AOS to LOS, and every second within
+// fine_s of the culmination, where a high pass's azimuth turns fastest (the keyhole's schedule and
+// the over-the-top plane are found from those); sorted, AOS and LOS included.
+std::vector<orbit::UtcTime> pass_sample_times(orbit::UtcTime aos, orbit::UtcTime tca, orbit::UtcTime los,
+                                              double coarse_s = 10.0, double fine_s = 120.0);
 
 // Seconds to slew between two rotator positions at the configured motor rates (axes move together).
 double slew_seconds(const RotatorPosition& from, const RotatorPosition& to, const RotatorConfig& c);

@@ -41,10 +41,7 @@ const orbit::Pass* Unit::pass_at(orbit::UtcTime t) {
 const rotator::PassPlan* Unit::plan_for(const orbit::Pass& p) {
   if (plan_cache_ && plan_cache_->aos == p.aos && plan_cache_->generation == pointing_generation_) return &plan_cache_->plan;
   std::vector<rotator::TrackPoint> track;
-  const double minutes = orbit::minutes_between(p.aos, p.los);
-  const int steps = std::clamp(static_cast<int>(minutes * 6.0), 2, 600);
-  for (int k = 0; k <= steps; ++k) {
-    const orbit::UtcTime t = orbit::add_minutes(p.aos, minutes * k / steps);
+  for (const orbit::UtcTime t : rotator::pass_sample_times(p.aos, p.tca, p.los)) {
     const auto o = observe(t);
     if (!o) break;
     const AzEl a = adjusted(o->look.az_deg, std::max(o->look.el_deg, s_.el_threshold_deg));
@@ -110,7 +107,7 @@ void Unit::track(orbit::UtcTime now) {
     last_track_target_ = a;
     const rotator::PassPlan* plan = (p && p->aos <= t) ? plan_for(*p) : nullptr;
     if (plan) {
-      command(plan->map(a.az, a.el));
+      command(plan->map_at(t, a.az, a.el));
     } else {
       const auto& st = station_.rotator().status();
       command(station_.rotator().model().target_for(a, st.has_position ? st.az.travel : current_position().az_travel));
@@ -145,7 +142,7 @@ void Unit::preposition(orbit::UtcTime start) {
   if (o->look.el_deg >= s_.el_threshold_deg) {
     const AzEl a = adjusted(o->look.az_deg, o->look.el_deg);
     const rotator::PassPlan* plan = (p && p->aos <= t) ? plan_for(*p) : nullptr;
-    command(plan ? plan->map(a.az, a.el) : station_.rotator().model().target_for(a, travel));
+    command(plan ? plan->map_at(t, a.az, a.el) : station_.rotator().model().target_for(a, travel));
   } else if (p && s_.window && p->aos < s_.window->stop + std::chrono::milliseconds(s_.time_offset_ms)) {
     command(plan_for(*p)->aos);
   } else {

@@ -290,6 +290,18 @@ class StationLoop {
   };
   std::optional<ClientFollow> client_follow_;
   void end_client_follow(std::string_view why);
+  // The last client target that went through a plan with a keyhole (PassPlan::lead): the plan's
+  // key and when. Inside the keyhole the azimuth runs on time, so the station keeps moving the
+  // target between the client's targets (a client moves when the satellite has moved 4 degrees,
+  // or once a second: the schedule would stand still between them).
+  struct ClientLead {
+    int key = -1;
+    orbit::UtcTime at{};
+  };
+  std::optional<ClientLead> client_lead_;
+  void client_keyhole(orbit::UtcTime now);
+  // A client's target through `plan` at now (the keyhole's schedule when one holds).
+  rotator::RotatorPosition client_mapped(int key, const rotator::PassPlan& plan, SkyTarget target);
   // The plan of a pass whose samples `look` gives (AOS to LOS), kept as planned_ under (key, AOS).
   using Look = std::function<std::optional<orbit::Observation>(orbit::UtcTime)>;
   const rotator::PassPlan* plan_of(int key, const std::string& name, const orbit::Pass& pass, const Look& look);

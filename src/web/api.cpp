@@ -478,6 +478,7 @@ json Api::sky() {
   p["lost"] = std::move(lost);
   if (plan) p["coverage"] = plan->coverage_text();
   if (plan) p["coverage_full"] = plan->coverage.full();
+  if (plan && !plan->lead.empty()) p["keyhole"] = plan->keyhole_text();
   // Before the antenna pre-positions (kPrepositionMinutes before AOS): when and where it will move.
   const orbit::UtcTime moves = orbit::add_minutes(pass.aos, -tracker::Tracker::kPrepositionMinutes);
   if (tr.last_tick_time() < moves && d.antenna != tracker::Decision::Antenna::preposition) {

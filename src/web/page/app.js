@@ -147,6 +147,7 @@ function planText(p, a) {
   let t = p.coverage;
   if (p.coverage_full === false && a && a.az_travel_deg === 360)
     t += ". A rotator with overlap (G-5500, a GS-232 in 450° mode) follows it: trakbox --az-travel 450";
+  if (p.keyhole) t += ". " + p.keyhole.charAt(0).toUpperCase() + p.keyhole.slice(1);
   return t;
 }
 

@@ -233,16 +233,19 @@ namespace {
 
 // A pass along a great circle tilted `miss` degrees from the zenith towards the east: from north
 // (AOS, azimuth 0) over the sky to south, its culmination at azimuth 90, elevation 90 - miss. One
-// sample every 5 s over 600 s (ENU vector (sin s sin d, cos s, sin s cos d), s from 0 to 180 deg).
-std::vector<TrackPoint> zenith_pass(double miss) {
+// sample every 5 s over 600 s (ENU vector (sin s sin d, cos s, sin s cos d), s from 0 to 180 deg);
+// with `iss`, one sample a second over 200 s, the satellite moving 0.9 deg/s as the ISS does overhead.
+std::vector<TrackPoint> zenith_pass(double miss, bool iss = false) {
   constexpr double k = std::numbers::pi / 180.0;
   std::vector<TrackPoint> t;
   const auto aos = from_civil(2026, 5, 23, 13, 45);
-  for (int i = 0; i <= 120; ++i) {
-    const double s = 1.5 * i * k;
+  const int step = iss ? 1 : 5;
+  const double rate = iss ? 0.9 : 0.3;
+  for (int i = 0; i * step * rate <= 180.0 + 1e-9; ++i) {
+    const double s = rate * step * i * k;
     const double e = std::sin(s) * std::sin(miss * k), n = std::cos(s), u = std::sin(s) * std::cos(miss * k);
     TrackPoint p;
-    p.time = aos + std::chrono::seconds(5 * i);
+    p.time = aos + std::chrono::seconds(step * i);
     p.az_deg = wrap360(std::atan2(e, n) / k);
     p.el_deg = std::asin(std::clamp(u, -1.0, 1.0)) / k;
     t.push_back(p);
@@ -290,4 +293,97 @@ TEST_CASE("A pass through the zenith without a flip, or one the motor keeps up w
   const PassPlan low = plan_pass(zenith_pass(30.0), geometry(RotorStart::south, true));
   CHECK_FALSE(low.over_top);
   CHECK(low.peak_az_rate_deg_s < 6.0);
+}
+
+TEST_CASE("A pass through the zenith without a flip: the keyhole's turn begins before the culmination") {
+  // 88.8 deg at 13:46:40 (azimuth 90); near it the azimuth turns 43 deg/s, the motor 6.
+  const auto track = zenith_pass(1.2, true);
+  const PassPlan plan = plan_pass(track, geometry(RotorStart::south, false));
+  CHECK_FALSE(plan.over_top);
+  CHECK_FALSE(plan.flip);
+  REQUIRE(plan.lead.size() > 10);
+  CHECK(plan.lead_rate_deg_s == doctest::Approx(5.4));
+  const auto tca = from_civil(2026, 5, 23, 13, 46, 40);
+  CHECK(plan.lead.front().time < tca - 5s);  // the turn begins well before the culmination
+  CHECK(plan.lead.back().time > tca);
+  // The schedule within the rate the plan assumes, and every sample within the plan's largest error.
+  for (std::size_t i = 1; i < plan.lead.size(); ++i) {
+    const double dt = tb::orbit::minutes_between(plan.lead[i - 1].time, plan.lead[i].time) * 60.0;
+    CHECK(std::abs(plan.lead[i].az_travel - plan.lead[i - 1].az_travel) <= plan.lead_rate_deg_s * dt + 1e-9);
+  }
+  double worst = 0.0;
+  for (const TrackPoint& p : track) {
+    const RotatorPosition r = plan.map_at(p.time, p.az_deg, p.el_deg);
+    const double e = pointing_error_deg(wrap360(r.az_travel + 180.0), r.el, p.az_deg, std::max(p.el_deg, 0.0));
+    worst = std::max(worst, e);
+  }
+  CHECK(worst == doctest::Approx(plan.max_error_deg).epsilon(1e-9));
+  // Chasing the satellite at 6 deg/s the antenna falls behind by ~15 deg (half the turn still to do
+  // 15 s after the culmination, the satellite 13 deg from the zenith); the keyhole halves the
+  // largest error at least.
+  CHECK(plan.following_error_deg > 10.0);
+  CHECK(plan.max_error_deg < 0.5 * plan.following_error_deg);
+  // Outside the keyhole the azimuth is the satellite's.
+  CHECK(plan.map_at(track[10].time, track[10].az_deg, track[10].el_deg) == plan.map(track[10].az_deg, track[10].el_deg));
+  const std::string text = plan.keyhole_text();
+  CHECK(text.rfind("keyhole 13:46:", 0) == 0);
+  CHECK(text.find("at 5.4 deg/s: at most ") != std::string::npos);
+
+  // The same pass on a rotator that can flip goes over the top instead; a 60-degree pass needs
+  // neither.
+  CHECK(plan_pass(track, geometry(RotorStart::south, true)).lead.empty());
+  CHECK(plan_pass(zenith_pass(30.0, true), geometry(RotorStart::south, false)).lead.empty());
+}
+
+TEST_CASE("The controller and simulated rotator on the keyhole's schedule stay within the plan's error") {
+  spdlog::set_level(spdlog::level::off);
+  RotatorConfig c;
+  const auto track = zenith_pass(1.2, true);
+  const PassPlan plan = plan_pass(track, PassGeometry::from(AdcModel(c, RotorStart::south)));
+  REQUIRE_FALSE(plan.lead.empty());
+  // The same rotator twice: once on the plan's schedule, once chasing the satellite.
+  double worst_planned = 0.0, worst_chasing = 0.0;
+  for (const bool planned : {true, false}) {
+    ManualClock clock(track.front().time - std::chrono::minutes(1));
+    auto owned = std::make_unique<SimulatedRotator>(clock, SimulatedRotatorParams::matching(c));
+    SimulatedRotator& sim = *owned;
+    Controller ctl(c, RotorStart::south, std::move(owned));
+    ctl.set_target(plan.aos);
+    while (clock.now() < track.front().time) {
+      clock.advance(100ms);
+      ctl.tick(clock.now());
+    }
+    double& worst = planned ? worst_planned : worst_chasing;
+    for (const TrackPoint& p : track) {
+      ctl.set_target(planned ? plan.map_at(p.time, p.az_deg, p.el_deg) : plan.map(p.az_deg, p.el_deg));
+      for (int i = 0; i < 10; ++i) {
+        clock.advance(100ms);
+        ctl.tick(clock.now());
+      }
+      const RotatorPosition at = sim.true_position();
+      if (p.el_deg > 0.0) worst = std::max(worst, pointing_error_deg(p.az_deg, p.el_deg, wrap360(at.az_travel + 180.0), at.el));
+    }
+  }
+  MESSAGE("keyhole: worst ", worst_planned, " deg (plan ", plan.max_error_deg, "); chasing: ", worst_chasing,
+          " deg (plan's estimate ", plan.following_error_deg, ")");
+  CHECK(worst_planned < plan.max_error_deg + 1.5);  // the dead band and the motor's coast
+  CHECK(worst_chasing > plan.following_error_deg - 1.5);
+  CHECK(worst_planned < 0.5 * worst_chasing);
+}
+
+TEST_CASE("Pass sample times: every coarse step, every second near the culmination, AOS and LOS") {
+  const auto aos = from_civil(2026, 5, 23, 13, 45);
+  const auto ts = pass_sample_times(aos, aos + 300s, aos + 600s, 10.0, 60.0);
+  REQUIRE(ts.size() == 61 + 120 - 12);   // 61 coarse, 121 fine, 13 of them shared
+  CHECK(ts.front() == aos);
+  CHECK(ts.back() == aos + 600s);
+  CHECK(std::is_sorted(ts.begin(), ts.end()));
+  CHECK(std::count(ts.begin(), ts.end(), aos + 300s) == 1);
+  CHECK(std::count(ts.begin(), ts.end(), aos + 241s) == 1);
+  CHECK(std::count(ts.begin(), ts.end(), aos + 239s) == 0);
+  // A culmination at the edge, an uneven span: LOS kept.
+  const auto edge = pass_sample_times(aos, aos, aos + 95500ms, 10.0, 5.0);
+  CHECK(edge.back() == aos + 95500ms);
+  CHECK(edge[1] == aos + 1s);
+  CHECK(pass_sample_times(aos, aos, aos).size() == 1);
 }
