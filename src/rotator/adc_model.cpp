@@ -178,6 +178,15 @@ double AdcModel::travel_for(double compass_az, double current_travel) const {
   return dlo < dhi ? r.lo : r.hi;
 }
 
+std::optional<double> AdcModel::unwound_travel(double travel) const {
+  // Half a degree beyond the turn, so that the stop's own 360 (north on a North-stop rotator) is not
+  // wound; the travel in force must hold the turn back (a split travel's piece may not).
+  if (travel <= 360.5) return std::nullopt;
+  const double back = travel - 360.0;
+  if (!az_travel_range().contains(back)) return std::nullopt;
+  return back;
+}
+
 RotatorPosition AdcModel::target_for(AzEl compass, double current_travel) const {
   return clamp({travel_for(compass.az, current_travel), compass.el});
 }

@@ -126,6 +126,9 @@ class AdcModel {
   // reached more than one way (0/360 at the stop, or the overlap of a 450-degree rotator), the way
   // nearest current_travel. Outside the limits: the limit angularly nearest the azimuth.
   double travel_for(double compass_az, double current_travel) const;
+  // Wound (issue 57): an azimuth more than one turn from the stop (the overlap of a 450- or
+  // 540-degree rotator) that the travel also reaches one turn back: that travel; nothing otherwise.
+  std::optional<double> unwound_travel(double travel) const;
   // A compass az/el target clamped into the limits, in rotator coordinates.
   RotatorPosition target_for(AzEl compass, double current_travel) const;
   // A rotator-coordinate target clamped into the limits.

@@ -377,6 +377,7 @@ void StationLoop::tick() {
       follow_radio(f->db_index, f->obs);
   }
   client_keyhole(now);
+  unwind_after_pass(now);
   record_pass(now, drive_radio);
   rotator_->tick(now);
 }

@@ -299,6 +299,17 @@ class StationLoop {
     orbit::UtcTime at{};
   };
   std::optional<ClientLead> client_lead_;
+  // Unwinding after a pass (issue 57): the LOS of the last pass followed on a plan (trakbox's own,
+  // a client's recognised one, a SatNOGS job's). Once it is over and the antenna is trakbox's again
+  // (no client holds it, tracking does not point it), an antenna left more than a turn from the stop
+  // goes one turn back, the same direction, unless a pass is due within kUnwindClearMinutes (its
+  // own plan then chooses the way round from where the antenna is).
+  std::optional<orbit::UtcTime> unwind_after_;
+  static constexpr double kUnwindClearMinutes = 15.0;
+  void unwind_after_pass(orbit::UtcTime now);
+  // The first pass due before `until`: a tracked satellite's next AOS or a SatNOGS window's start
+  // ("SO-50's pass at 14:05"); nothing when none is.
+  std::optional<std::string> pass_due(orbit::UtcTime now, orbit::UtcTime until) const;
   void client_keyhole(orbit::UtcTime now);
   // A client's target through `plan` at now (the keyhole's schedule when one holds).
   rotator::RotatorPosition client_mapped(int key, const rotator::PassPlan& plan, SkyTarget target);

@@ -84,6 +84,49 @@ void StationLoop::client_keyhole(orbit::UtcTime now) {
   rotator_->set_target(plan.map_at(now, o->look.az_deg, std::max(0.0, o->look.el_deg)));
 }
 
+std::optional<std::string> StationLoop::pass_due(orbit::UtcTime now, orbit::UtcTime until) const {
+  const auto hhmm = [](orbit::UtcTime t) {
+    const auto c = orbit::to_civil(t);
+    return fmt::format("{:02}:{:02}", c.hour, c.minute);
+  };
+  std::optional<std::pair<orbit::UtcTime, std::string>> first;
+  const auto consider = [&](orbit::UtcTime at, const std::string& what) {
+    if (at <= until && (!first || at < first->first)) first = std::make_pair(at, what);
+  };
+  if (tracker_.mode() != Mode::off)
+    for (const SatNow& s : tracker_.candidates())
+      if (s.pass && s.pass->los > now) consider(std::max(now, s.pass->aos), s.name + "'s pass at " + hhmm(s.pass->aos));
+  for (const Window& w : control_.windows())
+    if (w.end > now) consider(std::max(now, w.start), (w.kind == "satnogs" ? "SatNOGS job " + w.id : "the window") +
+                                                          " at " + hhmm(w.start));
+  if (!first) return std::nullopt;
+  return first->second;
+}
+
+void StationLoop::unwind_after_pass(orbit::UtcTime now) {
+  if (!unwind_after_ || now < orbit::add_seconds(*unwind_after_, 30.0)) return;
+  // A client still holding the antenna: later, when it is trakbox's again.
+  if (!control_.tracking_drives(Resource::antenna)) return;
+  const auto& st = rotator_->status();
+  if (!st.has_position || !rotator_->control_enabled()) return;
+  const Decision::Antenna d = tracker_.mode() == Mode::off ? Decision::Antenna::hold : tracker_.last_decision().antenna;
+  const auto back = rotator_->model().unwound_travel(st.az.travel);
+  if (!back || d == Decision::Antenna::point || d == Decision::Antenna::preposition || d == Decision::Antenna::park) {
+    unwind_after_.reset();  // not wound, or tracking (or parking) has it: that decides where it goes
+    return;
+  }
+  unwind_after_.reset();
+  if (const auto due = pass_due(now, orbit::add_minutes(now, kUnwindClearMinutes))) {
+    spdlog::info("antenna: left at travel {:.1f}, a turn from the stop: {} is due, its plan takes it from there",
+                 st.az.travel, *due);
+    return;
+  }
+  spdlog::info("antenna: unwinding after the pass: travel {:.1f} -> {:.1f} (azimuth {:.1f}; no pass due in {:.0f} minutes)",
+               st.az.travel, *back, st.az.deg, kUnwindClearMinutes);
+  rotator_->set_target(rotator::RotatorPosition{*back, st.el.deg});
+  wake();
+}
+
 const orbit::Sgp4* StationLoop::job_orbit(const Window& w) {
   if (w.tle1.empty() || w.tle2.empty()) return nullptr;
   if (job_ && job_->id == w.id) return job_->sgp4.get();
@@ -179,6 +222,7 @@ const rotator::PassPlan* StationLoop::plan_for(const SatNow& s) {
 
 const rotator::PassPlan* StationLoop::plan_of(int key, const std::string& name, const orbit::Pass& pass,
                                               const Look& look) {
+  unwind_after_ = pass.los;
   if (planned_ && planned_->db_index == key && planned_->aos == pass.aos) return &planned_->plan;
   // Sample the whole pass (AOS to LOS) and let the rotator plan it against its stop.
   std::vector<rotator::TrackPoint> track;

@@ -387,3 +387,15 @@ TEST_CASE("Pass sample times: every coarse step, every second near the culminati
   CHECK(edge[1] == aos + 1s);
   CHECK(pass_sample_times(aos, aos, aos).size() == 1);
 }
+
+TEST_CASE("Wound: more than a turn from the stop, where the travel also reaches one turn back") {
+  RotatorConfig c;
+  c.az_travel_deg = 450.0;
+  const AdcModel m(c, RotorStart::north);
+  CHECK(m.unwound_travel(400.0) == std::optional<double>(40.0));
+  CHECK(m.unwound_travel(450.0) == std::optional<double>(90.0));
+  CHECK_FALSE(m.unwound_travel(360.0));   // north at the stop's own turn
+  CHECK_FALSE(m.unwound_travel(360.4));
+  CHECK_FALSE(m.unwound_travel(200.0));
+  CHECK_FALSE(AdcModel(RotatorConfig{}, RotorStart::south).unwound_travel(359.0));  // 360 degrees: never
+}

@@ -138,3 +138,24 @@ TEST_CASE("client plan: before a SatNOGS window the antenna goes to the start of
   CHECK(f.station->rotator().status().az.travel == doctest::Approx(368.4).epsilon(0.01));  // there before the window
   CHECK(f.now < w.start);
 }
+
+TEST_CASE("client plan: after the pass an antenna left a turn from the stop unwinds, unless a pass is due") {
+  for (const bool job_due : {false, true}) {
+    CAPTURE(job_due);
+    Client c;
+    c.follow(c.ho113(), 90);  // round at travel ~368 (azimuth ~8) when the client goes quiet
+    REQUIRE(c.station->rotator().status().target);
+    const double wound = c.station->rotator().status().target->az_travel;
+    REQUIRE(wound > 360.5);
+    if (job_due)  // a SatNOGS window 10 minutes after HO-113's LOS: its plan takes the antenna from there
+      c.station->control().set_windows({{"satnogs", "4242", orbit::from_civil(2026, 5, 21, 3, 52, 0),
+                                         orbit::from_civil(2026, 5, 21, 4, 0, 0), "AO-91", "", "", ""}});
+    // The client is handed back by its silence; HO-113's pass goes on to LOS 03:41:41.
+    c.run(orbit::minutes_between(c.now, orbit::from_civil(2026, 5, 21, 3, 41, 0)) * 60.0);
+    CHECK(c.station->rotator().status().target->az_travel == doctest::Approx(wound));  // not before LOS
+    c.run(120.0);
+    const double after = c.station->rotator().status().target->az_travel;
+    if (job_due) CHECK(after == doctest::Approx(wound));
+    else CHECK(std::abs(after - (wound - 360.0)) < 0.5);  // where it stands (in the dead band), a turn back
+  }
+}
