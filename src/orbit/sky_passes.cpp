@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "orbit/geometry.h"
+#include "orbit/horizon_mask.h"
 #include "orbit/moon.h"
 #include "orbit/sky.h"
 
@@ -15,11 +16,13 @@ namespace {
 constexpr double kGridS = 600.0;
 constexpr double kGolden = 0.6180339887498949;
 
-// Elevation above the search's horizon, as a function of seconds from the window's start.
+// Elevation above the search's horizon, as a function of seconds from the window's start: the
+// scalar horizon, or the station's horizon mask where it is higher (issue 57), at the body's azimuth.
 class Height {
  public:
-  Height(Body b, const Observer& o, UtcTime start, double horizon_deg, const EarthOrientation& eo)
-      : body_(b), observer_(o), start_(start), horizon_(horizon_deg), eo_(eo) {}
+  Height(Body b, const Observer& o, UtcTime start, double horizon_deg, const EarthOrientation& eo,
+         const HorizonMask* mask = nullptr)
+      : body_(b), observer_(o), start_(start), horizon_(horizon_deg), eo_(eo), mask_(mask) {}
 
   UtcTime at(double s) const { return add_seconds(start_, s); }
   LookAngles look(double s) const {
@@ -28,7 +31,12 @@ class Height {
     st.r_km = body_ == Body::sun ? sun_position_km(t) : moon_position_teme_km(t);
     return look_angles(teme_to_ecef(st, t, eo_), observer_);
   }
-  double operator()(double s) const { return look(s).el_deg - horizon_; }
+  double operator()(double s) const {
+    const LookAngles l = look(s);
+    return l.el_deg - (mask_ ? std::max(horizon_, mask_->at(l.az_deg)) : horizon_);
+  }
+  // The elevation itself (the culmination is the body's highest point, whatever the mask).
+  double el(double s) const { return look(s).el_deg; }
 
  private:
   Body body_;
@@ -36,6 +44,7 @@ class Height {
   UtcTime start_;
   double horizon_;
   EarthOrientation eo_;
+  const HorizonMask* mask_;
 };
 
 // The crossing of zero in [a, b], where h(a) and h(b) differ in sign, to precision p.
@@ -48,29 +57,31 @@ double bisect(const Height& h, double a, double b, double p) {
   return 0.5 * (a + b);
 }
 
-// The time of the highest point in [a, b] (one maximum there), to precision p.
-double highest(const Height& h, double a, double b, double p) {
+// The time of the highest point of f in [a, b] (one maximum there), to precision p.
+template <class F>
+double highest(const F& f, double a, double b, double p) {
   double c = b - kGolden * (b - a), d = a + kGolden * (b - a);
-  double hc = h(c), hd = h(d);
+  double hc = f(c), hd = f(d);
   while (b - a > p) {
-    if (hc > hd) { b = d; d = c; hd = hc; c = b - kGolden * (b - a); hc = h(c); }
-    else { a = c; c = d; hc = hd; d = a + kGolden * (b - a); hd = h(d); }
+    if (hc > hd) { b = d; d = c; hd = hc; c = b - kGolden * (b - a); hc = f(c); }
+    else { a = c; c = d; hc = hd; d = a + kGolden * (b - a); hd = f(d); }
   }
   return 0.5 * (a + b);
 }
 
 // Fills the culmination of a pass from aos_s to los_s: the best grid sample, refined around it.
 void culminate(const Height& h, double aos_s, double los_s, double p, Pass& pass) {
-  double best = aos_s, best_h = h(aos_s);
+  const auto el = [&h](double s) { return h.el(s); };
+  double best = aos_s, best_h = el(aos_s);
   for (double s = aos_s + kGridS; s < los_s; s += kGridS) {
-    const double v = h(s);
+    const double v = el(s);
     if (v > best_h) { best = s; best_h = v; }
   }
-  if (h(los_s) > best_h) best = los_s;
+  if (el(los_s) > best_h) best = los_s;
   const double lo = std::max(aos_s, best - kGridS), hi = std::min(los_s, best + kGridS);
-  double tca = highest(h, lo, hi, p);
-  if (h(aos_s) >= h(tca)) tca = aos_s;  // still climbing when the window opens or closes
-  if (h(los_s) > h(tca)) tca = los_s;
+  double tca = highest(el, lo, hi, p);
+  if (el(aos_s) >= el(tca)) tca = aos_s;  // still climbing when the window opens or closes
+  if (el(los_s) > el(tca)) tca = los_s;
   const LookAngles top = h.look(tca), rise = h.look(aos_s), set = h.look(los_s);
   pass.aos = h.at(aos_s);
   pass.los = h.at(los_s);
@@ -88,7 +99,7 @@ std::vector<Pass> find_body_passes(Body b, const Observer& o, UtcTime start, Utc
   std::vector<Pass> passes;
   const double span = minutes_between(start, stop) * 60.0;
   if (!(span > 0.0)) return passes;
-  const Height h(b, o, start, options.horizon_deg, eo);
+  const Height h(b, o, start, options.horizon_deg, eo, options.mask.get());
   const double p = options.precision_s > 0.0 ? options.precision_s : 0.1;
   auto emit = [&](double aos_s, double los_s, bool up_at_start, bool up_at_end) {
     Pass pass;

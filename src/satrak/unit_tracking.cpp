@@ -31,6 +31,7 @@ const orbit::Pass* Unit::pass_at(orbit::UtcTime t) {
   orbit::PassOptions po;
   po.horizon_deg = s_.el_threshold_deg;
   po.precision_s = 1.0;
+  po.mask = model_.station.mask();  // above the station's horizon mask where it is higher (issue 57)
   const orbit::Observer where = model_.station.observer();
   const orbit::Sgp4& sgp4 = *sgp4_;
   pass_ = station_.tracker().passes().get(

@@ -81,7 +81,7 @@ SatNow Tracker::compute_body(orbit::Body b, orbit::UtcTime t, bool with_pass) co
   s.name = std::string(orbit::body_name(b));
   s.obs.time = t;
   s.obs.look = orbit::body_look(b, obs, t);
-  s.in_range = s.obs.look.el_deg >= orbit::kAosThresholdDeg;
+  s.in_range = s.obs.look.el_deg >= horizon_at(s.obs.look.az_deg);  // above the horizon mask too (issue 57)
   if (with_pass) {
     // The one pass cache, keyed by an element set that names the body (catalog number = its index)
     // and never changes: the body's rise and set are searched again when the station moves, the
@@ -91,6 +91,7 @@ SatNow Tracker::compute_body(orbit::Body b, orbit::UtcTime t, bool with_pass) co
     key.name = s.name;
     orbit::PassOptions po;
     po.precision_s = 1.0;
+    po.mask = model_.station.mask();  // rise and set above the horizon mask, as a satellite's
     const auto pass = passes_.get(
         key, obs, t, [&] { return orbit::next_body_pass(b, obs, t, kPassSearchDays + 1.0, po); }, "tracker", po);
     if (pass && t <= pass->los) s.pass = pass;
@@ -162,6 +163,7 @@ std::optional<orbit::Pass> Tracker::pass_at(int db_index, orbit::UtcTime t) cons
   orbit::PassOptions po;
   po.precision_s = 1.0;
   if (const auto b = body_target(db_index)) {
+    po.mask = model_.station.mask();
     // A body's pass lasts hours: searched from 18 hours before, the one overlapping t kept.
     const orbit::Observer where = model_.station.observer();
     for (const orbit::Pass& p : orbit::find_body_passes(*b, where, orbit::add_minutes(t, -18 * 60.0),

@@ -1,7 +1,9 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <memory>
 
+#include "orbit/horizon_mask.h"
 #include "orbit/moon.h"
 #include "orbit/sky.h"
 
@@ -239,4 +241,29 @@ TEST_CASE("Body passes: a stretch above the horizon shorter than the 10-minute g
   // A thousandth of a degree above the maximum: nothing.
   grazing.horizon_deg = full[0].max_el_deg + 0.001;
   CHECK(find_body_passes(Body::moon, munich, from, to, grazing).empty());
+}
+
+TEST_CASE("Body passes above a horizon mask: the Sun rises at the eastern step, sets at the western one") {
+  // Munich, 2026-03-20: the Sun rises near azimuth 89 and sets near 271. A stepped mask, 15 deg from
+  // 0 to 180 (a ridge in the east), 10 deg from 180 to 360. AOS and LOS are then where body_look
+  // (against PyEphem above) gives 15 and 10 deg, and the culmination is the Sun's own highest point.
+  const Observer munich{48.1458, 11.625, 520.0};
+  PassOptions po;
+  po.precision_s = 1.0;
+  const auto read = read_horizon_mask("0 15 180 10 360");
+  REQUIRE(read.mask);
+  po.mask = std::make_shared<const HorizonMask>(*read.mask);
+  const auto masked = find_body_passes(Body::sun, munich, from_civil(2026, 3, 20), from_civil(2026, 3, 21), po);
+  const auto plain = find_body_passes(Body::sun, munich, from_civil(2026, 3, 20), from_civil(2026, 3, 21));
+  REQUIRE(masked.size() == 1);
+  REQUIRE(plain.size() == 1);
+  const Pass& m = masked[0];
+  CHECK(body_look(Body::sun, munich, m.aos).el_deg == doctest::Approx(15.0).epsilon(0.001));  // 1 s: 0.003 deg
+  CHECK(body_look(Body::sun, munich, add_seconds(m.aos, -2.0)).el_deg < 15.0);
+  CHECK(body_look(Body::sun, munich, m.los).el_deg == doctest::Approx(10.0).epsilon(0.001));
+  CHECK(body_look(Body::sun, munich, add_seconds(m.los, 2.0)).el_deg < 10.0);
+  CHECK(minutes_between(plain[0].aos, m.aos) > 60.0);  // about 1 h 50 min later than at -2 deg
+  CHECK(minutes_between(m.los, plain[0].los) > 60.0);
+  CHECK(std::abs(minutes_between(plain[0].tca, m.tca)) * 60.0 < 2.0);
+  CHECK(m.max_el_deg == doctest::Approx(plain[0].max_el_deg).epsilon(1e-6));
 }
