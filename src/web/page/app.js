@@ -500,7 +500,8 @@ function zone(utc) {
 zone(zoneUtc);
 $("btn-zone").addEventListener("click", () => zone(!zoneUtc));
 $("station-form").addEventListener("submit", setStation);
-$("st-mask").addEventListener("input", () => { maskEdited = true; });
+// From the first touch of the field the operator's text is kept, not refreshed from the station.
+for (const ev of ["focus", "input"]) $("st-mask").addEventListener(ev, () => { maskEdited = true; });
 $("btn-mask-none").addEventListener("click", clearMask);
 $("btn-night").addEventListener("click", () => night(!document.body.classList.contains("night")));
 stale();
