@@ -6,11 +6,12 @@
    from 190 to 230) and warns that parking now points into it. The status carries the mask and the
    parking problem; the log says it.
 2. `trakbox settings set` answers with the same warning.
-3. The page at phone size (390x844, headless Chromium): the Station card shows the mask; a bad mask
+3. Tracking a satellite that is down, the station parks by itself: the log says it parks into the mask.
+4. The page at phone size (390x844, headless Chromium): the Station card shows the mask; a bad mask
    typed there is refused (HTTP 400, the reader's sentence) and the stored mask stays; pairs one a
    line are taken, the sky's mask redraws, the parking problem follows the new mask's height; no
-   horizontal scrolling (a screenshot of the card kept in the test's temporary folder, its path
-   printed, and copied to TRAKBOX_SCREENSHOT_DIR when set). Parking from the API says the warning, the log too. No mask
+   horizontal scrolling (screenshots of the card and the sky kept in the test's temporary folder,
+   its path printed, and copied to TRAKBOX_SCREENSHOT_DIR when set). Parking from the API says the warning, the log too. No mask
    clears the problem.
 """
 import os
@@ -126,9 +127,12 @@ def page(w, scratch):
         no_horizontal_scroll(d, "the Station card with the mask on a phone")
         shot = os.path.join(scratch, "web-mask-edit.png")
         d.find_element("id", "station-card").screenshot(shot)
-        check(os.path.getsize(shot) > 1000, "a screenshot of the card")
+        sky = os.path.join(scratch, "web-mask-edit-sky.png")
+        d.find_element("id", "sky").screenshot(sky)
+        check(os.path.getsize(shot) > 1000 and os.path.getsize(sky) > 1000, "screenshots of the card and the sky")
         if os.environ.get("TRAKBOX_SCREENSHOT_DIR"):
-            shutil.copy(shot, os.path.join(os.environ["TRAKBOX_SCREENSHOT_DIR"], "web-mask-edit.png"))
+            for f in (shot, sky):
+                shutil.copy(f, os.path.join(os.environ["TRAKBOX_SCREENSHOT_DIR"], os.path.basename(f)))
         # Parking now: said in the answer and in the log.
         code, r = w.post("/api/v1/rotor", {"action": "park"})
         check(code == 200 and "WARNING: " + SLOPE_WARNING in r["note"], f"park says it: {code} {r}")
@@ -163,6 +167,12 @@ def main():
         r = subprocess.run([BIN, "settings", "set", "station.horizon_mask", ROOF, "--state", w.state],
                            capture_output=True, text=True, timeout=20)
         check(r.returncode == 0 and "WARNING: " + ROOF_WARNING in r.stdout, f"settings set warns: {r.stdout} {r.stderr}")
+        # Tracking a satellite that is down (AO-07 at 13:47): the station parks by itself, and says so.
+        check(w.post("/api/v1/rotor", {"control": True})[0] == 200, "rotor control on")
+        check(w.post("/api/v1/track", {"satellite": "AO-07"})[0] == 200, "tracking AO-07")
+        poll("the antenna parks", lambda: w.status()["antenna"]["action"] == "park", 10)
+        poll("the log says it parks into the mask",
+             lambda: "antenna: parks into the horizon mask: " + ROOF_WARNING in log_text(w.state), 10)
         page(w, scratch)
         print(f"menu 4, settings and the page set the mask; parking warned: {ROOF_WARNING}; {SLOPE_WARNING}; "
               f"the card at 390x844: {os.path.join(scratch, 'web-mask-edit.png')}")
