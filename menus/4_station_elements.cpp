@@ -4,7 +4,9 @@
 #include <cstdio>
 
 #include "gps/monitor.h"
+#include "menus/6_configuration.h"
 #include "menus/menus.h"
+#include "rotator/parking_mask.h"
 #include "store/settings.h"
 #include "menus/term/line_terminal.h"
 #include "store/model.h"
@@ -46,8 +48,38 @@ double edit_degrees(term::Terminal& t, std::string_view label, double current, c
 }  // namespace
 
 namespace {
+// The horizon mask (issue 57): the current one shown briefly (what `trakbox status` says of it), a
+// new one typed on one line in any form the mask reader takes, or none. A malformed entry is said
+// with the reader's sentence and asked again; Enter keeps the mask. Returns station.horizon_mask's
+// text ("" for none). The answer may be longer than a screen line: the terminal wraps it.
+std::string edit_mask(term::Terminal& t, const station::StationConfig& st) {
+  t.line("  Horizon mask: AZ EL pairs joined by ';' (0 5; 214 25; 263 5), a step list");
+  t.line("  AZ EL AZ ... AZ (0 0 190 25 230 0 360), or none; Enter keeps it");
+  if (!st.horizon_mask.empty() && st.horizon_mask.size() <= 150)
+    for (const auto& l : cfg::wrap_words("now " + st.horizon_mask, 76, "")) t.line("  " + l);
+  const store::Setting& setting = *store::find_setting("station.horizon_mask");
+  for (;;) {
+    t.write("Horizon mask       : " + station::describe_mask(st) + "  ");
+    t.flush();
+    const std::string answer = text::trimmed(read_line(t, setting.max_len));
+    if (t.last_line_had_non_ascii()) {
+      t.line("  only ASCII characters are taken here; not changed");
+      continue;
+    }
+    if (answer.empty()) return st.horizon_mask;
+    const station::MaskEntry entry = station::read_mask_entry(answer);
+    std::string why = entry.error;
+    if (entry.text && entry.text->size() > setting.max_len)  // more than the state keeps
+      why = "horizon mask: " + std::to_string(entry.text->size()) + " characters, more than the " +
+            std::to_string(setting.max_len) + " kept";
+    else if (entry.text) return *entry.text;
+    for (const auto& l : cfg::wrap_words(why + "; not changed", 76, "")) t.line("  " + l);
+  }
+}
+
 void edit_station_elements(term::Terminal& t, Services& s) {
   station::StationConfig st = s.model.station;  // edited as a copy, committed at the end
+  const station::StationConfig before = s.model.station;
   t.line("====== Update Station Element =======");
   const gps::Monitor* g = s.station.gps();
   if (g || s.model.gps.position_from_gps) {
@@ -95,6 +127,7 @@ void edit_station_elements(term::Terminal& t, Services& s) {
     t.line("  1200, 2400, 4800, 9600 or 19200");
     st.com_baud = edit_int(t, "COM port baud rate", 9600, 1200, 19200);
   }
+  st.horizon_mask = edit_mask(t, st);
   station::GpsSettings gs = s.model.gps;
   if (g) {
     const std::string follow = edit_text(t, "Follow GPS [Y/N]  ", gs.follow ? "Y" : "N",
@@ -132,6 +165,13 @@ void edit_station_elements(term::Terminal& t, Services& s) {
   t.line(station_fmt("Station saved: %s  %.3f %c  %.3f %c  %.0f m  rotor start %s", saved.callsign.c_str(),
              std::abs(saved.lat_deg), saved.lat_deg < 0 ? 'S' : 'N', std::abs(saved.lon_deg),
              saved.lon_deg < 0 ? 'W' : 'E', saved.height_m, station::to_string(saved.rotor_start)));
+  if (saved.horizon_mask != before.horizon_mask) t.line("Horizon mask: " + station::describe_mask(saved));
+  // The parking position is the operator's and stays; below the mask it is said (issue 57).
+  if (const auto w = rotator::parking_mask_warning(s.model.rotator, saved.mask().get())) {
+    t.bell();
+    for (const auto& l : cfg::wrap_words("WARNING: " + *w + " (menu 6-4 sets the parking position)", 78, ""))
+      t.line(l);
+  }
 }
 }  // namespace
 

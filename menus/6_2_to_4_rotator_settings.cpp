@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "menus/6_configuration.h"
+#include "rotator/parking_mask.h"
 #include "rotator/split_travel.h"
 #include "store/model.h"
 
@@ -65,9 +66,16 @@ void menu_6_4_parking_limits(term::Terminal& t, Services& s) {
     c.el_limit_min = cfg::ask_number(t, prompt("Elevation minmum value", c.el_limit_min), c.el_limit_min, 0, el_top);
     c.el_limit_max = cfg::ask_number(t, prompt("Elevation maximum value", c.el_limit_max), c.el_limit_max, 0, el_top);
   }
-  if (cfg::commit_rotator(t, s, c))
+  if (cfg::commit_rotator(t, s, c)) {
     if (const auto w = rotator::split_travel_warning(c, s.model.station.rotor_start))
       for (const auto& line : cfg::wrap_words(*w)) t.line(line);
+    // The parking position is the operator's stow: kept as typed, said when below the horizon
+    // mask (issue 57; menu 4 sets the mask).
+    if (const auto w = rotator::parking_mask_warning(c, s.model.station.mask().get())) {
+      t.bell();
+      for (const auto& line : cfg::wrap_words("WARNING: " + *w + " (menu 4 sets the mask)")) t.line(line);
+    }
+  }
 }
 
 }  // namespace tb::menus

@@ -4,6 +4,7 @@
 // is read whole first and applied only when every line is valid.
 #include "menus/6_configuration.h"
 #include "store/model.h"
+#include "rotator/parking_mask.h"
 #include "rotator/split_travel.h"
 #include "store/station_file.h"
 #include "store/station_file_model.h"
@@ -45,6 +46,11 @@ void menu_6_9_default_parameter(term::Terminal& t, Services& s) {
   t.line("Station file loaded. Verify it with 6-0 (Display all configured value).");
   if (const auto w = rotator::split_travel_warning(s.model.rotator, s.model.station.rotor_start))
     for (const auto& line : cfg::wrap_words(*w)) t.line(line);
+  // The file's parking position under the station's horizon mask (issue 57): kept, said.
+  if (const auto w = rotator::parking_mask_warning(s.model.rotator, s.model.station.mask().get())) {
+    t.bell();
+    for (const auto& line : cfg::wrap_words("WARNING: " + *w + " (menu 4 sets the mask)")) t.line(line);
+  }
 }
 
 }  // namespace tb::menus

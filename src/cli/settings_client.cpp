@@ -124,7 +124,8 @@ int on_state_file(const std::filesystem::path& dir, const std::string& data_dir,
     return kExitFailure;
   }
   const store::Setting* s = store::find_setting(words[1]);
-  const std::string now = words[1] + " = " + store::shown(*s, s->get(owner.model()));
+  std::string now = words[1] + " = " + store::shown(*s, s->get(owner.model()));
+  if (const auto warn = store::setting_warning(words[1], owner.model())) now += "; WARNING: " + *warn;
   if (r.changed) {
     nlohmann::json doc = store::to_json(owner.model());
     if (!satrak.is_null()) doc["satrak"] = satrak;

@@ -21,6 +21,7 @@
 
 #include "gps/gpsd_client.h"
 #include "radio/freqmode.h"
+#include "rotator/parking_mask.h"
 #include "rotator/split_travel.h"
 #include "satrak/unit.h"
 #include "station/clock.h"
@@ -114,6 +115,7 @@ struct StationApp::Impl {
     timer.async_wait([this](const boost::system::error_code& ec) {
       if (ec) return;
       station->tick();
+      note_parking();
       if (refresh) {
         refresh->poll(tracker::ElementsRefresh::wall_now());
         station->set_notice(refresh->status_word(clock.now()));
@@ -195,6 +197,27 @@ struct StationApp::Impl {
   std::string refresh_result;
   std::unique_ptr<gps::Monitor> gps;
   std::unique_ptr<gps::GpsdClient> gps_client;  // after gps: stopped before it goes
+  // A parking position below the horizon mask (issue 57): logged when a change of the mask or the
+  // parking makes it so (and when it is clear again), and each time the antenna goes to park; the
+  // position is the operator's stow, never moved.
+  std::optional<std::string> parking_warned;
+  bool parking = false;
+  std::optional<std::string> parking_into_mask() const {
+    return rotator::parking_mask_warning(model.rotator, model.station.mask().get());
+  }
+  void check_parking_mask() {
+    auto w = parking_into_mask();
+    if (w == parking_warned) return;
+    if (w) log->warn("antenna: {} (kept: menu 6-4 sets the parking position, menu 4 the mask)", *w);
+    else if (parking_warned) log->info("antenna: the parking position is clear of the horizon mask now");
+    parking_warned = std::move(w);
+  }
+  void note_parking() {
+    const bool now = std::string_view(station->aim().action) == "park";
+    if (now && !parking)
+      if (const auto w = parking_into_mask()) log->warn("antenna: parks into the horizon mask: {}", *w);
+    parking = now;
+  }
   void log_notes(const std::vector<gps::Note>& notes) {
     for (const auto& n : notes) {
       if (n.warning) log->warn("{}", n.text);
@@ -282,6 +305,8 @@ void StationApp::build_station(std::unique_ptr<rotator::RotatorDriver> rot, std:
   m.station->set_refresh(m.refresh.get());
   // Every change of the model, by whoever (the owner announces it to the station), is saved.
   m.station->on_settings_changed([this] { save(); });
+  m.owner.listen([&m](const store::Notice&) { m.check_parking_mask(); });
+  m.check_parking_mask();  // said once at the start too
   // Each change of who holds the antenna or the radio is an event (hooks, UDP, the stream; issue 44).
   m.station->on_control([&m](const tracker::Change& c) {
     tracker::Event e;
@@ -522,6 +547,7 @@ void StationApp::Impl::park_before_leaving(StationApp& app) {
   tracker.stop();
   if (!station->rotator().park()) return;
   log->info("service: parking the antenna");
+  if (const auto w = parking_into_mask()) log->warn("antenna: parks into the horizon mask: {}", *w);
   run_until([this] { return station->rotator().status().on_target; }, std::chrono::minutes(2), app);
   log->info("service: antenna {}", station->rotator().status().on_target ? "parked" : "not parked in time");
 }

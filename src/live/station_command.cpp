@@ -46,7 +46,8 @@ std::string settings_command(StationApp& app, const std::vector<std::string>& w)
   }
   if (!r.ok()) return "refused: " + *r.refusal;
   const store::Setting* s = store::find_setting(w[2]);
-  const std::string now = w[2] + " = " + store::shown(*s, s->get(owner.model()));
+  std::string now = w[2] + " = " + store::shown(*s, s->get(owner.model()));
+  if (const auto warn = store::setting_warning(w[2], owner.model())) now += "; WARNING: " + *warn;
   if (!r.changed) return "ok: " + now + " (unchanged)";
   if (const auto& failed = app.station().save_failure()) return "ok: " + now + " (NOT SAVED: " + *failed + ")";
   return "ok: " + now;

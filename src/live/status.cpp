@@ -14,6 +14,7 @@
 #include "gps/monitor.h"
 #include "orbit/element_age.h"
 #include "radio/two_radios.h"
+#include "rotator/parking_mask.h"
 #include "station/clock.h"
 #include "station/station.h"
 #include "store/model.h"
@@ -85,6 +86,9 @@ nlohmann::json antenna_json(StationApp& app) {
   a["parking_enabled"] = st.rotator().config().parking_enabled;
   a["az_travel_deg"] = st.rotator().config().az_travel_deg;
   const rotator::RotatorConfig& rc = app.model().rotator;  // the sky calibration (trakbox calibrate)
+  // A parking position below the horizon mask (issue 57): said, never moved (a problem below).
+  const auto into_mask = rotator::parking_mask_warning(rc, app.model().station.mask().get());
+  a["parking_into_mask"] = into_mask ? nlohmann::json(*into_mask) : nlohmann::json(nullptr);
   a["sky_calibration"] = {{"az_offset_deg", rc.az_offset_deg},
                           {"el_offset_deg", rc.el_offset_deg},
                           {"source", rc.sky.source},
@@ -329,7 +333,8 @@ nlohmann::json station_status(StationApp& app, const StatusContext& cx) {
     for (const auto& p : mask->points()) points.push_back({p.az_deg, p.el_deg});
     j["station"]["horizon_mask"] = {{"kind", mask->kind() == orbit::HorizonMask::Kind::stepped ? "stepped" : "interpolated"},
                                     {"points", points},
-                                    {"describe", mask->describe()}};
+                                    {"describe", mask->describe()},
+                                    {"text", mask->text()}};
   }
   tracker::Tracker& tr = app.tracker();
   nlohmann::json tracking{{"mode", mode_name(tr.mode())}, {"priority", tr.priority()}};
@@ -396,6 +401,7 @@ std::vector<std::string> status_problems(const nlohmann::json& s) {
   std::vector<std::string> out;
   const auto& a = s.at("antenna");
   if (a.at("link") != "ok") out.push_back("rotator link " + a.at("link").get<std::string>() + ": " + a.value("link_message", ""));
+  if (const auto w = a.value("parking_into_mask", nlohmann::json()); w.is_string()) out.push_back(w.get<std::string>());
   for (const auto& r : s.at("radios"))
     if (r.value("fault", false)) out.push_back("radio fault: " + r.value("message", ""));
   if (!s.at("save").at("failure").is_null()) out.push_back("state not saved: " + s["save"]["failure"].get<std::string>());

@@ -65,4 +65,17 @@ std::string maidenhead_locator(double lat_deg, double lon_deg) {
   return l;
 }
 
+MaskEntry read_mask_entry(std::string_view typed) {
+  const std::string_view t = text::trim(typed, text::kWhitespace);
+  if (t.empty() || text::iequals(t, "none")) return {std::string(), {}};
+  auto r = orbit::read_horizon_mask(t, "horizon mask");
+  if (!r.mask) return {std::nullopt, r.error};
+  return {r.mask->text(), {}};
+}
+
+std::string describe_mask(const StationConfig& st) {
+  const auto m = st.mask();
+  return m ? m->describe() : std::string("none");
+}
+
 }  // namespace tb::station

@@ -55,4 +55,17 @@ std::optional<orbit::Observer> maidenhead_centre(std::string_view locator);
 // case, subsquare lower case, as operators write it.
 std::string maidenhead_locator(double lat_deg, double lon_deg);
 
+// A horizon mask as an operator types it (menu 4, the page's Station card; issue 57): any form
+// orbit::read_horizon_mask takes ("AZ EL; AZ EL ..." on one line, pairs per line, the step list
+// AZ EL ... AZ), or "none" (any case) or nothing for no mask. `text` is what station.horizon_mask
+// keeps (HorizonMask::text(), "" for none); otherwise `error` is the reader's sentence ("horizon
+// mask pair 3: azimuth 400 is outside 0..360").
+struct MaskEntry {
+  std::optional<std::string> text;
+  std::string error;
+};
+MaskEntry read_mask_entry(std::string_view typed);
+// "none", or the mask's describe() ("interpolated, 6 points, 0.0..25.0 deg").
+std::string describe_mask(const StationConfig& st);
+
 }  // namespace tb::station

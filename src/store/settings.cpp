@@ -15,6 +15,7 @@
 #include "store/model.h"
 #include "store/refresh.h"
 #include "rotator/config.h"
+#include "rotator/parking_mask.h"
 #include "util/exact_number.h"
 #include "util/safe_text.h"
 #include "util/text.h"
@@ -366,6 +367,12 @@ ParsedSetting parse_setting(const Setting& s, std::string_view typed) {
   }
   r.value = std::move(v);
   return r;
+}
+
+std::optional<std::string> setting_warning(std::string_view key, const Model& m) {
+  if (key != "station.horizon_mask" && key != "rotator.parking_enabled" && key != "rotator.el_flip_allowed")
+    return std::nullopt;
+  return rotator::parking_mask_warning(m.rotator, m.station.mask().get());
 }
 
 json read_setting(const json& object, std::string_view key) {

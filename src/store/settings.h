@@ -55,6 +55,11 @@ struct ParsedSetting {
 };
 ParsedSetting parse_setting(const Setting& s, std::string_view typed);
 
+// What the operator is told after setting `key` in `m` (`trakbox settings set`), nothing when all
+// is well: a parking position below the horizon mask after station.horizon_mask or the parking
+// switch (issue 57: the parking position is the operator's, never moved; rotator/parking_mask.h).
+std::optional<std::string> setting_warning(std::string_view key, const Model& m);
+
 // The value as `trakbox settings` shows it ("9000 m", "on", "north", "\"\"").
 std::string shown(const Setting& s, const nlohmann::json& value);
 // "-500 .. 9000 m", "north, south", "on or off", "text, at most 10 characters".

@@ -5,7 +5,9 @@
 #include <cstdio>
 
 #include <fmt/format.h>
+#include <spdlog/spdlog.h>
 
+#include "rotator/parking_mask.h"
 #include "store/model.h"
 #include "tracker/elements_refresh.h"
 #include "tracker/station_loop.h"
@@ -188,6 +190,10 @@ OpResult StationOps::stop() {
   return r;
 }
 
+std::optional<std::string> StationOps::parking_into_mask() const {
+  return rotator::parking_mask_warning(model_.rotator, model_.station.mask().get());
+}
+
 OpResult StationOps::park() {
   if (!station_.rotator().config().parking_enabled)
     return OpResult::refuse("parking is off (menu 6-4 sets the parking position)");
@@ -197,6 +203,10 @@ OpResult StationOps::park() {
   station_.rotator().park();
   station_.antenna_changed();
   r.note = "parking";
+  if (const auto w = parking_into_mask()) {  // said, not moved: the parking position is the operator's
+    spdlog::warn("antenna: parks into the horizon mask: {}", *w);
+    r.note += "; WARNING: " + *w;
+  }
   return r;
 }
 
@@ -250,6 +260,7 @@ OpResult StationOps::standby(bool on) {
     if (station_.rotator().config().parking_enabled) {
       rotor_control(true);
       station_.rotator().park();
+      if (const auto w = parking_into_mask()) spdlog::warn("antenna: parks into the horizon mask: {}", *w);
     } else {
       station_.rotator().stop();
     }

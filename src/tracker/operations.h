@@ -120,6 +120,12 @@ class StationOps {
   OpResult set_station(double lat_deg, double lon_deg, double height_m);
   // The station's callsign (menu 4's; the page's Station card), upper case, by the settings table.
   OpResult set_callsign(const std::string& callsign);
+  // The station's horizon mask (menu 4's; the page's Station card; issue 57): `text` as
+  // station.horizon_mask keeps it ("" for none; station::read_mask_entry reads what an operator
+  // types), stored through the model's owner. The note says what the mask is now and, when the
+  // parking position lies below it, that too (rotator::parking_mask_warning): the parking position
+  // is the operator's, never moved.
+  OpResult set_horizon_mask(const std::string& text);
   // The element refresh from the stored sources, now (menu 3-5 R, host RF).
   OpResult refresh_elements(std::int64_t now_unix);
   // "This is the Sun" / "this is the Moon" (`trakbox calibrate sun|moon`, the page; issue 58): the
@@ -138,6 +144,8 @@ class StationOps {
   bool outside() const { return is_outside(who_.kind); }
   // Who asked, as the model's owner records it.
   store::Origin origin() const;
+  // The parking position below the horizon mask, said (rotator::parking_mask_warning).
+  std::optional<std::string> parking_into_mask() const;
 
   StationLoop& station_;
   const store::Model& model_;

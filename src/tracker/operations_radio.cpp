@@ -7,6 +7,8 @@
 #include <fmt/format.h>
 
 #include "radio/doppler.h"
+#include "rotator/parking_mask.h"
+#include "station/station.h"
 #include "store/model.h"
 #include "store/owner.h"
 #include "tracker/operations.h"
@@ -145,6 +147,17 @@ OpResult StationOps::set_callsign(const std::string& callsign) {
   OpResult r;
   r.model_changed = done.changed;
   r.note = "callsign " + station_.model().station.callsign;
+  return r;
+}
+
+OpResult StationOps::set_horizon_mask(const std::string& text) {
+  const store::EditResult done = station_.owner().set("station.horizon_mask", text, origin());
+  if (!done.ok()) return OpResult::refuse(*done.refusal);
+  OpResult r;
+  r.model_changed = done.changed;
+  const store::Model& m = station_.model();
+  r.note = "horizon mask " + station::describe_mask(m.station);
+  if (const auto w = rotator::parking_mask_warning(m.rotator, m.station.mask().get())) r.note += "; WARNING: " + *w;
   return r;
 }
 

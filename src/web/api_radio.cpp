@@ -32,6 +32,41 @@ std::optional<long long> whole_hz(const json& v) {
 
 }  // namespace
 
+namespace {
+
+// {"horizon_mask":TEXT} (issue 57), alone or with the rest of a station body: the mask is read first
+// (a malformed one is the 400 with the reader's sentence), then the rest is done, then the mask
+// stored; a refusal of either leaves the mask as it was.
+std::optional<std::string> with_mask(tracker::StationOps& ops, double stored_height_m, const json& b,
+                                     tracker::OpResult& done) {
+  const json& v = b["horizon_mask"];
+  if (!v.is_string())
+    return "station: \"horizon_mask\" must be text: AZ EL pairs (one a line, or joined by ';'), a step list "
+           "AZ EL ... AZ, or \"none\"; not " + shown(v);
+  const station::MaskEntry entry = station::read_mask_entry(v.get<std::string>());
+  if (!entry.text) return "station: " + entry.error;
+  if (auto why = store::refusal(*store::find_setting("station.horizon_mask"), json(*entry.text))) {
+    done = tracker::OpResult::refuse(*why);  // more than the state keeps
+    return std::nullopt;
+  }
+  json rest = b;
+  rest.erase("horizon_mask");
+  tracker::OpResult before;
+  if (!rest.empty())
+    if (auto bad = station_request(ops, stored_height_m, rest, before); bad || !before.ok()) {
+      done = before;
+      return bad;
+    }
+  done = ops.set_horizon_mask(*entry.text);
+  if (done.ok() && !rest.empty()) {
+    done.note = before.note + ", " + done.note;
+    done.model_changed = done.model_changed || before.model_changed;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 std::optional<std::string> radio_request(tracker::StationOps& ops, const json& b, tracker::OpResult& done) {
   const char* expected =
       "radio: expected {\"doppler\":true|false}, {\"spot_hz\":HZ}, {\"rx_offset_hz\":HZ,\"tx_offset_hz\":HZ} or "
@@ -73,7 +108,8 @@ std::optional<std::string> radio_request(tracker::StationOps& ops, const json& b
 std::optional<std::string> station_request(tracker::StationOps& ops, double stored_height_m, const json& b,
                                            tracker::OpResult& done) {
   const char* expected = "station: expected {\"locator\":\"JN58td\"} or {\"lat_deg\":N,\"lon_deg\":E,\"height_m\":M}, "
-                         "and or else {\"callsign\":\"W1AW\"}";
+                         "and or else {\"callsign\":\"W1AW\"}, {\"horizon_mask\":\"AZ EL; AZ EL ...\"|\"none\"}";
+  if (b.contains("horizon_mask")) return with_mask(ops, stored_height_m, b, done);
   if (b.contains("callsign") && !b["callsign"].is_string())
     return "station: \"callsign\" must be text such as \"W1AW\", not " + shown(b["callsign"]);
   const bool places = b.contains("locator") || b.contains("lat_deg") || b.contains("lon_deg") || b.contains("height_m");

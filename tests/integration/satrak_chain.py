@@ -28,7 +28,7 @@ CLOCK = START.strftime("%Y-%m-%dT%H:%M:%SZ")
 # Menu 4: Enter keeps callsign, latitude, longitude and height; rotor start North; Enter keeps the
 # baud rate. The pass runs 210 -> 180 -> 48 deg: through South, clear of a North-start rotor's stop,
 # so neither trakbox has to swing round or flip over the top.
-NORTH_START = b"4\r\r\r\r\rN\r\r"
+NORTH_START = b"4\r\r\r\r\rN\r\r\r"
 
 
 def start_acu(state, port):

@@ -36,7 +36,7 @@ def main():
     state = tempfile.mkdtemp(prefix="trakbox-state-")
     try:
         # Fresh start, set a callsign; input ends -> trakbox saves and exits 0.
-        code, out, _ = run(state, "4\rK7ABC\r\r\r\r\r\r")
+        code, out, _ = run(state, "4\rK7ABC\r\r\r\r\r\r\r")
         check(code == 0, f"exit status {code}")
         check(LOST not in out, "a fresh start is not a RAM loss")
         doc = json.load(open(state_path(state)))

@@ -77,9 +77,9 @@ def main():
         keys("4", "Enter")
         wait_for(r"Callsign\s+: NOCALL")
         keys("VK2XYZ", "Enter")
-        for _ in range(5):
+        for _ in range(6):
             keys("Enter")
-        wait_for(r"COM port baud rate : 9600\s*\nStation saved: VK2XYZ .*\n----- MAIN MENU -----")
+        wait_for(r"Horizon mask\s+: none\s*\nStation saved: VK2XYZ .*\n----- MAIN MENU -----")
 
         # Ctrl-C leaves trakbox; the state is saved.
         keys("C-c")

@@ -39,6 +39,8 @@ def main():
         t.send("S\r")
         t.expect(r"COM port baud rate\s*: 9600")
         t.send("\r")
+        t.expect(r"Horizon mask\s*: none")
+        t.send("\r")
         t.expect(r"Select \[1-8,S,M\]:")
 
         # A bad value is refused with the reason and asked again; Enter keeps the rest.
@@ -49,7 +51,7 @@ def main():
         t.send("95\r")
         t.expect(r"95 is out of range: expected -90 to 90")
         t.expect(r"Latitude.*: \+32\.259")
-        t.send("\r\r\r\r\r")
+        t.send("\r\r\r\r\r\r")
         t.expect(r"Select \[1-8,S,M\]:")
 
         # Menu 1: the list with the '*' marker, Enter takes it, the live display prints a line per
@@ -93,7 +95,7 @@ def main():
             t.expect(r"Select \[1-8,S,M\]:", timeout=15)
             t.send("4\r")
             t.expect(r"Callsign\s+: WA7GXD")
-            t.send("\r\r\r\r\r\r")
+            t.send("\r\r\r\r\r\r\r")
             t.expect(r"Select \[1-8,S,M\]:")
             check(tb2.stop() == 0, "second run stops cleanly")
         finally:

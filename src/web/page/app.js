@@ -203,10 +203,19 @@ function drawStation(st) {
   setText("station-setup", setup.join(" · "));
   $("station-setup").className = setup.length ? "note bad" : "note";
   if (setup.length && !stationOpened) { $("station-card").open = true; stationOpened = true; }
+  // The horizon mask (issue 57): what it is, and its points to edit (one pair a line), refreshed
+  // while the operator has not started typing a new one.
+  const m = s.horizon_mask;
+  setText("st-mask-now", m ? m.describe : "none");
+  const shown = m ? (m.kind === "stepped" ? m.text : m.text.split("; ").join("\n")) : "";
+  if (!maskEdited && $("st-mask").value !== shown) $("st-mask").value = shown;
 }
-function setStation(ev) {
+let maskEdited = false;
+async function setStation(ev) {
   ev.preventDefault();
   const body = {};
+  // A mask typed or pasted: pairs one a line or joined by ';', or a step list; emptied: none.
+  if (maskEdited) body.horizon_mask = $("st-mask").value.trim() || "none";
   const call = $("st-call").value.trim();
   if (call) body.callsign = call;
   const place = $("st-place").value.trim();
@@ -214,7 +223,10 @@ function setStation(ev) {
   if (m) { body.lat_deg = Number(m[1]); body.lon_deg = Number(m[2]); } else if (place) body.locator = place;
   const h = $("st-height").value.trim();
   if (h) body.height_m = Number(h);
-  post("/api/v1/station", body);
+  if (await post("/api/v1/station", body, "station-reply")) maskEdited = false;
+}
+async function clearMask() {
+  if (await post("/api/v1/station", { horizon_mask: "none" }, "station-reply")) maskEdited = false;
 }
 
 // A tap that would take the antenna and radio off a pass in progress asks first.
@@ -401,8 +413,10 @@ async function post(path, body, where = "reply") {
     const j = await res.json();
     if (res.status === 401) { location.href = "/login"; return; }
     said.textContent = res.ok ? j.note : j.error;
+    return res.ok;
   } catch (e) {
     said.textContent = "the station does not answer";
+    return false;
   }
 }
 function tune(body) { return post("/api/v1/radio", body, "tune-reply"); }
@@ -487,6 +501,9 @@ function zone(utc) {
 zone(zoneUtc);
 $("btn-zone").addEventListener("click", () => zone(!zoneUtc));
 $("station-form").addEventListener("submit", setStation);
+// From the first touch of the field the operator's text is kept, not refreshed from the station.
+for (const ev of ["focus", "input"]) $("st-mask").addEventListener(ev, () => { maskEdited = true; });
+$("btn-mask-none").addEventListener("click", clearMask);
 $("btn-night").addEventListener("click", () => night(!document.body.classList.contains("night")));
 stale();
 drawGrid();

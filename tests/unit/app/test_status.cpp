@@ -100,3 +100,17 @@ TEST_CASE("status: the logger's line, and its failing uploads a problem (issue 4
   REQUIRE(problems.size() == 1);
   CHECK(problems[0] == "logger: QSO 3 (G4XYZ) not uploaded: HTTP 500: an empty reply; next try in 60 s");
 }
+
+TEST_CASE("status: a parking position in the horizon mask is a problem, said in the text (issue 57)") {
+  json d = document();
+  d["antenna"]["parking_into_mask"] = nullptr;
+  CHECK(app::status_problems(d).empty());
+  const std::string w = "parking at azimuth 230.0, elevation 0.0 points into the horizon mask (25.0 there)";
+  d["antenna"]["parking_into_mask"] = w;
+  const auto problems = app::status_problems(d);
+  REQUIRE(problems.size() == 1);
+  CHECK(problems[0] == w);
+  d["problems"] = problems;
+  d["healthy"] = false;
+  CHECK(app::format_status(d).find("  PROBLEM   " + w) != std::string::npos);
+}

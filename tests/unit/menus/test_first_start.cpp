@@ -47,7 +47,7 @@ TEST_CASE("serial line: Q detaches and the menu comes back on a key") {
 }
 
 TEST_CASE("menu 4: hemispheres after the number, which sign is which, and the save confirmed (issue 30 item 10)") {
-  testing::MenuFixture f("F4ABC\r48.85N\r2.35 w\r35\r\r\r");
+  testing::MenuFixture f("F4ABC\r48.85N\r2.35 w\r35\r\r\r\r");
   menus::menu_4_station_elements(f.term, *f.services);
   CHECK(f.model.station.lat_deg == 48.85);
   CHECK(f.model.station.lon_deg == -2.35);
@@ -58,7 +58,7 @@ TEST_CASE("menu 4: hemispheres after the number, which sign is which, and the sa
 }
 
 TEST_CASE("menu 4: a latitude that is no number of degrees is asked again, naming the letters") {
-  testing::MenuFixture f("\r-48.85N\r48.85S\r\r\r\r\r");
+  testing::MenuFixture f("\r-48.85N\r48.85S\r\r\r\r\r\r");
   menus::menu_4_station_elements(f.term, *f.services);
   CHECK(f.model.station.lat_deg == -48.85);
   CHECK(f.term.output().find("'-48.85N' is not a number of degrees (a sign, or N or S after it)") != std::string::npos);

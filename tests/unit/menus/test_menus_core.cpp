@@ -11,7 +11,7 @@
 using namespace tb;
 
 TEST_CASE("Menu 4 edits the station; Enter keeps each value") {
-  testing::MenuFixture f("WA7GXD\r32.259\r-110.778\r842\rS\r\r");
+  testing::MenuFixture f("WA7GXD\r32.259\r-110.778\r842\rS\r\r\r");
   menus::menu_4_station_elements(f.term, *f.services);
   CHECK(f.model.station.callsign == "WA7GXD");
   CHECK(f.model.station.lat_deg == 32.259);
@@ -25,7 +25,7 @@ TEST_CASE("Menu 4 edits the station; Enter keeps each value") {
 }
 
 TEST_CASE("Menu 4: a callsign typed with a non-ASCII letter is refused with a message, not stored mangled (issue 39)") {
-  testing::MenuFixture f("P\xc3\xa0ris\rF4ABC\r\r\r\r\r\r");
+  testing::MenuFixture f("P\xc3\xa0ris\rF4ABC\r\r\r\r\r\r\r");
   menus::menu_4_station_elements(f.term, *f.services);
   CHECK(f.term.output().find("only ASCII characters are taken here") != std::string::npos);
   CHECK(f.term.output().find("'Pris' is what is left; not changed") != std::string::npos);
@@ -46,7 +46,7 @@ TEST_CASE("Esc at the satellite list leaves it with nothing chosen, not typed in
 TEST_CASE("Menu 4 takes a Maidenhead locator at the latitude, as passes --station does (issue 39)") {
   // JN18du: field J,N (0 E, 40 N), square 1,8 (2 E, 48 N), subsquare d,u (3 and 20 of 24): centre
   // 2 + 3.5/12 = 2.291667 E, 48 + 20.5/24 = 48.854167 N.
-  testing::MenuFixture f("\rJN18du\r\r\r\r\r");
+  testing::MenuFixture f("\rJN18du\r\r\r\r\r\r");
   menus::menu_4_station_elements(f.term, *f.services);
   CHECK(f.model.station.lat_deg == doctest::Approx(48.854167).epsilon(1e-6));
   CHECK(f.model.station.lon_deg == doctest::Approx(2.291667).epsilon(1e-6));
@@ -56,7 +56,7 @@ TEST_CASE("Menu 4 takes a Maidenhead locator at the latitude, as passes --statio
 }
 
 TEST_CASE("Menu 4: a new rotor start takes effect at once on the antenna, not at the next start") {
-  testing::MenuFixture f("\r\r\r\rN\r\r");
+  testing::MenuFixture f("\r\r\r\rN\r\r\r");
   REQUIRE(f.model.station.rotor_start == station::RotorStart::south);
   // South start: travel 0 is the South stop; North start: travel 0 is North.
   CHECK(f.station->rotator().model().compass_from_travel(0.0) == doctest::Approx(180.0));
@@ -270,7 +270,7 @@ struct WithReceiver {
 }  // namespace
 
 TEST_CASE("Menu 4 with a GPS receiver: where the position came from, following it, its threshold") {
-  WithReceiver w("\r\r\r\r\r\rY\r250\r");
+  WithReceiver w("\r\r\r\r\r\r\rY\r250\r");
   menus::menu_4_station_elements(w.f.term, *w.f.services);
   const std::string& out = w.f.term.output();
   CHECK(out.find("Position from      typed in") != std::string::npos);
@@ -287,14 +287,14 @@ TEST_CASE("Menu 4 with a GPS receiver: where the position came from, following i
   CHECK(m.gps.position_time == orbit::add_seconds(kGpsT0, 2));
   CHECK(w.f.saves == 2);
   // Menu 4 again: the origin shown.
-  WithReceiver again("\r\r\r\r\r\r\r\r");
+  WithReceiver again("\r\r\r\r\r\r\r\r\r");
   again.f.model = m;
   menus::menu_4_station_elements(again.f.term, *again.f.services);
   CHECK(again.f.term.output().find("Position from      GPS fix of 2017-10-19T06:00:02Z") != std::string::npos);
 }
 
 TEST_CASE("Menu 4: a 2D fix keeps the stored height") {
-  WithReceiver w("\r\r\r\r\r\rY\r\r", 2);
+  WithReceiver w("\r\r\r\r\r\r\rY\r\r", 2);
   menus::menu_4_station_elements(w.f.term, *w.f.services);
   CHECK(w.f.model.station.lat_deg == 41.01);
   CHECK(w.f.model.station.height_m == 50.0);  // the factory height

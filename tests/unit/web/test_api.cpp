@@ -396,3 +396,42 @@ TEST_CASE("web: each endpoint its methods: 405 with that endpoint's Allow, 404 f
   CHECK(web::allowed_methods("/api/v1/log") == std::optional<std::string>("GET, HEAD, POST"));
   CHECK(!web::allowed_methods("/api/v1/logs"));
 }
+
+TEST_CASE("web: the Station card's horizon mask: read as the menus read it, a bad one a 400 changing nothing (issue 57)") {
+  Web w;
+  web::Response r = w.post("/api/v1/station", R"({"horizon_mask":"0 0\n190 25\n230 0"})");  // pairs one a line
+  CHECK(r.status == 200);
+  CHECK(w.model.station.horizon_mask == "0 0; 190 25; 230 0");
+  CHECK(json::parse(r.body)["note"] == "horizon mask interpolated, 3 points, 0.0..25.0 deg");
+  // Malformed: the reader's sentence, nothing changed (the place neither, asked with it).
+  r = w.post("/api/v1/station", R"({"horizon_mask":"0 0; 190 25; 400 0","locator":"JN58td"})");
+  CHECK(r.status == 400);
+  CHECK(Web::error_of(r) == "station: horizon mask pair 3: azimuth 400 is outside 0..360");
+  CHECK(w.model.station.horizon_mask == "0 0; 190 25; 230 0");
+  CHECK(w.model.station.lat_deg == doctest::Approx(27.391));
+  CHECK(w.post("/api/v1/station", R"({"horizon_mask":5})").status == 400);
+  // With the place: both kept; the step list as typed on one line.
+  r = w.post("/api/v1/station", R"({"horizon_mask":"0 0 190 25 230 0 360","locator":"JN58td"})");
+  CHECK(r.status == 200);
+  CHECK(w.model.station.horizon_mask == "0 0 190 25 230 0 360");
+  CHECK(w.model.station.lat_deg == doctest::Approx(48.1458).epsilon(1e-3));
+  // Parking into the roof: stored as asked, said loudly in the answer (the position is the operator's).
+  REQUIRE(w.station->owner()
+              .edit(store::bit(store::Area::rotator), "test", store::Origin::menus,
+                    [](store::Model& m) {
+                      m.rotator.parking_enabled = true;
+                      m.rotator.parking = {210.0, 0.0};
+                    })
+              .ok());
+  r = w.post("/api/v1/station", R"({"horizon_mask":"0 0; 190 25; 230 0"})");
+  CHECK(r.status == 200);
+  CHECK(json::parse(r.body)["note"] ==
+        "horizon mask interpolated, 3 points, 0.0..25.0 deg; WARNING: parking at azimuth 210.0, elevation 0.0 points "
+        "into the horizon mask (12.5 there)");
+  CHECK(w.model.rotator.parking.az == 210.0);
+  r = w.post("/api/v1/rotor", R"({"action":"park"})");
+  CHECK(json::parse(r.body)["note"].get<std::string>().find("WARNING: parking at azimuth 210.0") != std::string::npos);
+  // none clears it.
+  CHECK(w.post("/api/v1/station", R"({"horizon_mask":"none"})").status == 200);
+  CHECK(w.model.station.horizon_mask.empty());
+}
