@@ -412,7 +412,8 @@ StationLoop::Aim StationLoop::aim() const {
     case Decision::Antenna::point: return {rotator::AzEl{d.az_deg, d.el_deg}, "point"};
     case Decision::Antenna::preposition: return {rotator::AzEl{d.az_deg, d.el_deg}, "preposition"};
     case Decision::Antenna::park:
-      if (rotator_->config().parking_enabled) return {rotator::AzEl{d.az_deg, d.el_deg}, "park"};
+      // The parking position itself (the decision's az/el are not where it parks).
+      if (rotator_->config().parking_enabled) return {rotator_->config().parking, "park"};
       return {here, "hold"};   // parking off: Controller::park moves nothing
     default: return {here, "hold"};
   }

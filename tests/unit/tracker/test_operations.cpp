@@ -231,3 +231,18 @@ TEST_CASE("StationOps: Stop stops the rotator only; the radio keeps its Doppler 
   f.run(60.0);
   CHECK(f.radio_sim->frequency(radio::Link::downlink) == held);
 }
+
+TEST_CASE("Tracking parks between passes: the aim is the parking position, not the decision's 0/0") {
+  Ops f;
+  f.model.rotator.parking_enabled = true;
+  f.model.rotator.parking = rotator::AzEl{200.0, 10.0};
+  f.station->reconfigure();
+  REQUIRE(f.ops().track("ISS").ok());
+  f.run(2.0);
+  REQUIRE(f.tracker.last_decision().antenna == tracker::Decision::Antenna::park);  // noon: the ISS is not up
+  const auto aim = f.station->aim();
+  CHECK(std::string(aim.action) == "park");
+  REQUIRE(aim.target);
+  CHECK(aim.target->az == doctest::Approx(200.0));
+  CHECK(aim.target->el == doctest::Approx(10.0));
+}
