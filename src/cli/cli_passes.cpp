@@ -85,7 +85,8 @@ double there_max_elevation(const orbit::Sgp4& sat, const orbit::Observer& there,
 // or CSV, which stay whole documents) so that no file is made unannounced. The antenna's plan is the
 // stored rotator's (the factory one when no state is readable).
 int plot_passes(const std::string& file, const std::vector<SatPass>& passes, const std::vector<Elements>& sats,
-                const orbit::Observer& station, StoredStation& stored, std::FILE* said) {
+                const orbit::Observer& station, const std::shared_ptr<const orbit::HorizonMask>& mask,
+                StoredStation& stored, std::FILE* said) {
   const store::Model* m = stored.model();
   const store::Model factory = store::factory_defaults();
   if (!m) m = &factory;
@@ -101,6 +102,7 @@ int plot_passes(const std::string& file, const std::vector<SatPass>& passes, con
     pic.pass = s.pass;
     pic.track = sample_pass(orbit::Sgp4(sats[s.set]), station, s.pass);
     pic.plan = rotator::plan_pass(pic.track, geometry, std::nullopt);
+    pic.mask = mask;
     const std::string name = passes.size() == 1 || dot == std::string::npos
                                  ? file
                                  : file.substr(0, dot) + "-" + std::to_string(i + 1) + file.substr(dot);
@@ -315,7 +317,7 @@ int run_passes(std::vector<std::string> args) {
   std::fflush(stdout);
   if (ics && write_ics(*ics, passes, *station, with, format == OutputFormat::table ? stdout : stderr) != kExitOk)
     return kExitFailure;
-  if (plot && plot_passes(*plot, passes, sats, *station, run.stored, format == OutputFormat::table ? stdout : stderr) !=
+  if (plot && plot_passes(*plot, passes, sats, *station, options.mask, run.stored, format == OutputFormat::table ? stdout : stderr) !=
                   kExitOk)
     return kExitFailure;
   return status;

@@ -149,6 +149,32 @@ void draw_unreachable(cairo_t* cr, const rotator::PassPlan& plan) {
   }
 }
 
+// The horizon mask: from the horizon up to the mask's elevation at each azimuth (a degree apart, and
+// either side of each of its points, so that a step stands upright).
+void draw_mask(cairo_t* cr, const orbit::HorizonMask& m) {
+  std::vector<double> az;
+  for (int a = 0; a <= 360; ++a) az.push_back(a);
+  for (const auto& pt : m.points())
+    for (const double d : {-1e-6, 1e-6}) az.push_back(std::clamp(pt.az_deg + d, 0.0, 360.0));
+  std::sort(az.begin(), az.end());
+  cairo_new_path(cr);
+  for (std::size_t i = 0; i < az.size(); ++i) {
+    double x, y;
+    plot_position(az[i], std::max(0.0, m.at(az[i])), x, y);
+    if (i == 0) cairo_move_to(cr, x, y);
+    else cairo_line_to(cr, x, y);
+  }
+  cairo_close_path(cr);
+  const double c = kPlotCentre;
+  cairo_new_sub_path(cr);
+  cairo_arc_negative(cr, c, c, kPlotRadius, 0.0, -2 * std::numbers::pi);
+  cairo_close_path(cr);
+  cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
+  cairo_set_source_rgba(cr, 0.55, 0.35, 0.15, 0.35);
+  cairo_fill(cr);
+  cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
+}
+
 // Elevation rings every 30 degrees, the horizon heavier; compass lines and letters.
 void draw_grid(cairo_t* cr, std::vector<LabelBox>& placed) {
   const double c = kPlotCentre, R = kPlotRadius;
@@ -315,6 +341,7 @@ void draw_words(cairo_t* cr, const PassPicture& p, std::vector<LabelBox>& placed
     if (p.plan->flip) legend += " (over the top)";
     if (!p.plan->coverage.full()) legend += "   red: antenna cannot follow";
   }
+  if (p.mask) legend += "   brown: horizon mask";
   text_at(cr, 10, kPlotSize - 10, legend, 12, false, &placed);
 }
 
@@ -323,6 +350,7 @@ void draw(cairo_t* cr, const PassPicture& p) {
   cairo_paint(cr);
   cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
   if (p.plan) draw_unreachable(cr, *p.plan);
+  if (p.mask) draw_mask(cr, *p.mask);
   // Every word's box: the minute labels skip a place taken, AOS/TCA/LOS move clear (issue 47:
   // TCA's time was written over a minute label and the compass letters on a low pass).
   std::vector<LabelBox> placed;
@@ -354,9 +382,11 @@ void draw(cairo_t* cr, const PassPicture& p) {
   if (p.plan) draw_lost(cr, p);
   // AOS, TCA, LOS: a dot and the time, placed before the minute labels, which give way.
   const orbit::Pass& ps = p.pass;
-  mark(cr, ps.aos_az_deg, -2.0, "AOS " + hms(ps.aos), placed);
+  // AOS and LOS where they are: on the mask where it is higher than the -2 deg rule.
+  const auto floor_at = [&p](double az) { return p.mask ? std::max(-2.0, p.mask->at(az)) : -2.0; };
+  mark(cr, ps.aos_az_deg, floor_at(ps.aos_az_deg), "AOS " + hms(ps.aos), placed);
   mark(cr, ps.tca_az_deg, ps.max_el_deg, "TCA " + hms(ps.tca), placed);
-  mark(cr, ps.los_az_deg, -2.0, "LOS " + hms(ps.los), placed);
+  mark(cr, ps.los_az_deg, floor_at(ps.los_az_deg), "LOS " + hms(ps.los), placed);
   draw_time_ticks(cr, p, placed);
 }
 

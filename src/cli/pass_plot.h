@@ -3,13 +3,15 @@
 // (blue) with AOS, TCA and LOS marked and timed, a tick with the time every minute and an arrow the
 // way it goes; azimuth ticks every 10 degrees on the horizon; the antenna's planned path (orange, from the
 // rotator's pass plan: flip, limits); the part of the track the antenna cannot follow (red); the
-// azimuths the rotator cannot reach (grey). Drawn with cairo, as PNG or SVG by the file's
+// azimuths the rotator cannot reach (grey); the horizon mask (brown). Drawn with cairo, as PNG or SVG by the file's
 // extension.
 #pragma once
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "orbit/horizon_mask.h"
 #include "orbit/passes.h"
 #include "rotator/pass_plan.h"
 
@@ -22,6 +24,9 @@ struct PassPicture {
   orbit::Pass pass;
   std::vector<rotator::TrackPoint> track;  // AOS to LOS
   std::optional<rotator::PassPlan> plan;   // the antenna's plan, when the rotator is known
+  // The station's horizon mask (issue 57), shaded brown from the horizon up to it; AOS and LOS are
+  // marked on it.
+  std::shared_ptr<const orbit::HorizonMask> mask;
 };
 
 inline constexpr int kPlotSize = 640;      // pixels (PNG) or points (SVG), square

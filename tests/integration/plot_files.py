@@ -29,6 +29,20 @@ def walk(tmp):
         check(f"plot: {os.path.join(tmp, f)}  ISS " in out, f"{f} is listed on stdout: {out}")
         check(f.startswith("day-") and f.endswith(".svg"), f"named FILE-N.svg: {f}")
 
+    # With a horizon mask (issue 57): the SVG shades it and says so; LOS is marked on it.
+    roof = os.path.join(tmp, "roof.hrz")
+    with open(roof, "w") as f:
+        f.write("0 0\n190 25\n230 25\n240 0\n360 0\n")
+    masked = os.path.join(tmp, "masked.svg")
+    code, out, err = sh(BIN, "passes", TLE, *COMMON, "--hours", "1", "--min-el", "10", "--horizon-mask", roof,
+                        "--plot", masked)
+    check(code == 0, f"a pass with the mask: {code} {err}")
+    svg = open(masked).read()
+    check("brown: horizon mask" in svg, "the legend names the mask")
+    check("fill-rule:evenodd" in svg or 'fill-rule="evenodd"' in svg, "the mask is drawn as a ring from the horizon up")
+    os.remove(roof)
+    os.remove(masked)
+
     code, out, err = sh(BIN, "passes", TLE, *COMMON, "--hours", "24", "--plot", os.path.join(tmp, "p.jpg"))
     check(code == 2, f"a .jpg is refused as a usage error: {code}")
     check(out == "", f"before any table is printed: {out!r}")
