@@ -28,7 +28,7 @@ from datetime import datetime, timedelta, timezone
 
 sys.path.insert(0, os.path.dirname(__file__))
 import client_pass_plan as plan  # noqa: E402
-from _tbharness import BIN, check, pointing_error, run_test  # noqa: E402
+from _tbharness import check, pointing_error, run_test  # noqa: E402
 from _web import WebStation  # noqa: E402
 
 TCA = datetime(2026, 5, 23, 13, 51, 33, tzinfo=timezone.utc)
