@@ -47,7 +47,9 @@ trap 'kill -- -$san_job 2>/dev/null || kill $san_job 2>/dev/null || true' EXIT
 integ_rc=0
 # A timing-dependent integration test that fails is run once more (--repeat until-pass:2): the
 # failure stays in the log above the pass, to be mended (the unit tests get no second try).
-(cd build && ctest --output-on-failure -j"$jobs" -L integration --repeat until-pass:2) || integ_rc=$?
+# One more test at a time than there are cores: they mostly wait on simulated clocks, ptys and
+# sockets (on 2 cores, 3 at a time: 654 s instead of about 960, using 18 % of the CPU).
+(cd build && ctest --output-on-failure -j"$((jobs + 1))" -L integration --repeat until-pass:2) || integ_rc=$?
 echo "== integration tests: $((SECONDS - start)) s"
 
 while [ ! -e build-asan/build.rc ] && kill -0 $san_job 2>/dev/null; do sleep 1; done
