@@ -26,21 +26,25 @@ echo "== build (trakbox, ${#bench_targets[@]} benchmarks): $((SECONDS - start)) 
 
 cmake -S . -B build-asan -G Ninja -DTRAKBOX_WERROR=ON -DTRAKBOX_SANITIZE=ON -DTRAKBOX_BENCH=OFF \
       -DTRAKBOX_UNITY_TESTS=ON -DTRAKBOX_UNITY=ON -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-g1 >/dev/null
-mapfile -t san_targets < <(cmake --build build-asan --target help | sed -n 's/^\(unit_[a-z0-9_]*\|fuzz_replay_[a-z0-9_]*\):.*/\1/p')
+mapfile -t unit_targets < <(cmake --build build-asan --target help | sed -n 's/^\(unit_[a-z0-9_]*\):.*/\1/p')
+mapfile -t fuzz_targets < <(cmake --build build-asan --target help | sed -n 's/^\(fuzz_replay_[a-z0-9_]*\):.*/\1/p')
 san_env=(ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1
          "LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp:print_suppressions=0")
-# In the background at nice 19: the sanitized build, then the fuzz-corpus replays in it (their own
-# CTest run in build-asan/tests/fuzz, so that its Testing/ files are apart from the unit tests').
-# The replays are computation only, with no clock or peer of their own: they use the CPU the
-# integration tests leave idle. The unit tests, some of which wait on ptys and sockets in real
-# time, run after the integration tests at normal priority.
+# In the background at nice 19: the sanitized build, the unit-test programs first (build.rc says
+# when they are made: the unit tests wait for them), then the fuzz replays, which then run in it
+# (their own CTest run in build-asan/tests/fuzz, so that its Testing/ files are apart from the unit
+# tests'). The replays are computation only, with no clock or peer of their own: they use the CPU
+# the integration tests leave idle, and what is left of them runs beside the unit tests. The unit
+# tests, some of which wait on ptys and sockets in real time, run after the integration tests at
+# normal priority.
 rm -f build-asan/build.rc build-asan/fuzz.log
 setsid nice -n 19 env "${san_env[@]}" bash -c '
-  cmake --build build-asan -j"$1" --target "${@:2}" >build-asan/build.log 2>&1
+  cmake --build build-asan -j"$1" --target $2 >build-asan/build.log 2>&1
   rc=$?
   echo $rc >build-asan/build.rc
   [ $rc -eq 0 ] || exit $rc
-  cd build-asan/tests/fuzz && ctest --output-on-failure -j"$1" -L fuzz >../../fuzz.log 2>&1' _ "$jobs" "${san_targets[@]}" &
+  cmake --build build-asan -j"$1" --target $3 >>build-asan/build.log 2>&1 || { echo "== FAILED: the fuzz replays did not build" >build-asan/fuzz.log; tail -n 80 build-asan/build.log >>build-asan/fuzz.log; exit 1; }
+  cd build-asan/tests/fuzz && ctest --output-on-failure -j"$1" -L fuzz >../../fuzz.log 2>&1' _ "$jobs" "${unit_targets[*]}" "${fuzz_targets[*]}" &
 san_job=$!
 trap 'kill -- -$san_job 2>/dev/null || kill $san_job 2>/dev/null || true' EXIT
 
@@ -59,7 +63,7 @@ if [ "$san_rc" -ne 0 ]; then
   echo "== sanitizer build FAILED (build-asan/build.log)"
   exit "$san_rc"
 fi
-echo "== sanitizer build (${#san_targets[@]} programs): $((SECONDS - start)) s"
+echo "== sanitizer build (${#unit_targets[@]} unit-test programs): $((SECONDS - start)) s"
 [ $integ_rc -eq 0 ] || { echo "== integration tests FAILED"; exit $integ_rc; }
 
 unit_rc=0
@@ -69,7 +73,7 @@ fuzz_rc=0
 wait $san_job || fuzz_rc=$?
 trap - EXIT
 cat build-asan/fuzz.log
-echo "== fuzz-corpus replays under the sanitizers (since the build, in the background): $((SECONDS - start)) s"
+echo "== fuzz-corpus replays (${#fuzz_targets[@]} programs) under the sanitizers, built and run in the background: $((SECONDS - start)) s"
 [ $unit_rc -eq 0 ] || { echo "== unit tests FAILED"; exit $unit_rc; }
 [ $fuzz_rc -eq 0 ] || { echo "== fuzz-corpus replays FAILED"; exit $fuzz_rc; }
 # What the idle station costs (issue 49): a check of its own, 20 s here, not a timed test; it fails
