@@ -3,6 +3,7 @@
 // file's is never changed; the result is a state the state reader takes back (so the owner's named
 // edit accepts it); each satellite's modes at most radio::kMaxModes with valid, distinct names.
 #pragma once
+#include <optional>
 #include <string>
 
 #include "fuzz_station.h"
@@ -39,11 +40,17 @@ inline void check_merge(const store::Database& was, const store::Database& now, 
       }
     }
   }
+  // The read-back of the merged state: a pure function of `now`, so a database equal in every
+  // stored field to the one checked last (a refused or empty list leaves the shipped one as it was)
+  // is not serialized and read back again; that round trip was nearly all of a replay's time.
+  static std::optional<store::Database> last_read_back;
+  if (last_read_back && same_stored_database(*last_read_back, now)) return;
   static const store::Model base = testing::shipped_model();
   store::Model model = base;
   model.db = now;
-  TB_FUZZ_CHECK(store::to_json(store::model_from_json(store::to_json(model))) == store::to_json(model),
-                "the merged state does not read back: " + why);
+  const nlohmann::json saved = store::to_json(model);
+  TB_FUZZ_CHECK(store::to_json(store::model_from_json(saved)) == saved, "the merged state does not read back: " + why);
+  last_read_back = now;
 }
 
 }  // namespace tb::fuzz

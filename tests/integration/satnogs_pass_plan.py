@@ -33,7 +33,9 @@ from _web import WebStation  # noqa: E402
 from client_pass_plan import AOS, LOS, SAT, STEP, Sky, data_without, judge, parse_time, rotctl, show  # noqa: E402
 
 RATE = 10
-START = AOS - timedelta(minutes=4)
+# 2.5 minutes before AOS: inside trakbox's 5 minutes of pre-positioning from the first tick, and
+# time for the slew from the stop to the plan's start (368 degrees at 6 deg/s, about a minute).
+START = AOS - timedelta(seconds=150)
 WINDOW = (AOS + timedelta(seconds=9), LOS - timedelta(seconds=21))
 
 
