@@ -21,13 +21,14 @@ off" (and trakbox leaving mid-pass sends `LOS`), the status's limits say "GQRX: 
 `iq` in the status, stopped with `U IQRECORD 0` when trakbox leaves mid-pass.
 """
 import json
+import re
 import os
 import shutil
 import subprocess
 import sys
 import tempfile
 import time
-from datetime import datetime, timedelta
+from datetime import datetime, timedelta, timezone
 
 sys.path.insert(0, os.path.dirname(__file__))
 from _tbharness import BIN, SOURCE, check, leave_and_read_log, poll, reap, run_test  # noqa: E402
@@ -121,8 +122,14 @@ def dsp_on(aos, los):
     check(abs((start - aos).total_seconds()) <= 5, f"recording started at {r['start']}, SO-50's AOS {aos}")
     check(abs((iso(stopped["time"]) - los).total_seconds()) <= 5, f"recording stopped at {stopped['time']}, LOS {los}")
     check(r["read_back"] and r["kind"] == "audio" and started["satellite"] == "SO-50", f"started event: {started}")
-    want_file = f"gqrx_{start:%Y%m%d_%H%M%S}_{r['frequency_hz']}.wav"
-    check(r["file"] == want_file, f"file {r['file']}, expected {want_file}")
+    # The stand-in names the file from its own reading of the station clock when RECORD came: at
+    # --clock-rate 40 that may be a second or two after the recording's start, never more.
+    named = re.fullmatch(r"gqrx_(\d{8}_\d{6})_(\d+)\.wav", r["file"] or "")
+    check(named and named.group(2) == str(r["frequency_hz"]), f"file {r['file']}: gqrx_yyyyMMdd_hhmmss_<Hz>.wav")
+    named_at = datetime.strptime(named.group(1), "%Y%m%d_%H%M%S").replace(tzinfo=timezone.utc)
+    check(-1 <= (named_at - start.replace(microsecond=0)).total_seconds() <= 2,
+          f"file {r['file']}: named at the recording's start {r['start']}")
+    want_file = r["file"]
     check(abs(r["frequency_hz"] - 436_795_000) < 12_000, f"the frequency at the start: {r['frequency_hz']}")
     # The stand-in: AOS and LOS once each, next to the events' wall times; u RECORD read back 1.
     aos_cmd = rig.sent(lambda line: line == "AOS")
