@@ -98,7 +98,7 @@ void edit_station_elements(term::Terminal& t, Services& s) {
   for (auto& c : st.callsign) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   // trakbox's hint (issue 30): which sign is north and east (PREDICT counts longitude west), and
   // that N, S, E, W after the number work too.
-  t.line("  (+ north / - south, + east / - west; or 48.85N, 2.35E, 122.4W; or a locator: JN18du)");
+  t.line("  (+ north/- south, + east/- west; 48.85N, 2.35E, 122.4W; or a locator JN18du)");
   std::optional<double> locator_lon;
   st.lat_deg = edit_degrees(t, "Latitude  [deg]   ", st.lat_deg, 'N', 'S', 90.0, &locator_lon);
   if (locator_lon) {
@@ -110,8 +110,9 @@ void edit_station_elements(term::Terminal& t, Services& s) {
   st.lon_deg = edit_degrees(t, "Longitude [deg]   ", st.lon_deg, 'E', 'W', 180.0);
   const store::Bounds height = store::bounds("station.height_m");  // the settings table's range
   st.height_m = edit_number(t, "Height    [m]     ", st.height_m, station_fmt("%.3f", st.height_m), height.lo, height.hi);
-  t.line("  Rotor start: where the azimuth rotator's stop is (turn it fully counter-clockwise and read its");
-  t.line("  dial): N for a stop at north (a GS-232 reporting 0-360 or 0-450, a SPID), S for one at south");
+  t.line("  Rotor start: where the azimuth rotator's stop is (turn it fully counter-");
+  t.line("  clockwise and read its dial): N for a stop at north (a GS-232 reporting");
+  t.line("  0-360 or 0-450, a SPID), S for one at south");
   const std::string rs = edit_text(t, "Rotor start [N/S] ", station::to_string(st.rotor_start),
                                    [](const std::string& a) -> std::optional<std::string> {
                                      const char c = static_cast<char>(std::toupper(static_cast<unsigned char>(a[0])));
@@ -120,8 +121,8 @@ void edit_station_elements(term::Terminal& t, Services& s) {
                                    });
   st.rotor_start = std::toupper(static_cast<unsigned char>(rs[0])) == 'N' ? station::RotorStart::north
                                                                           : station::RotorStart::south;
-  t.line("  COM port baud rate: the speed of the serial line these menus run on (--tty), 1200 to 19200;");
-  t.line("  not the radio's or the rotator's (those are in --radio and --rotator)");
+  t.line("  COM port baud rate: the speed of the serial line these menus run on (--tty),");
+  t.line("  1200 to 19200; not the radio's or the rotator's (--radio, --rotator)");
   st.com_baud = edit_int(t, "COM port baud rate", st.com_baud, 1200, 19200);
   while (!term::valid_terminal_baud(st.com_baud)) {
     t.line("  1200, 2400, 4800, 9600 or 19200");

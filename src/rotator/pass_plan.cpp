@@ -21,6 +21,14 @@ double step(double a, double b) {
   return d > 180.0 ? d - 360.0 : d;
 }
 
+// hh:mm:ss of a time, the seconds cut (what the plan's sentences give).
+std::string hms(orbit::UtcTime t) {
+  const auto c = orbit::to_civil(t);
+  char b[16];
+  std::snprintf(b, sizeof b, "%02d:%02d:%02d", c.hour, c.minute, static_cast<int>(c.second));
+  return b;
+}
+
 // Where a rotator position points, as compass az/el.
 AzEl pointing(const PassGeometry& g, const RotatorPosition& p) {
   double az = p.az_travel + rotor_start_deg(g.start);
@@ -108,12 +116,6 @@ RotatorPosition PassPlan::map_at(orbit::UtcTime t, double az_deg, double el_deg)
 
 std::string PassPlan::keyhole_text() const {
   if (lead.size() < 2) return "";
-  auto hms = [](orbit::UtcTime t) {
-    const auto c = orbit::to_civil(t);
-    char b[16];
-    std::snprintf(b, sizeof b, "%02d:%02d:%02d", c.hour, c.minute, static_cast<int>(c.second));
-    return std::string(b);
-  };
   char b[200];
   std::snprintf(b, sizeof b, "the azimuth turns ahead of the satellite at %.1f deg/s: at most %.1f deg off (%.1f chasing it)",
                 lead_rate_deg_s, max_error_deg, following_error_deg);
@@ -197,12 +199,6 @@ std::string PassPlan::coverage_text() const {
   std::string piece = compass_sector_text(geometry.start, geometry.az_travel);
   if (piece != "all azimuths") piece = "azimuth " + piece;
   if (coverage.followed == 0) return "PASS OUT OF ANTENNA REACH (it reaches " + piece + ")";
-  auto hms = [](orbit::UtcTime t) {
-    const auto c = orbit::to_civil(t);
-    char b[16];
-    std::snprintf(b, sizeof b, "%02d:%02d:%02d", c.hour, c.minute, static_cast<int>(c.second));
-    return std::string(b);
-  };
   char pct[16];
   std::snprintf(pct, sizeof pct, "%d%%", static_cast<int>(std::floor(coverage.fraction * 100.0 + 1e-9)));
   // What the operator needs first: when the antenna is on the satellite, then why not all the pass.
@@ -342,9 +338,13 @@ void add_keyhole(PassPlan& plan, std::span<const TrackPoint> track, const PassGe
   }
   feasible(good);
   std::vector<double> path(n);
-  path[n - 1] = std::clamp(u[n - 1], lo[n - 1], hi[n - 1]);
+  // Each sample as near the satellite as its window and the next sample's reach let it. The two
+  // meet in exact arithmetic; rounding can leave the lower bound a hair above the upper one, when
+  // the upper (within the next sample's reach) is taken.
+  const auto nearest = [](double x, double a, double b) { return std::min(std::max(x, a), b); };
+  path[n - 1] = nearest(u[n - 1], lo[n - 1], hi[n - 1]);
   for (std::size_t i = n - 1; i-- > 0;)
-    path[i] = std::clamp(u[i], std::max(lo[i], path[i + 1] - r * dt[i + 1]), std::min(hi[i], path[i + 1] + r * dt[i + 1]));
+    path[i] = nearest(u[i], std::max(lo[i], path[i + 1] - r * dt[i + 1]), std::min(hi[i], path[i + 1] + r * dt[i + 1]));
   double worst = 0.0;
   std::size_t first = n, last = 0;
   for (std::size_t i = 0; i < n; ++i) {

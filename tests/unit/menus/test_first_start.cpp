@@ -53,7 +53,7 @@ TEST_CASE("menu 4: hemispheres after the number, which sign is which, and the sa
   CHECK(f.model.station.lon_deg == -2.35);
   CHECK(f.saves == 1);
   const std::string& out = f.term.output();
-  CHECK(out.find("(+ north / - south, + east / - west; or 48.85N, 2.35E, 122.4W; or a locator: JN18du)") != std::string::npos);
+  CHECK(out.find("(+ north/- south, + east/- west; 48.85N, 2.35E, 122.4W; or a locator JN18du)") != std::string::npos);
   CHECK(out.find("Station saved: F4ABC  48.850 N  2.350 W  35 m  rotor start South") != std::string::npos);
 }
 
