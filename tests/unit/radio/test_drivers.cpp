@@ -225,6 +225,13 @@ TEST_CASE("Worker: open failures back off; a broken link reconnects and sends ev
     s.action = LinkError::Action::reconnect;
   }
   radio.set_uplink_frequency(145'010'000);
+  // The failed command closes the link; the worker reopens it after its back-off. Under load (the
+  // sanitized tests beside the fuzz replays) wait_idle could see the back-off's quiet moment before
+  // the reopen: wait for the reopen itself, then for what it sends.
+  REQUIRE(eventually([&] {
+    const auto now = radio.status();
+    return now.connects == 2 && !now.fault;
+  }));
   REQUIRE(radio.wait_idle(2000ms));
   const auto st = radio.status();
   CHECK(st.connects == 2);
